@@ -1,0 +1,44 @@
+"""ballscrew: friction torque, efficiency and power loss of ball screws.
+
+The package is built in layers, one module per physical layer:
+
+- :mod:`ballscrew.geometry` - the :class:`BallScrew` description and derived geometry;
+- :mod:`ballscrew.loads` - normal load per ball from preload and axial load;
+- :mod:`ballscrew.kinematics` - rolling, spin, orbital and table speeds;
+- :mod:`ballscrew.contact` - Hertz point contact (exact, Houpert, Hamrock-Brewe);
+- :mod:`ballscrew.lubricant` - viscosity against temperature and pressure, density;
+- :mod:`ballscrew.lubricants` - the bundled lubricant library;
+- :mod:`ballscrew.ehl` - EHL film thickness, film parameter, asperity share;
+- :mod:`ballscrew.rheology` - lubricant shear stress laws.
+
+SI units throughout (m, N, Pa, Pa·s, m²/s, rad/s); temperatures in °C.
+"""
+
+from __future__ import annotations
+
+from importlib.metadata import PackageNotFoundError, version
+
+from . import contact, ehl, kinematics, loads, lubricants, rheology
+from .errors import BallScrewInputError
+from .examples import reference_screw
+from .geometry import BallScrew
+from .lubricant import Lubricant
+
+try:
+    __version__ = version("ballscrew")
+except PackageNotFoundError:  # pragma: no cover - running from a source tree
+    __version__ = "0.0.0"
+
+__all__ = [
+    "BallScrew",
+    "BallScrewInputError",
+    "Lubricant",
+    "__version__",
+    "contact",
+    "ehl",
+    "kinematics",
+    "loads",
+    "lubricants",
+    "reference_screw",
+    "rheology",
+]

@@ -1,0 +1,115 @@
+"""Error types of the package and the input checks shared by every layer.
+
+Every check raises :class:`BallScrewInputError` (a :class:`ValueError`) whose
+message names the field, the value received and what is allowed, so that a
+user never sees a traceback from deep inside numpy or a silent NaN.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+
+__all__ = [
+    "BallScrewInputError",
+    "check_finite",
+    "check_in_range",
+    "check_nonnegative",
+    "check_positive",
+]
+
+FloatArray = npt.NDArray[np.float64]
+
+
+class BallScrewInputError(ValueError):
+    """An input is outside what a function or object accepts.
+
+    Attributes
+    ----------
+    field : str
+        Name of the offending input.
+    value : object
+        The value received.
+    allowed : str
+        Plain-language description of what is allowed.
+    """
+
+    def __init__(self, field: str, value: Any, allowed: str) -> None:
+        self.field = field
+        self.value = value
+        self.allowed = allowed
+        super().__init__(f"{field} = {_show(value)} is not allowed: {allowed}")
+
+
+def _show(value: Any) -> str:
+    """Short printable form of a scalar or the first offending array element."""
+    arr = np.asarray(value)
+    if arr.ndim == 0:
+        return repr(arr.item()) if arr.dtype.kind in "biufc" else repr(value)
+    return f"array of shape {arr.shape}"
+
+
+def _as_float_array(field: str, value: Any) -> FloatArray:
+    try:
+        arr = np.asarray(value, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise BallScrewInputError(field, value, "a real number or an array of real numbers") from None
+    return arr
+
+
+def _first_bad(arr: FloatArray, bad: npt.NDArray[np.bool_]) -> float:
+    return float(arr[bad].flat[0])
+
+
+def check_finite(field: str, value: Any) -> FloatArray:
+    """Return ``value`` as a float array, raising if any element is NaN or infinite."""
+    arr = _as_float_array(field, value)
+    bad = ~np.isfinite(arr)
+    if bad.any():
+        raise BallScrewInputError(field, _first_bad(arr, bad), "finite real numbers")
+    return arr
+
+
+def check_positive(field: str, value: Any, unit: str = "") -> FloatArray:
+    """Return ``value`` as a float array, raising unless every element is finite and > 0."""
+    arr = check_finite(field, value)
+    bad = arr <= 0.0
+    if bad.any():
+        raise BallScrewInputError(field, _first_bad(arr, bad), f"a value > 0 {unit}".rstrip())
+    return arr
+
+
+def check_nonnegative(field: str, value: Any, unit: str = "") -> FloatArray:
+    """Return ``value`` as a float array, raising unless every element is finite and >= 0."""
+    arr = check_finite(field, value)
+    bad = arr < 0.0
+    if bad.any():
+        raise BallScrewInputError(field, _first_bad(arr, bad), f"a value >= 0 {unit}".rstrip())
+    return arr
+
+
+def check_in_range(
+    field: str,
+    value: Any,
+    low: float,
+    high: float,
+    *,
+    inclusive: tuple[bool, bool] = (False, False),
+    unit: str = "",
+) -> FloatArray:
+    """Return ``value`` as a float array, raising unless every element lies in the interval.
+
+    ``inclusive`` says whether the lower and upper bounds themselves are allowed.
+    """
+    arr = check_finite(field, value)
+    below = arr < low if inclusive[0] else arr <= low
+    above = arr > high if inclusive[1] else arr >= high
+    bad = below | above
+    if bad.any():
+        left = "[" if inclusive[0] else "("
+        right = "]" if inclusive[1] else ")"
+        text = f"a value in {left}{low:g}, {high:g}{right} {unit}".rstrip()
+        raise BallScrewInputError(field, _first_bad(arr, bad), text)
+    return arr

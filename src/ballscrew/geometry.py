@@ -1,0 +1,290 @@
+r"""Ball screw geometry: the validated, immutable :class:`BallScrew` description.
+
+The ball screw is treated like an angular-contact ball bearing whose inner
+ring is the screw and whose outer ring is the nut (Harris & Kotzalas [1]_,
+ch. 1-2; Olaru et al. [2]_). Each ball touches the screw groove and the nut
+groove along one contact line inclined at the contact angle :math:`\alpha` to
+the plane normal to the screw axis. With :math:`d_m` the pitch (ball-centre)
+diameter, :math:`D_w` the ball diameter and :math:`\gamma = D_w\cos\alpha/d_m`:
+
+.. math::
+    R_{x,s} = \tfrac{D_w}{2}(1-\gamma),\qquad
+    R_{x,n} = \tfrac{D_w}{2}(1+\gamma),\qquad
+    R_{y,j} = \frac{f_j D_w}{2 f_j - 1}
+
+are the effective radii of curvature of the ball-screw (s) and ball-nut (n)
+contacts in the rolling direction (x, along the groove) and transverse to it
+(y, across the groove), with :math:`f_j` the groove conformity (groove radius
+over ball diameter). The helix makes the rolling-direction curvature differ
+from the ring's by a factor of order :math:`\cos^2\lambda`; it is neglected,
+as by Olaru et al. (the exact treatment is Wei & Lin [3]_): for lead angles
+below 6° the error in :math:`R_x` is under 1 %.
+
+References
+----------
+.. [1] T. A. Harris, M. N. Kotzalas, *Essential Concepts of Bearing
+   Technology*, 5th ed., CRC Press, 2007, ch. 2.
+.. [2] D. Olaru, G. C. Puiu, L. C. Balan, V. Puiu, "A new model to estimate
+   friction torque in a ball screw system", in *Product Engineering*,
+   Springer, 2005, doi:10.1007/1-4020-2933-0_20.
+.. [3] C. C. Wei, J. F. Lin, "Kinematic analysis of the ball screw mechanism
+   considering variable contact angles and elastic deformations", J. Mech.
+   Des. 125 (2003) 717-733, doi:10.1115/1.1623762.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, fields, replace
+from typing import Any, Literal, get_args
+
+import numpy as np
+
+from .contact import reduced_modulus
+from .ehl import composite_roughness
+from .errors import BallScrewInputError, check_in_range, check_nonnegative, check_positive
+
+__all__ = ["NUT_ARRANGEMENTS", "BallScrew", "NutArrangement"]
+
+NutArrangement = Literal["double", "single", "single-4point"]
+NUT_ARRANGEMENTS: tuple[str, ...] = get_args(NutArrangement)
+"""Allowed values of :attr:`BallScrew.nut`:
+
+``"double"``
+    two half-nuts preloaded against each other, 2-point contact (also models
+    a single nut preloaded by a lead offset);
+``"single"``
+    one nut with 2-point contact and no preload (a backlash nut);
+``"single-4point"``
+    one nut with oversize balls, each ball touching screw and nut twice
+    (gothic-arch grooves, 4-point contact).
+"""
+
+_STEEL_E = 2.1e11
+_STEEL_NU = 0.3
+
+
+@dataclass(frozen=True)
+class BallScrew:
+    r"""Geometry, preload and materials of a ball screw and nut (immutable, validated).
+
+    Parameters
+    ----------
+    pitch_diameter : float
+        Diameter of the circle through the ball centres, :math:`d_m` [m].
+    lead : float
+        Axial advance of the nut per screw revolution, :math:`l` [m].
+    ball_diameter : float
+        :math:`D_w` [m].
+    contact_angle : float
+        Nominal contact angle :math:`\alpha` [rad], in (0, π/2); 45° is usual.
+    conformity_screw, conformity_nut : float
+        Groove radius over ball diameter, :math:`f_s`, :math:`f_n` [-], > 0.5
+        (0.51 to 0.56 is usual).
+    loaded_turns : float
+        Loaded turns per circuit, :math:`i` [-].
+    circuits : int
+        Ball circuits per nut; for ``nut="double"`` per half-nut.
+    nut : {"double", "single", "single-4point"}
+        Nut arrangement, see :data:`NUT_ARRANGEMENTS`.
+    preload : float
+        Axial preload force :math:`F_{pr}` [N], >= 0. For ``"double"`` the
+        force with which the two half-nuts are pressed against each other; for
+        ``"single-4point"`` the axial force on each of the two contact-line
+        families. Must be 0 for ``"single"``.
+    youngs_modulus_ball, youngs_modulus_races : float
+        Young's moduli of the balls and of the screw and nut [Pa]; default
+        210 GPa (bearing steel).
+    poisson_ratio_ball, poisson_ratio_races : float
+        Poisson's ratios [-]; default 0.3 (bearing steel).
+    roughness_ball, roughness_screw, roughness_nut : float
+        RMS surface roughness [m], > 0; defaults 0.08 µm (ground balls) and
+        0.3 µm (ground grooves), the values of the public code of Olaru's
+        model (``shared/reference/equations.md`` §4).
+
+    Examples
+    --------
+    >>> import math
+    >>> s = BallScrew(pitch_diameter=0.040, lead=0.010, ball_diameter=6.35e-3,
+    ...               contact_angle=math.radians(45), conformity_screw=0.55,
+    ...               conformity_nut=0.55, loaded_turns=2.5, circuits=2,
+    ...               nut="double", preload=2000.0)
+    >>> round(math.degrees(s.lead_angle), 3)
+    4.548
+    >>> s.balls_per_nut
+    98
+    """
+
+    pitch_diameter: float
+    lead: float
+    ball_diameter: float
+    contact_angle: float
+    conformity_screw: float
+    conformity_nut: float
+    loaded_turns: float
+    circuits: int
+    nut: NutArrangement = "double"
+    preload: float = 0.0
+    youngs_modulus_ball: float = _STEEL_E
+    youngs_modulus_races: float = _STEEL_E
+    poisson_ratio_ball: float = _STEEL_NU
+    poisson_ratio_races: float = _STEEL_NU
+    roughness_ball: float = 0.08e-6
+    roughness_screw: float = 0.3e-6
+    roughness_nut: float = 0.3e-6
+
+    def __post_init__(self) -> None:
+        for name in ("pitch_diameter", "lead", "ball_diameter", "loaded_turns"):
+            self._scalar(name, check_positive)
+        for name in ("youngs_modulus_ball", "youngs_modulus_races"):
+            self._scalar(name, check_positive)
+        for name in ("roughness_ball", "roughness_screw", "roughness_nut"):
+            self._scalar(name, check_positive)
+        self._scalar("preload", check_nonnegative)
+        self._scalar(
+            "contact_angle",
+            lambda f, v: check_in_range(f, v, 0.0, math.pi / 2, unit="rad (0° to 90°)"),
+        )
+        for name in ("conformity_screw", "conformity_nut"):
+            self._scalar(
+                name,
+                lambda f, v: check_in_range(
+                    f, v, 0.5, np.inf, unit="(groove radius / ball diameter must exceed 0.5)"
+                ),
+            )
+        for name in ("poisson_ratio_ball", "poisson_ratio_races"):
+            self._scalar(
+                name, lambda f, v: check_in_range(f, v, 0.0, 0.5, inclusive=(True, False))
+            )
+        if isinstance(self.circuits, bool) or not isinstance(self.circuits, int | np.integer):
+            raise BallScrewInputError("circuits", self.circuits, "a whole number >= 1")
+        if self.circuits < 1:
+            raise BallScrewInputError("circuits", self.circuits, "a whole number >= 1")
+        object.__setattr__(self, "circuits", int(self.circuits))
+        if self.nut not in NUT_ARRANGEMENTS:
+            raise BallScrewInputError("nut", self.nut, f"one of {list(NUT_ARRANGEMENTS)}")
+        if self.nut == "single" and self.preload > 0.0:
+            raise BallScrewInputError(
+                "preload",
+                self.preload,
+                '0 N for nut="single" (a 2-point single nut cannot hold a preload; '
+                'use nut="double" for double or lead-offset nuts, "single-4point" '
+                "for oversize balls)",
+            )
+        if self.ball_diameter * math.cos(self.contact_angle) >= self.pitch_diameter:
+            raise BallScrewInputError(
+                "ball_diameter",
+                self.ball_diameter,
+                f"ball_diameter * cos(contact_angle) < pitch_diameter "
+                f"({self.pitch_diameter!r} m); the ball does not fit the pitch circle",
+            )
+        if self.lead >= math.pi * self.pitch_diameter:
+            raise BallScrewInputError(
+                "lead",
+                self.lead,
+                f"lead < pi * pitch_diameter ({math.pi * self.pitch_diameter:.6g} m), "
+                "i.e. a lead angle below 45°",
+            )
+        if self.balls_per_circuit < 1:
+            raise BallScrewInputError(
+                "loaded_turns", self.loaded_turns, "enough turns to hold at least one ball"
+            )
+
+    def _scalar(self, name: str, check: Any) -> None:
+        value = getattr(self, name)
+        if np.ndim(value) != 0 or isinstance(value, bool):
+            raise BallScrewInputError(name, value, "a single real number")
+        object.__setattr__(self, name, float(check(name, value)))
+
+    def replace(self, **changes: Any) -> BallScrew:
+        """Return a copy with some fields changed (validated again)."""
+        known = {f.name for f in fields(self)}
+        for key in changes:
+            if key not in known:
+                raise BallScrewInputError(key, changes[key], f"a field of BallScrew: {sorted(known)}")
+        return replace(self, **changes)
+
+    # --- derived quantities -------------------------------------------------
+    @property
+    def lead_angle(self) -> float:
+        r"""Lead (helix) angle at the pitch diameter, :math:`\lambda = \arctan(l/\pi d_m)` [rad]."""
+        return math.atan(self.lead / (math.pi * self.pitch_diameter))
+
+    @property
+    def gamma(self) -> float:
+        r"""Ball-position ratio :math:`\gamma = D_w\cos\alpha/d_m` [-]."""
+        return self.ball_diameter * math.cos(self.contact_angle) / self.pitch_diameter
+
+    @property
+    def balls_per_circuit(self) -> int:
+        r"""Balls in the loaded turns of one circuit, :math:`\lfloor i\pi d_m/(D_w\cos\lambda)\rfloor`.
+
+        The helix length of the loaded turns divided by the ball diameter,
+        rounded down (balls touch each other; the return path is not counted).
+        """
+        length = self.loaded_turns * math.pi * self.pitch_diameter / math.cos(self.lead_angle)
+        return int(math.floor(length / self.ball_diameter + 1e-9))
+
+    @property
+    def balls_per_nut(self) -> int:
+        """Loaded balls of one nut (of one half-nut for ``nut="double"``) [-]."""
+        return self.circuits * self.balls_per_circuit
+
+    @property
+    def contact_radius_screw(self) -> float:
+        r"""Distance of the ball-screw contact from the screw axis, :math:`(d_m - D_w\cos\alpha)/2` [m]."""
+        return 0.5 * (self.pitch_diameter - self.ball_diameter * math.cos(self.contact_angle))
+
+    @property
+    def contact_radius_nut(self) -> float:
+        r"""Distance of the ball-nut contact from the screw axis, :math:`(d_m + D_w\cos\alpha)/2` [m]."""
+        return 0.5 * (self.pitch_diameter + self.ball_diameter * math.cos(self.contact_angle))
+
+    @property
+    def rx_screw(self) -> float:
+        r"""Effective radius of the ball-screw contact in the rolling direction, :math:`\tfrac{D_w}{2}(1-\gamma)` [m]."""
+        return 0.5 * self.ball_diameter * (1.0 - self.gamma)
+
+    @property
+    def rx_nut(self) -> float:
+        r"""Effective radius of the ball-nut contact in the rolling direction, :math:`\tfrac{D_w}{2}(1+\gamma)` [m]."""
+        return 0.5 * self.ball_diameter * (1.0 + self.gamma)
+
+    @property
+    def ry_screw(self) -> float:
+        r"""Effective radius of the ball-screw contact across the groove, :math:`f_sD_w/(2f_s-1)` [m]."""
+        f = self.conformity_screw
+        return f * self.ball_diameter / (2.0 * f - 1.0)
+
+    @property
+    def ry_nut(self) -> float:
+        r"""Effective radius of the ball-nut contact across the groove, :math:`f_nD_w/(2f_n-1)` [m]."""
+        f = self.conformity_nut
+        return f * self.ball_diameter / (2.0 * f - 1.0)
+
+    @property
+    def reduced_modulus(self) -> float:
+        """Reduced modulus :math:`E'` of ball against screw/nut [Pa], see :func:`~ballscrew.contact.reduced_modulus`."""
+        return float(
+            reduced_modulus(
+                self.youngs_modulus_ball,
+                self.poisson_ratio_ball,
+                self.youngs_modulus_races,
+                self.poisson_ratio_races,
+            )
+        )
+
+    @property
+    def composite_roughness_screw(self) -> float:
+        r"""Composite RMS roughness of the ball-screw contact, :math:`\sqrt{\sigma_b^2+\sigma_s^2}` [m]."""
+        return float(composite_roughness(self.roughness_ball, self.roughness_screw))
+
+    @property
+    def composite_roughness_nut(self) -> float:
+        r"""Composite RMS roughness of the ball-nut contact, :math:`\sqrt{\sigma_b^2+\sigma_n^2}` [m]."""
+        return float(composite_roughness(self.roughness_ball, self.roughness_nut))
+
+    @property
+    def contacts_per_ball(self) -> int:
+        """Contacts of one ball with the screw (equal to those with the nut): 2 for 4-point, else 1."""
+        return 2 if self.nut == "single-4point" else 1

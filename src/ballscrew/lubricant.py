@@ -1,0 +1,534 @@
+r"""Lubricant properties: viscosity against temperature and pressure, density.
+
+Pure functions for each published correlation, and the :class:`Lubricant`
+object that holds one oil's data and applies them. Temperatures are in °C,
+everything else in SI units (kinematic viscosity in m²/s, dynamic viscosity
+in Pa·s, density in kg/m³, pressure in Pa).
+
+References
+----------
+.. [1] ASTM D341-20, "Standard practice for viscosity-temperature equations
+   and charts for liquid petroleum or hydrocarbon products", ASTM
+   International, doi:10.1520/D0341-20.
+.. [2] C. Walther, "Über die Auswertung von Viskositätsangaben", Erdöl und
+   Teer 7 (1931) 382-384.
+.. [3] H. Vogel, "Das Temperaturabhängigkeitsgesetz der Viskosität von
+   Flüssigkeiten", Phys. Z. 22 (1921) 645-646.
+.. [4] C. Barus, "Isothermals, isopiestics and isometrics relative to
+   viscosity", Am. J. Sci. 45 (1893) 87-96.
+.. [5] C. J. A. Roelands, *Correlational aspects of the viscosity-
+   temperature-pressure relationship of lubricating oils*, PhD thesis, TU
+   Delft, 1966.
+.. [6] B. J. Hamrock, S. R. Schmid, B. O. Jacobson, *Fundamentals of Fluid
+   Film Lubrication*, 2nd ed., Marcel Dekker, 2004, ch. 4.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, fields, replace
+from typing import Any, Literal, get_args
+
+import numpy as np
+import numpy.typing as npt
+
+from .errors import (
+    BallScrewInputError,
+    FloatArray,
+    check_finite,
+    check_in_range,
+    check_nonnegative,
+    check_positive,
+)
+
+__all__ = [
+    "PRESSURE_VISCOSITY_MODELS",
+    "VISCOSITY_MODELS",
+    "Lubricant",
+    "astm_d341_constants",
+    "astm_d341_viscosity",
+    "barus_1893",
+    "density_linear",
+    "pressure_viscosity_jungnickel",
+    "roelands_1966",
+    "vogel_constants",
+    "vogel_viscosity",
+]
+
+ArrayLike = npt.ArrayLike
+KELVIN = 273.15
+"""Offset from °C to K."""
+
+ViscosityModel = Literal["astm_d341", "vogel"]
+VISCOSITY_MODELS: tuple[str, ...] = get_args(ViscosityModel)
+PressureViscosityModel = Literal["roelands", "barus"]
+PRESSURE_VISCOSITY_MODELS: tuple[str, ...] = get_args(PressureViscosityModel)
+
+_CST = 1e-6  # m²/s per mm²/s (cSt)
+ROELANDS_PRESSURE = 1.96e8
+"""Roelands' reference pressure :math:`p_r` = 0.196 GPa [Pa] ([6] eq. 4.10)."""
+ROELANDS_LN_ETA_INF = -9.67
+r""":math:`\ln\eta_\infty` with :math:`\eta_\infty = 6.31\cdot10^{-5}` Pa·s ([6] eq. 4.10)."""
+
+
+def _temperature(value: ArrayLike) -> FloatArray:
+    return check_in_range("temperature", value, -KELVIN, np.inf, unit="°C (above absolute zero)")
+
+
+def astm_d341_constants(
+    nu1: ArrayLike, t1: ArrayLike, nu2: ArrayLike, t2: ArrayLike
+) -> tuple[FloatArray, FloatArray]:
+    r"""Constants A and B of the ASTM D341 (Walther) equation through two points.
+
+    .. math:: \log_{10}\log_{10}(\nu + 0.7) = A - B\log_{10}T
+
+    with :math:`\nu` in mm²/s and :math:`T` in kelvin.
+
+    Parameters
+    ----------
+    nu1, nu2 : array_like
+        Kinematic viscosities at the two temperatures [m²/s], each > 0.3 mm²/s.
+    t1, t2 : array_like
+        The two temperatures [°C], ``t1 != t2``.
+
+    Returns
+    -------
+    A, B : numpy.ndarray
+        Constants of the equation [-] (for ν in mm²/s and T in K).
+
+    Examples
+    --------
+    PAO ISO VG 68 with 68 mm²/s at 40 °C and 10.3 mm²/s at 100 °C:
+
+    >>> a, b = astm_d341_constants(68e-6, 40.0, 10.3e-6, 100.0)
+    >>> round(float(a), 4), round(float(b), 4)
+    (8.3444, 3.2376)
+    """
+    z1 = _walther_z(check_positive("nu1", nu1, "m²/s"), "nu1")
+    z2 = _walther_z(check_positive("nu2", nu2, "m²/s"), "nu2")
+    k1 = np.log10(_temperature(t1) + KELVIN)
+    k2 = np.log10(_temperature(t2) + KELVIN)
+    if np.any(k1 == k2):
+        raise BallScrewInputError("t2", t2, "a temperature different from t1")
+    b: FloatArray = (z1 - z2) / (k2 - k1)
+    a: FloatArray = z1 + b * k1
+    return a, b
+
+
+def _walther_z(nu: FloatArray, field: str) -> FloatArray:
+    """Walther's double logarithm log10(log10(nu_cSt + 0.7)) of a viscosity in m²/s."""
+    cst = nu / _CST
+    if np.any(cst + 0.7 <= 1.0):
+        raise BallScrewInputError(field, float(np.min(nu)), "a viscosity above 0.3 mm²/s")
+    result: FloatArray = np.log10(np.log10(cst + 0.7))
+    return result
+
+
+def astm_d341_viscosity(temperature: ArrayLike, a: ArrayLike, b: ArrayLike) -> FloatArray:
+    r"""Kinematic viscosity from the ASTM D341 (Walther) equation.
+
+    .. math:: \nu = 10^{10^{A - B\log_{10}T}} - 0.7
+
+    Parameters
+    ----------
+    temperature : array_like
+        Temperature [°C].
+    a, b : array_like
+        Constants from :func:`astm_d341_constants` [-].
+
+    Returns
+    -------
+    numpy.ndarray
+        Kinematic viscosity [m²/s].
+
+    Notes
+    -----
+    The form with 0.7 holds for viscosities above about 2 mm²/s; ASTM D341
+    adds small correction terms below that, which matter for no lubricant of
+    a ball screw.
+
+    Examples
+    --------
+    >>> a, b = astm_d341_constants(68e-6, 40.0, 10.3e-6, 100.0)
+    >>> round(float(astm_d341_viscosity(20.0, a, b)) * 1e6, 1)  # mm²/s
+    187.5
+    """
+    t = _temperature(temperature) + KELVIN
+    result: FloatArray = (10.0 ** (10.0 ** (np.asarray(a) - np.asarray(b) * np.log10(t))) - 0.7) * _CST
+    return result
+
+
+def vogel_constants(
+    nu1: ArrayLike, t1: ArrayLike, nu2: ArrayLike, t2: ArrayLike, c: ArrayLike = 95.0
+) -> tuple[FloatArray, FloatArray]:
+    r"""Constants of Vogel's equation :math:`\nu = A\exp[B/(T + C)]` through two points.
+
+    Parameters
+    ----------
+    nu1, nu2 : array_like
+        Kinematic viscosities [m²/s] at temperatures ``t1``, ``t2`` [°C].
+    c : array_like
+        Vogel's third constant [°C]; default 95 °C, the value of Cameron's
+        fixed-C form used for mineral oils.
+
+    Returns
+    -------
+    A : numpy.ndarray
+        [m²/s].
+    B : numpy.ndarray
+        [°C].
+
+    Examples
+    --------
+    >>> a, b = vogel_constants(68e-6, 40.0, 10.3e-6, 100.0)
+    >>> round(float(b), 1)
+    1024.9
+    """
+    n1 = check_positive("nu1", nu1, "m²/s")
+    n2 = check_positive("nu2", nu2, "m²/s")
+    ta = _temperature(t1)
+    tb = _temperature(t2)
+    cc = check_finite("c", c)
+    if np.any(ta == tb):
+        raise BallScrewInputError("t2", t2, "a temperature different from t1")
+    if np.any((ta + cc <= 0.0) | (tb + cc <= 0.0)):
+        raise BallScrewInputError("c", c, "a value with temperature + c > 0 at both points")
+    b: FloatArray = np.log(n1 / n2) / (1.0 / (ta + cc) - 1.0 / (tb + cc))
+    a: FloatArray = n1 * np.exp(-b / (ta + cc))
+    return a, b
+
+
+def vogel_viscosity(
+    temperature: ArrayLike, a: ArrayLike, b: ArrayLike, c: ArrayLike = 95.0
+) -> FloatArray:
+    r"""Kinematic viscosity from Vogel's equation, :math:`\nu = A\exp[B/(T + C)]`.
+
+    Parameters
+    ----------
+    temperature : array_like
+        [°C], above :math:`-C`.
+    a : array_like
+        [m²/s].
+    b, c : array_like
+        [°C].
+
+    Returns
+    -------
+    numpy.ndarray
+        Kinematic viscosity [m²/s].
+
+    Examples
+    --------
+    Thermca's mineral VG 68 constants (A = 0.071e-6 m²/s, B = 929 °C):
+
+    >>> round(float(vogel_viscosity(40.0, 0.071e-6, 929.0)) * 1e6, 1)
+    69.2
+    """
+    t = _temperature(temperature)
+    cc = np.asarray(c, dtype=float)
+    if np.any(t + cc <= 0.0):
+        raise BallScrewInputError("temperature", temperature, "a value above -c (Vogel)")
+    result: FloatArray = np.asarray(a) * np.exp(np.asarray(b) / (t + cc))
+    return result
+
+
+def density_linear(
+    temperature: ArrayLike, density15: ArrayLike, expansion: ArrayLike = 6.5e-4
+) -> FloatArray:
+    r"""Density of an oil against temperature, linear in temperature.
+
+    .. math:: \rho(T) = \rho_{15}\,[1 - \beta_\rho (T - 15)]
+
+    Parameters
+    ----------
+    temperature : array_like
+        [°C].
+    density15 : array_like
+        Density at 15 °C [kg/m³].
+    expansion : array_like
+        :math:`\beta_\rho` [1/K]; default 6.5e-4 /K, typical of mineral oils
+        and PAOs between 0 and 150 °C (Hamrock et al. [6]_ ch. 4).
+
+    Returns
+    -------
+    numpy.ndarray
+        Density [kg/m³].
+
+    Examples
+    --------
+    >>> round(float(density_linear(40.0, 850.0)), 2)
+    836.19
+    """
+    t = _temperature(temperature)
+    result: FloatArray = np.asarray(density15) * (1.0 - np.asarray(expansion) * (t - 15.0))
+    return result
+
+
+def barus_1893(viscosity: ArrayLike, alpha: ArrayLike, pressure: ArrayLike) -> FloatArray:
+    r"""Viscosity at pressure by Barus's exponential law, :math:`\eta = \eta_0 e^{\alpha p}`.
+
+    Parameters
+    ----------
+    viscosity : array_like
+        Dynamic viscosity at ambient pressure :math:`\eta_0` [Pa·s].
+    alpha : array_like
+        Pressure-viscosity coefficient :math:`\alpha` [1/Pa].
+    pressure : array_like
+        Gauge pressure :math:`p` [Pa], >= 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        Dynamic viscosity [Pa·s]; ``inf`` where it overflows (:math:`\alpha p
+        > 709`), which is why :func:`roelands_1966` is preferred at contact
+        pressures.
+
+    Examples
+    --------
+    >>> round(float(barus_1893(0.05, 2e-8, 1e8)) / 0.05, 4)
+    7.3891
+    """
+    p = check_nonnegative("pressure", pressure, "Pa")
+    with np.errstate(over="ignore"):
+        result: FloatArray = np.asarray(viscosity) * np.exp(np.asarray(alpha) * p)
+    return result
+
+
+def roelands_1966(viscosity: ArrayLike, alpha: ArrayLike, pressure: ArrayLike) -> FloatArray:
+    r"""Viscosity at pressure by Roelands' equation (isothermal form).
+
+    .. math::
+        \eta = \eta_0\exp\left\{(\ln\eta_0 + 9.67)\left[\left(1 +
+        \frac{p}{p_r}\right)^{Z} - 1\right]\right\},\qquad
+        Z = \frac{\alpha\,p_r}{\ln\eta_0 + 9.67}
+
+    with :math:`p_r = 1.96\cdot10^8` Pa and :math:`\eta` in Pa·s; the
+    pressure-viscosity index :math:`Z` is chosen so that the initial slope
+    :math:`d\ln\eta/dp` at :math:`p = 0` equals Barus's :math:`\alpha`.
+
+    Parameters
+    ----------
+    viscosity : array_like
+        Dynamic viscosity at ambient pressure :math:`\eta_0` [Pa·s], above
+        :math:`\eta_\infty = 6.31\cdot10^{-5}` Pa·s.
+    alpha : array_like
+        Pressure-viscosity coefficient [1/Pa].
+    pressure : array_like
+        Gauge pressure [Pa], >= 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        Dynamic viscosity [Pa·s].
+
+    Examples
+    --------
+    At 1 GPa a PAO of 0.05 Pa·s and 1.5e-8 /Pa thickens far less than by Barus:
+
+    >>> eta = roelands_1966(0.05, 1.5e-8, 1e9)
+    >>> round(float(np.log10(eta / 0.05)), 2), round(1.5e-8 * 1e9 / np.log(10), 2)
+    (3.52, 6.51)
+
+    References
+    ----------
+    .. [1] C. J. A. Roelands, PhD thesis, TU Delft, 1966; in the form of
+       Hamrock, Schmid and Jacobson, *Fundamentals of Fluid Film
+       Lubrication*, 2004, eq. (4.10)-(4.11).
+    """
+    eta0 = check_positive("viscosity", viscosity, "Pa·s")
+    p = check_nonnegative("pressure", pressure, "Pa")
+    span = np.log(eta0) - ROELANDS_LN_ETA_INF
+    if np.any(span <= 0.0):
+        raise BallScrewInputError("viscosity", float(np.min(eta0)), "a viscosity above 6.31e-5 Pa·s")
+    z = np.asarray(alpha) * ROELANDS_PRESSURE / span
+    result: FloatArray = eta0 * np.exp(span * ((1.0 + p / ROELANDS_PRESSURE) ** z - 1.0))
+    return result
+
+
+def pressure_viscosity_jungnickel(kinematic_viscosity: ArrayLike) -> FloatArray:
+    r"""Rough estimate of the pressure-viscosity coefficient from the viscosity.
+
+    .. math:: \alpha = 1.29\cdot10^{-7}\,\nu^{0.204}\quad(\nu\ \text{in m²/s})
+
+    An empirical fit for mineral oils after Jungnickel (2010), as coded in the
+    open-source Thermca library (``shared/reference/equations.md`` §5.2; the
+    primary source was not read). Use a measured value where one exists.
+
+    Parameters
+    ----------
+    kinematic_viscosity : array_like
+        [m²/s].
+
+    Returns
+    -------
+    numpy.ndarray
+        :math:`\alpha` [1/Pa].
+
+    Examples
+    --------
+    >>> round(float(pressure_viscosity_jungnickel(68e-6)) * 1e8, 2)
+    1.82
+    """
+    nu = check_positive("kinematic_viscosity", kinematic_viscosity, "m²/s")
+    result: FloatArray = 1.29e-7 * nu**0.204
+    return result
+
+
+@dataclass(frozen=True)
+class Lubricant:
+    r"""A lubricating oil and the correlations that give its properties.
+
+    Build one with :meth:`from_viscosities` or take a bundled one from
+    :func:`ballscrew.lubricants.get`.
+
+    Parameters
+    ----------
+    name : str
+        Label.
+    nu40, nu100 : float
+        Kinematic viscosity at 40 °C and 100 °C [m²/s]; ``nu100 < nu40``.
+    density15 : float
+        Density at 15 °C [kg/m³].
+    pressure_viscosity : float
+        Pressure-viscosity coefficient :math:`\alpha` [1/Pa], taken as
+        independent of temperature.
+    limiting_shear_stress : float
+        :math:`\tau_0` of the limiting shear stress :math:`\tau_{lim} = \tau_0
+        + \gamma_L p` [Pa].
+    limiting_shear_coefficient : float
+        :math:`\gamma_L` [-].
+    thermal_expansion : float
+        :math:`\beta_\rho` of :func:`density_linear` [1/K].
+    viscosity_model : {"astm_d341", "vogel"}
+        Viscosity-temperature law fitted through ``nu40`` and ``nu100``.
+    source : str
+        Where the numbers come from.
+
+    Examples
+    --------
+    >>> oil = Lubricant.from_viscosities("PAO ISO VG 68", 68e-6, 10.3e-6, 845.0, 1.5e-8)
+    >>> round(float(oil.kinematic_viscosity(20.0)) * 1e6, 1)
+    187.5
+    >>> round(float(oil.dynamic_viscosity(40.0)), 4)
+    0.0569
+    """
+
+    name: str
+    nu40: float
+    nu100: float
+    density15: float
+    pressure_viscosity: float
+    limiting_shear_stress: float = 0.0
+    limiting_shear_coefficient: float = 0.07
+    thermal_expansion: float = 6.5e-4
+    viscosity_model: ViscosityModel = "astm_d341"
+    source: str = ""
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.name, str) or not self.name.strip():
+            raise BallScrewInputError("name", self.name, "a non-empty text")
+        for field in ("nu40", "nu100", "density15", "pressure_viscosity"):
+            self._scalar(field, check_positive)
+        for field in ("limiting_shear_stress", "limiting_shear_coefficient"):
+            self._scalar(field, check_nonnegative)
+        self._scalar(
+            "thermal_expansion",
+            lambda f, v: check_in_range(f, v, 0.0, 0.01, inclusive=(True, False), unit="1/K"),
+        )
+        if self.nu100 >= self.nu40:
+            raise BallScrewInputError(
+                "nu100", self.nu100, f"a value below nu40 ({self.nu40!r} m²/s)"
+            )
+        if self.nu100 <= 0.3e-6 + 1e-12:
+            raise BallScrewInputError("nu100", self.nu100, "a viscosity above 0.3 mm²/s")
+        if self.viscosity_model not in VISCOSITY_MODELS:
+            raise BallScrewInputError(
+                "viscosity_model", self.viscosity_model, f"one of {list(VISCOSITY_MODELS)}"
+            )
+        if self.density(100.0) <= 0.0:
+            raise BallScrewInputError(
+                "thermal_expansion", self.thermal_expansion, "a value giving a positive density"
+            )
+
+    def _scalar(self, name: str, check: Any) -> None:
+        value = getattr(self, name)
+        if np.ndim(value) != 0 or isinstance(value, bool):
+            raise BallScrewInputError(name, value, "a single real number")
+        object.__setattr__(self, name, float(check(name, value)))
+
+    @classmethod
+    def from_viscosities(
+        cls,
+        name: str,
+        nu40: float,
+        nu100: float,
+        density15: float,
+        pressure_viscosity: float | None = None,
+        **kwargs: Any,
+    ) -> Lubricant:
+        """Lubricant from its data-sheet viscosities.
+
+        Parameters
+        ----------
+        name : str
+            Label.
+        nu40, nu100 : float
+            Kinematic viscosities at 40 and 100 °C [m²/s].
+        density15 : float
+            Density at 15 °C [kg/m³].
+        pressure_viscosity : float, optional
+            :math:`\\alpha` [1/Pa]; when omitted, estimated from ``nu40`` by
+            :func:`pressure_viscosity_jungnickel` (a rough fit for mineral oils).
+        **kwargs
+            Other fields of :class:`Lubricant`.
+        """
+        if pressure_viscosity is None:
+            pressure_viscosity = float(pressure_viscosity_jungnickel(nu40))
+            kwargs.setdefault("source", "pressure-viscosity estimated (Jungnickel)")
+        return cls(
+            name=name,
+            nu40=nu40,
+            nu100=nu100,
+            density15=density15,
+            pressure_viscosity=pressure_viscosity,
+            **kwargs,
+        )
+
+    def replace(self, **changes: Any) -> Lubricant:
+        """Return a copy with some fields changed (validated again)."""
+        known = {f.name for f in fields(self)}
+        for key in changes:
+            if key not in known:
+                raise BallScrewInputError(key, changes[key], f"a field of Lubricant: {sorted(known)}")
+        return replace(self, **changes)
+
+    def kinematic_viscosity(self, temperature: ArrayLike) -> FloatArray:
+        """Kinematic viscosity at ambient pressure [m²/s] at ``temperature`` [°C]."""
+        if self.viscosity_model == "vogel":
+            a, b = vogel_constants(self.nu40, 40.0, self.nu100, 100.0)
+            return vogel_viscosity(temperature, a, b)
+        a, b = astm_d341_constants(self.nu40, 40.0, self.nu100, 100.0)
+        return astm_d341_viscosity(temperature, a, b)
+
+    def density(self, temperature: ArrayLike) -> FloatArray:
+        """Density [kg/m³] at ``temperature`` [°C], see :func:`density_linear`."""
+        return density_linear(temperature, self.density15, self.thermal_expansion)
+
+    def dynamic_viscosity(self, temperature: ArrayLike) -> FloatArray:
+        """Dynamic viscosity at ambient pressure [Pa·s] at ``temperature`` [°C]."""
+        result: FloatArray = self.kinematic_viscosity(temperature) * self.density(temperature)
+        return result
+
+    def viscosity_at_pressure(
+        self, temperature: ArrayLike, pressure: ArrayLike, model: str = "roelands"
+    ) -> FloatArray:
+        """Dynamic viscosity [Pa·s] at ``temperature`` [°C] and gauge ``pressure`` [Pa].
+
+        ``model`` is ``"roelands"`` (default, :func:`roelands_1966`) or
+        ``"barus"`` (:func:`barus_1893`).
+        """
+        eta0 = self.dynamic_viscosity(temperature)
+        if model == "roelands":
+            return roelands_1966(eta0, self.pressure_viscosity, pressure)
+        if model == "barus":
+            return barus_1893(eta0, self.pressure_viscosity, pressure)
+        raise BallScrewInputError("model", model, f"one of {list(PRESSURE_VISCOSITY_MODELS)}")

@@ -1,0 +1,212 @@
+r"""The state of every ball contact at an operating point.
+
+This composes the physical layers (geometry, loads, kinematics, Hertz
+contact, lubricant, EHL film) into what each friction model needs, so that a
+model only adds its own friction law. Arrays broadcast over the operating
+point: screw speed, temperature and axial load.
+
+A ball screw has up to four kinds of contact: the screw and the nut contacts
+of each of the two contact-line families of :mod:`ballscrew.loads`.
+
+Examples
+--------
+>>> from ballscrew import lubricants, reference_screw
+>>> st = operating_state(reference_screw(), lubricants.get("PAO ISO VG 68"),
+...                      speed=104.72, temperature=40.0)
+>>> [c.name for c in st.contacts]
+['screw-1', 'nut-1', 'screw-2', 'nut-2']
+>>> round(float(st.contacts[0].film_minimum) * 1e6, 3)  # µm at 1000 rpm
+0.392
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Literal
+
+import numpy as np
+import numpy.typing as npt
+
+from . import ehl
+from .contact import HertzContact, hertz
+from .errors import FloatArray, check_finite
+from .geometry import BallScrew
+from .kinematics import Kinematics, kinematics
+from .loads import BallLoads, ball_loads
+from .lubricant import Lubricant
+
+__all__ = ["ContactState", "OperatingState", "operating_state"]
+
+
+@dataclass(frozen=True)
+class ContactState:
+    """One kind of ball contact (screw or nut side, family 1 or 2) at the operating points.
+
+    Attributes
+    ----------
+    side : {"screw", "nut"}
+        Which member the ball touches.
+    family : {1, 2}
+        Contact-line family of :mod:`ballscrew.loads` (1 = loaded by a positive axial load).
+    balls : int
+        Number of balls with this contact [-].
+    load : numpy.ndarray
+        Normal load per contact :math:`Q` [N].
+    rx, ry : float
+        Effective radii of curvature, rolling direction and across the groove [m].
+    radius : float
+        Distance of the contact from the screw axis [m].
+    hertz : HertzContact
+        Contact ellipse and pressure.
+    entrainment_speed : numpy.ndarray
+        Mean rolling speed [m/s] (sign of the screw speed).
+    viscosity : numpy.ndarray
+        Dynamic viscosity at ambient pressure at the temperature [Pa·s].
+    speed_parameter, materials_parameter, load_parameter : numpy.ndarray
+        Hamrock-Dowson :math:`U`, :math:`G`, :math:`W` [-].
+    film_minimum, film_central : numpy.ndarray
+        :math:`h_{min}`, :math:`h_c` [m].
+    roughness : float
+        Composite RMS roughness [m].
+    film_parameter : numpy.ndarray
+        :math:`\\Lambda = h_{min}/\\sigma` [-].
+    asperity_share : numpy.ndarray
+        :math:`A_c/A_0` [-].
+
+    Where a contact carries no load, its film, film parameter and asperity
+    share are 0.
+    """
+
+    side: Literal["screw", "nut"]
+    family: int
+    balls: int
+    load: FloatArray
+    rx: float
+    ry: float
+    radius: float
+    hertz: HertzContact
+    entrainment_speed: FloatArray
+    viscosity: FloatArray
+    speed_parameter: FloatArray
+    materials_parameter: FloatArray
+    load_parameter: FloatArray
+    film_minimum: FloatArray
+    film_central: FloatArray
+    roughness: float
+    film_parameter: FloatArray
+    asperity_share: FloatArray
+
+    @property
+    def name(self) -> str:
+        """Label such as ``"screw-1"``."""
+        return f"{self.side}-{self.family}"
+
+
+@dataclass(frozen=True)
+class OperatingState:
+    """Kinematics, ball loads and all contact states at the operating points."""
+
+    screw: BallScrew
+    lubricant: Lubricant
+    temperature: FloatArray
+    kinematics: Kinematics
+    loads: BallLoads
+    contacts: tuple[ContactState, ...]
+
+
+def operating_state(
+    screw: BallScrew,
+    lubricant: Lubricant,
+    *,
+    speed: npt.ArrayLike,
+    temperature: npt.ArrayLike,
+    axial_load: npt.ArrayLike = 0.0,
+    hertz_method: str = "houpert",
+    asperity_b: float = 1.42,
+    asperity_c: float = 0.8,
+) -> OperatingState:
+    r"""Compose the physical layers at the given operating points.
+
+    Parameters
+    ----------
+    screw : BallScrew
+        Geometry, preload, materials and roughness.
+    lubricant : Lubricant
+        The oil.
+    speed : array_like
+        Screw angular speed [rad/s].
+    temperature : array_like
+        Lubricant temperature [°C].
+    axial_load : array_like
+        External axial load on the nut [N].
+    hertz_method : str
+        Method of :func:`ballscrew.contact.hertz`; default ``"houpert"`` as in the study.
+    asperity_b, asperity_c : float
+        Constants of :func:`ballscrew.ehl.asperity_share`.
+
+    Returns
+    -------
+    OperatingState
+        ``speed``, ``temperature`` and ``axial_load`` broadcast against each other.
+    """
+    w, t, fa = np.broadcast_arrays(
+        check_finite("speed", speed),
+        check_finite("temperature", temperature),
+        check_finite("axial_load", axial_load),
+    )
+    kin = kinematics(screw, w)
+    bl = ball_loads(screw, fa)
+    eta = lubricant.dynamic_viscosity(t)
+    ep = screw.reduced_modulus
+    g = ehl.dimensionless_materials(lubricant.pressure_viscosity, ep)
+    sides: dict[str, tuple[float, float, float, float]] = {
+        "screw": (screw.rx_screw, screw.ry_screw, screw.contact_radius_screw,
+                  screw.composite_roughness_screw),
+        "nut": (screw.rx_nut, screw.ry_nut, screw.contact_radius_nut,
+                screw.composite_roughness_nut),
+    }
+    contacts: list[ContactState] = []
+    for family, q, balls in ((1, bl.normal_load_1, bl.balls_1), (2, bl.normal_load_2, bl.balls_2)):
+        for side, (rx, ry, radius, sigma) in sides.items():
+            hz = hertz(q, rx, ry, ep, method=hertz_method)
+            u_par = ehl.dimensionless_speed(eta, kin.entrainment_speed, ep, rx)
+            w_par = ehl.dimensionless_load(q, ep, rx)
+            # An unloaded contact (single-nut family 2, lift-off) has no film:
+            # film, film parameter and asperity share are reported as 0 there
+            # (the fits would otherwise diverge as W**-0.07 at W -> 0).
+            loaded = w_par > 0.0
+            w_safe = np.where(loaded, w_par, 1.0)
+            h_min = np.where(
+                loaded, ehl.hamrock_dowson_1977_minimum(rx, u_par, g, w_safe, hz.ellipticity), 0.0
+            )
+            h_c = np.where(
+                loaded, ehl.hamrock_dowson_1977_central(rx, u_par, g, w_safe, hz.ellipticity), 0.0
+            )
+            lam = ehl.lambda_ratio(h_min, sigma)
+            share = np.where(loaded, ehl.asperity_share(lam, asperity_b, asperity_c), 0.0)
+            contacts.append(
+                ContactState(
+                    side=side,  # type: ignore[arg-type]
+                    family=family,
+                    balls=balls,
+                    load=q,
+                    rx=rx,
+                    ry=ry,
+                    radius=radius,
+                    hertz=hz,
+                    entrainment_speed=kin.entrainment_speed,
+                    viscosity=eta,
+                    speed_parameter=u_par,
+                    materials_parameter=np.broadcast_to(g, q.shape),
+                    load_parameter=w_par,
+                    film_minimum=h_min,
+                    film_central=h_c,
+                    roughness=sigma,
+                    film_parameter=lam,
+                    asperity_share=share,
+                )
+            )
+    return OperatingState(
+        screw=screw, lubricant=lubricant, temperature=t, kinematics=kin, loads=bl,
+        contacts=tuple(contacts),
+    )

@@ -1,0 +1,241 @@
+"""Tests of ballscrew.contact: Hertz point contact by three methods."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy import integrate
+
+from ballscrew import BallScrewInputError
+from ballscrew.contact import (
+    HERTZ_METHODS,
+    ellipticity_exact,
+    hertz,
+    hertz_exact,
+    reduced_modulus,
+)
+
+E_STEEL = float(reduced_modulus(2.1e11, 0.3, 2.1e11, 0.3))
+
+
+def test_reduced_modulus_steel() -> None:
+    # Closed form: 2 / (2 (1 - 0.09) / 2.1e11) = 2.1e11 / 0.91 = 230.769 GPa.
+    assert E_STEEL == pytest.approx(2.1e11 / 0.91, rel=1e-12)
+
+
+def test_reduced_modulus_is_symmetric_and_rigid_limit() -> None:
+    a = reduced_modulus(2.1e11, 0.3, 7e10, 0.33)
+    b = reduced_modulus(7e10, 0.33, 2.1e11, 0.3)
+    assert a == pytest.approx(b, rel=1e-15)
+    # A rigid second body: E' -> 2 E1 / (1 - nu1^2).
+    rigid = reduced_modulus(2.1e11, 0.3, 1e30, 0.3)
+    assert rigid == pytest.approx(2 * 2.1e11 / 0.91, rel=1e-12)
+
+
+def _hertz_integrals(a: float, b: float, load: float, e_star: float) -> tuple[float, float, float]:
+    """Gap curvatures A (along a), B (along b) and approach from Hertz's potential integrals.
+
+    For the ellipsoidal pressure on an ellipse of semi-axes a, b, the surface
+    displacement inside the contact is delta - A x^2 - B y^2 with (Johnson,
+    Contact Mechanics, 1985, §3.7 and §4.2, written with the ellipsoid
+    potential):
+        delta = (3Q / 4 pi E*) int_0^inf ds / sqrt((a^2+s)(b^2+s)s)
+        A     = (3Q / 4 pi E*) int_0^inf ds / ((a^2+s) sqrt((a^2+s)(b^2+s)s))
+        B     = (3Q / 4 pi E*) int_0^inf ds / ((b^2+s) sqrt((a^2+s)(b^2+s)s))
+    These integrals are evaluated by adaptive quadrature (substituting s = t^2
+    to remove the endpoint singularity), independently of the complete
+    elliptic integrals used by the library.
+    """
+    c = 3 * load / (4 * math.pi * e_star)
+    r = a / b  # integrate in units of b, then scale back
+
+    def root(t: float) -> float:
+        s = t * t
+        return math.sqrt((r * r + s) * (1 + s))
+
+    kw = {"epsabs": 0.0, "epsrel": 1e-11, "limit": 400}
+    d = 2 * integrate.quad(lambda t: 1 / root(t), 0, np.inf, **kw)[0]
+    ia = 2 * integrate.quad(lambda t: 1 / ((r * r + t * t) * root(t)), 0, np.inf, **kw)[0]
+    ib = 2 * integrate.quad(lambda t: 1 / ((1 + t * t) * root(t)), 0, np.inf, **kw)[0]
+    return c * ia / b**3, c * ib / b**3, c * d / b
+
+
+@pytest.mark.parametrize("axis_ratio", [1.0, 1.5, 3.0, 5.0, 8.0, 12.0, 15.0])
+def test_exact_matches_hertz_potential_integrals(axis_ratio: float) -> None:
+    # Independent exact solution: choose the ellipse, compute the curvatures
+    # that produce it by quadrature, then ask the library for the ellipse.
+    b = 0.05e-3
+    a = axis_ratio * b
+    load = 30.0
+    e_star = E_STEEL / 2
+    gap_a, gap_b, delta = _hertz_integrals(a, b, load, e_star)
+    r_along_a = 1 / (2 * gap_a)  # gap = x^2 / (2 R)
+    r_along_b = 1 / (2 * gap_b)
+    c = hertz_exact(load, r_along_b, r_along_a, E_STEEL)
+    # Quadrature and Newton both converge to ~1e-12; 1e-9 leaves margin.
+    assert float(c.a) == pytest.approx(a, rel=1e-9)
+    assert float(c.b) == pytest.approx(b, rel=1e-9)
+    assert float(c.approach) == pytest.approx(delta, rel=1e-9)
+    assert float(c.p_max) == pytest.approx(3 * load / (2 * math.pi * a * b), rel=1e-9)
+    assert float(c.ellipticity) == pytest.approx(axis_ratio, rel=1e-9)
+
+
+@pytest.mark.parametrize("method", sorted(HERTZ_METHODS))
+def test_circular_contact_limit(method: str) -> None:
+    # Sphere of radius 10 mm on a flat (Rx = Ry = 10 mm), Johnson eq. (4.22)-(4.24):
+    # a = (3 Q R / 4 E*)^(1/3), delta = a^2 / R, p0 = 3 Q / (2 pi a^2).
+    load, r = 1000.0, 0.01
+    e_star = E_STEEL / 2
+    a_ref = (3 * load * r / (4 * e_star)) ** (1 / 3)
+    c = hertz(load, r, r, E_STEEL, method=method)
+    # Exact: machine precision. The fits: their error at ratio 1, measured in
+    # test_approximations_error_table (Hamrock-Brewe approach 5.4 %).
+    tol = 1e-12 if method == "exact" else 0.06
+    assert float(c.a) == pytest.approx(a_ref, rel=tol)
+    assert float(c.approach) == pytest.approx(a_ref**2 / r, rel=tol)
+    assert float(c.p_max) == pytest.approx(3 * load / (2 * math.pi * a_ref**2), rel=tol)
+    if method == "exact":
+        assert float(c.b) == pytest.approx(float(c.a), rel=1e-14)
+        assert float(c.ellipticity) == pytest.approx(1.0, rel=1e-14)
+        # Mean pressure is 2/3 of the maximum for the ellipsoidal distribution.
+        assert load / float(c.area) == pytest.approx(2 / 3 * float(c.p_max), rel=1e-12)
+
+
+def test_reference_notes_cross_check() -> None:
+    # shared/reference/equations.md §3 worked a ball-screw contact (steel,
+    # alpha = 45°, d_m = 32 mm, f = 0.55, Q = 50 N, D_w = 3.969 mm, ball-screw
+    # side) by hand with Hamrock-Brewe: k = 12.06 (radius ratio), a = 0.264 mm,
+    # b = 0.0524 mm, delta = 2.37 µm; with Houpert: a = 0.271 mm, b = 0.0528 mm.
+    dw, dm, alpha, f = 3.969e-3, 0.032, math.radians(45), 0.55
+    gamma = dw * math.cos(alpha) / dm
+    rx = dw / 2 * (1 - gamma)
+    ry = f * dw / (2 * f - 1)
+    assert ry / rx == pytest.approx(12.06, abs=0.01)
+    hb = hertz(50.0, rx, ry, 2.308e11, method="hamrock_brewe")
+    hp = hertz(50.0, rx, ry, 2.308e11, method="houpert")
+    # The notes give 3 significant figures: half a unit in the last place.
+    assert float(hb.a) * 1e3 == pytest.approx(0.264, abs=0.0005)
+    assert float(hb.b) * 1e3 == pytest.approx(0.0524, abs=0.00005)
+    assert float(hb.approach) * 1e6 == pytest.approx(2.37, abs=0.005)
+    assert float(hp.a) * 1e3 == pytest.approx(0.271, abs=0.0005)
+    assert float(hp.b) * 1e3 == pytest.approx(0.0528, abs=0.00005)
+
+
+def _max_errors(method: str, ratios: np.ndarray) -> dict[str, float]:
+    exact = hertz_exact(100.0, 1.0, ratios, E_STEEL)
+    approx = hertz(100.0, 1.0, ratios, E_STEEL, method=method)
+    return {
+        name: float(np.max(np.abs(getattr(approx, name) / getattr(exact, name) - 1)))
+        for name in ("a", "b", "p_max", "approach", "ellipticity")
+    }
+
+
+def test_approximations_error_table() -> None:
+    # The errors stated in ballscrew.contact's module docstring, over
+    # ellipticity 1 to 15 (radius ratio 1 to 72) and over radius ratio 1 to 13
+    # (the range of ball screw grooves with conformity >= 0.52). The bounds are
+    # the measured maxima rounded up to the next 0.1 %.
+    full = np.geomspace(1.0, 72.1, 3000)
+    assert float(ellipticity_exact(72.1)) == pytest.approx(15.0, abs=0.01)
+    narrow = np.geomspace(1.0, 13.0, 3000)
+    documented = {
+        ("hamrock_brewe", "full"): {
+            "a": 0.032, "b": 0.016, "p_max": 0.022, "approach": 0.055, "ellipticity": 0.048
+        },
+        ("hamrock_brewe", "narrow"): {
+            "a": 0.029, "b": 0.006, "p_max": 0.022, "approach": 0.055, "ellipticity": 0.034
+        },
+        ("houpert", "full"): {
+            "a": 0.134, "b": 0.027, "p_max": 0.141, "approach": 0.042, "ellipticity": 0.105
+        },
+        ("houpert", "narrow"): {
+            "a": 0.026, "b": 0.010, "p_max": 0.034, "approach": 0.006, "ellipticity": 0.017
+        },
+    }
+    for (method, span), bounds in documented.items():
+        errors = _max_errors(method, full if span == "full" else narrow)
+        for name, bound in bounds.items():
+            assert errors[name] <= bound, (method, span, name, errors[name])
+            # The bound is tight (within 0.2 %): the docstring states real numbers.
+            assert errors[name] > bound - 0.002, (method, span, name, errors[name])
+
+
+@pytest.mark.parametrize("method", sorted(HERTZ_METHODS))
+def test_swapping_principal_planes_changes_nothing(method: str) -> None:
+    c1 = hertz(40.0, 0.9e-3, 11e-3, E_STEEL, method=method)
+    c2 = hertz(40.0, 11e-3, 0.9e-3, E_STEEL, method=method)
+    for name in ("a", "b", "p_max", "approach", "ellipticity"):
+        assert getattr(c1, name) == pytest.approx(getattr(c2, name), rel=1e-14)
+
+
+@pytest.mark.parametrize("method", sorted(HERTZ_METHODS))
+def test_load_scaling_exponents(method: str) -> None:
+    # Hertz: a, b, p_max scale with Q^(1/3), the approach with Q^(2/3).
+    c1 = hertz(10.0, 1e-3, 8e-3, E_STEEL, method=method)
+    c8 = hertz(80.0, 1e-3, 8e-3, E_STEEL, method=method)
+    assert float(c8.a / c1.a) == pytest.approx(2.0, rel=1e-12)
+    assert float(c8.b / c1.b) == pytest.approx(2.0, rel=1e-12)
+    assert float(c8.p_max / c1.p_max) == pytest.approx(2.0, rel=1e-12)
+    assert float(c8.approach / c1.approach) == pytest.approx(4.0, rel=1e-12)
+
+
+def test_ellipticity_rises_with_radius_ratio_and_a_ge_b() -> None:
+    ratios = np.geomspace(1.0, 1e4, 500)
+    k = ellipticity_exact(ratios)
+    assert np.all(np.diff(k) > 0)
+    c = hertz_exact(5.0, 1e-3, 1e-3 * ratios, E_STEEL)
+    assert np.all(c.a >= c.b)
+
+
+def test_near_circular_branch_is_continuous() -> None:
+    # The series used for ratio - 1 < 1e-6 must join the Newton solution.
+    below = float(ellipticity_exact(1 + 0.99e-6))
+    above = float(ellipticity_exact(1 + 1.01e-6))
+    assert above > below
+    assert above - below == pytest.approx(2 / 3 * 0.02e-6, rel=0.05)
+
+
+def test_zero_load_gives_zero_contact_without_nan() -> None:
+    for method in HERTZ_METHODS:
+        c = hertz(np.array([0.0, 10.0]), 1e-3, 8e-3, E_STEEL, method=method)
+        assert np.all(np.isfinite(c.p_max))
+        assert c.a[0] == 0 and c.p_max[0] == 0 and c.approach[0] == 0
+
+
+def test_broadcasting_and_input_forms() -> None:
+    loads = [5.0, 10.0, 20.0]
+    as_list = hertz(loads, 1e-3, 8e-3, E_STEEL)
+    as_array = hertz(np.array(loads), 1e-3, 8e-3, E_STEEL)
+    scalars = [float(hertz(q, 1e-3, 8e-3, E_STEEL).a) for q in loads]
+    np.testing.assert_array_equal(as_list.a, as_array.a)
+    np.testing.assert_allclose(as_array.a, scalars, rtol=1e-15)
+    grid = hertz(np.array(loads)[:, None], 1e-3, np.array([2e-3, 8e-3]), E_STEEL)
+    assert grid.a.shape == (3, 2)
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "field"),
+    [
+        ({"load": -1.0}, "load"),
+        ({"rx": 0.0}, "rx"),
+        ({"ry": -1e-3}, "ry"),
+        ({"reduced_modulus": float("nan")}, "reduced_modulus"),
+        ({"method": "hertz1882"}, "method"),
+    ],
+)
+def test_bad_input_names_the_field(kwargs: dict[str, object], field: str) -> None:
+    args: dict[str, object] = {
+        "load": 10.0, "rx": 1e-3, "ry": 8e-3, "reduced_modulus": E_STEEL, "method": "exact"
+    }
+    args.update(kwargs)
+    with pytest.raises(BallScrewInputError, match=field):
+        hertz(**args)  # type: ignore[arg-type]
+
+
+def test_unknown_method_lists_the_valid_ones() -> None:
+    with pytest.raises(BallScrewInputError) as info:
+        hertz(1.0, 1e-3, 1e-3, E_STEEL, method="nope")
+    for name in HERTZ_METHODS:
+        assert name in str(info.value)
