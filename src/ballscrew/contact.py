@@ -195,10 +195,10 @@ def ellipticity_exact(radius_ratio: ArrayLike) -> FloatArray:
 
     Examples
     --------
-    >>> float(ellipticity_exact(1.0))
+    >>> round(float(ellipticity_exact(1.0)), 12)
     1.0
     >>> round(float(ellipticity_exact(10.0)), 4)
-    4.4996
+    4.4994
 
     References
     ----------
@@ -305,11 +305,11 @@ def hertz_exact(load: ArrayLike, rx: ArrayLike, ry: ArrayLike, reduced_modulus: 
     Examples
     --------
     Steel ball of 10 mm radius on a flat, 1 kN (circular contact; Johnson's
-    :math:`a = (3QR/4E^*)^{1/3}` gives 0.3690 mm):
+    :math:`a = (3QR/4E^*)^{1/3}` with :math:`E^* = E'/2` gives 0.4021 mm):
 
     >>> c = hertz_exact(1000.0, 0.01, 0.01, 230.77e9)
     >>> round(float(c.a) * 1e3, 4), round(float(c.b) * 1e3, 4)
-    (0.369, 0.369)
+    (0.4021, 0.4021)
 
     References
     ----------
@@ -417,9 +417,11 @@ def hertz_houpert_2001(
 
     Examples
     --------
+    The fit is 0.9 % above the exact 0.4021 mm for the circular contact:
+
     >>> c = hertz_houpert_2001(1000.0, 0.01, 0.01, 230.77e9)
     >>> round(float(c.a) * 1e3, 4)
-    0.3722
+    0.4058
 
     References
     ----------

@@ -110,7 +110,7 @@ class BallScrew:
     ...               conformity_nut=0.55, loaded_turns=2.5, circuits=2,
     ...               nut="double", preload=2000.0)
     >>> round(math.degrees(s.lead_angle), 3)
-    4.548
+    4.55
     >>> s.balls_per_nut
     98
     """
@@ -171,12 +171,12 @@ class BallScrew:
                 'use nut="double" for double or lead-offset nuts, "single-4point" '
                 "for oversize balls)",
             )
-        if self.ball_diameter * math.cos(self.contact_angle) >= self.pitch_diameter:
+        if self.ball_diameter >= self.pitch_diameter:
             raise BallScrewInputError(
                 "ball_diameter",
                 self.ball_diameter,
-                f"ball_diameter * cos(contact_angle) < pitch_diameter "
-                f"({self.pitch_diameter!r} m); the ball does not fit the pitch circle",
+                f"a ball smaller than the pitch diameter ({self.pitch_diameter!r} m); "
+                "a larger ball does not fit the pitch circle (no screw core would remain)",
             )
         if self.lead >= math.pi * self.pitch_diameter:
             raise BallScrewInputError(

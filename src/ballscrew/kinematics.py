@@ -122,7 +122,7 @@ def kinematics(screw: BallScrew, speed: npt.ArrayLike) -> Kinematics:
     ...               conformity_nut=0.55, loaded_turns=2.5, circuits=2)
     >>> k = kinematics(s, rpm_to_rad_s(1000.0))
     >>> round(float(k.table_speed), 4), round(float(k.entrainment_speed), 4)
-    (0.1667, 1.0415)
+    (0.1667, 1.034)
     """
     w = check_finite("speed", speed)
     g = screw.gamma

@@ -80,12 +80,12 @@ def preload_split(
 
     Examples
     --------
-    Small loads are shared half and half; at 2^1.5 times the preload the
+    Small loads are shared nearly half and half; at 2^1.5 times the preload the
     relieved family lifts off:
 
     >>> f1, f2 = preload_split([0.0, 100.0, 2.0**1.5 * 1000.0], 1000.0)
     >>> [round(float(v), 1) for v in f1], [round(float(v), 1) for v in f2]
-    ([1000.0, 1050.0, 2828.4], [1000.0, 950.0, 0.0])
+    ([1000.0, 1050.4, 2828.4], [1000.0, 950.4, 0.0])
     """
     fa = np.abs(check_finite("axial_load", axial_load))
     fpr = check_nonnegative("preload", preload, "N")
@@ -169,7 +169,7 @@ def ball_loads(screw: BallScrew, axial_load: npt.ArrayLike = 0.0) -> BallLoads:
     ...               nut="double", preload=2000.0)
     >>> loads = ball_loads(s)
     >>> round(float(loads.normal_load_1), 2)  # 2000 / (98 sin 45° cos 4.55°)
-    28.96
+    28.95
     """
     fa = check_finite("axial_load", axial_load)
     z = screw.balls_per_nut

@@ -141,7 +141,7 @@ def general_non_newtonian(
     >>> float(general_non_newtonian(1.0, 1.0, 1.0))  # tau_N = tau_lim: half of each
     0.5
     >>> round(float(general_non_newtonian(1.0, 1e9, 50e6, n=2)) / 50e6, 6)
-    0.99875
+    0.998752
     """
     eta = check_nonnegative("viscosity", viscosity, "Pa·s")
     rate = check_finite("shear_rate", shear_rate)

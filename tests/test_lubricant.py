@@ -1,0 +1,187 @@
+"""Tests of ballscrew.lubricant and the bundled library ballscrew.lubricants."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from ballscrew import BallScrewInputError, Lubricant, lubricants
+from ballscrew.lubricant import (
+    astm_d341_constants,
+    astm_d341_viscosity,
+    barus_1893,
+    density_linear,
+    pressure_viscosity_jungnickel,
+    roelands_1966,
+    vogel_constants,
+    vogel_viscosity,
+)
+
+TEMPS = np.array([20.0, 25.0, 30.0, 35.0, 40.0, 45.0])
+
+
+@pytest.mark.parametrize(
+    ("nu40", "nu100", "a_ref", "b_ref", "table"),
+    [
+        # shared/reference/equations.md §5.1, Walther fits worked independently
+        # there (A, B to 4 decimals; viscosities to 0.1 mm²/s).
+        (68.0, 10.3, 8.3444, 3.2376, [187.5, 141.7, 109.1, 85.4, 68.0, 54.9]),
+        (68.0, 10.0, 8.5096, 3.3038, [191.8, 144.0, 110.2, 85.9, 68.0, 54.7]),
+        (68.0, 8.6, 9.3778, 3.6517, [216.9, 156.9, 116.3, 88.0, 68.0, 53.5]),
+        (50.0, 7.5, 9.1114, 3.5579, [142.6, 106.5, 81.3, 63.2, 50.0, 40.2]),
+        (60.0, 8.5, 9.0112, 3.5099, [176.3, 130.7, 98.9, 76.4, 60.0, 47.9]),
+    ],
+)
+def test_walther_against_reference_table(
+    nu40: float, nu100: float, a_ref: float, b_ref: float, table: list[float]
+) -> None:
+    a, b = astm_d341_constants(nu40 * 1e-6, 40.0, nu100 * 1e-6, 100.0)
+    # The table rounds A and B to 4 decimals: half a unit is 5e-5.
+    assert float(a) == pytest.approx(a_ref, abs=5e-5)
+    assert float(b) == pytest.approx(b_ref, abs=5e-5)
+    nu = astm_d341_viscosity(TEMPS, a, b) * 1e6
+    # 0.1 mm²/s rounding of the table: 0.05 plus float noise.
+    np.testing.assert_allclose(nu, table, atol=0.051)
+
+
+def test_walther_passes_through_its_points_and_falls_with_temperature() -> None:
+    a, b = astm_d341_constants(68e-6, 40.0, 10.3e-6, 100.0)
+    np.testing.assert_allclose(astm_d341_viscosity([40.0, 100.0], a, b), [68e-6, 10.3e-6],
+                               rtol=1e-12)
+    nu = astm_d341_viscosity(np.linspace(-20, 150, 200), a, b)
+    assert np.all(np.diff(nu) < 0)
+
+
+def test_walther_constants_do_not_depend_on_the_temperature_scale() -> None:
+    # ASTM D341 charts use kelvin or rankine; log10 T differs by a constant,
+    # which shifts A only. Two points given at other temperatures must give the
+    # same line: fit through (20 °C, 60 °C) points of the first line.
+    a, b = astm_d341_constants(68e-6, 40.0, 10.3e-6, 100.0)
+    n20, n60 = astm_d341_viscosity([20.0, 60.0], a, b)
+    a2, b2 = astm_d341_constants(n20, 20.0, n60, 60.0)
+    assert float(a2) == pytest.approx(float(a), rel=1e-12)
+    assert float(b2) == pytest.approx(float(b), rel=1e-12)
+
+
+def test_vogel_thermca_vg68_values() -> None:
+    # Thermca's fluids library, mineral VG 68 (A = 0.071e-6 m²/s, B = 929 °C,
+    # C = 95 °C); values from shared/reference/equations.md §5.1, 0.1 mm²/s.
+    nu = vogel_viscosity([20, 25, 30, 35, 40, 45, 100], 0.071e-6, 929.0) * 1e6
+    np.testing.assert_allclose(nu, [228.9, 163.5, 119.9, 90.1, 69.2, 54.1, 8.3], atol=0.051)
+
+
+def test_vogel_fit_passes_through_points() -> None:
+    a, b = vogel_constants(68e-6, 40.0, 10.3e-6, 100.0)
+    np.testing.assert_allclose(vogel_viscosity([40.0, 100.0], a, b), [68e-6, 10.3e-6], rtol=1e-12)
+
+
+def test_vogel_and_walther_agree_between_their_points() -> None:
+    # Two different laws fitted through the same two points stay within a few
+    # per cent between them (measured 2.1 % at 70 °C for a PAO 68).
+    oil = lubricants.get("PAO ISO VG 68")
+    vogel = oil.replace(viscosity_model="vogel")
+    t = np.linspace(40.0, 100.0, 61)
+    ratio = vogel.kinematic_viscosity(t) / oil.kinematic_viscosity(t)
+    assert np.max(np.abs(ratio - 1)) < 0.03
+
+
+def test_roelands_initial_slope_is_alpha_and_stays_below_barus() -> None:
+    eta0, alpha = 0.05, 2e-8
+    dp = 1e3
+    slope = (math.log(float(roelands_1966(eta0, alpha, dp))) - math.log(eta0)) / dp
+    assert slope == pytest.approx(alpha, rel=1e-4)
+    p = np.linspace(1e7, 2e9, 50)
+    assert np.all(roelands_1966(eta0, alpha, p) < barus_1893(eta0, alpha, p))
+    assert float(roelands_1966(eta0, alpha, 0.0)) == eta0
+    assert np.all(np.diff(roelands_1966(eta0, alpha, p)) > 0)
+
+
+def test_roelands_closed_form_value() -> None:
+    # Worked step by step (catches a wrong constant p_r = 1.96e8 Pa or
+    # ln(eta_inf) = -9.67): span = ln(0.05) + 9.67 = 6.674268,
+    # Z = 1.5e-8 * 1.96e8 / span = 0.440498, (1 + 1e9/1.96e8)^Z - 1 = 1.218197,
+    # eta/eta0 = exp(6.674268 * 1.218197) = exp(8.130570) = 3396.7.
+    assert float(roelands_1966(0.05, 1.5e-8, 1e9)) / 0.05 == pytest.approx(3396.7, rel=5e-5)
+
+
+def test_barus_overflows_to_inf_without_warning() -> None:
+    assert math.isinf(float(barus_1893(0.05, 2e-8, 1e11)))
+
+
+def test_density_and_dynamic_viscosity() -> None:
+    assert float(density_linear(15.0, 850.0)) == 850.0
+    assert float(density_linear(115.0, 850.0)) == pytest.approx(850 * (1 - 0.065))
+    oil = Lubricant.from_viscosities("test", 68e-6, 10.3e-6, 850.0, 1.5e-8)
+    eta = oil.dynamic_viscosity(40.0)
+    assert float(eta) == pytest.approx(68e-6 * 850 * (1 - 6.5e-4 * 25), rel=1e-12)
+
+
+def test_pressure_viscosity_estimate() -> None:
+    # Thermca's fit: 1.29e-7 * (68e-6)**0.204 = 1.82e-8 /Pa (equations.md §5.2).
+    assert float(pressure_viscosity_jungnickel(68e-6)) == pytest.approx(1.82e-8, rel=3e-3)
+    oil = Lubricant.from_viscosities("x", 68e-6, 9e-6, 870.0)
+    assert oil.pressure_viscosity == pytest.approx(1.82e-8, rel=3e-3)
+    assert "estimated" in oil.source
+
+
+def test_viscosity_at_pressure_models() -> None:
+    oil = lubricants.get("mineral ISO VG 68")
+    r = oil.viscosity_at_pressure(40.0, 5e8)
+    b = oil.viscosity_at_pressure(40.0, 5e8, model="barus")
+    assert float(r) < float(b)
+    with pytest.raises(BallScrewInputError, match="model"):
+        oil.viscosity_at_pressure(40.0, 5e8, model="doolittle")
+
+
+@pytest.mark.parametrize(
+    ("changes", "field"),
+    [
+        ({"nu100": 70e-6}, "nu100"),
+        ({"nu40": -1.0}, "nu40"),
+        ({"density15": float("nan")}, "density15"),
+        ({"pressure_viscosity": 0.0}, "pressure_viscosity"),
+        ({"limiting_shear_coefficient": -0.1}, "limiting_shear_coefficient"),
+        ({"viscosity_model": "andrade"}, "viscosity_model"),
+        ({"name": ""}, "name"),
+    ],
+)
+def test_bad_lubricant_input(changes: dict[str, object], field: str) -> None:
+    base = lubricants.get("PAO ISO VG 68")
+    with pytest.raises(BallScrewInputError) as info:
+        base.replace(**changes)
+    assert info.value.field == field
+
+
+def test_bad_temperature() -> None:
+    oil = lubricants.get("SAE 20")
+    with pytest.raises(BallScrewInputError, match="temperature"):
+        oil.kinematic_viscosity(-300.0)
+    with pytest.raises(BallScrewInputError, match="temperature"):
+        oil.kinematic_viscosity(float("nan"))
+
+
+def test_library_contents_and_lookup() -> None:
+    required = {"PAO ISO VG 68", "mineral ISO VG 68", "SAE 20", "mineral ISO VG 32",
+                "mineral ISO VG 46", "mineral ISO VG 100"}
+    assert required <= set(lubricants.names())
+    for oil in lubricants.all_lubricants():
+        assert oil.source, oil.name
+        # ISO 3448: the grade number is the mid-point viscosity at 40 °C (±10 %).
+        if "ISO VG" in oil.name:
+            grade = float(oil.name.rsplit(" ", 1)[1])
+            assert 0.9 * grade <= oil.nu40 * 1e6 <= 1.1 * grade
+    assert lubricants.get("  pao iso   vg 68 ").name == "PAO ISO VG 68"
+
+
+def test_sae20_is_inside_sae_j300() -> None:
+    # SAE J300: an SAE 20 has 6.9 <= nu100 < 9.3 mm²/s.
+    assert 6.9e-6 <= lubricants.get("SAE 20").nu100 < 9.3e-6
+
+
+def test_unknown_lubricant_lists_the_names() -> None:
+    with pytest.raises(BallScrewInputError) as info:
+        lubricants.get("castor oil")
+    for name in lubricants.names():
+        assert name in str(info.value)
