@@ -142,16 +142,32 @@ def test_approximations_error_table() -> None:
     narrow = np.geomspace(1.0, 13.0, 3000)
     documented = {
         ("hamrock_brewe", "full"): {
-            "a": 0.032, "b": 0.016, "p_max": 0.022, "approach": 0.055, "ellipticity": 0.048
+            "a": 0.032,
+            "b": 0.016,
+            "p_max": 0.022,
+            "approach": 0.055,
+            "ellipticity": 0.048,
         },
         ("hamrock_brewe", "narrow"): {
-            "a": 0.029, "b": 0.006, "p_max": 0.022, "approach": 0.055, "ellipticity": 0.034
+            "a": 0.029,
+            "b": 0.006,
+            "p_max": 0.022,
+            "approach": 0.055,
+            "ellipticity": 0.034,
         },
         ("houpert", "full"): {
-            "a": 0.134, "b": 0.027, "p_max": 0.141, "approach": 0.042, "ellipticity": 0.105
+            "a": 0.134,
+            "b": 0.027,
+            "p_max": 0.141,
+            "approach": 0.042,
+            "ellipticity": 0.105,
         },
         ("houpert", "narrow"): {
-            "a": 0.026, "b": 0.010, "p_max": 0.034, "approach": 0.006, "ellipticity": 0.017
+            "a": 0.026,
+            "b": 0.010,
+            "p_max": 0.034,
+            "approach": 0.006,
+            "ellipticity": 0.017,
         },
     }
     for (method, span), bounds in documented.items():
@@ -227,7 +243,11 @@ def test_broadcasting_and_input_forms() -> None:
 )
 def test_bad_input_names_the_field(kwargs: dict[str, object], field: str) -> None:
     args: dict[str, object] = {
-        "load": 10.0, "rx": 1e-3, "ry": 8e-3, "reduced_modulus": E_STEEL, "method": "exact"
+        "load": 10.0,
+        "rx": 1e-3,
+        "ry": 8e-3,
+        "reduced_modulus": E_STEEL,
+        "method": "exact",
     }
     args.update(kwargs)
     with pytest.raises(BallScrewInputError, match=field):

@@ -35,8 +35,14 @@ def test_linear_and_odd_in_speed() -> None:
     s = reference_screw()
     k1 = kinematics(s, 10.0)
     k3 = kinematics(s, -30.0)
-    for name in ("table_speed", "orbital_speed", "ball_speed", "entrainment_speed",
-                 "spin_screw", "spin_nut"):
+    for name in (
+        "table_speed",
+        "orbital_speed",
+        "ball_speed",
+        "entrainment_speed",
+        "spin_screw",
+        "spin_nut",
+    ):
         assert float(getattr(k3, name)) == pytest.approx(-3 * float(getattr(k1, name)), rel=1e-14)
     zero = kinematics(s, 0.0)
     assert float(zero.entrainment_speed) == 0.0

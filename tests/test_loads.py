@@ -39,8 +39,9 @@ def test_split_conserves_force_and_deflection() -> None:
     # Hertz compatibility while both are loaded: delta_1 + delta_2 = 2 delta_0,
     # i.e. (F1/Fpr)^(2/3) + (F2/Fpr)^(2/3) = 2, independent of the stiffness.
     both = f2 > 0
-    np.testing.assert_allclose((f1[both] / 1000) ** (2 / 3) + (f2[both] / 1000) ** (2 / 3), 2.0,
-                               rtol=1e-12)
+    np.testing.assert_allclose(
+        (f1[both] / 1000) ** (2 / 3) + (f2[both] / 1000) ** (2 / 3), 2.0, rtol=1e-12
+    )
     assert np.all(f1 >= 1000.0 - 1e-9) and np.all(f2 >= 0)
 
 

@@ -48,8 +48,9 @@ def test_walther_against_reference_table(
 
 def test_walther_passes_through_its_points_and_falls_with_temperature() -> None:
     a, b = astm_d341_constants(68e-6, 40.0, 10.3e-6, 100.0)
-    np.testing.assert_allclose(astm_d341_viscosity([40.0, 100.0], a, b), [68e-6, 10.3e-6],
-                               rtol=1e-12)
+    np.testing.assert_allclose(
+        astm_d341_viscosity([40.0, 100.0], a, b), [68e-6, 10.3e-6], rtol=1e-12
+    )
     nu = astm_d341_viscosity(np.linspace(-20, 150, 200), a, b)
     assert np.all(np.diff(nu) < 0)
 
@@ -163,8 +164,14 @@ def test_bad_temperature() -> None:
 
 
 def test_library_contents_and_lookup() -> None:
-    required = {"PAO ISO VG 68", "mineral ISO VG 68", "SAE 20", "mineral ISO VG 32",
-                "mineral ISO VG 46", "mineral ISO VG 100"}
+    required = {
+        "PAO ISO VG 68",
+        "mineral ISO VG 68",
+        "SAE 20",
+        "mineral ISO VG 32",
+        "mineral ISO VG 46",
+        "mineral ISO VG 100",
+    }
     assert required <= set(lubricants.names())
     for oil in lubricants.all_lubricants():
         assert oil.source, oil.name

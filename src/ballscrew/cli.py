@@ -63,7 +63,7 @@ def demo(lubricant_name: str, temperature: float) -> None:
     Examples:
       ballscrew demo
       ballscrew demo --lubricant "SAE 20" --temperature 30
-    """
+    """  # noqa: D301 - click needs the literal \b to keep the example lines
     console = Console(width=110, markup=False)
     screw = reference_screw()
     oil = lubricants.get(lubricant_name)

@@ -51,7 +51,13 @@ import numpy as np
 import numpy.typing as npt
 from scipy import special
 
-from .errors import BallScrewInputError, FloatArray, check_in_range, check_nonnegative, check_positive
+from .errors import (
+    BallScrewInputError,
+    FloatArray,
+    check_in_range,
+    check_nonnegative,
+    check_positive,
+)
 
 __all__ = [
     "HERTZ_METHODS",
@@ -108,7 +114,7 @@ def reduced_modulus(e1: ArrayLike, nu1: ArrayLike, e2: ArrayLike, nu2: ArrayLike
 
 @dataclass(frozen=True)
 class HertzContact:
-    """Result of a Hertz point-contact calculation (arrays broadcast over the inputs).
+    r"""Result of a Hertz point-contact calculation (arrays broadcast over the inputs).
 
     Attributes
     ----------
@@ -118,7 +124,7 @@ class HertzContact:
     b : numpy.ndarray
         Semi-minor axis [m], ``b <= a``.
     p_max : numpy.ndarray
-        Maximum (central) contact pressure :math:`3Q/(2\\pi a b)` [Pa].
+        Maximum (central) contact pressure :math:`3Q/(2\pi a b)` [Pa].
     approach : numpy.ndarray
         Mutual approach of distant points of the two bodies [m].
     ellipticity : numpy.ndarray
@@ -136,7 +142,7 @@ class HertzContact:
 
     @property
     def area(self) -> FloatArray:
-        """Area of the contact ellipse :math:`\\pi a b` [m²]."""
+        r"""Area of the contact ellipse :math:`\pi a b` [m²]."""
         result: FloatArray = np.pi * self.a * self.b
         return result
 
@@ -164,7 +170,9 @@ def _radius_ratio_of_ellipticity(k: FloatArray) -> FloatArray:
     form suffers near the circular contact.
     """
     p = 1.0 / k**2
-    result: FloatArray = k**2 * (3.0 * special.elliprf(0.0, p, 1.0) / special.elliprd(0.0, p, 1.0) - 1.0)
+    result: FloatArray = k**2 * (
+        3.0 * special.elliprf(0.0, p, 1.0) / special.elliprd(0.0, p, 1.0) - 1.0
+    )
     return result
 
 
@@ -207,9 +215,7 @@ def ellipticity_exact(radius_ratio: ArrayLike) -> FloatArray:
     .. [2] B. C. Carlson, "Numerical computation of real or complex elliptic
        integrals", Numer. Algorithms 10 (1995) 13-26, doi:10.1007/BF02198293.
     """
-    ratio_in = check_in_range(
-        "radius_ratio", radius_ratio, 1.0, np.inf, inclusive=(True, False)
-    )
+    ratio_in = check_in_range("radius_ratio", radius_ratio, 1.0, np.inf, inclusive=(True, False))
     target = np.log(np.atleast_1d(ratio_in).astype(np.float64).ravel())
     x0 = np.log(1.0339) + 0.636 * target  # ln k, Hamrock-Brewe start
     x1 = x0 + 1e-3
@@ -253,12 +259,12 @@ def _assemble(
     big_e: FloatArray,
     big_f: FloatArray,
 ) -> HertzContact:
-    """Semi-axes, pressure and approach from ellipticity and the two elliptic integrals.
+    r"""Semi-axes, pressure and approach from ellipticity and the two elliptic integrals.
 
     Hamrock and Brewe's closed forms, exact when ``k``, ``big_e`` and ``big_f``
-    are exact:  :math:`a = (6k^2\\mathcal{E}QR/\\pi E')^{1/3}`,
-    :math:`b = (6\\mathcal{E}QR/\\pi k E')^{1/3}`,
-    :math:`\\delta = \\mathcal{F}[(9/2\\mathcal{E}R)(Q/\\pi k E')^2]^{1/3}`.
+    are exact:  :math:`a = (6k^2\mathcal{E}QR/\pi E')^{1/3}`,
+    :math:`b = (6\mathcal{E}QR/\pi k E')^{1/3}`,
+    :math:`\delta = \mathcal{F}[(9/2\mathcal{E}R)(Q/\pi k E')^2]^{1/3}`.
     """
     cube_q = np.cbrt(q)
     a1 = np.cbrt(6.0 * k**2 * big_e * r_sum / (np.pi * ep))
@@ -274,7 +280,9 @@ def _assemble(
     )
 
 
-def hertz_exact(load: ArrayLike, rx: ArrayLike, ry: ArrayLike, reduced_modulus: ArrayLike) -> HertzContact:
+def hertz_exact(
+    load: ArrayLike, rx: ArrayLike, ry: ArrayLike, reduced_modulus: ArrayLike
+) -> HertzContact:
     r"""Hertz point contact, exact solution with complete elliptic integrals.
 
     .. math::

@@ -75,7 +75,9 @@ def dimensionless_speed(
     return result
 
 
-def dimensionless_materials(pressure_viscosity: ArrayLike, reduced_modulus: ArrayLike) -> FloatArray:
+def dimensionless_materials(
+    pressure_viscosity: ArrayLike, reduced_modulus: ArrayLike
+) -> FloatArray:
     r"""Hamrock-Dowson materials parameter :math:`G = \alpha E'` [-].
 
     Examples
@@ -179,7 +181,7 @@ def hamrock_dowson_1977_central(
 
 
 def composite_roughness(sigma1: ArrayLike, sigma2: ArrayLike) -> FloatArray:
-    r"""Composite RMS roughness of two surfaces, :math:`\sigma = \sqrt{\sigma_1^2 + \sigma_2^2}` [m].
+    r"""Composite RMS roughness of two surfaces, :math:`\sqrt{\sigma_1^2 + \sigma_2^2}` [m].
 
     Examples
     --------

@@ -55,7 +55,9 @@ def _as_float_array(field: str, value: Any) -> FloatArray:
     try:
         arr = np.asarray(value, dtype=np.float64)
     except (TypeError, ValueError):
-        raise BallScrewInputError(field, value, "a real number or an array of real numbers") from None
+        raise BallScrewInputError(
+            field, value, "a real number or an array of real numbers"
+        ) from None
     return arr
 
 

@@ -153,9 +153,7 @@ class BallScrew:
                 ),
             )
         for name in ("poisson_ratio_ball", "poisson_ratio_races"):
-            self._scalar(
-                name, lambda f, v: check_in_range(f, v, 0.0, 0.5, inclusive=(True, False))
-            )
+            self._scalar(name, lambda f, v: check_in_range(f, v, 0.0, 0.5, inclusive=(True, False)))
         if isinstance(self.circuits, bool) or not isinstance(self.circuits, int | np.integer):
             raise BallScrewInputError("circuits", self.circuits, "a whole number >= 1")
         if self.circuits < 1:
@@ -201,13 +199,15 @@ class BallScrew:
         known = {f.name for f in fields(self)}
         for key in changes:
             if key not in known:
-                raise BallScrewInputError(key, changes[key], f"a field of BallScrew: {sorted(known)}")
+                raise BallScrewInputError(
+                    key, changes[key], f"a field of BallScrew: {sorted(known)}"
+                )
         return replace(self, **changes)
 
     # --- derived quantities -------------------------------------------------
     @property
     def lead_angle(self) -> float:
-        r"""Lead (helix) angle at the pitch diameter, :math:`\lambda = \arctan(l/\pi d_m)` [rad]."""
+        r"""Lead (helix) angle at the pitch diameter, :math:`\arctan(l/\pi d_m)` [rad]."""
         return math.atan(self.lead / (math.pi * self.pitch_diameter))
 
     @property
@@ -217,13 +217,13 @@ class BallScrew:
 
     @property
     def balls_per_circuit(self) -> int:
-        r"""Balls in the loaded turns of one circuit, :math:`\lfloor i\pi d_m/(D_w\cos\lambda)\rfloor`.
+        r"""Balls in the loaded turns of a circuit, :math:`\lfloor i\pi d_m/D_w\cos\lambda\rfloor`.
 
         The helix length of the loaded turns divided by the ball diameter,
         rounded down (balls touch each other; the return path is not counted).
         """
         length = self.loaded_turns * math.pi * self.pitch_diameter / math.cos(self.lead_angle)
-        return int(math.floor(length / self.ball_diameter + 1e-9))
+        return math.floor(length / self.ball_diameter + 1e-9)
 
     @property
     def balls_per_nut(self) -> int:
@@ -232,39 +232,39 @@ class BallScrew:
 
     @property
     def contact_radius_screw(self) -> float:
-        r"""Distance of the ball-screw contact from the screw axis, :math:`(d_m - D_w\cos\alpha)/2` [m]."""
+        r"""Ball-screw contact distance from the axis, :math:`(d_m - D_w\cos\alpha)/2` [m]."""
         return 0.5 * (self.pitch_diameter - self.ball_diameter * math.cos(self.contact_angle))
 
     @property
     def contact_radius_nut(self) -> float:
-        r"""Distance of the ball-nut contact from the screw axis, :math:`(d_m + D_w\cos\alpha)/2` [m]."""
+        r"""Ball-nut contact distance from the axis, :math:`(d_m + D_w\cos\alpha)/2` [m]."""
         return 0.5 * (self.pitch_diameter + self.ball_diameter * math.cos(self.contact_angle))
 
     @property
     def rx_screw(self) -> float:
-        r"""Effective radius of the ball-screw contact in the rolling direction, :math:`\tfrac{D_w}{2}(1-\gamma)` [m]."""
+        r"""Ball-screw effective radius, rolling direction, :math:`\tfrac{D_w}{2}(1-\gamma)` [m]."""
         return 0.5 * self.ball_diameter * (1.0 - self.gamma)
 
     @property
     def rx_nut(self) -> float:
-        r"""Effective radius of the ball-nut contact in the rolling direction, :math:`\tfrac{D_w}{2}(1+\gamma)` [m]."""
+        r"""Ball-nut effective radius, rolling direction, :math:`\tfrac{D_w}{2}(1+\gamma)` [m]."""
         return 0.5 * self.ball_diameter * (1.0 + self.gamma)
 
     @property
     def ry_screw(self) -> float:
-        r"""Effective radius of the ball-screw contact across the groove, :math:`f_sD_w/(2f_s-1)` [m]."""
+        r"""Ball-screw effective radius across the groove, :math:`f_sD_w/(2f_s-1)` [m]."""
         f = self.conformity_screw
         return f * self.ball_diameter / (2.0 * f - 1.0)
 
     @property
     def ry_nut(self) -> float:
-        r"""Effective radius of the ball-nut contact across the groove, :math:`f_nD_w/(2f_n-1)` [m]."""
+        r"""Ball-nut effective radius across the groove, :math:`f_nD_w/(2f_n-1)` [m]."""
         f = self.conformity_nut
         return f * self.ball_diameter / (2.0 * f - 1.0)
 
     @property
     def reduced_modulus(self) -> float:
-        """Reduced modulus :math:`E'` of ball against screw/nut [Pa], see :func:`~ballscrew.contact.reduced_modulus`."""
+        """Reduced modulus :math:`E'` of ball against screw and nut [Pa]."""
         return float(
             reduced_modulus(
                 self.youngs_modulus_ball,
@@ -276,15 +276,15 @@ class BallScrew:
 
     @property
     def composite_roughness_screw(self) -> float:
-        r"""Composite RMS roughness of the ball-screw contact, :math:`\sqrt{\sigma_b^2+\sigma_s^2}` [m]."""
+        r"""Composite RMS roughness at the screw, :math:`\sqrt{\sigma_b^2+\sigma_s^2}` [m]."""
         return float(composite_roughness(self.roughness_ball, self.roughness_screw))
 
     @property
     def composite_roughness_nut(self) -> float:
-        r"""Composite RMS roughness of the ball-nut contact, :math:`\sqrt{\sigma_b^2+\sigma_n^2}` [m]."""
+        r"""Composite RMS roughness, ball-nut contact, :math:`\sqrt{\sigma_b^2+\sigma_n^2}` [m]."""
         return float(composite_roughness(self.roughness_ball, self.roughness_nut))
 
     @property
     def contacts_per_ball(self) -> int:
-        """Contacts of one ball with the screw (equal to those with the nut): 2 for 4-point, else 1."""
+        """Contacts of one ball with the screw (and with the nut): 2 for 4-point nuts, else 1."""
         return 2 if self.nut == "single-4point" else 1

@@ -62,19 +62,19 @@ def rpm_to_rad_s(speed_rpm: npt.ArrayLike) -> FloatArray:
 
 @dataclass(frozen=True)
 class Kinematics:
-    """Speeds of a ball screw under ideal rolling (arrays broadcast over the screw speed).
+    r"""Speeds of a ball screw under ideal rolling (arrays broadcast over the screw speed).
 
     Attributes
     ----------
     screw_speed : numpy.ndarray
-        Angular speed of the screw :math:`\\omega` [rad/s].
+        Angular speed of the screw :math:`\omega` [rad/s].
     table_speed : numpy.ndarray
-        Axial speed of the nut :math:`v_t = \\omega l/2\\pi` [m/s].
+        Axial speed of the nut :math:`v_t = \omega l/2\pi` [m/s].
     orbital_speed : numpy.ndarray
         Angular speed of the ball centres about the screw axis, relative to
-        the nut :math:`\\omega_m` [rad/s].
+        the nut :math:`\omega_m` [rad/s].
     ball_speed : numpy.ndarray
-        Angular speed of a ball about its own axis :math:`\\omega_b` [rad/s].
+        Angular speed of a ball about its own axis :math:`\omega_b` [rad/s].
     entrainment_speed : numpy.ndarray
         Mean rolling speed of the surfaces at either contact :math:`u` [m/s].
     spin_screw, spin_nut : numpy.ndarray
@@ -82,7 +82,7 @@ class Kinematics:
         ball-nut contacts [rad/s].
     spin_to_roll_screw, spin_to_roll_nut : float
         Spin over ball speed at each contact [-], a property of the geometry:
-        :math:`D_w\\sin\alpha/(d_m(1\\mp\\gamma))`.
+        :math:`D_w\sin\alpha/(d_m(1\mp\gamma))`.
     """
 
     screw_speed: FloatArray

@@ -153,7 +153,9 @@ def astm_d341_viscosity(temperature: ArrayLike, a: ArrayLike, b: ArrayLike) -> F
     187.5
     """
     t = _temperature(temperature) + KELVIN
-    result: FloatArray = (10.0 ** (10.0 ** (np.asarray(a) - np.asarray(b) * np.log10(t))) - 0.7) * _CST
+    result: FloatArray = (
+        10.0 ** (10.0 ** (np.asarray(a) - np.asarray(b) * np.log10(t))) - 0.7
+    ) * _CST
     return result
 
 
@@ -338,7 +340,9 @@ def roelands_1966(viscosity: ArrayLike, alpha: ArrayLike, pressure: ArrayLike) -
     p = check_nonnegative("pressure", pressure, "Pa")
     span = np.log(eta0) - ROELANDS_LN_ETA_INF
     if np.any(span <= 0.0):
-        raise BallScrewInputError("viscosity", float(np.min(eta0)), "a viscosity above 6.31e-5 Pa·s")
+        raise BallScrewInputError(
+            "viscosity", float(np.min(eta0)), "a viscosity above 6.31e-5 Pa·s"
+        )
     z = np.asarray(alpha) * ROELANDS_PRESSURE / span
     result: FloatArray = eta0 * np.exp(span * ((1.0 + p / ROELANDS_PRESSURE) ** z - 1.0))
     return result
@@ -465,7 +469,7 @@ class Lubricant:
         pressure_viscosity: float | None = None,
         **kwargs: Any,
     ) -> Lubricant:
-        """Lubricant from its data-sheet viscosities.
+        r"""Lubricant from its data-sheet viscosities.
 
         Parameters
         ----------
@@ -476,7 +480,7 @@ class Lubricant:
         density15 : float
             Density at 15 °C [kg/m³].
         pressure_viscosity : float, optional
-            :math:`\\alpha` [1/Pa]; when omitted, estimated from ``nu40`` by
+            :math:`\alpha` [1/Pa]; when omitted, estimated from ``nu40`` by
             :func:`pressure_viscosity_jungnickel` (a rough fit for mineral oils).
         **kwargs
             Other fields of :class:`Lubricant`.
@@ -498,7 +502,9 @@ class Lubricant:
         known = {f.name for f in fields(self)}
         for key in changes:
             if key not in known:
-                raise BallScrewInputError(key, changes[key], f"a field of Lubricant: {sorted(known)}")
+                raise BallScrewInputError(
+                    key, changes[key], f"a field of Lubricant: {sorted(known)}"
+                )
         return replace(self, **changes)
 
     def kinematic_viscosity(self, temperature: ArrayLike) -> FloatArray:

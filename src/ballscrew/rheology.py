@@ -65,7 +65,9 @@ def newtonian(viscosity: ArrayLike, shear_rate: ArrayLike) -> FloatArray:
     return result
 
 
-def limiting_shear_stress(pressure: ArrayLike, tau0: ArrayLike, coefficient: ArrayLike) -> FloatArray:
+def limiting_shear_stress(
+    pressure: ArrayLike, tau0: ArrayLike, coefficient: ArrayLike
+) -> FloatArray:
     r"""Limiting shear stress :math:`\tau_{lim} = \tau_0 + \gamma_L p`.
 
     Parameters
@@ -152,9 +154,7 @@ def general_non_newtonian(
     with np.errstate(over="ignore"):
         # For x**n overflowing, the stress is tau_lim to machine precision.
         xn = x**nn
-        magnitude = np.where(
-            np.isfinite(xn), tau_n / (1.0 + xn) ** (1.0 / nn), tau_lim
-        )
+        magnitude = np.where(np.isfinite(xn), tau_n / (1.0 + xn) ** (1.0 / nn), tau_lim)
     result: FloatArray = np.sign(rate) * magnitude
     return result
 
@@ -177,7 +177,9 @@ def harmonic_combination(
     return general_non_newtonian(viscosity, shear_rate, limiting_stress, n=1.0)
 
 
-def eyring_1936(viscosity: ArrayLike, shear_rate: ArrayLike, eyring_stress: ArrayLike) -> FloatArray:
+def eyring_1936(
+    viscosity: ArrayLike, shear_rate: ArrayLike, eyring_stress: ArrayLike
+) -> FloatArray:
     r"""Eyring's shear-thinning law, :math:`\tau = \tau_E\,\mathrm{asinh}(\eta\dot\gamma/\tau_E)`.
 
     Parameters

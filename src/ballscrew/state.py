@@ -40,7 +40,7 @@ __all__ = ["ContactState", "OperatingState", "operating_state"]
 
 @dataclass(frozen=True)
 class ContactState:
-    """One kind of ball contact (screw or nut side, family 1 or 2) at the operating points.
+    r"""One kind of ball contact (screw or nut side, family 1 or 2) at the operating points.
 
     Attributes
     ----------
@@ -69,7 +69,7 @@ class ContactState:
     roughness : float
         Composite RMS roughness [m].
     film_parameter : numpy.ndarray
-        :math:`\\Lambda = h_{min}/\\sigma` [-].
+        :math:`\Lambda = h_{min}/\sigma` [-].
     asperity_share : numpy.ndarray
         :math:`A_c/A_0` [-].
 
@@ -160,10 +160,18 @@ def operating_state(
     ep = screw.reduced_modulus
     g = ehl.dimensionless_materials(lubricant.pressure_viscosity, ep)
     sides: dict[str, tuple[float, float, float, float]] = {
-        "screw": (screw.rx_screw, screw.ry_screw, screw.contact_radius_screw,
-                  screw.composite_roughness_screw),
-        "nut": (screw.rx_nut, screw.ry_nut, screw.contact_radius_nut,
-                screw.composite_roughness_nut),
+        "screw": (
+            screw.rx_screw,
+            screw.ry_screw,
+            screw.contact_radius_screw,
+            screw.composite_roughness_screw,
+        ),
+        "nut": (
+            screw.rx_nut,
+            screw.ry_nut,
+            screw.contact_radius_nut,
+            screw.composite_roughness_nut,
+        ),
     }
     contacts: list[ContactState] = []
     for family, q, balls in ((1, bl.normal_load_1, bl.balls_1), (2, bl.normal_load_2, bl.balls_2)):
@@ -207,6 +215,10 @@ def operating_state(
                 )
             )
     return OperatingState(
-        screw=screw, lubricant=lubricant, temperature=t, kinematics=kin, loads=bl,
+        screw=screw,
+        lubricant=lubricant,
+        temperature=t,
+        kinematics=kin,
+        loads=bl,
         contacts=tuple(contacts),
     )
