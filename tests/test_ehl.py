@@ -111,3 +111,24 @@ def test_bad_input(kwargs: dict[str, float], field: str) -> None:
         hamrock_dowson_1977_minimum(**args)
     with pytest.raises(BallScrewInputError, match="roughness"):
         lambda_ratio(1e-6, 0.0)
+
+
+def test_hamrock_209_bearing_film_against_independent_implementation() -> None:
+    # Inner-race contact of Hamrock's ball bearing example (see
+    # test_contact.py): Rx = 5.1093 mm, E' = 219.78 GPa, exact k = 9.2850,
+    # w = 4545.5 N, mean rolling speed 6.2517 m/s, eta0 = 0.01 Pa·s,
+    # alpha = 2.2e-8 /Pa. A second implementation written for the research
+    # notes gives U = 5.5674e-11, W = 7.9226e-4, h_min = 0.2120 µm,
+    # h_c = 0.2679 µm (rounded to the last digit shown).
+    rx, ep = 5.1093e-3, 219.78e9
+    u = dimensionless_speed(0.01, 6.2517, ep, rx)
+    w = dimensionless_load(4545.5, ep, rx)
+    g = dimensionless_materials(2.2e-8, ep)
+    assert float(u) == pytest.approx(5.5674e-11, rel=2e-5)
+    assert float(w) == pytest.approx(7.9226e-4, rel=2e-5)
+    assert float(hamrock_dowson_1977_minimum(rx, u, g, w, 9.2850)) * 1e6 == pytest.approx(
+        0.2120, abs=1e-4
+    )
+    assert float(hamrock_dowson_1977_central(rx, u, g, w, 9.2850)) * 1e6 == pytest.approx(
+        0.2679, abs=1e-4
+    )

@@ -1,14 +1,16 @@
 r"""Hertz point contact between two elastic bodies.
 
-Three methods give the contact ellipse of a ball pressed into a groove:
+Four methods give the contact ellipse of a ball pressed into a groove:
 
 ``"exact"``
     Hertz's solution with the complete elliptic integrals (scipy.special);
-    the ellipticity is found by a vectorised Newton iteration.
+    the ellipticity is solved for on the whole array at once.
 ``"houpert"``
-    L. Houpert's curve fits (2001), used by the study.
+    L. Houpert's curve fits for the semi-axes (2001), used by the study.
 ``"hamrock_brewe"``
     B. J. Hamrock and D. E. Brewe's approximations (1983).
+``"brewe_hamrock"``
+    D. E. Brewe and B. J. Hamrock's earlier curve fits (1977).
 
 Conventions (Hamrock's): the effective radii of curvature in the two principal
 planes are :math:`1/R_x = 1/r_{1x} + 1/r_{2x}` and :math:`1/R_y = 1/r_{1y} +
@@ -17,16 +19,23 @@ planes are :math:`1/R_x = 1/r_{1x} + 1/r_{2x}` and :math:`1/R_y = 1/r_{1y} +
 (1-\nu_2^2)/E_2]`. The semi-major axis ``a`` lies in the plane of the larger
 effective radius. All quantities in SI units.
 
-Accuracy against ``"exact"`` for radius ratios :math:`R_{big}/R_{small}`
-from 1 to 60 (ellipticity 1 to about 15), measured by
+Largest error against ``"exact"``, over radius ratios :math:`R_{big}/R_{small}`
+from 1 to 72 (ellipticity 1 to 15) and, in brackets, from 1 to 10
+(ellipticity 1 to 4.5); measured by
 ``tests/test_contact.py::test_approximations_error_table``:
 
-============== ========= ========= ========= =========
-method          a         b         p_max     approach
-============== ========= ========= ========= =========
-hamrock_brewe   ≤ 0.5 %   ≤ 1.0 %   ≤ 0.8 %   ≤ 1.2 %
-houpert         ≤ 1.0 %   ≤ 1.0 %   ≤ 1.3 %   ≤ 0.6 %
-============== ========= ========= ========= =========
+============== ============= ============ ============= ============= =============
+method          a             b            p_max         approach      a/b
+============== ============= ============ ============= ============= =============
+hamrock_brewe   2.7 (2.7) %   1.2 (1.2) %  1.7 (1.7) %   3.1 (2.7) %   3.9 (3.9) %
+brewe_hamrock   3.2 (2.9) %   1.6 (0.6) %  2.2 (2.2) %   5.5 (5.5) %   4.8 (3.4) %
+houpert         13.4 (1.6) %  2.7 (0.7) %  14.1 (2.1) %  4.2 (0.3) %   10.5 (1.0) %
+============== ============= ============ ============= ============= =============
+
+Houpert's fits, as the study's public source code gives them, are good to
+2 % up to a radius ratio of 10 only; ball screw grooves of conformity 0.52
+(radius ratios near 25 to 35) are off by 5 to 8 % in ``a``. Use ``"exact"``
+unless reproducing the study.
 
 References
 ----------
@@ -37,7 +46,10 @@ References
 .. [3] B. J. Hamrock, D. E. Brewe, "Simplified solution for stresses and
    deformations", J. Lubr. Technol. 105 (1983) 171-177,
    doi:10.1115/1.3254558.
-.. [4] L. Houpert, "An engineering approach to Hertzian contact elasticity -
+.. [4] D. E. Brewe, B. J. Hamrock, "Simplified solution for elliptical-contact
+   deformation between two elastic solids", J. Lubr. Technol. 99 (1977)
+   485-487, doi:10.1115/1.3453245.
+.. [5] L. Houpert, "An engineering approach to Hertzian contact elasticity -
    Part I", J. Tribol. 123 (2001) 582-588, doi:10.1115/1.1308043.
 """
 
@@ -64,6 +76,7 @@ __all__ = [
     "HertzContact",
     "ellipticity_exact",
     "hertz",
+    "hertz_brewe_hamrock_1977",
     "hertz_exact",
     "hertz_hamrock_brewe_1983",
     "hertz_houpert_2001",
@@ -336,12 +349,14 @@ def hertz_hamrock_brewe_1983(
     r"""Hertz point contact with Hamrock and Brewe's (1983) approximations.
 
     .. math::
-        k = 1.0339\,\alpha_r^{0.6360},\quad
-        \mathcal{E} = 1.0003 + 0.5968/\alpha_r,\quad
-        \mathcal{F} = 1.5277 + 0.6023\ln\alpha_r,\quad
+        k = \alpha_r^{2/\pi},\quad
+        \mathcal{E} = 1 + \frac{q}{\alpha_r},\quad
+        \mathcal{F} = \frac{\pi}{2} + q\ln\alpha_r,\quad
+        q = \frac{\pi}{2} - 1,\quad
         \alpha_r = R_{big}/R_{small}
 
-    inserted into the exact expressions of :func:`hertz_exact`.
+    inserted into the exact expressions of :func:`hertz_exact`. Exact at the
+    circular contact by construction.
 
     Parameters
     ----------
@@ -358,16 +373,14 @@ def hertz_hamrock_brewe_1983(
 
     Notes
     -----
-    Error against the exact solution for :math:`1 \le \alpha_r \le 60`: see
-    the module docstring. The fit is poor near the circular contact for the
-    ellipticity (3.4 % at :math:`\alpha_r = 1`), which the elliptic integrals
-    partly compensate in ``a`` and ``b``.
+    Error against the exact solution: module docstring (at most 3.8 % in the
+    ellipticity, under 1.5 % in the semi-axes for ellipticities 1 to 15).
 
     Examples
     --------
     >>> c = hertz_hamrock_brewe_1983(1000.0, 0.01, 0.01, 230.77e9)
-    >>> round(float(c.ellipticity), 4)
-    1.0339
+    >>> round(float(c.a) * 1e3, 4)  # exact 0.4021 mm
+    0.4021
 
     References
     ----------
@@ -377,10 +390,67 @@ def hertz_hamrock_brewe_1983(
     """
     q, r_small, r_big, r_sum, ep = _prepare(load, rx, ry, reduced_modulus)
     ratio = r_big / r_small
+    half_pi_minus_one = np.pi / 2.0 - 1.0
+    k = ratio ** (2.0 / np.pi)
+    big_e = 1.0 + half_pi_minus_one / ratio
+    big_f = np.pi / 2.0 + half_pi_minus_one * np.log(ratio)
+    return _assemble("hamrock_brewe", q, r_sum, ep, k, big_e, big_f)
+
+
+def hertz_brewe_hamrock_1977(
+    load: ArrayLike, rx: ArrayLike, ry: ArrayLike, reduced_modulus: ArrayLike
+) -> HertzContact:
+    r"""Hertz point contact with Brewe and Hamrock's (1977) curve fits.
+
+    .. math::
+        k = 1.0339\,\alpha_r^{0.6360},\quad
+        \mathcal{E} = 1.0003 + 0.5968/\alpha_r,\quad
+        \mathcal{F} = 1.5277 + 0.6023\ln\alpha_r,\quad
+        \alpha_r = R_{big}/R_{small}
+
+    inserted into the exact expressions of :func:`hertz_exact`. These are the
+    fits quoted in ``shared/reference/equations.md`` §3 as "Hamrock-Brewe";
+    the research for this project attributes them to Brewe and Hamrock's
+    earlier paper (1977), which the 1983 paper extended
+    (:func:`hertz_hamrock_brewe_1983`).
+
+    Parameters
+    ----------
+    load : array_like
+        Normal load [N], >= 0.
+    rx, ry : array_like
+        Effective radii of curvature [m], > 0.
+    reduced_modulus : array_like
+        :math:`E'` [Pa].
+
+    Returns
+    -------
+    HertzContact
+
+    Notes
+    -----
+    Error against the exact solution: module docstring. The fit is poor near
+    the circular contact (ellipticity 3.4 % high, approach 5.4 % low at
+    :math:`\alpha_r = 1`).
+
+    Examples
+    --------
+    >>> c = hertz_brewe_hamrock_1977(1000.0, 0.01, 0.01, 230.77e9)
+    >>> round(float(c.ellipticity), 4)
+    1.0339
+
+    References
+    ----------
+    .. [1] D. E. Brewe, B. J. Hamrock, "Simplified solution for
+       elliptical-contact deformation between two elastic solids", J. Lubr.
+       Technol. 99 (1977) 485-487, doi:10.1115/1.3453245.
+    """
+    q, r_small, r_big, r_sum, ep = _prepare(load, rx, ry, reduced_modulus)
+    ratio = r_big / r_small
     k = 1.0339 * ratio**0.6360
     big_e = 1.0003 + 0.5968 / ratio
     big_f = 1.5277 + 0.6023 * np.log(ratio)
-    return _assemble("hamrock_brewe", q, r_sum, ep, k, big_e, big_f)
+    return _assemble("brewe_hamrock", q, r_sum, ep, k, big_e, big_f)
 
 
 def hertz_houpert_2001(
@@ -396,13 +466,10 @@ def hertz_houpert_2001(
         b = 1.1502\,R_s\,\alpha_r^{-0.1876}\,W^{1/3},\qquad
         p_{max} = \frac{3Q}{2\pi a b}
 
-    Houpert's fit for the approach is not reproduced by the public copies of
-    the model, so the approach is computed from Houpert's axes through the
-    exact Hertz relation :math:`\delta = \mathcal{F}(k)\,\mathcal{E}(k)^{-1}
-    \cdot 3Q/(2\pi\, a\, E'/2)\cdot\ldots`; concretely :math:`\delta =
-    \mathcal{F}\,[9/(2\mathcal{E}R)\,(Q/\pi k E')^2]^{1/3}` with :math:`k =
-    a/b` from the fits and :math:`\mathcal{F}, \mathcal{E}` exact for that
-    :math:`k`.
+    No fit of Houpert's for the mutual approach was found in any public
+    source, so the approach is the exact Hertz expression of
+    :func:`hertz_exact` evaluated at the fits' ellipticity :math:`k = a/b`
+    (elliptic integrals exact for that :math:`k`).
 
     Parameters
     ----------
@@ -419,9 +486,10 @@ def hertz_houpert_2001(
 
     Notes
     -----
-    The coefficients are those of the study's source code (see
-    ``shared/reference/equations.md`` §3, checked there against Hamrock and
-    Brewe within 3 %). Error against the exact solution: module docstring.
+    The coefficients are those of the public code of the study's models
+    (``shared/reference/equations.md`` §3); Houpert's paper was not available
+    to check them. Error against the exact solution (module docstring): 2 %
+    up to a radius ratio of 10, 13 % in ``a`` at 72.
 
     Examples
     --------
@@ -462,6 +530,7 @@ HERTZ_METHODS: dict[str, Callable[[ArrayLike, ArrayLike, ArrayLike, ArrayLike], 
     "exact": hertz_exact,
     "houpert": hertz_houpert_2001,
     "hamrock_brewe": hertz_hamrock_brewe_1983,
+    "brewe_hamrock": hertz_brewe_hamrock_1977,
 }
 """Registered Hertz methods, by name."""
 
@@ -484,7 +553,7 @@ def hertz(
         (:math:`1/R = 1/r_1 + 1/r_2`, concave radii negative).
     reduced_modulus : array_like
         :math:`E'` [Pa], see :func:`reduced_modulus`.
-    method : {"exact", "houpert", "hamrock_brewe"}
+    method : {"exact", "houpert", "hamrock_brewe", "brewe_hamrock"}
         Calculation method, see the module docstring for their accuracy.
 
     Returns
