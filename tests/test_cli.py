@@ -14,8 +14,16 @@ from ballscrew.cli import cli
 def test_demo_prints_contact_and_lubricant_summary() -> None:
     result = CliRunner().invoke(cli, ["demo"])
     assert result.exit_code == 0, result.output
-    for text in ("Reference ball screw", "Hertz contact", "exact", "houpert", "PAO ISO VG 68",
-                 "SAE 20", "h_min [µm]", "Λ"):
+    for text in (
+        "Reference ball screw",
+        "Hertz contact",
+        "exact",
+        "houpert",
+        "PAO ISO VG 68",
+        "SAE 20",
+        "h_min [µm]",
+        "Λ",
+    ):
         assert text in result.output
 
 
@@ -35,7 +43,9 @@ def test_demo_bad_temperature_exits_2() -> None:
 
 def test_console_script_version() -> None:
     out = subprocess.run(
-        [sys.executable, "-m", "ballscrew", "--version"], capture_output=True, text=True,
+        [sys.executable, "-m", "ballscrew", "--version"],
+        capture_output=True,
+        text=True,
         check=True,
     )
     assert __version__ in out.stdout

@@ -45,7 +45,9 @@ def test_contact_states_repeat_the_layers() -> None:
 
 def test_film_rises_with_speed_and_falls_with_temperature() -> None:
     st = operating_state(
-        reference_screw(), OIL, speed=np.array([10.0, 100.0, 300.0])[:, None],
+        reference_screw(),
+        OIL,
+        speed=np.array([10.0, 100.0, 300.0])[:, None],
         temperature=np.array([20.0, 45.0])[None, :],
     )
     h = st.contacts[0].film_minimum
