@@ -11,10 +11,16 @@ with :math:`R_x` the effective radius in the entrainment (rolling) direction,
 :math:`u` the mean entrainment speed and :math:`k = a/b` the ellipticity, the
 major axis lying across the rolling direction (as in a ball screw groove).
 
-The published curve fits come from 34 numerical solutions with ellipticity
-:math:`1 \le k \le 8`, dimensionless speed :math:`1.7\cdot10^{-12} \le U \le
-1.7\cdot10^{-10}`, dimensionless load :math:`3.7\cdot10^{-7}\le W\le
-3.7\cdot10^{-6}`... see :data:`HAMROCK_DOWSON_1977_RANGE`.
+The curve fits come from 34 numerical solutions with ellipticity
+:math:`1 \le k \le 8`, steel, bronze and silicon nitride solids and mineral
+oils ([1]_, and Part II of the series for the range of :math:`k`); the
+speed, load and materials parameters of those runs spanned roughly
+:math:`U \approx 10^{-12}` to :math:`10^{-11}`, :math:`W \approx 4\cdot10^{-7}`
+to :math:`10^{-5}` and :math:`G \approx 2500` to 5000 (ranges as recalled in
+the project's research notes, not yet checked against the paper). Ball screws
+at high speed reach :math:`U \approx 10^{-10}` and are extrapolated.
+Optical measurements on steel against sapphire found films on average 30 %
+thicker than the minimum-film formula predicts (Koye & Winer [3]_).
 
 References
 ----------
@@ -23,6 +29,9 @@ References
    (1977) 264-276, doi:10.1115/1.3453074.
 .. [2] R. S. Zhou, M. R. Hoeprich, "Torque of tapered roller bearings", J.
    Tribol. 113 (1991) 590-597, doi:10.1115/1.2920666.
+.. [3] K. A. Koye, W. O. Winer, "An experimental evaluation of the Hamrock
+   and Dowson minimum film thickness equation for fully flooded EHD point
+   contacts", J. Lubr. Technol. 103 (1981) 284-294, doi:10.1115/1.3251646.
 """
 
 from __future__ import annotations
@@ -144,7 +153,7 @@ def hamrock_dowson_1977_minimum(
 
     Notes
     -----
-    Ref. [1]_ eq. (33) of the module references. Validity: module docstring.
+    Hamrock & Dowson (1977), see the module references. Validity: module docstring.
 
     Examples
     --------

@@ -90,7 +90,8 @@ def preload_split(
     fa = np.abs(check_finite("axial_load", axial_load))
     fpr = check_nonnegative("preload", preload, "N")
     fa, fpr = np.broadcast_arrays(fa, fpr)
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        # A subnormal preload overflows to inf: that is lift-off, as it should be.
         ratio = np.where(fpr > 0.0, fa / np.where(fpr > 0.0, fpr, 1.0), np.inf)
     lifted = ratio >= LIFT_OFF_RATIO
     r = np.where(lifted, 0.0, ratio)

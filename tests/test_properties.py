@@ -1,0 +1,88 @@
+"""Property-based tests of the physical layers (hypothesis)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from ballscrew import BallScrew, lubricants
+from ballscrew.contact import HERTZ_METHODS, hertz
+from ballscrew.loads import ball_loads, preload_split
+from ballscrew.state import operating_state
+
+E_STEEL = 2.1e11 / 0.91
+finite = {"allow_nan": False, "allow_infinity": False}
+loads_n = st.floats(0.0, 1e5, **finite)
+radii = st.floats(1e-5, 1.0, **finite)
+
+
+@settings(max_examples=200, deadline=None)
+@given(q=loads_n, rx=radii, ry=radii, method=st.sampled_from(sorted(HERTZ_METHODS)))
+def test_hertz_finite_ordered_and_symmetric(q: float, rx: float, ry: float, method: str) -> None:
+    c = hertz(q, rx, ry, E_STEEL, method=method)
+    swapped = hertz(q, ry, rx, E_STEEL, method=method)
+    for name in ("a", "b", "p_max", "approach", "ellipticity"):
+        value = float(getattr(c, name))
+        assert math.isfinite(value) and value >= 0.0
+        assert math.isclose(value, float(getattr(swapped, name)), rel_tol=1e-12)
+    assert float(c.a) >= float(c.b)
+    assert float(c.ellipticity) >= 1.0
+
+
+@settings(max_examples=200, deadline=None)
+@given(fa=st.floats(-1e6, 1e6, **finite), fpr=st.floats(0.0, 1e5, **finite))
+def test_preload_split_balances_force(fa: float, fpr: float) -> None:
+    f1, f2 = preload_split(fa, fpr)
+    assert float(f1) >= float(f2) >= 0.0
+    assert math.isclose(float(f1 - f2), abs(fa), rel_tol=1e-12, abs_tol=1e-9)
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    dm=st.floats(0.016, 0.1),
+    ratio=st.floats(0.08, 0.25),
+    lead_ratio=st.floats(0.1, 1.0),
+    f=st.floats(0.505, 0.58),
+    preload=st.floats(10.0, 2e4),
+    speed=st.floats(-500.0, 500.0),
+    temperature=st.floats(0.0, 100.0),
+    axial=st.floats(-5e4, 5e4),
+)
+def test_operating_state_is_finite_for_plausible_screws(
+    dm: float,
+    ratio: float,
+    lead_ratio: float,
+    f: float,
+    preload: float,
+    speed: float,
+    temperature: float,
+    axial: float,
+) -> None:
+    screw = BallScrew(
+        pitch_diameter=dm,
+        lead=lead_ratio * dm,
+        ball_diameter=ratio * dm,
+        contact_angle=math.radians(45),
+        conformity_screw=f,
+        conformity_nut=f,
+        loaded_turns=2.5,
+        circuits=2,
+        preload=preload,
+    )
+    state = operating_state(
+        screw,
+        lubricants.get("mineral ISO VG 68"),
+        speed=speed,
+        temperature=temperature,
+        axial_load=axial,
+    )
+    loads = ball_loads(screw, axial)
+    total = (loads.axial_force_1 - loads.axial_force_2) if screw.nut == "double" else 0.0
+    assert math.isclose(float(total), abs(axial), rel_tol=1e-12, abs_tol=1e-6)
+    for c in state.contacts:
+        for name in ("load", "film_minimum", "film_central", "film_parameter", "asperity_share"):
+            assert np.all(np.isfinite(getattr(c, name))), name
+        assert 0.0 <= float(c.asperity_share) <= 1.0
