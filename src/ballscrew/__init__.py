@@ -18,7 +18,8 @@ from __future__ import annotations
 
 from importlib.metadata import PackageNotFoundError, version
 
-from . import contact, ehl, kinematics, loads, lubricants, rheology
+from . import contact, ehl, friction, kinematics, loads, lubricants, rheology
+from .chain import FrictionResult, friction_torque, models
 from .errors import BallScrewInputError
 from .examples import reference_screw
 from .geometry import BallScrew
@@ -32,13 +33,17 @@ except PackageNotFoundError:  # pragma: no cover - running from a source tree
 __all__ = [
     "BallScrew",
     "BallScrewInputError",
+    "FrictionResult",
     "Lubricant",
     "__version__",
     "contact",
     "ehl",
+    "friction",
+    "friction_torque",
     "kinematics",
     "loads",
     "lubricants",
+    "models",
     "reference_screw",
     "rheology",
 ]

@@ -263,6 +263,23 @@ class BallScrew:
         return f * self.ball_diameter / (2.0 * f - 1.0)
 
     @property
+    def deformed_radius_screw(self) -> float:
+        r"""Deformed ball-screw contact radius across the groove, :math:`2f_sD_w/(2f_s+1)` [m].
+
+        The harmonic mean of the ball radius and the groove radius: the
+        transverse radius of the pressed contact surface, which sets the
+        differential (Heathcote) sliding (Harris & Kotzalas, ch. 5).
+        """
+        f = self.conformity_screw
+        return 2.0 * f * self.ball_diameter / (2.0 * f + 1.0)
+
+    @property
+    def deformed_radius_nut(self) -> float:
+        r"""Deformed ball-nut contact radius across the groove, :math:`2f_nD_w/(2f_n+1)` [m]."""
+        f = self.conformity_nut
+        return 2.0 * f * self.ball_diameter / (2.0 * f + 1.0)
+
+    @property
     def reduced_modulus(self) -> float:
         """Reduced modulus :math:`E'` of ball against screw and nut [Pa]."""
         return float(

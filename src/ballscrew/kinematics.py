@@ -47,7 +47,7 @@ import numpy.typing as npt
 from .errors import FloatArray, check_finite
 from .geometry import BallScrew
 
-__all__ = ["Kinematics", "kinematics", "rpm_to_rad_s"]
+__all__ = ["Kinematics", "differential_sliding", "kinematics", "rpm_to_rad_s"]
 
 
 def rpm_to_rad_s(speed_rpm: npt.ArrayLike) -> FloatArray:
@@ -139,3 +139,51 @@ def kinematics(screw: BallScrew, speed: npt.ArrayLike) -> Kinematics:
         spin_to_roll_screw=screw.ball_diameter * sin_a / (screw.pitch_diameter * (1.0 - g)),
         spin_to_roll_nut=screw.ball_diameter * sin_a / (screw.pitch_diameter * (1.0 + g)),
     )
+
+
+def differential_sliding(screw: BallScrew, speed: npt.ArrayLike) -> tuple[FloatArray, FloatArray]:
+    r"""Curvature coefficients of the differential (Heathcote) sliding at both contacts.
+
+    Across the groove the pressed contact surface is curved with the deformed
+    radius :math:`R_d = 2fD_w/(2f+1)`; a point at transverse distance
+    :math:`y` from the contact centre lies nearer the ball's axis and, at the
+    screw, farther from the screw axis (at the nut: nearer). With the ball
+    and groove surfaces moving together at :math:`y = 0`, the sliding speed
+    of the ball over the groove in the rolling direction is, to second order
+    in :math:`y/R_d`,
+
+    .. math::
+        \Delta v(y) = -C\,y^2 \mp \omega_s y,\qquad
+        C_s = rac{\omega_b + (\omega-\omega_m)\coslpha}{2R_{d,s}},\quad
+        C_n = rac{\omega_b - \omega_m\coslpha}{2R_{d,n}}
+
+    where the linear term is the spin (see :class:`Kinematics`) and a uniform
+    slip adds to both when the ball's speed departs from ideal rolling.
+
+    Parameters
+    ----------
+    screw : BallScrew
+        Geometry.
+    speed : array_like
+        Screw angular speed :math:`\omega` [rad/s].
+
+    Returns
+    -------
+    C_s, C_n : numpy.ndarray
+        [1/(m·s)], with the sign of the speed.
+
+    Examples
+    --------
+    >>> import math
+    >>> from ballscrew import reference_screw
+    >>> cs, cn = differential_sliding(reference_screw(), 100.0)
+    >>> round(float(cs)), round(float(cn))
+    (52660, 42031)
+    """
+    kin = kinematics(screw, speed)
+    cos_a = math.cos(screw.contact_angle)
+    c_s = (kin.ball_speed + (kin.screw_speed - kin.orbital_speed) * cos_a) / (
+        2.0 * screw.deformed_radius_screw
+    )
+    c_n = (kin.ball_speed - kin.orbital_speed * cos_a) / (2.0 * screw.deformed_radius_nut)
+    return c_s, c_n

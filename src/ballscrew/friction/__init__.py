@@ -1,0 +1,25 @@
+"""Friction models, one module each, registered by name.
+
+========================= ==============================================
+name                      module
+========================= ==============================================
+``"catalog"``             :mod:`ballscrew.friction.catalog`
+========================= ==============================================
+"""
+
+from __future__ import annotations
+
+from . import catalog, harris_full, harris_simplified, olaru, viscoelastic
+from ._registry import MODELS, ModelSpec, get_model, register
+
+__all__ = [
+    "MODELS",
+    "ModelSpec",
+    "catalog",
+    "get_model",
+    "harris_full",
+    "harris_simplified",
+    "olaru",
+    "register",
+    "viscoelastic",
+]

@@ -1,0 +1,111 @@
+"""Registry of friction models: name, function, reference and validity range."""
+
+from __future__ import annotations
+
+import inspect
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from ..errors import BallScrewInputError, FloatArray
+from ..geometry import BallScrew
+from ..lubricant import Lubricant
+
+__all__ = ["MODELS", "ModelFunction", "ModelSpec", "get_model", "register"]
+
+ModelFunction = Callable[..., dict[str, FloatArray]]
+"""A friction model: ``f(screw, lubricant, speed, temperature, axial_load, **params)``.
+
+``speed`` [rad/s], ``temperature`` [°C] and ``axial_load`` [N] arrive as
+broadcast float arrays of one shape; the model returns a mapping of named
+torque contributions on the screw [N·m], each of that shape, non-negative,
+whose sum is the friction torque.
+"""
+
+
+@dataclass(frozen=True)
+class ModelSpec:
+    """A registered friction model.
+
+    Attributes
+    ----------
+    name : str
+        Registry name, e.g. ``"harris-simplified"``.
+    function : ModelFunction
+        The model.
+    title : str
+        One-line description.
+    reference : str
+        Main reference (with DOI where one exists).
+    validity : str
+        Published or stated validity range, in words.
+    parameters : dict
+        The model's own keyword parameters and their defaults.
+    """
+
+    name: str
+    function: ModelFunction
+    title: str
+    reference: str
+    validity: str
+    parameters: dict[str, Any] = field(default_factory=dict)
+
+    def check_parameters(self, given: dict[str, Any]) -> None:
+        """Raise if ``given`` holds a parameter the model does not have."""
+        for key in given:
+            if key not in self.parameters:
+                allowed = sorted(self.parameters) or ["(none)"]
+                raise BallScrewInputError(
+                    key, given[key], f"a parameter of model {self.name!r}: {allowed}"
+                )
+
+    def __call__(
+        self,
+        screw: BallScrew,
+        lubricant: Lubricant,
+        speed: FloatArray,
+        temperature: FloatArray,
+        axial_load: FloatArray,
+        **params: Any,
+    ) -> dict[str, FloatArray]:
+        """Evaluate the model (parameters checked first)."""
+        self.check_parameters(params)
+        out = self.function(screw, lubricant, speed, temperature, axial_load, **params)
+        shape = np.broadcast_shapes(speed.shape, temperature.shape, axial_load.shape)
+        return {k: np.broadcast_to(np.asarray(v, dtype=float), shape) for k, v in out.items()}
+
+
+MODELS: dict[str, ModelSpec] = {}
+"""All registered friction models, by name."""
+
+
+def register(
+    name: str, *, title: str, reference: str, validity: str
+) -> Callable[[ModelFunction], ModelFunction]:
+    """Register a model function under ``name`` (decorator).
+
+    The model's parameters and defaults are read from its keyword-only
+    arguments.
+    """
+
+    def deco(func: ModelFunction) -> ModelFunction:
+        sig = inspect.signature(func)
+        params = {
+            p.name: p.default
+            for p in sig.parameters.values()
+            if p.kind is inspect.Parameter.KEYWORD_ONLY
+        }
+        MODELS[name] = ModelSpec(name, func, title, reference, validity, params)
+        return func
+
+    return deco
+
+
+def get_model(name: str) -> ModelSpec:
+    """The registered model ``name``; an unknown name lists the valid ones."""
+    try:
+        return MODELS[name]
+    except (KeyError, TypeError):
+        raise BallScrewInputError("model", name, f"one of {sorted(MODELS)}") from None

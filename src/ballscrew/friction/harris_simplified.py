@@ -1,0 +1,362 @@
+r"""The study's simplified friction model after Harris (its eqs. 5 to 8).
+
+At each Hertz contact the friction force is the asperity friction plus the
+lubricant shear, integrated over the contact ellipse:
+
+.. math::
+    F = ab\iint_{t^2+q^2\le1}\left[c_v\frac{A_c}{A_0}\mu_0 p
+        + \left(1 - \frac{A_c}{A_0}\right)\left(\tau_N^{-1} +
+        \tau_{lim}^{-1}\right)^{-1}\right]dt\,dq
+
+with :math:`p = p_0\sqrt{1 - t^2 - q^2}`, :math:`A_c/A_0 =
+\exp(-B\Lambda^C)`, :math:`\tau_N = \eta(p)\dot\gamma`, :math:`\tau_{lim} =
+\tau_0 + \gamma_L p` and the shear rate :math:`\dot\gamma = v_c/h_{min}`
+(eq. 8). The study's assumptions are the defaults: :math:`c_v = 0.3`,
+:math:`B = 1.42`, :math:`\mu_0 = 0.1`, Houpert's Hertz fits, and the same
+shear rate over the whole ellipse. Since nothing but the pressure varies over
+the ellipse, the double integral reduces exactly to one over the pressure,
+:math:`F = 2\pi ab\int_0^1 g(p_0 s)\,s\,ds`, evaluated by Gauss-Legendre
+quadrature; the asperity term integrates in closed form to
+:math:`c_v (A_c/A_0)\mu_0 Q`.
+
+Two readings of the study decide the result's magnitude and are options:
+
+``sliding_sign_on_lubricant``
+    Eq. (5) as printed applies :math:`c_v` to the asperity term only
+    (``False``, default); the text calls :math:`c_v` the sign of the local
+    sliding, which would apply to the lubricant shear too (``True``).
+``shear_velocity``
+    The "surface speed" :math:`v_c` of eq. (8) read as the rolling speed
+    :math:`u` (``"rolling"``, default) or as the mean differential
+    (Heathcote) sliding speed over the ellipse (``"sliding"``,
+    :math:`\bar v_s = \overline{|q^2 - q_0^2|}\,C a^2` with the pure-rolling
+    lines at :math:`q_0 = 0.347`, see
+    :func:`ballscrew.kinematics.differential_sliding`).
+
+With the rolling speed the shear rate :math:`u/h_{min}` is of order
+:math:`10^6`-:math:`10^7` 1/s and the pressure-thickened oil saturates at
+:math:`\tau_{lim}` over almost the whole ellipse, so the lubricant force
+tends to :math:`(1 - A_c/A_0)(\tau_0\pi ab + \gamma_L Q)`: an equivalent
+friction coefficient of :math:`\gamma_L` (0.07), an order of magnitude above
+the 0.003 to 0.005 of a rolling ball screw (catalogue drag torques). It is
+the traction of a contact in gross sliding at speed :math:`u`, not of a
+rolling one; ``shear_velocity="sliding"`` gives rolling-contact magnitudes.
+
+References
+----------
+.. [1] J. Sušeň, "A Study on the Ball Screw Friction Torque", CTU Prague,
+   eqs. (5)-(8) (``shared/seed/ball-screw-friction-study.md``).
+.. [2] T. A. Harris, M. N. Kotzalas, *Advanced Concepts of Bearing
+   Technology*, 5th ed., CRC Press, 2007, ch. 4-5.
+.. [3] H. L. Heathcote, "The ball bearing: in the making, under test and on
+   service", Proc. Inst. Automob. Eng. 15 (1921) 569-702.
+"""
+
+from __future__ import annotations
+
+import functools
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+from scipy import integrate
+
+from .. import rheology
+from ..errors import BallScrewInputError, FloatArray, check_in_range, check_nonnegative
+from ..geometry import BallScrew
+from ..kinematics import differential_sliding
+from ..lubricant import Lubricant
+from ..state import operating_state
+from ._common import torque_from_contact_forces
+from ._registry import register
+
+__all__ = [
+    "HEATHCOTE_ROLLING_LINE",
+    "RHEOLOGY_MODELS",
+    "harris_simplified",
+    "mean_sliding_factor",
+    "shear_stress",
+    "simplified_contact_force",
+]
+
+HEATHCOTE_ROLLING_LINE = 0.347
+"""Position of the two pure-rolling lines, as a fraction of the semi-major axis (Heathcote)."""
+
+RHEOLOGY_MODELS = ("harmonic", "general", "eyring", "bair-winer")
+
+
+@functools.cache
+def mean_sliding_factor(q0: float = HEATHCOTE_ROLLING_LINE) -> float:
+    r"""Area mean of :math:`|q^2 - q_0^2|` over the unit disk [-].
+
+    .. math:: \frac{2}{\pi}\int_{-1}^{1}|q^2 - q_0^2|\sqrt{1-q^2}\,dq
+
+    (0.19966 for :math:`q_0 = 0.347`), by adaptive quadrature split at the
+    kinks :math:`\pm q_0`.
+
+    >>> round(mean_sliding_factor(), 5)
+    0.19966
+    """
+
+    def integrand(q: float) -> float:
+        return abs(q * q - q0 * q0) * float(np.sqrt(1.0 - q * q)) * 2.0 / np.pi
+
+    value, _ = integrate.quad(integrand, -1.0, 1.0, points=[-q0, q0])
+    return float(value)
+
+
+def shear_stress(
+    model: str,
+    viscosity: npt.ArrayLike,
+    shear_rate: npt.ArrayLike,
+    limiting_stress: npt.ArrayLike,
+    exponent: float = 1.0,
+    eyring_stress: float = 5e6,
+) -> FloatArray:
+    """Lubricant shear stress [Pa] by a named law of :mod:`ballscrew.rheology`.
+
+    ``model`` is one of ``"harmonic"`` (the study's eq. 5), ``"general"``
+    (eq. 7 with ``exponent``), ``"eyring"`` (uses ``eyring_stress`` [Pa]) or
+    ``"bair-winer"``.
+    """
+    if model == "harmonic":
+        return rheology.harmonic_combination(viscosity, shear_rate, limiting_stress)
+    if model == "general":
+        return rheology.general_non_newtonian(viscosity, shear_rate, limiting_stress, exponent)
+    if model == "eyring":
+        return rheology.eyring_1936(viscosity, shear_rate, eyring_stress)
+    if model == "bair-winer":
+        return rheology.bair_winer_1979(viscosity, shear_rate, limiting_stress)
+    raise BallScrewInputError("rheology", model, f"one of {list(RHEOLOGY_MODELS)}")
+
+
+def simplified_contact_force(
+    *,
+    a: npt.ArrayLike,
+    b: npt.ArrayLike,
+    p_max: npt.ArrayLike,
+    asperity_share: npt.ArrayLike,
+    viscosity_at_pressure: Any,
+    shear_rate: npt.ArrayLike,
+    tau0: float,
+    gamma_l: float,
+    mu0: float = 0.1,
+    sliding_coefficient: float = 0.3,
+    sliding_sign_on_lubricant: bool = False,
+    rheology_model: str = "harmonic",
+    rheology_exponent: float = 1.0,
+    eyring_stress: float = 5e6,
+    nodes: int = 24,
+) -> tuple[FloatArray, FloatArray]:
+    r"""Asperity and lubricant friction force of one contact ellipse (study eq. 5) [N].
+
+    Parameters
+    ----------
+    a, b : array_like
+        Semi-axes [m].
+    p_max : array_like
+        Maximum Hertz pressure [Pa].
+    asperity_share : array_like
+        :math:`A_c/A_0` [-].
+    viscosity_at_pressure : callable
+        ``f(p)`` giving the local viscosity [Pa·s] at pressure ``p`` [Pa]
+        (array of shape ``(points, nodes)``).
+    shear_rate : array_like
+        :math:`\dot\gamma` [1/s].
+    tau0, gamma_l : float
+        Limiting shear stress :math:`\tau_0` [Pa] and slope :math:`\gamma_L` [-].
+    mu0 : float
+        Boundary friction coefficient :math:`\mu_0` [-].
+    sliding_coefficient : float
+        :math:`c_v` [-].
+    sliding_sign_on_lubricant : bool
+        Apply :math:`c_v` to the lubricant term too.
+    rheology_model, rheology_exponent, eyring_stress
+        See :func:`shear_stress`.
+    nodes : int
+        Gauss-Legendre nodes in the pressure coordinate.
+
+    Returns
+    -------
+    asperity, lubricant : numpy.ndarray
+        The two terms of the force [N].
+    """
+    s, w = np.polynomial.legendre.leggauss(nodes)
+    s = 0.5 * (s + 1.0)
+    w = 0.5 * w
+    aa, bb, p0, share, rate = (
+        np.asarray(x, dtype=float) for x in (a, b, p_max, asperity_share, shear_rate)
+    )
+    area = np.pi * aa * bb
+    p = p0[..., None] * s
+    tau_lim = tau0 + gamma_l * p
+    eta = viscosity_at_pressure(p)
+    tau = np.abs(
+        shear_stress(
+            rheology_model, eta, np.abs(rate)[..., None], tau_lim, rheology_exponent, eyring_stress
+        )
+    )
+    lub_integral = 2.0 * np.sum(tau * (s * w), axis=-1)  # 2 ∫ tau(p0 s) s ds = mean over disk
+    load = 2.0 / 3.0 * p0 * area  # Q = (2/3) p0 pi a b
+    asperity = sliding_coefficient * share * mu0 * load
+    lubricant = (1.0 - share) * area * lub_integral
+    if sliding_sign_on_lubricant:
+        lubricant = sliding_coefficient * lubricant
+    return asperity, lubricant
+
+
+@register(
+    "harris-simplified",
+    title="Sušeň's simplified model after Harris: asperity friction + non-Newtonian shear",
+    reference="J. Sušeň, A Study on the Ball Screw Friction Torque, CTU Prague, eqs. (5)-(8); "
+    "T. A. Harris, M. N. Kotzalas, Advanced Concepts of Bearing Technology, CRC, 2007",
+    validity="EHL/mixed lubrication, Hamrock-Dowson film (ellipticity 1-8); Roelands viscosity",
+)
+def harris_simplified(
+    screw: BallScrew,
+    lubricant: Lubricant,
+    speed: FloatArray,
+    temperature: FloatArray,
+    axial_load: FloatArray,
+    *,
+    mu0: float = 0.1,
+    sliding_coefficient: float = 0.3,
+    sliding_sign_on_lubricant: bool = False,
+    shear_velocity: str = "rolling",
+    rheology_model: str = "harmonic",
+    rheology_exponent: float = 1.0,
+    eyring_stress: float = 5e6,
+    pressure_viscosity_model: str = "roelands",
+    limiting_shear_stress: float | None = None,
+    limiting_shear_coefficient: float | None = None,
+    asperity_b: float = 1.42,
+    asperity_c: float = 0.8,
+    hertz_method: str = "houpert",
+    torque_arm: str = "energy",
+    nodes: int = 24,
+) -> dict[str, FloatArray]:
+    r"""Friction torque by the study's simplified model (module docstring).
+
+    Parameters
+    ----------
+    screw, lubricant, speed, temperature, axial_load
+        The operating points (see :func:`ballscrew.friction_torque`).
+    mu0 : float
+        Boundary friction coefficient :math:`\mu_0`; 0.1 (study).
+    sliding_coefficient : float
+        :math:`c_v`; 0.3 (study: 65 % of the ellipse slips against rolling,
+        35 % with it).
+    sliding_sign_on_lubricant : bool
+        Apply :math:`c_v` to the lubricant shear too; default False (eq. 5 as printed).
+    shear_velocity : {"rolling", "sliding"}
+        Velocity of eq. (8); default ``"rolling"`` (the study's "surface speed").
+    rheology_model : {"harmonic", "general", "eyring", "bair-winer"}
+        Shear law; default ``"harmonic"`` (eq. 5).
+    rheology_exponent : float
+        :math:`n` of the general model (eq. 7).
+    eyring_stress : float
+        :math:`\tau_E` [Pa] of the Eyring law.
+    pressure_viscosity_model : {"roelands", "barus"}
+        Default Roelands: Barus overflows at contact pressures.
+    limiting_shear_stress, limiting_shear_coefficient : float, optional
+        :math:`\tau_0` [Pa] and :math:`\gamma_L` [-]; default: the lubricant's.
+    asperity_b, asperity_c : float
+        :math:`B`, :math:`C` of :math:`A_c/A_0`; 1.42 (study) and 0.8.
+    hertz_method : str
+        Default ``"houpert"`` (study).
+    torque_arm : {"energy", "contact-radius", "ball-radius"}
+        See :func:`ballscrew.friction._common.torque_from_contact_forces`.
+    nodes : int
+        Quadrature nodes (24 integrate the smooth Roelands-harmonic integrand
+        to better than 1e-6).
+
+    Returns
+    -------
+    dict
+        ``"asperity"`` and ``"lubricant"`` torques [N·m].
+    """
+    if shear_velocity not in ("rolling", "sliding"):
+        raise BallScrewInputError("shear_velocity", shear_velocity, "'rolling' or 'sliding'")
+    if rheology_model not in RHEOLOGY_MODELS:
+        raise BallScrewInputError(
+            "rheology_model", rheology_model, f"one of {list(RHEOLOGY_MODELS)}"
+        )
+    if pressure_viscosity_model not in ("roelands", "barus"):
+        raise BallScrewInputError(
+            "pressure_viscosity_model", pressure_viscosity_model, "'roelands' or 'barus'"
+        )
+    check_nonnegative("mu0", mu0)
+    check_in_range("sliding_coefficient", sliding_coefficient, -1.0, 1.0, inclusive=(True, True))
+    tau0 = (
+        lubricant.limiting_shear_stress if limiting_shear_stress is None else limiting_shear_stress
+    )
+    gamma_l = (
+        lubricant.limiting_shear_coefficient
+        if limiting_shear_coefficient is None
+        else limiting_shear_coefficient
+    )
+    tau0 = float(check_nonnegative("limiting_shear_stress", tau0, "Pa"))
+    gamma_l = float(check_nonnegative("limiting_shear_coefficient", gamma_l))
+    if isinstance(nodes, bool) or not isinstance(nodes, int) or nodes < 2:
+        raise BallScrewInputError("nodes", nodes, "a whole number >= 2")
+
+    state = operating_state(
+        screw,
+        lubricant,
+        speed=speed,
+        temperature=temperature,
+        axial_load=axial_load,
+        hertz_method=hertz_method,
+        asperity_b=asperity_b,
+        asperity_c=asperity_c,
+    )
+    eta0 = lubricant.dynamic_viscosity(state.temperature)[..., None]
+    alpha = lubricant.pressure_viscosity
+    if pressure_viscosity_model == "roelands":
+        span = np.log(eta0) + 9.67
+        z = alpha * 1.96e8 / span
+
+        def viscosity_at_pressure(p: FloatArray) -> FloatArray:
+            result: FloatArray = eta0 * np.exp(span * ((1.0 + p / 1.96e8) ** z - 1.0))
+            return result
+    else:
+
+        def viscosity_at_pressure(p: FloatArray) -> FloatArray:
+            with np.errstate(over="ignore"):
+                result: FloatArray = eta0 * np.exp(alpha * p)
+            return result
+
+    c_screw, c_nut = differential_sliding(screw, state.kinematics.screw_speed)
+    factor = mean_sliding_factor()
+    asperity_forces, lubricant_forces = [], []
+    for contact in state.contacts:
+        if shear_velocity == "rolling":
+            velocity = np.abs(contact.entrainment_speed)
+        else:
+            c = c_screw if contact.side == "screw" else c_nut
+            velocity = factor * np.abs(c) * contact.hertz.a**2
+        loaded = contact.film_minimum > 0.0
+        rate = np.where(loaded, velocity / np.where(loaded, contact.film_minimum, 1.0), 0.0)
+        asp, lub = simplified_contact_force(
+            a=contact.hertz.a,
+            b=contact.hertz.b,
+            p_max=contact.hertz.p_max,
+            asperity_share=np.where(contact.load > 0.0, contact.asperity_share, 0.0),
+            viscosity_at_pressure=viscosity_at_pressure,
+            shear_rate=rate,
+            tau0=tau0,
+            gamma_l=gamma_l,
+            mu0=mu0,
+            sliding_coefficient=sliding_coefficient,
+            sliding_sign_on_lubricant=sliding_sign_on_lubricant,
+            rheology_model=rheology_model,
+            rheology_exponent=rheology_exponent,
+            eyring_stress=eyring_stress,
+            nodes=nodes,
+        )
+        asperity_forces.append(asp)
+        lubricant_forces.append(lub)
+    return {
+        "asperity": torque_from_contact_forces(state, asperity_forces, torque_arm),
+        "lubricant": torque_from_contact_forces(state, lubricant_forces, torque_arm),
+    }
