@@ -137,7 +137,8 @@ def full_contact_power(
     x = b[:, None, None] * r[None, :, None] * cos_p[None, None, :]
     base_x = -c_hat * y**2 - w_hat * y  # v_x / |omega| without slip
     vy = w_hat * x
-    p = p_max[:, None] * sig[None, :]
+    # Unloaded contacts: dummy pressure (their area a*b is zero, so is their power).
+    p = np.where(p_max > 0.0, p_max, 1.0)[:, None] * sig[None, :]
     eta = roelands_1966(np.broadcast_to(viscosity[:, None], p.shape), pressure_viscosity, p)
     tau_lim = tau0 + gamma_l * p
     asp_stress = (asperity_share * mu0)[:, None, None] * p[:, :, None]

@@ -188,6 +188,10 @@ def simplified_contact_force(
         np.asarray(x, dtype=float) for x in (a, b, p_max, asperity_share, shear_rate)
     )
     area = np.pi * aa * bb
+    # Unloaded contacts (p0 = 0) have no area; give them a dummy pressure so
+    # that tau_lim > 0 everywhere, their force is zero through the area.
+    p0 = np.where(p0 > 0.0, p0, 1.0)
+    load = 2.0 / 3.0 * np.where(area > 0.0, p0, 0.0) * area  # Q = (2/3) p0 pi a b
     p = p0[..., None] * s
     tau_lim = tau0 + gamma_l * p
     eta = viscosity_at_pressure(p)
@@ -197,7 +201,6 @@ def simplified_contact_force(
         )
     )
     lub_integral = 2.0 * np.sum(tau * (s * w), axis=-1)  # 2 ∫ tau(p0 s) s ds = mean over disk
-    load = 2.0 / 3.0 * p0 * area  # Q = (2/3) p0 pi a b
     asperity = sliding_coefficient * share * mu0 * load
     lubricant = (1.0 - share) * area * lub_integral
     if sliding_sign_on_lubricant:

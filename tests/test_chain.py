@@ -1,0 +1,131 @@
+"""Tests of the friction chain: friction_torque, the registry and what all models share."""
+
+from __future__ import annotations
+
+import itertools
+import math
+
+import numpy as np
+import pytest
+
+import ballscrew
+from ballscrew import BallScrewInputError, friction_torque, lubricants, models, reference_screw
+
+OIL = lubricants.get("PAO ISO VG 68")
+ALL = sorted(m.name for m in models())
+SPEEDS = np.array([0.0, 1.0, 10.0, 100.0, 300.0])
+
+
+def test_registry_lists_the_five_models_with_references() -> None:
+    assert ALL == ["catalog", "harris-full", "harris-simplified", "olaru", "viscoelastic"]
+    for spec in models():
+        assert spec.reference and spec.validity and spec.title
+        assert callable(spec.function)
+
+
+def test_unknown_model_and_parameter_list_the_valid_ones() -> None:
+    with pytest.raises(BallScrewInputError) as info:
+        friction_torque(reference_screw(), OIL, speed=1.0, temperature=40.0, model="coulomb")
+    for name in ALL:
+        assert name in str(info.value)
+    with pytest.raises(BallScrewInputError) as info:
+        friction_torque(
+            reference_screw(), OIL, speed=1.0, temperature=40.0, model="catalog", mu=0.1
+        )
+    assert "friction_coefficient" in str(info.value) and "mu" in str(info.value)
+
+
+@pytest.mark.parametrize("model", ALL)
+def test_components_add_up_finite_and_nonnegative(model: str) -> None:
+    r = friction_torque(
+        reference_screw(),
+        OIL,
+        speed=SPEEDS[:, None, None],
+        temperature=np.array([20.0, 45.0])[None, :, None],
+        axial_load=np.array([-2000.0, 0.0, 1000.0, 9000.0])[None, None, :],
+        model=model,
+    )
+    assert r.total.shape == (5, 2, 4)
+    summed = sum(r.components.values())
+    np.testing.assert_allclose(r.total, summed, rtol=1e-15)
+    for name, value in r.components.items():
+        assert np.all(np.isfinite(value)) and np.all(value >= 0.0), name
+    assert np.all(r.total >= 0.0)
+    # P = T |omega|
+    np.testing.assert_allclose(r.power_loss, r.total * np.abs(r.speed), rtol=1e-15)
+
+
+@pytest.mark.parametrize("model", ALL)
+def test_torque_rises_with_preload(model: str) -> None:
+    screw = reference_screw()
+    torques = [
+        float(
+            friction_torque(
+                screw.replace(preload=fpr), OIL, speed=50.0, temperature=40.0, model=model
+            ).total
+        )
+        for fpr in (500.0, 1000.0, 2000.0, 4000.0)
+    ]
+    assert all(b > a for a, b in itertools.pairwise(torques)), torques
+
+
+@pytest.mark.parametrize(
+    ("model", "component"),
+    [("harris-simplified", "lubricant"), ("olaru", "rolling"), ("harris-full", "lubricant")],
+)
+def test_fluid_part_falls_with_temperature(model: str, component: str) -> None:
+    r = friction_torque(
+        reference_screw(), OIL, speed=200.0, temperature=[20.0, 30.0, 40.0, 45.0], model=model
+    )
+    fluid = r.components[component]
+    assert np.all(np.diff(fluid) < 0), fluid
+
+
+@pytest.mark.parametrize("model", ALL)
+def test_scalar_list_array_and_chunks_agree(model: str) -> None:
+    speeds = [5.0, 50.0, 150.0]
+    as_list = friction_torque(reference_screw(), OIL, speed=speeds, temperature=30.0, model=model)
+    scalars = [
+        float(friction_torque(reference_screw(), OIL, speed=w, temperature=30.0, model=model).total)
+        for w in speeds
+    ]
+    chunked = friction_torque(
+        reference_screw(), OIL, speed=np.array(speeds), temperature=30.0, model=model, chunk_size=2
+    )
+    np.testing.assert_allclose(as_list.total, scalars, rtol=1e-12)
+    np.testing.assert_allclose(chunked.total, as_list.total, rtol=1e-12)
+
+
+def test_efficiency_and_power() -> None:
+    screw = reference_screw()
+    r = friction_torque(
+        screw, OIL, speed=100.0, temperature=40.0, axial_load=[0.0, 1000.0], model="catalog"
+    )
+    useful = 1000.0 * screw.lead / (2 * math.pi)
+    assert r.efficiency[0] == 0.0
+    assert r.efficiency[1] == pytest.approx(useful / (useful + r.total[1]), rel=1e-14)
+    assert 0.0 < r.efficiency[1] < 1.0
+
+
+def test_friction_torque_is_exported_at_top_level() -> None:
+    assert ballscrew.friction_torque is friction_torque
+    assert isinstance(
+        friction_torque(reference_screw(), OIL, speed=1.0, temperature=40.0, model="catalog"),
+        ballscrew.FrictionResult,
+    )
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "field"),
+    [
+        ({"speed": float("nan")}, "speed"),
+        ({"temperature": "hot"}, "temperature"),
+        ({"chunk_size": 0}, "chunk_size"),
+        ({"axial_load": [1.0, float("inf")]}, "axial_load"),
+    ],
+)
+def test_bad_operating_points(kwargs: dict[str, object], field: str) -> None:
+    args: dict[str, object] = {"speed": 1.0, "temperature": 40.0}
+    args.update(kwargs)
+    with pytest.raises(BallScrewInputError, match=field):
+        friction_torque(reference_screw(), OIL, **args)  # type: ignore[arg-type]

@@ -1,0 +1,280 @@
+"""Model-specific tests: closed-form limits, exact integrals and published values."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy import integrate
+
+from ballscrew import friction_torque, lubricants, reference_screw
+from ballscrew.friction.catalog import (
+    catalog_efficiency,
+    preload_from_drag_torque,
+    preload_torque,
+)
+from ballscrew.friction.harris_full import full_contact_power
+from ballscrew.friction.harris_simplified import mean_sliding_factor, simplified_contact_force
+from ballscrew.friction.olaru import curvature_fit, pivoting_fit
+from ballscrew.friction.viscoelastic import lens_moments, viscoelastic_contact
+
+OIL = lubricants.get("PAO ISO VG 68")
+
+
+# --- catalog -------------------------------------------------------------------------------
+def test_catalog_preload_torque_by_hand() -> None:
+    # T_p = 0.05 / sqrt(tan b) * F l / 2 pi; tan b = 10 / (40 pi) = 0.0795775,
+    # K = 0.05 / 0.2820948 = 0.1772454, T = 0.1772454 * 2000 * 0.01 / 2 pi = 0.564190 N·m.
+    s = reference_screw()
+    assert float(preload_torque(2000.0, 0.01, s.lead_angle)) == pytest.approx(0.564190, rel=1e-6)
+    r = friction_torque(s, OIL, speed=10.0, temperature=40.0, model="catalog")
+    assert float(r.components["preload"]) == pytest.approx(0.564190, rel=1e-6)
+
+
+def test_catalog_inverse_round_trip_and_the_study_preloads() -> None:
+    s = reference_screw()
+    fpr = preload_from_drag_torque([0.2, 0.4, 0.6], s)
+    np.testing.assert_allclose(
+        preload_torque(fpr, s.lead, s.lead_angle), [0.2, 0.4, 0.6], rtol=1e-14
+    )
+    assert np.all(np.diff(fpr) > 0)
+
+
+def test_catalog_efficiency_equals_the_thk_form() -> None:
+    # THK writes eta = (1 - mu tan b) / (1 + mu / tan b); identical to tan b / tan(b + rho).
+    beta = np.radians(np.linspace(1.0, 30.0, 30))
+    mu = 0.003
+    thk = (1 - mu * np.tan(beta)) / (1 + mu / np.tan(beta))
+    np.testing.assert_allclose(catalog_efficiency(beta, mu), thk, rtol=1e-13)
+    assert float(catalog_efficiency(0.1, 0.0)) == pytest.approx(1.0)
+
+
+def test_catalog_load_term() -> None:
+    s = reference_screw()
+    r = friction_torque(
+        s, OIL, speed=10.0, temperature=40.0, axial_load=[-3000.0, 3000.0], model="catalog"
+    )
+    eta = float(catalog_efficiency(s.lead_angle, 0.003))
+    expected = 3000 * s.lead / (2 * math.pi) * (1 / eta - 1)
+    np.testing.assert_allclose(r.components["load"], expected, rtol=1e-14)
+
+
+# --- viscoelastic ---------------------------------------------------------------------------
+def _brute_lens(rp: float, xc: float, rm2: float, n: int = 1500) -> np.ndarray:
+    """Moments of the lens on a fine midpoint grid (independent of the closed form)."""
+    ext = max(rp, xc + math.sqrt(rm2))
+    xs = np.linspace(-ext, ext, n + 1)
+    xs = 0.5 * (xs[1:] + xs[:-1])
+    x, y = np.meshgrid(xs, xs, indexing="ij")
+    inside = (x**2 + y**2 <= rp**2) & ((x - xc) ** 2 + y**2 <= rm2)
+    da = (xs[1] - xs[0]) ** 2
+    return np.array([np.sum(g[inside]) * da for g in (x**0, x, x**2, x**3, y**2, x * y**2)])
+
+
+@pytest.mark.parametrize(("xc", "rm2"), [(0.3, 1.0 + 0.09 - 0.2), (0.8, 0.5), (0.1, 0.2)])
+def test_lens_moments_against_a_fine_grid(xc: float, rm2: float) -> None:
+    rp = 1.0
+    chord = (rp**2 - rm2 + xc**2) / (2 * xc)
+    closed = np.array(lens_moments(rp, xc, rm2, chord)[:6], dtype=float)
+    grid = _brute_lens(rp, xc, rm2)
+    # Midpoint grid of 1500^2 cells: boundary error ~ h = 1.3e-3 of the area.
+    np.testing.assert_allclose(closed, grid, rtol=0, atol=4e-3)
+
+
+def test_viscoelastic_static_and_slow_rolling_limits() -> None:
+    # Static: N = pi k R tau^2. Slow rolling: F -> pi gamma v tau^2 (linear viscous).
+    k, gamma, radius, q = 2.1e18, 3.5e13, 3.175e-3, 29.0
+    tau_s = math.sqrt(q / (math.pi * k * radius))
+    c0 = viscoelastic_contact(q, 0.0, radius, stiffness=k, damping=gamma)
+    assert float(c0.penetration) == pytest.approx(tau_s, rel=1e-12)
+    assert float(c0.friction) == 0.0
+    v = 1e-5
+    c = viscoelastic_contact(q, v, radius, stiffness=k, damping=gamma)
+    # Relative correction is O(gamma v / (k r+)) = 1e-5 here.
+    assert float(c.friction) == pytest.approx(math.pi * gamma * v * tau_s**2, rel=1e-4)
+
+
+def test_viscoelastic_friction_rises_then_falls() -> None:
+    # Pöschel et al. (1999): the rolling friction first grows with speed, then falls.
+    v = np.geomspace(1e-3, 30.0, 60)
+    f = viscoelastic_contact(29.0, v, 3.175e-3).friction
+    peak = int(np.argmax(f))
+    assert 0 < peak < len(v) - 1
+    assert np.all(np.diff(f[: peak + 1]) > 0) and np.all(np.diff(f[peak:]) < 0)
+
+
+def test_viscoelastic_load_balance_holds() -> None:
+    # Re-evaluate the support force at the returned penetration by the grid.
+    q, v, radius, k, m, g = 29.0, 1.0, 3.175e-3, 2.1e18, 7.8e-4, 3.5e13
+    c = viscoelastic_contact(q, v, radius)
+    tau = float(c.penetration)
+    rp2 = 2 * radius * tau
+    xc = g * v / k
+    rm2 = rp2 - 2 * m * v**2 / k + xc**2
+    mom = _brute_lens(math.sqrt(rp2), xc, rm2, n=2000)
+    support = (
+        (k * tau - m * v**2 / radius) * mom[0]
+        + g * v / radius * mom[1]
+        - k / (2 * radius) * (mom[2] + mom[4])
+    )
+    assert support + float(c.edge_force) == pytest.approx(q, rel=5e-3)
+
+
+def test_viscoelastic_torque_arms() -> None:
+    s = reference_screw()
+    e = friction_torque(s, OIL, speed=100.0, temperature=40.0, model="viscoelastic")
+    b = friction_torque(
+        s, OIL, speed=100.0, temperature=40.0, model="viscoelastic", torque_arm="ball-radius"
+    )
+    lever = s.pitch_diameter * (1 - s.gamma**2) / 4
+    assert float(b.total / e.total) == pytest.approx(s.ball_diameter / 2 / lever, rel=1e-12)
+
+
+# --- harris-simplified ----------------------------------------------------------------------
+def test_simplified_asperity_term_is_the_exact_integral() -> None:
+    # ab ∫∫ c_v (Ac/A0) mu0 p0 sqrt(1 - t² - q²) dt dq = c_v (Ac/A0) mu0 (2/3) pi a b p0
+    # = c_v (Ac/A0) mu0 Q exactly.
+    a, b, p0 = np.array(2e-4), np.array(5e-5), np.array(1.2e9)
+    q = 2 / 3 * math.pi * a * b * p0
+    asp, _ = simplified_contact_force(
+        a=a,
+        b=b,
+        p_max=p0,
+        asperity_share=np.array(0.4),
+        viscosity_at_pressure=lambda p: 0.05 + 0 * p,
+        shear_rate=np.array(1e5),
+        tau0=0.0,
+        gamma_l=0.07,
+    )
+    assert float(asp) == pytest.approx(float(0.3 * 0.4 * 0.1 * q), rel=1e-14)
+
+
+def test_simplified_lubricant_newtonian_and_saturated_limits() -> None:
+    a, b, p0 = np.array(2e-4), np.array(5e-5), np.array(1.2e9)
+    q = float(2 / 3 * math.pi * a * b * p0)
+    kw = {
+        "a": a,
+        "b": b,
+        "p_max": p0,
+        "asperity_share": np.array(0.0),
+        "tau0": 1e6,
+        "gamma_l": 0.07,
+    }
+    # Newtonian (tiny shear rate, constant viscosity): tau = eta * rate over pi a b.
+    _, lub = simplified_contact_force(
+        viscosity_at_pressure=lambda p: 0.1 + 0 * p, shear_rate=np.array(1.0), **kw
+    )  # type: ignore[arg-type]
+    assert float(lub) == pytest.approx(0.1 * 1.0 * math.pi * 2e-4 * 5e-5, rel=1e-6)
+    # Saturated: tau -> tau0 + gamma_L p, integral tau0 pi a b + gamma_L Q.
+    _, lub = simplified_contact_force(
+        viscosity_at_pressure=lambda p: 1e12 + 0 * p, shear_rate=np.array(1e12), **kw
+    )  # type: ignore[arg-type]
+    assert float(lub) == pytest.approx(1e6 * math.pi * 2e-4 * 5e-5 + 0.07 * q, rel=1e-6)
+
+
+def test_simplified_options_change_the_result_as_documented() -> None:
+    s = reference_screw()
+    base = friction_torque(s, OIL, speed=100.0, temperature=40.0)
+    both = friction_torque(s, OIL, speed=100.0, temperature=40.0, sliding_sign_on_lubricant=True)
+    slide = friction_torque(s, OIL, speed=100.0, temperature=40.0, shear_velocity="sliding")
+    assert float(both.components["lubricant"]) == pytest.approx(
+        0.3 * float(base.components["lubricant"]), rel=1e-14
+    )
+    assert float(slide.components["lubricant"]) < 0.05 * float(base.components["lubricant"])
+    np.testing.assert_allclose(slide.components["asperity"], base.components["asperity"])
+
+
+def test_mean_sliding_factor_by_quadrature() -> None:
+    value, _ = integrate.quad(
+        lambda q: abs(q * q - 0.347**2) * math.sqrt(1 - q * q), -1, 1, points=[-0.347, 0.347]
+    )
+    assert mean_sliding_factor() == pytest.approx(value * 2 / math.pi, rel=1e-12)
+
+
+# --- harris-full ---------------------------------------------------------------------------
+def test_full_model_reproduces_heathcote_rolling_lines() -> None:
+    # Coulomb friction only (asperity share 1), no spin: the zero-traction slip
+    # puts the pure-rolling lines at y0 = ±0.347 a (Heathcote 1921; Johnson,
+    # Contact Mechanics, 1985, §8.8). With v_x = s - C y², y0 = sqrt(s / C).
+    a = np.array([2.5e-4])
+    c = 500.0
+    _, _, slip = full_contact_power(
+        a=a,
+        b=np.array([5e-5]),
+        p_max=np.array([1e9]),
+        asperity_share=np.array([1.0]),
+        viscosity=np.array([0.05]),
+        pressure_viscosity=1.5e-8,
+        film=np.array([1e-7]),
+        curvature=c,
+        spin=0.0,
+        screw_speed=np.array([100.0]),
+        tau0=0.0,
+        gamma_l=0.07,
+        mu0=0.1,
+        nodes=(32, 256),
+    )
+    # Heathcote's 0.347 is quoted to 3 figures; the quadrature (kinks at y0)
+    # is good to about 1e-3 with these nodes.
+    assert math.sqrt(float(slip[0]) / c) / float(a[0]) == pytest.approx(0.347, abs=2e-3)
+
+
+def test_full_model_quadrature_converges() -> None:
+    s = reference_screw()
+    coarse = friction_torque(s, OIL, speed=[30.0, 300.0], temperature=40.0, model="harris-full")
+    fine = friction_torque(
+        s, OIL, speed=[30.0, 300.0], temperature=40.0, model="harris-full", nodes=(32, 128)
+    )
+    np.testing.assert_allclose(coarse.total, fine.total, rtol=0.01)
+
+
+def test_full_model_asperity_part_at_zero_speed_is_finite() -> None:
+    r = friction_torque(
+        reference_screw(), OIL, speed=[0.0, 1e-3], temperature=40.0, model="harris-full"
+    )
+    assert r.total[0] > 0.0
+    assert float(r.total[1]) == pytest.approx(float(r.total[0]), rel=1e-2)
+
+
+# --- olaru -----------------------------------------------------------------------------------
+def test_olaru_fits_end_values_and_clipping() -> None:
+    # Houpert's fits at E = 1: f_c = -0.0037 -> clipped to 0, f_p = 1.0064.
+    assert float(curvature_fit(1.0)) == 0.0
+    assert float(pivoting_fit(1.0)) == pytest.approx(1.0064, abs=1e-4)
+    assert float(curvature_fit(5.0)) == 0.0 and float(pivoting_fit(5.0)) == float(pivoting_fit(1.0))
+
+
+def test_olaru_rolling_force_scales_with_speed_to_the_0_66() -> None:
+    # F_R ∝ U^0.66 at fixed load and temperature: rolling torque ratio 2^0.66.
+    r = friction_torque(
+        reference_screw(), OIL, speed=[50.0, 100.0], temperature=40.0, model="olaru"
+    )
+    ratio = r.components["rolling"][1] / r.components["rolling"][0]
+    assert float(ratio) == pytest.approx(2**0.66, rel=1e-12)
+
+
+def test_olaru_options() -> None:
+    s = reference_screw()
+    base = friction_torque(s, OIL, speed=100.0, temperature=40.0, model="olaru")
+    no_pivot = friction_torque(
+        s, OIL, speed=100.0, temperature=40.0, model="olaru", include_pivoting=False
+    )
+    assert float(no_pivot.components["pivoting"]) == 0.0
+    assert float(base.components["pivoting"]) > 0.0
+    mm = friction_torque(
+        s, OIL, speed=100.0, temperature=40.0, model="olaru", hysteresis_units="N·mm"
+    )
+    # SI vs mm reading differ by 1000^0.33 / 1000 in the moment.
+    assert float(mm.components["hysteresis"] / base.components["hysteresis"]) == pytest.approx(
+        1000**0.33 / 1000, rel=1e-12
+    )
+    # At standstill Lambda = 0, so mu = mu0 * Ac/A0 = 0.1; the speed fit gives
+    # exp(-2.643) = 0.07114 at n = 0: the Coulomb moments scale by that ratio.
+    fit = friction_torque(
+        s, OIL, speed=0.0, temperature=40.0, model="olaru", sliding_friction="speed-fit"
+    )
+    still = friction_torque(s, OIL, speed=0.0, temperature=40.0, model="olaru")
+    assert float(fit.components["pivoting"] / still.components["pivoting"]) == pytest.approx(
+        math.exp(-2.643) / 0.1, rel=1e-12
+    )
