@@ -115,18 +115,31 @@ def astm_d341_constants(
 
 
 def _walther_z(nu: FloatArray, field: str) -> FloatArray:
-    """Walther's double logarithm log10(log10(nu_cSt + 0.7)) of a viscosity in m²/s."""
+    r"""Walther's double logarithm of ASTM D341's Z, for a viscosity in m²/s.
+
+    :math:`Z = \nu + 0.7 + \exp(-1.47 - 1.84\nu - 0.51\nu^2)` (ν in mm²/s),
+    the D341-09 form valid down to about 0.3 mm²/s; the exponential is below
+    1e-10 above 4 mm²/s.
+    """
     cst = nu / _CST
-    if np.any(cst + 0.7 <= 1.0):
-        raise BallScrewInputError(field, float(np.min(nu)), "a viscosity above 0.3 mm²/s")
-    result: FloatArray = np.log10(np.log10(cst + 0.7))
+    if np.any(cst < 0.3):
+        raise BallScrewInputError(field, float(np.min(nu)), "a viscosity of at least 0.3 mm²/s")
+    z = cst + 0.7 + np.exp(-1.47 - 1.84 * cst - 0.51 * cst**2)
+    result: FloatArray = np.log10(np.log10(z))
     return result
 
 
 def astm_d341_viscosity(temperature: ArrayLike, a: ArrayLike, b: ArrayLike) -> FloatArray:
     r"""Kinematic viscosity from the ASTM D341 (Walther) equation.
 
-    .. math:: \nu = 10^{10^{A - B\log_{10}T}} - 0.7
+    .. math::
+        Z = 10^{10^{A - B\log_{10}T}},\qquad
+        \nu = (Z - 0.7) - \exp[-0.7487 - 3.295(Z-0.7) + 0.6119(Z-0.7)^2
+               - 0.3193(Z-0.7)^3]
+
+    with :math:`\nu` in mm²/s and :math:`T` in kelvin (ASTM D341-09 and
+    later). The exponential corrects viscosities below about 2 mm²/s and is
+    negligible above 4 mm²/s.
 
     Parameters
     ----------
@@ -140,12 +153,6 @@ def astm_d341_viscosity(temperature: ArrayLike, a: ArrayLike, b: ArrayLike) -> F
     numpy.ndarray
         Kinematic viscosity [m²/s].
 
-    Notes
-    -----
-    The form with 0.7 holds for viscosities above about 2 mm²/s; ASTM D341
-    adds small correction terms below that, which matter for no lubricant of
-    a ball screw.
-
     Examples
     --------
     >>> a, b = astm_d341_constants(68e-6, 40.0, 10.3e-6, 100.0)
@@ -153,9 +160,11 @@ def astm_d341_viscosity(temperature: ArrayLike, a: ArrayLike, b: ArrayLike) -> F
     187.5
     """
     t = _temperature(temperature) + KELVIN
-    result: FloatArray = (
-        10.0 ** (10.0 ** (np.asarray(a) - np.asarray(b) * np.log10(t))) - 0.7
-    ) * _CST
+    with np.errstate(over="ignore"):
+        z = 10.0 ** (10.0 ** (np.asarray(a) - np.asarray(b) * np.log10(t)))
+    zm = z - 0.7
+    correction = np.exp(-0.7487 - 3.295 * zm + 0.6119 * zm**2 - 0.3193 * zm**3)
+    result: FloatArray = (zm - correction) * _CST
     return result
 
 
@@ -442,8 +451,8 @@ class Lubricant:
             raise BallScrewInputError(
                 "nu100", self.nu100, f"a value below nu40 ({self.nu40!r} m²/s)"
             )
-        if self.nu100 <= 0.3e-6 + 1e-12:
-            raise BallScrewInputError("nu100", self.nu100, "a viscosity above 0.3 mm²/s")
+        if self.nu100 < 0.3e-6:
+            raise BallScrewInputError("nu100", self.nu100, "a viscosity of at least 0.3 mm²/s")
         if self.viscosity_model not in VISCOSITY_MODELS:
             raise BallScrewInputError(
                 "viscosity_model", self.viscosity_model, f"one of {list(VISCOSITY_MODELS)}"
