@@ -16,7 +16,7 @@ Examples
 >>> [c.name for c in st.contacts]
 ['screw-1', 'nut-1', 'screw-2', 'nut-2']
 >>> round(float(st.contacts[0].film_minimum) * 1e6, 3)  # µm at 1000 rpm
-0.178
+0.19
 """
 
 from __future__ import annotations
