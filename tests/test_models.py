@@ -142,7 +142,8 @@ def test_simplified_asperity_term_is_the_exact_integral() -> None:
         b=b,
         p_max=p0,
         asperity_share=np.array(0.4),
-        viscosity_at_pressure=lambda p: 0.05 + 0 * p,
+        viscosity=0.05,
+        pressure_viscosity=1.5e-8,
         shear_rate=np.array(1e5),
         tau0=0.0,
         gamma_l=0.07,
@@ -163,12 +164,16 @@ def test_simplified_lubricant_newtonian_and_saturated_limits() -> None:
     }
     # Newtonian (tiny shear rate, constant viscosity): tau = eta * rate over pi a b.
     _, lub = simplified_contact_force(
-        viscosity_at_pressure=lambda p: 0.1 + 0 * p, shear_rate=np.array(1.0), **kw
+        viscosity=0.1,
+        pressure_viscosity=1e-30,
+        pressure_viscosity_model="barus",
+        shear_rate=np.array(1.0),
+        **kw,
     )  # type: ignore[arg-type]
     assert float(lub) == pytest.approx(0.1 * 1.0 * math.pi * 2e-4 * 5e-5, rel=1e-6)
     # Saturated: tau -> tau0 + gamma_L p, integral tau0 pi a b + gamma_L Q.
     _, lub = simplified_contact_force(
-        viscosity_at_pressure=lambda p: 1e12 + 0 * p, shear_rate=np.array(1e12), **kw
+        viscosity=1e12, pressure_viscosity=1.5e-8, shear_rate=np.array(1e12), **kw
     )  # type: ignore[arg-type]
     assert float(lub) == pytest.approx(1e6 * math.pi * 2e-4 * 5e-5 + 0.07 * q, rel=1e-6)
 

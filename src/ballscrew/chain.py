@@ -24,8 +24,6 @@ from .lubricant import Lubricant
 
 __all__ = ["FrictionResult", "friction_torque", "models"]
 
-DEFAULT_CHUNK = 1 << 16
-
 
 @dataclass(frozen=True)
 class FrictionResult:
@@ -81,7 +79,7 @@ def friction_torque(
     temperature: npt.ArrayLike,
     axial_load: npt.ArrayLike = 0.0,
     model: str = "harris-simplified",
-    chunk_size: int = DEFAULT_CHUNK,
+    chunk_size: int | None = None,
     **parameters: Any,
 ) -> FrictionResult:
     r"""Friction torque of a ball screw with a rotating screw and translating nut.
@@ -102,8 +100,9 @@ def friction_torque(
         A registered model, see :func:`models`: ``"harris-simplified"``
         (default, the study's model), ``"olaru"``, ``"viscoelastic"``,
         ``"harris-full"``, ``"catalog"``.
-    chunk_size : int
+    chunk_size : int, optional
         Operating points evaluated at once; bounds the memory of large grids.
+        Default: the model's own (``ModelSpec.chunk``).
     **parameters
         The model's own parameters (see its docstring); an unknown name is
         an error listing the valid ones.
@@ -123,7 +122,8 @@ def friction_torque(
     """
     spec = get_model(model)
     spec.check_parameters(parameters)
-    if isinstance(chunk_size, bool) or not isinstance(chunk_size, int) or chunk_size < 1:
+    chunk = spec.chunk if chunk_size is None else chunk_size
+    if isinstance(chunk, bool) or not isinstance(chunk, int) or chunk < 1:
         raise BallScrewInputError("chunk_size", chunk_size, "a whole number >= 1")
     w, t, fa = np.broadcast_arrays(
         check_finite("speed", speed),
@@ -131,24 +131,24 @@ def friction_torque(
         check_finite("axial_load", axial_load),
     )
     shape = w.shape
-    flat = [np.ascontiguousarray(x).reshape(-1) for x in (w, t, fa)]
-    n = flat[0].size
-    pieces: dict[str, list[FloatArray]] = {}
-    for start in range(0, max(n, 1), chunk_size):
-        sl = slice(start, min(start + chunk_size, n))
-        out = spec(screw, lubricant, flat[0][sl], flat[1][sl], flat[2][sl], **parameters)
-        for key, value in out.items():
-            pieces.setdefault(key, []).append(value)
-    components = {
-        key: np.concatenate(parts).reshape(shape) if n else np.zeros(shape)
-        for key, parts in pieces.items()
-    }
+    n = w.size
+    if n <= chunk:
+        components = dict(spec(screw, lubricant, w, t, fa, **parameters))
+    else:
+        flat = [np.ascontiguousarray(x).reshape(-1) for x in (w, t, fa)]
+        pieces: dict[str, list[FloatArray]] = {}
+        for start in range(0, n, chunk):
+            sl = slice(start, min(start + chunk, n))
+            out = spec(screw, lubricant, flat[0][sl], flat[1][sl], flat[2][sl], **parameters)
+            for key, value in out.items():
+                pieces.setdefault(key, []).append(value)
+        components = {key: np.concatenate(parts).reshape(shape) for key, parts in pieces.items()}
     total = np.zeros(shape)
     for value in components.values():
         total = total + value
-    useful = np.abs(fa) * screw.lead / (2.0 * math.pi)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        efficiency = np.where(useful > 0.0, useful / np.where(useful > 0, useful + total, 1.0), 0.0)
+    useful = np.abs(fa) * (screw.lead / (2.0 * math.pi))
+    # useful / (useful + T): 0 where there is no load (and no division by 0 when T = 0 too).
+    efficiency = useful / np.maximum(useful + total, np.finfo(float).tiny)
     used = dict(spec.parameters)
     used.update(parameters)
     return FrictionResult(

@@ -43,6 +43,8 @@ class ModelSpec:
         Published or stated validity range, in words.
     parameters : dict
         The model's own keyword parameters and their defaults.
+    chunk : int
+        Operating points the chain evaluates at once (bounds memory).
     """
 
     name: str
@@ -51,6 +53,7 @@ class ModelSpec:
     reference: str
     validity: str
     parameters: dict[str, Any] = field(default_factory=dict)
+    chunk: int = 1 << 17
 
     def check_parameters(self, given: dict[str, Any]) -> None:
         """Raise if ``given`` holds a parameter the model does not have."""
@@ -82,12 +85,13 @@ MODELS: dict[str, ModelSpec] = {}
 
 
 def register(
-    name: str, *, title: str, reference: str, validity: str
+    name: str, *, title: str, reference: str, validity: str, chunk: int = 1 << 17
 ) -> Callable[[ModelFunction], ModelFunction]:
     """Register a model function under ``name`` (decorator).
 
     The model's parameters and defaults are read from its keyword-only
-    arguments.
+    arguments; ``chunk`` is the number of operating points evaluated at once
+    (chosen so that the model's largest temporary arrays stay near 100 MB).
     """
 
     def deco(func: ModelFunction) -> ModelFunction:
@@ -97,7 +101,7 @@ def register(
             for p in sig.parameters.values()
             if p.kind is inspect.Parameter.KEYWORD_ONLY
         }
-        MODELS[name] = ModelSpec(name, func, title, reference, validity, params)
+        MODELS[name] = ModelSpec(name, func, title, reference, validity, params, chunk)
         return func
 
     return deco

@@ -201,6 +201,7 @@ def full_contact_power(
     "ch. 4-5",
     validity="EHL/mixed lubrication, Hamrock-Dowson film (ellipticity 1-8); Roelands viscosity; "
     "balls in free rolling (no ball-ball forces)",
+    chunk=4096,
 )
 def harris_full(
     screw: BallScrew,
