@@ -251,12 +251,17 @@ def ellipticity_exact(radius_ratio: ArrayLike) -> FloatArray:
 def _prepare(
     load: ArrayLike, rx: ArrayLike, ry: ArrayLike, modulus: ArrayLike
 ) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray, FloatArray]:
-    """Validate inputs; return load, small radius, big radius, curvature-sum radius, E'."""
+    """Validate inputs; return load, and small radius, big radius, R, E' of the geometry.
+
+    The geometry is broadcast only against itself: the ellipticity and the
+    elliptic integrals depend on it alone, so they are computed once per
+    distinct geometry, not once per load.
+    """
     q = check_nonnegative("load", load, "N")
     rxa = check_positive("rx (effective radius of curvature)", rx, "m")
     rya = check_positive("ry (effective radius of curvature)", ry, "m")
     ep = check_positive("reduced_modulus", modulus, "Pa")
-    q, rxa, rya, ep = np.broadcast_arrays(q, rxa, rya, ep)
+    rxa, rya, ep = np.broadcast_arrays(rxa, rya, ep)
     r_small = np.minimum(rxa, rya)
     r_big = np.maximum(rxa, rya)
     r_sum = rxa * rya / (rxa + rya)
@@ -279,16 +284,25 @@ def _assemble(
     :math:`b = (6\mathcal{E}QR/\pi k E')^{1/3}`,
     :math:`\delta = \mathcal{F}[(9/2\mathcal{E}R)(Q/\pi k E')^2]^{1/3}`.
     """
-    cube_q = np.cbrt(q)
     a1 = np.cbrt(6.0 * k**2 * big_e * r_sum / (np.pi * ep))
     b1 = np.cbrt(6.0 * big_e * r_sum / (np.pi * k * ep))
-    approach = big_f * np.cbrt(9.0 / (2.0 * big_e * r_sum) * (q / (np.pi * k * ep)) ** 2)
+    d1 = big_f * np.cbrt(9.0 / (2.0 * big_e * r_sum) / (np.pi * k * ep) ** 2)
+    return _scale_by_load(method, q, a1, b1, d1, k)
+
+
+def _scale_by_load(
+    method: str, q: FloatArray, a1: FloatArray, b1: FloatArray, d1: FloatArray, k: FloatArray
+) -> HertzContact:
+    """Hertz result from the values per unit load^(1/3) (semi-axes) and ^(2/3) (approach)."""
+    cube_q = np.cbrt(q)
+    a = a1 * cube_q
+    shape = a.shape
     return HertzContact(
-        a=a1 * cube_q,
+        a=a,
         b=b1 * cube_q,
-        p_max=3.0 * cube_q / (2.0 * np.pi * a1 * b1),
-        approach=approach,
-        ellipticity=k,
+        p_max=(3.0 / (2.0 * np.pi)) / (a1 * b1) * cube_q,
+        approach=d1 * cube_q**2,
+        ellipticity=np.broadcast_to(k, shape),
         method=method,
     )
 
@@ -507,23 +521,13 @@ def hertz_houpert_2001(
     """
     q, r_small, r_big, r_sum, ep = _prepare(load, rx, ry, reduced_modulus)
     ratio = r_big / r_small
-    w_third = np.cbrt(q / (ep * r_small**2))
-    a = 1.1552 * r_small * ratio**0.4676 * w_third
-    b = 1.1502 * r_small * ratio**-0.1876 * w_third
-    k = (1.1552 / 1.1502) * ratio ** (0.4676 + 0.1876)
-    k = np.maximum(k, 1.0)
-    a1 = 1.1552 * r_small * ratio**0.4676 * np.cbrt(1.0 / (ep * r_small**2))
-    b1 = 1.1502 * r_small * ratio**-0.1876 * np.cbrt(1.0 / (ep * r_small**2))
+    unit_w_third = np.cbrt(1.0 / (ep * r_small**2))  # W^(1/3) per unit load^(1/3)
+    a1 = 1.1552 * r_small * ratio**0.4676 * unit_w_third
+    b1 = 1.1502 * r_small * ratio**-0.1876 * unit_w_third
+    k = np.maximum(a1 / b1, 1.0)
     big_f, big_e = _elliptic_integrals(k)
-    approach = big_f * np.cbrt(9.0 / (2.0 * big_e * r_sum) * (q / (np.pi * k * ep)) ** 2)
-    return HertzContact(
-        a=a,
-        b=b,
-        p_max=3.0 * np.cbrt(q) / (2.0 * np.pi * a1 * b1),
-        approach=approach,
-        ellipticity=k,
-        method="houpert",
-    )
+    d1 = big_f * np.cbrt(9.0 / (2.0 * big_e * r_sum) / (np.pi * k * ep) ** 2)
+    return _scale_by_load("houpert", q, a1, b1, d1, k)
 
 
 HERTZ_METHODS: dict[str, Callable[[ArrayLike, ArrayLike, ArrayLike, ArrayLike], HertzContact]] = {

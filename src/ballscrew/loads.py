@@ -102,7 +102,7 @@ def preload_split(
         g = sp**3 - sm**3 - r
         step = g / (1.5 * (sp + sm))
         s = np.clip(s - step, 0.0, 1.0)
-        if np.all(np.abs(step) <= 1e-15):
+        if np.all(np.abs(step) <= 1e-14):
             break
     loaded = np.where(lifted, fa, fpr * (1.0 + s) ** 1.5)
     # The relieved force follows from the loaded one so that the balance is exact.

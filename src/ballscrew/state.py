@@ -21,6 +21,7 @@ Examples
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from typing import Literal
 
@@ -91,10 +92,27 @@ class ContactState:
     materials_parameter: FloatArray
     load_parameter: FloatArray
     film_minimum: FloatArray
-    film_central: FloatArray
     roughness: float
     film_parameter: FloatArray
     asperity_share: FloatArray
+
+    @functools.cached_property
+    def film_central(self) -> FloatArray:
+        """Central film thickness :math:`h_c` [m] (Hamrock-Dowson), 0 where unloaded.
+
+        Computed on first use: most models need only :math:`h_{min}`.
+        """
+        loaded = self.load_parameter > 0.0
+        w_safe = np.where(loaded, self.load_parameter, 1.0)
+        h_c = ehl.hamrock_dowson_1977_central(
+            self.rx,
+            self.speed_parameter,
+            self.materials_parameter,
+            w_safe,
+            self.hertz.ellipticity,
+        )
+        result: FloatArray = np.where(loaded, h_c, 0.0)
+        return result
 
     @property
     def name(self) -> str:
@@ -187,9 +205,6 @@ def operating_state(
             h_min = np.where(
                 loaded, ehl.hamrock_dowson_1977_minimum(rx, u_par, g, w_safe, hz.ellipticity), 0.0
             )
-            h_c = np.where(
-                loaded, ehl.hamrock_dowson_1977_central(rx, u_par, g, w_safe, hz.ellipticity), 0.0
-            )
             lam = ehl.lambda_ratio(h_min, sigma)
             share = np.where(loaded, ehl.asperity_share(lam, asperity_b, asperity_c), 0.0)
             contacts.append(
@@ -208,7 +223,6 @@ def operating_state(
                     materials_parameter=np.broadcast_to(g, q.shape),
                     load_parameter=w_par,
                     film_minimum=h_min,
-                    film_central=h_c,
                     roughness=sigma,
                     film_parameter=lam,
                     asperity_share=share,

@@ -36,8 +36,9 @@ The ellipse is integrated in polar coordinates with :math:`r =
 \sqrt{1 - \sigma^2}` (so that :math:`p = p_0\sigma` and :math:`dA = ab\,
 \sigma\,d\sigma\,d\phi`), Gauss-Legendre in :math:`\sigma` and the
 midpoint rule in :math:`\phi` (the integrand has kinks along the
-pure-rolling lines, so the error falls like the square of the node spacing;
-``nodes=(8, 32)`` is within 1 % of a 4x finer grid).
+pure-rolling lines); the default ``nodes=(8, 8)`` is within 0.25 % of a
+(32, 256) grid for PAO ISO VG 68 and SAE 20 at 20-45 °C, 0.1-320 rad/s,
+0 and 3 kN axial load.
 
 References
 ----------
@@ -53,14 +54,15 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 from ..errors import BallScrewInputError, FloatArray, check_nonnegative
 from ..geometry import BallScrew
 from ..kinematics import differential_sliding, kinematics
-from ..lubricant import Lubricant, roelands_1966
+from ..lubricant import Lubricant
 from ..state import operating_state
 from ._registry import register
-from .harris_simplified import RHEOLOGY_MODELS, shear_stress
+from .harris_simplified import RHEOLOGY_MODELS, local_viscosity, shear_stress
 
 __all__ = ["full_contact_power", "harris_full"]
 
@@ -83,8 +85,8 @@ def full_contact_power(
     rheology_model: str = "harmonic",
     rheology_exponent: float = 1.0,
     eyring_stress: float = 5e6,
-    nodes: tuple[int, int] = (8, 32),
-    tolerance: float = 1e-9,
+    nodes: tuple[int, int] = (8, 8),
+    tolerance: float = 1e-6,
 ) -> tuple[FloatArray, FloatArray, FloatArray]:
     r"""Power per unit screw speed dissipated in one contact ellipse [W·s/rad = N·m].
 
@@ -128,69 +130,104 @@ def full_contact_power(
     phi = (np.arange(n_phi) + 0.5) * (np.pi / n_phi) - np.pi / 2  # x >= 0 half; x -> -x symmetric
     w_phi = 2.0 * np.pi / n_phi  # doubled for the mirrored half
     r = np.sqrt(1.0 - sig**2)
-    cos_p, sin_p = np.cos(phi), np.sin(phi)
     omega = np.abs(screw_speed)
     c_hat = abs(curvature)  # sliding speeds per unit |omega|
     w_hat = abs(spin)
-    aa = a[:, None, None]
-    y = aa * r[None, :, None] * sin_p[None, None, :]
-    x = b[:, None, None] * r[None, :, None] * cos_p[None, None, :]
+    y = a[:, None, None] * (r[:, None] * np.sin(phi)[None, :])
     base_x = -c_hat * y**2 - w_hat * y  # v_x / |omega| without slip
-    vy = w_hat * x
+    # v_y^2 > 0 at every node (r > 0, |phi| < pi/2, spin > 0); the floor keeps
+    # unloaded contacts (b = 0, no area) away from 0/0.
+    vy2 = (w_hat * b[:, None, None] * (r[:, None] * np.cos(phi)[None, :])) ** 2 + 1e-300
     # Unloaded contacts: dummy pressure (their area a*b is zero, so is their power).
     p = np.where(p_max > 0.0, p_max, 1.0)[:, None] * sig[None, :]
-    eta = roelands_1966(np.broadcast_to(viscosity[:, None], p.shape), pressure_viscosity, p)
-    tau_lim = tau0 + gamma_l * p
-    asp_stress = (asperity_share * mu0)[:, None, None] * p[:, :, None]
-    share = asperity_share[:, None, None]
-    weight = (w_sig * sig)[None, :, None] * w_phi
-    rate_scale = np.where(film > 0.0, omega / np.where(film > 0, film, 1.0), 0.0)[:, None, None]
-    eta3 = eta[:, :, None]
-    lim3 = tau_lim[:, :, None]
+    eta = local_viscosity(viscosity, pressure_viscosity, p, "roelands")
+    rate_scale = np.where(film > 0.0, omega / np.where(film > 0, film, 1.0), 0.0)
+    eta_rate = np.minimum(eta * rate_scale[:, None], 1e300)[:, :, None]  # tau_N per unit |v|
+    tau_lim = (tau0 + gamma_l * p)[:, :, None]
+    asp_stress = ((asperity_share * mu0)[:, None] * p)[:, :, None]
+    fluid_share = (1.0 - asperity_share)[:, None, None]
+    # Harmonic law: fluid stress / |v| = eta_rate * tau_lim / (eta_rate |v| + tau_lim).
+    fluid_numerator = fluid_share * eta_rate * tau_lim
+    weight = (w_sig * sig)[:, None] * w_phi  # (n_s, n_phi)
+    harmonic = rheology_model == "harmonic"
 
-    def stresses(s_hat: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:
-        vx = s_hat[:, None, None] + base_x
-        speed = np.hypot(vx, vy)
-        lub = np.abs(
-            shear_stress(
-                rheology_model, eta3, rate_scale * speed, lim3, rheology_exponent, eyring_stress
+    def rows(arr: FloatArray, idx: slice | npt.NDArray[np.intp]) -> FloatArray:
+        return arr[idx]
+
+    def stresses(s_hat: FloatArray, idx: slice | npt.NDArray[np.intp]) -> tuple[FloatArray, ...]:
+        vx = rows(base_x, idx) + s_hat[:, None, None]
+        speed = np.sqrt(vx * vx + rows(vy2, idx))
+        tau_n = rows(eta_rate, idx) * speed
+        lim = rows(tau_lim, idx)
+        if harmonic:
+            lub = tau_n * lim / (tau_n + lim)
+        else:
+            lub = np.abs(
+                shear_stress(rheology_model, tau_n, 1.0, lim, rheology_exponent, eyring_stress)
             )
-        )
         return vx, speed, lub
 
-    def traction(s_hat: FloatArray) -> FloatArray:
-        vx, speed, lub = stresses(s_hat)
-        total = asp_stress + (1.0 - share) * lub
-        direction = np.where(speed > 0.0, vx / np.where(speed > 0, speed, 1.0), 0.0)
-        result: FloatArray = np.sum(total * direction * weight, axis=(1, 2))
+    def traction(s_hat: FloatArray, idx: slice | npt.NDArray[np.intp]) -> FloatArray:
+        if harmonic:
+            vx = rows(base_x, idx) + s_hat[:, None, None]
+            speed = vx * vx
+            speed += rows(vy2, idx)
+            np.sqrt(speed, out=speed)
+            vx /= speed  # direction cosine
+            den = rows(eta_rate, idx) * speed
+            den += rows(tau_lim, idx)
+            integrand = rows(fluid_numerator, idx) / den
+            integrand *= speed
+            integrand += rows(asp_stress, idx)
+            integrand *= vx
+            out: FloatArray = np.einsum("ijk,jk->i", integrand, weight)
+            return out
+        vx, speed, lub = stresses(s_hat, idx)
+        total = rows(asp_stress, idx) + rows(fluid_share, idx) * lub
+        result: FloatArray = np.einsum("ijk,jk->i", total * (vx / speed), weight)
         return result
 
-    span = c_hat * a**2 + w_hat * a
-    lo = -span - 1e-300
-    hi = span + 1e-300
-    f_lo = traction(lo)
-    f_hi = traction(hi)
-    side = np.zeros(a.shape, dtype=int)
-    s_hat = 0.5 * (lo + hi)
-    for _ in range(100):
-        denom = f_hi - f_lo
-        s_hat = np.where(
-            denom > 0, hi - f_hi * (hi - lo) / np.where(denom > 0, denom, 1.0), 0.5 * (lo + hi)
-        )
-        s_hat = np.clip(s_hat, lo, hi)
-        f = traction(s_hat)
-        right = f > 0.0
-        hi = np.where(right, s_hat, hi)
-        f_hi = np.where(right, f, np.where(side == -1, 0.5 * f_hi, f_hi))
-        lo = np.where(right, lo, s_hat)
-        f_lo = np.where(right, np.where(side == 1, 0.5 * f_lo, f_lo), f)
-        side = np.where(right, 1, -1)
-        if np.all(hi - lo <= tolerance * (span + 1e-300)):
+    # Zero net traction fixes the slip: bracket it between all-backward and
+    # all-forward sliding, then Illinois regula falsi on the points not yet
+    # converged. The dissipated power is stationary in the slip at the
+    # solution (its derivative is the net traction), so a slip good to 1e-6
+    # of the bracket gives the power to about 1e-12.
+    n = a.shape[0]
+    span = c_hat * a**2 + w_hat * a + 1e-300
+    lo, hi = -span.copy(), span.copy()
+    everything = slice(None)
+    f_lo = traction(lo, everything)
+    f_hi = traction(hi, everything)
+    side = np.zeros(n, dtype=int)
+    s_hat = np.zeros(n)
+    active: slice | npt.NDArray[np.intp] = everything
+    for _ in range(200):
+        lo_a, hi_a, flo, fhi = lo[active], hi[active], f_lo[active], f_hi[active]
+        if lo_a.size == 0:
             break
-    _, speed, lub = stresses(s_hat)
-    area = (a * b)[:, None, None]
-    asperity = np.sum(asp_stress * speed * weight * area, axis=(1, 2))
-    lubricant = np.sum((1.0 - share) * lub * speed * weight * area, axis=(1, 2))
+        denom = fhi - flo
+        guess = np.where(
+            denom > 0,
+            hi_a - fhi * (hi_a - lo_a) / np.where(denom > 0, denom, 1.0),
+            0.5 * (lo_a + hi_a),
+        )
+        guess = np.clip(guess, lo_a, hi_a)
+        f = traction(guess, active)
+        right = f > 0.0
+        sd = side[active]
+        hi[active] = np.where(right, guess, hi_a)
+        f_hi[active] = np.where(right, f, np.where(sd == -1, 0.5 * fhi, fhi))
+        lo[active] = np.where(right, lo_a, guess)
+        f_lo[active] = np.where(right, np.where(sd == 1, 0.5 * flo, flo), f)
+        side[active] = np.where(right, 1, -1)
+        s_hat[active] = guess
+        done = (f == 0.0) | (hi[active] - lo[active] <= tolerance * span[active])
+        current = np.arange(n)[active]
+        active = current[~done]
+    _, speed, lub = stresses(s_hat, everything)
+    area = a * b
+    asperity = np.einsum("ijk,jk->i", asp_stress * speed, weight) * area
+    lubricant = np.einsum("ijk,jk->i", fluid_share * lub * speed, weight) * area
     return asperity, lubricant, s_hat
 
 
@@ -220,7 +257,7 @@ def harris_full(
     asperity_c: float = 0.8,
     film: str = "central",
     hertz_method: str = "exact",
-    nodes: tuple[int, int] = (8, 32),
+    nodes: tuple[int, int] = (8, 8),
 ) -> dict[str, FloatArray]:
     r"""Friction torque by the full Harris-type integral (module docstring).
 

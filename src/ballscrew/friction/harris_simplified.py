@@ -239,7 +239,12 @@ def simplified_contact_force(
     tau_n *= np.abs(rate)[..., None]
     if rheology_model == "harmonic":
         # tau_N tau_lim / (tau_N + tau_lim), written to stay finite for tau_N = inf.
-        tau = tau_lim / (1.0 + tau_lim / tau_n) if np.all(rate != 0) else _harmonic(tau_n, tau_lim)
+        if np.all(rate != 0):
+            tau = np.divide(tau_lim, tau_n, out=tau_n)
+            tau += 1.0
+            np.divide(tau_lim, tau, out=tau)
+        else:
+            tau = _harmonic(tau_n, tau_lim)
     else:
         # The laws take eta and the shear rate; pass tau_N as eta x 1/s, capped
         # where the pressure-viscosity law overflowed (the stress is saturated there).
@@ -373,10 +378,9 @@ def harris_simplified(
         asperity_b=asperity_b,
         asperity_c=asperity_c,
     )
-    eta0 = lubricant.dynamic_viscosity(state.temperature)
     c_screw, c_nut = differential_sliding(screw, state.kinematics.screw_speed)
     factor = mean_sliding_factor()
-    rows: dict[str, list[FloatArray]] = {k: [] for k in ("a", "b", "p", "share", "rate", "eta")}
+    asperity_forces, lubricant_forces = [], []
     for contact in state.contacts:
         if shear_velocity == "rolling":
             velocity = np.abs(contact.entrainment_speed)
@@ -385,39 +389,27 @@ def harris_simplified(
             velocity = factor * np.abs(c) * contact.hertz.a**2
         loaded = contact.film_minimum > 0.0
         rate = np.where(loaded, velocity / np.where(loaded, contact.film_minimum, 1.0), 0.0)
-        for key, value in (
-            ("a", contact.hertz.a),
-            ("b", contact.hertz.b),
-            ("p", contact.hertz.p_max),
-            ("share", contact.asperity_share),
-            ("rate", rate),
-            ("eta", eta0),
-        ):
-            rows[key].append(np.ravel(np.broadcast_to(value, state.temperature.shape)))
-    # All contacts at once: one array of 4 x points rows.
-    asp, lub = simplified_contact_force(
-        a=np.concatenate(rows["a"]),
-        b=np.concatenate(rows["b"]),
-        p_max=np.concatenate(rows["p"]),
-        asperity_share=np.concatenate(rows["share"]),
-        viscosity=np.concatenate(rows["eta"]),
-        pressure_viscosity=lubricant.pressure_viscosity,
-        shear_rate=np.concatenate(rows["rate"]),
-        tau0=tau0,
-        gamma_l=gamma_l,
-        mu0=mu0,
-        sliding_coefficient=sliding_coefficient,
-        sliding_sign_on_lubricant=sliding_sign_on_lubricant,
-        rheology_model=rheology_model,
-        rheology_exponent=rheology_exponent,
-        eyring_stress=eyring_stress,
-        pressure_viscosity_model=pressure_viscosity_model,
-        nodes=nodes,
-    )
-    shape = state.temperature.shape
-    n_contacts = len(state.contacts)
-    asperity_forces = [part.reshape(shape) for part in np.split(asp, n_contacts)]
-    lubricant_forces = [part.reshape(shape) for part in np.split(lub, n_contacts)]
+        asp, lub = simplified_contact_force(
+            a=contact.hertz.a,
+            b=contact.hertz.b,
+            p_max=contact.hertz.p_max,
+            asperity_share=contact.asperity_share,
+            viscosity=contact.viscosity,
+            pressure_viscosity=lubricant.pressure_viscosity,
+            shear_rate=rate,
+            tau0=tau0,
+            gamma_l=gamma_l,
+            mu0=mu0,
+            sliding_coefficient=sliding_coefficient,
+            sliding_sign_on_lubricant=sliding_sign_on_lubricant,
+            rheology_model=rheology_model,
+            rheology_exponent=rheology_exponent,
+            eyring_stress=eyring_stress,
+            pressure_viscosity_model=pressure_viscosity_model,
+            nodes=nodes,
+        )
+        asperity_forces.append(asp)
+        lubricant_forces.append(lub)
     return {
         "asperity": torque_from_contact_forces(state, asperity_forces, torque_arm),
         "lubricant": torque_from_contact_forces(state, lubricant_forces, torque_arm),
