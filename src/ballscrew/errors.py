@@ -14,6 +14,7 @@ import numpy.typing as npt
 
 __all__ = [
     "BallScrewInputError",
+    "check_choice",
     "check_finite",
     "check_in_range",
     "check_nonnegative",
@@ -115,3 +116,10 @@ def check_in_range(
         text = f"a value in {left}{low:g}, {high:g}{right} {unit}".rstrip()
         raise BallScrewInputError(field, _first_bad(arr, bad), text)
     return arr
+
+
+def check_choice(field: str, value: Any, options: tuple[str, ...] | list[str]) -> str:
+    """Return ``value`` if it is one of ``options``, else raise naming them."""
+    if not isinstance(value, str) or value not in options:
+        raise BallScrewInputError(field, value, f"one of {list(options)}")
+    return value

@@ -8,10 +8,18 @@ from typing import Literal, get_args
 
 import numpy as np
 
-from ..errors import BallScrewInputError, FloatArray
+from ..errors import FloatArray, check_choice, check_nonnegative
+from ..geometry import BallScrew
+from ..lubricant import Lubricant
 from ..state import OperatingState
 
-__all__ = ["TORQUE_ARMS", "TorqueArm", "torque_from_contact_forces"]
+__all__ = [
+    "TORQUE_ARMS",
+    "TorqueArm",
+    "lever_arms",
+    "limiting_shear",
+    "torque_from_contact_forces",
+]
 
 TorqueArm = Literal["energy", "contact-radius", "ball-radius"]
 TORQUE_ARMS: tuple[str, ...] = get_args(TorqueArm)
@@ -42,16 +50,42 @@ def torque_from_contact_forces(
         radius"), kept to reproduce it.
     """
     screw = state.screw
-    if arm == "energy":
-        lever = [screw.pitch_diameter * (1.0 - screw.gamma**2) / 4.0] * len(state.contacts)
-    elif arm == "contact-radius":
-        cos_l = math.cos(screw.lead_angle)
-        lever = [0.5 * c.radius * cos_l for c in state.contacts]
-    elif arm == "ball-radius":
-        lever = [0.5 * screw.ball_diameter] * len(state.contacts)
-    else:
-        raise BallScrewInputError("torque_arm", arm, f"one of {list(TORQUE_ARMS)}")
+    levers = lever_arms(screw, arm)
+    lever = [levers[c.side] for c in state.contacts]
     total: FloatArray = np.zeros(np.shape(forces[0]))
     for contact, force, r in zip(state.contacts, forces, lever, strict=True):
         total = total + contact.balls * screw.contacts_per_ball * force * r
     return total
+
+
+def lever_arms(screw: BallScrew, arm: str) -> dict[str, float]:
+    """Lever [m] that turns a force per ball at the screw and nut contacts into torque.
+
+    See :func:`torque_from_contact_forces` for the three choices of ``arm``.
+    """
+    check_choice("torque_arm", arm, TORQUE_ARMS)
+    if arm == "energy":
+        rolling = screw.pitch_diameter * (1.0 - screw.gamma**2) / 4.0
+        return {"screw": rolling, "nut": rolling}
+    if arm == "contact-radius":
+        cos_l = math.cos(screw.lead_angle)
+        return {
+            "screw": 0.5 * screw.contact_radius_screw * cos_l,
+            "nut": 0.5 * screw.contact_radius_nut * cos_l,
+        }
+    return {"screw": 0.5 * screw.ball_diameter, "nut": 0.5 * screw.ball_diameter}
+
+
+def limiting_shear(
+    lubricant: Lubricant, tau0: float | None, coefficient: float | None
+) -> tuple[float, float]:
+    r"""Limiting-shear parameters :math:`\tau_0` [Pa] and :math:`\gamma_L` [-].
+
+    A model parameter given as ``None`` takes the lubricant's own value.
+    """
+    t0 = lubricant.limiting_shear_stress if tau0 is None else tau0
+    gl = lubricant.limiting_shear_coefficient if coefficient is None else coefficient
+    return (
+        float(check_nonnegative("limiting_shear_stress", t0, "Pa")),
+        float(check_nonnegative("limiting_shear_coefficient", gl)),
+    )

@@ -56,11 +56,12 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from ..errors import BallScrewInputError, FloatArray, check_nonnegative
+from ..errors import BallScrewInputError, FloatArray, check_choice, check_nonnegative
 from ..geometry import BallScrew
 from ..kinematics import differential_sliding, kinematics
 from ..lubricant import Lubricant
 from ..state import operating_state
+from ._common import limiting_shear
 from ._registry import register
 from .harris_simplified import RHEOLOGY_MODELS, local_viscosity, shear_stress
 
@@ -286,22 +287,9 @@ def harris_full(
     dict
         ``"asperity"`` and ``"lubricant"`` torques [N·m].
     """
-    if rheology_model not in RHEOLOGY_MODELS:
-        raise BallScrewInputError(
-            "rheology_model", rheology_model, f"one of {list(RHEOLOGY_MODELS)}"
-        )
-    if film not in ("central", "minimum"):
-        raise BallScrewInputError("film", film, "'central' or 'minimum'")
-    tau0 = (
-        lubricant.limiting_shear_stress if limiting_shear_stress is None else limiting_shear_stress
-    )
-    gamma_l = (
-        lubricant.limiting_shear_coefficient
-        if limiting_shear_coefficient is None
-        else limiting_shear_coefficient
-    )
-    tau0 = float(check_nonnegative("limiting_shear_stress", tau0, "Pa"))
-    gamma_l = float(check_nonnegative("limiting_shear_coefficient", gamma_l))
+    check_choice("rheology_model", rheology_model, RHEOLOGY_MODELS)
+    check_choice("film", film, ("central", "minimum"))
+    tau0, gamma_l = limiting_shear(lubricant, limiting_shear_stress, limiting_shear_coefficient)
     mu = float(check_nonnegative("mu0", mu0))
     try:
         n_nodes = (int(nodes[0]), int(nodes[1]))
@@ -322,7 +310,6 @@ def harris_full(
     kin = state.kinematics
     c_s, c_n = (float(c) for c in differential_sliding(screw, 1.0))  # per unit screw speed
     unit = kinematics(screw, 1.0)
-    eta0 = lubricant.dynamic_viscosity(state.temperature)
     shape = kin.screw_speed.shape
     out: dict[str, Any] = {"asperity": np.zeros(shape), "lubricant": np.zeros(shape)}
     for contact in state.contacts:
@@ -338,7 +325,7 @@ def harris_full(
                 contact.hertz.b,
                 contact.hertz.p_max,
                 contact.asperity_share,
-                eta0,
+                contact.viscosity,
                 h,
                 kin.screw_speed,
             )

@@ -75,12 +75,18 @@ import numpy.typing as npt
 from scipy import integrate
 
 from .. import rheology
-from ..errors import BallScrewInputError, FloatArray, check_in_range, check_nonnegative
+from ..errors import (
+    BallScrewInputError,
+    FloatArray,
+    check_choice,
+    check_in_range,
+    check_nonnegative,
+)
 from ..geometry import BallScrew
 from ..kinematics import differential_sliding
 from ..lubricant import ROELANDS_LN_ETA_INF, ROELANDS_PRESSURE, Lubricant
 from ..state import operating_state
-from ._common import torque_from_contact_forces
+from ._common import limiting_shear, torque_from_contact_forces
 from ._registry import register
 
 __all__ = [
@@ -357,28 +363,12 @@ def harris_simplified(
     dict
         ``"asperity"`` and ``"lubricant"`` torques [N·m].
     """
-    if shear_velocity not in ("rolling", "sliding"):
-        raise BallScrewInputError("shear_velocity", shear_velocity, "'rolling' or 'sliding'")
-    if rheology_model not in RHEOLOGY_MODELS:
-        raise BallScrewInputError(
-            "rheology_model", rheology_model, f"one of {list(RHEOLOGY_MODELS)}"
-        )
-    if pressure_viscosity_model not in ("roelands", "barus"):
-        raise BallScrewInputError(
-            "pressure_viscosity_model", pressure_viscosity_model, "'roelands' or 'barus'"
-        )
+    check_choice("shear_velocity", shear_velocity, ("rolling", "sliding"))
+    check_choice("rheology_model", rheology_model, RHEOLOGY_MODELS)
+    check_choice("pressure_viscosity_model", pressure_viscosity_model, ("roelands", "barus"))
     check_nonnegative("mu0", mu0)
     check_in_range("sliding_coefficient", sliding_coefficient, -1.0, 1.0, inclusive=(True, True))
-    tau0 = (
-        lubricant.limiting_shear_stress if limiting_shear_stress is None else limiting_shear_stress
-    )
-    gamma_l = (
-        lubricant.limiting_shear_coefficient
-        if limiting_shear_coefficient is None
-        else limiting_shear_coefficient
-    )
-    tau0 = float(check_nonnegative("limiting_shear_stress", tau0, "Pa"))
-    gamma_l = float(check_nonnegative("limiting_shear_coefficient", gamma_l))
+    tau0, gamma_l = limiting_shear(lubricant, limiting_shear_stress, limiting_shear_coefficient)
     if isinstance(nodes, bool) or not isinstance(nodes, int) or nodes < 2:
         raise BallScrewInputError("nodes", nodes, "a whole number >= 2")
 

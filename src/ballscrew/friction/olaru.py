@@ -86,7 +86,7 @@ import math
 import numpy as np
 import numpy.typing as npt
 
-from ..errors import BallScrewInputError, FloatArray, check_nonnegative
+from ..errors import BallScrewInputError, FloatArray, check_choice, check_nonnegative
 from ..geometry import BallScrew
 from ..lubricant import Lubricant
 from ..state import operating_state
@@ -248,8 +248,7 @@ def olaru(
         ``"rolling"``, ``"curvature"``, ``"hysteresis"``, ``"pivoting"``,
         ``"ball_ball"`` torques [N·m].
     """
-    if sliding_friction not in ("asperity", "speed-fit"):
-        raise BallScrewInputError("sliding_friction", sliding_friction, "'asperity' or 'speed-fit'")
+    check_choice("sliding_friction", sliding_friction, ("asperity", "speed-fit"))
     check_nonnegative("mu0", mu0)
     check_nonnegative("ball_ball_force", ball_ball_force, "N")
     check_nonnegative("ball_ball_friction", ball_ball_friction)

@@ -80,12 +80,17 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
-from ..errors import BallScrewInputError, FloatArray, check_nonnegative, check_positive
+from ..errors import (
+    FloatArray,
+    check_choice,
+    check_nonnegative,
+    check_positive,
+)
 from ..geometry import BallScrew
 from ..kinematics import kinematics
 from ..loads import ball_loads
 from ..lubricant import Lubricant
-from ._common import TORQUE_ARMS
+from ._common import lever_arms
 from ._registry import register
 
 __all__ = ["ViscoelasticContact", "lens_moments", "viscoelastic", "viscoelastic_contact"]
@@ -255,8 +260,7 @@ def viscoelastic_contact(
     k = float(check_positive("stiffness", stiffness, "N/m³"))
     m = float(check_nonnegative("mass", mass, "kg/m²"))
     gamma = float(check_positive("damping", damping, "N·s/m³"))
-    if edge_power not in ("kinetic", "work"):
-        raise BallScrewInputError("edge_power", edge_power, "'kinetic' or 'work'")
+    check_choice("edge_power", edge_power, ("kinetic", "work"))
     q, v = np.broadcast_arrays(q, v)
     q = q.astype(float)
     v = v.astype(float)
@@ -359,8 +363,7 @@ def viscoelastic(
     dict
         ``"viscoelastic"`` torque [N·m].
     """
-    if torque_arm not in TORQUE_ARMS:
-        raise BallScrewInputError("torque_arm", torque_arm, f"one of {list(TORQUE_ARMS)}")
+    levers = lever_arms(screw, torque_arm)
     kin = kinematics(screw, speed)
     bl = ball_loads(screw, axial_load)
     radius = 0.5 * screw.ball_diameter
@@ -379,15 +382,6 @@ def viscoelastic(
             leading_edge=leading_edge,
             edge_power=edge_power,
         )
-        if torque_arm == "energy":
-            levers = [screw.pitch_diameter * (1.0 - screw.gamma**2) / 4.0] * 2
-        elif torque_arm == "contact-radius":
-            cos_l = np.cos(screw.lead_angle)
-            levers = [
-                0.5 * screw.contact_radius_screw * cos_l,
-                0.5 * screw.contact_radius_nut * cos_l,
-            ]
-        else:
-            levers = [radius, radius]
-        total = total + balls * screw.contacts_per_ball * sol.friction * sum(levers)
+        lever = levers["screw"] + levers["nut"]  # the two contacts of a ball are equal
+        total = total + balls * screw.contacts_per_ball * sol.friction * lever
     return {"viscoelastic": total}
