@@ -1,5 +1,5 @@
 # Two commands do all set-up on a fresh machine with Python 3.11+ and pip:
-#   make run   - the main job (demonstration for now; the study reproduction later)
+#   make run   - the main job: reproduce the study, report in study-report/
 #   make test  - the whole test suite: ruff, mypy on src/, pytest with doctests
 PYTHON ?= python3
 VENV   ?= .venv
@@ -16,7 +16,7 @@ $(STAMP): pyproject.toml
 	touch $(STAMP)
 
 run: $(STAMP)
-	$(BIN)/ballscrew demo
+	$(BIN)/ballscrew study --out study-report
 
 test: $(STAMP)
 	$(BIN)/ruff check src tests benchmarks examples

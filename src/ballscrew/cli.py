@@ -6,12 +6,17 @@ an internal error.
 
 from __future__ import annotations
 
+import csv
+import io
+import json
 import math
 import sys
+from pathlib import Path
 
 import click
 import numpy as np
 from rich.console import Console
+from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 from rich.table import Table
 
 from . import __version__, lubricants
@@ -24,21 +29,18 @@ from .state import operating_state
 __all__ = ["main"]
 
 
-class _Group(click.Group):
-    """Click group that turns the package's input errors into exit status 2 and one line."""
-
-    def invoke(self, ctx: click.Context) -> object:
-        try:
-            return super().invoke(ctx)
-        except BallScrewInputError as exc:
-            click.echo(f"error: {exc}", err=True)
-            ctx.exit(2)
-
-
-@click.group(cls=_Group)
+@click.group(context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, prog_name="ballscrew")
 def cli() -> None:
-    """Ball screw friction torque, efficiency and power loss."""
+    """Ball screw friction torque, efficiency and power loss.
+
+    \b
+    Examples:
+      ballscrew study --out report          # reproduce the study (bundled case)
+      ballscrew torque --speed "0..3000 rpm" --model olaru --model catalog
+      ballscrew models
+      ballscrew lubricants
+    """  # noqa: D301 - click needs the literal \b to keep the example lines
 
 
 @cli.command()
@@ -135,12 +137,289 @@ def demo(lubricant_name: str, temperature: float) -> None:
     console.print(ft)
 
 
+def _progress(console: Console) -> Progress:
+    return Progress(
+        SpinnerColumn(),
+        TextColumn("{task.description}"),
+        BarColumn(),
+        TimeElapsedColumn(),
+        console=console,
+        transient=True,
+    )
+
+
+@cli.command()
+@click.option(
+    "--case",
+    "case_file",
+    type=click.Path(dir_okay=False),
+    default=None,
+    help="Case file (TOML with units); the bundled study case when omitted.",
+)
+@click.option(
+    "--out",
+    "out_dir",
+    type=click.Path(file_okay=False),
+    default="study-report",
+    show_default=True,
+    help="Folder for figures, CSV, report and run record.",
+)
+@click.option(
+    "--measured",
+    "measured_file",
+    type=click.Path(dir_okay=False),
+    default=None,
+    help="Measured torque-speed CSV (units in the header) to overlay and score.",
+)
+@click.option(
+    "--record",
+    "record_file",
+    type=click.Path(dir_okay=False),
+    default=None,
+    help="Regenerate the report of an earlier run from its run.json.",
+)
+def study(
+    case_file: str | None, out_dir: str, measured_file: str | None, record_file: str | None
+) -> None:
+    """Reproduce the study: figures, CSV data, a Markdown and HTML report, a run record.
+
+    \b
+    Examples:
+      ballscrew study --out report
+      ballscrew study --case my_screw.toml --measured friction.csv --out my_report
+      ballscrew study --record report/run.json --out report-again
+    """  # noqa: D301 - click needs the literal \b to keep the example lines
+    from .case import load_case
+    from .measured import read_measured
+    from .report import load_record, write_report
+    from .study import run_study
+
+    console = Console(stderr=True)
+    if record_file is not None:
+        if case_file or measured_file:
+            raise click.UsageError("--record replaces --case and --measured")
+        case, measured, measured_text = load_record(record_file)
+    else:
+        case = load_case(case_file)
+        measured, measured_text = None, None
+        if measured_file is not None:
+            measured = read_measured(measured_file, case.screw)
+            measured_text = Path(measured_file).read_text("utf-8")
+    with _progress(console) as bar:
+        task = bar.add_task("computing", total=11 + (measured is not None))
+
+        def tick(text: str) -> None:
+            bar.update(task, description=text, advance=1)
+
+        result = run_study(case, measured, progress=tick)
+        task2 = bar.add_task("writing", total=len(result.figures) + 1)
+
+        def tick2(text: str) -> None:
+            bar.update(task2, description=text, advance=1)
+
+        files = write_report(result, out_dir, measured_text, progress=tick2)
+    out = Path(out_dir)
+    click.echo(f"report: {out / 'report.html'} (also report.md); {len(files)} files in {out}/")
+
+
+@cli.command()
+@click.option(
+    "--case",
+    "case_file",
+    type=click.Path(dir_okay=False),
+    default=None,
+    help="Case file (TOML with units); the bundled study case when omitted.",
+)
+@click.option(
+    "--model",
+    "model_names",
+    multiple=True,
+    default=("harris-simplified",),
+    show_default=True,
+    help="Friction model; repeat for several.",
+)
+@click.option(
+    "--speed",
+    default=None,
+    help="Screw speed(s), e.g. '0..3000 rpm', "
+    "'0..3000:31 rpm' or '100, 1000 rpm' (default: the case's).",
+)
+@click.option("--temperature", default=None, help="Temperature(s), e.g. '20, 40 degC'.")
+@click.option("--axial-load", default=None, help="Axial load(s), e.g. '0, 2 kN'.")
+@click.option(
+    "--csv",
+    "csv_file",
+    type=click.Path(dir_okay=False),
+    default=None,
+    help="Write the table as CSV (units in the header).",
+)
+@click.option(
+    "--json",
+    "json_file",
+    type=click.Path(dir_okay=False),
+    default=None,
+    help="Write the results as JSON.",
+)
+def torque(
+    case_file: str | None,
+    model_names: tuple[str, ...],
+    speed: str | None,
+    temperature: str | None,
+    axial_load: str | None,
+    csv_file: str | None,
+    json_file: str | None,
+) -> None:
+    """Friction torque, power loss and efficiency of one case over speeds, temperatures, loads.
+
+    \b
+    Examples:
+      ballscrew torque --speed "0..3000:7 rpm"
+      ballscrew torque --model olaru --model catalog --temperature "20, 45 degC" --csv t.csv
+      ballscrew torque --case my_screw.toml --axial-load "0, 2 kN" --json t.json
+    """  # noqa: D301 - click needs the literal \b to keep the example lines
+    from .case import load_case
+    from .chain import friction_torque
+    from .friction import get_model
+    from .report import atomic_write
+    from .units import parse_range
+
+    case = load_case(case_file)
+    for name in model_names:
+        get_model(name)
+    w = np.asarray(parse_range("--speed", speed, "rad/s")) if speed else case.speed
+    t = (
+        np.asarray(parse_range("--temperature", temperature, "degC"))
+        if temperature
+        else (case.temperature)
+    )
+    f = (
+        np.asarray(parse_range("--axial-load", axial_load, "N"))
+        if axial_load
+        else (case.axial_load)
+    )
+    grid_w, grid_t, grid_f = (a.ravel() for a in np.meshgrid(w, t, f, indexing="ij"))
+    rows: list[dict[str, object]] = []
+    console = Console(stderr=True)
+    with _progress(console) as bar:
+        task = bar.add_task("models", total=len(model_names))
+        for name in model_names:
+            bar.update(task, description=name)
+            params = dict(case.model_parameters.get(name, {}))
+            r = friction_torque(
+                case.screw,
+                case.lubricant,
+                speed=grid_w,
+                temperature=grid_t,
+                axial_load=grid_f,
+                model=name,
+                **params,
+            )
+            for k in range(grid_w.size):
+                rows.append(
+                    {
+                        "model": name,
+                        "speed [rpm]": float(grid_w[k] * 60 / (2 * math.pi)),
+                        "temperature [degC]": float(grid_t[k]),
+                        "axial load [N]": float(grid_f[k]),
+                        "torque [N*m]": float(r.total[k]),
+                        "power loss [W]": float(r.power_loss[k]),
+                        "efficiency [-]": float(r.efficiency[k]),
+                    }
+                )
+            bar.advance(task)
+    table = Table(title=f"{case.title}: friction torque", show_lines=False)
+    for key in rows[0]:
+        table.add_column(key, justify="right")
+    for row in rows:
+        table.add_row(*(v if isinstance(v, str) else f"{v:.5g}" for v in row.values()))
+    Console(markup=False).print(table)
+    if csv_file:
+        buffer = io.StringIO()
+        writer = csv.DictWriter(buffer, fieldnames=list(rows[0]), lineterminator="\n")
+        writer.writeheader()
+        writer.writerows(rows)
+        atomic_write(Path(csv_file), buffer.getvalue().encode("utf-8"))
+    if json_file:
+        payload = {"case": case.title, "version": __version__, "rows": rows}
+        atomic_write(Path(json_file), (json.dumps(payload, indent=1) + "\n").encode("utf-8"))
+
+
+@cli.command(name="models")
+def models_command() -> None:
+    """List the friction models with their references and validity ranges.
+
+    \b
+    Example:
+      ballscrew models
+    """  # noqa: D301 - click needs the literal \b to keep the example lines
+    from .chain import models
+
+    table = Table(title="Friction models", show_lines=True)
+    for col in ("name", "model", "reference", "validity", "parameters"):
+        table.add_column(col)
+    for spec in models():
+        params = ", ".join(f"{k}={v!r}" for k, v in spec.parameters.items())
+        table.add_row(spec.name, spec.title, spec.reference, spec.validity, params)
+    Console(markup=False).print(table)
+
+
+@cli.command(name="lubricants")
+def lubricants_command() -> None:
+    """List the bundled lubricants with their data and sources.
+
+    \b
+    Example:
+      ballscrew lubricants
+    """  # noqa: D301 - click needs the literal \b to keep the example lines
+    table = Table(title="Bundled lubricants", show_lines=True)
+    for col in (
+        "name",
+        "ν40 [mm²/s]",
+        "ν100 [mm²/s]",
+        "ρ15 [kg/m³]",
+        "α [1/GPa]",
+        "τ0 [MPa]",
+        "γ_L",
+        "source",
+    ):
+        table.add_column(col)
+    for oil in lubricants.all_lubricants():
+        table.add_row(
+            oil.name,
+            f"{oil.nu40 * 1e6:g}",
+            f"{oil.nu100 * 1e6:g}",
+            f"{oil.density15:g}",
+            f"{oil.pressure_viscosity * 1e9:g}",
+            f"{oil.limiting_shear_stress / 1e6:g}",
+            f"{oil.limiting_shear_coefficient:g}",
+            oil.source,
+        )
+    Console(markup=False).print(table)
+
+
 def main(argv: list[str] | None = None) -> None:
-    """Entry point of the ``ballscrew`` command."""
+    """Entry point of the ``ballscrew`` command.
+
+    Exit status: 0 on success, 2 on bad input (one line on stderr naming the
+    field and the problem), 1 on an internal error, 130 when interrupted.
+    """
     try:
-        cli.main(args=argv, prog_name="ballscrew", standalone_mode=True)
-    except SystemExit:
-        raise
-    except Exception as exc:  # pragma: no cover - last-resort guard
+        status = cli.main(args=argv, prog_name="ballscrew", standalone_mode=False)
+    except BallScrewInputError as exc:
+        click.echo(f"error: {exc}", err=True)
+        sys.exit(2)
+    except click.exceptions.UsageError as exc:
+        click.echo(f"error: {exc.format_message()} (see 'ballscrew --help')", err=True)
+        sys.exit(2)
+    except (click.exceptions.Abort, KeyboardInterrupt):
+        click.echo(
+            "interrupted: outputs already written are complete; the rest were not written", err=True
+        )
+        sys.exit(130)
+    except click.exceptions.ClickException as exc:
+        click.echo(f"error: {exc.format_message()}", err=True)
+        sys.exit(exc.exit_code)
+    except Exception as exc:
         click.echo(f"internal error: {type(exc).__name__}: {exc}", err=True)
         sys.exit(1)
+    sys.exit(status if isinstance(status, int) else 0)

@@ -46,9 +46,13 @@ class BallScrewInputError(ValueError):
 
 def _show(value: Any) -> str:
     """Short printable form of a scalar or the first offending array element."""
-    arr = np.asarray(value)
+    try:
+        arr = np.asarray(value)
+    except Exception:  # any odd object: fall back to its repr
+        arr = np.asarray(None)
     if arr.ndim == 0:
-        return repr(arr.item()) if arr.dtype.kind in "biufc" else repr(value)
+        text = repr(arr.item()) if arr.dtype.kind in "biufc" else repr(value)
+        return text if len(text) <= 80 else text[:77] + "..."
     return f"array of shape {arr.shape}"
 
 

@@ -1,0 +1,345 @@
+"""Ball screw case files: TOML with explicit units, validated on load.
+
+A case describes one ball screw, its lubricant, its operating range and (for
+``ballscrew study``) the study's settings. Every dimensional value is written
+with its unit (``pitch_diameter = "32 mm"``, ``preload = "1.5 kN"``) and
+converted by pint at load time. A value may also be a table that says it was
+assumed and why::
+
+    lead = { value = "20 mm", assumed = "high-speed screw of that class" }
+
+Pydantic validates the structure (unknown keys are errors, so typos are
+caught); every problem becomes one :class:`~ballscrew.errors.BallScrewInputError`
+naming the field by its dotted path (``screw.lead``).
+
+The preload is given either directly (``preload``) or as the catalogue drag
+torque it produces (``preload_drag_torque``), which the case turns into a
+preload with :func:`ballscrew.friction.catalog.preload_from_drag_torque`, as
+the study did.
+"""
+
+from __future__ import annotations
+
+import tomllib
+from dataclasses import dataclass
+from importlib import resources
+from pathlib import Path
+from typing import Any, Literal
+
+import numpy as np
+from pydantic import BaseModel, ConfigDict, Field, ValidationError
+
+from . import lubricants
+from .errors import BallScrewInputError, FloatArray
+from .geometry import BallScrew
+from .lubricant import Lubricant
+from .units import parse_range, to_si
+
+__all__ = ["Assumption", "Case", "default_case_path", "load_case", "parse_case"]
+
+
+class _Assumed(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+    value: str | float | int
+    assumed: str = Field(min_length=1)
+
+
+Value = str | float | int | _Assumed
+
+
+class _Screw(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+    pitch_diameter: Value
+    lead: Value
+    ball_diameter: Value
+    contact_angle: Value = "45 deg"
+    conformity_screw: Value = 0.55
+    conformity_nut: Value = 0.55
+    loaded_turns: Value = 2.5
+    circuits: Value = 2
+    nut: Literal["double", "single", "single-4point"] | _Assumed = "double"
+    preload: Value | None = None
+    preload_drag_torque: Value | None = None
+    youngs_modulus_ball: Value = "210 GPa"
+    youngs_modulus_races: Value = "210 GPa"
+    poisson_ratio_ball: Value = 0.3
+    poisson_ratio_races: Value = 0.3
+    roughness_ball: Value = "0.08 um"
+    roughness_screw: Value = "0.3 um"
+    roughness_nut: Value = "0.3 um"
+
+
+class _Lubricant(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+    name: str | _Assumed
+    nu40: Value | None = None
+    nu100: Value | None = None
+    density15: Value | None = None
+    pressure_viscosity: Value | None = None
+    limiting_shear_stress: Value | None = None
+    limiting_shear_coefficient: Value | None = None
+
+
+class _Operation(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+    speed: Value = "10..3000:60 rpm"
+    temperature: Value = "20 degC"
+    axial_load: Value = "0 N"
+
+
+class _Study(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+    drag_torques: list[Value] = Field(
+        default_factory=lambda: list[Value](["0.2 N*m", "0.4 N*m", "0.6 N*m"])
+    )
+    measured_range: list[Value] = Field(default_factory=lambda: list[Value](["0.2 N*m", "0.6 N*m"]))
+    temperature: Value = "20 degC"
+    lubricant_temperatures: dict[str, list[Value]] = Field(
+        default_factory=lambda: dict[str, list[Value]](
+            {
+                "PAO ISO VG 68": ["20 degC", "30 degC", "35 degC", "40 degC", "45 degC"],
+                "SAE 20": ["24 degC", "30 degC", "35 degC", "40 degC", "45 degC"],
+            }
+        )
+    )
+    model_parameters: dict[str, dict[str, Any]] = Field(default_factory=dict)
+
+
+class _CaseFile(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+    title: str = "ball screw case"
+    description: str = ""
+    screw: _Screw
+    lubricant: _Lubricant
+    operation: _Operation = Field(default_factory=_Operation)
+    study: _Study = Field(default_factory=_Study)
+
+
+@dataclass(frozen=True)
+class Assumption:
+    """A value of a case that was assumed rather than known."""
+
+    field: str
+    value: str
+    reason: str
+
+
+def _unwrap(field: str, raw: Any, notes: list[Assumption]) -> Any:
+    if isinstance(raw, _Assumed):
+        notes.append(Assumption(field, str(raw.value), raw.assumed))
+        return raw.value
+    return raw
+
+
+@dataclass(frozen=True)
+class Case:
+    """A loaded, validated case.
+
+    Attributes
+    ----------
+    title, description : str
+        Labels.
+    screw : BallScrew
+        The ball screw, with the case's preload.
+    lubricant : Lubricant
+        The oil.
+    speed : numpy.ndarray
+        Screw speeds [rad/s].
+    temperature : numpy.ndarray
+        Temperatures [°C].
+    axial_load : numpy.ndarray
+        Axial loads [N].
+    drag_torques : tuple of float
+        Study: catalogue drag torques [N·m] whose preloads are compared;
+        the middle one is the case's own when the preload is derived.
+    measured_range : tuple of float
+        Study: the measured torque band [N·m].
+    study_temperature : float
+        Study: temperature of Figs. 3 to 7 [°C].
+    lubricant_temperatures : dict
+        Study: lubricant name -> temperatures [°C] (Fig. 8, Table 1).
+    model_parameters : dict
+        Study: model name -> parameters passed to it.
+    assumptions : tuple of Assumption
+        Every value marked as assumed, with its reason.
+    text : str
+        The TOML text the case was read from.
+    """
+
+    title: str
+    description: str
+    screw: BallScrew
+    lubricant: Lubricant
+    speed: FloatArray
+    temperature: FloatArray
+    axial_load: FloatArray
+    drag_torques: tuple[float, ...]
+    measured_range: tuple[float, ...]
+    study_temperature: float
+    lubricant_temperatures: dict[str, tuple[float, ...]]
+    model_parameters: dict[str, dict[str, Any]]
+    assumptions: tuple[Assumption, ...]
+    text: str
+
+
+def _validation_error(exc: ValidationError) -> BallScrewInputError:
+    err = exc.errors()[0]
+    path = ".".join(str(p) for p in err["loc"] if not str(p).startswith(("function-", "_")))
+    # pydantic reports union members in the path; keep the field names only.
+    parts = [p for p in path.split(".") if p not in {"str", "float", "int", "_Assumed"}]
+    field = ".".join(parts) or "case"
+    kind = err["type"]
+    allowed = {
+        "missing": "a value (the field is required)",
+        "extra_forbidden": "no such field (check the spelling)",
+    }.get(kind, err["msg"])
+    value = "(missing)" if kind == "missing" else err.get("input", "")
+    return BallScrewInputError(field, value, allowed)
+
+
+def parse_case(text: str, *, source: str = "case") -> Case:
+    """Validate a case given as TOML text; see the module docstring for the format."""
+    try:
+        raw = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise BallScrewInputError(source, "(file)", f"valid TOML ({exc})") from None
+    try:
+        data = _CaseFile.model_validate(raw)
+    except ValidationError as exc:
+        raise _validation_error(exc) from None
+    notes: list[Assumption] = []
+    s = data.screw
+
+    def si(section: str, name: str, value: Any, unit: str) -> float:
+        return to_si(f"{section}.{name}", _unwrap(f"{section}.{name}", value, notes), unit)
+
+    geometry: dict[str, Any] = {
+        "pitch_diameter": si("screw", "pitch_diameter", s.pitch_diameter, "m"),
+        "lead": si("screw", "lead", s.lead, "m"),
+        "ball_diameter": si("screw", "ball_diameter", s.ball_diameter, "m"),
+        "contact_angle": si("screw", "contact_angle", s.contact_angle, "rad"),
+        "conformity_screw": si("screw", "conformity_screw", s.conformity_screw, ""),
+        "conformity_nut": si("screw", "conformity_nut", s.conformity_nut, ""),
+        "loaded_turns": si("screw", "loaded_turns", s.loaded_turns, ""),
+        "nut": _unwrap("screw.nut", s.nut, notes),
+        "youngs_modulus_ball": si("screw", "youngs_modulus_ball", s.youngs_modulus_ball, "Pa"),
+        "youngs_modulus_races": si("screw", "youngs_modulus_races", s.youngs_modulus_races, "Pa"),
+        "poisson_ratio_ball": si("screw", "poisson_ratio_ball", s.poisson_ratio_ball, ""),
+        "poisson_ratio_races": si("screw", "poisson_ratio_races", s.poisson_ratio_races, ""),
+        "roughness_ball": si("screw", "roughness_ball", s.roughness_ball, "m"),
+        "roughness_screw": si("screw", "roughness_screw", s.roughness_screw, "m"),
+        "roughness_nut": si("screw", "roughness_nut", s.roughness_nut, "m"),
+    }
+    circuits = si("screw", "circuits", s.circuits, "")
+    if circuits != int(circuits):
+        raise BallScrewInputError("screw.circuits", circuits, "a whole number >= 1")
+    geometry["circuits"] = int(circuits)
+    if (s.preload is None) == (s.preload_drag_torque is None):
+        raise BallScrewInputError(
+            "screw.preload", s.preload, "exactly one of preload and preload_drag_torque"
+        )
+    try:
+        screw = BallScrew(preload=0.0, **geometry)
+    except BallScrewInputError as exc:
+        raise BallScrewInputError(f"screw.{exc.field}", exc.value, exc.allowed) from None
+    if s.preload is not None:
+        preload = si("screw", "preload", s.preload, "N")
+    else:
+        from .friction.catalog import preload_from_drag_torque
+
+        torque = si("screw", "preload_drag_torque", s.preload_drag_torque, "N*m")
+        preload = float(preload_from_drag_torque(torque, screw))
+    try:
+        screw = screw.replace(preload=preload)
+    except BallScrewInputError as exc:
+        raise BallScrewInputError(f"screw.{exc.field}", exc.value, exc.allowed) from None
+
+    lub = _lubricant(data.lubricant, notes)
+    op = data.operation
+    speed = parse_range("operation.speed", _unwrap("operation.speed", op.speed, notes), "rad/s")
+    temperature = parse_range(
+        "operation.temperature", _unwrap("operation.temperature", op.temperature, notes), "degC"
+    )
+    axial = parse_range(
+        "operation.axial_load", _unwrap("operation.axial_load", op.axial_load, notes), "N"
+    )
+    st = data.study
+    drag = tuple(si("study", f"drag_torques[{i}]", v, "N*m") for i, v in enumerate(st.drag_torques))
+    band = tuple(
+        si("study", f"measured_range[{i}]", v, "N*m") for i, v in enumerate(st.measured_range)
+    )
+    temps = {
+        name: tuple(si("study", f"lubricant_temperatures.{name}", v, "degC") for v in values)
+        for name, values in st.lubricant_temperatures.items()
+    }
+    for name in temps:
+        lubricants.get(name)  # unknown names fail here, listing the bundled ones
+    return Case(
+        title=data.title,
+        description=data.description,
+        screw=screw,
+        lubricant=lub,
+        speed=np.asarray(speed),
+        temperature=np.asarray(temperature),
+        axial_load=np.asarray(axial),
+        drag_torques=drag,
+        measured_range=band,
+        study_temperature=si("study", "temperature", st.temperature, "degC"),
+        lubricant_temperatures=temps,
+        model_parameters={k: dict(v) for k, v in st.model_parameters.items()},
+        assumptions=tuple(notes),
+        text=text,
+    )
+
+
+def _lubricant(section: _Lubricant, notes: list[Assumption]) -> Lubricant:
+    name = str(_unwrap("lubricant.name", section.name, notes))
+    custom = {
+        "nu40": ("m**2/s", section.nu40),
+        "nu100": ("m**2/s", section.nu100),
+        "density15": ("kg/m**3", section.density15),
+        "pressure_viscosity": ("1/Pa", section.pressure_viscosity),
+        "limiting_shear_stress": ("Pa", section.limiting_shear_stress),
+        "limiting_shear_coefficient": ("", section.limiting_shear_coefficient),
+    }
+    given = {
+        key: to_si(f"lubricant.{key}", _unwrap(f"lubricant.{key}", raw, notes), unit)
+        for key, (unit, raw) in custom.items()
+        if raw is not None
+    }
+    try:
+        if not given:
+            return lubricants.get(name)
+        if {"nu40", "nu100", "density15"} <= set(given):
+            return Lubricant.from_viscosities(
+                name,
+                given.pop("nu40"),
+                given.pop("nu100"),
+                given.pop("density15"),
+                given.pop("pressure_viscosity", None),
+                source="case file",
+                **given,
+            )
+        return lubricants.get(name).replace(**given)
+    except BallScrewInputError as exc:
+        field = exc.field if exc.field.startswith("lubricant") else f"lubricant.{exc.field}"
+        raise BallScrewInputError(field, exc.value, exc.allowed) from None
+
+
+def default_case_path() -> Path:
+    """Path of the bundled default case (the study's set-up)."""
+    return Path(str(resources.files("ballscrew").joinpath("data/kamalzadeh_stage.toml")))
+
+
+def load_case(path: str | Path | None = None) -> Case:
+    """Load a case file; the bundled default case when ``path`` is None."""
+    file = default_case_path() if path is None else Path(path)
+    try:
+        data = file.read_bytes()
+    except OSError as exc:
+        raise BallScrewInputError("case", str(file), f"a readable file ({exc.strerror})") from None
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError:
+        raise BallScrewInputError("case", str(file), "a UTF-8 text file") from None
+    return parse_case(text, source=str(file))

@@ -1,0 +1,86 @@
+"""Figures of the study report (matplotlib, no global state, reproducible bytes).
+
+Each figure is drawn on its own :class:`matplotlib.figure.Figure` with the Agg
+canvas (no display needed) and saved as PNG and SVG with the date and
+software metadata removed and a fixed SVG hash salt, so that the same inputs
+give byte-identical files.
+"""
+
+from __future__ import annotations
+
+import io
+from typing import Any
+
+import matplotlib as mpl
+import numpy as np
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure as MplFigure
+
+from .measured import MeasuredCurve
+from .study import RPM, Figure
+
+__all__ = ["figure_bytes", "render"]
+
+_STYLE: dict[str, Any] = {
+    "svg.hashsalt": "ballscrew",
+    "font.size": 9.0,
+    "axes.grid": True,
+    "grid.alpha": 0.3,
+    "figure.dpi": 100,
+}
+
+
+def render(
+    fig: Figure, measured_range: tuple[float, ...] = (), measured: MeasuredCurve | None = None
+) -> MplFigure:
+    """Draw one study figure: torque against screw speed, measured band and curve."""
+    with mpl.rc_context(_STYLE):  # type: ignore[arg-type]
+        out = MplFigure(figsize=(9.0, 4.3))
+        FigureCanvasAgg(out)
+        ax = out.add_subplot(1, 1, 1)
+        if len(measured_range) >= 2:
+            lo, hi = min(measured_range), max(measured_range)
+            ax.axhspan(
+                lo,
+                hi,
+                color="0.85",
+                zorder=0,
+                label=f"measured range {lo:g} to {hi:g} N·m (Kamalzadeh, via the study)",
+            )
+        for s in fig.series:
+            ax.plot(s.speed_rpm, s.torque, lw=1.6, label=s.label)
+        if measured is not None:
+            ax.plot(
+                measured.speed / RPM,
+                measured.torque,
+                "k.",
+                ms=4,
+                label=f"measured ({measured.source.rsplit('/', 1)[-1]})",
+            )
+        ax.set_xlabel("screw speed [rpm]")
+        ax.set_ylabel("friction torque [N·m]")
+        ax.set_title(fig.title)
+        if fig.log_y:
+            ax.set_yscale("log")
+        else:
+            top = max(float(np.max(s.torque)) for s in fig.series)
+            if len(measured_range) >= 2:
+                top = max(top, max(measured_range))
+            ax.set_ylim(0.0, 1.1 * top if top > 0 else 1.0)
+        ax.set_xlim(left=0.0)
+        ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
+        out.tight_layout()
+    return out
+
+
+def figure_bytes(figure: MplFigure, kind: str) -> bytes:
+    """The figure as PNG or SVG bytes, without date or software metadata."""
+    buffer = io.BytesIO()
+    with mpl.rc_context(_STYLE):  # type: ignore[arg-type]
+        if kind == "png":
+            figure.savefig(buffer, format="png", dpi=120, metadata={"Software": None})
+        elif kind == "svg":
+            figure.savefig(buffer, format="svg", metadata={"Date": None, "Creator": None})
+        else:  # pragma: no cover - internal use only
+            raise ValueError(kind)
+    return buffer.getvalue()

@@ -1,0 +1,421 @@
+"""The study report: figures, CSV data, Markdown and HTML pages, and the run record.
+
+:func:`write_report` writes into one folder:
+
+* ``figures/<key>.png`` and ``.svg`` for every figure;
+* ``data/<key>.csv`` with every plotted series, units in the column names;
+* ``report.md`` and ``report.html`` (self-contained: figures embedded);
+* ``run.json``, the run record: package version, the case file's text and
+  the measured curve's text, from which :func:`regenerate` writes the same
+  report again, byte for byte.
+
+Every file is written atomically (a temporary file in the same folder, then
+renamed), so an interrupted run leaves each file either complete or as it was.
+"""
+
+from __future__ import annotations
+
+import base64
+import csv
+import html
+import io
+import json
+import math
+import os
+import tempfile
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from . import __version__
+from .case import Case, parse_case
+from .contact import hertz
+from .errors import BallScrewInputError
+from .loads import ball_loads
+from .measured import MeasuredCurve, parse_measured
+from .plotting import figure_bytes, render
+from .study import StudyResult, run_study
+
+__all__ = ["atomic_write", "regenerate", "write_report"]
+
+RECORD_NAME = "run.json"
+
+
+def atomic_write(path: Path, data: bytes) -> None:
+    """Write ``data`` to ``path`` through a temporary file and an atomic rename."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    try:
+        with os.fdopen(fd, "wb") as handle:
+            handle.write(data)
+            handle.flush()
+            os.fsync(handle.fileno())
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+
+
+# --- a tiny document model rendered to Markdown and HTML --------------------------------------
+@dataclass(frozen=True)
+class _Block:
+    kind: str  # "h1", "h2", "p", "ul", "table", "img"
+    content: Any
+
+
+def _md(blocks: list[_Block]) -> str:
+    out: list[str] = []
+    for b in blocks:
+        if b.kind == "h1":
+            out.append(f"# {b.content}\n")
+        elif b.kind == "h2":
+            out.append(f"## {b.content}\n")
+        elif b.kind == "p":
+            out.append(f"{b.content}\n")
+        elif b.kind == "ul":
+            out.append("\n".join(f"- {item}" for item in b.content) + "\n")
+        elif b.kind == "table":
+            header, rows = b.content
+            out.append("| " + " | ".join(header) + " |")
+            out.append("|" + "---|" * len(header))
+            out.extend("| " + " | ".join(str(c) for c in row) + " |" for row in rows)
+            out.append("")
+        elif b.kind == "img":
+            key, caption = b.content
+            out.append(
+                f"![{caption}](figures/{key}.png)\n\n*{caption}* "
+                f"([SVG](figures/{key}.svg), [data](data/{key}.csv))\n"
+            )
+    return "\n".join(out)
+
+
+def _html(blocks: list[_Block], title: str, images: dict[str, bytes]) -> str:
+    parts = [
+        "<!DOCTYPE html>",
+        '<html lang="en"><head><meta charset="utf-8">',
+        f"<title>{html.escape(title)}</title>",
+        "<style>body{font-family:sans-serif;max-width:60em;margin:2em auto;line-height:1.45}"
+        "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #bbb;"
+        "padding:.25em .6em;text-align:left}img{max-width:100%}figcaption{font-style:italic}"
+        "</style></head><body>",
+    ]
+    for b in blocks:
+        if b.kind in ("h1", "h2"):
+            parts.append(f"<{b.kind}>{html.escape(b.content)}</{b.kind}>")
+        elif b.kind == "p":
+            parts.append(f"<p>{html.escape(b.content)}</p>")
+        elif b.kind == "ul":
+            parts.append(
+                "<ul>" + "".join(f"<li>{html.escape(i)}</li>" for i in b.content) + "</ul>"
+            )
+        elif b.kind == "table":
+            header, rows = b.content
+            parts.append(
+                "<table><tr>" + "".join(f"<th>{html.escape(h)}</th>" for h in header) + "</tr>"
+            )
+            for row in rows:
+                parts.append(
+                    "<tr>" + "".join(f"<td>{html.escape(str(c))}</td>" for c in row) + "</tr>"
+                )
+            parts.append("</table>")
+        elif b.kind == "img":
+            key, caption = b.content
+            data = base64.b64encode(images[key]).decode("ascii")
+            parts.append(
+                f'<figure><img alt="{html.escape(caption)}" '
+                f'src="data:image/png;base64,{data}">'
+                f"<figcaption>{html.escape(caption)}</figcaption></figure>"
+            )
+    parts.append("</body></html>\n")
+    return "\n".join(parts)
+
+
+def _fmt(x: float, digits: int = 4) -> str:
+    return "n/a" if not math.isfinite(x) else f"{x:.{digits}g}"
+
+
+def _document(result: StudyResult) -> list[_Block]:
+    case = result.case
+    s = case.screw
+    blocks = [
+        _Block("h1", f"Ball screw friction study: {case.title}"),
+        _Block(
+            "p",
+            f"Reproduction of J. Sušeň, 'A Study on the Ball Screw Friction Torque', "
+            f"computed by ballscrew {__version__}. {' '.join(case.description.split())}".strip(),
+        ),
+        _Block("h2", "Findings"),
+        _Block("ul", list(result.findings)),
+        _Block("h2", "Inputs"),
+    ]
+    assumed = {a.field: a.reason for a in case.assumptions}
+    rows = [
+        ("pitch diameter", f"{s.pitch_diameter * 1e3:g} mm", "screw.pitch_diameter"),
+        ("lead", f"{s.lead * 1e3:g} mm", "screw.lead"),
+        ("ball diameter", f"{s.ball_diameter * 1e3:g} mm", "screw.ball_diameter"),
+        ("contact angle", f"{math.degrees(s.contact_angle):g}°", "screw.contact_angle"),
+        (
+            "conformity screw / nut",
+            f"{s.conformity_screw:g} / {s.conformity_nut:g}",
+            "screw.conformity_screw",
+        ),
+        ("loaded turns x circuits", f"{s.loaded_turns:g} x {s.circuits}", "screw.loaded_turns"),
+        ("nut", s.nut, "screw.nut"),
+        ("reference preload", f"{s.preload:.0f} N", "screw.preload_drag_torque"),
+        (
+            "roughness ball / screw / nut",
+            f"{s.roughness_ball * 1e6:g} / {s.roughness_screw * 1e6:g} / "
+            f"{s.roughness_nut * 1e6:g} µm",
+            "screw.roughness_ball",
+        ),
+        ("lubricant", case.lubricant.name, "lubricant.name"),
+        (
+            "speed range",
+            f"{case.speed.min() * 60 / (2 * math.pi):g} to "
+            f"{case.speed.max() * 60 / (2 * math.pi):g} rpm",
+            "operation.speed",
+        ),
+        ("temperature (Figs. 3-7)", f"{case.study_temperature:g} °C", "study.temperature"),
+    ]
+    blocks.append(
+        _Block(
+            "table",
+            (
+                ["quantity", "value", "status"],
+                [(q, v, "assumed: " + assumed[f] if f in assumed else "given") for q, v, f in rows],
+            ),
+        )
+    )
+    oil = case.lubricant
+    blocks.append(
+        _Block(
+            "p",
+            f"Lubricant {oil.name}: ν40 = {oil.nu40 * 1e6:g} mm²/s, "
+            f"ν100 = {oil.nu100 * 1e6:g} mm²/s, ρ15 = {oil.density15:g} kg/m³, "
+            f"α = {oil.pressure_viscosity * 1e9:g} 1/GPa; source: {oil.source}.",
+        )
+    )
+    blocks.append(_Block("h2", "Derived quantities"))
+    pre_rows = []
+    for torque, force in result.preloads.items():
+        q = float(ball_loads(s.replace(preload=force)).normal_load_1)
+        c = hertz(q, s.rx_screw, s.ry_screw, s.reduced_modulus, method="exact")
+        pre_rows.append(
+            (
+                f"{torque:g}",
+                f"{force:.0f}",
+                f"{q:.2f}",
+                f"{float(c.a) * 1e3:.3f}",
+                f"{float(c.b) * 1e3:.4f}",
+                f"{float(c.p_max) / 1e9:.3f}",
+            )
+        )
+    blocks.append(
+        _Block(
+            "p",
+            f"Lead angle {math.degrees(s.lead_angle):.2f}°, "
+            f"{s.balls_per_nut} loaded balls per half-nut. Preloads from the "
+            "catalogue drag torque formula, as in the study; Hertz values at "
+            "the ball-screw contact (exact method).",
+        )
+    )
+    blocks.append(
+        _Block(
+            "table",
+            (
+                [
+                    "drag torque [N·m]",
+                    "preload [N]",
+                    "ball load [N]",
+                    "a [mm]",
+                    "b [mm]",
+                    "p_max [GPa]",
+                ],
+                pre_rows,
+            ),
+        )
+    )
+    blocks.append(
+        _Block(
+            "p",
+            "Table 1 of the study: temperatures of Fig. 8 and the kinematic "
+            "viscosity there (ASTM D341).",
+        )
+    )
+    blocks.append(
+        _Block(
+            "table",
+            (
+                ["lubricant", "temperature [°C]", "viscosity [mm²/s]"],
+                [(n, f"{t:g}", f"{v * 1e6:.1f}") for n, t, v in result.viscosity_table],
+            ),
+        )
+    )
+    blocks.append(_Block("h2", "Figures"))
+    for fig in result.figures:
+        blocks.append(_Block("img", (fig.key, f"{fig.title}. {fig.caption}")))
+        picks = _pick_speeds(fig.series[0].speed_rpm)
+        header = ["series"] + [f"{fig.series[0].speed_rpm[i]:.0f} rpm [N·m]" for i in picks]
+        rows_t = [[se.label] + [_fmt(float(se.torque[i])) for i in picks] for se in fig.series]
+        blocks.append(_Block("table", (header, rows_t)))
+    if result.measured is not None:
+        blocks.append(_Block("h2", "Against the measured curve"))
+        blocks.append(
+            _Block(
+                "p",
+                f"Measured curve: {result.measured.source} "
+                f"({result.measured.speed.size} points); models at the "
+                "reference preload and study temperature.",
+            )
+        )
+        blocks.append(
+            _Block(
+                "table",
+                (
+                    ["model", "RMSE [N·m]", "mean |rel. error|", "max |rel. error|"],
+                    [
+                        (
+                            m,
+                            _fmt(v["rmse"]),
+                            _fmt(v["mean_relative"], 3),
+                            _fmt(v["max_relative"], 3),
+                        )
+                        for m, v in result.metrics.items()
+                    ],
+                ),
+            )
+        )
+    blocks.append(_Block("h2", "Assumptions"))
+    blocks.append(
+        _Block(
+            "ul",
+            [f"{a.field} = {a.value}: {a.reason}" for a in case.assumptions]
+            + [
+                "Kamalzadeh's measured curve is not public as numbers; the report "
+                "shows the range the study states (grey band) and overlays a "
+                "measured curve only when one is given (--measured)."
+            ],
+        )
+    )
+    blocks.append(_Block("h2", "Model parameters"))
+    blocks.append(
+        _Block(
+            "table",
+            (
+                ["model", "parameters"],
+                [
+                    (m, ", ".join(f"{k}={v}" for k, v in sorted(p.items())))
+                    for m, p in sorted(case.model_parameters.items())
+                ],
+            ),
+        )
+    )
+    blocks.append(
+        _Block(
+            "p",
+            "Every other parameter has the model's documented default; see "
+            "each model's docstring (ballscrew.friction) for its equations, "
+            "references and the readings taken where the sources are unclear.",
+        )
+    )
+    return blocks
+
+
+def _pick_speeds(speed_rpm: np.ndarray) -> list[int]:
+    targets = [speed_rpm.min(), 100.0, 1000.0, speed_rpm.max()]
+    picks: list[int] = []
+    for t in targets:
+        i = int(np.argmin(np.abs(speed_rpm - t)))
+        if i not in picks:
+            picks.append(i)
+    return picks
+
+
+def _csv(fig_series: Any) -> bytes:
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    first = fig_series[0]
+    writer.writerow(
+        ["speed [rpm]", "speed [rad/s]"] + [f"{s.label}: torque [N*m]" for s in fig_series]
+    )
+    for i in range(first.speed_rpm.size):
+        writer.writerow(
+            [repr(float(first.speed_rpm[i])), repr(float(first.speed_rpm[i] * 2 * math.pi / 60))]
+            + [repr(float(s.torque[i])) for s in fig_series]
+        )
+    return buffer.getvalue().encode("utf-8")
+
+
+def write_report(
+    result: StudyResult,
+    out: str | Path,
+    measured_text: str | None = None,
+    progress: Callable[[str], None] | None = None,
+) -> list[Path]:
+    """Write the report of ``result`` into ``out``; returns the files written."""
+    step = progress or (lambda _text: None)
+    folder = Path(out)
+    written: list[Path] = []
+    images: dict[str, bytes] = {}
+    for fig in result.figures:
+        step(f"drawing {fig.key}")
+        drawing = render(fig, result.case.measured_range, result.measured)
+        png = figure_bytes(drawing, "png")
+        images[fig.key] = png
+        for path, data in (
+            (folder / "figures" / f"{fig.key}.png", png),
+            (folder / "figures" / f"{fig.key}.svg", figure_bytes(drawing, "svg")),
+            (folder / "data" / f"{fig.key}.csv", _csv(fig.series)),
+        ):
+            atomic_write(path, data)
+            written.append(path)
+    step("writing the report")
+    blocks = _document(result)
+    title = f"Ball screw friction study: {result.case.title}"
+    for path, text in (
+        (folder / "report.md", _md(blocks)),
+        (folder / "report.html", _html(blocks, title, images)),
+    ):
+        atomic_write(path, text.encode("utf-8"))
+        written.append(path)
+    record = {
+        "package": "ballscrew",
+        "version": __version__,
+        "case_toml": result.case.text,
+        "measured_csv": measured_text,
+        "measured_source": None if result.measured is None else result.measured.source,
+    }
+    path = folder / RECORD_NAME
+    atomic_write(path, (json.dumps(record, indent=2, ensure_ascii=False) + "\n").encode("utf-8"))
+    written.append(path)
+    return written
+
+
+def load_record(path: str | Path) -> tuple[Case, MeasuredCurve | None, str | None]:
+    """Read a run record; return its case, measured curve and the measured text."""
+    file = Path(path)
+    try:
+        record = json.loads(file.read_text("utf-8"))
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
+        raise BallScrewInputError(
+            "record", str(file), f"a run record written by ballscrew ({exc})"
+        ) from None
+    if not isinstance(record, dict) or "case_toml" not in record:
+        raise BallScrewInputError("record", str(file), "a run record with a 'case_toml' entry")
+    case = parse_case(str(record["case_toml"]), source=f"{file}: case_toml")
+    text = record.get("measured_csv")
+    measured = None
+    if text is not None:
+        measured = parse_measured(
+            str(text), case.screw, source=str(record.get("measured_source") or "measured")
+        )
+    return case, measured, text
+
+
+def regenerate(record: str | Path, out: str | Path) -> list[Path]:
+    """Write the report of a run record again into ``out`` (byte-identical for one version)."""
+    case, measured, text = load_record(record)
+    return write_report(run_study(case, measured), out, text)

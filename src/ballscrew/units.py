@@ -1,0 +1,120 @@
+"""Units at the boundary: quantities typed by people ("25 mm", "2 kN") to SI floats.
+
+All conversions of the configuration files and the command line go through
+:func:`to_si`, which uses pint. Inside the package everything is SI
+(m, N, Pa, Pa·s, m²/s, rad/s, N·m) and temperatures are in °C.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+import re
+from typing import Any
+
+import pint
+
+from .errors import BallScrewInputError
+
+__all__ = ["parse_range", "registry", "to_si"]
+
+
+@functools.cache
+def registry() -> pint.UnitRegistry:  # type: ignore[type-arg]
+    """The package's pint unit registry."""
+    return pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+
+
+def to_si(field: str, value: Any, unit: str) -> float:
+    """Convert ``value`` to the SI unit ``unit`` and return the magnitude.
+
+    Parameters
+    ----------
+    field : str
+        Name of the input, for error messages.
+    value : str or number
+        A quantity with its unit ("32 mm", "1.5 kN", "45 deg", "3000 rpm",
+        "40 degC"); a bare number is taken to be in ``unit`` already.
+    unit : str
+        Target unit, in pint's notation ("m", "N", "rad", "rad/s", "degC").
+
+    Examples
+    --------
+    >>> to_si("pitch_diameter", "32 mm", "m")
+    0.032
+    >>> round(to_si("speed", "3000 rpm", "rad/s"), 4)
+    314.1593
+    >>> to_si("temperature", "313.15 K", "degC")
+    40.0
+    """
+    ureg = registry()
+    if isinstance(value, bool):
+        raise BallScrewInputError(field, value, f"a quantity in units of {unit}, e.g. '1 {unit}'")
+    try:
+        if isinstance(value, int | float):
+            magnitude = float(value)
+        else:
+            quantity: Any = ureg.Quantity(str(value).strip())
+            if quantity.unitless:  # a bare number written as text
+                magnitude = float(quantity.magnitude)
+            else:
+                magnitude = float(quantity.to(unit).magnitude)
+    except (pint.errors.PintError, ValueError, TypeError, AttributeError, AssertionError) as exc:
+        reason = (
+            "incompatible unit"
+            if isinstance(exc, pint.errors.DimensionalityError)
+            else ("not a quantity")
+        )
+        raise BallScrewInputError(
+            field, value, f"a quantity convertible to {unit} ({reason}), e.g. '1 {unit}'"
+        ) from None
+    if not math.isfinite(magnitude):
+        raise BallScrewInputError(field, value, "a finite quantity")
+    return magnitude
+
+
+_RANGE = re.compile(
+    r"^\s*(?P<lo>[-+]?[0-9.]+(?:[eE][-+]?\d+)?)\s*\.\.\s*(?P<hi>[-+]?[0-9.]+(?:[eE][-+]?\d+)?)"
+    r"\s*(?::\s*(?P<n>\d+))?\s*(?P<unit>[^:]*?)\s*(?::\s*(?P<n2>\d+))?\s*$"
+)
+
+
+def parse_range(field: str, text: str, unit: str, default_points: int = 50) -> list[float]:
+    """Parse ``"0..3000 rpm"``, ``"10..3000:31 rpm"`` or a list ``"20, 30, 45 degC"`` to SI values.
+
+    ``a..b`` gives ``default_points`` evenly spaced values (``a..b:n`` gives
+    ``n``; the count may also follow the unit); a comma-separated list gives
+    those values. The unit is written once, at the end.
+
+    Examples
+    --------
+    >>> [round(v, 3) for v in parse_range("speed", "0..60:3 rpm", "rad/s")]
+    [0.0, 3.142, 6.283]
+    >>> parse_range("temperature", "20, 30 degC", "degC")
+    [20.0, 30.0]
+    """
+    raw = str(text).strip()
+    allowed = "a value, a list 'a, b, c unit' or a range 'a..b unit' (optionally 'a..b:n unit')"
+    if not raw:
+        raise BallScrewInputError(field, text, allowed)
+    match = _RANGE.match(raw)
+    if match:
+        count = match.group("n") or match.group("n2")
+        n = int(count) if count else default_points
+        if n < 1 or n > 1_000_000:
+            raise BallScrewInputError(field, text, "between 1 and 1e6 points")
+        suffix = f" {match.group('unit')}" if match.group("unit") else ""
+        lo = to_si(field, match.group("lo") + suffix, unit)
+        hi = to_si(field, match.group("hi") + suffix, unit)
+        if n == 1:
+            return [lo]
+        return [lo + (hi - lo) * i / (n - 1) for i in range(n)]
+    if ".." in raw:
+        raise BallScrewInputError(field, text, allowed)
+    parts = [p.strip() for p in raw.split(",")]
+    if any(not p for p in parts):
+        raise BallScrewInputError(field, text, allowed)
+    last = parts[-1].split(None, 1)
+    suffix = f" {last[1]}" if len(last) == 2 else ""
+    parts[-1] = last[0]
+    return [to_si(field, p if " " in p else p + suffix, unit) for p in parts]
