@@ -1,51 +1,183 @@
-"""Tests of the command-line interface."""
+"""End-to-end tests of the command-line interface."""
 
 from __future__ import annotations
 
-import subprocess
-import sys
+import csv
+import json
+import math
+from pathlib import Path
 
-from click.testing import CliRunner
+import numpy as np
+import pytest
 
-from ballscrew import __version__
-from ballscrew.cli import cli
+from ballscrew import __version__, friction_torque
+from ballscrew.case import load_case
+from ballscrew.cli import main
 
-
-def test_demo_prints_contact_and_lubricant_summary() -> None:
-    result = CliRunner().invoke(cli, ["demo"])
-    assert result.exit_code == 0, result.output
-    for text in (
-        "Reference ball screw",
-        "Hertz contact",
-        "exact",
-        "houpert",
-        "PAO ISO VG 68",
-        "SAE 20",
-        "h_min [µm]",
-        "Λ",
-    ):
-        assert text in result.output
+DATA = Path(__file__).parent / "data"
+SMALL = DATA / "small_case.toml"
 
 
-def test_demo_bad_lubricant_exits_2_with_one_line() -> None:
-    result = CliRunner().invoke(cli, ["demo", "--lubricant", "castor oil"])
-    assert result.exit_code == 2
-    lines = [line for line in result.output.splitlines() if line.strip()]
-    assert len(lines) == 1
-    assert "lubricant" in lines[0] and "castor oil" in lines[0]
+def run(args: list[str], capsys: pytest.CaptureFixture[str]) -> tuple[int, str, str]:
+    with pytest.raises(SystemExit) as info:
+        main(args)
+    out = capsys.readouterr()
+    code = info.value.code
+    return (code if isinstance(code, int) else 0), out.out, out.err
 
 
-def test_demo_bad_temperature_exits_2() -> None:
-    result = CliRunner().invoke(cli, ["demo", "--temperature", "-400"])
-    assert result.exit_code == 2
-    assert "temperature" in result.output
+def test_version_and_help(capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, _ = run(["--version"], capsys)
+    assert code == 0 and __version__ in out
+    for command in ("study", "torque", "models", "lubricants", "demo"):
+        code, out, _ = run([command, "--help"], capsys)
+        assert code == 0 and "Example" in out, command
 
 
-def test_console_script_version() -> None:
-    out = subprocess.run(
-        [sys.executable, "-m", "ballscrew", "--version"],
-        capture_output=True,
-        text=True,
-        check=True,
+def test_models_and_lubricants(capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, _ = run(["models"], capsys)
+    assert code == 0
+    for name in ("catalog", "olaru", "viscoelastic", "harris-simplified", "harris-full"):
+        assert name in out
+    code, out, _ = run(["lubricants"], capsys)
+    assert code == 0 and "PAO ISO VG 68" in out and "SAE 20" in out
+
+
+def test_demo(capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, _ = run(["demo"], capsys)
+    assert code == 0 and "Hertz contact" in out and "h_min [µm]" in out
+
+
+def test_torque_outputs_agree_with_the_library(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    csv_file, json_file = tmp_path / "t.csv", tmp_path / "t.json"
+    code, out, _ = run(
+        [
+            "torque",
+            "--case",
+            str(SMALL),
+            "--model",
+            "olaru",
+            "--model",
+            "catalog",
+            "--speed",
+            "100, 1000 rpm",
+            "--temperature",
+            "20, 40 degC",
+            "--axial-load",
+            "0, 1 kN",
+            "--csv",
+            str(csv_file),
+            "--json",
+            str(json_file),
+        ],
+        capsys,
     )
-    assert __version__ in out.stdout
+    assert code == 0, out
+    rows = list(csv.DictReader(csv_file.read_text().splitlines()))
+    assert len(rows) == 2 * 2 * 2 * 2
+    assert set(rows[0]) >= {"speed [rpm]", "torque [N*m]", "power loss [W]", "efficiency [-]"}
+    payload = json.loads(json_file.read_text())
+    assert payload["version"] == __version__ and len(payload["rows"]) == 16
+    case = load_case(SMALL)
+    for row in rows:
+        r = friction_torque(
+            case.screw,
+            case.lubricant,
+            speed=float(row["speed [rpm]"]) * 2 * math.pi / 60,
+            temperature=float(row["temperature [degC]"]),
+            axial_load=float(row["axial load [N]"]),
+            model=row["model"],
+        )
+        assert float(row["torque [N*m]"]) == pytest.approx(float(r.total), rel=1e-12)
+
+
+def test_study_writes_a_complete_reproducible_report(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    out_dir = tmp_path / "report"
+    code, out, _ = run(["study", "--case", str(SMALL), "--out", str(out_dir)], capsys)
+    assert code == 0
+    assert "report.html" in out
+    keys = [
+        "fig3_olaru",
+        "fig4_viscoelastic",
+        "fig5_viscoelastic_preload",
+        "fig6_simplified",
+        "fig7_simplified_preload",
+        "fig8_lubricants",
+        "fig9_all_models",
+        "fig10_simplified_vs_full",
+    ]
+    for key in keys:
+        for sub, ext in (("figures", "png"), ("figures", "svg"), ("data", "csv")):
+            assert (out_dir / sub / f"{key}.{ext}").stat().st_size > 0
+    # CSV: units in the header, values equal to the library's.
+    rows = list(csv.reader((out_dir / "data" / "fig3_olaru.csv").read_text().splitlines()))
+    assert rows[0][0] == "speed [rpm]" and rows[0][2].endswith("torque [N*m]")
+    case = load_case(SMALL)
+    speeds = np.array([float(r[1]) for r in rows[1:]])
+    expected = friction_torque(
+        case.screw, case.lubricant, speed=speeds, temperature=case.study_temperature, model="olaru"
+    ).total
+    np.testing.assert_allclose([float(r[2]) for r in rows[1:]], expected, rtol=1e-14)
+    md = (out_dir / "report.md").read_text()
+    html = (out_dir / "report.html").read_text()
+    for text in ("Findings", "Assumptions", "Table 1", "assumed:"):
+        assert text in md
+    assert html.count("data:image/png;base64,") == len(keys)
+    # Regenerated from its run record, the report is byte-identical.
+    again = tmp_path / "again"
+    code, _, _ = run(["study", "--record", str(out_dir / "run.json"), "--out", str(again)], capsys)
+    assert code == 0
+    first = sorted(p.relative_to(out_dir) for p in out_dir.rglob("*") if p.is_file())
+    second = sorted(p.relative_to(again) for p in again.rglob("*") if p.is_file())
+    assert first == second
+    for rel in first:
+        assert (out_dir / rel).read_bytes() == (again / rel).read_bytes(), rel
+
+
+def test_study_with_a_measured_curve(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    # A synthetic curve written for this test only (not a measurement).
+    measured = tmp_path / "curve.csv"
+    measured.write_text("table speed [mm/s],torque [N*m]\n50,0.3\n200,0.35\n600,0.4\n")
+    out_dir = tmp_path / "r"
+    code, _, err = run(
+        ["study", "--case", str(SMALL), "--measured", str(measured), "--out", str(out_dir)], capsys
+    )
+    assert code == 0, err
+    md = (out_dir / "report.md").read_text()
+    assert "Against the measured curve" in md and "RMSE" in md
+    record = json.loads((out_dir / "run.json").read_text())
+    assert record["measured_csv"].startswith("table speed")
+
+
+@pytest.mark.parametrize(
+    ("args", "fragment"),
+    [
+        (["torque", "--case", "/no/such/case.toml"], "case"),
+        (["torque", "--case", str(SMALL), "--speed", "fast"], "--speed"),
+        (["torque", "--case", str(SMALL), "--speed", "10..20 kg"], "--speed"),
+        (["torque", "--case", str(SMALL), "--model", "coulomb"], "model"),
+        (["torque", "--frobnicate"], "frobnicate"),
+        (["study", "--record", "/no/run.json"], "record"),
+        (["demo", "--lubricant", "castor oil"], "castor oil"),
+    ],
+)
+def test_bad_input_exits_2_with_one_line(
+    args: list[str], fragment: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    code, _, err = run(args, capsys)
+    assert code == 2
+    lines = [line for line in err.splitlines() if line.strip()]
+    assert len(lines) == 1, err
+    assert fragment in lines[0] and "Traceback" not in err
+
+
+def test_bad_case_file_names_the_field(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    text = SMALL.read_text().replace('"3.969 mm"', '"3.969 kg"')
+    bad = tmp_path / "bad.toml"
+    bad.write_text(text)
+    code, _, err = run(["torque", "--case", str(bad)], capsys)
+    assert code == 2 and "screw.ball_diameter" in err and "kg" in err

@@ -137,6 +137,12 @@ def demo(lubricant_name: str, temperature: float) -> None:
     console.print(ft)
 
 
+def _stdout() -> Console:
+    """Console for tables on standard output; wide when it is not a terminal (files, pipes)."""
+    probe = Console()
+    return Console(markup=False, width=None if probe.is_terminal else 200)
+
+
 def _progress(console: Console) -> Progress:
     return Progress(
         SpinnerColumn(),
@@ -332,7 +338,7 @@ def torque(
         table.add_column(key, justify="right")
     for row in rows:
         table.add_row(*(v if isinstance(v, str) else f"{v:.5g}" for v in row.values()))
-    Console(markup=False).print(table)
+    _stdout().print(table)
     if csv_file:
         buffer = io.StringIO()
         writer = csv.DictWriter(buffer, fieldnames=list(rows[0]), lineterminator="\n")
@@ -355,12 +361,13 @@ def models_command() -> None:
     from .chain import models
 
     table = Table(title="Friction models", show_lines=True)
-    for col in ("name", "model", "reference", "validity", "parameters"):
+    table.add_column("name", no_wrap=True)
+    for col in ("model", "reference", "validity", "parameters"):
         table.add_column(col)
     for spec in models():
         params = ", ".join(f"{k}={v!r}" for k, v in spec.parameters.items())
         table.add_row(spec.name, spec.title, spec.reference, spec.validity, params)
-    Console(markup=False).print(table)
+    _stdout().print(table)
 
 
 @cli.command(name="lubricants")
@@ -394,7 +401,7 @@ def lubricants_command() -> None:
             f"{oil.limiting_shear_coefficient:g}",
             oil.source,
         )
-    Console(markup=False).print(table)
+    _stdout().print(table)
 
 
 def main(argv: list[str] | None = None) -> None:
