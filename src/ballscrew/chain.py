@@ -10,6 +10,7 @@ manner of pvlib's ``ModelChain``. A new model is one module in
 from __future__ import annotations
 
 import math
+import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
@@ -17,7 +18,8 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from .errors import BallScrewInputError, FloatArray, check_finite
+from . import validity
+from .errors import BallScrewInputError, BallScrewValidityWarning, FloatArray, check_finite
 from .friction import MODELS, ModelSpec, get_model
 from .geometry import BallScrew
 from .lubricant import Lubricant
@@ -47,6 +49,8 @@ class FrictionResult:
         The operating points, broadcast: [rad/s], [°C], [N].
     parameters : dict
         The model parameters used, defaults filled in.
+    warnings : tuple of str
+        The validity-range warnings this call raised (see :mod:`ballscrew.validity`).
     """
 
     model: str
@@ -58,6 +62,7 @@ class FrictionResult:
     temperature: FloatArray
     axial_load: FloatArray
     parameters: dict[str, Any] = field(default_factory=dict)
+    warnings: tuple[str, ...] = ()
 
 
 def models() -> list[ModelSpec]:
@@ -112,6 +117,13 @@ def friction_torque(
     FrictionResult
         ``speed``, ``temperature`` and ``axial_load`` broadcast against each other.
 
+    Warns
+    -----
+    BallScrewValidityWarning
+        Once per quantity that leaves a validity range of the model or of a
+        correlation it uses (:data:`ballscrew.validity.RANGES`); the result
+        records the messages in ``warnings``.
+
     Examples
     --------
     >>> from ballscrew import lubricants, reference_screw
@@ -151,6 +163,9 @@ def friction_torque(
     efficiency = useful / np.maximum(useful + total, np.finfo(float).tiny)
     used = dict(spec.parameters)
     used.update(parameters)
+    messages = validity.check(screw, lubricant, w, t, fa, spec.name, used)
+    for message in messages:
+        warnings.warn(message, BallScrewValidityWarning, stacklevel=2)
     return FrictionResult(
         model=spec.name,
         total=total,
@@ -161,4 +176,5 @@ def friction_torque(
         temperature=t,
         axial_load=fa,
         parameters=used,
+        warnings=tuple(messages),
     )

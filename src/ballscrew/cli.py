@@ -11,6 +11,7 @@ import io
 import json
 import math
 import sys
+import warnings
 from pathlib import Path
 
 import click
@@ -21,7 +22,7 @@ from rich.table import Table
 
 from . import __version__, lubricants
 from .contact import HERTZ_METHODS, hertz
-from .errors import BallScrewInputError
+from .errors import BallScrewInputError, BallScrewValidityWarning
 from .examples import reference_screw
 from .kinematics import rpm_to_rad_s
 from .state import operating_state
@@ -224,6 +225,8 @@ def study(
             bar.update(task2, description=text, advance=1)
 
         files = write_report(result, out_dir, measured_text, progress=tick2)
+    for message in result.validity:
+        click.echo(f"warning: {message}", err=True)
     out = Path(out_dir)
     click.echo(f"report: {out / 'report.html'} (also report.md); {len(files)} files in {out}/")
 
@@ -311,15 +314,19 @@ def torque(
         for name in model_names:
             bar.update(task, description=name)
             params = dict(case.model_parameters.get(name, {}))
-            r = friction_torque(
-                case.screw,
-                case.lubricant,
-                speed=grid_w,
-                temperature=grid_t,
-                axial_load=grid_f,
-                model=name,
-                **params,
-            )
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore", BallScrewValidityWarning)
+                r = friction_torque(
+                    case.screw,
+                    case.lubricant,
+                    speed=grid_w,
+                    temperature=grid_t,
+                    axial_load=grid_f,
+                    model=name,
+                    **params,
+                )
+            for message in r.warnings:
+                click.echo(f"warning: {name}: {message}", err=True)
             for k in range(grid_w.size):
                 rows.append(
                     {

@@ -14,6 +14,7 @@ import numpy.typing as npt
 
 __all__ = [
     "BallScrewInputError",
+    "BallScrewValidityWarning",
     "check_choice",
     "check_finite",
     "check_in_range",
@@ -42,6 +43,14 @@ class BallScrewInputError(ValueError):
         self.value = value
         self.allowed = allowed
         super().__init__(f"{field} = {_show(value)} is not allowed: {allowed}")
+
+
+class BallScrewValidityWarning(UserWarning):
+    """An input lies outside the published validity range of a model or correlation.
+
+    The result is still computed (extrapolated); the message names the
+    quantity, its value and the range. See :mod:`ballscrew.validity`.
+    """
 
 
 def _show(value: Any) -> str:

@@ -288,6 +288,10 @@ def _document(result: StudyResult) -> list[_Block]:
                 ),
             )
         )
+    blocks.append(_Block("h2", "Validity warnings"))
+    blocks.append(
+        _Block("ul", list(result.validity) or ["none: every input within the stated ranges"])
+    )
     blocks.append(_Block("h2", "Assumptions"))
     blocks.append(
         _Block(

@@ -11,8 +11,9 @@ the full Harris-type integral). Plotting and report writing live in
 from __future__ import annotations
 
 import math
+import warnings
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -20,7 +21,7 @@ import numpy as np
 from . import lubricants
 from .case import Case
 from .chain import friction_torque
-from .errors import FloatArray
+from .errors import BallScrewValidityWarning, FloatArray
 from .friction.catalog import preload_from_drag_torque
 from .measured import MeasuredCurve, error_metrics
 
@@ -65,6 +66,7 @@ class StudyResult:
     findings: tuple[str, ...]
     measured: MeasuredCurve | None
     metrics: dict[str, dict[str, float]]
+    validity: tuple[str, ...] = ()
 
 
 def _params(case: Case, model: str) -> dict[str, Any]:
@@ -72,6 +74,28 @@ def _params(case: Case, model: str) -> dict[str, Any]:
 
 
 def run_study(
+    case: Case,
+    measured: MeasuredCurve | None = None,
+    progress: Callable[[str], None] | None = None,
+) -> StudyResult:
+    """Compute all series of the study for ``case`` (see :func:`_run`).
+
+    The validity-range warnings of all the model calls are collected (each
+    message once, in order) into ``StudyResult.validity`` instead of being
+    raised.
+    """
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", BallScrewValidityWarning)
+        result = _run(case, measured, progress)
+    messages = list(
+        dict.fromkeys(
+            str(w.message) for w in caught if issubclass(w.category, BallScrewValidityWarning)
+        )
+    )
+    return replace(result, validity=tuple(messages))
+
+
+def _run(
     case: Case,
     measured: MeasuredCurve | None = None,
     progress: Callable[[str], None] | None = None,
