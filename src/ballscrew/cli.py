@@ -10,6 +10,7 @@ import csv
 import io
 import json
 import math
+import signal
 import sys
 import warnings
 from pathlib import Path
@@ -213,7 +214,7 @@ def study(
             measured = read_measured(measured_file, case.screw)
             measured_text = Path(measured_file).read_text("utf-8")
     with _progress(console) as bar:
-        task = bar.add_task("computing", total=11 + (measured is not None))
+        task = bar.add_task("computing", total=6 + (measured is not None))
 
         def tick(text: str) -> None:
             bar.update(task, description=text, advance=1)
@@ -224,7 +225,17 @@ def study(
         def tick2(text: str) -> None:
             bar.update(task2, description=text, advance=1)
 
-        files = write_report(result, out_dir, measured_text, progress=tick2)
+        files: list[Path] = []
+        expected = 3 * len(result.figures) + 3
+        try:
+            write_report(result, out_dir, measured_text, progress=tick2, written=files)
+        except KeyboardInterrupt:
+            click.echo(
+                f"interrupted: {len(files)} of {expected} files of {out_dir}/ were written "
+                "(each complete); the others were not written or keep their previous content",
+                err=True,
+            )
+            raise
     for message in result.validity:
         click.echo(f"warning: {message}", err=True)
     out = Path(out_dir)
@@ -411,12 +422,18 @@ def lubricants_command() -> None:
     _stdout().print(table)
 
 
+def _terminate(signum: int, frame: object) -> None:
+    """Treat SIGTERM like Ctrl-C: unwind, keep only complete files, exit 130."""
+    raise KeyboardInterrupt
+
+
 def main(argv: list[str] | None = None) -> None:
     """Entry point of the ``ballscrew`` command.
 
     Exit status: 0 on success, 2 on bad input (one line on stderr naming the
     field and the problem), 1 on an internal error, 130 when interrupted.
     """
+    previous = signal.signal(signal.SIGTERM, _terminate)
     try:
         status = cli.main(args=argv, prog_name="ballscrew", standalone_mode=False)
     except BallScrewInputError as exc:
@@ -427,7 +444,7 @@ def main(argv: list[str] | None = None) -> None:
         sys.exit(2)
     except (click.exceptions.Abort, KeyboardInterrupt):
         click.echo(
-            "interrupted: outputs already written are complete; the rest were not written", err=True
+            "interrupted: files already written are complete; nothing is half-written", err=True
         )
         sys.exit(130)
     except click.exceptions.ClickException as exc:
@@ -436,4 +453,6 @@ def main(argv: list[str] | None = None) -> None:
     except Exception as exc:
         click.echo(f"internal error: {type(exc).__name__}: {exc}", err=True)
         sys.exit(1)
+    finally:
+        signal.signal(signal.SIGTERM, previous)
     sys.exit(status if isinstance(status, int) else 0)

@@ -358,11 +358,16 @@ def write_report(
     out: str | Path,
     measured_text: str | None = None,
     progress: Callable[[str], None] | None = None,
+    written: list[Path] | None = None,
 ) -> list[Path]:
-    """Write the report of ``result`` into ``out``; returns the files written."""
+    """Write the report of ``result`` into ``out``; returns the files written.
+
+    ``written``, when given, is filled as the files are completed, so that a
+    caller interrupted part-way can say which files are new.
+    """
     step = progress or (lambda _text: None)
     folder = Path(out)
-    written: list[Path] = []
+    written = [] if written is None else written
     images: dict[str, bytes] = {}
     for fig in result.figures:
         step(f"drawing {fig.key}")
