@@ -183,6 +183,16 @@ class BallScrew:
                 f"lead < pi * pitch_diameter ({math.pi * self.pitch_diameter:.6g} m), "
                 "i.e. a lead angle below 45°",
             )
+        per_circuit = (
+            self.loaded_turns * math.pi * self.pitch_diameter / math.cos(self.lead_angle)
+        ) / self.ball_diameter
+        if not math.isfinite(per_circuit) or per_circuit > 1e6:
+            raise BallScrewInputError(
+                "loaded_turns",
+                self.loaded_turns,
+                f"a value giving fewer than a million balls per circuit (with ball_diameter = "
+                f"{self.ball_diameter!r} m it gives {per_circuit:.3g})",
+            )
         if self.balls_per_circuit < 1:
             raise BallScrewInputError(
                 "loaded_turns", self.loaded_turns, "enough turns to hold at least one ball"

@@ -59,7 +59,15 @@ def to_si(field: str, value: Any, unit: str) -> float:
                 magnitude = float(quantity.magnitude)
             else:
                 magnitude = float(quantity.to(unit).magnitude)
-    except (pint.errors.PintError, ValueError, TypeError, AttributeError, AssertionError) as exc:
+    except (
+        pint.errors.PintError,
+        ValueError,
+        TypeError,
+        AttributeError,
+        AssertionError,
+        ArithmeticError,
+        RecursionError,
+    ) as exc:
         reason = (
             "incompatible unit"
             if isinstance(exc, pint.errors.DimensionalityError)
