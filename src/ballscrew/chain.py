@@ -19,7 +19,13 @@ import numpy as np
 import numpy.typing as npt
 
 from . import validity
-from .errors import BallScrewInputError, BallScrewValidityWarning, FloatArray, check_finite
+from .errors import (
+    BallScrewInputError,
+    BallScrewValidityWarning,
+    FloatArray,
+    broadcast_inputs,
+    check_finite,
+)
 from .friction import MODELS, ModelSpec, get_model
 from .geometry import BallScrew
 from .lubricant import Lubricant
@@ -137,10 +143,10 @@ def friction_torque(
     chunk = spec.chunk if chunk_size is None else chunk_size
     if isinstance(chunk, bool) or not isinstance(chunk, int) or chunk < 1:
         raise BallScrewInputError("chunk_size", chunk_size, "a whole number >= 1")
-    w, t, fa = np.broadcast_arrays(
-        check_finite("speed", speed),
-        check_finite("temperature", temperature),
-        check_finite("axial_load", axial_load),
+    w, t, fa = broadcast_inputs(
+        speed=check_finite("speed", speed),
+        temperature=check_finite("temperature", temperature),
+        axial_load=check_finite("axial_load", axial_load),
     )
     shape = w.shape
     n = w.size

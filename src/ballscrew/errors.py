@@ -15,6 +15,7 @@ import numpy.typing as npt
 __all__ = [
     "BallScrewInputError",
     "BallScrewValidityWarning",
+    "broadcast_inputs",
     "check_choice",
     "check_finite",
     "check_in_range",
@@ -136,3 +137,16 @@ def check_choice(field: str, value: Any, options: tuple[str, ...] | list[str]) -
     if not isinstance(value, str) or value not in options:
         raise BallScrewInputError(field, value, f"one of {list(options)}")
     return value
+
+
+def broadcast_inputs(**arrays: Any) -> list[FloatArray]:
+    """Broadcast named arrays against each other; raise naming them if their shapes clash."""
+    try:
+        return list(np.broadcast_arrays(*arrays.values()))
+    except ValueError:
+        shapes = ", ".join(f"{k} {np.shape(v)}" for k, v in arrays.items())
+        raise BallScrewInputError(
+            ", ".join(arrays),
+            shapes,
+            "array shapes that broadcast against each other (numpy rules)",
+        ) from None

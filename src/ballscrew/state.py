@@ -30,7 +30,7 @@ import numpy.typing as npt
 
 from . import ehl
 from .contact import HertzContact, hertz
-from .errors import FloatArray, check_finite
+from .errors import FloatArray, broadcast_inputs, check_finite
 from .geometry import BallScrew
 from .kinematics import Kinematics, kinematics
 from .loads import BallLoads, ball_loads
@@ -167,10 +167,10 @@ def operating_state(
     OperatingState
         ``speed``, ``temperature`` and ``axial_load`` broadcast against each other.
     """
-    w, t, fa = np.broadcast_arrays(
-        check_finite("speed", speed),
-        check_finite("temperature", temperature),
-        check_finite("axial_load", axial_load),
+    w, t, fa = broadcast_inputs(
+        speed=check_finite("speed", speed),
+        temperature=check_finite("temperature", temperature),
+        axial_load=check_finite("axial_load", axial_load),
     )
     kin = kinematics(screw, w)
     bl = ball_loads(screw, fa)
