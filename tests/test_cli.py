@@ -181,3 +181,30 @@ def test_bad_case_file_names_the_field(tmp_path: Path, capsys: pytest.CaptureFix
     bad.write_text(text)
     code, _, err = run(["torque", "--case", str(bad)], capsys)
     assert code == 2 and "screw.ball_diameter" in err and "kg" in err
+
+
+def test_torque_rerun_gives_byte_identical_csv_and_json(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    outputs = []
+    for run_no in range(2):
+        csv_file, json_file = tmp_path / f"t{run_no}.csv", tmp_path / f"t{run_no}.json"
+        code, _, _ = run(
+            [
+                "torque",
+                "--case",
+                str(SMALL),
+                "--model",
+                "harris-full",
+                "--speed",
+                "0..3000:4 rpm",
+                "--csv",
+                str(csv_file),
+                "--json",
+                str(json_file),
+            ],
+            capsys,
+        )
+        assert code == 0
+        outputs.append((csv_file.read_bytes(), json_file.read_bytes()))
+    assert outputs[0] == outputs[1]
