@@ -13,7 +13,9 @@ import math
 import signal
 import sys
 import warnings
+from collections.abc import Callable
 from pathlib import Path
+from typing import Any, TypeVar
 
 import click
 import numpy as np
@@ -29,6 +31,8 @@ from .kinematics import rpm_to_rad_s
 from .state import operating_state
 
 __all__ = ["main"]
+
+F = TypeVar("F", bound=Callable[..., Any])
 
 
 @click.group(context_settings={"help_option_names": ["-h", "--help"]})
@@ -156,14 +160,22 @@ def _progress(console: Console) -> Progress:
     )
 
 
-@cli.command()
-@click.option(
+_case_option = click.option(
     "--case",
     "case_file",
     type=click.Path(dir_okay=False),
     default=None,
     help="Case file (TOML with units); the bundled study case when omitted.",
 )
+
+
+def _file_option(flag: str, dest: str, text: str) -> Callable[[F], F]:
+    """A ``--flag FILE`` option for an output or input file."""
+    return click.option(flag, dest, type=click.Path(dir_okay=False), default=None, help=text)
+
+
+@cli.command()
+@_case_option
 @click.option(
     "--out",
     "out_dir",
@@ -172,19 +184,13 @@ def _progress(console: Console) -> Progress:
     show_default=True,
     help="Folder for figures, CSV, report and run record.",
 )
-@click.option(
+@_file_option(
     "--measured",
     "measured_file",
-    type=click.Path(dir_okay=False),
-    default=None,
-    help="Measured torque-speed CSV (units in the header) to overlay and score.",
+    "Measured torque-speed CSV (units in the header) to overlay and score.",
 )
-@click.option(
-    "--record",
-    "record_file",
-    type=click.Path(dir_okay=False),
-    default=None,
-    help="Regenerate the report of an earlier run from its run.json.",
+@_file_option(
+    "--record", "record_file", "Regenerate the report of an earlier run from its run.json."
 )
 def study(
     case_file: str | None, out_dir: str, measured_file: str | None, record_file: str | None
@@ -243,13 +249,7 @@ def study(
 
 
 @cli.command()
-@click.option(
-    "--case",
-    "case_file",
-    type=click.Path(dir_okay=False),
-    default=None,
-    help="Case file (TOML with units); the bundled study case when omitted.",
-)
+@_case_option
 @click.option(
     "--model",
     "model_names",
@@ -266,20 +266,8 @@ def study(
 )
 @click.option("--temperature", default=None, help="Temperature(s), e.g. '20, 40 degC'.")
 @click.option("--axial-load", default=None, help="Axial load(s), e.g. '0, 2 kN'.")
-@click.option(
-    "--csv",
-    "csv_file",
-    type=click.Path(dir_okay=False),
-    default=None,
-    help="Write the table as CSV (units in the header).",
-)
-@click.option(
-    "--json",
-    "json_file",
-    type=click.Path(dir_okay=False),
-    default=None,
-    help="Write the results as JSON.",
-)
+@_file_option("--csv", "csv_file", "Write the table as CSV (units in the header).")
+@_file_option("--json", "json_file", "Write the results as JSON.")
 def torque(
     case_file: str | None,
     model_names: tuple[str, ...],
