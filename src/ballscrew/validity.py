@@ -61,14 +61,14 @@ RANGES: dict[str, ValidityRange] = {
         ValidityRange(
             "dimensionless speed U",
             1.7e-12,
-            1.7e-10,
+            1.7e-11,
             "the Hamrock-Dowson film formulas",
             "their numerical runs, as recalled in the project's research notes; unverified",
         ),
         ValidityRange(
             "dimensionless load W",
             3.7e-7,
-            1.1e-4,
+            1.1e-5,
             "the Hamrock-Dowson film formulas",
             "their numerical runs, as recalled in the project's research notes; unverified",
         ),
