@@ -63,17 +63,7 @@ def test_operating_state_is_finite_for_plausible_screws(
     temperature: float,
     axial: float,
 ) -> None:
-    screw = BallScrew(
-        pitch_diameter=dm,
-        lead=lead_ratio * dm,
-        ball_diameter=ratio * dm,
-        contact_angle=math.radians(45),
-        conformity_screw=f,
-        conformity_nut=f,
-        loaded_turns=2.5,
-        circuits=2,
-        preload=preload,
-    )
+    screw = _screw(dm, ratio, lead_ratio, f, preload)
     state = operating_state(
         screw,
         lubricants.get("mineral ISO VG 68"),

@@ -23,12 +23,11 @@ from .errors import (
     BallScrewInputError,
     BallScrewValidityWarning,
     FloatArray,
-    broadcast_inputs,
-    check_finite,
 )
 from .friction import MODELS, ModelSpec, get_model
 from .geometry import BallScrew
 from .lubricant import Lubricant
+from .state import operating_points
 
 __all__ = ["FrictionResult", "friction_torque", "models"]
 
@@ -143,11 +142,7 @@ def friction_torque(
     chunk = spec.chunk if chunk_size is None else chunk_size
     if isinstance(chunk, bool) or not isinstance(chunk, int) or chunk < 1:
         raise BallScrewInputError("chunk_size", chunk_size, "a whole number >= 1")
-    w, t, fa = broadcast_inputs(
-        speed=check_finite("speed", speed),
-        temperature=check_finite("temperature", temperature),
-        axial_load=check_finite("axial_load", axial_load),
-    )
+    w, t, fa = operating_points(speed, temperature, axial_load)
     shape = w.shape
     n = w.size
     if n <= chunk:

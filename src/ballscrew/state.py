@@ -36,7 +36,7 @@ from .kinematics import Kinematics, kinematics
 from .loads import BallLoads, ball_loads
 from .lubricant import Lubricant
 
-__all__ = ["ContactState", "OperatingState", "operating_state"]
+__all__ = ["ContactState", "OperatingState", "operating_points", "operating_state"]
 
 
 @dataclass(frozen=True)
@@ -132,6 +132,18 @@ class OperatingState:
     contacts: tuple[ContactState, ...]
 
 
+def operating_points(
+    speed: npt.ArrayLike, temperature: npt.ArrayLike, axial_load: npt.ArrayLike
+) -> tuple[FloatArray, FloatArray, FloatArray]:
+    """Validate speed [rad/s], temperature [°C] and axial load [N]; broadcast them together."""
+    w, t, fa = broadcast_inputs(
+        speed=check_finite("speed", speed),
+        temperature=check_finite("temperature", temperature),
+        axial_load=check_finite("axial_load", axial_load),
+    )
+    return w, t, fa
+
+
 def operating_state(
     screw: BallScrew,
     lubricant: Lubricant,
@@ -167,11 +179,7 @@ def operating_state(
     OperatingState
         ``speed``, ``temperature`` and ``axial_load`` broadcast against each other.
     """
-    w, t, fa = broadcast_inputs(
-        speed=check_finite("speed", speed),
-        temperature=check_finite("temperature", temperature),
-        axial_load=check_finite("axial_load", axial_load),
-    )
+    w, t, fa = operating_points(speed, temperature, axial_load)
     kin = kinematics(screw, w)
     bl = ball_loads(screw, fa)
     eta = lubricant.dynamic_viscosity(t)
