@@ -168,6 +168,10 @@ def _run(
         )
         return Series(label, model, speed_rpm, result.total, preload, t, lub.name, params)
 
+    def preload_series(model: str) -> tuple[Series, ...]:
+        """The model at each preload derived from the study's drag torques."""
+        return tuple(series(model, f, f"{f:.0f} N ({t:g} N·m drag)") for t, f in preloads.items())
+
     figures: list[Figure] = []
     ref_label = f"{ref_preload:.0f} N"
 
@@ -195,10 +199,7 @@ def _run(
             "fig5_viscoelastic_preload",
             "Viscoelastic model: preload (Fig. 5)",
             "Viscoelastic model at the preloads of the measured drag torques.",
-            tuple(
-                series("viscoelastic", f, f"{f:.0f} N ({t:g} N·m drag)")
-                for t, f in preloads.items()
-            ),
+            preload_series("viscoelastic"),
         )
     )
     step("Figs. 6 and 7: simplified model")
@@ -215,10 +216,7 @@ def _run(
             "fig7_simplified_preload",
             "Simplified model: preload (Fig. 7)",
             "Simplified model at the preloads of the measured drag torques.",
-            tuple(
-                series("harris-simplified", f, f"{f:.0f} N ({t:g} N·m drag)")
-                for t, f in preloads.items()
-            ),
+            preload_series("harris-simplified"),
         )
     )
     step("Fig. 8: lubricants and temperatures")
@@ -293,7 +291,7 @@ def _run(
             ).total
             metrics[s.model] = error_metrics(model_torque, measured.torque)
 
-    findings = _findings(case, figures, preloads, table)
+    findings = _findings(case, figures, preloads)
     return StudyResult(
         case=case,
         preloads=preloads,
@@ -313,7 +311,6 @@ def _findings(
     case: Case,
     figures: list[Figure],
     preloads: dict[float, float],
-    table: list[tuple[str, float, float]],
 ) -> list[str]:
     """Plain statements comparing the computed series with the study's findings."""
     lo, hi = (
@@ -358,5 +355,4 @@ def _findings(
                 f"simplified model's torque changes by {change:+.1f} % on average. The study "
                 "found that rising temperature lowers the friction slightly."
             )
-    del table
     return out
