@@ -287,8 +287,8 @@ def torque(
     """  # noqa: D301 - click needs the literal \b to keep the example lines
     from .case import load_case
     from .chain import friction_torque
+    from .files import atomic_write
     from .friction import get_model
-    from .report import atomic_write
     from .units import parse_range
 
     case = load_case(case_file)

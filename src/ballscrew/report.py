@@ -21,8 +21,6 @@ import html
 import io
 import json
 import math
-import os
-import tempfile
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
@@ -34,29 +32,15 @@ from . import __version__
 from .case import Case, parse_case
 from .contact import hertz
 from .errors import BallScrewInputError
+from .files import atomic_write, sweep_temporaries
 from .loads import ball_loads
 from .measured import MeasuredCurve, parse_measured
 from .plotting import figure_bytes, render
 from .study import StudyResult, run_study
 
-__all__ = ["atomic_write", "regenerate", "write_report"]
+__all__ = ["regenerate", "write_report"]
 
 RECORD_NAME = "run.json"
-
-
-def atomic_write(path: Path, data: bytes) -> None:
-    """Write ``data`` to ``path`` through a temporary file and an atomic rename."""
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    try:
-        with os.fdopen(fd, "wb") as handle:
-            handle.write(data)
-            handle.flush()
-            os.fsync(handle.fileno())
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
 
 
 # --- a tiny document model rendered to Markdown and HTML --------------------------------------
@@ -368,6 +352,8 @@ def write_report(
     step = progress or (lambda _text: None)
     folder = Path(out)
     written = [] if written is None else written
+    for sub in (folder, folder / "figures", folder / "data"):
+        sweep_temporaries(sub)  # left by an earlier run that was killed outright
     images: dict[str, bytes] = {}
     for fig in result.figures:
         step(f"drawing {fig.key}")

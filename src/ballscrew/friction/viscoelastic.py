@@ -264,15 +264,20 @@ def viscoelastic_contact(
     q, v = np.broadcast_arrays(q, v)
     q = q.astype(float)
     v = v.astype(float)
+    # An unloaded ball (a lifted-off half-nut) has no contact: solve those points for a
+    # stand-in load of 1 N and report no penetration and no friction there (below).
+    # Solving for Q = 0 itself fails: the bed's inertia makes the support negative at
+    # small penetrations, so the root would sit at an unphysical positive penetration.
+    q_solve = np.where(q > 0.0, q, 1.0)
 
     def residual(tau: FloatArray) -> FloatArray:
-        total: FloatArray = _balance(tau, v, radius, k, m, gamma, leading_edge)[0] - q
+        total: FloatArray = _balance(tau, v, radius, k, m, gamma, leading_edge)[0] - q_solve
         return total
 
     # Bracket: N(0) - Q = -Q <= 0; grow the upper end from the static solution.
     lo = np.zeros_like(q)
-    hi = np.sqrt(q / (np.pi * k * radius)) * 1.5 + 1e-300
-    f_lo = -q
+    hi = np.sqrt(q_solve / (np.pi * k * radius)) * 1.5
+    f_lo = -q_solve
     f_hi = residual(hi)
     for _ in range(200):
         low = f_hi < 0.0
@@ -298,7 +303,7 @@ def viscoelastic_contact(
         lo = np.where(right, lo, tau)
         f_lo = np.where(right, np.where(side == 1, f_lo / 2.0, f_lo), f)
         side = np.where(right, 1, -1)
-        if np.all((hi - lo) <= 1e-13 * hi + 1e-300) or np.all(np.abs(f) <= 1e-12 * (q + 1e-300)):
+        if np.all((hi - lo) <= 1e-13 * hi + 1e-300) or np.all(np.abs(f) <= 1e-12 * q_solve):
             break
     tau = np.where(q > 0.0, tau, 0.0)
     _, edge, theta0, mom = _balance(tau, v, radius, k, m, gamma, leading_edge)

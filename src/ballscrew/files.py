@@ -1,0 +1,119 @@
+"""Atomic file output, safe against Ctrl-C and SIGTERM.
+
+:func:`atomic_write` writes a file through a temporary file in the same
+folder and an atomic rename, so a reader (or an interrupted run) sees either
+the complete new file or the complete old one. Interrupting signals (SIGINT,
+SIGTERM) that arrive while a file is being written are held back until the
+file is complete, then delivered as usual: there is no moment at which a
+temporary file exists that the unwinding code does not remove.
+
+A process killed outright (SIGKILL, power loss) can still leave a temporary
+file behind; :func:`sweep_temporaries` removes those of an earlier run before
+a folder is written again.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import re
+import secrets
+import signal
+import threading
+from collections.abc import Callable, Iterator
+from pathlib import Path
+from types import FrameType
+from typing import Any
+
+__all__ = ["atomic_write", "deferred_signals", "sweep_temporaries"]
+
+_HELD = (signal.SIGINT, signal.SIGTERM)
+_TEMP_NAME = re.compile(r"^\..+\.[0-9a-f]{12}\.tmp$")
+
+
+def _temporary(path: Path) -> Path:
+    return path.parent / f".{path.name}.{secrets.token_hex(6)}.tmp"
+
+
+@contextlib.contextmanager
+def deferred_signals() -> Iterator[None]:
+    """Hold SIGINT and SIGTERM back for the duration of the block, then deliver them.
+
+    Only the main thread can change signal handlers; elsewhere the block runs
+    unprotected (Python runs signal handlers in the main thread only, so a
+    worker thread is not interrupted by them anyway).
+    """
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    received: list[tuple[int, FrameType | None]] = []
+    previous: dict[int, Any] = {}
+    holding = [True]
+
+    def hold(signum: int, frame: FrameType | None) -> None:
+        if holding[0]:
+            received.append((signum, frame))
+        else:  # restored late: behave as the handler it replaced
+            _deliver(previous.get(signum, signal.SIG_DFL), signum, frame)
+
+    try:
+        for sig in _HELD:
+            previous[int(sig)] = signal.signal(sig, hold)
+        yield
+    finally:
+        holding[0] = False
+        for number, handler in previous.items():
+            signal.signal(number, handler)
+        if received:
+            signum, frame = received[0]
+            _deliver(previous[signum], signum, frame)
+
+
+def _deliver(
+    handler: Callable[[int, FrameType | None], Any] | int | None,
+    signum: int,
+    frame: FrameType | None,
+) -> None:
+    if callable(handler):
+        handler(signum, frame)
+    elif handler == signal.SIG_DFL:
+        if signum == signal.SIGINT:
+            raise KeyboardInterrupt
+        os.kill(os.getpid(), signum)  # the default action, now that the handler is restored
+
+
+def atomic_write(path: Path, data: bytes) -> None:
+    """Write ``data`` to ``path`` through a temporary file and an atomic rename.
+
+    The file gets the permissions of any new file (the umask applies), not
+    those of a private temporary file.
+    """
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = _temporary(path)
+    with deferred_signals():
+        try:
+            with open(tmp, "xb") as handle:
+                handle.write(data)
+                handle.flush()
+                os.fsync(handle.fileno())
+            os.replace(tmp, path)
+        except BaseException:
+            tmp.unlink(missing_ok=True)
+            raise
+
+
+def sweep_temporaries(folder: Path) -> int:
+    """Remove temporary files that :func:`atomic_write` left in ``folder`` when killed.
+
+    Returns how many were removed. Only names of the form
+    ``.<name>.<12 hex digits>.tmp`` are touched.
+    """
+    removed = 0
+    if not Path(folder).is_dir():
+        return 0
+    for entry in Path(folder).iterdir():
+        if entry.is_file() and _TEMP_NAME.match(entry.name):
+            entry.unlink(missing_ok=True)
+            removed += 1
+    return removed

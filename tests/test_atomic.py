@@ -1,0 +1,78 @@
+"""Atomic writes under a storm of interrupts: never a temporary left, never a partial file."""
+
+from __future__ import annotations
+
+import os
+import random
+import signal
+import stat
+import threading
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+
+from ballscrew.files import atomic_write, deferred_signals, sweep_temporaries
+
+
+@pytest.fixture
+def sigint_raises() -> Iterator[None]:
+    """SIGINT raises KeyboardInterrupt (Python's default), whatever the runner installed."""
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)
+
+
+def test_interrupts_at_random_moments_leave_no_temporary_and_no_partial_file(
+    tmp_path: Path, sigint_raises: None
+) -> None:
+    # 400 interrupts, each at a random moment of a tight loop of writes (the race of
+    # issue 9 showed about one time in two under such a loop). Seeded: a failure repeats.
+    rng = random.Random(20261122)
+    target = tmp_path / "out.bin"
+    payloads = [bytes([i % 251]) * rng.randint(1, 200_000) for i in range(8)]
+    pid = os.getpid()
+    interrupted = 0
+    for _ in range(400):
+        timer = threading.Timer(rng.uniform(0.0, 0.004), os.kill, (pid, signal.SIGINT))
+        try:
+            timer.start()
+            while True:
+                atomic_write(target, rng.choice(payloads))
+        except KeyboardInterrupt:
+            interrupted += 1
+        timer.join()
+        assert not [p.name for p in tmp_path.iterdir() if p.name != "out.bin"]
+        if target.exists():
+            assert target.read_bytes() in payloads
+    assert interrupted == 400
+
+
+def test_a_held_signal_is_delivered_after_the_block(sigint_raises: None) -> None:
+    done = []
+    with pytest.raises(KeyboardInterrupt):
+        with deferred_signals():
+            os.kill(os.getpid(), signal.SIGINT)
+            done.append("block finished first")
+    assert done == ["block finished first"]
+
+
+def test_sweep_removes_only_our_temporaries(tmp_path: Path) -> None:
+    ours = tmp_path / ".report.md.0123456789ab.tmp"
+    theirs = [tmp_path / "notes.tmp", tmp_path / ".x.tmp", tmp_path / "report.md"]
+    for p in [ours, *theirs]:
+        p.write_text("x")
+    assert sweep_temporaries(tmp_path) == 1
+    assert not ours.exists() and all(p.exists() for p in theirs)
+
+
+def test_written_file_follows_the_umask(tmp_path: Path) -> None:
+    old = os.umask(0o022)
+    try:
+        atomic_write(tmp_path / "a.csv", b"x\n")
+    finally:
+        os.umask(old)
+    # A colleague can read it (issue 10: every file used to be 0600).
+    assert stat.S_IMODE((tmp_path / "a.csv").stat().st_mode) == 0o644
