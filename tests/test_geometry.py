@@ -84,11 +84,6 @@ def test_immutable_and_replace_revalidates() -> None:
         s.replace(colour="red")
 
 
-def test_four_point_nut_has_two_contacts_per_ball() -> None:
-    assert make(nut="single-4point").contacts_per_ball == 2
-    assert make().contacts_per_ball == 1
-
-
 def test_reduced_modulus_and_roughness() -> None:
     s = make()
     assert s.reduced_modulus == pytest.approx(2.1e11 / 0.91, rel=1e-12)

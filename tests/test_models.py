@@ -284,3 +284,20 @@ def test_olaru_options() -> None:
     assert float(fit.components["pivoting"] / still.components["pivoting"]) == pytest.approx(
         math.exp(-2.643) / 0.1, rel=1e-12
     )
+
+
+@pytest.mark.parametrize("model", ["harris-simplified", "olaru", "viscoelastic", "harris-full"])
+@pytest.mark.parametrize("axial", [0.0, 1500.0])
+def test_four_point_nut_counts_each_contact_once(model: str, axial: float) -> None:
+    # Regression (issue 8): a 4-point nut of Z balls and a double nut of Z balls per half have
+    # the same contacts: two families of Z balls, each ball pressed at Q on screw and nut. The
+    # load model lists the 4-point balls in both families already; the models used to multiply
+    # by 2 again. Per-contact losses are the same whichever nut lists them, so the torques of
+    # models with no ball-level coupling must be equal (they were exactly 2x apart).
+    double = reference_screw()
+    four = double.replace(nut="single-4point")
+    oil = lubricants.get("PAO ISO VG 68")
+    kw = {"speed": [10.0, 100.0], "temperature": 40.0, "axial_load": axial, "model": model}
+    t4 = friction_torque(four, oil, **kw).total  # type: ignore[arg-type]
+    t2 = friction_torque(double, oil, **kw).total  # type: ignore[arg-type]
+    np.testing.assert_allclose(t4, t2, rtol=1e-12)

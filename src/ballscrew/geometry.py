@@ -310,8 +310,3 @@ class BallScrew:
     def composite_roughness_nut(self) -> float:
         r"""Composite RMS roughness, ball-nut contact, :math:`\sqrt{\sigma_b^2+\sigma_n^2}` [m]."""
         return float(composite_roughness(self.roughness_ball, self.roughness_nut))
-
-    @property
-    def contacts_per_ball(self) -> int:
-        """Contacts of one ball with the screw (and with the nut): 2 for 4-point nuts, else 1."""
-        return 2 if self.nut == "single-4point" else 1

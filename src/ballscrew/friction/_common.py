@@ -54,7 +54,7 @@ def torque_from_contact_forces(
     lever = [levers[c.side] for c in state.contacts]
     total: FloatArray = np.zeros(np.shape(forces[0]))
     for contact, force, r in zip(state.contacts, forces, lever, strict=True):
-        total = total + contact.balls * screw.contacts_per_ball * force * r
+        total = total + contact.balls * force * r
     return total
 
 

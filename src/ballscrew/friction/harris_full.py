@@ -349,7 +349,7 @@ def harris_full(
             eyring_stress=eyring_stress,
             nodes=n_nodes,
         )
-        balls = contact.balls * screw.contacts_per_ball
+        balls = contact.balls  # a 4-point ball is listed in both families already
         out["asperity"] = out["asperity"] + balls * asp.reshape(shape)
         out["lubricant"] = out["lubricant"] + balls * lub.reshape(shape)
     return out

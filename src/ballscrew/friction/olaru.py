@@ -283,7 +283,7 @@ def olaru(
     for family in (1, 2):
         pair = {c.side: c for c in state.contacts if c.family == family}
         screw_c = pair["screw"]
-        balls = screw_c.balls * screw.contacts_per_ball
+        balls = screw_c.balls  # a 4-point ball is listed in both families already
         if balls == 0:
             continue
         q = screw_c.load

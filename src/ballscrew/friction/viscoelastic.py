@@ -388,5 +388,5 @@ def viscoelastic(
             edge_power=edge_power,
         )
         lever = levers["screw"] + levers["nut"]  # the two contacts of a ball are equal
-        total = total + balls * screw.contacts_per_ball * sol.friction * lever
+        total = total + balls * sol.friction * lever
     return {"viscoelastic": total}
