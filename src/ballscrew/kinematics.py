@@ -47,7 +47,13 @@ import numpy.typing as npt
 from .errors import FloatArray, check_finite
 from .geometry import BallScrew
 
-__all__ = ["Kinematics", "differential_sliding", "kinematics", "rpm_to_rad_s"]
+__all__ = [
+    "Kinematics",
+    "differential_sliding",
+    "four_point_spin",
+    "kinematics",
+    "rpm_to_rad_s",
+]
 
 
 def rpm_to_rad_s(speed_rpm: npt.ArrayLike) -> FloatArray:
@@ -187,3 +193,40 @@ def differential_sliding(screw: BallScrew, speed: npt.ArrayLike) -> tuple[FloatA
     )
     c_n = (kin.ball_speed - kin.orbital_speed * cos_a) / (2.0 * screw.deformed_radius_nut)
     return c_s, c_n
+
+
+def four_point_spin(screw: BallScrew, speed: npt.ArrayLike) -> tuple[FloatArray, FloatArray]:
+    r"""Spin at the screw and nut contacts of a ball with four-point contact [rad/s].
+
+    A ball of a 2-point nut rolls about an axis perpendicular to its contact
+    line (the assumption of :class:`Kinematics`), so its own rotation has no
+    component along the contact normal. A ball pressed against both flanks
+    of gothic-arch grooves rolls without sliding at the centres of all four
+    contacts only if its axis is parallel to the screw axis: pure rolling at
+    two contacts of one member (at :math:`+\alpha` and :math:`-\alpha`, at
+    the same distance from the screw axis) makes the ball turn about the line
+    through them. Its rotation then has the component
+    :math:`\omega_b\tan\alpha` along every contact normal, which adds to the
+    groove's spin at the screw and subtracts from it at the nut:
+
+    .. math::
+        \omega_{s,s}^{4} = \omega_b\tan\alpha + (\omega - \omega_m)\sin\alpha,\qquad
+        \omega_{s,n}^{4} = \omega_b\tan\alpha - \omega_m\sin\alpha
+
+    (magnitudes, signs as the screw speed). This extra spin is the sliding
+    that the kinematic conflict of a 4-point contact costs (the same balls
+    on 2-point contacts spin at :math:`(\omega - \omega_m)\sin\alpha` and
+    :math:`\omega_m\sin\alpha`).
+
+    Examples
+    --------
+    >>> import math
+    >>> from ballscrew import reference_screw
+    >>> s, n = four_point_spin(reference_screw(), 1.0)
+    >>> k = kinematics(reference_screw(), 1.0)
+    >>> round(float(s - k.spin_screw), 4) == round(float(n + k.spin_nut), 4)  # both ω_b tan α
+    True
+    """
+    kin = kinematics(screw, speed)
+    extra = kin.ball_speed * math.tan(screw.contact_angle)
+    return extra + kin.spin_screw, extra - kin.spin_nut

@@ -9,13 +9,14 @@ name                      module
 
 from __future__ import annotations
 
-from . import catalog, harris_full, harris_simplified, olaru, viscoelastic
+from . import catalog, complete, harris_full, harris_simplified, olaru, viscoelastic
 from ._registry import MODELS, ModelSpec, get_model, register
 
 __all__ = [
     "MODELS",
     "ModelSpec",
     "catalog",
+    "complete",
     "get_model",
     "harris_full",
     "harris_simplified",
