@@ -260,11 +260,11 @@ def mixed_friction_coefficient(
 
 
 def _disk_rule(n_radial: int, n_angle: int) -> tuple[FloatArray, FloatArray, FloatArray]:
-    """Nodes X, Y and weights over the half disk X >= 0 for integrands times sqrt(1-X²-Y²).
+    r"""Nodes X, Y and weights over the half disk X >= 0 for integrands times sqrt(1-X²-Y²).
 
-    With :math:`\\rho = \\sin\\theta`, :math:`\\sqrt{1-\\rho^2}\\,\\rho\\,d\\rho =
-    \\cos^2\\theta\\sin\\theta\\,d\\theta`, smooth on [0, π/2]: Gauss-Legendre in
-    :math:`\\theta`, midpoint in the angle (the integrand has kinks on the pure-rolling
+    With :math:`\rho = \sin\theta`, :math:`\sqrt{1-\rho^2}\,\rho\,d\rho =
+    \cos^2\theta\sin\theta\,d\theta`, smooth on [0, π/2]: Gauss-Legendre in
+    :math:`\theta`, midpoint in the angle (the integrand has kinks on the pure-rolling
     lines). The weights include the factor 2 of the mirrored half.
     """
     t, w_t = np.polynomial.legendre.leggauss(n_radial)

@@ -204,9 +204,11 @@ def complete(
     else:
         reduction = np.ones(shape)
     unit = kinematics(screw, 1.0)
-    curvature = dict(zip(("screw", "nut"), (float(c) for c in differential_sliding(screw, 1.0))))
+    c_s, c_n = differential_sliding(screw, 1.0)
+    curvature = {"screw": float(c_s), "nut": float(c_n)}
     spin = {"screw": float(unit.spin_screw), "nut": float(unit.spin_nut)}
-    spin4 = dict(zip(("screw", "nut"), (float(abs(s)) for s in four_point_spin(screw, 1.0))))
+    s4, n4 = four_point_spin(screw, 1.0)
+    spin4 = {"screw": float(abs(s4)), "nut": float(abs(n4))}
     four = screw.nut == "single-4point"
 
     parts = {k: np.zeros(shape) for k in ("rolling", "sliding", "hysteresis", "four_point")}
