@@ -16,8 +16,15 @@ ALL = sorted(m.name for m in models())
 SPEEDS = np.array([0.0, 1.0, 10.0, 100.0, 300.0])
 
 
-def test_registry_lists_the_five_models_with_references() -> None:
-    assert ALL == ["catalog", "harris-full", "harris-simplified", "olaru", "viscoelastic"]
+def test_registry_lists_the_six_models_with_references() -> None:
+    assert ALL == [
+        "catalog",
+        "complete",
+        "harris-full",
+        "harris-simplified",
+        "olaru",
+        "viscoelastic",
+    ]
     for spec in models():
         assert spec.reference and spec.validity and spec.title
         assert callable(spec.function)

@@ -180,9 +180,10 @@ def test_simplified_lubricant_newtonian_and_saturated_limits() -> None:
 
 def test_simplified_options_change_the_result_as_documented() -> None:
     s = reference_screw()
-    base = friction_torque(s, OIL, speed=100.0, temperature=40.0)
-    both = friction_torque(s, OIL, speed=100.0, temperature=40.0, sliding_sign_on_lubricant=True)
-    slide = friction_torque(s, OIL, speed=100.0, temperature=40.0, shear_velocity="sliding")
+    kw = {"speed": 100.0, "temperature": 40.0, "model": "harris-simplified"}
+    base = friction_torque(s, OIL, **kw)  # type: ignore[arg-type]
+    both = friction_torque(s, OIL, sliding_sign_on_lubricant=True, **kw)  # type: ignore[arg-type]
+    slide = friction_torque(s, OIL, shear_velocity="sliding", **kw)  # type: ignore[arg-type]
     assert float(both.components["lubricant"]) == pytest.approx(
         0.3 * float(base.components["lubricant"]), rel=1e-14
     )

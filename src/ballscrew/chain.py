@@ -76,7 +76,7 @@ def models() -> list[ModelSpec]:
     Examples
     --------
     >>> sorted(m.name for m in models())  # doctest: +NORMALIZE_WHITESPACE
-    ['catalog', 'harris-full', 'harris-simplified', 'olaru', 'viscoelastic']
+    ['catalog', 'complete', 'harris-full', 'harris-simplified', 'olaru', 'viscoelastic']
     """
     return list(MODELS.values())
 
@@ -88,7 +88,7 @@ def friction_torque(
     speed: npt.ArrayLike,
     temperature: npt.ArrayLike,
     axial_load: npt.ArrayLike = 0.0,
-    model: str = "harris-simplified",
+    model: str = "complete",
     chunk_size: int | None = None,
     **parameters: Any,
 ) -> FrictionResult:
@@ -107,9 +107,10 @@ def friction_torque(
     axial_load : array_like
         External axial load on the nut [N] (either sign).
     model : str
-        A registered model, see :func:`models`: ``"harris-simplified"``
-        (default, the study's model), ``"olaru"``, ``"viscoelastic"``,
-        ``"harris-full"``, ``"catalog"``.
+        A registered model, see :func:`models`: ``"complete"`` (default, the
+        predictive model: every loss mechanism), ``"catalog"`` (the
+        manufacturers' rule), or the study's ``"harris-simplified"``,
+        ``"olaru"``, ``"viscoelastic"`` and ``"harris-full"``.
     chunk_size : int, optional
         Operating points evaluated at once; bounds the memory of large grids.
         Default: the model's own (``ModelSpec.chunk``).

@@ -254,7 +254,7 @@ def study(
     "--model",
     "model_names",
     multiple=True,
-    default=("harris-simplified",),
+    default=("complete",),
     show_default=True,
     help="Friction model; repeat for several.",
 )
