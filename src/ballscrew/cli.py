@@ -356,6 +356,52 @@ def torque(
         atomic_write(Path(json_file), (json.dumps(payload, indent=1) + "\n").encode("utf-8"))
 
 
+@cli.command()
+@click.option(
+    "--out",
+    "out_dir",
+    type=click.Path(file_okay=False),
+    default="validation",
+    show_default=True,
+    help="Folder for validation.csv, summary.csv, the figure and report.md/.html.",
+)
+@click.option(
+    "--model", "model_names", multiple=True, help="Model to score; repeat (default: all)."
+)
+def validate(out_dir: str, model_names: tuple[str, ...]) -> None:
+    """Score every model against the bundled reference cases and trends.
+
+    The cases are catalogue drag torques over a grid of screw sizes, Jungnickel's
+    measured-loss law and the published trends, each with its source and band.
+    Prints, per model, the share of cases inside their band and the median
+    |log10(predicted/reference)|.
+
+    \b
+    Examples:
+      ballscrew validate --out scorecard
+      ballscrew validate --model complete --model catalog
+    """  # noqa: D301 - click needs the literal \b to keep the example lines
+    from .friction import MODELS, get_model
+    from .validation import score, summarise
+    from .validation_report import summary_table, write_scorecard
+
+    names = [get_model(name).name for name in model_names] or None
+    console = Console(stderr=True)
+    with _progress(console) as bar:
+        total = len(names) if names else len(MODELS)
+        task = bar.add_task("scoring", total=total)
+        rows = score(names, progress=lambda name: bar.update(task, description=name, advance=1))
+    files = write_scorecard(rows, out_dir)
+    header, table_rows = summary_table(summarise(rows))
+    table = Table(title="Validation scorecard")
+    for col in header:
+        table.add_column(col)
+    for row in table_rows:
+        table.add_row(*row)
+    _stdout().print(table)
+    click.echo(f"scorecard: {Path(out_dir) / 'report.html'} ({len(files)} files in {out_dir}/)")
+
+
 @cli.command(name="models")
 def models_command() -> None:
     """List the friction models with their references and validity ranges.

@@ -43,6 +43,8 @@ class ModelSpec:
         Published or stated validity range, in words.
     parameters : dict
         The model's own keyword parameters and their defaults.
+    purpose : str
+        What the model is for (to predict, to reproduce the study, ...).
     chunk : int
         Operating points the chain evaluates at once (bounds memory).
     """
@@ -53,6 +55,7 @@ class ModelSpec:
     reference: str
     validity: str
     parameters: dict[str, Any] = field(default_factory=dict)
+    purpose: str = ""
     chunk: int = 1 << 17
 
     def check_parameters(self, given: dict[str, Any]) -> None:
@@ -85,7 +88,13 @@ MODELS: dict[str, ModelSpec] = {}
 
 
 def register(
-    name: str, *, title: str, reference: str, validity: str, chunk: int = 1 << 17
+    name: str,
+    *,
+    title: str,
+    reference: str,
+    validity: str,
+    purpose: str = "",
+    chunk: int = 1 << 17,
 ) -> Callable[[ModelFunction], ModelFunction]:
     """Register a model function under ``name`` (decorator).
 
@@ -101,7 +110,7 @@ def register(
             for p in sig.parameters.values()
             if p.kind is inspect.Parameter.KEYWORD_ONLY
         }
-        MODELS[name] = ModelSpec(name, func, title, reference, validity, params, chunk)
+        MODELS[name] = ModelSpec(name, func, title, reference, validity, params, purpose, chunk)
         return func
 
     return deco

@@ -170,6 +170,8 @@ def catalog_efficiency(
     title="Manufacturers' catalogue formula: preload drag torque plus load torque",
     reference="THK Ball Screw General Catalog, 'Preload torque' and 'Driving torque'",
     validity="preloaded precision ball screws; speed, lubricant and temperature do not enter",
+    purpose="the manufacturers' rule: the catalogue drag torque and efficiency, a reference "
+    "for the others",
 )
 def catalog(
     screw: BallScrew,

@@ -116,6 +116,8 @@ def _sliding_per_speed(
     validity="lubricated steel ball screws with oil or grease, 2-point or 4-point contact, "
     "Hamrock-Dowson film (ellipticity 1-8); ball-train constant trained on catalogue drag "
     "torques of 12-63 mm screws",
+    purpose="to predict (the default): every loss mechanism, scored against public numbers "
+    "(ballscrew validate)",
 )
 def complete(
     screw: BallScrew,

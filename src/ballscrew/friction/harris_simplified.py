@@ -299,6 +299,7 @@ def _harmonic(tau_n: FloatArray, tau_lim: FloatArray) -> FloatArray:
     reference="J. Sušeň, A Study on the Ball Screw Friction Torque, CTU Prague, eqs. (5)-(8); "
     "T. A. Harris, M. N. Kotzalas, Advanced Concepts of Bearing Technology, CRC, 2007",
     validity="EHL/mixed lubrication, Hamrock-Dowson film (ellipticity 1-8); Roelands viscosity",
+    purpose="to reproduce the study (Sušeň's Figs. 6-8); not for prediction",
 )
 def harris_simplified(
     screw: BallScrew,

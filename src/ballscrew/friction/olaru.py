@@ -198,6 +198,7 @@ def elastic_hysteresis_moment(
     reference="D. Olaru et al., A new model to estimate friction torque in a ball screw system, "
     "Product Engineering, Springer 2005, doi:10.1007/1-4020-2933-0_20",
     validity="2-point contact; Houpert (2002) EHL rolling force fit; f_c, f_p fits for E in [0, 1]",
+    purpose="to reproduce the study (Sušeň's Fig. 3); not for prediction",
 )
 def olaru(
     screw: BallScrew,

@@ -332,6 +332,7 @@ def viscoelastic_contact(
     reference="T. Pöschel et al., Eur. Phys. J. B 10 (1999) 169, doi:10.1007/s100510050841; "
     "X. Tan et al., J. Dyn. Syst. Meas. Control 128 (2006) 891, doi:10.1115/1.2362786",
     validity="parameters per unit area from a thin elastic layer; fitted for micro-ball bearings",
+    purpose="to reproduce the study (Sušeň's Figs. 4-5); not for prediction",
 )
 def viscoelastic(
     screw: BallScrew,
