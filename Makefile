@@ -19,8 +19,8 @@ run: $(STAMP)
 	$(BIN)/ballscrew study --out study-report
 
 test: $(STAMP)
-	$(BIN)/ruff check src tests benchmarks examples
-	$(BIN)/ruff format --check src tests benchmarks examples
+	$(BIN)/ruff check src tests benchmarks examples scripts
+	$(BIN)/ruff format --check src tests benchmarks examples scripts
 	$(BIN)/mypy src
 	$(BIN)/pytest -q
 

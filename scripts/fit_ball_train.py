@@ -39,6 +39,7 @@ def parts(case: object) -> tuple[float, float]:
 
 
 def main() -> None:
+    """Run the script."""
     cases = [c for c in load_cases() if c.kind == "catalog"]
     train = [c for c in cases if c.training]
     t0, b = (np.array(v) for v in zip(*(parts(c) for c in train), strict=True))
@@ -55,8 +56,10 @@ def main() -> None:
     print(f"fitted ball-train constant c_B = {c_b:.4f}")
     print(f"per-case c_B matching each training case: median {med:.4f}, 16-84 % {lo:.4f}-{hi:.4f}")
     ratio = (t0 + c_b * b) / ref
-    print(f"training ratio predicted/catalogue: median {np.median(ratio):.3f}, "
-          f"range {ratio.min():.3f}-{ratio.max():.3f}, std of log10 {np.std(np.log10(ratio)):.3f}")
+    print(
+        f"training ratio predicted/catalogue: median {np.median(ratio):.3f}, "
+        f"range {ratio.min():.3f}-{ratio.max():.3f}, std of log10 {np.std(np.log10(ratio)):.3f}"
+    )
     for label, subset in (("training", train), ("test", [c for c in cases if not c.training])):
         t = np.array([sum(parts(c) * np.array([1.0, c_b])) for c in subset])
         inside = np.mean([(c.low <= v <= c.high) for c, v in zip(subset, t, strict=True)])

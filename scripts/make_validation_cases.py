@@ -44,6 +44,7 @@ COLUMNS = [
 
 
 def main() -> None:
+    """Run the script."""
     table = [
         row
         for row in csv.DictReader(
@@ -91,9 +92,7 @@ def main() -> None:
                 )  # fmt: skip
         fpr = round(0.05 * float(g["dynamic_load_rating_kN"]) * 1e3, 1)
         for rpm in (1000.0, 3000.0):
-            tj = float(
-                jungnickel_loss_torque(rpm * 2 * math.pi / 60, 40.0, fpr, dm * 1e-3, 68e-6)
-            )
+            tj = float(jungnickel_loss_torque(rpm * 2 * math.pi / 60, 40.0, fpr, dm * 1e-3, 68e-6))
             rows.append(
                 base
                 | {
@@ -112,7 +111,9 @@ def main() -> None:
             )
     out = io.StringIO()
     out.write("# Validation cases of ballscrew; written by scripts/make_validation_cases.py.\n")
-    out.write("# Every row names its source; reference values in N*m, bands in reference_low/high.\n")
+    out.write(
+        "# Every row names its source; reference values in N*m, bands in reference_low/high.\n"
+    )
     writer = csv.DictWriter(out, COLUMNS, lineterminator="\n")
     writer.writeheader()
     writer.writerows(rows)

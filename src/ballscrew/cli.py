@@ -411,15 +411,30 @@ def models_command() -> None:
       ballscrew models
     """  # noqa: D301 - click needs the literal \b to keep the example lines
     from .chain import models
+    from .validation import bundled_summary
 
+    scores = bundled_summary()
     table = Table(title="Friction models", show_lines=True)
     table.add_column("name", no_wrap=True)
-    for col in ("model", "reference", "validity", "parameters"):
-        table.add_column(col)
+    table.add_column("what it is for")
+    table.add_column("scorecard (ballscrew validate)")
     for spec in models():
+        s = scores.get(spec.name)
+        accuracy = (
+            f"{s['inside band']} of reference cases inside their band; "
+            f"median |log10 ratio| {s['median |log10 ratio|']}; trends met {s['trends met']}"
+            if s
+            else "not scored"
+        )
+        table.add_row(spec.name, spec.purpose, accuracy)
+    console = _stdout()
+    console.print(table)
+    for spec in models():
+        console.print(f"\n{spec.name}: {spec.title}", highlight=False)
+        console.print(f"  reference: {spec.reference}", highlight=False)
+        console.print(f"  validity: {spec.validity}", highlight=False)
         params = ", ".join(f"{k}={v!r}" for k, v in spec.parameters.items())
-        table.add_row(spec.name, spec.title, spec.reference, spec.validity, params)
-    _stdout().print(table)
+        console.print(f"  parameters: {params}", highlight=False)
 
 
 @cli.command(name="lubricants")

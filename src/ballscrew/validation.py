@@ -51,12 +51,14 @@ from .lubricants import get as get_lubricant
 __all__ = [
     "ReferenceCase",
     "ScoreRow",
+    "bundled_summary",
     "load_cases",
     "score",
     "summarise",
 ]
 
 CASES_FILE = "validation_cases.csv"
+SUMMARY_FILE = "scorecard_summary.csv"
 RPM = 2.0 * math.pi / 60.0
 
 
@@ -275,3 +277,16 @@ def summarise(rows: list[ScoreRow]) -> list[ModelScore]:
             )
         )
     return out
+
+
+def bundled_summary() -> dict[str, dict[str, str]]:
+    """The scorecard summary shipped with the package, by model (empty if absent).
+
+    Written by ``scripts/update_scorecard.py``; a test recomputes it, so it
+    cannot go stale.
+    """
+    path = resources.files("ballscrew").joinpath("data", SUMMARY_FILE)
+    if not path.is_file():
+        return {}
+    rows = csv.DictReader(io.StringIO(path.read_text("utf-8")))
+    return {row["model"]: dict(row) for row in rows}

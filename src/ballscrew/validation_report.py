@@ -28,7 +28,7 @@ from .plotting import figure_bytes
 from .report import _Block, _html, _md
 from .validation import ModelScore, ScoreRow, summarise
 
-__all__ = ["summary_table", "write_scorecard"]
+__all__ = ["summary_csv", "summary_table", "write_scorecard"]
 
 
 def _g(x: float, digits: int = 4) -> str:
@@ -71,7 +71,8 @@ def summary_table(scores: list[ModelScore]) -> tuple[list[str], list[list[str]]]
     return header, rows
 
 
-def _summary_csv(scores: list[ModelScore]) -> bytes:
+def summary_csv(scores: list[ModelScore]) -> bytes:
+    """The per-model summary as CSV bytes."""
     header, rows = summary_table(scores)
     out = io.StringIO()
     w = csv.writer(out, lineterminator="\n")
@@ -167,7 +168,7 @@ def write_scorecard(rows: list[ScoreRow], out: str | Path) -> list[Path]:
     blocks = _document(rows, scores)
     files = {
         "validation.csv": _rows_csv(rows),
-        "summary.csv": _summary_csv(scores),
+        "summary.csv": summary_csv(scores),
         "predicted_vs_reference.png": png,
         "predicted_vs_reference.svg": figure_bytes(fig, "svg"),
         "report.md": _md(blocks).encode("utf-8"),
