@@ -7,7 +7,7 @@ import warnings
 
 import numpy as np
 import pytest
-from scipy import integrate
+from scipy import integrate, special
 
 from ballscrew import friction_torque, lubricants, reference_screw
 from ballscrew import rolling_losses as rl
@@ -27,6 +27,15 @@ def test_spin_integral_reaches_johnsons_circle_and_the_thin_ellipse() -> None:
     # coordinates); the thin limit is taken at b/a = 1e-6, which itself moves I by < 1e-5.
     assert float(rl.spin_sliding_integral(0.0, 1.0)) == pytest.approx(math.pi**2 / 8, rel=1e-10)
     assert float(rl.spin_sliding_integral(0.0, 1e-6)) == pytest.approx(math.pi / 4, rel=5e-4)
+
+
+@pytest.mark.parametrize("beta", [0.05, 0.2, 0.5, 0.9])
+def test_spin_integral_matches_harris_elliptic_form(beta: float) -> None:
+    # Spin alone over an ellipse: M = 3/8 mu Q a E(e), e^2 = 1 - (b/a)^2 (Harris, Rolling
+    # Bearing Analysis, friction chapter), i.e. I = pi/4 E(e). Rule error < 2e-4 (kink of |Y|).
+    assert float(rl.spin_sliding_integral(0.0, beta)) == pytest.approx(
+        math.pi / 4 * special.ellipe(1 - beta**2), rel=3e-4
+    )
 
 
 @pytest.mark.parametrize(("kappa", "beta"), [(0.5, 0.15), (2.0, 0.12), (5.0, 0.3)])

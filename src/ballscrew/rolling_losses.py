@@ -109,8 +109,9 @@ def inlet_shear_heating_factor(
 
     References
     ----------
-    .. [1] SKF, *Rolling bearings* (general catalogue), PUB BU/P1 17000/1 EN,
-       2018, "The SKF model for calculating the frictional moment".
+    .. [1] SKF, *Rolling bearings*, catalogue 10000 EN, 2012, "Friction: the
+       SKF model for calculating the frictional moment" (inlet shear heating
+       reduction factor).
 
     Examples
     --------
@@ -148,7 +149,8 @@ def replenishment_factor(
 
     References
     ----------
-    .. [1] SKF, *Rolling bearings*, PUB BU/P1 17000/1 EN, 2018.
+    .. [1] SKF, *Rolling bearings*, catalogue 10000 EN, 2012, "Friction"
+       (kinematic replenishment/starvation reduction factor).
 
     Examples
     --------
@@ -174,7 +176,9 @@ def hysteresis_rolling_force(
     Johnson's [1]_ result for a sphere rolling on an elastic half-space whose
     material loses the fraction :math:`\alpha_h` of the elastic strain energy
     it stores (the rolling resistance coefficient :math:`3\alpha_h b/16R`,
-    after Tabor), with :math:`b` the contact semi-axis in the rolling
+    after Tabor [2]_): the pressure on the leading half of the contact, whose
+    moment about the centre is :math:`3Qb/16` for any Hertz ellipse, does
+    work :math:`3Qb/16R_x` per unit distance rolled, with :math:`b` the contact semi-axis in the rolling
     direction and :math:`R_x` the effective radius in that direction. The
     power lost is :math:`F_h u`.
 
@@ -182,6 +186,8 @@ def hysteresis_rolling_force(
     ----------
     .. [1] K. L. Johnson, *Contact Mechanics*, Cambridge University Press,
        1985, §9.2 (rolling resistance from hysteresis).
+    .. [2] D. Tabor, "The mechanism of rolling friction. II. The elastic
+       range", Proc. R. Soc. A 229 (1955) 198-220, doi:10.1098/rspa.1955.0082.
 
     Examples
     --------
@@ -219,7 +225,8 @@ def limiting_traction_coefficient(
     .. [1] S. Bair, W. O. Winer, "A rheological model for elastohydrodynamic
        contacts based on primary laboratory data", J. Lubr. Technol. 101
        (1979) 258-264, doi:10.1115/1.3453342.
-    .. [2] SKF, *Rolling bearings*, PUB BU/P1 17000/1 EN, 2018.
+    .. [2] SKF, *Rolling bearings*, catalogue 10000 EN, 2012, p. 105 (sliding
+       friction coefficient: :math:`\mu_{EHL}` 0.05 mineral, 0.04 synthetic oil).
 
     Examples
     --------
@@ -247,7 +254,7 @@ def mixed_friction_coefficient(
 
     References
     ----------
-    .. [1] SKF, *Rolling bearings*, PUB BU/P1 17000/1 EN, 2018.
+    .. [1] SKF, *Rolling bearings*, catalogue 10000 EN, 2012, p. 105.
 
     Examples
     --------
@@ -301,7 +308,9 @@ def spin_sliding_integral(curvature: npt.ArrayLike, aspect: npt.ArrayLike) -> Fl
     :math:`I = \pi^2/8` and the spin moment :math:`\tfrac{3\pi}{16}\mu Qa`
     of Lundberg and Johnson [1]_; a long thin ellipse (:math:`\beta \to 0`)
     gives :math:`I = \pi/4` and :math:`\tfrac38\mu Qa`, the end value of
-    Houpert's pivoting factor. Spin dominates the sliding of ball screw
+    Houpert's pivoting factor; in between, spin alone gives Harris's
+    :math:`\tfrac38\mu QaE(e)` with :math:`E` the complete elliptic integral
+    of the second kind of eccentricity :math:`e^2 = 1 - \beta^2`. Spin dominates the sliding of ball screw
     contacts, so the contact is taken to pivot about its centre; the uniform
     slip that zero net traction would add changes :math:`P` only to second
     order, since :math:`P` is stationary in the slip there.
