@@ -178,7 +178,8 @@ def hysteresis_rolling_force(
     it stores (the rolling resistance coefficient :math:`3\alpha_h b/16R`,
     after Tabor [2]_): the pressure on the leading half of the contact, whose
     moment about the centre is :math:`3Qb/16` for any Hertz ellipse, does
-    work :math:`3Qb/16R_x` per unit distance rolled, with :math:`b` the contact semi-axis in the rolling
+    work :math:`3Qb/16R_x` per unit distance rolled, with :math:`b` the contact
+    semi-axis in the rolling
     direction and :math:`R_x` the effective radius in that direction. The
     power lost is :math:`F_h u`.
 
@@ -310,7 +311,8 @@ def spin_sliding_integral(curvature: npt.ArrayLike, aspect: npt.ArrayLike) -> Fl
     gives :math:`I = \pi/4` and :math:`\tfrac38\mu Qa`, the end value of
     Houpert's pivoting factor; in between, spin alone gives Harris's
     :math:`\tfrac38\mu QaE(e)` with :math:`E` the complete elliptic integral
-    of the second kind of eccentricity :math:`e^2 = 1 - \beta^2`. Spin dominates the sliding of ball screw
+    of the second kind of eccentricity :math:`e^2 = 1 - \beta^2`. Spin
+    dominates the sliding of ball screw
     contacts, so the contact is taken to pivot about its centre; the uniform
     slip that zero net traction would add changes :math:`P` only to second
     order, since :math:`P` is stationary in the slip there.

@@ -117,8 +117,8 @@ def _sliding_per_speed(
     "complete",
     title="Complete loss budget: EHL rolling, mixed-film spin and Heathcote sliding, "
     "hysteresis, ball-ball sliding (the predictive model)",
-    reference="Houpert, Tribol. Trans. 45 (2002) 345; SKF Rolling bearings 10000 EN (2012) friction "
-    "model; "
+    reference="Houpert, Tribol. Trans. 45 (2002) 345; SKF Rolling bearings 10000 EN (2012) "
+    "friction model; "
     "Johnson, Contact Mechanics (1985) ch. 8-9; ball-train constant fitted once "
     "(ballscrew.validation)",
     validity="lubricated steel ball screws with oil or grease, 2-point or 4-point contact, "
