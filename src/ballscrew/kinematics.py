@@ -160,8 +160,8 @@ def differential_sliding(screw: BallScrew, speed: npt.ArrayLike) -> tuple[FloatA
 
     .. math::
         \Delta v(y) = -C\,y^2 \mp \omega_s y,\qquad
-        C_s = rac{\omega_b + (\omega-\omega_m)\coslpha}{2R_{d,s}},\quad
-        C_n = rac{\omega_b - \omega_m\coslpha}{2R_{d,n}}
+        C_s = \frac{\omega_b + (\omega-\omega_m)\cos\alpha}{2R_{d,s}},\quad
+        C_n = \frac{\omega_b - \omega_m\cos\alpha}{2R_{d,n}}
 
     where the linear term is the spin (see :class:`Kinematics`) and a uniform
     slip adds to both when the ball's speed departs from ideal rolling.
