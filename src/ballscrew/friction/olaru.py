@@ -89,6 +89,7 @@ import numpy.typing as npt
 from ..errors import BallScrewInputError, FloatArray, check_choice, check_nonnegative
 from ..geometry import BallScrew
 from ..lubricant import Lubricant
+from ..rolling_losses import rolling_force_houpert
 from ..state import operating_state
 from ._registry import register
 
@@ -97,7 +98,6 @@ __all__ = [
     "elastic_hysteresis_moment",
     "olaru",
     "pivoting_fit",
-    "rolling_force_houpert",
 ]
 
 
@@ -122,46 +122,6 @@ def pivoting_fit(e: npt.ArrayLike) -> FloatArray:
     """
     x = np.clip(np.asarray(e, dtype=float), 0.0, 1.0)
     result: FloatArray = 0.0042 + 1.1045 * x + 0.4625 * x**2 - 0.5648 * x**3
-    return result
-
-
-def rolling_force_houpert(
-    reduced_modulus: npt.ArrayLike,
-    rx: npt.ArrayLike,
-    radius_ratio: npt.ArrayLike,
-    g: npt.ArrayLike,
-    u: npt.ArrayLike,
-    w: npt.ArrayLike,
-) -> FloatArray:
-    r"""Houpert's EHL rolling (hydrodynamic) force of a point contact [N].
-
-    .. math:: F_R = 2.86\,E'R_x^2\,k^{0.348}G^{0.022}U^{0.66}W^{0.47}
-
-    Parameters
-    ----------
-    reduced_modulus : array_like
-        :math:`E'` [Pa].
-    rx : array_like
-        Effective radius in the rolling direction [m].
-    radius_ratio : array_like
-        :math:`k = R_y/R_x` [-].
-    g, u, w : array_like
-        Hamrock-Dowson materials, speed and load parameters [-].
-
-    Examples
-    --------
-    >>> round(float(rolling_force_houpert(2.3e11, 3e-3, 12.0, 4600.0, 1e-11, 1e-5)), 4)
-    0.0042
-    """
-    result: FloatArray = (
-        2.86
-        * np.asarray(reduced_modulus)
-        * np.asarray(rx) ** 2
-        * np.asarray(radius_ratio) ** 0.348
-        * np.asarray(g) ** 0.022
-        * np.asarray(u) ** 0.66
-        * np.asarray(w) ** 0.47
-    )
     return result
 
 
