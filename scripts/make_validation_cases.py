@@ -17,13 +17,19 @@ from __future__ import annotations
 import csv
 import io
 import math
+import os
 from pathlib import Path
 
 from ballscrew.files import atomic_write
 from ballscrew.friction.catalog import preload_torque
-from ballscrew.validation import jungnickel_loss_torque
+from ballscrew.lubricants import get
+from ballscrew.validation import jungnickel_loss_torque, screw_from_row
 
-ROOT = Path(__file__).resolve().parents[1] / "src" / "ballscrew" / "data"
+ROOT = Path(
+    os.environ.get(
+        "BALLSCREW_DATA", Path(__file__).resolve().parents[1] / "src" / "ballscrew" / "data"
+    )
+)
 PRELOADS = (0.02, 0.05, 0.10)
 CONFORMITY = 0.55  # typical gothic-arch and circular-arc grooves: 0.52-0.56 (not in catalogues)
 CATALOG_SOURCE = (
@@ -92,7 +98,9 @@ def main() -> None:
                 )  # fmt: skip
         fpr = round(0.05 * float(g["dynamic_load_rating_kN"]) * 1e3, 1)
         for rpm in (1000.0, 3000.0):
-            tj = float(jungnickel_loss_torque(rpm * 2 * math.pi / 60, 40.0, fpr, dm * 1e-3, 68e-6))
+            screw = screw_from_row({**base, "nut": "double", "preload_N": fpr})  # type: ignore[dict-item]
+            oil = get("mineral ISO VG 68")
+            tj = float(jungnickel_loss_torque(screw, oil, rpm * 2 * math.pi / 60, 40.0))
             rows.append(
                 base
                 | {

@@ -68,7 +68,7 @@ from ._registry import register
 
 __all__ = ["BALL_TRAIN_CONSTANT", "HYSTERESIS_LOSS_FACTOR", "complete"]
 
-BALL_TRAIN_CONSTANT: float = 0.041
+BALL_TRAIN_CONSTANT: float = 0.0468
 r"""Ball-train force over the ball load, :math:`c_B = F_B/Q` [-].
 
 Fitted once (``scripts/fit_ball_train.py``) on the training cases of
