@@ -108,7 +108,8 @@ def test_study_writes_a_complete_reproducible_report(
         "fig7_simplified_preload",
         "fig8_lubricants",
         "fig9_all_models",
-        "fig10_simplified_vs_full",
+        "fig10_simplified_vs_complete",
+        "fig11_complete_budget",
     ]
     for key in keys:
         for sub, ext in (("figures", "png"), ("figures", "svg"), ("data", "csv")):

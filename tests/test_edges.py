@@ -15,7 +15,7 @@ import ballscrew
 from ballscrew import BallScrewInputError, Lubricant, friction_torque, lubricants, reference_screw
 from ballscrew.contact import ellipticity_exact
 
-MODELS = ["catalog", "olaru", "viscoelastic", "harris-simplified", "harris-full"]
+MODELS = ["catalog", "complete", "olaru", "viscoelastic", "harris-simplified", "harris-full"]
 OIL = lubricants.get("PAO ISO VG 68")
 
 

@@ -80,8 +80,13 @@ def test_operating_state_is_finite_for_plausible_screws(
         assert 0.0 <= float(c.asperity_share) <= 1.0
 
 
-MODEL_NAMES = ["catalog", "olaru", "viscoelastic", "harris-simplified", "harris-full"]
-FLUID_PART = {"harris-simplified": "lubricant", "olaru": "rolling", "harris-full": "lubricant"}
+MODEL_NAMES = ["catalog", "complete", "olaru", "viscoelastic", "harris-simplified", "harris-full"]
+FLUID_PART = {
+    "harris-simplified": "lubricant",
+    "olaru": "rolling",
+    "harris-full": "lubricant",
+    "complete": "rolling",
+}
 
 
 def _screw(dm: float, ratio: float, lead_ratio: float, f: float, preload: float) -> BallScrew:
@@ -147,7 +152,7 @@ def test_every_model_finite_positive_monotonic_in_preload_and_energy_consistent(
     np.testing.assert_allclose(listed.total, float(r.total), rtol=1e-12)
 
 
-@pytest.mark.parametrize("model", ["harris-simplified", "olaru"])
+@pytest.mark.parametrize("model", ["harris-simplified", "olaru", "complete"])
 @settings(max_examples=PROPERTY_EXAMPLES, deadline=None)
 @given(case=operating)
 def test_fluid_part_rises_with_viscosity(model: str, case: dict[str, object]) -> None:
@@ -171,6 +176,10 @@ def test_fluid_part_rises_with_viscosity(model: str, case: dict[str, object]) ->
         "model": c["model"],
     }
     part = FLUID_PART[str(c["model"])]
+    if model == "complete":
+        # Isothermal, flooded: with SKF's shear-heating and starvation factors the rolling
+        # term has a maximum in nu*n (they fall with viscosity), so it may fall there.
+        kw["thermal_correction"] = False
     thin_r = ballscrew.friction_torque(screw, oil, **kw)  # type: ignore[arg-type]
     thick_r = ballscrew.friction_torque(screw, thicker, **kw)  # type: ignore[arg-type]
     # Non-decreasing (flat where the shear saturates at tau_lim).

@@ -47,8 +47,16 @@ def render(
                 zorder=0,
                 label=f"measured range {lo:g} to {hi:g} N·m (Kamalzadeh, via the study)",
             )
-        for s in fig.series:
-            ax.plot(s.speed_rpm, s.torque, lw=1.6, label=s.label)
+        if fig.stacked:
+            ax.stackplot(
+                fig.series[0].speed_rpm,
+                *(s.torque for s in fig.series),
+                labels=[s.label for s in fig.series],
+                alpha=0.85,
+            )
+        else:
+            for s in fig.series:
+                ax.plot(s.speed_rpm, s.torque, lw=1.6, label=s.label)
         if measured is not None:
             ax.plot(
                 measured.speed / RPM,
@@ -63,7 +71,11 @@ def render(
         if fig.log_y:
             ax.set_yscale("log")
         else:
-            top = max(float(np.max(s.torque)) for s in fig.series)
+            top = (
+                float(np.max(sum(s.torque for s in fig.series)))
+                if fig.stacked
+                else max(float(np.max(s.torque)) for s in fig.series)
+            )
             if len(measured_range) >= 2:
                 top = max(top, max(measured_range))
             ax.set_ylim(0.0, 1.1 * top if top > 0 else 1.0)

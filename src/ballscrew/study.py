@@ -4,7 +4,8 @@
 bundled :func:`ballscrew.case.load_case` reproduces the study's set-up) and
 returns every plotted series with its inputs, plus two comparisons the study
 lacks (all models with the catalogue drag torque; the simplified model against
-the full Harris-type integral). Plotting and report writing live in
+the complete model; the complete model's loss budget). The findings are
+computed from the series, and set beside what the study found. Plotting and report writing live in
 :mod:`ballscrew.plotting` and :mod:`ballscrew.report`.
 """
 
@@ -54,6 +55,7 @@ class Figure:
     caption: str
     series: tuple[Series, ...]
     log_y: bool = False
+    stacked: bool = False
 
 
 @dataclass(frozen=True)
@@ -247,7 +249,14 @@ def _run(
     step("All models and the catalogue formula")
     all_series = tuple(
         series(m, ref_preload, m)
-        for m in ("catalog", "olaru", "viscoelastic", "harris-simplified", "harris-full")
+        for m in (
+            "catalog",
+            "complete",
+            "olaru",
+            "viscoelastic",
+            "harris-simplified",
+            "harris-full",
+        )
     )
     figures.append(
         Figure(
@@ -259,8 +268,8 @@ def _run(
             log_y=True,
         )
     )
-    step("Simplified model against the full integral")
-    full_series = (
+    step("Simplified model against the complete model")
+    compare_series = (
         series("harris-simplified", ref_preload, "simplified (study's reading)"),
         series(
             "harris-simplified",
@@ -268,16 +277,36 @@ def _run(
             "simplified, sliding speed in the shear rate",
             shear_velocity="sliding",
         ),
-        series("harris-full", ref_preload, "full Harris-type integral"),
+        series("complete", ref_preload, "complete model"),
     )
     figures.append(
         Figure(
-            "fig10_simplified_vs_full",
-            "Simplified model against the full Harris-type integral",
-            "Same asperity and shear laws; the full model integrates the local sliding "
-            "(differential sliding and spin) with zero net traction on each ball.",
-            full_series,
+            "fig10_simplified_vs_complete",
+            "The study's simplified model against the complete model",
+            "The simplified model charges asperity friction and saturated lubricant shear at the "
+            "rolling speed; the complete model adds up EHL rolling resistance, spin and "
+            "Heathcote sliding, hysteresis and ball-ball sliding.",
+            compare_series,
             log_y=True,
+        )
+    )
+    step("Loss budget of the complete model")
+    params = _params(case, "complete")
+    budget = friction_torque(screw0, oil, speed=speed, temperature=temp, model="complete", **params)
+    budget_series = tuple(
+        Series(name.replace("_", "-"), "complete", speed_rpm, value, ref_preload, temp, oil.name,
+               params)
+        for name, value in budget.components.items()
+        if float(np.max(value)) > 0.0
+    )  # fmt: skip
+    figures.append(
+        Figure(
+            "fig11_complete_budget",
+            "Loss budget of the complete model",
+            f"The complete model's torque split by mechanism, stacked, at the reference preload "
+            f"({ref_label}), {oil.name} at {temp:g} °C.",
+            budget_series,
+            stacked=True,
         )
     )
 
@@ -307,35 +336,71 @@ def _span(s: Series) -> str:
     return f"{float(np.min(s.torque)):.3g} to {float(np.max(s.torque)):.3g} N·m"
 
 
+def _relation(s: Series, lo: float, hi: float) -> str:
+    """Where a series lies against the measured band, in words computed from its values."""
+    t = np.asarray(s.torque, dtype=float)
+    if not (math.isfinite(lo) and math.isfinite(hi)):
+        return "no measured band to compare with"
+    if float(np.max(t)) < lo:
+        return (
+            f"below the measured band at every speed (at most {float(np.max(t)) / lo:.2g} times "
+            "its lower end)"
+        )
+    if float(np.min(t)) > hi:
+        return (
+            f"above the measured band at every speed (at least {float(np.min(t)) / hi:.2g} times "
+            "its upper end)"
+        )
+    share = float(np.mean((t >= lo) & (t <= hi)))
+    if share == 1.0:
+        return "inside the measured band at every speed"
+    return f"inside the measured band at {share:.0%} of the speeds"
+
+
+def _distance(s: Series, lo: float, hi: float) -> float:
+    """Median |log10| distance of a series from the middle of the band (geometric mean)."""
+    t = np.maximum(np.asarray(s.torque, dtype=float), 1e-300)
+    return float(np.median(np.abs(np.log10(t / math.sqrt(lo * hi)))))
+
+
 def _findings(
     case: Case,
     figures: list[Figure],
     preloads: dict[float, float],
 ) -> list[str]:
-    """Plain statements comparing the computed series with the study's findings."""
+    """Statements computed from the series, set beside what the study found."""
     lo, hi = (
         (min(case.measured_range), max(case.measured_range))
         if case.measured_range
         else (math.nan, math.nan)
     )
     by_key = {f.key: f for f in figures}
+    models = {s.model: s for s in by_key["fig9_all_models"].series}
     out = []
-    olaru = by_key["fig3_olaru"].series[0]
-    out.append(
-        f"Olaru's model gives {_span(olaru)} over the speed range, against the measured "
-        f"{lo:g} to {hi:g} N·m. The study found it far off the measurement."
-    )
-    visco = by_key["fig4_viscoelastic"].series[0]
-    out.append(
-        f"The viscoelastic model gives {_span(visco)}; it starts from "
-        f"{float(visco.torque[0]):.3g} N·m at the lowest speed (no offset). The study found it "
-        "too low and without the 0.2 N·m offset of the measurement."
-    )
-    simple = by_key["fig6_simplified"].series[0]
-    out.append(
-        f"The simplified model gives {_span(simple)}. The study found it the closest to the "
-        "measurement but low."
-    )
+    for name in ("olaru", "viscoelastic", "harris-simplified", "complete"):
+        out.append(f"{name}: {_span(models[name])}, {_relation(models[name], lo, hi)}.")
+    if math.isfinite(lo) and math.isfinite(hi):
+        study = ("olaru", "viscoelastic", "harris-simplified")
+        closest = min(study, key=lambda m: _distance(models[m], lo, hi))
+        # The catalogue value is left out: the case's preload was derived from it.
+        overall = min(
+            (m for m in models if m != "catalog"), key=lambda m: _distance(models[m], lo, hi)
+        )
+        agree = "agrees" if closest == "harris-simplified" else "does not agree"
+        out.append(
+            f"The study found the simplified model the closest of its three to the measurement, "
+            f"but low. Of the three, {closest} is the closest here (median distance from the "
+            f"band's middle: a factor {10 ** _distance(models[closest], lo, hi):.2g}), which "
+            f"{agree} with the study; the simplified model is "
+            f"{_relation(models['harris-simplified'], lo, hi)}. Of all the physical models, "
+            f"{overall} is the closest (a factor {10 ** _distance(models[overall], lo, hi):.2g})."
+        )
+        visco = models["viscoelastic"]
+        out.append(
+            f"The study found the viscoelastic model too low and without the offset of the "
+            f"measurement; here it starts from {float(visco.torque[0]):.3g} N·m at the lowest "
+            f"speed and is {_relation(visco, lo, hi)}."
+        )
     pre = by_key["fig7_simplified_preload"].series
     ratio = float(np.mean(pre[-1].torque / pre[0].torque))
     forces = ", ".join(f"{f:.0f} N" for f in preloads.values())
@@ -350,9 +415,15 @@ def _findings(
         mine = [s for s in lub_series if s.lubricant == name]
         if len(mine) >= 2:
             change = float(np.mean(mine[-1].torque / mine[0].torque) - 1.0) * 100
+            verdict = "agrees with" if change < 0.0 else "does not agree with"
             out.append(
                 f"{name}: from {mine[0].temperature:g} to {mine[-1].temperature:g} °C the "
-                f"simplified model's torque changes by {change:+.1f} % on average. The study "
-                "found that rising temperature lowers the friction slightly."
+                f"simplified model's torque changes by {change:+.1f} % on average, which "
+                f"{verdict} the study's finding that rising temperature lowers the friction "
+                "slightly."
             )
+    budget = by_key["fig11_complete_budget"].series
+    total = sum(float(np.mean(b.torque)) for b in budget)
+    shares = ", ".join(f"{b.label} {float(np.mean(b.torque)) / total:.0%}" for b in budget)
+    out.append(f"Loss budget of the complete model, averaged over the speeds: {shares}.")
     return out

@@ -1,9 +1,18 @@
 r"""Full Harris-type friction: local sliding, local viscosity, 2-D integration.
 
-The reference for the study's simplified model (:mod:`.harris_simplified`):
-the same physics (asperity friction :math:`\mu_0 p` on the asperity share
-:math:`A_c/A_0`, non-Newtonian lubricant shear on the rest) without its
-simplifications. At a point :math:`(x, y)` of a contact ellipse (:math:`x`
+The physics of the study's simplified model (:mod:`.harris_simplified`),
+asperity friction :math:`\mu_0 p` on the asperity share :math:`A_c/A_0` and
+non-Newtonian lubricant shear on the rest, integrated over each ellipse
+without that model's simplifications. It is a research tool, not a
+prediction: it has no EHL rolling resistance and its sliding friction
+vanishes as the film grows (the full film carries almost no traction at the
+low pressures where spin is fastest), so it lies one to two orders of
+magnitude below measured drag torques and its torque falls with speed and
+rises with temperature, the reverse of measurements. To predict, use
+``"complete"`` (:mod:`.complete`), whose sliding term is this quadrature's
+centre-pivot form with a full-film traction.
+
+At a point :math:`(x, y)` of a contact ellipse (:math:`x`
 rolling, :math:`y` across the groove) the ball slides over the groove at
 
 .. math::
@@ -234,12 +243,15 @@ def full_contact_power(
 
 @register(
     "harris-full",
-    title="Full Harris-type integral: local sliding (differential + spin), local viscosity",
+    title="Full Harris-type integral of the study's asperity + shear physics (no rolling "
+    "resistance; trends reversed)",
     reference="T. A. Harris, M. N. Kotzalas, Advanced Concepts of Bearing Technology, CRC, 2007, "
     "ch. 4-5",
     validity="EHL/mixed lubrication, Hamrock-Dowson film (ellipticity 1-8); Roelands viscosity; "
     "balls in free rolling (no ball-ball forces)",
     chunk=4096,
+    purpose="research: the simplified model's physics without its simplifications; "
+    "not for prediction",
 )
 def harris_full(
     screw: BallScrew,
