@@ -422,10 +422,9 @@ def hertz_brewe_hamrock_1977(
         \mathcal{F} = 1.5277 + 0.6023\ln\alpha_r,\quad
         \alpha_r = R_{big}/R_{small}
 
-    inserted into the exact expressions of :func:`hertz_exact`. These are the
-    fits quoted in ``shared/reference/equations.md`` §3 as "Hamrock-Brewe";
-    the research for this project attributes them to Brewe and Hamrock's
-    earlier paper (1977), which the 1983 paper extended
+    inserted into the exact expressions of :func:`hertz_exact`. These fits are
+    often quoted as "Hamrock-Brewe"; they are Brewe and Hamrock's earlier
+    paper (1977), which the 1983 paper extended
     (:func:`hertz_hamrock_brewe_1983`).
 
     Parameters
@@ -500,9 +499,9 @@ def hertz_houpert_2001(
 
     Notes
     -----
-    The coefficients are those of the public code of the study's models
-    (``shared/reference/equations.md`` §3); Houpert's paper was not available
-    to check them. Error against the exact solution (module docstring): 2 %
+    The coefficients are those of the public code of the study's models (a
+    public implementation of Olaru's model); Houpert's paper was not
+    available to check them. Error against the exact solution (module docstring): 2 %
     up to a radius ratio of 10, 13 % in ``a`` at 72.
 
     Examples

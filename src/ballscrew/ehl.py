@@ -16,8 +16,9 @@ The curve fits come from 34 numerical solutions with ellipticity
 oils ([1]_, and Part II of the series for the range of :math:`k`); the
 speed, load and materials parameters of those runs spanned roughly
 :math:`U \approx 10^{-12}` to :math:`10^{-11}`, :math:`W \approx 4\cdot10^{-7}`
-to :math:`10^{-5}` and :math:`G \approx 2500` to 5000 (ranges as recalled in
-the project's research notes, not yet checked against the paper). Ball screws
+to :math:`10^{-5}` and :math:`G \approx 2500` to 5000 (approximate spans,
+not yet checked against the paper's tables; the warnings of
+:mod:`ballscrew.validity` use them). Ball screws
 at high speed reach :math:`U \approx 10^{-10}` and are extrapolated.
 Optical measurements on steel against sapphire found films on average 30 %
 thicker than the minimum-film formula predicts (Koye & Winer [3]_).
@@ -231,8 +232,8 @@ def asperity_share(
 
     The form is Zhou and Hoeprich's (1991) [2]_; the study (its eq. 6) takes
     :math:`B = 1.42` from Olaru's model but does not give :math:`C`. The
-    default :math:`C = 0.8` is the value of the public code of Olaru's model
-    (``shared/reference/equations.md`` §4); neither constant was checked
+    default :math:`C = 0.8` is the value of the public code of Olaru's model;
+    neither constant was checked
     against Zhou and Hoeprich's paper, so both are parameters.
 
     Parameters

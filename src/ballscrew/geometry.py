@@ -100,7 +100,7 @@ class BallScrew:
     roughness_ball, roughness_screw, roughness_nut : float
         RMS surface roughness [m], > 0; defaults 0.08 µm (ground balls) and
         0.3 µm (ground grooves), the values of the public code of Olaru's
-        model (``shared/reference/equations.md`` §4).
+        model.
 
     Examples
     --------

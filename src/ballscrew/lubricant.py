@@ -363,8 +363,8 @@ def pressure_viscosity_jungnickel(kinematic_viscosity: ArrayLike) -> FloatArray:
     .. math:: \alpha = 1.29\cdot10^{-7}\,\nu^{0.204}\quad(\nu\ \text{in m²/s})
 
     An empirical fit for mineral oils after Jungnickel (2010), as coded in the
-    open-source Thermca library (``shared/reference/equations.md`` §5.2; the
-    primary source was not read). Use a measured value where one exists.
+    open-source Thermca library (``thermca/lib/ball_screw.py``; the primary
+    source was not read). Use a measured value where one exists.
 
     Parameters
     ----------

