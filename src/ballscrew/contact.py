@@ -61,7 +61,6 @@ from typing import Literal
 
 import numpy as np
 import numpy.typing as npt
-from scipy import special
 
 from .errors import (
     BallScrewInputError,
@@ -167,6 +166,8 @@ def _elliptic_integrals(k: FloatArray) -> tuple[FloatArray, FloatArray]:
     (argument :math:`1 - m = 1/k^2`) to keep full precision for slender ellipses.
     """
     p = 1.0 / k**2
+    from scipy import special  # imported on first use: scipy.special is slow to import
+
     big_k: FloatArray = special.ellipkm1(p)
     big_e: FloatArray = special.ellipe(1.0 - p)
     return big_k, big_e
@@ -182,6 +183,8 @@ def _radius_ratio_of_ellipticity(k: FloatArray) -> FloatArray:
     :math:`k^2\,[3R_F/R_D - 1]`, free of the cancellation that the classical
     form suffers near the circular contact.
     """
+    from scipy import special  # imported on first use
+
     p = 1.0 / k**2
     result: FloatArray = k**2 * (
         3.0 * special.elliprf(0.0, p, 1.0) / special.elliprd(0.0, p, 1.0) - 1.0

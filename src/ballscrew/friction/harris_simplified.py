@@ -72,7 +72,6 @@ import functools
 
 import numpy as np
 import numpy.typing as npt
-from scipy import integrate
 
 from .. import rheology
 from ..errors import (
@@ -120,6 +119,8 @@ def mean_sliding_factor(q0: float = HEATHCOTE_ROLLING_LINE) -> float:
 
     def integrand(q: float) -> float:
         return abs(q * q - q0 * q0) * float(np.sqrt(1.0 - q * q)) * 2.0 / np.pi
+
+    from scipy import integrate  # imported on first use: slow to import
 
     value, _ = integrate.quad(integrand, -1.0, 1.0, points=[-q0, q0])
     return float(value)
