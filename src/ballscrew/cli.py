@@ -421,8 +421,9 @@ def models_command() -> None:
     for spec in models():
         s = scores.get(spec.name)
         accuracy = (
-            f"{s['inside band']} of reference cases inside their band; "
-            f"median |log10 ratio| {s['median |log10 ratio|']}; trends met {s['trends met']}"
+            f"reference cases inside their band: {s['inside band']}; "
+            f"median |log10(predicted/reference)|: {s['median |log10 ratio|']}; "
+            f"trends met: {s['trends met']}"
             if s
             else "not scored"
         )

@@ -62,7 +62,8 @@ def summary_table(scores: list[ModelScore]) -> tuple[list[str], list[list[str]]]
     header += [f"{k} inside" for k in kinds] + ["trends met"]
     rows = []
     for s in scores:
-        row = [s.model, f"{s.share_within:.0%} of {s.cases}", f"{s.median_abs_log10:.3f}"]
+        row = [s.model, f"{s.share_within:.0%} ({s.within} of {s.cases})",
+               f"{s.median_abs_log10:.3f}"]  # fmt: skip
         for k in kinds:
             n_in, n = s.by_kind.get(k, (0, 0))
             row.append(f"{n_in}/{n}")
