@@ -100,6 +100,11 @@ def test_limiting_traction_coefficient_is_the_mean_of_the_limiting_stress() -> N
     )
 
 
+def test_unloaded_contact_has_no_traction_coefficient() -> None:
+    # p = 0 (an unloaded contact): no area, no traction; not tau0/0.
+    assert float(rl.limiting_traction_coefficient(4e6, 0.04, 0.0)) == 0.0
+
+
 def test_mixed_coefficient_limits_keep_a_full_film_traction() -> None:
     assert float(rl.mixed_friction_coefficient(1.0, 0.1, 0.04)) == 0.1  # boundary only
     assert float(rl.mixed_friction_coefficient(0.0, 0.1, 0.04)) == 0.04  # thick film: not 0
@@ -122,6 +127,21 @@ def test_hysteresis_force_from_the_work_of_the_leading_half() -> None:
 
 
 # --- rolling resistance -------------------------------------------------------------------
+def test_houpert_force_in_dimensional_form() -> None:
+    # With U = eta u/(E' Rx), G = alpha E', W = Q/(E' Rx^2) substituted, F_R scales as
+    # Rx^0.40, E'^-0.108 and alpha^0.022 (2 - 0.66 - 2*0.47; 1 + 0.022 - 0.66 - 0.47):
+    # exponents worked out by hand from the formula's dimensionless form.
+    def force(rx: float, e: float, alpha: float) -> float:
+        eta, u, q, k = 0.05, 0.5, 200.0, 10.0
+        return float(rl.rolling_force_houpert(e, rx, k, alpha * e, eta * u / (e * rx),
+                                              q / (e * rx**2)))  # fmt: skip
+
+    base = force(2.5e-3, 2.3e11, 2e-8)
+    assert force(5e-3, 2.3e11, 2e-8) / base == pytest.approx(2.0**0.40, rel=1e-12)
+    assert force(2.5e-3, 4.6e11, 2e-8) / base == pytest.approx(2.0**-0.108, rel=1e-12)
+    assert force(2.5e-3, 2.3e11, 4e-8) / base == pytest.approx(2.0**0.022, rel=1e-12)
+
+
 def test_rolling_term_follows_houperts_exponents_without_thermal_correction() -> None:
     # F_R ~ U^0.66: speed x 10 and viscosity (temperature) change scale the isothermal rolling
     # term by exactly those powers (the contact geometry does not change with speed).
