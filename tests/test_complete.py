@@ -235,3 +235,90 @@ def test_reference_screw_trends() -> None:
     hi = friction_torque(s.replace(preload=4000.0), OIL, speed=1000 * RPM, temperature=40.0)
     exponent = math.log(float(hi.total) / float(lo.total)) / math.log(4.0)
     assert 0.5 <= exponent <= 1.1
+
+
+# --- the complete model's assembly, by energy balances computed another way -------------------
+@pytest.mark.parametrize("nut", ["double", "single-4point"])
+def test_complete_components_from_contact_powers(nut: str) -> None:
+    # Each component recomputed from the contact states: power of every contact at the
+    # entrainment speed of the kinematics (not the lever formula), sliding by harris-full's
+    # zero-traction solver with the mixed coefficient, divided by the screw speed. The solver
+    # and the centre-pivot integral agree to ~2e-4 (test above): 0.3 % tolerance there.
+    screw = reference_screw().replace(nut=nut)
+    w, temp, axial = 500 * RPM, 30.0, 800.0
+    r = friction_torque(screw, OIL, speed=w, temperature=temp, axial_load=axial,
+                        thermal_correction=False)  # fmt: skip
+    st = operating_state(screw, OIL, speed=w, temperature=temp, axial_load=axial,
+                         hertz_method="exact")  # fmt: skip
+    u = float(kinematics(screw, w).entrainment_speed)
+    c_s, c_n = differential_sliding(screw, 1.0)
+    unit = kinematics(screw, 1.0)
+    s4, n4 = four_point_spin(screw, 1.0)
+    rolling = hysteresis = sliding = extra = ball_ball = 0.0
+    for c in st.contacts:
+        q, a, b = float(c.load), float(c.hertz.a), float(c.hertz.b)
+        f_r = float(rl.rolling_force_houpert(screw.reduced_modulus, c.rx, c.ry / c.rx,
+                    c.materials_parameter, c.speed_parameter, c.load_parameter))  # fmt: skip
+        rolling += c.balls * 2 * f_r * u / w
+        hysteresis += c.balls * 3 / 16 * 0.007 * q * b / c.rx * u / w
+        p_mean = q / (math.pi * a * b)
+        share = float(c.asperity_share)
+        mu = share * 0.1 + (1 - share) * (OIL.limiting_shear_coefficient
+                                          + OIL.limiting_shear_stress / p_mean)  # fmt: skip
+        screw_side = c.side == "screw"
+        curv = float(c_s if screw_side else c_n)
+        spins = [float(unit.spin_screw if screw_side else unit.spin_nut)]
+        spins.append(abs(float(s4 if screw_side else n4)))
+        powers = []
+        for spin in spins:
+            solved, _, _ = full_contact_power(
+                a=np.atleast_1d(a), b=np.atleast_1d(b), p_max=np.atleast_1d(c.hertz.p_max),
+                asperity_share=np.ones(1), viscosity=np.full(1, 1e-3), pressure_viscosity=0.0,
+                film=np.ones(1), curvature=curv, spin=spin, screw_speed=np.atleast_1d(w),
+                tau0=0.0, gamma_l=0.0, mu0=mu, nodes=(16, 64),
+            )  # fmt: skip
+            powers.append(float(solved[0]))
+        sliding += c.balls * powers[0]
+        extra += c.balls * (powers[1] - powers[0])
+        if screw_side:
+            ball_ball += (
+                c.balls
+                * 0.1
+                * 0.0468
+                * q
+                * float(kinematics(screw, w).ball_speed)
+                * (screw.ball_diameter / w)
+            )
+    comp = {k: float(v) for k, v in r.components.items()}
+    assert comp["rolling"] == pytest.approx(rolling, rel=1e-12)
+    assert comp["hysteresis"] == pytest.approx(hysteresis, rel=1e-12)
+    assert comp["ball_ball"] == pytest.approx(ball_ball, rel=1e-12)
+    assert comp["sliding"] == pytest.approx(sliding, rel=3e-3)
+    if nut == "single-4point":
+        assert comp["four_point"] == pytest.approx(extra, rel=3e-3)
+    else:
+        assert comp["four_point"] == 0.0
+
+
+def test_thermal_and_replenishment_factors_as_mapped_for_a_screw() -> None:
+    # The rolling term with the corrections over the isothermal one equals SKF's factors at
+    # n in rpm, d_m in mm, nu in mm^2/s, with the screw mapped to an angular contact bearing
+    # of bore d_m - 1.7 D_w and outside diameter d_m + 1.7 D_w (K_rs = 3e-8 oil, 6e-8 grease).
+    s = reference_screw()
+    n, temp = 2000.0, 40.0
+    nu = float(OIL.kinematic_viscosity(temp)) * 1e6
+    dm, dw = 40.0, 6.35
+    ish = 1 / (1 + 1.84e-9 * (n * dm) ** 1.28 * nu**0.64)
+    for lubrication, k_rs in (("oil", 3e-8), ("grease", 6e-8)):
+        rs = math.exp(-k_rs * nu * n * (2 * dm) * math.sqrt(4.4 / (2 * 3.4 * dw)))
+        hot = friction_torque(s, OIL, speed=n * RPM, temperature=temp, lubrication=lubrication)
+        cold = friction_torque(s, OIL, speed=n * RPM, temperature=temp, thermal_correction=False)
+        ratio = float(hot.components["rolling"]) / float(cold.components["rolling"])
+        assert ratio == pytest.approx(ish * rs, rel=1e-12)
+
+
+def test_seal_torque_adds_a_constant() -> None:
+    s = reference_screw()
+    a = friction_torque(s, OIL, speed=[0.0, 100 * RPM], temperature=40.0)
+    b = friction_torque(s, OIL, speed=[0.0, 100 * RPM], temperature=40.0, seal_torque=0.25)
+    np.testing.assert_allclose(b.total - a.total, 0.25, rtol=1e-12)
