@@ -246,8 +246,11 @@ def test_complete_components_from_contact_powers(nut: str) -> None:
     # and the centre-pivot integral agree to ~2e-4 (test above): 0.3 % tolerance there.
     screw = reference_screw().replace(nut=nut)
     w, temp, axial = 500 * RPM, 30.0, 800.0
+    # A large tau0 (20 MPa) makes tau0 / mean pressure a tenth of the full-film coefficient,
+    # so the mean pressure (2/3 p_max) is pinned too.
+    tau0 = 2e7
     r = friction_torque(screw, OIL, speed=w, temperature=temp, axial_load=axial,
-                        thermal_correction=False)  # fmt: skip
+                        thermal_correction=False, limiting_shear_stress=tau0)  # fmt: skip
     st = operating_state(screw, OIL, speed=w, temperature=temp, axial_load=axial,
                          hertz_method="exact")  # fmt: skip
     u = float(kinematics(screw, w).entrainment_speed)
@@ -263,8 +266,7 @@ def test_complete_components_from_contact_powers(nut: str) -> None:
         hysteresis += c.balls * 3 / 16 * 0.007 * q * b / c.rx * u / w
         p_mean = q / (math.pi * a * b)
         share = float(c.asperity_share)
-        mu = share * 0.1 + (1 - share) * (OIL.limiting_shear_coefficient
-                                          + OIL.limiting_shear_stress / p_mean)  # fmt: skip
+        mu = share * 0.1 + (1 - share) * (OIL.limiting_shear_coefficient + tau0 / p_mean)
         screw_side = c.side == "screw"
         curv = float(c_s if screw_side else c_n)
         spins = [float(unit.spin_screw if screw_side else unit.spin_nut)]
@@ -322,3 +324,19 @@ def test_seal_torque_adds_a_constant() -> None:
     a = friction_torque(s, OIL, speed=[0.0, 100 * RPM], temperature=40.0)
     b = friction_torque(s, OIL, speed=[0.0, 100 * RPM], temperature=40.0, seal_torque=0.25)
     np.testing.assert_allclose(b.total - a.total, 0.25, rtol=1e-12)
+
+
+def test_grid_of_loads_equals_point_by_point_and_lift_off_is_finite() -> None:
+    # Distinct loads in one call (the spin integral is evaluated once per distinct contact)
+    # must give what each load gives alone; past lift-off (F_a > 2.83 F_pr) the relieved
+    # half-nut carries nothing and adds nothing.
+    s = reference_screw()
+    loads = np.array([0.0, 700.0, 2500.0, 6000.0, 9000.0])
+    grid = friction_torque(s, OIL, speed=300 * RPM, temperature=40.0, axial_load=loads)
+    for load, total in zip(loads, grid.total, strict=True):
+        alone = friction_torque(s, OIL, speed=300 * RPM, temperature=40.0, axial_load=load)
+        assert float(total) == pytest.approx(float(alone.total), rel=1e-12)
+    assert np.all(np.isfinite(grid.total))
+    more = friction_torque(s.replace(preload=2100.0), OIL, speed=300 * RPM, temperature=40.0,
+                           axial_load=9000.0)  # fmt: skip
+    assert float(more.total) == pytest.approx(float(grid.total[-1]), rel=1e-12)

@@ -315,7 +315,9 @@ def spin_sliding_integral(curvature: npt.ArrayLike, aspect: npt.ArrayLike) -> Fl
     dominates the sliding of ball screw
     contacts, so the contact is taken to pivot about its centre; the uniform
     slip that zero net traction would add changes :math:`P` only to second
-    order, since :math:`P` is stationary in the slip there.
+    order, since :math:`P` is stationary in the slip there. In ball screw
+    contacts (:math:`\kappa \approx 0.35`, :math:`\beta \approx 0.2`) the
+    Heathcote term adds only about 0.03 % to the spin's power.
 
     Parameters
     ----------
