@@ -49,6 +49,7 @@ __all__ = [
     "barus_1893",
     "density_linear",
     "pressure_viscosity_jungnickel",
+    "pressure_viscosity_unchecked",
     "roelands_1966",
     "vogel_constants",
     "vogel_viscosity",
@@ -299,9 +300,7 @@ def barus_1893(viscosity: ArrayLike, alpha: ArrayLike, pressure: ArrayLike) -> F
     7.3891
     """
     p = check_nonnegative("pressure", pressure, "Pa")
-    with np.errstate(over="ignore"):
-        result: FloatArray = np.asarray(viscosity) * np.exp(np.asarray(alpha) * p)
-    return result
+    return pressure_viscosity_unchecked("barus", np.asarray(viscosity, dtype=float), alpha, p)
 
 
 def roelands_1966(viscosity: ArrayLike, alpha: ArrayLike, pressure: ArrayLike) -> FloatArray:
@@ -352,9 +351,36 @@ def roelands_1966(viscosity: ArrayLike, alpha: ArrayLike, pressure: ArrayLike) -
         raise BallScrewInputError(
             "viscosity", float(np.min(eta0)), "a viscosity above 6.31e-5 Pa·s"
         )
-    z = np.asarray(alpha) * ROELANDS_PRESSURE / span
-    result: FloatArray = eta0 * np.exp(span * ((1.0 + p / ROELANDS_PRESSURE) ** z - 1.0))
-    return result
+    return pressure_viscosity_unchecked("roelands", eta0, alpha, p)
+
+
+def pressure_viscosity_unchecked(
+    model: str, viscosity: FloatArray, alpha: ArrayLike, pressure: FloatArray
+) -> FloatArray:
+    r"""Barus's or Roelands' viscosity at pressure, without input checks [Pa·s].
+
+    The one implementation of both equations (:func:`barus_1893`,
+    :func:`roelands_1966`, which check their inputs first), for the inner
+    loops of the friction models on large arrays. Roelands' form is evaluated
+    as :math:`\eta_0\exp\{(\ln\eta_0 + 9.67)\,\mathrm{expm1}[Z\ln(1 +
+    p/p_r)]\}`, which keeps its precision at small pressures.
+    """
+    eta0 = np.asarray(viscosity, dtype=float)
+    if model == "barus":
+        with np.errstate(over="ignore"):
+            result: FloatArray = eta0 * np.exp(np.asarray(alpha) * pressure)
+        return result
+    span = np.log(eta0) - ROELANDS_LN_ETA_INF
+    out: FloatArray = np.asarray(
+        np.log1p(pressure / ROELANDS_PRESSURE) * (np.asarray(alpha) * ROELANDS_PRESSURE / span),
+        dtype=float,
+    )
+    np.expm1(out, out=out)
+    out *= span
+    with np.errstate(over="ignore"):
+        np.exp(out, out=out)
+    out *= eta0
+    return out
 
 
 def pressure_viscosity_jungnickel(kinematic_viscosity: ArrayLike) -> FloatArray:

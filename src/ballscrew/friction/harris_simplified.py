@@ -83,7 +83,7 @@ from ..errors import (
 )
 from ..geometry import BallScrew
 from ..kinematics import differential_sliding
-from ..lubricant import ROELANDS_LN_ETA_INF, ROELANDS_PRESSURE, Lubricant
+from ..lubricant import Lubricant, pressure_viscosity_unchecked
 from ..state import operating_state
 from ._common import limiting_shear, torque_from_contact_forces
 from ._registry import register
@@ -164,25 +164,10 @@ def local_viscosity(
 ) -> FloatArray:
     """Viscosity at the local pressure [Pa·s], rows of ``pressure`` against ``viscosity``.
 
-    The same equations as :func:`ballscrew.lubricant.roelands_1966` and
-    :func:`ballscrew.lubricant.barus_1893`, evaluated in place on large
-    arrays without re-validating inputs the caller has checked.
+    :func:`ballscrew.lubricant.pressure_viscosity_unchecked` (the one
+    implementation of Roelands' and Barus's equations) on rows of pressures.
     """
-    eta0 = viscosity[..., None]
-    if model == "barus":
-        with np.errstate(over="ignore"):
-            out: FloatArray = eta0 * np.exp(pressure_viscosity * pressure)
-        return out
-    span = (np.log(viscosity) - ROELANDS_LN_ETA_INF)[..., None]
-    z = pressure_viscosity * ROELANDS_PRESSURE / span
-    out = np.log1p(pressure / ROELANDS_PRESSURE)
-    out *= z
-    np.expm1(out, out=out)
-    out *= span
-    with np.errstate(over="ignore"):
-        np.exp(out, out=out)
-    out *= eta0
-    return out
+    return pressure_viscosity_unchecked(model, viscosity[..., None], pressure_viscosity, pressure)
 
 
 def simplified_contact_force(
