@@ -69,6 +69,7 @@ from ..errors import BallScrewInputError, FloatArray, check_choice, check_nonneg
 from ..geometry import BallScrew
 from ..kinematics import differential_sliding, kinematics
 from ..lubricant import Lubricant
+from ..numerics import illinois
 from ..state import operating_state
 from ._common import limiting_shear
 from ._registry import register
@@ -202,38 +203,12 @@ def full_contact_power(
     # converged. The dissipated power is stationary in the slip at the
     # solution (its derivative is the net traction), so a slip good to 1e-6
     # of the bracket gives the power to about 1e-12.
-    n = a.shape[0]
     span = c_hat * a**2 + w_hat * a + 1e-300
     lo, hi = -span.copy(), span.copy()
     everything = slice(None)
-    f_lo = traction(lo, everything)
-    f_hi = traction(hi, everything)
-    side = np.zeros(n, dtype=int)
-    s_hat = np.zeros(n)
-    active: slice | npt.NDArray[np.intp] = everything
-    for _ in range(200):
-        lo_a, hi_a, flo, fhi = lo[active], hi[active], f_lo[active], f_hi[active]
-        if lo_a.size == 0:
-            break
-        denom = fhi - flo
-        guess = np.where(
-            denom > 0,
-            hi_a - fhi * (hi_a - lo_a) / np.where(denom > 0, denom, 1.0),
-            0.5 * (lo_a + hi_a),
-        )
-        guess = np.clip(guess, lo_a, hi_a)
-        f = traction(guess, active)
-        right = f > 0.0
-        sd = side[active]
-        hi[active] = np.where(right, guess, hi_a)
-        f_hi[active] = np.where(right, f, np.where(sd == -1, 0.5 * fhi, fhi))
-        lo[active] = np.where(right, lo_a, guess)
-        f_lo[active] = np.where(right, np.where(sd == 1, 0.5 * flo, flo), f)
-        side[active] = np.where(right, 1, -1)
-        s_hat[active] = guess
-        done = (f == 0.0) | (hi[active] - lo[active] <= tolerance * span[active])
-        current = np.arange(n)[active]
-        active = current[~done]
+    s_hat = illinois(
+        traction, lo, hi, traction(lo, everything), traction(hi, everything), xtol=tolerance * span
+    )
     _, speed, lub = stresses(s_hat, everything)
     area = a * b
     asperity = np.einsum("ijk,jk->i", asp_stress * speed, weight) * area

@@ -90,6 +90,7 @@ from ..geometry import BallScrew
 from ..kinematics import kinematics
 from ..loads import ball_loads
 from ..lubricant import Lubricant
+from ..numerics import Index, illinois
 from ._common import lever_arms
 from ._registry import register
 
@@ -290,21 +291,16 @@ def viscoelastic_contact(
     else:  # pragma: no cover - the support grows at least like tau**2
         raise RuntimeError("viscoelastic_contact: could not bracket the penetration")
     # Illinois regula falsi on all points at once.
-    side = np.zeros(q.shape, dtype=int)
-    tau = hi
-    for _ in range(200):
-        denom = f_hi - f_lo
-        tau = np.where(denom != 0.0, hi - f_hi * (hi - lo) / np.where(denom != 0, denom, 1.0), hi)
-        tau = np.clip(tau, lo, hi)
-        f = residual(tau)
-        right = f > 0.0
-        hi = np.where(right, tau, hi)
-        f_hi = np.where(right, f, np.where(side == -1, f_hi / 2.0, f_hi))
-        lo = np.where(right, lo, tau)
-        f_lo = np.where(right, np.where(side == 1, f_lo / 2.0, f_lo), f)
-        side = np.where(right, 1, -1)
-        if np.all((hi - lo) <= 1e-13 * hi + 1e-300) or np.all(np.abs(f) <= 1e-12 * q_solve):
-            break
+    flat_v = v.reshape(-1)
+    flat_q = q_solve.reshape(-1)
+
+    def residual_at(tau: FloatArray, index: Index) -> FloatArray:
+        total: FloatArray = (
+            _balance(tau, flat_v[index], radius, k, m, gamma, leading_edge)[0] - flat_q[index]
+        )
+        return total
+
+    tau = illinois(residual_at, lo, hi, f_lo, f_hi, xtol=1e-300, rtol=1e-13, ftol=1e-12 * q_solve)
     tau = np.where(q > 0.0, tau, 0.0)
     _, edge, theta0, mom = _balance(tau, v, radius, k, m, gamma, leading_edge)
     _, i1, i2, i3, _, ixy2 = mom
