@@ -55,6 +55,7 @@ References
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Literal
@@ -232,6 +233,19 @@ def ellipticity_exact(radius_ratio: ArrayLike) -> FloatArray:
        integrals", Numer. Algorithms 10 (1995) 13-26, doi:10.1007/BF02198293.
     """
     ratio_in = check_in_range("radius_ratio", radius_ratio, 1.0, np.inf, inclusive=(True, False))
+    if ratio_in.size == 1:  # one geometry: solved once per process (a ball screw has two)
+        single: FloatArray = np.full(ratio_in.shape, _ellipticity_one(float(ratio_in.flat[0])))
+        return single
+    return _ellipticity_solve(ratio_in)
+
+
+@functools.lru_cache(maxsize=1024)
+def _ellipticity_one(ratio: float) -> float:
+    return float(_ellipticity_solve(np.array([ratio]))[0])
+
+
+def _ellipticity_solve(ratio_in: FloatArray) -> FloatArray:
+    """The secant iteration of :func:`ellipticity_exact` on validated ratios."""
     target = np.log(np.atleast_1d(ratio_in).astype(np.float64).ravel())
     x0 = np.log(1.0339) + 0.636 * target  # ln k, Hamrock-Brewe start
     x1 = x0 + 1e-3
@@ -247,7 +261,7 @@ def ellipticity_exact(radius_ratio: ArrayLike) -> FloatArray:
         x0, f0, x1 = x1, f1, x2
     else:  # pragma: no cover - the secant converges in < 10 steps for ratios up to 1e8
         raise RuntimeError("ellipticity_exact did not converge")
-    result: FloatArray = np.maximum(np.exp(x1), 1.0).reshape(ratio_in.shape)
+    result: FloatArray = np.maximum(np.exp(x1), 1.0).reshape(np.shape(ratio_in))
     return result
 
 
