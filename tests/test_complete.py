@@ -238,14 +238,15 @@ def test_reference_screw_trends() -> None:
 
 
 # --- the complete model's assembly, by energy balances computed another way -------------------
+@pytest.mark.parametrize("rpm", [3.0, 500.0])  # mixed film (asperity share ~0.3) and full film
 @pytest.mark.parametrize("nut", ["double", "single-4point"])
-def test_complete_components_from_contact_powers(nut: str) -> None:
+def test_complete_components_from_contact_powers(nut: str, rpm: float) -> None:
     # Each component recomputed from the contact states: power of every contact at the
     # entrainment speed of the kinematics (not the lever formula), sliding by harris-full's
     # zero-traction solver with the mixed coefficient, divided by the screw speed. The solver
     # and the centre-pivot integral agree to ~2e-4 (test above): 0.3 % tolerance there.
     screw = reference_screw().replace(nut=nut)
-    w, temp, axial = 500 * RPM, 30.0, 800.0
+    w, temp, axial = rpm * RPM, 30.0, 800.0
     # A large tau0 (20 MPa) makes tau0 / mean pressure a tenth of the full-film coefficient,
     # so the mean pressure (2/3 p_max) is pinned too.
     tau0 = 2e7
@@ -340,3 +341,14 @@ def test_grid_of_loads_equals_point_by_point_and_lift_off_is_finite() -> None:
     more = friction_torque(s.replace(preload=2100.0), OIL, speed=300 * RPM, temperature=40.0,
                            axial_load=9000.0)  # fmt: skip
     assert float(more.total) == pytest.approx(float(grid.total[-1]), rel=1e-12)
+
+
+def test_lifted_off_double_nut_equals_a_single_nut_under_the_same_load() -> None:
+    # Past lift-off the relieved half-nut carries nothing: the loaded half's balls carry F_a
+    # alone, exactly as the balls of a 2-point single nut of the same size do.
+    double = reference_screw()
+    single = double.replace(nut="single", preload=0.0)
+    kw = {"speed": [3 * RPM, 1000 * RPM], "temperature": 40.0, "axial_load": 7000.0}
+    a = friction_torque(double, OIL, **kw)  # type: ignore[arg-type]
+    b = friction_torque(single, OIL, **kw)  # type: ignore[arg-type]
+    np.testing.assert_allclose(a.total, b.total, rtol=1e-12)
