@@ -289,7 +289,7 @@ def test_complete_components_from_contact_powers(nut: str, rpm: float) -> None:
         if screw_side:
             ball_ball += (
                 c.balls
-                * 0.1
+                * mu_bl
                 * 0.0468
                 * q
                 * float(kinematics(screw, w).ball_speed)
