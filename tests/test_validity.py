@@ -9,7 +9,9 @@ import pytest
 
 from ballscrew import friction_torque, lubricants, reference_screw
 from ballscrew.errors import BallScrewValidityWarning
-from ballscrew.validity import RANGES
+from ballscrew.friction import MODELS, register
+from ballscrew.friction.olaru import SPIN_PARAMETER_RANGE
+from ballscrew.validity import RANGES, ValidityIssue, ValidityRange, outside
 
 OIL = lubricants.get("PAO ISO VG 68")
 
@@ -19,7 +21,8 @@ def _messages(**kwargs: object) -> list[str]:
         warnings.simplefilter("always", BallScrewValidityWarning)
         r = friction_torque(reference_screw(), OIL, **kwargs)  # type: ignore[arg-type]
     found = [str(w.message) for w in caught if issubclass(w.category, BallScrewValidityWarning)]
-    assert found == list(r.warnings)
+    assert found == [str(issue) for issue in r.warnings]
+    assert all(issue.model == kwargs.get("model", "complete") for issue in r.warnings)
     return found
 
 
@@ -31,7 +34,7 @@ def test_inside_every_range_no_warning() -> None:
     ("kwargs", "quantity"),
     [
         ({"speed": 600.0, "model": "catalog"}, "speed factor d_m*n"),
-        ({"speed": 10.0, "temperature": -20.0, "model": "viscoelastic"}, "temperature"),
+        ({"speed": 10.0, "temperature": -20.0, "model": "complete"}, "temperature"),
         ({"speed": 10.0, "axial_load": 7000.0, "model": "catalog"}, "axial load / preload"),
         ({"speed": 10.0, "model": "harris-simplified"}, "radius ratio Ry/Rx (Houpert fits)"),
         ({"speed": 300.0, "model": "harris-full"}, "dimensionless speed U"),
@@ -45,7 +48,8 @@ def test_each_range_warns_with_quantity_value_and_range(
     args.update(kwargs)
     found = [m for m in _messages(**args) if m.startswith(quantity)]
     assert len(found) == 1, found
-    r = RANGES[next(k for k in RANGES if k.startswith(quantity))]
+    ranges = {**RANGES, SPIN_PARAMETER_RANGE.quantity: SPIN_PARAMETER_RANGE}
+    r = ranges[next(k for k in ranges if k.startswith(quantity))]
     assert f"{r.low:.4g} to {r.high:.4g}" in found[0]
     assert "=" in found[0]
 
@@ -63,3 +67,36 @@ def test_ellipticity_range_of_the_film_formulas() -> None:
         warnings.simplefilter("always", BallScrewValidityWarning)
         friction_torque(tight, OIL, speed=10.0, temperature=40.0, model="harris-full")
     assert any("ellipticity k (Hamrock-Dowson)" in str(w.message) for w in caught)
+
+
+def test_a_toy_model_is_one_function_and_one_registration_with_its_own_range() -> None:
+    # A new model: one function, one @register line with its own validity check; nothing
+    # else is edited. It is then reachable through friction_torque and warns on its range.
+    toy_range = ValidityRange("toy speed [rad/s]", 0.0, 50.0, "the toy model", "by decree")
+
+    def toy_check(screw, lubricant, speed, temperature, axial_load, params):  # type: ignore[no-untyped-def]
+        return outside(toy_range, [float(np.max(np.abs(speed)))])
+
+    @register("toy", title="toy", reference="none", validity="speeds to 50 rad/s",
+              purpose="testing", checks=(toy_check,))  # fmt: skip
+    def toy(screw, lubricant, speed, temperature, axial_load, *, c=0.01):  # type: ignore[no-untyped-def]
+        return {"viscous": c * np.abs(speed)}
+
+    try:
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always", BallScrewValidityWarning)
+            r = friction_torque(reference_screw(), OIL, speed=[10.0, 80.0], temperature=40.0,
+                                model="toy", c=0.02)  # fmt: skip
+        np.testing.assert_allclose(r.total, [0.2, 1.6])
+        (issue,) = [w.message.issue for w in caught if w.category is BallScrewValidityWarning]
+        assert isinstance(issue, ValidityIssue)
+        assert (issue.quantity, issue.value, issue.model) == ("toy speed [rad/s]", 80.0, "toy")
+    finally:
+        MODELS.pop("toy")
+
+
+def test_models_that_ignore_the_oil_do_not_warn_about_its_temperature() -> None:
+    # The viscoelastic model and the catalogue formula take no lubricant data.
+    for model in ("viscoelastic", "catalog"):
+        assert not [m for m in _messages(speed=10.0, temperature=-20.0, model=model)
+                    if m.startswith("temperature")]  # fmt: skip

@@ -54,8 +54,10 @@ class FrictionResult:
         The operating points, broadcast: [rad/s], [°C], [N].
     parameters : dict
         The model parameters used, defaults filled in.
-    warnings : tuple of str
-        The validity-range warnings this call raised (see :mod:`ballscrew.validity`).
+    warnings : tuple of ValidityIssue
+        The validity-range issues this call warned about (quantity, value,
+        range, source, model; ``str()`` gives the message; see
+        :mod:`ballscrew.validity`).
     """
 
     model: str
@@ -67,7 +69,7 @@ class FrictionResult:
     temperature: FloatArray
     axial_load: FloatArray
     parameters: dict[str, Any] = field(default_factory=dict)
-    warnings: tuple[str, ...] = ()
+    warnings: tuple[validity.ValidityIssue, ...] = ()
 
 
 def models() -> list[ModelSpec]:
@@ -165,9 +167,9 @@ def friction_torque(
     efficiency = useful / np.maximum(useful + total, np.finfo(float).tiny)
     used = dict(spec.parameters)
     used.update(parameters)
-    messages = validity.check(screw, lubricant, w, t, fa, spec.name, used)
-    for message in messages:
-        warnings.warn(message, BallScrewValidityWarning, stacklevel=2)
+    issues = validity.check(screw, lubricant, w, t, fa, spec.name, used, spec.checks)
+    for issue in issues:
+        warnings.warn(BallScrewValidityWarning(issue), stacklevel=2)
     return FrictionResult(
         model=spec.name,
         total=total,
@@ -178,5 +180,5 @@ def friction_torque(
         temperature=t,
         axial_load=fa,
         parameters=used,
-        warnings=tuple(messages),
+        warnings=tuple(issues),
     )

@@ -50,8 +50,13 @@ class BallScrewValidityWarning(UserWarning):
     """An input lies outside the published validity range of a model or correlation.
 
     The result is still computed (extrapolated); the message names the
-    quantity, its value and the range. See :mod:`ballscrew.validity`.
+    quantity, its value and the range, and ``issue`` holds them as a
+    :class:`ballscrew.validity.ValidityIssue`. See :mod:`ballscrew.validity`.
     """
+
+    def __init__(self, issue: Any) -> None:
+        super().__init__(str(issue))
+        self.issue = issue
 
 
 def _show(value: Any) -> str:

@@ -25,7 +25,7 @@ from .chain import friction_torque
 from .errors import BallScrewValidityWarning, FloatArray
 from .friction.catalog import preload_from_drag_torque
 from .measured import MeasuredCurve, error_metrics
-from .validity import RANGES
+from .validity import ValidityIssue
 
 __all__ = ["Figure", "Series", "StudyResult", "run_study"]
 
@@ -90,29 +90,15 @@ def run_study(
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", BallScrewValidityWarning)
         result = _run(case, measured, progress)
-    worst: dict[str, tuple[float, str]] = {}
+    worst: dict[str, ValidityIssue] = {}
     for w in caught:
-        if not issubclass(w.category, BallScrewValidityWarning):
+        issue = getattr(w.message, "issue", None)
+        if not isinstance(issue, ValidityIssue):
             continue
-        text = str(w.message)
-        quantity, _, rest = text.partition(" = ")
-        excess = _excess(quantity, rest.split(" ", 1)[0])
-        if quantity not in worst or excess > worst[quantity][0]:
-            worst[quantity] = (excess, text)
+        if issue.quantity not in worst or issue.excess > worst[issue.quantity].excess:
+            worst[issue.quantity] = issue
     # One line per quantity: its most extreme value over all the study's model calls.
-    return replace(result, validity=tuple(text for _, text in worst.values()))
-
-
-def _excess(quantity: str, value_text: str) -> float:
-    """How far a warned value lies outside its range, relative to the range's upper end."""
-    rng = RANGES.get(quantity)
-    try:
-        value = float(value_text)
-    except ValueError:  # pragma: no cover - every message of validity.py has a value
-        return math.inf
-    if rng is None or not math.isfinite(value):
-        return math.inf
-    return max(rng.low - value, value - rng.high) / max(abs(rng.high), 1e-300)
+    return replace(result, validity=tuple(str(issue) for issue in worst.values()))
 
 
 def _run(

@@ -1,10 +1,14 @@
 """Validity ranges of the models and correlations, and the warnings for leaving them.
 
-One table (:data:`RANGES`) holds every range with its source, as fluids keeps
-its correlations' ranges; :func:`check` finds the quantities of a call that
-leave them and :func:`friction_torque` warns once per quantity per call with
-a :class:`BallScrewValidityWarning` naming the quantity, its extreme value and
-the range, and records the messages in its result.
+One table (:data:`RANGES`) holds the ranges of the shared layers (film
+formulas, Hertz fits, viscosity fit, the nut) with their sources, as fluids
+keeps its correlations' ranges; a friction model declares the checks that
+apply to it, and its own ranges, in its module (``checks=`` of
+:func:`ballscrew.friction.register`). :func:`check` runs the checks common
+to every model and the model's own; :func:`ballscrew.friction_torque` warns
+once per quantity per call with a :class:`BallScrewValidityWarning` that
+carries a :class:`ValidityIssue` (quantity, extreme value, range, source,
+model), and records the issues in its result.
 
 The checks cost O(n) for the operating points (minimum and maximum) plus a
 handful of scalar evaluations: the dimensionless speed is largest at the
@@ -15,8 +19,8 @@ so on, so the extremes are evaluated at those corners only.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
-from dataclasses import dataclass
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -27,7 +31,16 @@ from .geometry import BallScrew
 from .loads import LIFT_OFF_RATIO, ball_loads
 from .lubricant import Lubricant
 
-__all__ = ["RANGES", "BallScrewValidityWarning", "ValidityRange", "check"]
+__all__ = [
+    "RANGES",
+    "BallScrewValidityWarning",
+    "Check",
+    "ValidityIssue",
+    "ValidityRange",
+    "check",
+    "film_checks",
+    "outside",
+]
 
 
 @dataclass(frozen=True)
@@ -46,6 +59,36 @@ class ValidityRange:
             f"{self.quantity} = {value:.4g} is outside {self.low:.4g} to {self.high:.4g}, the "
             f"range of {self.applies_to} ({self.source}); results there are extrapolated"
         )
+
+
+@dataclass(frozen=True)
+class ValidityIssue:
+    """One quantity of a call outside its validity range (``str()`` is the warning text)."""
+
+    quantity: str
+    value: float
+    low: float
+    high: float
+    applies_to: str
+    source: str
+    model: str = ""
+
+    @property
+    def excess(self) -> float:
+        """How far the value lies outside the range, relative to the range's upper end."""
+        if not math.isfinite(self.value):
+            return math.inf
+        return max(self.low - self.value, self.value - self.high) / max(abs(self.high), 1e-300)
+
+    def __str__(self) -> str:
+        rng = ValidityRange(self.quantity, self.low, self.high, self.applies_to, self.source)
+        return rng.message(self.value)
+
+
+Check = Callable[
+    [BallScrew, Lubricant, FloatArray, FloatArray, FloatArray, dict[str, Any]], list[ValidityIssue]
+]
+"""A model's validity check: ``f(screw, lubricant, speed, temperature, axial_load, params)``."""
 
 
 RANGES: dict[str, ValidityRange] = {
@@ -80,13 +123,6 @@ RANGES: dict[str, ValidityRange] = {
             "error under 2 % there, 13 % at 72 (ballscrew.contact)",
         ),
         ValidityRange(
-            "spin parameter E (Olaru)",
-            0.0,
-            1.0,
-            "Houpert's f_c, f_p fits in Olaru's model",
-            "the fits' interval; beyond it their end values are used",
-        ),
-        ValidityRange(
             "speed factor d_m*n [mm*rpm]",
             0.0,
             160_000.0,
@@ -112,14 +148,16 @@ RANGES: dict[str, ValidityRange] = {
 """All validity ranges, by quantity."""
 
 
-def _outside(name: str, values: Iterable[float]) -> list[str]:
-    r = RANGES[name]
+def outside(r: ValidityRange | str, values: Iterable[float]) -> list[ValidityIssue]:
+    """The worst of ``values`` outside range ``r`` (a range or a quantity of RANGES), if any."""
+    if isinstance(r, str):
+        r = RANGES[r]
     vals = [v for v in values if math.isfinite(v)]
     worst = [v for v in vals if v < r.low * (1 - 1e-12) or v > r.high * (1 + 1e-12)]
     if not worst:
         return []
     value = max(worst, key=lambda v: max(r.low - v, v - r.high) / max(abs(r.high), 1e-300))
-    return [r.message(value)]
+    return [ValidityIssue(r.quantity, value, r.low, r.high, r.applies_to, r.source)]
 
 
 def check(
@@ -130,45 +168,70 @@ def check(
     axial_load: FloatArray,
     model: str,
     parameters: dict[str, Any],
-) -> list[str]:
-    """Messages for every quantity of a call that leaves its validity range.
+    checks: Iterable[Check] = (),
+) -> list[ValidityIssue]:
+    """Every quantity of a call that leaves its validity range, worst value each.
 
     Parameters
     ----------
     screw, lubricant, speed, temperature, axial_load
         The call's inputs (speed [rad/s], temperature [°C], axial load [N]).
     model : str
-        The friction model (decides which ranges apply).
+        The friction model's name (recorded in each issue).
     parameters : dict
         The model's parameters as used.
+    checks : iterable of callables
+        The model's own checks (its ``ModelSpec.checks``), run after the
+        common ones (speed factor, preload lift-off).
     """
-    messages: list[str] = []
+    issues: list[ValidityIssue] = []
     if speed.size == 0:
-        return messages
-    w_abs = np.abs(speed)
-    n_max = float(np.max(w_abs)) * 60.0 / (2.0 * math.pi)
-    messages += _outside("speed factor d_m*n [mm*rpm]", [screw.pitch_diameter * 1e3 * n_max])
-    if model != "catalog":
-        messages += _outside(
-            "temperature [degC]", [float(np.min(temperature)), float(np.max(temperature))]
-        )
+        return issues
+    n_max = float(np.max(np.abs(speed))) * 60.0 / (2.0 * math.pi)
+    issues += outside("speed factor d_m*n [mm*rpm]", [screw.pitch_diameter * 1e3 * n_max])
     if screw.nut != "single" and screw.preload > 0.0:
-        messages += _outside(
+        issues += outside(
             "axial load / preload", [float(np.max(np.abs(axial_load))) / screw.preload]
         )
-    if model in ("catalog", "viscoelastic"):
-        return messages
+    for model_check in checks:
+        issues += model_check(screw, lubricant, speed, temperature, axial_load, parameters)
+    return [replace(issue, model=model) for issue in issues]
+
+
+def lubricant_checks(
+    screw: BallScrew,
+    lubricant: Lubricant,
+    speed: FloatArray,
+    temperature: FloatArray,
+    axial_load: FloatArray,
+    parameters: dict[str, Any],
+) -> list[ValidityIssue]:
+    """The viscosity-temperature fit's range, for models that use the lubricant."""
+    return outside("temperature [degC]", [float(np.min(temperature)), float(np.max(temperature))])
+
+
+def film_checks(
+    screw: BallScrew,
+    lubricant: Lubricant,
+    speed: FloatArray,
+    temperature: FloatArray,
+    axial_load: FloatArray,
+    parameters: dict[str, Any],
+) -> list[ValidityIssue]:
+    """Ranges of the EHL film formulas and of the Hertz fits, for models built on them.
+
+    Includes :func:`lubricant_checks`.
+    """
+    issues = lubricant_checks(screw, lubricant, speed, temperature, axial_load, parameters)
     ratios = [screw.ry_screw / screw.rx_screw, screw.ry_nut / screw.rx_nut]
     ratios = [max(r, 1.0 / r) for r in ratios]
-    messages += _outside(
+    issues += outside(
         "ellipticity k (Hamrock-Dowson)", [float(ellipticity_exact(r)) for r in ratios]
     )
     if parameters.get("hertz_method") == "houpert":
-        messages += _outside("radius ratio Ry/Rx (Houpert fits)", ratios)
-    messages += _film_groups(screw, lubricant, speed, temperature, axial_load)
-    if model == "olaru":
-        messages += _olaru_spin(screw, axial_load, parameters)
-    return messages
+        issues += outside("radius ratio Ry/Rx (Houpert fits)", ratios)
+    issues += _film_groups(screw, lubricant, speed, temperature, axial_load)
+    return issues
 
 
 def _film_groups(
@@ -177,7 +240,7 @@ def _film_groups(
     speed: FloatArray,
     temperature: FloatArray,
     axial_load: FloatArray,
-) -> list[str]:
+) -> list[ValidityIssue]:
     """Extremes of U and W at the corners of the operating range."""
     w_abs = np.abs(speed)
     t_lo, t_hi = float(np.min(temperature)), float(np.max(temperature))
@@ -200,24 +263,4 @@ def _film_groups(
         if q.size
         for rx in (screw.rx_screw, screw.rx_nut)
     ]
-    return _outside("dimensionless speed U", u_values) + _outside("dimensionless load W", w_values)
-
-
-def _olaru_spin(screw: BallScrew, axial_load: FloatArray, parameters: dict[str, Any]) -> list[str]:
-    """Houpert's spin parameter E of Olaru's model at the extreme loads."""
-    from .contact import hertz
-
-    kappa = float(parameters.get("kappa", 0.05))
-    ra = 0.5 * screw.ball_diameter * (1.0 + kappa) / (1.0 + 0.5 * kappa)
-    spin = screw.ball_diameter * math.sin(screw.contact_angle) / screw.pitch_diameter
-    loads = ball_loads(screw, np.array([0.0, float(np.max(np.abs(axial_load)))]))
-    q = np.concatenate([loads.normal_load_1, loads.normal_load_2])
-    q = q[q > 0.0]
-    if not q.size:
-        return []
-    method = str(parameters.get("hertz_method", "houpert"))
-    values: list[float] = []
-    for rx, ry in ((screw.rx_screw, screw.ry_screw), (screw.rx_nut, screw.ry_nut)):
-        a = hertz(q, rx, ry, screw.reduced_modulus, method=method).a
-        values += [float(v) for v in 2.0 * ra / a * spin]
-    return _outside("spin parameter E (Olaru)", values)
+    return outside("dimensionless speed U", u_values) + outside("dimensionless load W", w_values)

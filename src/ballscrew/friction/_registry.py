@@ -45,6 +45,10 @@ class ModelSpec:
         The model's own keyword parameters and their defaults.
     purpose : str
         What the model is for (to predict, to reproduce the study, ...).
+    checks : tuple of callables
+        The validity checks that apply to the model (see
+        :mod:`ballscrew.validity`): the model declares them beside its
+        equations, including checks of its own ranges.
     chunk : int
         Operating points the chain evaluates at once (bounds memory).
     """
@@ -57,6 +61,7 @@ class ModelSpec:
     parameters: dict[str, Any] = field(default_factory=dict)
     purpose: str = ""
     chunk: int = 1 << 17
+    checks: tuple[Callable[..., Any], ...] = ()
 
     def check_parameters(self, given: dict[str, Any]) -> None:
         """Raise if ``given`` holds a parameter the model does not have."""
@@ -95,6 +100,7 @@ def register(
     validity: str,
     purpose: str = "",
     chunk: int = 1 << 17,
+    checks: tuple[Callable[..., Any], ...] = (),
 ) -> Callable[[ModelFunction], ModelFunction]:
     """Register a model function under ``name`` (decorator).
 
@@ -110,7 +116,9 @@ def register(
             for p in sig.parameters.values()
             if p.kind is inspect.Parameter.KEYWORD_ONLY
         }
-        MODELS[name] = ModelSpec(name, func, title, reference, validity, params, purpose, chunk)
+        MODELS[name] = ModelSpec(
+            name, func, title, reference, validity, params, purpose, chunk, checks
+        )
         return func
 
     return deco

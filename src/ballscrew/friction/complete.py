@@ -63,6 +63,7 @@ from ..geometry import BallScrew
 from ..kinematics import differential_sliding, four_point_spin, kinematics
 from ..lubricant import Lubricant
 from ..state import ContactState, operating_state
+from ..validity import film_checks
 from ._common import limiting_shear
 from ._registry import register
 
@@ -126,6 +127,7 @@ def _sliding_per_speed(
     "torques of 12-63 mm screws",
     purpose="to predict (the default): every loss mechanism, scored against public numbers "
     "(ballscrew validate)",
+    checks=(film_checks,),
 )
 def complete(
     screw: BallScrew,

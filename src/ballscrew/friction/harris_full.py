@@ -71,6 +71,7 @@ from ..kinematics import differential_sliding, kinematics
 from ..lubricant import Lubricant
 from ..numerics import illinois
 from ..state import operating_state
+from ..validity import film_checks
 from ._common import limiting_shear
 from ._registry import register
 from .harris_simplified import RHEOLOGY_MODELS, local_viscosity, shear_stress
@@ -227,6 +228,7 @@ def full_contact_power(
     chunk=4096,
     purpose="research: the simplified model's physics without its simplifications; "
     "not for prediction",
+    checks=(film_checks,),
 )
 def harris_full(
     screw: BallScrew,

@@ -85,6 +85,7 @@ from ..geometry import BallScrew
 from ..kinematics import differential_sliding
 from ..lubricant import Lubricant, pressure_viscosity_unchecked
 from ..state import operating_state
+from ..validity import film_checks
 from ._common import limiting_shear, torque_from_contact_forces
 from ._registry import register
 
@@ -286,6 +287,7 @@ def _harmonic(tau_n: FloatArray, tau_lim: FloatArray) -> FloatArray:
     "T. A. Harris, M. N. Kotzalas, Advanced Concepts of Bearing Technology, CRC, 2007",
     validity="EHL/mixed lubrication, Hamrock-Dowson film (ellipticity 1-8); Roelands viscosity",
     purpose="to reproduce the study (Sušeň's Figs. 6-8); not for prediction",
+    checks=(film_checks,),
 )
 def harris_simplified(
     screw: BallScrew,

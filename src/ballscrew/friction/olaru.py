@@ -82,18 +82,23 @@ References
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
 
+from ..contact import hertz
 from ..errors import BallScrewInputError, FloatArray, check_choice, check_nonnegative
 from ..geometry import BallScrew
+from ..loads import ball_loads
 from ..lubricant import Lubricant
 from ..rolling_losses import rolling_force_houpert
 from ..state import operating_state
+from ..validity import ValidityIssue, ValidityRange, film_checks, outside
 from ._registry import register
 
 __all__ = [
+    "SPIN_PARAMETER_RANGE",
     "curvature_fit",
     "elastic_hysteresis_moment",
     "olaru",
@@ -152,6 +157,41 @@ def elastic_hysteresis_moment(
     raise BallScrewInputError("hysteresis_units", units, "'SI' or 'N·mm'")
 
 
+SPIN_PARAMETER_RANGE = ValidityRange(
+    "spin parameter E (Olaru)",
+    0.0,
+    1.0,
+    "Houpert's f_c, f_p fits in Olaru's model",
+    "the fits' interval; beyond it their end values are used",
+)
+"""Where Houpert's curvature and pivoting fits hold."""
+
+
+def spin_parameter_check(
+    screw: BallScrew,
+    lubricant: Lubricant,
+    speed: FloatArray,
+    temperature: FloatArray,
+    axial_load: FloatArray,
+    parameters: dict[str, Any],
+) -> list[ValidityIssue]:
+    """Houpert's spin parameter :math:`E` of the model at the extreme ball loads."""
+    kappa = float(parameters.get("kappa", 0.05))
+    ra = 0.5 * screw.ball_diameter * (1.0 + kappa) / (1.0 + 0.5 * kappa)
+    spin = screw.ball_diameter * math.sin(screw.contact_angle) / screw.pitch_diameter
+    loads = ball_loads(screw, np.array([0.0, float(np.max(np.abs(axial_load)))]))
+    q = np.concatenate([loads.normal_load_1, loads.normal_load_2])
+    q = q[q > 0.0]
+    if not q.size:
+        return []
+    method = str(parameters.get("hertz_method", "houpert"))
+    values: list[float] = []
+    for rx, ry in ((screw.rx_screw, screw.ry_screw), (screw.rx_nut, screw.ry_nut)):
+        a = hertz(q, rx, ry, screw.reduced_modulus, method=method).a
+        values += [float(v) for v in 2.0 * ra / a * spin]
+    return outside(SPIN_PARAMETER_RANGE, values)
+
+
 @register(
     "olaru",
     title="Olaru et al. (2005): per-ball equilibrium of EHL rolling forces and friction moments",
@@ -159,6 +199,7 @@ def elastic_hysteresis_moment(
     "Product Engineering, Springer 2005, doi:10.1007/1-4020-2933-0_20",
     validity="2-point contact; Houpert (2002) EHL rolling force fit; f_c, f_p fits for E in [0, 1]",
     purpose="to reproduce the study (Sušeň's Fig. 3); not for prediction",
+    checks=(film_checks, spin_parameter_check),
 )
 def olaru(
     screw: BallScrew,
