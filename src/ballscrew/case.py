@@ -57,16 +57,17 @@ class _Screw(BaseModel):
     conformity_nut: Value = 0.55
     loaded_turns: Value = 2.5
     circuits: Value = 2
-    nut: Literal["double", "single", "single-4point"] | _Assumed = "double"
+    # Left out: BallScrew's own defaults apply (one place for them).
+    nut: Literal["double", "single", "single-4point"] | _Assumed | None = None
     preload: Value | None = None
     preload_drag_torque: Value | None = None
-    youngs_modulus_ball: Value = "210 GPa"
-    youngs_modulus_races: Value = "210 GPa"
-    poisson_ratio_ball: Value = 0.3
-    poisson_ratio_races: Value = 0.3
-    roughness_ball: Value = "0.08 um"
-    roughness_screw: Value = "0.3 um"
-    roughness_nut: Value = "0.3 um"
+    youngs_modulus_ball: Value | None = None
+    youngs_modulus_races: Value | None = None
+    poisson_ratio_ball: Value | None = None
+    poisson_ratio_races: Value | None = None
+    roughness_ball: Value | None = None
+    roughness_screw: Value | None = None
+    roughness_nut: Value | None = None
 
 
 class _Lubricant(BaseModel):
@@ -221,15 +222,20 @@ def parse_case(text: str, *, source: str = "case") -> Case:
         "conformity_screw": si("screw", "conformity_screw", s.conformity_screw, ""),
         "conformity_nut": si("screw", "conformity_nut", s.conformity_nut, ""),
         "loaded_turns": si("screw", "loaded_turns", s.loaded_turns, ""),
-        "nut": _unwrap("screw.nut", s.nut, notes),
-        "youngs_modulus_ball": si("screw", "youngs_modulus_ball", s.youngs_modulus_ball, "Pa"),
-        "youngs_modulus_races": si("screw", "youngs_modulus_races", s.youngs_modulus_races, "Pa"),
-        "poisson_ratio_ball": si("screw", "poisson_ratio_ball", s.poisson_ratio_ball, ""),
-        "poisson_ratio_races": si("screw", "poisson_ratio_races", s.poisson_ratio_races, ""),
-        "roughness_ball": si("screw", "roughness_ball", s.roughness_ball, "m"),
-        "roughness_screw": si("screw", "roughness_screw", s.roughness_screw, "m"),
-        "roughness_nut": si("screw", "roughness_nut", s.roughness_nut, "m"),
     }
+    if s.nut is not None:
+        geometry["nut"] = _unwrap("screw.nut", s.nut, notes)
+    for name, unit in (
+        ("youngs_modulus_ball", "Pa"),
+        ("youngs_modulus_races", "Pa"),
+        ("poisson_ratio_ball", ""),
+        ("poisson_ratio_races", ""),
+        ("roughness_ball", "m"),
+        ("roughness_screw", "m"),
+        ("roughness_nut", "m"),
+    ):
+        if getattr(s, name) is not None:
+            geometry[name] = si("screw", name, getattr(s, name), unit)
     circuits = si("screw", "circuits", s.circuits, "")
     if circuits != int(circuits):
         raise BallScrewInputError("screw.circuits", circuits, "a whole number >= 1")
