@@ -1,0 +1,80 @@
+"""Olaru's model: each moment and force turned into torque by an energy balance.
+
+The model states its equations (module docstring of ballscrew.friction.olaru, after Olaru et
+al. 2005 and Houpert 2002); here each torque component is rebuilt from the contact states and
+the kinematics, by the power each term dissipates, not by the model's lever arms. A screw with
+a large pitch diameter and small balls keeps Houpert's spin parameter E below 1, so the
+curvature (Heathcote) moment is active as well as the pivoting one.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from ballscrew import BallScrew, friction_torque, lubricants
+from ballscrew import rolling_losses as rl
+from ballscrew.kinematics import kinematics
+from ballscrew.state import operating_state
+
+OIL = lubricants.get("mineral ISO VG 68")
+
+
+def _houpert_fc(e: float) -> float:  # Houpert's curvature factor, E in [0, 1]
+    e = min(max(e, 0.0), 1.0)
+    return max(1.0026 - 0.1653 * e - 0.2638 * e**2 - 2.5521 * e**3 + 1.9749 * e**4, 0.0)
+
+
+def _houpert_fp(e: float) -> float:  # Houpert's pivoting factor, E in [0, 1]
+    e = min(max(e, 0.0), 1.0)
+    return 0.0042 + 1.1045 * e + 0.4625 * e**2 - 0.5648 * e**3
+
+
+@pytest.mark.parametrize("axial", [0.0, 3000.0])
+def test_olaru_components_by_their_dissipated_power(axial: float) -> None:
+    screw = BallScrew(
+        pitch_diameter=0.100, lead=0.010, ball_diameter=3.175e-3,
+        contact_angle=math.radians(45), conformity_screw=0.54, conformity_nut=0.54,
+        loaded_turns=2.5, circuits=2, nut="double", preload=3000.0,
+    )  # fmt: skip
+    w, temp = 200 * math.pi / 30, 40.0
+    r = friction_torque(screw, OIL, speed=w, temperature=temp, axial_load=axial, model="olaru")
+    st = operating_state(screw, OIL, speed=w, temperature=temp, axial_load=axial,
+                         hertz_method="houpert")  # fmt: skip
+    kin = kinematics(screw, w)
+    u = float(kin.entrainment_speed)
+    cos_l = math.cos(screw.lead_angle)
+    dw = screw.ball_diameter
+    ra = 0.5 * dw * 1.05 / 1.025  # kappa = 0.05
+    spins = {"screw": abs(float(kin.spin_screw)), "nut": abs(float(kin.spin_nut))}
+    rolling = curvature = pivoting = hysteresis = 0.0
+    e_values = []
+    for c in st.contacts:
+        q, a = float(c.load), float(c.hertz.a)
+        if q == 0.0:
+            continue
+        mu = 0.1 * float(c.asperity_share)
+        f_r = float(rl.rolling_force_houpert(screw.reduced_modulus, c.rx, c.ry / c.rx,
+                    c.materials_parameter, c.speed_parameter, c.load_parameter))  # fmt: skip
+        # F_R resists both surfaces (2 F_R u); the model's arm R_s cos(l)(1 + gamma) is the
+        # energy arm d_m(1 - gamma^2)/2 per F_R times cos(l): the force acts along the helix.
+        rolling += c.balls * 2 * f_r * u / w * cos_l
+        e = 2 * ra / a * dw * math.sin(screw.contact_angle) / screw.pitch_diameter
+        e_values.append(e)
+        m_c = 0.0806 * mu * q * a**2 / ra * _houpert_fc(e)
+        m_er = 7.48e-7 * (dw / 2) ** 0.33 * q**1.33 * (1 - 3.519e-3 * (c.ry / c.rx - 1) ** 0.806)
+        # Rolling-resistance moments act on the ball, which turns at omega_b; the model puts
+        # them on the screw through the tangential force M/D_w at the screw contact.
+        lever = screw.contact_radius_screw * cos_l
+        curvature += c.balls * lever * m_c / dw
+        hysteresis += c.balls * lever * m_er / dw
+        pivoting += c.balls * 0.375 * mu * q * a * _houpert_fp(e) * spins[c.side] / w
+    assert max(e_values) < 1.0  # the curvature term is exercised
+    comp = {k: float(v) for k, v in r.components.items()}
+    assert comp["rolling"] == pytest.approx(rolling, rel=1e-9)
+    assert comp["curvature"] == pytest.approx(curvature, rel=1e-9) and curvature > 0.0
+    assert comp["pivoting"] == pytest.approx(pivoting, rel=1e-9)
+    assert comp["hysteresis"] == pytest.approx(hysteresis, rel=1e-9)
+    assert np.isclose(comp["ball_ball"], 0.0)
