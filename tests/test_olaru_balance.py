@@ -78,3 +78,70 @@ def test_olaru_components_by_their_dissipated_power(axial: float) -> None:
     assert comp["pivoting"] == pytest.approx(pivoting, rel=1e-9)
     assert comp["hysteresis"] == pytest.approx(hysteresis, rel=1e-9)
     assert np.isclose(comp["ball_ball"], 0.0)
+
+
+def _reference_parts(**params: object) -> tuple[dict[str, float], object]:
+    from ballscrew import reference_screw
+
+    s = reference_screw()
+    r = friction_torque(s, OIL, speed=1500 * math.pi / 30, temperature=40.0, model="olaru",
+                        **params)  # type: ignore[arg-type]  # fmt: skip
+    return {k: float(v) for k, v in r.components.items()}, s
+
+
+def test_ball_ball_force_term() -> None:
+    # F_B at each ball: a friction moment mu_b (D_w/2) F_B and half the force itself on the
+    # screw-side tangential force (Olaru's ball equilibrium), over every loaded ball.
+    fb, mu_b = 0.8, 0.12
+    parts, s = _reference_parts(ball_ball_force=fb, ball_ball_friction=mu_b)
+    lever = s.contact_radius_screw * math.cos(s.lead_angle)  # type: ignore[attr-defined]
+    balls = 2 * s.balls_per_nut  # type: ignore[attr-defined]
+    expected = balls * lever * (mu_b * 0.5 * fb + 0.5 * fb)
+    assert parts["ball_ball"] == pytest.approx(expected, rel=1e-12)
+
+
+def test_speed_fit_friction_coefficient() -> None:
+    # The public code's fit mu = exp(-2.643 - 0.002 n - 4.983e-7 n^2), n in rpm (attributed to
+    # Hoeprich), the same at every contact; the pivoting power follows with that mu.
+    from ballscrew import reference_screw
+
+    n = 1500.0
+    w = n * math.pi / 30
+    mu_fit = math.exp(-2.643 - 0.002 * n - 4.983e-7 * n**2)
+    fit, s = _reference_parts(sliding_friction="speed-fit")
+    st = operating_state(reference_screw(), OIL, speed=w, temperature=40.0,
+                         hertz_method="houpert")  # fmt: skip
+    kin = kinematics(reference_screw(), w)
+    spins = {"screw": abs(float(kin.spin_screw)), "nut": abs(float(kin.spin_nut))}
+    ra = 0.5 * s.ball_diameter * 1.05 / 1.025  # type: ignore[attr-defined]
+    ratio = s.ball_diameter * math.sin(s.contact_angle) / s.pitch_diameter  # type: ignore[attr-defined]
+    expected = sum(
+        c.balls * 0.375 * mu_fit * float(c.load) * float(c.hertz.a)
+        * _houpert_fp(2 * ra / float(c.hertz.a) * ratio) * spins[c.side] / w
+        for c in st.contacts
+    )  # fmt: skip
+    assert fit["pivoting"] == pytest.approx(expected, rel=1e-9)
+
+
+def test_spin_parameter_warning_names_the_models_value() -> None:
+    # E = (2 R_a / a)(D_w sin(alpha) / d_m) at the heaviest ball load, with Houpert's semi-axis.
+    import warnings
+
+    from ballscrew import contact, reference_screw
+    from ballscrew.errors import BallScrewValidityWarning
+
+    s = reference_screw()
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", BallScrewValidityWarning)
+        r = friction_torque(s, OIL, speed=10.0, temperature=40.0, model="olaru")
+    (issue,) = [i for i in r.warnings if i.quantity.startswith("spin parameter E")]
+    assert caught
+    q = float(__import__("ballscrew").loads.ball_loads(s, 0.0).normal_load_1)
+    ra = 0.5 * s.ball_diameter * 1.05 / 1.025
+    values = [
+        2 * ra / float(contact.hertz(q, rx, ry, s.reduced_modulus, method="houpert").a)
+        * s.ball_diameter * math.sin(s.contact_angle) / s.pitch_diameter
+        for rx, ry in ((s.rx_screw, s.ry_screw), (s.rx_nut, s.ry_nut))
+    ]  # fmt: skip
+    assert issue.value == pytest.approx(max(values), rel=1e-12)
+    assert (issue.low, issue.high) == (0.0, 1.0)
