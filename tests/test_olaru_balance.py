@@ -145,3 +145,17 @@ def test_spin_parameter_warning_names_the_models_value() -> None:
     ]  # fmt: skip
     assert issue.value == pytest.approx(max(values), rel=1e-12)
     assert (issue.low, issue.high) == (0.0, 1.0)
+
+
+@pytest.mark.parametrize("ball_ball_force", [0.0, 0.8])
+def test_lifted_off_double_nut_equals_a_single_nut(ball_ball_force: float) -> None:
+    # Past lift-off the relieved half-nut's balls carry nothing and add nothing.
+    from ballscrew import reference_screw
+
+    double = reference_screw()
+    single = double.replace(nut="single", preload=0.0)
+    kw = {"speed": [3.0, 100.0], "temperature": 40.0, "axial_load": 7000.0, "model": "olaru",
+          "ball_ball_force": ball_ball_force}  # fmt: skip
+    a = friction_torque(double, OIL, **kw)  # type: ignore[arg-type]
+    b = friction_torque(single, OIL, **kw)  # type: ignore[arg-type]
+    np.testing.assert_allclose(a.total, b.total, rtol=1e-12)
