@@ -17,7 +17,6 @@ from __future__ import annotations
 import csv
 import io
 import math
-import os
 from pathlib import Path
 
 from ballscrew.files import atomic_write
@@ -25,11 +24,7 @@ from ballscrew.friction.catalog import preload_torque
 from ballscrew.lubricants import get
 from ballscrew.validation import jungnickel_loss_torque, screw_from_row
 
-ROOT = Path(
-    os.environ.get(
-        "BALLSCREW_DATA", Path(__file__).resolve().parents[1] / "src" / "ballscrew" / "data"
-    )
-)
+ROOT = Path(__file__).resolve().parents[1] / "src" / "ballscrew" / "data"
 PRELOADS = (0.02, 0.05, 0.10)
 CONFORMITY = 0.55  # typical gothic-arch and circular-arc grooves: 0.52-0.56 (not in catalogues)
 CATALOG_SOURCE = (

@@ -14,9 +14,10 @@ import math
 import numpy as np
 import pytest
 
-from ballscrew import BallScrew, friction_torque, lubricants
+from ballscrew import BallScrew, friction_torque, lubricants, reference_screw
 from ballscrew import rolling_losses as rl
 from ballscrew.kinematics import kinematics
+from ballscrew.loads import ball_loads
 from ballscrew.state import operating_state
 
 OIL = lubricants.get("mineral ISO VG 68")
@@ -81,8 +82,6 @@ def test_olaru_components_by_their_dissipated_power(axial: float) -> None:
 
 
 def _reference_parts(**params: object) -> tuple[dict[str, float], object]:
-    from ballscrew import reference_screw
-
     s = reference_screw()
     r = friction_torque(s, OIL, speed=1500 * math.pi / 30, temperature=40.0, model="olaru",
                         **params)  # type: ignore[arg-type]  # fmt: skip
@@ -103,8 +102,6 @@ def test_ball_ball_force_term() -> None:
 def test_speed_fit_friction_coefficient() -> None:
     # The public code's fit mu = exp(-2.643 - 0.002 n - 4.983e-7 n^2), n in rpm (attributed to
     # Hoeprich), the same at every contact; the pivoting power follows with that mu.
-    from ballscrew import reference_screw
-
     n = 1500.0
     w = n * math.pi / 30
     mu_fit = math.exp(-2.643 - 0.002 * n - 4.983e-7 * n**2)
@@ -127,7 +124,7 @@ def test_spin_parameter_warning_names_the_models_value() -> None:
     # E = (2 R_a / a)(D_w sin(alpha) / d_m) at the heaviest ball load, with Houpert's semi-axis.
     import warnings
 
-    from ballscrew import contact, reference_screw
+    from ballscrew import contact
     from ballscrew.errors import BallScrewValidityWarning
 
     s = reference_screw()
@@ -136,7 +133,7 @@ def test_spin_parameter_warning_names_the_models_value() -> None:
         r = friction_torque(s, OIL, speed=10.0, temperature=40.0, model="olaru")
     (issue,) = [i for i in r.warnings if i.quantity.startswith("spin parameter E")]
     assert caught
-    q = float(__import__("ballscrew").loads.ball_loads(s, 0.0).normal_load_1)
+    q = float(ball_loads(s, 0.0).normal_load_1)
     ra = 0.5 * s.ball_diameter * 1.05 / 1.025
     values = [
         2 * ra / float(contact.hertz(q, rx, ry, s.reduced_modulus, method="houpert").a)
@@ -150,8 +147,6 @@ def test_spin_parameter_warning_names_the_models_value() -> None:
 @pytest.mark.parametrize("ball_ball_force", [0.0, 0.8])
 def test_lifted_off_double_nut_equals_a_single_nut(ball_ball_force: float) -> None:
     # Past lift-off the relieved half-nut's balls carry nothing and add nothing.
-    from ballscrew import reference_screw
-
     double = reference_screw()
     single = double.replace(nut="single", preload=0.0)
     kw = {"speed": [3.0, 100.0], "temperature": 40.0, "axial_load": 7000.0, "model": "olaru",

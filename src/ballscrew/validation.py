@@ -36,6 +36,7 @@ import csv
 import io
 import math
 import warnings
+from collections.abc import Callable
 from dataclasses import dataclass
 from importlib import resources
 from typing import Any
@@ -307,7 +308,7 @@ def score(
     cases: list[ReferenceCase] | None = None,
     *,
     trends: bool = True,
-    progress: object = None,
+    progress: Callable[[str], object] | None = None,
 ) -> list[ScoreRow]:
     """Run every model on every case; one :class:`ScoreRow` per model and case (and trend)."""
     names = model_names or [m.name for m in models()]
@@ -331,7 +332,7 @@ def score(
             )
         if trends:
             rows.extend(_trend_rows(name))
-        if callable(progress):
+        if progress is not None:
             progress(name)
     return rows
 
