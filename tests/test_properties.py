@@ -184,3 +184,49 @@ def test_fluid_part_rises_with_viscosity(model: str, case: dict[str, object]) ->
     thick_r = ballscrew.friction_torque(screw, thicker, **kw)  # type: ignore[arg-type]
     # Non-decreasing (flat where the shear saturates at tau_lim).
     assert float(thick_r.components[part]) >= float(thin_r.components[part]) * (1 - 1e-12)
+
+
+values = st.one_of(
+    st.floats(allow_nan=True, allow_infinity=True),
+    st.sampled_from([0.0, -0.0, 1.0, -1.0, 5e-324, 0.5, math.pi / 2]),
+)
+
+
+def _verdict(check: object, value: object) -> tuple[bool, float | None]:
+    """(accepted, offending value) of one check call."""
+    try:
+        check(value)  # type: ignore[operator]
+    except ballscrew.BallScrewInputError as err:
+        return False, err.value
+    return True, None
+
+
+@settings(max_examples=300, deadline=None)
+@given(
+    value=values,
+    low=st.sampled_from([0.0, -1.0, 0.5]),
+    high=st.sampled_from([0.5, 1.0, math.pi / 2, math.inf]),
+    inclusive=st.tuples(st.booleans(), st.booleans()),
+)
+def test_single_value_checks_agree_with_the_array_checks(
+    value: float, low: float, high: float, inclusive: tuple[bool, bool]
+) -> None:
+    # One value takes a plain-float path (the single-point fast path); its
+    # verdict and the value it reports must be those of the numpy path on a
+    # one-element array, for every check and at the interval's bounds.
+    from ballscrew import errors
+
+    checks = [
+        lambda v: errors.check_finite("x", v),
+        lambda v: errors.check_positive("x", v),
+        lambda v: errors.check_nonnegative("x", v),
+        lambda v: errors.check_in_range("x", v, low, high, inclusive=inclusive),
+    ]
+    for check in checks:
+        ok_scalar, bad_scalar = _verdict(check, value)
+        ok_array, bad_array = _verdict(check, np.array([value]))
+        assert ok_scalar == ok_array
+        if not ok_scalar:
+            assert (bad_scalar == bad_array) or (
+                math.isnan(bad_scalar) and math.isnan(bad_array)  # type: ignore[arg-type]
+            )

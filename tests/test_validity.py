@@ -100,3 +100,33 @@ def test_models_that_ignore_the_oil_do_not_warn_about_its_temperature() -> None:
     for model in ("viscoelastic", "catalog"):
         assert not [m for m in _messages(speed=10.0, temperature=-20.0, model=model)
                     if m.startswith("temperature")]  # fmt: skip
+
+
+def test_point_by_point_warnings_are_those_of_the_array_call() -> None:
+    # The film checks are cached on the operating range's extremes; a loop
+    # over single points must warn about the same quantities, and the worst
+    # value over the loop must be the array call's worst value.
+    import warnings
+
+    import numpy as np
+
+    from ballscrew import friction_torque, lubricants, reference_screw
+
+    screw, oil = reference_screw(), lubricants.get("PAO ISO VG 68")
+    speeds = np.array([1.0, 30.0, 300.0])
+    loads = np.array([0.0, 5e3, 2e4])
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        whole = friction_torque(screw, oil, speed=speeds, temperature=-10.0, axial_load=loads)
+        single = [
+            friction_torque(screw, oil, speed=w, temperature=-10.0, axial_load=f)
+            for w, f in zip(speeds, loads, strict=True)
+        ]
+    assert whole.warnings, "the case was chosen to leave several ranges"
+    by_quantity: dict[str, list[float]] = {}
+    for r in single:
+        for issue in r.warnings:
+            by_quantity.setdefault(issue.quantity, []).append(issue.value)
+    assert set(by_quantity) == {i.quantity for i in whole.warnings}
+    for issue in whole.warnings:
+        assert any(v == issue.value for v in by_quantity[issue.quantity])

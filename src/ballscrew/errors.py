@@ -7,6 +7,7 @@ user never sees a traceback from deep inside numpy or a silent NaN.
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import numpy as np
@@ -88,6 +89,12 @@ def _first_bad(arr: FloatArray, bad: npt.NDArray[np.bool_]) -> float:
 def check_finite(field: str, value: Any) -> FloatArray:
     """Return ``value`` as a float array, raising if any element is NaN or infinite."""
     arr = _as_float_array(field, value)
+    if arr.ndim == 0:
+        # One value: plain float comparisons, about ten times cheaper than
+        # numpy's reductions on a 0-d array (this is the single-point path).
+        if not math.isfinite(float(arr)):
+            raise BallScrewInputError(field, float(arr), "finite real numbers")
+        return arr
     bad = ~np.isfinite(arr)
     if bad.any():
         raise BallScrewInputError(field, _first_bad(arr, bad), "finite real numbers")
@@ -97,6 +104,10 @@ def check_finite(field: str, value: Any) -> FloatArray:
 def check_positive(field: str, value: Any, unit: str = "") -> FloatArray:
     """Return ``value`` as a float array, raising unless every element is finite and > 0."""
     arr = check_finite(field, value)
+    if arr.ndim == 0:
+        if not float(arr) > 0.0:
+            raise BallScrewInputError(field, float(arr), f"a value > 0 {unit}".rstrip())
+        return arr
     bad = arr <= 0.0
     if bad.any():
         raise BallScrewInputError(field, _first_bad(arr, bad), f"a value > 0 {unit}".rstrip())
@@ -106,6 +117,10 @@ def check_positive(field: str, value: Any, unit: str = "") -> FloatArray:
 def check_nonnegative(field: str, value: Any, unit: str = "") -> FloatArray:
     """Return ``value`` as a float array, raising unless every element is finite and >= 0."""
     arr = check_finite(field, value)
+    if arr.ndim == 0:
+        if float(arr) < 0.0:
+            raise BallScrewInputError(field, float(arr), f"a value >= 0 {unit}".rstrip())
+        return arr
     bad = arr < 0.0
     if bad.any():
         raise BallScrewInputError(field, _first_bad(arr, bad), f"a value >= 0 {unit}".rstrip())
@@ -126,14 +141,24 @@ def check_in_range(
     ``inclusive`` says whether the lower and upper bounds themselves are allowed.
     """
     arr = check_finite(field, value)
+
+    def error(bad_value: float) -> BallScrewInputError:
+        left = "[" if inclusive[0] else "("
+        right = "]" if inclusive[1] else ")"
+        text = f"a value in {left}{low:g}, {high:g}{right} {unit}".rstrip()
+        return BallScrewInputError(field, bad_value, text)
+
+    if arr.ndim == 0:
+        v = float(arr)
+        ok = (v >= low if inclusive[0] else v > low) and (v <= high if inclusive[1] else v < high)
+        if not ok:
+            raise error(v)
+        return arr
     below = arr < low if inclusive[0] else arr <= low
     above = arr > high if inclusive[1] else arr >= high
     bad = below | above
     if bad.any():
-        left = "[" if inclusive[0] else "("
-        right = "]" if inclusive[1] else ")"
-        text = f"a value in {left}{low:g}, {high:g}{right} {unit}".rstrip()
-        raise BallScrewInputError(field, _first_bad(arr, bad), text)
+        raise error(_first_bad(arr, bad))
     return arr
 
 

@@ -18,6 +18,7 @@ so on, so the extremes are evaluated at those corners only.
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, replace
@@ -220,41 +221,60 @@ def film_checks(
 ) -> list[ValidityIssue]:
     """Ranges of the EHL film formulas and of the Hertz fits, for models built on them.
 
-    Includes :func:`lubricant_checks`.
+    Includes :func:`lubricant_checks`. The checks depend on the operating
+    range only through its extremes, so their result is cached on those
+    (a loop over single points repeats the same extremes).
     """
-    issues = lubricant_checks(screw, lubricant, speed, temperature, axial_load, parameters)
+    w_abs = np.abs(speed)
+    moving = w_abs[w_abs > 0.0]
+    return list(
+        _film_issues(
+            screw,
+            lubricant,
+            parameters.get("hertz_method") == "houpert",
+            float(np.min(temperature)),
+            float(np.max(temperature)),
+            float(np.min(moving)) if moving.size else 0.0,
+            float(np.max(moving)) if moving.size else 0.0,
+            float(np.max(np.abs(axial_load))),
+        )
+    )
+
+
+@functools.lru_cache(maxsize=256)
+def _film_issues(
+    screw: BallScrew,
+    lubricant: Lubricant,
+    houpert: bool,
+    t_lo: float,
+    t_hi: float,
+    w_min: float,
+    w_max: float,
+    fa_max: float,
+) -> tuple[ValidityIssue, ...]:
+    """Film and Hertz-fit issues at the corners of the operating range.
+
+    ``w_min``, ``w_max``: smallest and largest non-zero speed magnitude
+    [rad/s] (0 when nothing moves); ``fa_max``: largest |axial load| [N].
+    """
+    issues = outside("temperature [degC]", [t_lo, t_hi])
     ratios = [screw.ry_screw / screw.rx_screw, screw.ry_nut / screw.rx_nut]
     ratios = [max(r, 1.0 / r) for r in ratios]
     issues += outside(
         "ellipticity k (Hamrock-Dowson)", [float(ellipticity_exact(r)) for r in ratios]
     )
-    if parameters.get("hertz_method") == "houpert":
+    if houpert:
         issues += outside("radius ratio Ry/Rx (Houpert fits)", ratios)
-    issues += _film_groups(screw, lubricant, speed, temperature, axial_load)
-    return issues
-
-
-def _film_groups(
-    screw: BallScrew,
-    lubricant: Lubricant,
-    speed: FloatArray,
-    temperature: FloatArray,
-    axial_load: FloatArray,
-) -> list[ValidityIssue]:
-    """Extremes of U and W at the corners of the operating range."""
-    w_abs = np.abs(speed)
-    t_lo, t_hi = float(np.min(temperature)), float(np.max(temperature))
     eta_hi = float(lubricant.dynamic_viscosity(t_lo))
     eta_lo = float(lubricant.dynamic_viscosity(t_hi))
     u_scale = screw.pitch_diameter * (1.0 - screw.gamma**2) / 4.0
     ep = screw.reduced_modulus
     u_values: list[float] = []
-    moving = w_abs[w_abs > 0.0]
-    for rx in (screw.rx_screw, screw.rx_nut):
-        if moving.size:
-            u_values.append(eta_hi * float(np.max(moving)) * u_scale / (ep * rx))
-            u_values.append(eta_lo * float(np.min(moving)) * u_scale / (ep * rx))
-    loads = ball_loads(screw, np.array([0.0, float(np.max(np.abs(axial_load)))]))
+    if w_max > 0.0:
+        for rx in (screw.rx_screw, screw.rx_nut):
+            u_values.append(eta_hi * w_max * u_scale / (ep * rx))
+            u_values.append(eta_lo * w_min * u_scale / (ep * rx))
+    loads = ball_loads(screw, np.array([0.0, fa_max]))
     q = np.concatenate([loads.normal_load_1, loads.normal_load_2])
     q = q[q > 0.0]
     w_values = [
@@ -263,4 +283,6 @@ def _film_groups(
         if q.size
         for rx in (screw.rx_screw, screw.rx_nut)
     ]
-    return outside("dimensionless speed U", u_values) + outside("dimensionless load W", w_values)
+    issues += outside("dimensionless speed U", u_values)
+    issues += outside("dimensionless load W", w_values)
+    return tuple(issues)
