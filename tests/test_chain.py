@@ -136,3 +136,35 @@ def test_bad_operating_points(kwargs: dict[str, object], field: str) -> None:
     args.update(kwargs)
     with pytest.raises(BallScrewInputError, match=field):
         friction_torque(reference_screw(), OIL, **args)  # type: ignore[arg-type]
+
+
+@pytest.mark.parametrize("model", [m.name for m in ballscrew.models()])
+def test_outer_product_grid_equals_the_same_points_given_one_by_one(model: str) -> None:
+    # The chain hands the models the operating points unexpanded (each layer
+    # works on what it depends on); the numbers must be those of the same
+    # points given as flat, fully expanded arrays, and those of the chunked
+    # path, to rounding.
+    import warnings
+
+    screw, oil = reference_screw(), lubricants.get("PAO ISO VG 68")
+    w = np.array([0.0, -5.0, 30.0, 200.0])[:, None, None]
+    t = np.array([20.0, 45.0])[None, :, None]
+    fa = np.array([-3000.0, 0.0, 800.0, 9000.0])[None, None, :]
+    flat = [x.ravel() for x in np.broadcast_arrays(w, t, fa)]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        grid = friction_torque(screw, oil, speed=w, temperature=t, axial_load=fa, model=model)
+        points = friction_torque(
+            screw, oil, speed=flat[0], temperature=flat[1], axial_load=flat[2], model=model
+        )
+        chunked = friction_torque(
+            screw, oil, speed=w, temperature=t, axial_load=fa, model=model, chunk_size=5
+        )
+    assert grid.total.shape == (4, 2, 4)
+    for key in grid.components:
+        np.testing.assert_allclose(
+            grid.components[key].ravel(), points.components[key], rtol=1e-9, atol=1e-15
+        )
+        np.testing.assert_allclose(
+            grid.components[key], chunked.components[key], rtol=1e-9, atol=1e-15
+        )

@@ -355,3 +355,37 @@ def test_lifted_off_double_nut_equals_a_single_nut_under_the_same_load() -> None
     a = friction_torque(double, OIL, **kw)  # type: ignore[arg-type]
     b = friction_torque(single, OIL, **kw)  # type: ignore[arg-type]
     np.testing.assert_allclose(a.total, b.total, rtol=1e-12)
+
+
+def test_interpolated_sliding_integral_matches_the_direct_rule() -> None:
+    # Above DIRECT_INTEGRALS distinct pairs the integral is splined; the
+    # spline must reproduce the quadrature rule it interpolates (a relative
+    # 2e-4 over a range far wider than a ball screw's, where the aspect ratio
+    # varies 20-fold; one contact's range is far tighter, see below).
+    from ballscrew.friction.complete import _interpolated_integral
+
+    rng = np.random.default_rng(7)
+    kappa, beta = rng.uniform(0.0, 2.0, 3000), rng.uniform(0.05, 1.0, 3000)
+    np.testing.assert_allclose(
+        _interpolated_integral(kappa, beta), rl.spin_sliding_integral(kappa, beta), rtol=2e-4
+    )
+
+
+def test_many_distinct_loads_give_the_directly_integrated_torque(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # 2000 scattered loads (2000 distinct contact sizes) take the spline path;
+    # the torque must equal the direct evaluation to a relative 1e-7
+    # (interpolation error 1e-8 on one contact's range, plus rounding).
+    import ballscrew.friction.complete as module
+
+    rng = np.random.default_rng(3)
+    kwargs = dict(
+        speed=rng.uniform(1.0, 300.0, 2000),
+        temperature=rng.uniform(20.0, 45.0, 2000),
+        axial_load=rng.uniform(-4000.0, 4000.0, 2000),
+    )
+    splined = friction_torque(reference_screw(), OIL, **kwargs).components["sliding"]
+    monkeypatch.setattr(module, "DIRECT_INTEGRALS", 10**9)
+    direct = friction_torque(reference_screw(), OIL, **kwargs).components["sliding"]
+    np.testing.assert_allclose(splined, direct, rtol=1e-7)

@@ -145,11 +145,17 @@ def friction_torque(
     chunk = spec.chunk if chunk_size is None else chunk_size
     if isinstance(chunk, bool) or not isinstance(chunk, int) or chunk < 1:
         raise BallScrewInputError("chunk_size", chunk_size, "a whole number >= 1")
-    w, t, fa = operating_points(speed, temperature, axial_load)
+    w0, t0, fa0 = operating_points(speed, temperature, axial_load, broadcast=False)
+    w, t, fa = np.broadcast_arrays(w0, t0, fa0)
     shape = w.shape
     n = w.size
     if n <= chunk:
-        components = dict(spec(screw, lubricant, w, t, fa, **parameters))
+        # The unexpanded inputs: a grid given as an outer product is only
+        # expanded where a quantity depends on all three.
+        components = {
+            key: np.array(np.broadcast_to(value, shape), dtype=float)
+            for key, value in spec(screw, lubricant, w0, t0, fa0, **parameters).items()
+        }
     else:
         flat = [np.ascontiguousarray(x).reshape(-1) for x in (w, t, fa)]
         pieces: dict[str, list[FloatArray]] = {}

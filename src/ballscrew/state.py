@@ -122,7 +122,11 @@ class ContactState:
 
 @dataclass(frozen=True)
 class OperatingState:
-    """Kinematics, ball loads and all contact states at the operating points."""
+    """Kinematics, ball loads and all contact states at the operating points.
+
+    ``shape`` is the broadcast shape of the operating points; unless the
+    state was built with ``broadcast=False``, every array has it.
+    """
 
     screw: BallScrew
     lubricant: Lubricant
@@ -130,18 +134,37 @@ class OperatingState:
     kinematics: Kinematics
     loads: BallLoads
     contacts: tuple[ContactState, ...]
+    shape: tuple[int, ...] = ()
 
 
 def operating_points(
-    speed: npt.ArrayLike, temperature: npt.ArrayLike, axial_load: npt.ArrayLike
+    speed: npt.ArrayLike,
+    temperature: npt.ArrayLike,
+    axial_load: npt.ArrayLike,
+    *,
+    broadcast: bool = True,
 ) -> tuple[FloatArray, FloatArray, FloatArray]:
-    """Validate speed [rad/s], temperature [°C] and axial load [N]; broadcast them together."""
-    w, t, fa = broadcast_inputs(
-        speed=check_finite("speed", speed),
-        temperature=check_finite("temperature", temperature),
-        axial_load=check_finite("axial_load", axial_load),
-    )
-    return w, t, fa
+    """Validate speed [rad/s], temperature [°C] and axial load [N]; broadcast them together.
+
+    With ``broadcast=False`` the arrays keep their own shapes (which must
+    broadcast against each other): each layer then works on the values it
+    depends on (the viscosity on the temperatures, the ball loads on the
+    axial loads), and a grid given as an outer product is not expanded
+    before the quantities that need every combination.
+    """
+    arrays = {
+        "speed": check_finite("speed", speed),
+        "temperature": check_finite("temperature", temperature),
+        "axial_load": check_finite("axial_load", axial_load),
+    }
+    if broadcast:
+        w, t, fa = broadcast_inputs(**arrays)
+        return w, t, fa
+    try:
+        np.broadcast_shapes(*(a.shape for a in arrays.values()))
+    except ValueError:
+        broadcast_inputs(**arrays)  # raises the error naming the shapes
+    return arrays["speed"], arrays["temperature"], arrays["axial_load"]
 
 
 def operating_state(
@@ -154,6 +177,7 @@ def operating_state(
     hertz_method: str = "houpert",
     asperity_b: float = 1.42,
     asperity_c: float = 0.8,
+    broadcast: bool = True,
 ) -> OperatingState:
     r"""Compose the physical layers at the given operating points.
 
@@ -173,13 +197,17 @@ def operating_state(
         Method of :func:`ballscrew.contact.hertz`; default ``"houpert"`` as in the study.
     asperity_b, asperity_c : float
         Constants of :func:`ballscrew.ehl.asperity_share`.
+    broadcast : bool
+        Broadcast the operating points against each other first (default).
+        ``False`` leaves each quantity with the shape of what it depends on
+        (see :func:`operating_points`); the friction models use this.
 
     Returns
     -------
     OperatingState
         ``speed``, ``temperature`` and ``axial_load`` broadcast against each other.
     """
-    w, t, fa = operating_points(speed, temperature, axial_load)
+    w, t, fa = operating_points(speed, temperature, axial_load, broadcast=broadcast)
     kin = kinematics(screw, w)
     bl = ball_loads(screw, fa)
     eta = lubricant.dynamic_viscosity(t)
@@ -243,4 +271,5 @@ def operating_state(
         kinematics=kin,
         loads=bl,
         contacts=tuple(contacts),
+        shape=np.broadcast_shapes(w.shape, t.shape, fa.shape),
     )

@@ -295,11 +295,12 @@ def harris_full(
         hertz_method=hertz_method,
         asperity_b=asperity_b,
         asperity_c=asperity_c,
+        broadcast=False,
     )
     kin = state.kinematics
     c_s, c_n = (float(c) for c in differential_sliding(screw, 1.0))  # per unit screw speed
     unit = kinematics(screw, 1.0)
-    shape = kin.screw_speed.shape
+    shape = state.shape
     out: dict[str, Any] = {"asperity": np.zeros(shape), "lubricant": np.zeros(shape)}
     for contact in state.contacts:
         if contact.balls == 0:

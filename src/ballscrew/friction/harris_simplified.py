@@ -231,6 +231,8 @@ def simplified_contact_force(
         The two terms of the force [N].
     """
     s, ws = _pressure_nodes(nodes)
+    # Not broadcast against each other: the local viscosity (the costly part)
+    # depends on the temperature and the load only, not on the speed.
     aa, bb, p0, share, rate, eta0 = (
         np.asarray(x, dtype=float) for x in (a, b, p_max, asperity_share, shear_rate, viscosity)
     )
@@ -242,8 +244,11 @@ def simplified_contact_force(
     p = p0[..., None] * s
     tau_lim = p * gamma_l
     tau_lim += tau0
-    tau_n = local_viscosity(eta0, pressure_viscosity, p, pressure_viscosity_model)
-    tau_n *= np.abs(rate)[..., None]
+    # A new array of the full shape, so the steps below may work in place.
+    tau_n = (
+        local_viscosity(eta0, pressure_viscosity, p, pressure_viscosity_model)
+        * np.abs(rate)[..., None]
+    )
     if rheology_model == "harmonic":
         # tau_N tau_lim / (tau_N + tau_lim), written to stay finite for tau_N = inf.
         if np.all(rate != 0):
@@ -370,6 +375,7 @@ def harris_simplified(
         hertz_method=hertz_method,
         asperity_b=asperity_b,
         asperity_c=asperity_c,
+        broadcast=False,
     )
     c_screw, c_nut = differential_sliding(screw, state.kinematics.screw_speed)
     factor = mean_sliding_factor()

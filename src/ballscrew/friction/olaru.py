@@ -264,6 +264,7 @@ def olaru(
         hertz_method=hertz_method,
         asperity_b=asperity_b,
         asperity_c=asperity_c,
+        broadcast=False,
     )
     dw = screw.ball_diameter
     gamma = screw.gamma
@@ -278,7 +279,7 @@ def olaru(
         "nut": 0.5 * (1.0 - gamma) * math.sin(screw.contact_angle),
     }
 
-    zeros = np.zeros(omega.shape)
+    zeros = np.zeros(state.shape)
     parts = {
         k: zeros.copy() for k in ("rolling", "curvature", "hysteresis", "pivoting", "ball_ball")
     }
@@ -294,10 +295,10 @@ def olaru(
         else:
             mu_fit = np.exp(-2.643 - 0.002 * rpm - 4.983e-7 * rpm**2)
             mus = {"screw": mu_fit, "nut": mu_fit}
-        f_r: FloatArray = np.zeros(omega.shape)
-        m_c: FloatArray = np.zeros(omega.shape)
-        m_er: FloatArray = np.zeros(omega.shape)
-        pivot_power_per_speed: FloatArray = np.zeros(omega.shape)
+        f_r: FloatArray = np.zeros(state.shape)
+        m_c: FloatArray = np.zeros(state.shape)
+        m_er: FloatArray = np.zeros(state.shape)
+        pivot_power_per_speed: FloatArray = np.zeros(state.shape)
         for side, c in pair.items():
             ratio = c.ry / c.rx
             f_r = f_r + rolling_force_houpert(
