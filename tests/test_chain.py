@@ -43,7 +43,7 @@ def test_unknown_model_and_parameter_list_the_valid_ones() -> None:
 
 
 @pytest.mark.parametrize("model", ALL)
-def test_components_add_up_finite_and_nonnegative(model: str) -> None:
+def test_components_finite_nonnegative_and_shaped(model: str) -> None:
     r = friction_torque(
         reference_screw(),
         OIL,
@@ -53,13 +53,10 @@ def test_components_add_up_finite_and_nonnegative(model: str) -> None:
         model=model,
     )
     assert r.total.shape == (5, 2, 4)
-    summed = sum(r.components.values())
-    np.testing.assert_allclose(r.total, summed, rtol=1e-15)
     for name, value in r.components.items():
+        assert value.shape == (5, 2, 4), name
         assert np.all(np.isfinite(value)) and np.all(value >= 0.0), name
     assert np.all(r.total >= 0.0)
-    # P = T |omega|
-    np.testing.assert_allclose(r.power_loss, r.total * np.abs(r.speed), rtol=1e-15)
 
 
 @pytest.mark.parametrize("model", ALL)

@@ -113,13 +113,16 @@ def test_bad_input(kwargs: dict[str, float], field: str) -> None:
         lambda_ratio(1e-6, 0.0)
 
 
-def test_hamrock_209_bearing_film_against_independent_implementation() -> None:
-    # Inner-race contact of Hamrock's ball bearing example (see
+def test_hamrock_209_bearing_film_against_a_second_implementation() -> None:
+    # Inner-race contact of Hamrock's 209 ball bearing example (geometry in
     # test_contact.py): Rx = 5.1093 mm, E' = 219.78 GPa, exact k = 9.2850,
     # w = 4545.5 N, mean rolling speed 6.2517 m/s, eta0 = 0.01 Pa·s,
-    # alpha = 2.2e-8 /Pa. A second implementation written for the research
-    # notes gives U = 5.5674e-11, W = 7.9226e-4, h_min = 0.2120 µm,
-    # h_c = 0.2679 µm (rounded to the last digit shown).
+    # alpha = 2.2e-8 /Pa. The expected values are NOT the book's printed
+    # results (not available here): they come from a second implementation of
+    # Hamrock and Dowson's formulas written separately from this package, so
+    # the test guards against slips in the package's transcription (a wrong
+    # exponent or constant changes h_min by far more than the 1e-4 µm
+    # tolerance, which is the rounding of the second implementation's output).
     rx, ep = 5.1093e-3, 219.78e9
     u = dimensionless_speed(0.01, 6.2517, ep, rx)
     w = dimensionless_load(4545.5, ep, rx)

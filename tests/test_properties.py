@@ -121,7 +121,7 @@ PROPERTY_EXAMPLES = 40  # per model and property; the closing note of issue 5 co
 @pytest.mark.parametrize("model", MODEL_NAMES)
 @settings(max_examples=PROPERTY_EXAMPLES, deadline=None)
 @given(case=operating)
-def test_every_model_finite_positive_monotonic_in_preload_and_energy_consistent(
+def test_every_model_finite_positive_and_monotonic_in_preload(
     model: str, case: dict[str, object]
 ) -> None:
     c = dict(case, model=model)
@@ -135,7 +135,6 @@ def test_every_model_finite_positive_monotonic_in_preload_and_energy_consistent(
     }
     r = ballscrew.friction_torque(screw, oil, **kw)  # type: ignore[arg-type]
     assert math.isfinite(float(r.total)) and float(r.total) >= 0.0
-    assert float(r.power_loss) == pytest.approx(float(r.total) * abs(c["speed"]), rel=1e-12)  # type: ignore[arg-type]
     more = ballscrew.friction_torque(screw.replace(preload=1.5 * screw.preload), oil, **kw)  # type: ignore[arg-type]
     if abs(c["axial"]) < 2.8 * c["preload"]:  # type: ignore[operator]
         assert float(more.total) > float(r.total)

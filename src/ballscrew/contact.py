@@ -302,7 +302,7 @@ def _assemble(
     :math:`\delta = \mathcal{F}[(9/2\mathcal{E}R)(Q/\pi k E')^2]^{1/3}`.
     """
     a1 = np.cbrt(6.0 * k**2 * big_e * r_sum / (np.pi * ep))
-    b1 = np.cbrt(6.0 * big_e * r_sum / (np.pi * k * ep))
+    b1 = a1 / k  # = (6 E Q R / pi k E')^(1/3); this form keeps b <= a to the last bit
     d1 = big_f * np.cbrt(9.0 / (2.0 * big_e * r_sum) / (np.pi * k * ep) ** 2)
     return _scale_by_load(method, q, a1, b1, d1, k)
 
