@@ -29,7 +29,7 @@ SMALL = Path(__file__).parent / "data" / "small_case.toml"
         ("17 1/GPa", "1/Pa", 17e-9),
         ("313.15 K", "degC", 40.0),
         (0.55, "", 0.55),
-        ("2", "N", 2.0),
+        ("0.55", "", 0.55),
     ],
 )
 def test_to_si(text: object, unit: str, expected: float) -> None:
@@ -40,6 +40,32 @@ def test_to_si(text: object, unit: str, expected: float) -> None:
 def test_to_si_rejects(bad: object) -> None:
     with pytest.raises(BallScrewInputError, match="field"):
         to_si("field", bad, "m")
+
+
+@pytest.mark.parametrize(
+    "bare, unit, example",
+    [
+        ("100", "rad/s", "100 rpm"),
+        (40, "m", "40 mm"),
+        ("2", "N", "2 kN"),
+        (20.0, "degC", "20.0 degC"),
+    ],
+)
+def test_bare_numbers_with_a_dimension_are_refused_with_an_example(
+    bare: object, unit: str, example: str
+) -> None:
+    # A bare "100" for a speed used to be read as 100 rad/s (955 rpm).
+    with pytest.raises(BallScrewInputError, match="bare number") as info:
+        to_si("speed", bare, unit)
+    assert f"'{example}'" in str(info.value)
+
+
+def test_bare_numbers_in_ranges_and_on_the_command_line_are_refused() -> None:
+    with pytest.raises(BallScrewInputError, match="--speed"):
+        parse_range("--speed", "0..3000:7", "rad/s")
+    with pytest.raises(BallScrewInputError, match="bare number"):
+        parse_range("--speed", "100, 200", "rad/s")
+    assert parse_range("--speed", "100, 200 rpm", "rad/s")[1] == pytest.approx(200 * math.pi / 30)
 
 
 def test_parse_range_forms() -> None:

@@ -165,3 +165,22 @@ def test_outer_product_grid_equals_the_same_points_given_one_by_one(model: str) 
         np.testing.assert_allclose(
             grid.components[key], chunked.components[key], rtol=1e-9, atol=1e-15
         )
+
+
+def test_lubricant_by_name_and_wrong_objects_are_clear() -> None:
+    by_name = friction_torque(reference_screw(), "PAO ISO VG 68", speed=10.0, temperature=40.0)
+    by_object = friction_torque(reference_screw(), OIL, speed=10.0, temperature=40.0)
+    assert OIL.name == "PAO ISO VG 68"
+    assert float(by_name.total) == float(by_object.total)
+    with pytest.raises(BallScrewInputError, match="lubricant = 'PAO 68'.*PAO ISO VG 68"):
+        friction_torque(reference_screw(), "PAO 68", speed=10.0, temperature=40.0)
+    with pytest.raises(BallScrewInputError, match="lubricant"):
+        friction_torque(reference_screw(), 68, speed=10.0, temperature=40.0)  # type: ignore[arg-type]
+    with pytest.raises(BallScrewInputError, match="screw"):
+        friction_torque("40x10", OIL, speed=10.0, temperature=40.0)  # type: ignore[arg-type]
+
+
+@pytest.mark.parametrize("model", ALL)
+def test_below_absolute_zero_is_refused_by_every_model(model: str) -> None:
+    with pytest.raises(BallScrewInputError, match="temperature = -300"):
+        friction_torque(reference_screw(), OIL, speed=1.0, temperature=-300.0, model=model)

@@ -130,3 +130,19 @@ def test_single_nut_refuses_preload() -> None:
     with pytest.raises(BallScrewInputError, match="single-4point"):
         make(nut="single", preload=100.0)
     assert make(nut="single", preload=0.0).preload == 0.0
+
+
+@pytest.mark.parametrize(
+    "field, value, hint",
+    [
+        ("pitch_diameter", 40.0, "40 mm = 0.04 m"),
+        ("lead", 10.0, "10 mm = 0.01 m"),
+        ("ball_diameter", 6.35, "6.35 mm = 0.00635 m"),
+        ("roughness_screw", 0.3, "0.3 µm = 3e-07 m"),
+    ],
+)
+def test_unit_slips_are_caught_with_a_hint(field: str, value: float, hint: str) -> None:
+    # A size typed in mm (or µm) through the API used to pass as metres.
+    with pytest.raises(BallScrewInputError, match=field) as info:
+        reference_screw().replace(**{field: value})
+    assert hint in str(info.value)

@@ -60,11 +60,14 @@ def test_spin_shares_the_screw_speed_component_along_the_normal() -> None:
 
 
 def test_small_ball_limit() -> None:
-    # gamma -> 0: balls orbit at half the screw speed, u -> omega d_m / 4.
-    s = reference_screw().replace(ball_diameter=1e-6)
+    # gamma -> 0: balls orbit at half the screw speed, u -> omega d_m / 4. The
+    # smallest plausible ball on the largest plausible screw gives gamma =
+    # 2.8e-4, so the limit holds to O(gamma): tolerance 1e-3.
+    s = reference_screw().replace(pitch_diameter=0.5, ball_diameter=2e-4, lead=0.01)
+    assert s.gamma < 3e-4
     k = kinematics(s, 2.0)
-    assert float(k.orbital_speed) == pytest.approx(1.0, rel=1e-4)
-    assert float(k.entrainment_speed) == pytest.approx(2.0 * s.pitch_diameter / 4, rel=1e-8)
+    assert float(k.orbital_speed) == pytest.approx(1.0, rel=1e-3)
+    assert float(k.entrainment_speed) == pytest.approx(2.0 * s.pitch_diameter / 4, rel=1e-3)
 
 
 def test_rpm_conversion_and_errors() -> None:

@@ -22,8 +22,11 @@ def _messages(**kwargs: object) -> list[str]:
         r = friction_torque(reference_screw(), OIL, **kwargs)  # type: ignore[arg-type]
     found = [str(w.message) for w in caught if issubclass(w.category, BallScrewValidityWarning)]
     assert found == [str(issue) for issue in r.warnings]
-    assert all(issue.model == kwargs.get("model", "complete") for issue in r.warnings)
-    return found
+    model = kwargs.get("model", "complete")
+    assert all(issue.model == model for issue in r.warnings)
+    # Each message names its model first, then the quantity.
+    assert all(m.startswith(f"{model}: ") for m in found)
+    return [m.split(": ", 1)[1] for m in found]
 
 
 def test_inside_every_range_no_warning() -> None:
@@ -97,9 +100,12 @@ def test_a_toy_model_is_one_function_and_one_registration_with_its_own_range() -
 
 def test_models_that_ignore_the_oil_do_not_warn_about_its_temperature() -> None:
     # The viscoelastic model and the catalogue formula take no lubricant data.
+    # The catalogue rule warns about its own range instead (it has no temperature term).
     for model in ("viscoelastic", "catalog"):
-        assert not [m for m in _messages(speed=10.0, temperature=-20.0, model=model)
-                    if m.startswith("temperature")]  # fmt: skip
+        found = _messages(speed=10.0, temperature=-20.0, model=model)
+        assert not [m for m in found if m.startswith("temperature [degC] =")]
+    (own,) = _messages(speed=10.0, temperature=-20.0, model="catalog")
+    assert own.startswith("temperature [degC] (catalogue rule) = -20 is outside 0 to 60")
 
 
 def test_point_by_point_warnings_are_those_of_the_array_call() -> None:

@@ -85,7 +85,7 @@ def models() -> list[ModelSpec]:
 
 def friction_torque(
     screw: BallScrew,
-    lubricant: Lubricant,
+    lubricant: Lubricant | str,
     *,
     speed: npt.ArrayLike,
     temperature: npt.ArrayLike,
@@ -100,8 +100,8 @@ def friction_torque(
     ----------
     screw : BallScrew
         Geometry, preload, materials, roughness.
-    lubricant : Lubricant
-        The oil.
+    lubricant : Lubricant or str
+        The oil, or the name of a bundled one (:func:`ballscrew.lubricants.names`).
     speed : array_like
         Angular speed of the screw :math:`\omega` [rad/s] (either sign).
     temperature : array_like
@@ -140,6 +140,18 @@ def friction_torque(
     >>> [round(float(t), 4) for t in r.total]
     [0.5642, 0.5642]
     """
+    if isinstance(lubricant, str):
+        from . import lubricants
+
+        lubricant = lubricants.get(lubricant)
+    if not isinstance(lubricant, Lubricant):
+        raise BallScrewInputError(
+            "lubricant",
+            lubricant,
+            "a Lubricant or the name of a bundled one (ballscrew.lubricants.names())",
+        )
+    if not isinstance(screw, BallScrew):
+        raise BallScrewInputError("screw", screw, "a ballscrew.BallScrew")
     spec = get_model(model)
     spec.check_parameters(parameters)
     chunk = spec.chunk if chunk_size is None else chunk_size

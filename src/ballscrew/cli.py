@@ -325,7 +325,7 @@ def torque(
                     **params,
                 )
             for message in r.warnings:
-                click.echo(f"warning: {name}: {message}", err=True)
+                click.echo(f"warning: {message}", err=True)
             for k in range(grid_w.size):
                 rows.append(
                     {

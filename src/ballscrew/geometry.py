@@ -63,6 +63,18 @@ NUT_ARRANGEMENTS: tuple[str, ...] = get_args(NutArrangement)
 _STEEL_E = 2.1e11
 _STEEL_NU = 0.3
 
+PLAUSIBLE_SIZES: tuple[tuple[str, float, float, str], ...] = (
+    ("pitch_diameter", 2e-3, 0.5, "ball screws are made from about 4 mm to 200 mm"),
+    ("lead", 2e-4, 0.5, "leads run from about 0.5 mm to 100 mm"),
+    ("ball_diameter", 2e-4, 0.1, "balls of ball screws run from about 0.8 mm to 25 mm"),
+    ("roughness_ball", 1e-9, 1e-5, "RMS roughness of ground or lapped surfaces is 0.01-2 µm"),
+    ("roughness_screw", 1e-9, 1e-5, "RMS roughness of ground or lapped surfaces is 0.01-2 µm"),
+    ("roughness_nut", 1e-9, 1e-5, "RMS roughness of ground or lapped surfaces is 0.01-2 µm"),
+)
+"""Sizes [m] outside which a :class:`BallScrew` is refused as implausible
+(name, low, high, why): generous bounds around every made screw, so that a
+value given in the wrong unit (40 for 40 mm) is caught with a hint."""
+
 
 @dataclass(frozen=True)
 class BallScrew:
@@ -133,6 +145,19 @@ class BallScrew:
     roughness_screw: float = 0.3e-6
     roughness_nut: float = 0.3e-6
 
+    def _plausible(self) -> None:
+        """Refuse sizes no ball screw has: most often a unit slip (mm given as m)."""
+        for name, low, high, made in PLAUSIBLE_SIZES:
+            value = float(getattr(self, name))
+            if low <= value <= high:
+                continue
+            hint = ""
+            for factor, unit in ((1e-3, "mm"), (1e-6, "µm"), (1e3, "km")):
+                if low <= value * factor <= high:
+                    hint = f"; {value:g} looks like {unit}: {value:g} {unit} = {value * factor:g} m"
+                    break
+            raise BallScrewInputError(name, value, f"{low:g} to {high:g} m ({made}){hint}")
+
     def __post_init__(self) -> None:
         for name in ("pitch_diameter", "lead", "ball_diameter", "loaded_turns"):
             self._scalar(name, check_positive)
@@ -169,6 +194,7 @@ class BallScrew:
                 'use nut="double" for double or lead-offset nuts, "single-4point" '
                 "for oversize balls)",
             )
+        self._plausible()
         if self.ball_diameter >= self.pitch_diameter:
             raise BallScrewInputError(
                 "ball_diameter",

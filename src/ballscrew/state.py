@@ -30,7 +30,7 @@ import numpy.typing as npt
 
 from . import ehl
 from .contact import HertzContact, hertz
-from .errors import FloatArray, broadcast_inputs, check_finite
+from .errors import FloatArray, broadcast_inputs, check_finite, check_in_range
 from .geometry import BallScrew
 from .kinematics import Kinematics, kinematics
 from .loads import BallLoads, ball_loads
@@ -154,7 +154,9 @@ def operating_points(
     """
     arrays = {
         "speed": check_finite("speed", speed),
-        "temperature": check_finite("temperature", temperature),
+        "temperature": check_in_range(
+            "temperature", temperature, -273.15, np.inf, unit="°C (above absolute zero)"
+        ),
         "axial_load": check_finite("axial_load", axial_load),
     }
     if broadcast:

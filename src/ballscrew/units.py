@@ -43,9 +43,13 @@ def to_si(field: str, value: Any, unit: str) -> float:
         Name of the input, for error messages.
     value : str or number
         A quantity with its unit ("32 mm", "1.5 kN", "45 deg", "3000 rpm",
-        "40 degC"); a bare number is taken to be in ``unit`` already.
+        "40 degC"). A bare number is accepted only for a dimensionless
+        quantity (``unit=""``): anywhere else it is an error that shows how
+        to write it, since a number without a unit ("100" for a speed) is
+        the commonest silent slip (rad/s or rpm? m or mm?).
     unit : str
-        Target unit, in pint's notation ("m", "N", "rad", "rad/s", "degC").
+        Target unit, in pint's notation ("m", "N", "rad", "rad/s", "degC"),
+        or "" for a dimensionless number.
 
     Examples
     --------
@@ -55,19 +59,29 @@ def to_si(field: str, value: Any, unit: str) -> float:
     314.1593
     >>> to_si("temperature", "313.15 K", "degC")
     40.0
+    >>> to_si("speed", "100", "rad/s")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    ballscrew.errors.BallScrewInputError: speed = '100' is not allowed: ...e.g. '100 rpm'...
     """
     ureg = registry()
     if isinstance(value, bool):
         raise BallScrewInputError(field, value, f"a quantity in units of {unit}, e.g. '1 {unit}'")
     try:
         if isinstance(value, int | float):
+            if unit:
+                raise _bare(field, value, unit)
             magnitude = float(value)
         else:
             quantity: Any = ureg.Quantity(str(value).strip())
             if quantity.unitless:  # a bare number written as text
+                if unit:
+                    raise _bare(field, value, unit)
                 magnitude = float(quantity.magnitude)
             else:
                 magnitude = float(quantity.to(unit).magnitude)
+    except BallScrewInputError:
+        raise
     except (
         pint.errors.PintError,
         ValueError,
@@ -88,6 +102,31 @@ def to_si(field: str, value: Any, unit: str) -> float:
     if not math.isfinite(magnitude):
         raise BallScrewInputError(field, value, "a finite quantity")
     return magnitude
+
+
+EXAMPLE_UNITS: dict[str, str] = {
+    "rad/s": "rpm",
+    "m": "mm",
+    "N": "kN",
+    "degC": "degC",
+    "N*m": "N*m",
+    "rad": "deg",
+    "Pa*s": "mPa*s",
+    "m**2/s": "mm**2/s",
+    "kg/m**3": "kg/m**3",
+    "1/Pa": "1/GPa",
+}
+"""The unit shown in the example of an error for each target unit."""
+
+
+def _bare(field: str, value: Any, unit: str) -> BallScrewInputError:
+    example = EXAMPLE_UNITS.get(unit, unit)
+    return BallScrewInputError(
+        field,
+        value,
+        f"a quantity with its unit, e.g. '{str(value).strip()} {example}' "
+        "(a bare number has no unit)",
+    )
 
 
 _RANGE = re.compile(

@@ -83,7 +83,8 @@ class ValidityIssue:
 
     def __str__(self) -> str:
         rng = ValidityRange(self.quantity, self.low, self.high, self.applies_to, self.source)
-        return rng.message(self.value)
+        text = rng.message(self.value)
+        return f"{self.model}: {text}" if self.model else text
 
 
 Check = Callable[

@@ -27,6 +27,7 @@ References
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
@@ -40,6 +41,7 @@ from ..errors import (
 )
 from ..geometry import BallScrew
 from ..lubricant import Lubricant
+from ..validity import ValidityIssue, ValidityRange, outside
 from ._registry import register
 
 __all__ = [
@@ -165,6 +167,30 @@ def catalog_efficiency(
     return result
 
 
+CATALOG_TEMPERATURE_RANGE = ValidityRange(
+    "temperature [degC] (catalogue rule)",
+    0.0,
+    60.0,
+    "the catalogue drag-torque rule",
+    "makers rate drag torque near room temperature with their own lubricant and the rule has "
+    "no temperature term; the bounds are this package's judgement, not a published limit",
+)
+
+
+def catalog_temperature_check(
+    screw: BallScrew,
+    lubricant: Lubricant,
+    speed: FloatArray,
+    temperature: FloatArray,
+    axial_load: FloatArray,
+    parameters: dict[str, Any],
+) -> list[ValidityIssue]:
+    """The catalogue rule's temperature range (it does not follow temperature)."""
+    return outside(
+        CATALOG_TEMPERATURE_RANGE, [float(np.min(temperature)), float(np.max(temperature))]
+    )
+
+
 @register(
     "catalog",
     title="Manufacturers' catalogue formula: preload drag torque plus load torque",
@@ -172,6 +198,7 @@ def catalog_efficiency(
     validity="preloaded precision ball screws; speed, lubricant and temperature do not enter",
     purpose="the manufacturers' rule: the catalogue drag torque and efficiency, a reference "
     "for the others",
+    checks=(catalog_temperature_check,),
 )
 def catalog(
     screw: BallScrew,
