@@ -172,7 +172,7 @@ def test_lubricant_by_name_and_wrong_objects_are_clear() -> None:
     by_object = friction_torque(reference_screw(), OIL, speed=10.0, temperature=40.0)
     assert OIL.name == "PAO ISO VG 68"
     assert float(by_name.total) == float(by_object.total)
-    with pytest.raises(BallScrewInputError, match="lubricant = 'PAO 68'.*PAO ISO VG 68"):
+    with pytest.raises(BallScrewInputError, match=r"lubricant = 'PAO 68'.*PAO ISO VG 68"):
         friction_torque(reference_screw(), "PAO 68", speed=10.0, temperature=40.0)
     with pytest.raises(BallScrewInputError, match="lubricant"):
         friction_torque(reference_screw(), 68, speed=10.0, temperature=40.0)  # type: ignore[arg-type]
