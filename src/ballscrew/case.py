@@ -20,100 +20,24 @@ the study did.
 
 from __future__ import annotations
 
+import difflib
 import tomllib
 from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
-from typing import Any, Literal
+from typing import Any
 
 import numpy as np
-from pydantic import BaseModel, ConfigDict, Field, ValidationError
+from pydantic import ValidationError
 
 from . import lubricants
+from .case_schema import SECTIONS, Assumed, CaseFile, LubricantSection
 from .errors import BallScrewInputError, FloatArray
 from .geometry import BallScrew
 from .lubricant import Lubricant
 from .units import parse_range, to_si
 
 __all__ = ["Assumption", "Case", "default_case_path", "load_case", "parse_case"]
-
-
-class _Assumed(BaseModel):
-    model_config = ConfigDict(extra="forbid")
-    value: str | float | int
-    assumed: str = Field(min_length=1)
-
-
-Value = str | float | int | _Assumed
-
-
-class _Screw(BaseModel):
-    model_config = ConfigDict(extra="forbid")
-    pitch_diameter: Value
-    lead: Value
-    ball_diameter: Value
-    contact_angle: Value = "45 deg"
-    conformity_screw: Value = 0.55
-    conformity_nut: Value = 0.55
-    loaded_turns: Value = 2.5
-    circuits: Value = 2
-    # Left out: BallScrew's own defaults apply (one place for them).
-    nut: Literal["double", "single", "single-4point"] | _Assumed | None = None
-    preload: Value | None = None
-    preload_drag_torque: Value | None = None
-    youngs_modulus_ball: Value | None = None
-    youngs_modulus_races: Value | None = None
-    poisson_ratio_ball: Value | None = None
-    poisson_ratio_races: Value | None = None
-    roughness_ball: Value | None = None
-    roughness_screw: Value | None = None
-    roughness_nut: Value | None = None
-
-
-class _Lubricant(BaseModel):
-    model_config = ConfigDict(extra="forbid")
-    name: str | _Assumed
-    nu40: Value | None = None
-    nu100: Value | None = None
-    density15: Value | None = None
-    pressure_viscosity: Value | None = None
-    limiting_shear_stress: Value | None = None
-    limiting_shear_coefficient: Value | None = None
-
-
-class _Operation(BaseModel):
-    model_config = ConfigDict(extra="forbid")
-    speed: Value = "10..3000:60 rpm"
-    temperature: Value = "20 degC"
-    axial_load: Value = "0 N"
-
-
-class _Study(BaseModel):
-    model_config = ConfigDict(extra="forbid")
-    drag_torques: list[Value] = Field(
-        default_factory=lambda: list[Value](["0.2 N*m", "0.4 N*m", "0.6 N*m"])
-    )
-    measured_range: list[Value] = Field(default_factory=lambda: list[Value](["0.2 N*m", "0.6 N*m"]))
-    temperature: Value = "20 degC"
-    lubricant_temperatures: dict[str, list[Value]] = Field(
-        default_factory=lambda: dict[str, list[Value]](
-            {
-                "PAO ISO VG 68": ["20 degC", "30 degC", "35 degC", "40 degC", "45 degC"],
-                "SAE 20": ["24 degC", "30 degC", "35 degC", "40 degC", "45 degC"],
-            }
-        )
-    )
-    model_parameters: dict[str, dict[str, Any]] = Field(default_factory=dict)
-
-
-class _CaseFile(BaseModel):
-    model_config = ConfigDict(extra="forbid")
-    title: str = "ball screw case"
-    description: str = ""
-    screw: _Screw
-    lubricant: _Lubricant
-    operation: _Operation = Field(default_factory=_Operation)
-    study: _Study = Field(default_factory=_Study)
 
 
 @dataclass(frozen=True)
@@ -126,7 +50,7 @@ class Assumption:
 
 
 def _unwrap(field: str, raw: Any, notes: list[Assumption]) -> Any:
-    if isinstance(raw, _Assumed):
+    if isinstance(raw, Assumed):
         notes.append(Assumption(field, str(raw.value), raw.assumed))
         return raw.value
     return raw
@@ -184,16 +108,24 @@ class Case:
 
 
 def _validation_error(exc: ValidationError) -> BallScrewInputError:
-    err = exc.errors()[0]
+    """One error naming the field; a misspelt key first, with the likely intended one."""
+    errors = exc.errors()
+    err = next((e for e in errors if e["type"] == "extra_forbidden"), errors[0])
     path = ".".join(str(p) for p in err["loc"] if not str(p).startswith(("function-", "_")))
     # pydantic reports union members in the path; keep the field names only.
-    parts = [p for p in path.split(".") if p not in {"str", "float", "int", "_Assumed"}]
+    parts = [p for p in path.split(".") if p not in {"str", "float", "int", "Assumed"}]
     field = ".".join(parts) or "case"
     kind = err["type"]
     allowed = {
         "missing": "a value (the field is required)",
         "extra_forbidden": "no such field (check the spelling)",
     }.get(kind, err["msg"])
+    if kind == "extra_forbidden":
+        section = parts[0] if len(parts) > 1 else ""
+        model = SECTIONS.get(section, CaseFile)
+        close = difflib.get_close_matches(parts[-1], list(model.model_fields), n=1)
+        if close:
+            allowed = f"no such field; did you mean {'.'.join([*parts[:-1], close[0]])}?"
     value = "(missing)" if kind == "missing" else err.get("input", "")
     return BallScrewInputError(field, value, allowed)
 
@@ -205,7 +137,7 @@ def parse_case(text: str, *, source: str = "case") -> Case:
     except tomllib.TOMLDecodeError as exc:
         raise BallScrewInputError(source, "(file)", f"valid TOML ({exc})") from None
     try:
-        data = _CaseFile.model_validate(raw)
+        data = CaseFile.model_validate(raw)
     except ValidationError as exc:
         raise _validation_error(exc) from None
     notes: list[Assumption] = []
@@ -290,7 +222,11 @@ def parse_case(text: str, *, source: str = "case") -> Case:
         axial_load=np.asarray(axial),
         drag_torques=drag,
         measured_range=band,
-        study_temperature=si("study", "temperature", st.temperature, "degC"),
+        study_temperature=(
+            float(temperature[0])
+            if st.temperature is None
+            else si("study", "temperature", st.temperature, "degC")
+        ),
         lubricant_temperatures=temps,
         model_parameters={k: dict(v) for k, v in st.model_parameters.items()},
         assumptions=tuple(notes),
@@ -298,7 +234,7 @@ def parse_case(text: str, *, source: str = "case") -> Case:
     )
 
 
-def _lubricant(section: _Lubricant, notes: list[Assumption]) -> Lubricant:
+def _lubricant(section: LubricantSection, notes: list[Assumption]) -> Lubricant:
     name = str(_unwrap("lubricant.name", section.name, notes))
     custom = {
         "nu40": ("m**2/s", section.nu40),
@@ -313,10 +249,24 @@ def _lubricant(section: _Lubricant, notes: list[Assumption]) -> Lubricant:
         for key, (unit, raw) in custom.items()
         if raw is not None
     }
+    own = {"nu40", "nu100", "density15"}
+    try:
+        lubricants.get(name)
+        bundled = True
+    except BallScrewInputError:
+        bundled = False
+    if not bundled and not own <= set(given):
+        missing = sorted(own - set(given))
+        raise BallScrewInputError(
+            f"lubricant.{missing[0]}",
+            "(missing)",
+            f"a value: {name!r} is not a bundled lubricant ({', '.join(lubricants.names())}), "
+            f"so your own oil needs {', '.join(sorted(own))} (missing: {', '.join(missing)})",
+        )
     try:
         if not given:
             return lubricants.get(name)
-        if {"nu40", "nu100", "density15"} <= set(given):
+        if own <= set(given):
             return Lubricant.from_viscosities(
                 name,
                 given.pop("nu40"),

@@ -24,6 +24,7 @@ from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeEl
 from rich.table import Table
 
 from . import __version__, lubricants
+from .cli_case import case_command
 from .contact import HERTZ_METHODS, hertz
 from .errors import BallScrewInputError, BallScrewValidityWarning
 from .examples import reference_screw
@@ -470,6 +471,9 @@ def lubricants_command() -> None:
             oil.source,
         )
     _stdout().print(table)
+
+
+cli.add_command(case_command)
 
 
 def _terminate(signum: int, frame: object) -> None:

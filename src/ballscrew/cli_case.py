@@ -1,0 +1,114 @@
+"""``ballscrew case``: write a case-file template, check a case file, list its keys."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import click
+from rich.console import Console
+from rich.table import Table
+
+__all__ = ["case_command"]
+
+
+@click.command("case")
+@click.option("--template", "want_template", is_flag=True, help="Write a commented template.")
+@click.option(
+    "--out",
+    "out_file",
+    type=click.Path(dir_okay=False),
+    default=None,
+    help="File for --template or --reference (default: print it).",
+)
+@click.option(
+    "--check",
+    "check_file",
+    type=click.Path(dir_okay=False),
+    default=None,
+    help="Validate a case file and print its resolved values in SI and usual units.",
+)
+@click.option("--reference", "want_reference", is_flag=True, help="Every key as a Markdown table.")
+def case_command(
+    want_template: bool, out_file: str | None, check_file: str | None, want_reference: bool
+) -> None:
+    """Write, check or document case files (TOML with units).
+
+    \b
+    Examples:
+      ballscrew case --template --out my_screw.toml   # every key, commented
+      ballscrew case --check my_screw.toml            # resolved values, or the error
+      ballscrew torque --case my_screw.toml --speed "100, 1000 rpm"
+    """  # noqa: D301 - click needs the literal \b to keep the example lines
+    from .case_schema import reference_markdown, template
+    from .files import atomic_write
+
+    if sum([want_template, want_reference, check_file is not None]) != 1:
+        raise click.UsageError("give exactly one of --template, --check FILE, --reference")
+    if want_template or want_reference:
+        text = template() if want_template else reference_markdown()
+        if out_file:
+            atomic_write(Path(out_file), text.encode("utf-8"))
+            click.echo(f"wrote {out_file}", err=True)
+        else:
+            click.echo(text, nl=False)
+        return
+    assert check_file is not None
+    _print_resolved(check_file)
+
+
+def _print_resolved(path: str) -> None:
+    from .case import load_case
+
+    case = load_case(path)
+    s, oil = case.screw, case.lubricant
+    rows = [
+        ("screw", "pitch diameter", f"{s.pitch_diameter * 1e3:.4g} mm"),
+        ("screw", "lead", f"{s.lead * 1e3:.4g} mm"),
+        ("screw", "ball diameter", f"{s.ball_diameter * 1e3:.4g} mm"),
+        ("screw", "contact angle", f"{math.degrees(s.contact_angle):.4g} deg"),
+        ("screw", "conformity screw / nut", f"{s.conformity_screw:.4g} / {s.conformity_nut:.4g}"),
+        ("screw", "loaded turns x circuits", f"{s.loaded_turns:g} x {s.circuits}"),
+        ("screw", "nut", s.nut),
+        ("screw", "preload", f"{s.preload:.4g} N"),
+        ("screw", "lead angle", f"{math.degrees(s.lead_angle):.4g} deg"),
+        ("screw", "loaded balls per nut", f"{s.balls_per_nut}"),
+        ("screw", "gamma = D_w cos(alpha) / d_m", f"{s.gamma:.4g}"),
+        (
+            "screw",
+            "roughness ball / screw / nut",
+            f"{s.roughness_ball * 1e6:.3g} / {s.roughness_screw * 1e6:.3g} / "
+            f"{s.roughness_nut * 1e6:.3g} um",
+        ),
+        ("lubricant", "name", oil.name),
+        (
+            "lubricant",
+            "viscosity at 40 / 100 degC",
+            f"{oil.nu40 * 1e6:.4g} / {oil.nu100 * 1e6:.4g} cSt",
+        ),
+        ("lubricant", "pressure-viscosity alpha", f"{oil.pressure_viscosity * 1e9:.4g} 1/GPa"),
+        ("operation", "speeds", _span(case.speed * 30.0 / math.pi, "rpm")),
+        ("operation", "temperatures", _span(case.temperature, "degC")),
+        ("operation", "axial loads", _span(case.axial_load, "N")),
+    ]
+    table = Table(title=f"{case.title}: resolved from {path}")
+    for column in ("section", "quantity", "value"):
+        table.add_column(column)
+    for row in rows:
+        table.add_row(*row)
+    console = Console()
+    console.print(table)
+    if case.assumptions:
+        console.print(f"{len(case.assumptions)} value(s) marked as assumed:")
+        for a in case.assumptions:
+            console.print(f"  {a.field} = {a.value}: {a.reason}", highlight=False)
+    console.print("case file OK", style="bold green")
+
+
+def _span(values: object, unit: str) -> str:
+    import numpy as np
+
+    v = np.asarray(values, dtype=float)
+    if v.size == 1:
+        return f"{float(v[0]):.4g} {unit}"
+    return f"{v.size} values, {float(v.min()):.4g} to {float(v.max()):.4g} {unit}"

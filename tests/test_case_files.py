@@ -1,0 +1,93 @@
+"""Case files written without reading the code: template, check, reference, errors."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from ballscrew import friction_torque
+from ballscrew.case import load_case, parse_case
+from ballscrew.case_schema import SECTIONS, CaseFile, reference_markdown, reference_rows, template
+from ballscrew.cli import main
+from ballscrew.errors import BallScrewInputError
+
+DOCS = Path(__file__).parents[1] / "docs" / "case-files.md"
+
+
+def run(args: list[str], capsys: pytest.CaptureFixture[str]) -> tuple[int, str, str]:
+    with pytest.raises(SystemExit) as info:
+        main(args)
+    out = capsys.readouterr()
+    code = info.value.code
+    return (code if isinstance(code, int) else 0), out.out, out.err
+
+
+def test_template_round_trips_through_check_and_torque(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    file = tmp_path / "my_screw.toml"
+    code, _, _ = run(["case", "--template", "--out", str(file)], capsys)
+    assert code == 0 and file.exists()
+    code, out, _ = run(["case", "--check", str(file)], capsys)
+    assert code == 0 and "case file OK" in out
+    assert "40 mm" in out and "2000 N" in out  # the template's examples, resolved
+    csv_file = tmp_path / "t.csv"
+    code, out, err = run(
+        ["torque", "--case", str(file), "--speed", "100, 1000 rpm", "--csv", str(csv_file)],
+        capsys,
+    )
+    assert code == 0, err
+    # The same torque as the API on the same screw (the template's 40 x 10 mm example).
+    case = load_case(file)
+    api = friction_torque(
+        case.screw, case.lubricant, speed=[100 * 0.10471975511965977], temperature=20.0
+    )
+    assert f"{float(api.total[0]):.5g}" in out
+
+
+def test_every_schema_key_is_in_the_template_and_the_reference() -> None:
+    text = template()
+    table = reference_markdown()
+    keys = [(name, key) for name, model in SECTIONS.items() for key in model.model_fields]
+    keys += [("", key) for key in CaseFile.model_fields if key not in SECTIONS]
+    assert len(reference_rows()) == len(keys)
+    for _section, key in keys:
+        assert f"{key} = " in text, key
+        assert f"`{key}`" in table, key
+    for row in reference_rows():
+        assert row.description, row.key  # every key documented
+
+
+def test_documentation_table_is_the_generated_one() -> None:
+    # docs/case-files.md carries the table between markers; regenerate it with
+    # `ballscrew case --reference` when the schema changes.
+    text = DOCS.read_text(encoding="utf-8")
+    start = text.index("<!-- reference:start -->\n") + len("<!-- reference:start -->\n")
+    end = text.index("<!-- reference:end -->")
+    assert text[start:end] == reference_markdown()
+
+
+@pytest.mark.parametrize(
+    "edit, field, words",
+    [
+        (("lead = ", "leed = "), "screw.leed", "did you mean screw.lead?"),
+        (('name = "PAO ISO VG 68"', 'name = "my oil"\nnu40 = "68 cSt"'), "lubricant.density15",
+         "missing: density15, nu100"),
+        (('pitch_diameter = "40 mm"', "pitch_diameter = 40"), "screw.pitch_diameter",
+         "bare number"),
+        (('pitch_diameter = "40 mm"', 'pitch_diameter = "40 m"'), "screw.pitch_diameter",
+         "looks like mm"),
+    ],
+)  # fmt: skip
+def test_case_errors_name_the_key(edit: tuple[str, str], field: str, words: str) -> None:
+    text = template().replace(*edit)
+    with pytest.raises(BallScrewInputError) as info:
+        parse_case(text)
+    assert info.value.field == field
+    assert words in str(info.value)
+
+
+def test_case_needs_exactly_one_command(capsys: pytest.CaptureFixture[str]) -> None:
+    code, _, err = run(["case"], capsys)
+    assert code == 2 and "exactly one" in err
