@@ -69,3 +69,49 @@ def test_no_fixed_claim_that_the_simplified_model_is_low(study: StudyResult) -> 
     for line in study.findings:
         if "but low" in line:
             assert line.startswith("The study found") and "the simplified model is" in line
+
+
+USER_CASE = """
+title = "25 x 5 single nut, oversize balls"
+[screw]
+pitch_diameter = "25.4 mm"
+lead = "5 mm"
+ball_diameter = "3.175 mm"
+nut = "single-4point"
+preload = "400 N"
+[lubricant]
+name = "mineral ISO VG 68"
+[operation]
+speed = "50..2000:4 rpm"
+temperature = "40 degC"
+axial_load = "1.5 kN"
+"""
+
+
+def test_a_study_of_another_case_is_that_case_s_study(study: StudyResult, tmp_path: object) -> None:
+    from ballscrew import friction_torque
+    from ballscrew.case import parse_case
+    from ballscrew.report import write_report
+
+    case = parse_case(USER_CASE)
+    result = run_study(case)
+    assert not result.reproduction and study.reproduction
+    # No measured band of another machine, no statements about the study's findings.
+    assert case.measured_range == ()
+    assert not any("The study found" in f or "study's finding" in f for f in result.findings)
+    # The case's temperature and load are the figures' (not the study's 20 °C and 0 N).
+    fig9 = next(f for f in result.figures if f.key == "fig9_all_models")
+    complete = next(s for s in fig9.series if s.model == "complete")
+    assert complete.temperature == 40.0
+    direct = friction_torque(case.screw, case.lubricant, speed=case.speed, temperature=40.0,
+                             axial_load=1500.0)  # fmt: skip
+    np.testing.assert_allclose(complete.torque, direct.total, rtol=1e-12)
+    assert "axial load 1500 N" in fig9.caption and "40 °C" in fig9.caption
+    # The preload sweep is the case's own: 0.5, 1 and 1.5 times its 400 N.
+    assert sorted(result.preloads.values()) == pytest.approx([200.0, 400.0, 600.0])
+    # The report says what it is and draws no band.
+    out = tmp_path / "report"  # type: ignore[operator]
+    write_report(result, out)
+    text = (out / "report.md").read_text(encoding="utf-8")
+    assert "Reproduction of" not in text and "Kamalzadeh" not in text and "nan" not in text
+    assert "25 x 5 single nut" in text

@@ -211,7 +211,8 @@ def parse_case(text: str, *, source: str = "case") -> Case:
         for name, values in st.lubricant_temperatures.items()
     }
     for name in temps:
-        lubricants.get(name)  # unknown names fail here, listing the bundled ones
+        if name != lub.name:
+            lubricants.get(name)  # unknown names fail here, listing the bundled ones
     return Case(
         title=data.title,
         description=data.description,

@@ -143,9 +143,11 @@ class StudySection(BaseModel):
 
     model_config = ConfigDict(extra="forbid")
     drag_torques: list[Value] = _f(
-        ["0.2 N*m", "0.4 N*m", "0.6 N*m"],
+        [],
         "torque",
-        "catalogue drag torques whose preloads the study compares",
+        "catalogue drag torques whose preloads the study compares (default: the case's preload "
+        "x 0.5, 1 and 1.5)",
+        ["0.2 N*m", "0.4 N*m", "0.6 N*m"],
     )
     measured_range: list[Value] = _f(
         [],
@@ -160,12 +162,11 @@ class StudySection(BaseModel):
         "20 degC",
     )
     lubricant_temperatures: dict[str, list[Value]] = _f(
-        {
-            "PAO ISO VG 68": ["20 degC", "30 degC", "35 degC", "40 degC", "45 degC"],
-            "SAE 20": ["24 degC", "30 degC", "35 degC", "40 degC", "45 degC"],
-        },
+        {},
         "temperature",
-        "lubricant name -> temperatures of the lubricant comparison",
+        "lubricant name -> temperatures of the lubricant comparison (default: the case's "
+        "lubricant at 20, 30, 40 and 50 degC)",
+        {"PAO ISO VG 68": ["20 degC", "40 degC"], "SAE 20": ["24 degC", "40 degC"]},
     )
     model_parameters: dict[str, dict[str, Any]] = _f(
         {},

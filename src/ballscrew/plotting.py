@@ -31,7 +31,10 @@ _STYLE: dict[str, Any] = {
 
 
 def render(
-    fig: Figure, measured_range: tuple[float, ...] = (), measured: MeasuredCurve | None = None
+    fig: Figure,
+    measured_range: tuple[float, ...] = (),
+    measured: MeasuredCurve | None = None,
+    band_source: str = "given in the case",
 ) -> MplFigure:
     """Draw one study figure: torque against screw speed, measured band and curve."""
     with mpl.rc_context(_STYLE):  # type: ignore[arg-type]
@@ -45,7 +48,7 @@ def render(
                 hi,
                 color="0.85",
                 zorder=0,
-                label=f"measured range {lo:g} to {hi:g} N·m (Kamalzadeh, via the study)",
+                label=f"measured range {lo:g} to {hi:g} N·m ({band_source})",
             )
         if fig.stacked:
             ax.stackplot(

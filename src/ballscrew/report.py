@@ -128,8 +128,13 @@ def _document(result: StudyResult) -> list[_Block]:
         _Block("h1", f"Ball screw friction study: {case.title}"),
         _Block(
             "p",
-            f"Reproduction of J. Sušeň, 'A Study on the Ball Screw Friction Torque', "
-            f"computed by ballscrew {__version__}. {' '.join(case.description.split())}".strip(),
+            (
+                "Reproduction of J. Sušeň, 'A Study on the Ball Screw Friction Torque', "
+                if result.reproduction
+                else "The friction models of J. Sušeň's study ('A Study on the Ball Screw "
+                "Friction Torque') and the complete model, applied to this case, "
+            )
+            + f"computed by ballscrew {__version__}. {' '.join(case.description.split())}".strip(),
         ),
         _Block("h2", "Findings"),
         _Block("ul", list(result.findings)),
@@ -163,6 +168,7 @@ def _document(result: StudyResult) -> list[_Block]:
             "operation.speed",
         ),
         ("temperature (Figs. 3-7)", f"{case.study_temperature:g} °C", "study.temperature"),
+        ("axial load", f"{result.axial_load:g} N", "operation.axial_load"),
     ]
     blocks.append(
         _Block(
@@ -281,11 +287,15 @@ def _document(result: StudyResult) -> list[_Block]:
         _Block(
             "ul",
             [f"{a.field} = {a.value}: {a.reason}" for a in case.assumptions]
-            + [
-                "Kamalzadeh's measured curve is not public as numbers; the report "
-                "shows the range the study states (grey band) and overlays a "
-                "measured curve only when one is given (--measured)."
-            ],
+            + (
+                [
+                    "Kamalzadeh's measured curve is not public as numbers; the report "
+                    "shows the range the study states (grey band) and overlays a "
+                    "measured curve only when one is given (--measured)."
+                ]
+                if result.reproduction
+                else []
+            ),
         )
     )
     blocks.append(_Block("h2", "Model parameters"))
@@ -357,7 +367,8 @@ def write_report(
     images: dict[str, bytes] = {}
     for fig in result.figures:
         step(f"drawing {fig.key}")
-        drawing = render(fig, result.case.measured_range, result.measured)
+        band_source = "Kamalzadeh, via the study" if result.reproduction else "given in the case"
+        drawing = render(fig, result.case.measured_range, result.measured, band_source)
         png = figure_bytes(drawing, "png")
         images[fig.key] = png
         for path, data in (
@@ -369,7 +380,7 @@ def write_report(
             written.append(path)
     step("writing the report")
     blocks = _document(result)
-    title = f"Ball screw friction study: {result.case.title}"
+    title = f"Ball screw friction study: {result.case.title}"  # same as the h1
     for path, text in (
         (folder / "report.md", _md(blocks)),
         (folder / "report.html", _html(blocks, title, images)),

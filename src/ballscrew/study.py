@@ -24,6 +24,7 @@ from .case import Case
 from .chain import friction_torque
 from .errors import BallScrewValidityWarning, FloatArray
 from .friction.catalog import preload_from_drag_torque
+from .lubricant import Lubricant
 from .measured import MeasuredCurve, error_metrics
 from .validity import ValidityIssue
 
@@ -70,10 +71,38 @@ class StudyResult:
     measured: MeasuredCurve | None
     metrics: dict[str, dict[str, float]]
     validity: tuple[str, ...] = ()
+    reproduction: bool = False
+    axial_load: float = 0.0
 
 
 def _params(case: Case, model: str) -> dict[str, Any]:
     return dict(case.model_parameters.get(model, {}))
+
+
+def reproduces_study(case: Case) -> bool:
+    """True for the study's own case (the bundled file, unchanged).
+
+    Only then does the report compare with the study's findings and its
+    measured band; any other case gets a study of its own screw.
+    """
+    from .case import default_case_path
+
+    return case.text == default_case_path().read_text(encoding="utf-8")
+
+
+def _preloads(case: Case) -> dict[float, float]:
+    """Catalogue drag torque -> preload of the compared preloads.
+
+    The case's ``drag_torques`` if given; otherwise the case's own preload
+    times 0.5, 1 and 1.5, keyed by their catalogue drag torque.
+    """
+    from .friction.catalog import preload_torque
+
+    screw = case.screw
+    if case.drag_torques:
+        return {t: float(preload_from_drag_torque(t, screw)) for t in sorted(case.drag_torques)}
+    forces = [screw.preload * k for k in (0.5, 1.0, 1.5)] if screw.preload > 0 else [0.0]
+    return {float(preload_torque(f, screw.lead, screw.lead_angle, 0.05)): f for f in forces}
 
 
 def run_study(
@@ -125,13 +154,18 @@ def _run(
     """
     step = progress or (lambda _text: None)
     screw0 = case.screw
-    drag = sorted(case.drag_torques)
-    preloads = {t: float(preload_from_drag_torque(t, screw0)) for t in drag}
+    preloads = _preloads(case)
     ref_preload = screw0.preload
     speed = case.speed
     speed_rpm = speed / RPM
     temp = case.study_temperature
     oil = case.lubricant
+    load = float(case.axial_load.flat[0])
+    at = f"{oil.name} at {temp:g} °C" + (f", axial load {load:g} N" if load else "")
+    lubricant_temperatures = case.lubricant_temperatures or {oil.name: (20.0, 30.0, 40.0, 50.0)}
+
+    def lubricant_named(name: str) -> Lubricant:
+        return oil if name == oil.name else lubricants.get(name)
 
     def series(
         model: str,
@@ -141,7 +175,7 @@ def _run(
         temperature: float | None = None,
         **extra: Any,
     ) -> Series:
-        lub = oil if lubricant_name is None else lubricants.get(lubricant_name)
+        lub = oil if lubricant_name is None else lubricant_named(lubricant_name)
         t = temp if temperature is None else temperature
         params = _params(case, model)
         params.update(extra)
@@ -150,7 +184,7 @@ def _run(
             lub,
             speed=speed,
             temperature=t,
-            axial_load=0.0,
+            axial_load=load,
             model=model,
             **params,
         )
@@ -168,8 +202,7 @@ def _run(
         Figure(
             "fig3_olaru",
             "Olaru's model (Fig. 3)",
-            f"Olaru et al.'s model at the reference preload ({ref_label}), "
-            f"{oil.name} at {temp:g} °C.",
+            f"Olaru et al.'s model at the reference preload ({ref_label}), {at}.",
             (series("olaru", ref_preload, f"Olaru, {ref_label}"),),
         )
     )
@@ -195,7 +228,7 @@ def _run(
         Figure(
             "fig6_simplified",
             "Simplified model (Fig. 6)",
-            f"The study's simplified model at the reference preload, {oil.name} at {temp:g} °C.",
+            f"The study's simplified model at the reference preload, {at}.",
             (series("harris-simplified", ref_preload, f"simplified, {ref_label}"),),
         )
     )
@@ -210,8 +243,8 @@ def _run(
     step("Fig. 8: lubricants and temperatures")
     lub_series = []
     table: list[tuple[str, float, float]] = []
-    for name, temps in case.lubricant_temperatures.items():
-        lub = lubricants.get(name)
+    for name, temps in lubricant_temperatures.items():
+        lub = lubricant_named(name)
         for t in temps:
             lub_series.append(
                 series(
@@ -228,7 +261,7 @@ def _run(
             "fig8_lubricants",
             "Simplified model: lubricants and temperatures (Fig. 8, Table 1)",
             f"Simplified model at the reference preload ({ref_label}) for each lubricant and "
-            "temperature of the study's Table 1.",
+            "temperature of the table below.",
             tuple(lub_series),
         )
     )
@@ -248,8 +281,7 @@ def _run(
         Figure(
             "fig9_all_models",
             "All models and the catalogue drag torque",
-            f"Every model at the reference preload ({ref_label}), {oil.name} at {temp:g} °C; "
-            "logarithmic torque axis.",
+            f"Every model at the reference preload ({ref_label}), {at}; logarithmic torque axis.",
             all_series,
             log_y=True,
         )
@@ -278,7 +310,9 @@ def _run(
     )
     step("Loss budget of the complete model")
     params = _params(case, "complete")
-    budget = friction_torque(screw0, oil, speed=speed, temperature=temp, model="complete", **params)
+    budget = friction_torque(
+        screw0, oil, speed=speed, temperature=temp, axial_load=load, model="complete", **params
+    )
     budget_series = tuple(
         Series(name.replace("_", "-"), "complete", speed_rpm, value, ref_preload, temp, oil.name,
                params)
@@ -290,7 +324,7 @@ def _run(
             "fig11_complete_budget",
             "Loss budget of the complete model",
             f"The complete model's torque split by mechanism, stacked, at the reference preload "
-            f"({ref_label}), {oil.name} at {temp:g} °C.",
+            f"({ref_label}), {at}.",
             budget_series,
             stacked=True,
         )
@@ -302,11 +336,18 @@ def _run(
         for s in all_series:
             params = _params(case, s.model)
             model_torque = friction_torque(
-                screw0, oil, speed=measured.speed, temperature=temp, model=s.model, **params
+                screw0,
+                oil,
+                speed=measured.speed,
+                temperature=temp,
+                axial_load=load,
+                model=s.model,
+                **params,
             ).total
             metrics[s.model] = error_metrics(model_torque, measured.torque)
 
-    findings = _findings(case, figures, preloads)
+    reproduction = reproduces_study(case)
+    findings = _findings(case, figures, preloads, lubricant_temperatures, reproduction)
     return StudyResult(
         case=case,
         preloads=preloads,
@@ -315,6 +356,8 @@ def _run(
         findings=tuple(findings),
         measured=measured,
         metrics=metrics,
+        reproduction=reproduction,
+        axial_load=load,
     )
 
 
@@ -353,8 +396,10 @@ def _findings(
     case: Case,
     figures: list[Figure],
     preloads: dict[float, float],
+    lubricant_temperatures: dict[str, tuple[float, ...]],
+    reproduction: bool,
 ) -> list[str]:
-    """Statements computed from the series, set beside what the study found."""
+    """Statements computed from the series; for the study's own case, set beside its findings."""
     lo, hi = (
         (min(case.measured_range), max(case.measured_range))
         if case.measured_range
@@ -363,9 +408,19 @@ def _findings(
     by_key = {f.key: f for f in figures}
     models = {s.model: s for s in by_key["fig9_all_models"].series}
     out = []
+    banded = math.isfinite(lo) and math.isfinite(hi)
     for name in ("olaru", "viscoelastic", "harris-simplified", "complete"):
-        out.append(f"{name}: {_span(models[name])}, {_relation(models[name], lo, hi)}.")
-    if math.isfinite(lo) and math.isfinite(hi):
+        where = f", {_relation(models[name], lo, hi)}" if banded else ""
+        out.append(f"{name}: {_span(models[name])}{where}.")
+    if math.isfinite(lo) and math.isfinite(hi) and not reproduction:
+        overall = min(
+            (m for m in models if m != "catalog"), key=lambda m: _distance(models[m], lo, hi)
+        )
+        out.append(
+            f"Of the physical models, {overall} is the closest to the measured band (median "
+            f"distance from its middle: a factor {10 ** _distance(models[overall], lo, hi):.2g})."
+        )
+    if math.isfinite(lo) and math.isfinite(hi) and reproduction:
         study = ("olaru", "viscoelastic", "harris-simplified")
         closest = min(study, key=lambda m: _distance(models[m], lo, hi))
         # The catalogue value is left out: the case's preload was derived from it.
@@ -391,23 +446,27 @@ def _findings(
     ratio = float(np.mean(pre[-1].torque / pre[0].torque))
     forces = ", ".join(f"{f:.0f} N" for f in preloads.values())
     out.append(
-        f"Preload: the drag torques {', '.join(f'{t:g}' for t in preloads)} N·m correspond to "
+        f"Preload: the drag torques {', '.join(f'{t:.3g}' for t in preloads)} N·m correspond to "
         f"preloads of {forces} (catalogue formula); between the lowest and highest the simplified "
-        f"model's torque changes by a factor {ratio:.2f} on average. The study found the preload "
-        "to dominate the uncertainty."
+        f"model's torque changes by a factor {ratio:.2f} on average."
+        + (" The study found the preload to dominate the uncertainty." if reproduction else "")
     )
     lub_series = by_key["fig8_lubricants"].series
-    for name in case.lubricant_temperatures:
+    for name in lubricant_temperatures:
         mine = [s for s in lub_series if s.lubricant == name]
         if len(mine) >= 2:
             change = float(np.mean(mine[-1].torque / mine[0].torque) - 1.0) * 100
             verdict = "agrees with" if change < 0.0 else "does not agree with"
-            out.append(
+            text = (
                 f"{name}: from {mine[0].temperature:g} to {mine[-1].temperature:g} °C the "
-                f"simplified model's torque changes by {change:+.1f} % on average, which "
-                f"{verdict} the study's finding that rising temperature lowers the friction "
-                "slightly."
+                f"simplified model's torque changes by {change:+.1f} % on average"
             )
+            if reproduction:
+                text += (
+                    f", which {verdict} the study's finding that rising temperature lowers the "
+                    "friction slightly"
+                )
+            out.append(text + ".")
     budget = by_key["fig11_complete_budget"].series
     total = sum(float(np.mean(b.torque)) for b in budget)
     shares = ", ".join(f"{b.label} {float(np.mean(b.torque)) / total:.0%}" for b in budget)

@@ -122,7 +122,7 @@ RANGES: dict[str, ValidityRange] = {
             1.0,
             10.0,
             "Houpert's Hertz fits",
-            "error under 2 % there, 13 % at 72 (ballscrew.contact)",
+            "error under 2 % there, 13 % at a ratio of 72; see ballscrew.contact",
         ),
         ValidityRange(
             "speed factor d_m*n [mm*rpm]",
