@@ -79,8 +79,15 @@ def test_torque_outputs_agree_with_the_library(
     assert len(rows) == 2 * 2 * 2 * 2
     assert set(rows[0]) >= {"speed [rpm]", "torque [N*m]", "power loss [W]", "efficiency [-]"}
     payload = json.loads(json_file.read_text())
-    assert payload["version"] == __version__ and len(payload["rows"]) == 16
+    meta = payload["provenance"]
+    assert meta["ballscrew"] == __version__ and len(payload["rows"]) == 16
     case = load_case(SMALL)
+    # The provenance carries the resolved inputs and each model's parameters.
+    assert meta["screw"]["pitch_diameter"] == case.screw.pitch_diameter
+    assert meta["case"]["text"] == case.text
+    assert set(meta["models"]) == {"olaru", "catalog"}
+    assert meta["models"]["catalog"]["parameters"]["preload_coefficient"] == 0.05
+    assert json.loads((tmp_path / "t.csv.meta.json").read_text())["provenance"] == meta
     for row in rows:
         r = friction_torque(
             case.screw,
@@ -90,7 +97,8 @@ def test_torque_outputs_agree_with_the_library(
             axial_load=float(row["axial load [N]"]),
             model=row["model"],
         )
-        assert float(row["torque [N*m]"]) == pytest.approx(float(r.total), rel=1e-12)
+        # Results are written to 7 significant digits.
+        assert float(row["torque [N*m]"]) == pytest.approx(float(r.total), rel=6e-7)
 
 
 def test_study_writes_a_complete_reproducible_report(
@@ -209,3 +217,26 @@ def test_torque_rerun_gives_byte_identical_csv_and_json(
         assert code == 0
         outputs.append((csv_file.read_bytes(), json_file.read_bytes()))
     assert outputs[0] == outputs[1]
+
+
+def test_torque_csv_for_a_decimal_comma_spreadsheet_and_a_pivot(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    csv_file = tmp_path / "wide.csv"
+    args = ["torque", "--case", str(SMALL), "--model", "complete", "--model", "catalog"]
+    args += ["--speed", "0..3000:31 rpm", "--axial-load", "0, 2 kN", "--csv", str(csv_file)]
+    args += ["--csv-layout", "wide", "--csv-dialect", "semicolon-decimal-comma"]
+    code, out, err = run(args, capsys)
+    assert code == 0, err
+    # 124 rows: the terminal shows torque as speeds x models, and says so.
+    assert "--table full" in out and "complete" in out
+    lines = csv_file.read_text(encoding="utf-8").splitlines()
+    header = lines[0].split(";")
+    assert header == ["speed [rpm]", "temperature [degC]", "axial load [N]",
+                      "torque complete [N*m]", "torque catalog [N*m]"]  # fmt: skip
+    assert len(lines) == 1 + 31 * 2
+    first = lines[3].split(";")  # 100 rpm, 20 degC, 0 N: rounded at output, decimal comma
+    assert first[:3] == ["100,0", "20,0", "0,0"]
+    case = load_case(SMALL)
+    api = friction_torque(case.screw, case.lubricant, speed=100 * math.pi / 30, temperature=20.0)
+    assert float(first[3].replace(",", ".")) == pytest.approx(float(api.total), rel=6e-7)

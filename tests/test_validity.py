@@ -17,11 +17,15 @@ OIL = lubricants.get("PAO ISO VG 68")
 
 
 def _messages(**kwargs: object) -> list[str]:
+    from ballscrew import chain
+
+    chain._NOTED.clear()  # routine issues are told once per session: start afresh
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", BallScrewValidityWarning)
         r = friction_torque(reference_screw(), OIL, **kwargs)  # type: ignore[arg-type]
     found = [str(w.message) for w in caught if issubclass(w.category, BallScrewValidityWarning)]
-    assert found == [str(issue) for issue in r.warnings]
+    assert found == [issue.note() for issue in r.warnings]
+    found = [f.split(" (usual for ball screws: ")[0] for f in found]
     model = kwargs.get("model", "complete")
     assert all(issue.model == model for issue in r.warnings)
     # Each message names its model first, then the quantity.
@@ -136,3 +140,23 @@ def test_point_by_point_warnings_are_those_of_the_array_call() -> None:
     assert set(by_quantity) == {i.quantity for i in whole.warnings}
     for issue in whole.warnings:
         assert any(v == issue.value for v in by_quantity[issue.quantity])
+
+
+def test_routine_film_ranges_are_told_once_and_recorded_every_time() -> None:
+    # Every ordinary ball screw leaves the film formulas' U and W ranges: the
+    # first call tells it as a note with the reason, later calls stay quiet,
+    # and every result still records the issue with its value.
+    from ballscrew import chain
+
+    chain._NOTED.clear()
+    results, told = [], []
+    for rpm in (500.0, 1000.0):
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always", BallScrewValidityWarning)
+            results.append(friction_torque(reference_screw(), OIL, speed=rpm * np.pi / 30,
+                                           temperature=40.0))  # fmt: skip
+        told.append([str(w.message) for w in caught])
+    assert any("dimensionless speed U" in m and "usual for ball screws" in m for m in told[0])
+    assert not any("dimensionless speed U" in m for m in told[1])
+    speeds = [i.value for r in results for i in r.warnings if i.quantity == "dimensionless speed U"]
+    assert len(speeds) == 2 and speeds[1] == pytest.approx(2 * speeds[0], rel=1e-9)

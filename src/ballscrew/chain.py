@@ -72,6 +72,10 @@ class FrictionResult:
     warnings: tuple[validity.ValidityIssue, ...] = ()
 
 
+_NOTED: set[tuple[str, str]] = set()
+"""(quantity, model) of the routine range issues already told in this session."""
+
+
 def models() -> list[ModelSpec]:
     """The registered friction models, with title, reference, validity and parameters.
 
@@ -187,6 +191,13 @@ def friction_torque(
     used.update(parameters)
     issues = validity.check(screw, lubricant, w, t, fa, spec.name, used, spec.checks)
     for issue in issues:
+        if issue.routine:
+            # Left by every ordinary ball screw: told once per quantity and model
+            # in a session (as a note with the reason), recorded in every result.
+            told = (issue.quantity, issue.model)
+            if told in _NOTED:
+                continue
+            _NOTED.add(told)
         warnings.warn(BallScrewValidityWarning(issue), stacklevel=2)
     return FrictionResult(
         model=spec.name,

@@ -56,7 +56,7 @@ class BallScrewValidityWarning(UserWarning):
     """
 
     def __init__(self, issue: Any) -> None:
-        super().__init__(str(issue))
+        super().__init__(issue.note() if getattr(issue, "routine", "") else str(issue))
         self.issue = issue
 
 

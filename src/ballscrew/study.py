@@ -127,7 +127,7 @@ def run_study(
         if issue.quantity not in worst or issue.excess > worst[issue.quantity].excess:
             worst[issue.quantity] = issue
     # One line per quantity: its most extreme value over all the study's model calls.
-    return replace(result, validity=tuple(str(issue) for issue in worst.values()))
+    return replace(result, validity=tuple(issue.note() for issue in worst.values()))
 
 
 def _run(

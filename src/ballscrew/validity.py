@@ -53,6 +53,9 @@ class ValidityRange:
     high: float
     applies_to: str
     source: str
+    routine: str = ""
+    """Why ordinary ball screws leave this range, if they do: such issues are
+    told once, as a note, rather than warned about on every call."""
 
     def message(self, value: float) -> str:
         """Warning text for ``value`` outside the range."""
@@ -73,6 +76,7 @@ class ValidityIssue:
     applies_to: str
     source: str
     model: str = ""
+    routine: str = ""
 
     @property
     def excess(self) -> float:
@@ -86,12 +90,21 @@ class ValidityIssue:
         text = rng.message(self.value)
         return f"{self.model}: {text}" if self.model else text
 
+    def note(self) -> str:
+        """The issue told as a note: the message and why ordinary screws get it."""
+        return f"{self} (usual for ball screws: {self.routine})" if self.routine else str(self)
+
 
 Check = Callable[
     [BallScrew, Lubricant, FloatArray, FloatArray, FloatArray, dict[str, Any]], list[ValidityIssue]
 ]
 """A model's validity check: ``f(screw, lubricant, speed, temperature, axial_load, params)``."""
 
+
+_ROUTINE_FILM = (
+    "ball screw contacts run faster and more heavily loaded, for their size, than the "
+    "contacts the fits were made from, so every model extrapolates the film here"
+)
 
 RANGES: dict[str, ValidityRange] = {
     r.quantity: r
@@ -109,6 +122,7 @@ RANGES: dict[str, ValidityRange] = {
             1.7e-11,
             "the Hamrock-Dowson film formulas",
             "about the span of their numerical solutions",
+            _ROUTINE_FILM,
         ),
         ValidityRange(
             "dimensionless load W",
@@ -116,6 +130,7 @@ RANGES: dict[str, ValidityRange] = {
             1.1e-5,
             "the Hamrock-Dowson film formulas",
             "about the span of their numerical solutions",
+            _ROUTINE_FILM,
         ),
         ValidityRange(
             "radius ratio Ry/Rx (Houpert fits)",
@@ -159,7 +174,7 @@ def outside(r: ValidityRange | str, values: Iterable[float]) -> list[ValidityIss
     if not worst:
         return []
     value = max(worst, key=lambda v: max(r.low - v, v - r.high) / max(abs(r.high), 1e-300))
-    return [ValidityIssue(r.quantity, value, r.low, r.high, r.applies_to, r.source)]
+    return [ValidityIssue(r.quantity, value, r.low, r.high, r.applies_to, r.source, "", r.routine)]
 
 
 def check(
