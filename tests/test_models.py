@@ -9,6 +9,7 @@ import pytest
 from scipy import integrate
 
 from ballscrew import friction_torque, lubricants, reference_screw
+from ballscrew.errors import BallScrewInputError
 from ballscrew.friction.catalog import (
     catalog_efficiency,
     preload_from_drag_torque,
@@ -315,3 +316,89 @@ def test_four_point_nut_counts_each_contact_once(model: str, axial: float) -> No
     t4 = friction_torque(four, oil, **kw).total  # type: ignore[arg-type]
     t2 = friction_torque(double, oil, **kw).total  # type: ignore[arg-type]
     np.testing.assert_allclose(t4, t2, rtol=1e-12)
+
+
+def test_catalog_functions_accept_every_lead_angle_below_90_degrees_only() -> None:
+    # The rule is defined for 0 < beta < 90°: 89° is accepted by both
+    # functions, 90° refused; the efficiency also needs beta + atan(mu) < 90°.
+    from ballscrew.friction.catalog import catalog_efficiency, preload_torque_coefficient
+
+    steep, right = math.radians(89.0), math.pi / 2
+    assert float(preload_torque_coefficient(steep)) == pytest.approx(
+        0.05 / math.sqrt(math.tan(steep)), rel=1e-12
+    )
+    assert 0.0 < float(catalog_efficiency(steep, 0.0)) <= 1.0
+    for func in (preload_torque_coefficient, lambda b: catalog_efficiency(b, 0.0)):
+        with pytest.raises(BallScrewInputError, match="lead_angle"):
+            func(right)
+    beta = math.radians(80.0)
+    ok, too_much = math.tan(math.radians(9.9)), math.tan(math.radians(10.1))
+    assert float(catalog_efficiency(beta, ok)) == pytest.approx(
+        math.tan(beta) / math.tan(math.radians(89.9)), rel=1e-9
+    )
+    with pytest.raises(BallScrewInputError, match="friction_coefficient"):
+        catalog_efficiency(beta, too_much)
+
+
+def test_mean_sliding_speed_is_the_area_mean_over_the_ellipse() -> None:
+    # Average |C (y^2 - (q0 a)^2)| over a fine grid of the ellipse x^2/b^2 +
+    # y^2/a^2 <= 1 (midpoint rule, 2000 x 2000: error well under 1e-3).
+    from ballscrew.friction.harris_simplified import HEATHCOTE_ROLLING_LINE, mean_sliding_speed
+
+    a, b, c = 3e-4, 7e-5, 2.5e4
+    n = 2000
+    y = (np.arange(n) + 0.5) / n * 2 * a - a
+    x = (np.arange(n) + 0.5) / n * 2 * b - b
+    xx, yy = np.meshgrid(x, y)
+    inside = xx**2 / b**2 + yy**2 / a**2 <= 1.0
+    slip = np.abs(c * (yy**2 - (HEATHCOTE_ROLLING_LINE * a) ** 2))
+    expected = float(slip[inside].mean())
+    assert float(mean_sliding_speed(-c, a)) == pytest.approx(expected, rel=1e-3)
+
+
+@pytest.mark.parametrize("law", ["harmonic", "general", "eyring", "bair-winer"])
+def test_every_shear_law_is_newtonian_at_a_tiny_shear_rate(law: str) -> None:
+    # At a shear stress far below the limiting one, every law gives eta * rate
+    # (the Eyring law for tau << tau_E: tau_E asinh(eta rate / tau_E) -> eta rate).
+    a, b, p0 = np.array(2e-4), np.array(5e-5), np.array(1.2e9)
+    _, lub = simplified_contact_force(
+        a=a,
+        b=b,
+        p_max=p0,
+        asperity_share=np.array(0.0),
+        viscosity=0.1,
+        pressure_viscosity=1e-30,
+        pressure_viscosity_model="barus",
+        shear_rate=np.array(1.0),
+        tau0=1e6,
+        gamma_l=0.07,
+        rheology_model=law,
+    )  # type: ignore[arg-type]
+    assert float(lub) == pytest.approx(0.1 * 1.0 * math.pi * 2e-4 * 5e-5, rel=1e-5)
+
+
+def test_simplified_model_input_bounds() -> None:
+    # c_v is allowed on [-1, 1] (both ends), at least 2 quadrature nodes.
+    kw = {"speed": 10.0, "temperature": 40.0, "model": "harris-simplified"}
+    for cv in (-1.0, 1.0):
+        friction_torque(reference_screw(), OIL, sliding_coefficient=cv, **kw)  # type: ignore[arg-type]
+    for cv in (-1.01, 1.01):
+        with pytest.raises(BallScrewInputError, match="sliding_coefficient"):
+            friction_torque(reference_screw(), OIL, sliding_coefficient=cv, **kw)  # type: ignore[arg-type]
+    two = friction_torque(reference_screw(), OIL, nodes=2, **kw)  # type: ignore[arg-type]
+    many = friction_torque(reference_screw(), OIL, nodes=48, **kw)  # type: ignore[arg-type]
+    # Two Gauss nodes already integrate the smooth pressure profile to a few per cent.
+    assert float(two.total) == pytest.approx(float(many.total), rel=0.05)
+    with pytest.raises(BallScrewInputError, match="nodes"):
+        friction_torque(reference_screw(), OIL, nodes=1, **kw)  # type: ignore[arg-type]
+
+
+def test_simplified_defaults_are_the_study_values() -> None:
+    # The study states mu0 = 0.1, B = 1.42 (A_c/A0 = exp(-B Lambda^C)) and
+    # c_v = 0.3 (65 % of the ellipse slipping against rolling); it gives no C,
+    # and C = 0.8 is the value of the public code of Olaru's model.
+    from ballscrew.friction import get_model
+
+    p = get_model("harris-simplified").parameters
+    assert (p["mu0"], p["sliding_coefficient"]) == (0.1, 0.3)
+    assert (p["asperity_b"], p["asperity_c"]) == (1.42, 0.8)

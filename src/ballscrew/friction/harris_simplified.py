@@ -95,6 +95,7 @@ __all__ = [
     "harris_simplified",
     "local_viscosity",
     "mean_sliding_factor",
+    "mean_sliding_speed",
     "shear_stress",
     "simplified_contact_force",
 ]
@@ -125,6 +126,27 @@ def mean_sliding_factor(q0: float = HEATHCOTE_ROLLING_LINE) -> float:
 
     value, _ = integrate.quad(integrand, -1.0, 1.0, points=[-q0, q0])
     return float(value)
+
+
+def mean_sliding_speed(curvature_coefficient: npt.ArrayLike, a: npt.ArrayLike) -> FloatArray:
+    r"""Area-mean differential sliding speed over a contact ellipse [m/s].
+
+    Heathcote slip across the contact, :math:`v(y) = C\,(y^2 - q_0^2a^2)`
+    with the rolling lines at :math:`y = \pm q_0 a`, averaged in magnitude
+    over the ellipse: :math:`\bar v = |C|\,a^2\,\overline{|q^2 - q_0^2|}`
+    (:func:`mean_sliding_factor`).
+
+    Parameters
+    ----------
+    curvature_coefficient : array_like
+        :math:`C` [1/(m·s)] of :func:`ballscrew.kinematics.differential_sliding`.
+    a : array_like
+        Semi-axis across the groove [m].
+    """
+    c = np.asarray(curvature_coefficient, dtype=float)
+    aa = np.asarray(a, dtype=float)
+    result: FloatArray = mean_sliding_factor() * np.abs(c) * aa**2
+    return result
 
 
 def shear_stress(
@@ -378,14 +400,13 @@ def harris_simplified(
         broadcast=False,
     )
     c_screw, c_nut = differential_sliding(screw, state.kinematics.screw_speed)
-    factor = mean_sliding_factor()
     asperity_forces, lubricant_forces = [], []
     for contact in state.contacts:
         if shear_velocity == "rolling":
             velocity = np.abs(contact.entrainment_speed)
         else:
             c = c_screw if contact.side == "screw" else c_nut
-            velocity = factor * np.abs(c) * contact.hertz.a**2
+            velocity = mean_sliding_speed(c, contact.hertz.a)
         loaded = contact.film_minimum > 0.0
         rate = np.where(loaded, velocity / np.where(loaded, contact.film_minimum, 1.0), 0.0)
         asp, lub = simplified_contact_force(
