@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import difflib
 import tomllib
+from collections.abc import Callable
 from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
@@ -31,7 +32,8 @@ import numpy as np
 from pydantic import ValidationError
 
 from . import lubricants
-from .case_schema import SECTIONS, Assumed, CaseFile, LubricantSection
+from .case_schema import SECTIONS, Assumed, CaseFile, LubricantSection, ScrewSection
+from .designation import resolve
 from .errors import BallScrewInputError, FloatArray
 from .geometry import BallScrew
 from .lubricant import Lubricant
@@ -89,6 +91,8 @@ class Case:
         Every value marked as assumed, with its reason.
     text : str
         The TOML text the case was read from.
+    screw_source : str
+        Where the screw's geometry came from when a designation named it.
     """
 
     title: str
@@ -105,6 +109,7 @@ class Case:
     model_parameters: dict[str, dict[str, Any]]
     assumptions: tuple[Assumption, ...]
     text: str
+    screw_source: str = ""
 
 
 def _validation_error(exc: ValidationError) -> BallScrewInputError:
@@ -146,51 +151,7 @@ def parse_case(text: str, *, source: str = "case") -> Case:
     def si(section: str, name: str, value: Any, unit: str) -> float:
         return to_si(f"{section}.{name}", _unwrap(f"{section}.{name}", value, notes), unit)
 
-    geometry: dict[str, Any] = {
-        "pitch_diameter": si("screw", "pitch_diameter", s.pitch_diameter, "m"),
-        "lead": si("screw", "lead", s.lead, "m"),
-        "ball_diameter": si("screw", "ball_diameter", s.ball_diameter, "m"),
-        "contact_angle": si("screw", "contact_angle", s.contact_angle, "rad"),
-        "conformity_screw": si("screw", "conformity_screw", s.conformity_screw, ""),
-        "conformity_nut": si("screw", "conformity_nut", s.conformity_nut, ""),
-        "loaded_turns": si("screw", "loaded_turns", s.loaded_turns, ""),
-    }
-    if s.nut is not None:
-        geometry["nut"] = _unwrap("screw.nut", s.nut, notes)
-    for name, unit in (
-        ("youngs_modulus_ball", "Pa"),
-        ("youngs_modulus_races", "Pa"),
-        ("poisson_ratio_ball", ""),
-        ("poisson_ratio_races", ""),
-        ("roughness_ball", "m"),
-        ("roughness_screw", "m"),
-        ("roughness_nut", "m"),
-    ):
-        if getattr(s, name) is not None:
-            geometry[name] = si("screw", name, getattr(s, name), unit)
-    circuits = si("screw", "circuits", s.circuits, "")
-    if circuits != int(circuits):
-        raise BallScrewInputError("screw.circuits", circuits, "a whole number >= 1")
-    geometry["circuits"] = int(circuits)
-    if (s.preload is None) == (s.preload_drag_torque is None):
-        raise BallScrewInputError(
-            "screw.preload", s.preload, "exactly one of preload and preload_drag_torque"
-        )
-    try:
-        screw = BallScrew(preload=0.0, **geometry)
-    except BallScrewInputError as exc:
-        raise BallScrewInputError(f"screw.{exc.field}", exc.value, exc.allowed) from None
-    if s.preload is not None:
-        preload = si("screw", "preload", s.preload, "N")
-    else:
-        from .friction.catalog import preload_from_drag_torque
-
-        torque = si("screw", "preload_drag_torque", s.preload_drag_torque, "N*m")
-        preload = float(preload_from_drag_torque(torque, screw))
-    try:
-        screw = screw.replace(preload=preload)
-    except BallScrewInputError as exc:
-        raise BallScrewInputError(f"screw.{exc.field}", exc.value, exc.allowed) from None
+    screw, screw_source = _screw(s, si, notes)
 
     lub = _lubricant(data.lubricant, notes)
     op = data.operation
@@ -232,7 +193,107 @@ def parse_case(text: str, *, source: str = "case") -> Case:
         model_parameters={k: dict(v) for k, v in st.model_parameters.items()},
         assumptions=tuple(notes),
         text=text,
+        screw_source=screw_source,
     )
+
+
+_LENGTHS = ("pitch_diameter", "lead", "ball_diameter")
+
+
+def _screw(
+    s: ScrewSection, si: Callable[[str, str, Any, str], float], notes: list[Assumption]
+) -> tuple[BallScrew, str]:
+    """The screw of a case: designation first, keys given in the file override it."""
+    given = s.model_fields_set
+    base: dict[str, Any] = {}
+    rating: float | None = None
+    origin = ""
+    if s.designation is not None:
+        name = str(_unwrap("screw.designation", s.designation, notes))
+        resolved = resolve(name)
+        base, rating, origin = resolved.geometry, resolved.dynamic_load_rating, resolved.source
+        for key, why in resolved.notes.items():
+            if key not in given:
+                shown = f"{base[key] * 1e3:g} mm" if key in _LENGTHS else f"{base[key]:g}"
+                notes.append(Assumption(f"screw.{key}", shown, why))
+    units = {
+        "pitch_diameter": "m",
+        "lead": "m",
+        "ball_diameter": "m",
+        "contact_angle": "rad",
+        "conformity_screw": "",
+        "conformity_nut": "",
+        "loaded_turns": "",
+        "circuits": "",
+        "youngs_modulus_ball": "Pa",
+        "youngs_modulus_races": "Pa",
+        "poisson_ratio_ball": "",
+        "poisson_ratio_races": "",
+        "roughness_ball": "m",
+        "roughness_screw": "m",
+        "roughness_nut": "m",
+    }
+    geometry: dict[str, Any] = {}
+    for name, unit in units.items():
+        value = getattr(s, name)
+        if name in given and value is not None:
+            geometry[name] = si("screw", name, value, unit)
+        elif name in base:
+            geometry[name] = base[name]
+        elif value is not None:  # the schema's default
+            geometry[name] = si("screw", name, value, unit)
+        elif name in ("pitch_diameter", "lead", "ball_diameter"):
+            where = f" (the designation {s.designation!r} does not give it)" if base else ""
+            raise BallScrewInputError(f"screw.{name}", "(missing)", f"a value{where}")
+    if s.nut is not None:
+        geometry["nut"] = _unwrap("screw.nut", s.nut, notes)
+    elif "nut" in base:
+        geometry["nut"] = base["nut"]
+    circuits = geometry["circuits"]
+    if circuits != int(circuits):
+        raise BallScrewInputError("screw.circuits", circuits, "a whole number >= 1")
+    geometry["circuits"] = int(circuits)
+    if s.dynamic_load_rating is not None:
+        rating = si("screw", "dynamic_load_rating", s.dynamic_load_rating, "N")
+    ways = [
+        k for k in ("preload", "preload_drag_torque", "preload_share") if getattr(s, k) is not None
+    ]
+    if len(ways) != 1:
+        raise BallScrewInputError(
+            "screw.preload",
+            ", ".join(ways) or "(missing)",
+            "exactly one of preload (a force), preload_drag_torque and preload_share "
+            "(of the dynamic load rating)",
+        )
+    try:
+        screw = BallScrew(preload=0.0, **geometry)
+    except BallScrewInputError as exc:
+        raise BallScrewInputError(f"screw.{exc.field}", exc.value, exc.allowed) from None
+    if s.preload is not None:
+        preload = si("screw", "preload", s.preload, "N")
+    elif s.preload_drag_torque is not None:
+        from .friction.catalog import preload_from_drag_torque
+
+        torque = si("screw", "preload_drag_torque", s.preload_drag_torque, "N*m")
+        preload = float(preload_from_drag_torque(torque, screw))
+    else:
+        share = si("screw", "preload_share", s.preload_share, "")
+        if not 0.0 <= share <= 0.2:
+            raise BallScrewInputError(
+                "screw.preload_share", s.preload_share, "0 to 20 % (catalogues: 2 to 10 %)"
+            )
+        if rating is None:
+            raise BallScrewInputError(
+                "screw.dynamic_load_rating",
+                "(missing)",
+                "a force, needed by preload_share (or a designation whose catalogue row gives it)",
+            )
+        preload = share * rating
+    try:
+        screw = screw.replace(preload=preload)
+    except BallScrewInputError as exc:
+        raise BallScrewInputError(f"screw.{exc.field}", exc.value, exc.allowed) from None
+    return screw, origin
 
 
 def _lubricant(section: LubricantSection, notes: list[Assumption]) -> Lubricant:

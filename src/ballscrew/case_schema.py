@@ -58,9 +58,34 @@ class ScrewSection(BaseModel):
     """``[screw]``: geometry, preload, materials and roughness."""
 
     model_config = ConfigDict(extra="forbid")
-    pitch_diameter: Value = _f(..., "length", "diameter through the ball centres d_m", "40 mm")
-    lead: Value = _f(..., "length", "axial advance per screw revolution", "10 mm")
-    ball_diameter: Value = _f(..., "length", "ball diameter D_w", "6.35 mm")
+    designation: str | Assumed | None = _f(
+        None,
+        "-",
+        "a catalogue nut ('HIWIN R40-10K5-FDC', see ballscrew screws) or a size in mm "
+        "('40x10 double 2.5x2 6.35'); keys given below override what it gives",
+        "HIWIN R40-10K5-FDC",
+    )
+    pitch_diameter: Value | None = _f(
+        None,
+        "length",
+        "diameter through the ball centres d_m (required unless the designation gives it)",
+        "40 mm",
+        fill=True,
+    )
+    lead: Value | None = _f(
+        None,
+        "length",
+        "axial advance per screw revolution (required unless the designation gives it)",
+        "10 mm",
+        fill=True,
+    )
+    ball_diameter: Value | None = _f(
+        None,
+        "length",
+        "ball diameter D_w (required unless the designation gives it)",
+        "6.35 mm",
+        fill=True,
+    )
     contact_angle: Value = _f("45 deg", "angle", "nominal contact angle")
     conformity_screw: Value = _f(0.55, "-", "screw groove radius / ball diameter (> 0.5)")
     conformity_nut: Value = _f(0.55, "-", "nut groove radius / ball diameter (> 0.5)")
@@ -83,6 +108,19 @@ class ScrewSection(BaseModel):
         "catalogue drag torque of the preload, turned into a preload by the catalogue rule "
         "(give this or preload)",
         "0.4 N*m",
+    )
+    preload_share: Value | None = _f(
+        None,
+        "-",
+        "preload as a share of the dynamic load rating, e.g. '5 %' (give this, preload or "
+        "preload_drag_torque)",
+        "5 %",
+    )
+    dynamic_load_rating: Value | None = _f(
+        None,
+        "force",
+        "dynamic load rating C_a, for preload_share (default: the designation's catalogue value)",
+        "63.4 kN",
     )
     youngs_modulus_ball: Value | None = _f(None, "pressure", "default 210 GPa", "210 GPa")
     youngs_modulus_races: Value | None = _f(None, "pressure", "default 210 GPa", "210 GPa")

@@ -21,7 +21,7 @@ from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeEl
 from rich.table import Table
 
 from . import __version__, lubricants
-from .cli_case import case_command
+from .cli_case import case_command, screws_command
 from .contact import HERTZ_METHODS, hertz
 from .errors import BallScrewInputError, BallScrewValidityWarning
 from .examples import reference_screw
@@ -556,6 +556,7 @@ def lubricants_command() -> None:
 
 
 cli.add_command(case_command)
+cli.add_command(screws_command)
 
 
 def _terminate(signum: int, frame: object) -> None:

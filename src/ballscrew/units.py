@@ -74,7 +74,7 @@ def to_si(field: str, value: Any, unit: str) -> float:
             magnitude = float(value)
         else:
             quantity: Any = ureg.Quantity(str(value).strip())
-            if quantity.unitless:  # a bare number written as text
+            if quantity.units == ureg.dimensionless:  # a bare number written as text
                 if unit:
                     raise _bare(field, value, unit)
                 magnitude = float(quantity.magnitude)
