@@ -172,3 +172,21 @@ def test_preloads_of_the_study_torques() -> None:
     s = load_case().screw
     f = preload_from_drag_torque(np.array([0.2, 0.6]), s)
     assert float(f[1] / f[0]) == pytest.approx(3.0)
+
+
+def test_measured_csv_with_decimal_commas_and_semicolons() -> None:
+    # A spreadsheet in a decimal-comma locale writes "0,31" with ";" between
+    # cells; with "," between cells the decimal comma used to split the
+    # number and the torque was read as 0.
+    from ballscrew import reference_screw
+    from ballscrew.measured import parse_measured
+
+    screw = reference_screw()
+    semi = parse_measured("speed [rpm];torque [N*m]\n100;0,31\n500;0,36\n", screw)
+    tab = parse_measured("speed [rpm]\ttorque [N*m]\n100\t0,31\n500\t0,36\n", screw)
+    plain = parse_measured("speed [rpm],torque [N*m]\n100,0.31\n500,0.36\n", screw)
+    for curve in (semi, tab):
+        np.testing.assert_allclose(curve.torque, plain.torque, rtol=1e-15)
+        np.testing.assert_allclose(curve.speed, plain.speed, rtol=1e-15)
+    with pytest.raises(BallScrewInputError, match="decimal commas need ';'"):
+        parse_measured("speed [rpm],torque [N*m]\n100,0,31\n", screw)

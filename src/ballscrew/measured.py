@@ -1,7 +1,8 @@
 """Measured torque-speed curves: reading them (units in the header) and error metrics.
 
 A measured curve is a CSV file with a header naming each column and its unit
-in brackets, for example::
+in brackets; the separator may be a comma, or a semicolon or tab with decimal
+commas (as spreadsheets write them in decimal-comma locales), for example::
 
     speed [rpm],torque [N*m]
     100,0.31
@@ -33,6 +34,7 @@ from .units import registry
 
 __all__ = ["MeasuredCurve", "error_metrics", "parse_measured", "read_measured"]
 
+_DECIMAL_COMMA = re.compile(r"^[-+]?\d*,\d+(?:[eE][-+]?\d+)?$|^[-+]?\d+,$")
 _HEADER = re.compile(r"^\s*(?P<name>[^\[\]]+?)\s*\[(?P<unit>[^\[\]]+)\]\s*$")
 
 
@@ -76,8 +78,22 @@ def _dimension(unit: str) -> str:
 
 def parse_measured(text: str, screw: BallScrew, source: str = "measured data") -> MeasuredCurve:
     """Parse a measured curve from CSV text (see the module docstring)."""
-    rows = list(csv.reader(io.StringIO(text.lstrip("\ufeff"))))
+    text = text.lstrip("\ufeff")
+    first = next((line for line in text.splitlines() if line.strip()), "")
+    # The separator is the header's: a semicolon or a tab (spreadsheets in
+    # decimal-comma locales), else a comma.
+    delimiter = ";" if ";" in first else ("\t" if "\t" in first else ",")
+    rows = list(csv.reader(io.StringIO(text), delimiter=delimiter))
     rows = [r for r in rows if any(cell.strip() for cell in r)]
+    if delimiter == "," and rows:
+        wide = next((i for i, r in enumerate(rows[1:], start=2) if len(r) > len(rows[0])), None)
+        if wide is not None:
+            raise BallScrewInputError(
+                f"{source}: line {wide}",
+                ",".join(rows[wide - 1]),
+                f"{len(rows[0])} comma-separated cells like the header; decimal commas need "
+                "';' (or tab) as the separator",
+            )
     if not rows:
         raise BallScrewInputError(source, "(empty)", "a CSV file with a header and data rows")
     header = rows[0]
@@ -113,6 +129,8 @@ def parse_measured(text: str, screw: BallScrew, source: str = "measured data") -
         for key in ("speed", "torque"):
             col = columns[key][0]
             cell = row[col].strip() if col < len(row) else ""
+            if delimiter != "," and _DECIMAL_COMMA.match(cell):
+                cell = cell.replace(",", ".")
             try:
                 number = float(cell)
             except ValueError:
