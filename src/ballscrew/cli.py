@@ -7,6 +7,7 @@ an internal error.
 from __future__ import annotations
 
 import math
+import os
 import signal
 import sys
 import warnings
@@ -142,9 +143,14 @@ def demo(lubricant_name: str, temperature: float) -> None:
 
 
 def _stdout() -> Console:
-    """Console for tables on standard output; wide when it is not a terminal (files, pipes)."""
+    """Console for tables on standard output.
+
+    The terminal's width; when the output is not a terminal (files, pipes) 200
+    columns, unless ``COLUMNS`` says otherwise.
+    """
     probe = Console()
-    return Console(markup=False, width=None if probe.is_terminal else 200)
+    fixed = probe.is_terminal or "COLUMNS" in os.environ
+    return Console(markup=False, width=None if fixed else 200)
 
 
 def _progress(console: Console) -> Progress:
@@ -499,14 +505,14 @@ def models_command() -> None:
     scores = bundled_summary()
     table = Table(title="Friction models", show_lines=True)
     table.add_column("name", no_wrap=True)
-    table.add_column("what it is for")
-    table.add_column("scorecard (ballscrew validate)")
+    table.add_column("what it is for", overflow="fold")
+    table.add_column("scorecard (ballscrew validate)", overflow="fold")
     for spec in models():
         s = scores.get(spec.name)
         accuracy = (
             f"reference cases inside their band: {s['inside band']}; "
-            f"median |log10(predicted/reference)|: {s['median |log10 ratio|']}; "
-            f"trends met: {s['trends met']}"
+            f"typical error (median |log10 of predicted / reference|): "
+            f"{s['median |log10 ratio|']}; trends met: {s['trends met']}"
             if s
             else "not scored"
         )
@@ -517,8 +523,9 @@ def models_command() -> None:
         console.print(f"\n{spec.name}: {spec.title}", highlight=False)
         console.print(f"  reference: {spec.reference}", highlight=False)
         console.print(f"  validity: {spec.validity}", highlight=False)
-        params = ", ".join(f"{k}={v!r}" for k, v in spec.parameters.items())
-        console.print(f"  parameters: {params}", highlight=False)
+        console.print("  parameters:", highlight=False)
+        for k, v in spec.parameters.items():
+            console.print(f"    {k} = {v!r}", highlight=False)
 
 
 @cli.command(name="lubricants")

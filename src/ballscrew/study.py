@@ -21,7 +21,8 @@ import numpy as np
 
 from . import lubricants
 from .case import Case
-from .chain import friction_torque
+from .chain import FrictionResult
+from .chain import friction_torque as chain_friction_torque
 from .errors import BallScrewValidityWarning, FloatArray
 from .friction.catalog import preload_from_drag_torque
 from .lubricant import Lubricant
@@ -116,14 +117,14 @@ def run_study(
     message once, in order) into ``StudyResult.validity`` instead of being
     raised.
     """
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always", BallScrewValidityWarning)
-        result = _run(case, measured, progress)
+    found: list[ValidityIssue] = []
+    with warnings.catch_warnings():
+        # Collected from every result (recorded there whether or not the chain
+        # told them in this session), not from the warnings, which may be quiet.
+        warnings.simplefilter("ignore", BallScrewValidityWarning)
+        result = _run(case, measured, progress, found)
     worst: dict[str, ValidityIssue] = {}
-    for w in caught:
-        issue = getattr(w.message, "issue", None)
-        if not isinstance(issue, ValidityIssue):
-            continue
+    for issue in found:
         if issue.quantity not in worst or issue.excess > worst[issue.quantity].excess:
             worst[issue.quantity] = issue
     # One line per quantity: its most extreme value over all the study's model calls.
@@ -134,6 +135,7 @@ def _run(
     case: Case,
     measured: MeasuredCurve | None = None,
     progress: Callable[[str], None] | None = None,
+    found: list[ValidityIssue] | None = None,
 ) -> StudyResult:
     """Compute all series of the study for ``case``.
 
@@ -153,6 +155,14 @@ def _run(
     StudyResult
     """
     step = progress or (lambda _text: None)
+    issues = found if found is not None else []
+
+    def friction_torque(*args: Any, **kwargs: Any) -> FrictionResult:
+        """The chain's, recording each call's validity issues."""
+        result = chain_friction_torque(*args, **kwargs)
+        issues.extend(result.warnings)
+        return result
+
     screw0 = case.screw
     preloads = _preloads(case)
     ref_preload = screw0.preload
