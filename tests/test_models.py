@@ -96,6 +96,50 @@ def test_lens_moments_against_a_fine_grid(xc: float, rm2: float) -> None:
     np.testing.assert_allclose(closed, grid, rtol=0, atol=4e-3)
 
 
+def _lens_by_quadrature(rp: float, xc: float, rm2: float) -> np.ndarray:
+    """Moments of the lens by adaptive quadrature in x of the exact integrals in y.
+
+    At each x the lens spans |y| <= Y(x) = min of the two circles' half-widths,
+    so the y-integrals are 2Y (for 1, x, x^2, x^3) and 2Y^3/3 (for y^2, xy^2).
+    """
+    from scipy import integrate
+
+    rm = math.sqrt(rm2)
+    lo, hi = max(-rp, xc - rm), min(rp, xc + rm)
+    chord = (rp**2 - rm2 + xc**2) / (2 * xc)
+
+    def half(x: float) -> float:
+        return math.sqrt(max(0.0, min(rp**2 - x**2, rm2 - (x - xc) ** 2)))
+
+    kernels = [
+        lambda x: 2 * half(x),
+        lambda x: 2 * x * half(x),
+        lambda x: 2 * x**2 * half(x),
+        lambda x: 2 * x**3 * half(x),
+        lambda x: 2 * half(x) ** 3 / 3,
+        lambda x: 2 * x * half(x) ** 3 / 3,
+    ]
+    points = [chord] if lo < chord < hi else None
+    return np.array(
+        [integrate.quad(f, lo, hi, points=points, epsabs=1e-14, epsrel=1e-12)[0] for f in kernels]
+    )
+
+
+@pytest.mark.parametrize(
+    ("rp", "xc", "rm2"), [(1.0, 0.3, 0.89), (1.0, 0.8, 0.5), (1.0, 0.1, 0.2), (2e-5, 3e-7, 3.9e-10)]
+)
+def test_lens_moments_against_quadrature(rp: float, xc: float, rm2: float) -> None:
+    # All six moments to 1e-8 relative (quadrature tolerance 1e-12), including
+    # the odd ones, which the grid test above checks only to its 4e-3; the
+    # last case has the scales of a ball screw contact (m).
+    chord = (rp**2 - rm2 + xc**2) / (2 * xc)
+    closed = np.array(lens_moments(rp, xc, rm2, chord)[:6], dtype=float)
+    # Quadrature in units of rp (its tolerances are absolute), scaled back.
+    scale = np.array([rp**2, rp**3, rp**4, rp**5, rp**4, rp**5])
+    exact = _lens_by_quadrature(1.0, xc / rp, rm2 / rp**2)
+    np.testing.assert_allclose(closed / scale, exact, rtol=1e-8, atol=1e-12)
+
+
 def test_viscoelastic_static_and_slow_rolling_limits() -> None:
     # Static: N = pi k R tau^2. Slow rolling: F -> pi gamma v tau^2 (linear viscous).
     k, gamma, radius, q = 2.1e18, 3.5e13, 3.175e-3, 29.0
@@ -402,3 +446,68 @@ def test_simplified_defaults_are_the_study_values() -> None:
     p = get_model("harris-simplified").parameters
     assert (p["mu0"], p["sliding_coefficient"]) == (0.1, 0.3)
     assert (p["asperity_b"], p["asperity_c"]) == (1.42, 0.8)
+
+
+@pytest.mark.parametrize("v", [0.3, 3.0, 12.0])
+def test_viscoelastic_friction_is_the_pressure_moment_over_the_lens(v: float) -> None:
+    # Pöschel's bed: p = k z + gamma dz/dt + m d2z/dt2 with z = tau - (x^2 + y^2)/2R
+    # under the ball moving at v (dz/dt = v x / R, d2z/dt2 = -v^2 / R). Without
+    # the leading-edge term the rolling friction is the moment of p about the
+    # ball centre over R, integrated here on a fine grid over the contact lens,
+    # independently of the closed-form moments. Grid of 1600^2 cells over the
+    # ball's disk: boundary error ~ 1e-3.
+    q, radius, k, m, g = 29.0, 3.175e-3, 2.1e18, 7.8e-4, 3.5e13
+    c = viscoelastic_contact(q, v, radius, leading_edge=False)
+    tau = float(c.penetration)
+    rp = math.sqrt(2 * radius * tau)
+    xc = g * v / k
+    rm2 = rp**2 - 2 * m * v**2 / k + xc**2
+    n = 1600
+    xs = np.linspace(-rp, rp, n + 1)  # the lens lies inside the ball's disk
+    xs = 0.5 * (xs[1:] + xs[:-1])
+    x, y = np.meshgrid(xs, xs, indexing="ij")
+    inside = (x**2 + y**2 <= rp**2) & ((x - xc) ** 2 + y**2 <= rm2)
+    p = k * (tau - (x**2 + y**2) / (2 * radius)) + g * v * x / radius - m * v**2 / radius
+    da = (xs[1] - xs[0]) ** 2
+    assert float(np.sum(p[inside]) * da) == pytest.approx(q, rel=3e-3)  # the load it carries
+    friction = float(np.sum((p * x)[inside]) * da) / radius
+    assert float(c.friction) == pytest.approx(friction, rel=3e-3)
+
+
+def test_viscoelastic_leading_edge_terms() -> None:
+    # The leading-edge friction is m v^2 r+^3 / R^2 (sin t0 - sin^3 t0 / 3) for the
+    # kinetic-energy reading and twice that for the work reading (module docstring);
+    # the edge force is m tau v^2 (2 t0 + sin 2 t0).
+    q, v, radius, m = 29.0, 8.0, 3.175e-3, 7.8e-4
+    kinetic = viscoelastic_contact(q, v, radius, edge_power="kinetic")
+    work = viscoelastic_contact(q, v, radius, edge_power="work")
+    none = viscoelastic_contact(q, v, radius, leading_edge=False)
+    tau, t0 = float(kinetic.penetration), float(kinetic.leading_edge_angle)
+    rp = math.sqrt(2 * radius * tau)
+    assert float(kinetic.edge_force) == pytest.approx(
+        m * tau * v**2 * (2 * t0 + math.sin(2 * t0)), rel=1e-12
+    )
+    # With the same penetration, the two readings differ by the edge friction only.
+    edge = m * v**2 * rp**3 / radius**2 * (math.sin(t0) - math.sin(t0) ** 3 / 3)
+    assert float(work.friction - kinetic.friction) == pytest.approx(edge, rel=1e-9)
+    assert float(none.edge_force) == 0.0 and float(none.leading_edge_angle) >= 0.0
+
+
+def test_viscoelastic_torque_is_the_power_of_the_contacts() -> None:
+    # Energy balance: T |omega| = sum over balls of F u at the screw and at the
+    # nut contact, u = omega d_m (1 - gamma^2) / 4 the rolling speed of the ball.
+    s = reference_screw().replace(nut="single", preload=0.0)
+    w, fa = 150.0, 2500.0
+    r = friction_torque(s, OIL, speed=w, temperature=40.0, axial_load=fa, model="viscoelastic")
+    u = w * s.pitch_diameter * (1 - s.gamma**2) / 4
+    q = fa / (s.balls_per_nut * math.sin(s.contact_angle) * math.cos(s.lead_angle))
+    f = float(viscoelastic_contact(q, u, s.ball_diameter / 2).friction)
+    assert float(r.total) * w == pytest.approx(s.balls_per_nut * 2 * f * u, rel=1e-9)
+
+
+def test_viscoelastic_defaults_are_the_study_values() -> None:
+    # The study's Fig. 4: k = 2.1e18 N/m^3, m = 7.8e-4 kg/m^2, gamma = 3.5e13 N s/m^3.
+    from ballscrew.friction import get_model
+
+    p = get_model("viscoelastic").parameters
+    assert (p["stiffness"], p["mass"], p["damping"]) == (2.1e18, 7.8e-4, 3.5e13)
