@@ -9,6 +9,7 @@ import pytest
 from scipy import integrate
 
 from ballscrew import friction_torque, lubricants, reference_screw
+from ballscrew import rolling_losses as rl
 from ballscrew.errors import BallScrewInputError
 from ballscrew.friction.catalog import (
     catalog_efficiency,
@@ -257,6 +258,55 @@ def test_mean_sliding_factor_by_quadrature() -> None:
 
 
 # --- harris-full ---------------------------------------------------------------------------
+def _spin_contact(**overrides: object) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """full_contact_power of one contact under pure spin (omega_s / omega = 0.4)."""
+    kw: dict[str, object] = {
+        "a": np.array([2.5e-4]),
+        "b": np.array([6e-5]),
+        "p_max": np.array([1.2e9]),
+        "asperity_share": np.array([0.0]),
+        "viscosity": np.array([0.05]),
+        "pressure_viscosity": 1e-30,
+        "film": np.array([2e-7]),
+        "curvature": 0.0,
+        "spin": 0.4,
+        "screw_speed": np.array([3.0]),
+        "tau0": 1e30,
+        "gamma_l": 0.0,
+        "mu0": 0.1,
+        "nodes": (24, 64),
+    }
+    kw.update(overrides)
+    return full_contact_power(**kw)  # type: ignore[arg-type]
+
+
+def test_full_model_newtonian_spin_power_is_exact() -> None:
+    # Pure spin, no slip by symmetry, Newtonian film of constant viscosity:
+    # |v| = w r with r the distance from the centre, so
+    # P = (eta w^2 omega^2 / h) * integral of (x^2 + y^2) dA
+    #   = (eta w^2 omega^2 / h) pi a b (a^2 + b^2) / 4,
+    # and P/|omega| divides one omega out. The Gauss rule in the pressure
+    # coordinate integrates the polynomial exactly; the angular rule too.
+    a, b, eta, h, w, omega = 2.5e-4, 6e-5, 0.05, 2e-7, 0.4, 3.0
+    asperity, lubricant, slip = _spin_contact()
+    expected = eta * (w * omega) ** 2 / h * math.pi * a * b * (a**2 + b**2) / 4 / omega
+    assert float(lubricant[0]) == pytest.approx(expected, rel=1e-9)
+    assert float(asperity[0]) == 0.0 and abs(float(slip[0])) < 1e-12 * a
+
+
+def test_full_model_dry_spin_power_is_the_spin_moment() -> None:
+    # Coulomb friction only, pure spin: P = mu0 (3Q / 2 pi) w omega a I(0, b/a)
+    # (the pressure-weighted mean distance; rolling_losses' independent 12 x 48
+    # polar rule, itself checked against pi^2/8 and Harris's elliptic-integral
+    # form). Q = (2/3) pi a b p_max. Tolerance: the two quadratures, 1e-4.
+    a, b, p0, w = 2.5e-4, 6e-5, 1.2e9, 0.4
+    asperity, lubricant, _ = _spin_contact(asperity_share=np.array([1.0]))
+    q = 2.0 / 3.0 * math.pi * a * b * p0
+    expected = 0.1 * 1.5 / math.pi * q * w * a * float(rl.spin_sliding_integral(0.0, b / a))
+    assert float(asperity[0]) == pytest.approx(expected, rel=1e-4)
+    assert float(lubricant[0]) == 0.0
+
+
 def test_full_model_reproduces_heathcote_rolling_lines() -> None:
     # Coulomb friction only (asperity share 1), no spin: the zero-traction slip
     # puts the pure-rolling lines at y0 = ±0.347 a (Heathcote 1921; Johnson,
