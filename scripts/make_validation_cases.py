@@ -1,15 +1,18 @@
-"""Write src/ballscrew/data/validation_cases.csv from the catalogue geometry table.
+"""Write src/ballscrew/data/validation_cases.csv from the bundled catalogue table.
 
     .venv/bin/python scripts/make_validation_cases.py
 
-Every case row carries its source. The grid: each screw of data/reference_screws.csv, as a
-double nut and as a 4-point single nut, at preloads of 2, 5 and 10 % of its dynamic load
-rating, at the catalogues' drag torque test conditions (100 rpm, ISO VG 68 mineral oil, no
-wiper; the temperature is not stated: 20 °C assumed); Jungnickel's law at 1000 and 3000 rpm
-and 40 °C for the double nuts at 5 %; and THK's worked example.
+Every case row carries its source. The geometries are the distinct screws of
+data/catalog_screws.csv whose catalogue row gives the ball diameter, the circuits and the
+load rating (HIWIN's ground nuts; the nominal diameter stands for the pitch diameter and one
+loaded turn per circuit is assumed, as the designation lookup does). Each screw as a double
+nut and as a 4-point single nut, at preloads of 2, 5 and 10 % of its dynamic load rating, at
+the catalogues' drag torque test conditions (100 rpm, ISO VG 68 mineral oil, no wiper; the
+temperature is not stated: 20 °C assumed); Jungnickel's law at 1000 and 3000 rpm and 40 °C for
+the double nuts at 5 %.
 
 Training rows (the only ones the ball-train constant is fitted on): double nuts at 5 %
-preload of every other screw of the table (rows 0, 2, 4, ...).
+preload of every other screw (rows 0, 2, 4, ...).
 """
 
 from __future__ import annotations
@@ -28,9 +31,10 @@ ROOT = Path(__file__).resolve().parents[1] / "src" / "ballscrew" / "data"
 PRELOADS = (0.02, 0.05, 0.10)
 CONFORMITY = 0.55  # typical gothic-arch and circular-arc grooves: 0.52-0.56 (not in catalogues)
 CATALOG_SOURCE = (
-    "catalogue formula Tp = 0.05/sqrt(tan b) Fpr l/2pi (THK; NSK; HIWIN catalogues) at 100 rpm "
-    "ISO VG 68 without wiper; band +-30 % (drag torque variation allowed by the precision "
-    "grades; JIS B1192-3 / ISO 3408-3)"
+    "THK's preload torque formula Tp = 0.05/sqrt(tan b) Fpr l/2pi (THK General Catalog, A-688) "
+    "under HIWIN's test conditions for drag torque: 100 rpm, ISO VG 68, no wiper (HIWIN GmbH "
+    "catalogue, 3.6.3); band +-30 % (THK's torque tolerance for grades C2/C3 at 0.6-1 N*m, "
+    "A-688 Table 13)"
 )
 JUNGNICKEL_SOURCE = (
     "Jungnickel (2010) empirical ball screw loss law as implemented in Thermca "
@@ -44,15 +48,39 @@ COLUMNS = [
 ]  # fmt: skip
 
 
+def _table() -> list[dict[str, str]]:
+    """One row per distinct geometry with ball diameter, turns and rating, in file order."""
+    from ballscrew.designation import catalog_screws
+
+    seen: set[tuple[float, ...]] = set()
+    table = []
+    for s in catalog_screws():
+        if None in (s.ball_diameter, s.loaded_turns, s.dynamic_load_rating):
+            continue
+        key = (s.nominal_diameter, s.lead, s.ball_diameter, s.circuits)  # type: ignore[assignment]
+        if key in seen:
+            continue
+        seen.add(key)  # type: ignore[arg-type]
+        table.append(
+            {
+                "designation": s.name,
+                "nominal_diameter_mm": f"{s.nominal_diameter * 1e3:g}",
+                "lead_mm": f"{s.lead * 1e3:g}",
+                "ball_diameter_mm": f"{s.ball_diameter * 1e3:g}",  # type: ignore[operator]
+                "pitch_diameter_mm": f"{(s.pitch_diameter or s.nominal_diameter) * 1e3:g}",
+                "circuits": str(s.circuits),
+                "turns_per_circuit": f"{s.loaded_turns:g}",
+                "dynamic_load_rating_kN": f"{s.dynamic_load_rating / 1e3:g}",  # type: ignore[operator]
+                "contact_angle_deg": "45",
+                "source": f"{s.source}, {s.page}; {s.turns_status}; pitch diameter = nominal",
+            }
+        )
+    return table
+
+
 def main() -> None:
     """Run the script."""
-    table = [
-        row
-        for row in csv.DictReader(
-            line for line in (ROOT / "reference_screws.csv").read_text().splitlines()
-            if line and not line.startswith("#")
-        )
-    ]  # fmt: skip
+    table = _table()
     rows: list[dict[str, object]] = []
     for index, g in enumerate(table):
         dm = float(g["pitch_diameter_mm"])

@@ -290,7 +290,7 @@ def test_complete_components_from_contact_powers(nut: str, rpm: float) -> None:
             ball_ball += (
                 c.balls
                 * mu_bl
-                * 0.0468
+                * 0.0474  # the fitted BALL_TRAIN_CONSTANT
                 * q
                 * float(kinematics(screw, w).ball_speed)
                 * (screw.ball_diameter / w)

@@ -24,8 +24,9 @@ the preload exponent (1 to 4 kN at 1000 rpm) and the ratio of a 4-point
 single nut to a double nut with the same balls.
 
 The cases file is written by ``scripts/make_validation_cases.py`` from the
-geometry table ``data/reference_screws.csv`` (each row with its catalogue
-source); the rows marked ``training`` are the only ones the ball-train
+bundled catalogue table ``data/catalog_screws.csv`` (the 20 distinct HIWIN
+ground nuts whose rows give ball diameter, circuits and load rating, each
+with its catalogue page); the rows marked ``training`` are the only ones the ball-train
 constant of :mod:`ballscrew.friction.complete` was fitted on
 (``scripts/fit_ball_train.py``).
 """

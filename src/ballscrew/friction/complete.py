@@ -69,7 +69,7 @@ from ._registry import register
 
 __all__ = ["BALL_TRAIN_CONSTANT", "HYSTERESIS_LOSS_FACTOR", "complete"]
 
-BALL_TRAIN_CONSTANT: float = 0.0468
+BALL_TRAIN_CONSTANT: float = 0.0474
 r"""Ball-train force over the ball load, :math:`c_B = F_B/Q` [-].
 
 Fitted once (``scripts/fit_ball_train.py``) on the training cases of
@@ -161,7 +161,7 @@ def _sliding_per_speed(
     "(ballscrew.validation)",
     validity="lubricated steel ball screws with oil or grease, 2-point or 4-point contact, "
     "Hamrock-Dowson film (ellipticity 1-8); ball-train constant trained on catalogue drag "
-    "torques of 12-63 mm screws",
+    "torques of 14-63 mm catalogue screws (HIWIN)",
     purpose="to predict (the default): every loss mechanism, scored against public numbers "
     "(ballscrew validate)",
     checks=(film_checks,),
