@@ -561,3 +561,50 @@ def test_viscoelastic_defaults_are_the_study_values() -> None:
 
     p = get_model("viscoelastic").parameters
     assert (p["stiffness"], p["mass"], p["damping"]) == (2.1e18, 7.8e-4, 3.5e13)
+
+
+def test_simplified_lubricant_torque_from_the_contact_states() -> None:
+    # The study's eqs. (5) and (8) assembled by hand from the contact states:
+    # per contact, F = (1 - A_c/A0) * integral over the ellipse of the harmonic
+    # mean of tau_N = eta(p) u / h_min (Roelands) and tau_lim = tau0 + gamma_L p,
+    # on a 400 x 400 polar grid; torque = sum of balls * F * d_m (1 - gamma^2) / 4.
+    # The model's 8-node Gauss rule is good to 7e-4 (its docstring): tolerance 2e-3.
+    from ballscrew.friction._common import limiting_shear
+    from ballscrew.lubricant import roelands_1966
+    from ballscrew.state import operating_state
+
+    s, w = reference_screw(), 120.0
+    r = friction_torque(s, OIL, speed=w, temperature=40.0, model="harris-simplified")
+    st = operating_state(s, OIL, speed=w, temperature=40.0, hertz_method="houpert")
+    tau0, gl = limiting_shear(OIL, None, None)
+    rho = (np.arange(400) + 0.5) / 400
+    phi = (np.arange(400) + 0.5) / 400 * 2 * np.pi
+    rr, _ = np.meshgrid(rho, phi, indexing="ij")
+    torque = 0.0
+    for c in st.contacts:
+        if c.balls == 0:
+            continue
+        a, b, p0 = float(c.hertz.a), float(c.hertz.b), float(c.hertz.p_max)
+        p = p0 * np.sqrt(1 - rr**2)
+        eta = roelands_1966(float(c.viscosity), OIL.pressure_viscosity, p)
+        tau_n = eta * abs(float(c.entrainment_speed)) / float(c.film_minimum)
+        tau_lim = tau0 + gl * p
+        tau = tau_n * tau_lim / (tau_n + tau_lim)
+        area_weight = a * b * rr * (1 / 400) * (2 * np.pi / 400)  # dA = a b r dr dphi
+        force = (1 - float(c.asperity_share)) * float(np.sum(tau * area_weight))
+        torque += c.balls * force * s.pitch_diameter * (1 - s.gamma**2) / 4
+    assert float(r.components["lubricant"]) == pytest.approx(torque, rel=2e-3)
+
+
+def test_general_shear_law_at_its_default_exponent_is_the_harmonic_one() -> None:
+    # The study's general law (eq. 7), (tau_N^-n + tau_lim^-n)^(-1/n), is eq. 5's
+    # harmonic mean at n = 1, its default.
+    from ballscrew.friction.harris_simplified import _harmonic, shear_stress
+
+    tau_n = np.array([0.5, 3e5, 2e7, 4e9])
+    tau_lim = np.full(4, 1e7)
+    general = shear_stress("general", tau_n, 1.0, tau_lim)
+    np.testing.assert_allclose(general, tau_n * tau_lim / (tau_n + tau_lim), rtol=1e-12)
+    # The harmonic helper keeps tiny stresses (0.5 Pa here) and gives 0 at 0.
+    np.testing.assert_allclose(_harmonic(tau_n, tau_lim), general, rtol=1e-12)
+    assert float(_harmonic(np.array([0.0]), np.array([1e7]))[0]) == 0.0
