@@ -1,0 +1,74 @@
+"""Motion profiles against the closed forms of trapezoidal and S-curve moves."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from ballscrew.errors import BallScrewInputError
+from ballscrew.motion import back_and_forth, chain, dwell, move
+
+
+@pytest.mark.parametrize("stroke", [0.3, -0.3])
+def test_trapezoidal_move_closed_form(stroke: float) -> None:
+    # Reaches the feed v: duration s/v + v/a, distance s; the speed is the
+    # derivative of the position (central differences, exact for quadratics).
+    s, v, a = abs(stroke), 0.5, 2.0
+    p = move(stroke, v, a, sample_time=1e-3)
+    assert p.duration == pytest.approx(s / v + v / a, rel=1e-12)
+    assert float(p.position[-1]) == pytest.approx(stroke, rel=1e-12)
+    assert float(np.max(np.abs(p.speed))) == pytest.approx(v, rel=1e-12)
+    assert float(np.max(np.abs(p.acceleration))) == pytest.approx(a, rel=1e-12)
+    mid = slice(1, -1)
+    numeric = (p.position[2:] - p.position[:-2]) / (p.time[2:] - p.time[:-2])
+    smooth = np.abs(np.diff(p.acceleration))[1:] == 0  # away from the steps in a
+    np.testing.assert_allclose(numeric[smooth], p.speed[mid][smooth], atol=1e-9)
+
+
+def test_short_move_is_a_triangle() -> None:
+    # v_peak = sqrt(s a), duration 2 sqrt(s / a).
+    p = move(0.02, 0.5, 2.0)
+    assert float(p.speed.max()) == pytest.approx(math.sqrt(0.02 * 2.0), rel=1e-9)
+    assert p.duration == pytest.approx(2 * math.sqrt(0.02 / 2.0), rel=1e-9)
+
+
+@pytest.mark.parametrize(("s", "j"), [(0.3, 50.0), (0.3, 5.0), (0.01, 50.0), (0.001, 500.0)])
+def test_s_curve_respects_its_limits_and_ends_at_rest(s: float, j: float) -> None:
+    v, a = 0.5, 2.0
+    p = move(s, v, a, jerk=j, sample_time=1e-4)
+    assert float(p.position[-1]) == pytest.approx(s, rel=1e-9)
+    assert float(p.speed[-1]) == 0.0 and float(p.speed.max()) <= v * (1 + 1e-12)
+    assert float(np.abs(p.acceleration).max()) <= a * (1 + 1e-12)
+    jerk = np.abs(np.diff(p.acceleration) / np.diff(p.time))
+    assert float(jerk.max()) <= j * (1 + 1e-9)
+    if s == 0.3 and j == 50.0:
+        # Full S-curve: the trapezoid's duration plus a / j.
+        assert p.duration == pytest.approx(s / v + v / a + a / j, rel=1e-12)
+
+
+def test_cycles_and_dwells_chain_in_time_and_place() -> None:
+    c = back_and_forth(0.3, 0.5, 2.0, dwell_time=0.5, cycles=3, process_force=2000.0,
+                       force_window=(0.05, 0.25))  # fmt: skip
+    assert c.duration == pytest.approx(3 * (2 * 0.85 + 2 * 0.5), rel=1e-12)
+    assert float(c.position[-1]) == pytest.approx(0.0, abs=1e-12)
+    assert np.all(np.diff(c.time) > 0)
+    # The force acts on the way out only, inside the window.
+    out = (c.speed > 0) & (c.process_force > 0)
+    assert out.any() and float(c.position[out].min()) >= 0.05 - 1e-12
+    assert not np.any((c.speed < 0) & (c.process_force != 0))
+    d = chain(dwell(1.0), move(0.2, 0.5, 2.0))
+    assert d.duration == pytest.approx(1.0 + 0.2 / 0.5 + 0.5 / 2.0, rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    "kwargs, field",
+    [({"feed": 0.0}, "feed"), ({"acceleration": -1.0}, "acceleration"), ({"jerk": 0.0}, "jerk")],
+)
+def test_bad_moves_are_refused(kwargs: dict[str, float], field: str) -> None:
+    args = {"stroke": 0.3, "feed": 0.5, "acceleration": 2.0} | kwargs
+    with pytest.raises(BallScrewInputError, match=field):
+        move(**args)  # type: ignore[arg-type]
+    with pytest.raises(BallScrewInputError, match="cycles"):
+        back_and_forth(0.3, 0.5, 2.0, cycles=0)
