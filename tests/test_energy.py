@@ -1,0 +1,75 @@
+"""Energy of a feed axis over a motion profile: checks computed another way."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from ballscrew import friction_torque, lubricants, reference_screw
+from ballscrew.energy import STANDARD_GRAVITY, Axis, axis_cycle
+from ballscrew.motion import Profile, back_and_forth, move
+
+OIL = lubricants.get("PAO ISO VG 68")
+
+
+def test_constant_speed_energy_is_torque_times_speed_times_time() -> None:
+    # 2 s at 0.25 m/s (1500 rpm on a 10 mm lead) and 1.5 kN: E = T omega t.
+    t = np.linspace(0.0, 2.0, 11)
+    v = np.full_like(t, 0.25)
+    zero = np.zeros_like(t)
+    p = Profile(t, v * t, v, zero, zero + 1500.0)
+    s = reference_screw()
+    r = axis_cycle(p, s, OIL, Axis(moving_mass=0.0))
+    omega = 2 * math.pi * 0.25 / s.lead
+    torque = float(friction_torque(s, OIL, speed=omega, temperature=40.0, axial_load=1500.0).total)
+    assert r.friction_energy == pytest.approx(torque * omega * 2.0, rel=1e-12)
+    assert r.friction_energy_back == 0.0
+    # The nut pushes the process force over 0.5 m.
+    assert r.load_work == pytest.approx(1500.0 * 0.5, rel=1e-12)
+
+
+def test_symmetric_cycle_does_no_net_work_on_a_horizontal_load() -> None:
+    c = back_and_forth(0.3, 0.5, 2.0, dwell_time=0.2, cycles=2)
+    r = axis_cycle(c, reference_screw(), OIL, Axis(moving_mass=200.0))
+    peak = 200.0 * 2.0 * 0.0625  # kinetic energy at the feed: 25 J
+    assert abs(r.load_work) < 1e-9 * peak
+    # Out and back are mirror images: the same friction energy each way.
+    assert r.friction_energy_out == pytest.approx(r.friction_energy_back, rel=1e-9)
+    assert r.friction_energy == pytest.approx(
+        r.friction_energy_out + r.friction_energy_back, rel=1e-12
+    )
+
+
+def test_rms_and_peak_motor_torque_of_a_frictionless_inertial_move() -> None:
+    # No friction (catalogue rule with no preload and mu = 0): the motor only
+    # accelerates the mass, T = m a l / 2 pi during 2 t_a of the move, 0 while
+    # cruising, so RMS = T sqrt(2 t_a / t). Sampled steps: error ~ dt / t_a.
+    s = reference_screw().replace(nut="single", preload=0.0)
+    p = move(0.3, 0.5, 2.0, sample_time=1e-4)
+    r = axis_cycle(p, s, OIL, Axis(moving_mass=200.0), model="catalog", friction_coefficient=0.0)
+    t_acc = 200.0 * 2.0 * s.lead / (2 * math.pi)
+    assert r.peak_motor_torque == pytest.approx(t_acc, rel=1e-12)
+    assert r.rms_motor_torque == pytest.approx(t_acc * math.sqrt(2 * 0.25 / 0.85), rel=1e-3)
+    assert r.friction_energy == 0.0
+
+
+def test_gravity_gear_and_inertias_enter_the_motor_torque() -> None:
+    # A vertical axis at rest: the motor holds m g l / 2 pi / i (friction is
+    # 0 at rest in the catalogue rule's direction sign); inertias add
+    # (J_s + J_c) alpha / i + J_m i alpha while accelerating.
+    s = reference_screw().replace(nut="single", preload=0.0)
+    t = np.linspace(0.0, 1.0, 5)
+    zero = np.zeros_like(t)
+    rest = Profile(t, zero, zero, zero, zero)
+    axis = Axis(moving_mass=50.0, gear_ratio=2.0, incline=math.pi / 2)
+    r = axis_cycle(rest, s, OIL, axis, model="catalog")
+    hold = 50.0 * STANDARD_GRAVITY * s.lead / (2 * math.pi) / 2.0
+    np.testing.assert_allclose(r.motor_torque, hold, rtol=1e-12)
+    acc = Profile(t, zero, zero, zero + 1.0, zero)
+    axis = Axis(moving_mass=0.0, screw_inertia=1e-3, coupling_inertia=2e-4, motor_inertia=5e-4,
+                gear_ratio=2.0)  # fmt: skip
+    r = axis_cycle(acc, s, OIL, axis, model="catalog", friction_coefficient=0.0)
+    alpha = 2 * math.pi / s.lead
+    np.testing.assert_allclose(r.motor_torque, 1.2e-3 * alpha / 2 + 5e-4 * 2 * alpha, rtol=1e-12)
