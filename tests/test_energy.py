@@ -73,3 +73,38 @@ def test_gravity_gear_and_inertias_enter_the_motor_torque() -> None:
     r = axis_cycle(acc, s, OIL, axis, model="catalog", friction_coefficient=0.0)
     alpha = 2 * math.pi / s.lead
     np.testing.assert_allclose(r.motor_torque, 1.2e-3 * alpha / 2 + 5e-4 * 2 * alpha, rtol=1e-12)
+
+
+def test_energy_command_json_and_errors(
+    tmp_path: object, capsys: pytest.CaptureFixture[str]
+) -> None:
+    import json
+
+    from ballscrew.cli import main
+
+    case = tmp_path / "axis.toml"  # type: ignore[operator]
+    case.write_text(
+        '[screw]\npitch_diameter = "40 mm"\nlead = "10 mm"\nball_diameter = "6.35 mm"\n'
+        'preload = "2 kN"\n[lubricant]\nname = "mineral ISO VG 68"\n'
+        '[operation]\ntemperature = "40 degC"\n[axis]\nmoving_mass = "200 kg"\n'
+    )
+    move_text = "stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2, force=2 kN"
+    with pytest.raises(SystemExit) as info:
+        main(["energy", "--case", str(case), "--move", move_text, "--cycles", "2", "--json", "-"])
+    assert info.value.code == 0
+    payload = json.loads(capsys.readouterr().out)
+    r = payload["models"]["complete"]
+    # The same as the API on the same cycle.
+    c = back_and_forth(0.3, 0.5, 2.0, cycles=2, process_force=2000.0)
+    from ballscrew.case import load_case
+
+    loaded = load_case(case)
+    api = axis_cycle(c, loaded.screw, loaded.lubricant, Axis(moving_mass=200.0))
+    assert r["friction_energy_J"] == pytest.approx(api.friction_energy, rel=1e-12)
+    assert r["load_work_J"] == pytest.approx(2 * 2000.0 * 0.3, rel=1e-3)
+    for bad, words in [("stroke=300, feed=30 m/min, acceleration=2 m/s^2", "bare number"),
+                       ("stroke=300 mm, feed=30 m/min", "acceleration"),
+                       ("stroke=300 mm, speed=1 m/s, acceleration=2 m/s^2", "keys")]:  # fmt: skip
+        with pytest.raises(SystemExit) as info:
+            main(["energy", "--case", str(case), "--move", bad])
+        assert info.value.code == 2 and words in capsys.readouterr().err

@@ -23,7 +23,7 @@ from __future__ import annotations
 import difflib
 import tomllib
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from importlib import resources
 from pathlib import Path
 from typing import Any
@@ -93,6 +93,8 @@ class Case:
         The TOML text the case was read from.
     screw_source : str
         Where the screw's geometry came from when a designation named it.
+    axis : dict
+        ``[axis]`` in SI (kg, kg·m², rad): the keywords of :class:`ballscrew.energy.Axis`.
     """
 
     title: str
@@ -110,6 +112,7 @@ class Case:
     assumptions: tuple[Assumption, ...]
     text: str
     screw_source: str = ""
+    axis: dict[str, float] = field(default_factory=dict)
 
 
 def _validation_error(exc: ValidationError) -> BallScrewInputError:
@@ -194,6 +197,17 @@ def parse_case(text: str, *, source: str = "case") -> Case:
         assumptions=tuple(notes),
         text=text,
         screw_source=screw_source,
+        axis={
+            name: si("axis", name, getattr(data.axis, name), unit)
+            for name, unit in (
+                ("moving_mass", "kg"),
+                ("screw_inertia", "kg*m**2"),
+                ("coupling_inertia", "kg*m**2"),
+                ("motor_inertia", "kg*m**2"),
+                ("gear_ratio", ""),
+                ("incline", "rad"),
+            )
+        },
     )
 
 

@@ -176,6 +176,18 @@ class OperationSection(BaseModel):
     axial_load: Value = _f("0 N", "force", "external axial load(s) on the nut")
 
 
+class AxisSection(BaseModel):
+    """``[axis]``: what the screw moves and drives, for ``ballscrew energy``."""
+
+    model_config = ConfigDict(extra="forbid")
+    moving_mass: Value = _f("0 kg", "mass", "table, workpiece and nut", "200 kg")
+    screw_inertia: Value = _f("0 kg*m**2", "moment of inertia", "of the screw", "1.5e-3 kg*m**2")
+    coupling_inertia: Value = _f("0 kg*m**2", "moment of inertia", "of the coupling")
+    motor_inertia: Value = _f("0 kg*m**2", "moment of inertia", "of the motor's rotor")
+    gear_ratio: Value = _f(1.0, "-", "motor turns per screw turn")
+    incline: Value = _f("0 deg", "angle", "of the axis above the horizontal (90 deg: vertical)")
+
+
 class StudySection(BaseModel):
     """``[study]``: settings of ``ballscrew study`` (the study's own values by default)."""
 
@@ -223,6 +235,7 @@ class CaseFile(BaseModel):
     screw: ScrewSection
     lubricant: LubricantSection
     operation: OperationSection = Field(default_factory=OperationSection)
+    axis: AxisSection = Field(default_factory=AxisSection)
     study: StudySection = Field(default_factory=StudySection)
 
 
@@ -230,6 +243,7 @@ SECTIONS: dict[str, type[BaseModel]] = {
     "screw": ScrewSection,
     "lubricant": LubricantSection,
     "operation": OperationSection,
+    "axis": AxisSection,
     "study": StudySection,
 }
 

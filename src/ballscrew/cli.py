@@ -23,6 +23,7 @@ from rich.table import Table
 
 from . import __version__, lubricants
 from .cli_case import case_command, screws_command
+from .cli_energy import energy_command
 from .contact import HERTZ_METHODS, hertz
 from .errors import BallScrewInputError, BallScrewValidityWarning
 from .examples import reference_screw
@@ -564,6 +565,7 @@ def lubricants_command() -> None:
 
 cli.add_command(case_command)
 cli.add_command(screws_command)
+cli.add_command(energy_command)
 
 
 def _terminate(signum: int, frame: object) -> None:

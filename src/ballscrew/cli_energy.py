@@ -1,0 +1,156 @@
+"""``ballscrew energy``: friction energy, motor torques of a feed axis over a motion cycle."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+from typing import Any
+
+import click
+from rich.console import Console
+from rich.table import Table
+
+__all__ = ["energy_command", "parse_move"]
+
+_MOVE_KEYS = {
+    "stroke": ("m", True),
+    "feed": ("m/s", True),
+    "acceleration": ("m/s**2", True),
+    "jerk": ("m/s**3", False),
+    "dwell": ("s", False),
+    "force": ("N", False),
+    "force_from": ("m", False),
+    "force_to": ("m", False),
+}
+
+
+def parse_move(text: str) -> dict[str, float]:
+    """``"stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2"`` to SI values by key.
+
+    Keys: stroke, feed, acceleration (required); jerk, dwell, force (the
+    process force on the way out), force_from, force_to (its window, distances
+    from the start).
+    """
+    from .errors import BallScrewInputError
+    from .units import to_si
+
+    out: dict[str, float] = {}
+    for part in (p.strip() for p in text.split(",") if p.strip()):
+        key, sep, value = part.partition("=")
+        key = key.strip()
+        if not sep or key not in _MOVE_KEYS:
+            raise BallScrewInputError(
+                "--move", part, f"key=value with a unit; keys: {', '.join(_MOVE_KEYS)}"
+            )
+        out[key] = to_si(f"--move {key}", value.strip().replace("^", "**"), _MOVE_KEYS[key][0])
+    missing = [k for k, (_, needed) in _MOVE_KEYS.items() if needed and k not in out]
+    if missing:
+        raise BallScrewInputError("--move", text, f"also {', '.join(missing)} (with units)")
+    return out
+
+
+@click.command("energy")
+@click.option("--case", "case_file", type=click.Path(dir_okay=False), default=None,
+              help="Case file with an [axis] section (default: the bundled case).")  # fmt: skip
+@click.option(
+    "--move",
+    "move_text",
+    required=True,
+    help="e.g. 'stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2, force=2 kN, "
+    "force_from=50 mm, force_to=250 mm' (also jerk, dwell).",
+)
+@click.option("--cycles", default=1, show_default=True, type=click.IntRange(1, 100_000),
+              help="Back-and-forth cycles (out, dwell, back, dwell).")  # fmt: skip
+@click.option("--model", "model_names", multiple=True, default=["complete"], show_default=True,
+              help="Friction model; repeat for several.")  # fmt: skip
+@click.option("--temperature", default=None, help="Lubricant temperature, e.g. '40 degC' "
+              "(default: the case's first).")  # fmt: skip
+@click.option("--json", "json_file", default=None,
+              help="Write the results as JSON to FILE ('-' for standard output).")  # fmt: skip
+def energy_command(
+    case_file: str | None,
+    move_text: str,
+    cycles: int,
+    model_names: tuple[str, ...],
+    temperature: str | None,
+    json_file: str | None,
+) -> None:
+    """Friction energy and motor torques of the case's axis over back-and-forth cycles.
+
+    \b
+    Example:
+      ballscrew energy --case my_axis.toml --cycles 10 \\
+        --move "stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2, force=2 kN, \\
+                force_from=50 mm, force_to=250 mm"
+    """  # noqa: D301 - click needs the literal \b to keep the example lines
+    import json
+
+    from . import __version__
+    from .case import load_case
+    from .energy import Axis, axis_cycle
+    from .files import atomic_write
+    from .motion import back_and_forth
+    from .units import to_si
+
+    case = load_case(case_file)
+    m = parse_move(move_text)
+    window = (m["force_from"], m["force_to"]) if "force_from" in m or "force_to" in m else None
+    if window is not None:
+        window = (m.get("force_from", 0.0), m.get("force_to", abs(m["stroke"])))
+    profile = back_and_forth(
+        m["stroke"], m["feed"], m["acceleration"], jerk=m.get("jerk"),
+        dwell_time=m.get("dwell", 0.0), cycles=cycles, process_force=m.get("force", 0.0),
+        force_window=window,
+    )  # fmt: skip
+    temp = (
+        to_si("--temperature", temperature, "degC")
+        if temperature
+        else float(case.temperature.flat[0])
+    )
+    axis = Axis(**case.axis)
+    results: dict[str, Any] = {}
+    for name in model_names:
+        params = dict(case.model_parameters.get(name, {}))
+        r = axis_cycle(profile, case.screw, case.lubricant, axis, temperature=temp, model=name,
+                       **params)  # fmt: skip
+        results[name] = {
+            "friction_energy_J": r.friction_energy,
+            "friction_energy_per_cycle_J": r.friction_energy / cycles,
+            "friction_energy_out_J": r.friction_energy_out,
+            "friction_energy_back_J": r.friction_energy_back,
+            "constant_efficiency_energy_J": r.constant_efficiency_energy,
+            "load_work_J": r.load_work,
+            "peak_motor_torque_Nm": r.peak_motor_torque,
+            "rms_motor_torque_Nm": r.rms_motor_torque,
+            "duration_s": profile.duration,
+            "warnings": [str(issue) for issue in r.friction.warnings],
+        }
+    table = Table(title=f"{case.title}: {cycles} cycle(s), {profile.duration:.4g} s, {temp:g} °C")
+    for column in ("model", "friction energy [J]", "per cycle [J]", "catalogue rule [J]",
+                   "peak motor torque [N*m]", "RMS motor torque [N*m]"):  # fmt: skip
+        table.add_column(column, justify="right")
+    for name, v in results.items():
+        table.add_row(
+            name,
+            f"{v['friction_energy_J']:.4g}",
+            f"{v['friction_energy_per_cycle_J']:.4g}",
+            f"{v['constant_efficiency_energy_J']:.4g}",
+            f"{v['peak_motor_torque_Nm']:.4g}",
+            f"{v['rms_motor_torque_Nm']:.4g}",
+        )
+    Console(stderr=json_file == "-").print(table)
+    if json_file:
+        payload = {
+            "ballscrew": __version__,
+            "case": case.title,
+            "move": m,
+            "cycles": cycles,
+            "temperature_C": temp,
+            "axis": case.axis,
+            "models": results,
+        }
+        text = json.dumps(payload, indent=1, ensure_ascii=False) + "\n"
+        if json_file == "-":
+            sys.stdout.write(text)
+        else:
+            atomic_write(Path(json_file), text.encode("utf-8"))
