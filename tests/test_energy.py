@@ -108,3 +108,21 @@ def test_energy_command_json_and_errors(
         with pytest.raises(SystemExit) as info:
             main(["energy", "--case", str(case), "--move", bad])
         assert info.value.code == 2 and words in capsys.readouterr().err
+
+
+@pytest.mark.parametrize(("lead_mm", "mu"), [(10.0, 0.003), (10.0, 0.01), (5.0, 0.1), (20.0, 0.1)])
+def test_back_driving_decided_as_the_catalogue_does(lead_mm: float, mu: float) -> None:
+    # THK's reverse efficiency tan(beta - rho)/tan(beta) (rho = atan mu): with the
+    # catalogue model and no preload, 1 - 2 pi T/(F l) = 2 - 1/eta agrees to
+    # first order in mu (difference ~ mu^2 / tan^2 beta), and both call the
+    # screw self-locking when the lead angle is below the friction angle.
+    from ballscrew.energy import reverse_efficiency
+
+    s = reference_screw().replace(nut="single", preload=0.0, lead=lead_mm * 1e-3)
+    r = friction_torque(s, OIL, speed=10.0, temperature=40.0, axial_load=3000.0,
+                        model="catalog", friction_coefficient=mu)  # fmt: skip
+    beta, rho = s.lead_angle, math.atan(mu)
+    thk = math.tan(beta - rho) / math.tan(beta)
+    ours = float(reverse_efficiency(r, s.lead))
+    assert ours == pytest.approx(thk, abs=2 * (mu / math.tan(beta)) ** 2)
+    assert (ours > 0) == (thk > 0) == (beta > rho)

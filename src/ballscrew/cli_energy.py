@@ -122,6 +122,9 @@ def energy_command(
             "load_work_J": r.load_work,
             "peak_motor_torque_Nm": r.peak_motor_torque,
             "rms_motor_torque_Nm": r.rms_motor_torque,
+            "forward_efficiency": r.forward_efficiency,
+            "reverse_efficiency": r.reverse_efficiency,
+            "self_locking": r.reverse_efficiency <= 0.0,
             "duration_s": profile.duration,
             "warnings": [str(issue) for issue in r.friction.warnings],
         }

@@ -17,7 +17,9 @@ one vectorised call and returns, in SI:
 * friction power :math:`T_f|\omega|` and energy :math:`\int T_f|\omega|\,dt`
   (trapezoidal rule over the samples), split by direction of travel, and the
   same with the catalogue's constant-efficiency rule for comparison;
-* the peak and RMS motor torque, :math:`\sqrt{\int T_m^2\,dt / t}`.
+* the peak and RMS motor torque, :math:`\sqrt{\int T_m^2\,dt / t}`;
+* the forward and back-driving efficiencies at the working point
+  (:func:`reverse_efficiency`).
 
 The friction torque is the model's at the axial load and speed of each
 sample; the model sees the load through its ball loads, so load-dependent
@@ -39,7 +41,7 @@ from .geometry import BallScrew
 from .lubricant import Lubricant
 from .motion import Profile
 
-__all__ = ["Axis", "CycleResult", "axis_cycle"]
+__all__ = ["Axis", "CycleResult", "axis_cycle", "reverse_efficiency"]
 
 STANDARD_GRAVITY = 9.80665
 """[m/s²]."""
@@ -102,7 +104,27 @@ class CycleResult:
     load_work: float
     peak_motor_torque: float
     rms_motor_torque: float
+    forward_efficiency: float
+    reverse_efficiency: float
     friction: FrictionResult = field(repr=False)
+
+
+def reverse_efficiency(result: FrictionResult, lead: float) -> FloatArray:
+    r"""Back-driving efficiency: the load drives the screw [-].
+
+    The load's power :math:`|F|l\omega/2\pi` reaches the screw less the
+    friction :math:`T_f\omega`: :math:`\eta' = 1 - 2\pi T_f/(|F| l)`. Zero
+    or negative means self-locking: the load cannot turn the screw. With the
+    catalogue model this is :math:`2 - 1/\eta`, which agrees with THK's
+    :math:`\tan(\beta-\rho)/\tan\beta` to first order in :math:`\mu`.
+    NaN where there is no axial load.
+    """
+    f = np.abs(np.asarray(result.axial_load, dtype=float))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        out: FloatArray = np.where(
+            f > 0.0, 1.0 - 2.0 * math.pi * result.total / (f * lead), math.nan
+        )
+    return out
 
 
 def _integral(y: FloatArray, t: FloatArray) -> float:
@@ -157,6 +179,11 @@ def axis_cycle(
     t_motor = t_screw / i + axis.motor_inertia * i * alpha
     power = t_f * np.abs(omega)
     time = profile.time
+    # Efficiencies at the working point: the sample of largest |F v| (the
+    # process force at feed, or the peak of acceleration).
+    k = int(np.argmax(np.abs(force * profile.speed)))
+    forward = float(np.ravel(fr.efficiency)[k])
+    backward = float(np.ravel(reverse_efficiency(fr, lead))[k])
     out = np.where(omega > 0.0, power, 0.0)
     back = np.where(omega < 0.0, power, 0.0)
     return CycleResult(
@@ -182,5 +209,7 @@ def axis_cycle(
         + _integral(profile.process_force * profile.speed, time),
         peak_motor_torque=float(np.max(np.abs(t_motor))),
         rms_motor_torque=math.sqrt(_integral(t_motor**2, time) / profile.duration),
+        forward_efficiency=forward,
+        reverse_efficiency=backward,
         friction=fr,
     )
