@@ -1,0 +1,57 @@
+"""The lumped heat balance: energy conserved, exact limits, published correlations."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from ballscrew import reference_screw
+from ballscrew.energy import Axis
+from ballscrew.motion import back_and_forth
+from ballscrew.thermal import (
+    AIR,
+    ThermalNode,
+    convection_coefficient,
+    steady_temperature,
+    temperature_history,
+)
+
+CYCLE = back_and_forth(0.3, 0.5, 2.0, cycles=1, process_force=2000.0, force_window=(0.05, 0.25))
+
+
+def test_natural_convection_of_a_still_cylinder() -> None:
+    # Churchill and Chu at Ra = g beta dT d^3 / (nu alpha), by hand for a 40 mm
+    # cylinder 10 K above 20 °C air (beta = 1/298.15 K).
+    k, nu, pr = AIR["conductivity"], AIR["kinematic_viscosity"], AIR["prandtl"]
+    ra = 9.80665 / 298.15 * 10.0 * 0.04**3 / (nu * nu / pr)
+    nu_d = (0.60 + 0.387 * ra ** (1 / 6) / (1 + (0.559 / pr) ** (9 / 16)) ** (8 / 27)) ** 2
+    assert 1e4 < ra < 1e6  # laminar, inside the correlation's range
+    assert convection_coefficient(0.04, 0.0, 30.0, 20.0) == pytest.approx(nu_d * k / 0.04)
+
+
+def test_steady_state_heat_in_equals_heat_out() -> None:
+    node = ThermalNode(screw_length=1.0, ambient=20.0, machine_resistance=2.0)
+    s = steady_temperature(CYCLE, reference_screw(), "mineral ISO VG 68", Axis(moving_mass=200.0),
+                           node)  # fmt: skip
+    assert s.temperature > 20.0
+    # Bisection to 200 K / 2^60: the balance holds to rounding.
+    assert s.heat_out == pytest.approx(s.friction_power, rel=1e-9)
+
+
+def test_history_with_constant_power_and_conductance_is_the_exponential() -> None:
+    # The catalogue model's friction does not depend on temperature, and forced
+    # convection at the cycle's speed does not either (it exceeds natural
+    # convection here), so T = Ta + P/G (1 - exp(-G t / C)) exactly.
+    screw = reference_screw()
+    node = ThermalNode(screw_length=1.0, ambient=20.0, machine_resistance=2.0, nut_mass=3.0)
+    axis = Axis(moving_mass=200.0)
+    s = steady_temperature(CYCLE, screw, "mineral ISO VG 68", axis, node, model="catalog")
+    t, temp = temperature_history(CYCLE, screw, "mineral ISO VG 68", axis, node, 7200.0,
+                                  model="catalog")  # fmt: skip
+    capacity = node.heat_capacity(screw)
+    expected = 20.0 + s.friction_power / s.conductance * (1 - np.exp(-s.conductance * t / capacity))
+    np.testing.assert_allclose(temp, expected, rtol=1e-5)
+    # Heat capacity of steel: 7850 kg/m^3 * pi/4 * 0.04^2 m^2 * 1 m * 460 J/(kg K) + 3 kg * 460.
+    assert capacity == pytest.approx((7850 * math.pi / 4 * 0.04**2 + 3.0) * 460.0, rel=1e-12)
