@@ -72,3 +72,30 @@ def test_bad_moves_are_refused(kwargs: dict[str, float], field: str) -> None:
         move(**args)  # type: ignore[arg-type]
     with pytest.raises(BallScrewInputError, match="cycles"):
         back_and_forth(0.3, 0.5, 2.0, cycles=0)
+
+
+def test_trajectory_from_csv_with_units_and_decimal_commas() -> None:
+    from ballscrew.motion import read_trajectory
+
+    # x = 0.5 t^2 [m] sampled in mm and ms: v = t, a = 1 (finite differences
+    # of second order are exact for a quadratic).
+    t = np.linspace(0.0, 1.0, 11)
+    text = "time [ms];position [mm];force [kN]\n" + "\n".join(
+        f"{ti * 1e3:g};{0.5 * ti**2 * 1e3:.6f};2".replace(".", ",") for ti in t
+    )
+    p = read_trajectory(text)
+    np.testing.assert_allclose(p.speed, t, atol=1e-9)
+    np.testing.assert_allclose(p.acceleration, 1.0, atol=1e-6)
+    np.testing.assert_allclose(p.process_force, 2000.0)
+    speed_csv = "time [s],speed [m/min]\n0,0\n1,60\n2,60\n"
+    q = read_trajectory(speed_csv)
+    assert float(q.position[-1]) == pytest.approx(0.5 + 1.0)  # trapezoidal integral
+    bad_files = {
+        "time,position [mm]\n0,0\n1,1\n": "'name [unit]'",
+        "time [s],force [N]\n0,0\n1,1\n": "position or speed",
+        "time [s],position [mm]\n0,0\n0,1\n1,2\n": "times increasing",
+    }
+    for bad, words in bad_files.items():
+        with pytest.raises(BallScrewInputError) as info:
+            read_trajectory(bad)
+        assert words in str(info.value)

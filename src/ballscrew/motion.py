@@ -29,7 +29,7 @@ import numpy as np
 
 from .errors import BallScrewInputError, FloatArray, check_nonnegative, check_positive
 
-__all__ = ["Profile", "back_and_forth", "chain", "dwell", "move"]
+__all__ = ["Profile", "back_and_forth", "chain", "dwell", "move", "read_trajectory"]
 
 
 @dataclass(frozen=True)
@@ -234,3 +234,63 @@ def back_and_forth(
         dwell(dwell_time, sample_time=sample_time),
     ]  # fmt: skip
     return chain(*(one * cycles))
+
+
+def read_trajectory(text: str, source: str = "trajectory") -> Profile:
+    """A profile from CSV text: time, and position or table speed, and optionally force.
+
+    The header names each column with its unit in brackets, e.g. ``time [s],
+    position [mm], force [kN]`` or ``time [ms];speed [m/min]`` (semicolons
+    or tabs allow decimal commas). Speed and acceleration (or position) are
+    derived by finite differences (central, second order) on the given times.
+    """
+    import csv
+    import io
+    import re
+
+    from .units import registry
+
+    first = next((line for line in text.splitlines() if line.strip()), "")
+    delimiter = ";" if ";" in first else ("\t" if "\t" in first else ",")
+    rows = [r for r in csv.reader(io.StringIO(text.lstrip("\ufeff")), delimiter=delimiter) if r]
+    if len(rows) < 3:
+        raise BallScrewInputError(source, "(too short)", "a header and at least 2 data rows")
+    header = re.compile(r"^\s*(\w[\w ]*?)\s*\[([^\]]+)\]\s*$")
+    ureg = registry()
+    columns: dict[str, tuple[int, str]] = {}
+    for i, cell in enumerate(rows[0]):
+        m = header.match(cell)
+        if not m:
+            raise BallScrewInputError(f"{source}: header", cell, "'name [unit]', e.g. 'time [s]'")
+        unit = m.group(2).strip()
+        for kind, si in (("time", "s"), ("position", "m"), ("speed", "m/s"), ("force", "N")):
+            if ureg.Quantity(1.0, unit).is_compatible_with(si) and kind not in columns:
+                columns[kind] = (i, unit)
+                break
+    if "time" not in columns or not ({"position", "speed"} & set(columns)):
+        raise BallScrewInputError(
+            f"{source}: header", ",".join(rows[0]),
+            "a time column and a position or speed column, each with its unit",
+        )  # fmt: skip
+
+    def column(kind: str, si: str) -> FloatArray:
+        i, unit = columns[kind]
+        try:
+            raw = [float(r[i].replace(",", ".") if delimiter != "," else r[i]) for r in rows[1:]]
+        except (ValueError, IndexError):
+            raise BallScrewInputError(f"{source}: column {kind}", "(data)", "numbers") from None
+        return np.asarray(ureg.Quantity(np.asarray(raw), unit).to(si).magnitude, dtype=float)
+
+    t = column("time", "s")
+    if not np.all(np.diff(t) > 0.0):
+        k = int(np.argmax(np.diff(t) <= 0.0)) + 3
+        raise BallScrewInputError(f"{source}: line {k}", float(t[k - 2]), "times increasing")
+    if "position" in columns:
+        x = column("position", "m")
+        v = np.gradient(x, t, edge_order=2)
+    else:
+        v = column("speed", "m/s")
+        x = np.concatenate([[0.0], np.cumsum(0.5 * (v[1:] + v[:-1]) * np.diff(t))])
+    a = np.gradient(v, t, edge_order=2)
+    f = column("force", "N") if "force" in columns else np.zeros_like(t)
+    return Profile(t, x, v, a, f)
