@@ -126,3 +126,39 @@ def test_back_driving_decided_as_the_catalogue_does(lead_mm: float, mu: float) -
     ours = float(reverse_efficiency(r, s.lead))
     assert ours == pytest.approx(thk, abs=2 * (mu / math.tan(beta)) ** 2)
     assert (ours > 0) == (thk > 0) == (beta > rho)
+
+
+def test_energy_command_reports_the_temperature_and_takes_a_profile(
+    tmp_path: object, capsys: pytest.CaptureFixture[str]
+) -> None:
+    import json
+
+    from ballscrew.cli import main
+    from ballscrew.thermal import ThermalNode, steady_temperature
+
+    case = tmp_path / "axis.toml"  # type: ignore[operator]
+    case.write_text(
+        '[screw]\npitch_diameter = "40 mm"\nlead = "10 mm"\nball_diameter = "6.35 mm"\n'
+        'preload = "2 kN"\n[lubricant]\nname = "mineral ISO VG 68"\n'
+        '[axis]\nmoving_mass = "200 kg"\nscrew_length = "1 m"\nnut_mass = "3 kg"\n'
+    )
+    profile = tmp_path / "p.csv"  # type: ignore[operator]
+    profile.write_text("time [s],speed [m/min]\n0,0\n0.25,30\n0.85,30\n1.1,0\n")
+    with pytest.raises(SystemExit) as info:
+        main(["energy", "--case", str(case), "--profile", str(profile), "--run-time", "2 h",
+              "--json", "-"])  # fmt: skip
+    assert info.value.code == 0
+    r = json.loads(capsys.readouterr().out)["models"]["complete"]
+    # Two hours is many time constants: the node has reached its steady temperature.
+    from ballscrew.case import load_case
+    from ballscrew.motion import read_trajectory
+
+    loaded = load_case(case)
+    steady = steady_temperature(read_trajectory(profile.read_text()), loaded.screw,
+                                loaded.lubricant, Axis(moving_mass=200.0),
+                                ThermalNode(screw_length=1.0, nut_mass=3.0))  # fmt: skip
+    assert r["final_temperature_C"] == pytest.approx(steady.temperature, abs=0.05)
+    assert r["steady_temperature_C"] == pytest.approx(steady.temperature, rel=1e-9)
+    with pytest.raises(SystemExit) as info:
+        main(["energy", "--case", str(case)])
+    assert info.value.code == 2 and "exactly one of --move and --profile" in capsys.readouterr().err

@@ -95,6 +95,9 @@ class Case:
         Where the screw's geometry came from when a designation named it.
     axis : dict
         ``[axis]`` in SI (kg, kg·m², rad): the keywords of :class:`ballscrew.energy.Axis`.
+    thermal : dict
+        ``[axis]``'s thermal keys in SI (m, kg, K/W, °C), those given: the
+        keywords of :class:`ballscrew.thermal.ThermalNode`.
     """
 
     title: str
@@ -113,6 +116,7 @@ class Case:
     text: str
     screw_source: str = ""
     axis: dict[str, float] = field(default_factory=dict)
+    thermal: dict[str, float] = field(default_factory=dict)
 
 
 def _validation_error(exc: ValidationError) -> BallScrewInputError:
@@ -207,6 +211,16 @@ def parse_case(text: str, *, source: str = "case") -> Case:
                 ("gear_ratio", ""),
                 ("incline", "rad"),
             )
+        },
+        thermal={
+            name: si("axis", name, getattr(data.axis, name), unit)
+            for name, unit in (
+                ("screw_length", "m"),
+                ("nut_mass", "kg"),
+                ("machine_resistance", "K/W"),
+                ("ambient", "degC"),
+            )
+            if getattr(data.axis, name) is not None
         },
     )
 

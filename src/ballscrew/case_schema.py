@@ -186,6 +186,20 @@ class AxisSection(BaseModel):
     motor_inertia: Value = _f("0 kg*m**2", "moment of inertia", "of the motor's rotor")
     gear_ratio: Value = _f(1.0, "-", "motor turns per screw turn")
     incline: Value = _f("0 deg", "angle", "of the axis above the horizontal (90 deg: vertical)")
+    screw_length: Value | None = _f(
+        None,
+        "length",
+        "screw length in the air, for the temperature (none: no heat balance)",
+        "1 m",
+    )
+    nut_mass: Value = _f("0 kg", "mass", "of the nut, for the heat capacity", "3 kg")
+    machine_resistance: Value | None = _f(
+        None,
+        "thermal resistance",
+        "from the nut into the machine (none: convection only)",
+        "2 K/W",
+    )
+    ambient: Value = _f("20 degC", "temperature", "of the air and the machine")
 
 
 class StudySection(BaseModel):

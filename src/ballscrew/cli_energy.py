@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 import sys
 from pathlib import Path
 from typing import Any
@@ -55,7 +56,7 @@ def parse_move(text: str) -> dict[str, float]:
 @click.option(
     "--move",
     "move_text",
-    required=True,
+    default=None,
     help="e.g. 'stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2, force=2 kN, "
     "force_from=50 mm, force_to=250 mm' (also jerk, dwell).",
 )
@@ -65,14 +66,22 @@ def parse_move(text: str) -> dict[str, float]:
               help="Friction model; repeat for several.")  # fmt: skip
 @click.option("--temperature", default=None, help="Lubricant temperature, e.g. '40 degC' "
               "(default: the case's first).")  # fmt: skip
+@click.option("--profile", "profile_file", type=click.Path(dir_okay=False), default=None,
+              help="A trajectory CSV (time, position or speed, force; units in the header) "
+              "instead of --move.")  # fmt: skip
+@click.option("--run-time", default="1 h", show_default=True,
+              help="How long the cycle repeats, for the temperature reached (needs "
+              "[axis] screw_length).")  # fmt: skip
 @click.option("--json", "json_file", default=None,
               help="Write the results as JSON to FILE ('-' for standard output).")  # fmt: skip
 def energy_command(
     case_file: str | None,
-    move_text: str,
+    move_text: str | None,
     cycles: int,
     model_names: tuple[str, ...],
     temperature: str | None,
+    profile_file: str | None,
+    run_time: str,
     json_file: str | None,
 ) -> None:
     """Friction energy and motor torques of the case's axis over back-and-forth cycles.
@@ -89,19 +98,29 @@ def energy_command(
     from .case import load_case
     from .energy import Axis, axis_cycle
     from .files import atomic_write
-    from .motion import back_and_forth
+    from .motion import back_and_forth, chain, read_trajectory
+    from .thermal import ThermalNode, steady_temperature, temperature_history
     from .units import to_si
 
     case = load_case(case_file)
-    m = parse_move(move_text)
-    window = (m["force_from"], m["force_to"]) if "force_from" in m or "force_to" in m else None
-    if window is not None:
-        window = (m.get("force_from", 0.0), m.get("force_to", abs(m["stroke"])))
-    profile = back_and_forth(
-        m["stroke"], m["feed"], m["acceleration"], jerk=m.get("jerk"),
-        dwell_time=m.get("dwell", 0.0), cycles=cycles, process_force=m.get("force", 0.0),
-        force_window=window,
-    )  # fmt: skip
+    if (move_text is None) == (profile_file is None):
+        raise click.UsageError("give exactly one of --move and --profile")
+    m: dict[str, float] = {}
+    if move_text is not None:
+        m = parse_move(move_text)
+        window = None
+        if "force_from" in m or "force_to" in m:
+            window = (m.get("force_from", 0.0), m.get("force_to", abs(m["stroke"])))
+        profile = back_and_forth(
+            m["stroke"], m["feed"], m["acceleration"], jerk=m.get("jerk"),
+            dwell_time=m.get("dwell", 0.0), cycles=cycles, process_force=m.get("force", 0.0),
+            force_window=window,
+        )  # fmt: skip
+    else:
+        assert profile_file is not None
+        one = read_trajectory(Path(profile_file).read_text(encoding="utf-8"), profile_file)
+        profile = chain(*([one] * cycles))
+    hours = to_si("--run-time", run_time, "s")
     temp = (
         to_si("--temperature", temperature, "degC")
         if temperature
@@ -128,11 +147,24 @@ def energy_command(
             "duration_s": profile.duration,
             "warnings": [str(issue) for issue in r.friction.warnings],
         }
+        if "screw_length" in case.thermal:
+            node = ThermalNode(**case.thermal)
+            steady = steady_temperature(profile, case.screw, case.lubricant, axis, node,
+                                        model=name, **params)  # fmt: skip
+            _, history = temperature_history(profile, case.screw, case.lubricant, axis, node,
+                                             hours, model=name, points=50, **params)  # fmt: skip
+            results[name]["steady_temperature_C"] = steady.temperature
+            results[name]["final_temperature_C"] = float(history[-1])
+            warm = axis_cycle(profile, case.screw, case.lubricant, axis,
+                              temperature=float(history[-1]), model=name, **params)  # fmt: skip
+            results[name]["friction_energy_at_final_temperature_J"] = warm.friction_energy
     table = Table(title=f"{case.title}: {cycles} cycle(s), {profile.duration:.4g} s, {temp:g} °C")
     for column in ("model", "friction energy [J]", "per cycle [J]", "catalogue rule [J]",
-                   "peak motor torque [N*m]", "RMS motor torque [N*m]"):  # fmt: skip
+                   "peak motor torque [N*m]", "RMS motor torque [N*m]",
+                   f"temperature after {run_time} [degC]"):  # fmt: skip
         table.add_column(column, justify="right")
     for name, v in results.items():
+        extra = f"{v['final_temperature_C']:.3g}" if "final_temperature_C" in v else "-"
         table.add_row(
             name,
             f"{v['friction_energy_J']:.4g}",
@@ -140,8 +172,11 @@ def energy_command(
             f"{v['constant_efficiency_energy_J']:.4g}",
             f"{v['peak_motor_torque_Nm']:.4g}",
             f"{v['rms_motor_torque_Nm']:.4g}",
+            extra,
         )
-    Console(stderr=json_file == "-").print(table)
+    probe = Console()
+    wide = probe.is_terminal or "COLUMNS" in os.environ
+    Console(stderr=json_file == "-", width=None if wide else 200).print(table)
     if json_file:
         payload = {
             "ballscrew": __version__,
