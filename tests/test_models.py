@@ -608,3 +608,33 @@ def test_general_shear_law_at_its_default_exponent_is_the_harmonic_one() -> None
     # The harmonic helper keeps tiny stresses (0.5 Pa here) and gives 0 at 0.
     np.testing.assert_allclose(_harmonic(tau_n, tau_lim), general, rtol=1e-12)
     assert float(_harmonic(np.array([0.0]), np.array([1e7]))[0]) == 0.0
+
+
+@pytest.mark.parametrize(("c", "rho", "t1", "t2"), [(0.0, 1.0, 0.0, 1.1), (0.4, 0.7, 0.5, 2.9)])
+def test_disk_segment_moments_against_quadrature(
+    c: float, rho: float, t1: float, t2: float
+) -> None:
+    # One segment of a disk (centre (c, 0), radius rho) between the chords at
+    # x = c + rho cos t2 and c + rho cos t1, by quadrature in x of the exact
+    # y-integrals. In a lens the terms that depend on the chord's half-height
+    # alone cancel between its two segments, so the lens test cannot see them.
+    from scipy import integrate
+
+    from ballscrew.friction.viscoelastic import _segment
+
+    def half(x: float) -> float:
+        return math.sqrt(max(0.0, rho**2 - (x - c) ** 2))
+
+    kernels = [
+        lambda x: 2 * half(x),
+        lambda x: 2 * x * half(x),
+        lambda x: 2 * x**2 * half(x),
+        lambda x: 2 * x**3 * half(x),
+        lambda x: 2 * half(x) ** 3 / 3,
+        lambda x: 2 * x * half(x) ** 3 / 3,
+    ]
+    lo, hi = c + rho * math.cos(t2), c + rho * math.cos(t1)
+    exact = [integrate.quad(f, lo, hi, epsabs=1e-14, epsrel=1e-12)[0] for f in kernels]
+    arr = [np.array(v) for v in (c, rho, t1, t2)]
+    closed = [float(m) for m in _segment(*arr)]
+    np.testing.assert_allclose(closed, exact, rtol=1e-9, atol=1e-13)
