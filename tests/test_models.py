@@ -661,3 +661,36 @@ def test_viscoelastic_static_penetration_at_any_load(q: float) -> None:
     k, radius = 2.1e18, 3.175e-3
     c = viscoelastic_contact(q, 0.0, radius, stiffness=k)
     assert float(c.penetration) == pytest.approx(math.sqrt(q / (math.pi * k * radius)), rel=1e-12)
+
+
+def test_full_model_slip_zeroes_the_net_traction_of_a_fluid_film() -> None:
+    # Fluid film only (asperity share 0), spin and Heathcote sliding together,
+    # harmonic law with a finite limiting stress: the slip the model returns
+    # must make the net rolling-direction traction vanish, and the power must
+    # be the integral of tau |v| - both computed here on an independent polar
+    # grid of the ellipse (500 x 720 midpoints, constant viscosity).
+    a, b, p0, eta, h, omega = 2.5e-4, 6e-5, 1.2e9, 0.05, 2e-7, 30.0
+    c_hat, w_hat, tau0, gl = 400.0, 0.3, 2e6, 0.05
+    asperity, lubricant, slip = _spin_contact(
+        a=np.array([a]), b=np.array([b]), p_max=np.array([p0]), viscosity=np.array([eta]),
+        film=np.array([h]), curvature=c_hat, spin=w_hat, screw_speed=np.array([omega]),
+        tau0=tau0, gamma_l=gl, nodes=(32, 128),
+    )  # fmt: skip
+    s = float(slip[0])
+    rho = (np.arange(500) + 0.5) / 500
+    phi = (np.arange(720) + 0.5) / 720 * 2 * np.pi
+    r, f = np.meshgrid(rho, phi, indexing="ij")
+    x, y = b * r * np.cos(f), a * r * np.sin(f)
+    vx = -c_hat * y**2 - w_hat * y + s  # per unit |omega|
+    vy = w_hat * x
+    speed = np.hypot(vx, vy)
+    p = p0 * np.sqrt(1 - r**2)
+    tau_n = eta * omega / h * speed
+    tau_lim = tau0 + gl * p
+    tau = tau_n * tau_lim / (tau_n + tau_lim)
+    da = a * b * r * (1 / 500) * (2 * np.pi / 720)
+    net = float(np.sum(tau * vx / speed * da))
+    scale = float(np.sum(tau * da))
+    assert abs(net) < 2e-4 * scale
+    assert float(lubricant[0]) == pytest.approx(float(np.sum(tau * speed * da)), rel=2e-4)
+    assert float(asperity[0]) == 0.0
