@@ -7,32 +7,27 @@ an internal error.
 from __future__ import annotations
 
 import math
-import os
 import signal
 import sys
-import warnings
-from collections.abc import Callable
 from pathlib import Path
-from typing import Any, TypeVar
 
 import click
 import numpy as np
 from rich.console import Console
-from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 from rich.table import Table
 
 from . import __version__, lubricants
 from .cli_case import case_command, screws_command
+from .cli_common import case_option, file_option, progress, stdout
 from .cli_energy import energy_command
+from .cli_torque import torque
 from .contact import HERTZ_METHODS, hertz
-from .errors import BallScrewInputError, BallScrewValidityWarning
+from .errors import BallScrewInputError
 from .examples import reference_screw
 from .kinematics import rpm_to_rad_s
 from .state import operating_state
 
 __all__ = ["main"]
-
-F = TypeVar("F", bound=Callable[..., Any])
 
 
 @click.group(context_settings={"help_option_names": ["-h", "--help"]})
@@ -143,44 +138,8 @@ def demo(lubricant_name: str, temperature: float) -> None:
     console.print(ft)
 
 
-def _stdout() -> Console:
-    """Console for tables on standard output.
-
-    The terminal's width; when the output is not a terminal (files, pipes) 200
-    columns, unless ``COLUMNS`` says otherwise.
-    """
-    probe = Console()
-    fixed = probe.is_terminal or "COLUMNS" in os.environ
-    return Console(markup=False, width=None if fixed else 200)
-
-
-def _progress(console: Console) -> Progress:
-    return Progress(
-        SpinnerColumn(),
-        TextColumn("{task.description}"),
-        BarColumn(),
-        TimeElapsedColumn(),
-        console=console,
-        transient=True,
-    )
-
-
-_case_option = click.option(
-    "--case",
-    "case_file",
-    type=click.Path(dir_okay=False),
-    default=None,
-    help="Case file (TOML with units); the bundled study case when omitted.",
-)
-
-
-def _file_option(flag: str, dest: str, text: str) -> Callable[[F], F]:
-    """A ``--flag FILE`` option for an output or input file."""
-    return click.option(flag, dest, type=click.Path(dir_okay=False), default=None, help=text)
-
-
 @cli.command()
-@_case_option
+@case_option
 @click.option(
     "--out",
     "out_dir",
@@ -189,12 +148,12 @@ def _file_option(flag: str, dest: str, text: str) -> Callable[[F], F]:
     show_default=True,
     help="Folder for figures, CSV, report and run record.",
 )
-@_file_option(
+@file_option(
     "--measured",
     "measured_file",
     "Measured torque-speed CSV (units in the header) to overlay and score.",
 )
-@_file_option(
+@file_option(
     "--record", "record_file", "Regenerate the report of an earlier run from its run.json."
 )
 def study(
@@ -224,7 +183,7 @@ def study(
         if measured_file is not None:
             measured = read_measured(measured_file, case.screw)
             measured_text = Path(measured_file).read_text("utf-8")
-    with _progress(console) as bar:
+    with progress(console) as bar:
         task = bar.add_task("computing", total=6 + (measured is not None))
 
         def tick(text: str) -> None:
@@ -251,199 +210,6 @@ def study(
         click.echo(f"warning: {message}", err=True)
     out = Path(out_dir)
     click.echo(f"report: {out / 'report.html'} (also report.md); {len(files)} files in {out}/")
-
-
-@cli.command()
-@_case_option
-@click.option(
-    "--model",
-    "model_names",
-    multiple=True,
-    default=("complete",),
-    show_default=True,
-    help="Friction model; repeat for several.",
-)
-@click.option(
-    "--speed",
-    default=None,
-    help="Screw speed(s), e.g. '0..3000 rpm', "
-    "'0..3000:31 rpm' or '100, 1000 rpm' (default: the case's).",
-)
-@click.option("--temperature", default=None, help="Temperature(s), e.g. '20, 40 degC'.")
-@click.option("--axial-load", default=None, help="Axial load(s), e.g. '0, 2 kN'.")
-@_file_option(
-    "--csv",
-    "csv_file",
-    "Write the table as CSV (units in the header; provenance in FILE.meta.json beside it).",
-)
-@click.option(
-    "--csv-layout",
-    type=click.Choice(["long", "wide"]),
-    default="long",
-    show_default=True,
-    help="long: a row per model and point, with components; wide: a torque column per model.",
-)
-@click.option(
-    "--csv-dialect",
-    type=click.Choice(["comma", "semicolon-decimal-comma"]),
-    default="comma",
-    show_default=True,
-    help="semicolon-decimal-comma for spreadsheets in decimal-comma locales.",
-)
-@_file_option("--json", "json_file", "Write the results and their provenance as JSON.")
-@click.option(
-    "--table",
-    "table_kind",
-    type=click.Choice(["auto", "full", "pivot"]),
-    default="auto",
-    show_default=True,
-    help="Terminal table: every row, or torque as speeds x models (auto: pivot above 40 rows).",
-)
-def torque(
-    case_file: str | None,
-    model_names: tuple[str, ...],
-    speed: str | None,
-    temperature: str | None,
-    axial_load: str | None,
-    csv_file: str | None,
-    csv_layout: str,
-    csv_dialect: str,
-    json_file: str | None,
-    table_kind: str,
-) -> None:
-    """Friction torque, power loss and efficiency of one case over speeds, temperatures, loads.
-
-    \b
-    Examples:
-      ballscrew torque --speed "0..3000:7 rpm"
-      ballscrew torque --model olaru --model catalog --temperature "20, 45 degC" --csv t.csv
-      ballscrew torque --case my_screw.toml --axial-load "0, 2 kN" --json t.json
-      ballscrew torque --model complete --model catalog --csv t.csv --csv-layout wide \\
-          --csv-dialect semicolon-decimal-comma
-    """  # noqa: D301 - click needs the literal \b to keep the example lines
-    from .case import load_case
-    from .chain import FrictionResult, friction_torque
-    from .files import atomic_write
-    from .friction import get_model
-    from .outputs import csv_text, json_text, provenance, result_rows
-    from .units import parse_range
-
-    case = load_case(case_file)
-    for name in model_names:
-        get_model(name)
-    w = np.asarray(parse_range("--speed", speed, "rad/s")) if speed else case.speed
-    t = (
-        np.asarray(parse_range("--temperature", temperature, "degC"))
-        if temperature
-        else (case.temperature)
-    )
-    f = (
-        np.asarray(parse_range("--axial-load", axial_load, "N"))
-        if axial_load
-        else (case.axial_load)
-    )
-    grid_w, grid_t, grid_f = (a.ravel() for a in np.meshgrid(w, t, f, indexing="ij"))
-    results: dict[str, FrictionResult] = {}
-    console = Console(stderr=True)
-    with _progress(console) as bar:
-        task = bar.add_task("models", total=len(model_names))
-        for name in model_names:
-            bar.update(task, description=name)
-            params = dict(case.model_parameters.get(name, {}))
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore", BallScrewValidityWarning)
-                results[name] = friction_torque(
-                    case.screw,
-                    case.lubricant,
-                    speed=grid_w,
-                    temperature=grid_t,
-                    axial_load=grid_f,
-                    model=name,
-                    **params,
-                )
-            bar.advance(task)
-    _report_warnings(results)
-    rows = result_rows(results)
-    pivot = table_kind == "pivot" or (table_kind == "auto" and len(rows) > 40)
-    _stdout().print(_pivot_table(case.title, rows) if pivot else _full_table(case.title, rows))
-    if pivot and table_kind == "auto":
-        click.echo(f"({len(rows)} rows: torque shown as speeds x models; --table full for all)")
-    meta = provenance(case, results, ["ballscrew", *sys.argv[1:]])
-    if csv_file:
-        text = csv_text(rows, layout=csv_layout, dialect=csv_dialect)
-        atomic_write(Path(csv_file), text.encode("utf-8"))
-        atomic_write(Path(csv_file + ".meta.json"), json_text([], meta).encode("utf-8"))
-    if json_file:
-        atomic_write(Path(json_file), json_text(rows, meta).encode("utf-8"))
-
-
-def _report_warnings(results: dict[str, Any]) -> None:
-    """Each model's validity issues, one line each, once per run.
-
-    Issues every ordinary ball screw has (``ValidityIssue.routine``) become one
-    note per quantity, naming the models, after the warnings.
-    """
-    routine: dict[str, list[Any]] = {}
-    for r in results.values():
-        for issue in r.warnings:
-            if issue.routine:
-                routine.setdefault(issue.quantity, []).append(issue)
-            else:
-                click.echo(f"warning: {issue}", err=True)
-    for quantity, found in routine.items():
-        worst = max(found, key=lambda i: i.excess)
-        names = ", ".join(i.model for i in found)
-        click.echo(
-            f"note: {quantity} up to {worst.value:.3g}, outside {worst.low:.3g} to "
-            f"{worst.high:.3g} ({worst.applies_to}) for {names}: usual for ball screws, "
-            f"{worst.routine}",
-            err=True,
-        )
-
-
-def _full_table(title: str, rows: list[dict[str, Any]]) -> Table:
-    keys = [k for k in rows[0] if k in _MAIN_COLUMNS]
-    table = Table(title=f"{title}: friction torque", show_lines=False)
-    for key in keys:
-        table.add_column(key, justify="right", overflow="fold")
-    for row in rows:
-        table.add_row(*(_show(row[k]) for k in keys))
-    return table
-
-
-_MAIN_COLUMNS = (
-    "model",
-    "speed [rpm]",
-    "temperature [degC]",
-    "axial load [N]",
-    "torque [N*m]",
-    "power loss [W]",
-    "efficiency [-]",
-)
-
-
-def _show(value: object) -> str:
-    return value if isinstance(value, str) else f"{value:.5g}"
-
-
-def _pivot_table(title: str, rows: list[dict[str, Any]]) -> Table:
-    """Torque [N·m] as rows of (temperature, load, speed) and a column per model."""
-    models = list(dict.fromkeys(str(r["model"]) for r in rows))
-    cells: dict[tuple[Any, ...], dict[str, float]] = {}
-    for r in rows:
-        key = (r["temperature [degC]"], r["axial load [N]"], r["speed [rpm]"])
-        cells.setdefault(key, {})[str(r["model"])] = r["torque [N*m]"]
-    table = Table(title=f"{title}: friction torque [N*m]")
-    for column in ("temperature [degC]", "axial load [N]", "speed [rpm]", *models):
-        table.add_column(column, justify="right", overflow="fold")
-    for (temp, load, rpm), by_model in sorted(cells.items()):
-        table.add_row(
-            _show(temp),
-            _show(load),
-            _show(rpm),
-            *(_show(by_model.get(m, math.nan)) for m in models),
-        )
-    return table
 
 
 @cli.command()
@@ -477,7 +243,7 @@ def validate(out_dir: str, model_names: tuple[str, ...]) -> None:
 
     names = [get_model(name).name for name in model_names] or None
     console = Console(stderr=True)
-    with _progress(console) as bar:
+    with progress(console) as bar:
         total = len(names) if names else len(MODELS)
         task = bar.add_task("scoring", total=total)
         rows = score(names, progress=lambda name: bar.update(task, description=name, advance=1))
@@ -488,7 +254,7 @@ def validate(out_dir: str, model_names: tuple[str, ...]) -> None:
         table.add_column(col)
     for row in table_rows:
         table.add_row(*row)
-    _stdout().print(table)
+    stdout().print(table)
     click.echo(f"scorecard: {Path(out_dir) / 'report.html'} ({len(files)} files in {out_dir}/)")
 
 
@@ -518,7 +284,7 @@ def models_command() -> None:
             else "not scored"
         )
         table.add_row(spec.name, spec.purpose, accuracy)
-    console = _stdout()
+    console = stdout()
     console.print(table)
     for spec in models():
         console.print(f"\n{spec.name}: {spec.title}", highlight=False)
@@ -560,9 +326,10 @@ def lubricants_command() -> None:
             f"{oil.limiting_shear_coefficient:g}",
             oil.source,
         )
-    _stdout().print(table)
+    stdout().print(table)
 
 
+cli.add_command(torque)
 cli.add_command(case_command)
 cli.add_command(screws_command)
 cli.add_command(energy_command)
