@@ -9,18 +9,10 @@ import pytest
 from ballscrew import friction_torque
 from ballscrew.case import load_case, parse_case
 from ballscrew.case_schema import SECTIONS, CaseFile, reference_markdown, reference_rows, template
-from ballscrew.cli import main
 from ballscrew.errors import BallScrewInputError
+from cli_runner import run
 
 DOCS = Path(__file__).parents[1] / "docs" / "case-files.md"
-
-
-def run(args: list[str], capsys: pytest.CaptureFixture[str]) -> tuple[int, str, str]:
-    with pytest.raises(SystemExit) as info:
-        main(args)
-    out = capsys.readouterr()
-    code = info.value.code
-    return (code if isinstance(code, int) else 0), out.out, out.err
 
 
 def test_template_round_trips_through_check_and_torque(

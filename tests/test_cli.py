@@ -12,18 +12,10 @@ import pytest
 
 from ballscrew import __version__, friction_torque
 from ballscrew.case import load_case
-from ballscrew.cli import main
+from cli_runner import run
 
 DATA = Path(__file__).parent / "data"
 SMALL = DATA / "small_case.toml"
-
-
-def run(args: list[str], capsys: pytest.CaptureFixture[str]) -> tuple[int, str, str]:
-    with pytest.raises(SystemExit) as info:
-        main(args)
-    out = capsys.readouterr()
-    code = info.value.code
-    return (code if isinstance(code, int) else 0), out.out, out.err
 
 
 def test_version_and_help(capsys: pytest.CaptureFixture[str]) -> None:

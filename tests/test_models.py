@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 
 import numpy as np
 import pytest
@@ -97,6 +98,21 @@ def test_lens_moments_against_a_fine_grid(xc: float, rm2: float) -> None:
     np.testing.assert_allclose(closed, grid, rtol=0, atol=4e-3)
 
 
+def _moment_kernels(half: Callable[[float], float]) -> list[Callable[[float], float]]:
+    """x-integrands of the moments 1, x, x^2, x^3, y^2, x y^2 of a region |y| <= half(x).
+
+    The y-integrals are exact: 2 Y for the first four, 2 Y^3 / 3 for the last two.
+    """
+    return [
+        lambda x: 2 * half(x),
+        lambda x: 2 * x * half(x),
+        lambda x: 2 * x**2 * half(x),
+        lambda x: 2 * x**3 * half(x),
+        lambda x: 2 * half(x) ** 3 / 3,
+        lambda x: 2 * x * half(x) ** 3 / 3,
+    ]
+
+
 def _lens_by_quadrature(rp: float, xc: float, rm2: float) -> np.ndarray:
     """Moments of the lens by adaptive quadrature in x of the exact integrals in y.
 
@@ -112,14 +128,7 @@ def _lens_by_quadrature(rp: float, xc: float, rm2: float) -> np.ndarray:
     def half(x: float) -> float:
         return math.sqrt(max(0.0, min(rp**2 - x**2, rm2 - (x - xc) ** 2)))
 
-    kernels = [
-        lambda x: 2 * half(x),
-        lambda x: 2 * x * half(x),
-        lambda x: 2 * x**2 * half(x),
-        lambda x: 2 * x**3 * half(x),
-        lambda x: 2 * half(x) ** 3 / 3,
-        lambda x: 2 * x * half(x) ** 3 / 3,
-    ]
+    kernels = _moment_kernels(half)
     points = [chord] if lo < chord < hi else None
     return np.array(
         [integrate.quad(f, lo, hi, points=points, epsabs=1e-14, epsrel=1e-12)[0] for f in kernels]
@@ -639,14 +648,7 @@ def test_disk_segment_moments_against_quadrature(
     def half(x: float) -> float:
         return math.sqrt(max(0.0, rho**2 - (x - c) ** 2))
 
-    kernels = [
-        lambda x: 2 * half(x),
-        lambda x: 2 * x * half(x),
-        lambda x: 2 * x**2 * half(x),
-        lambda x: 2 * x**3 * half(x),
-        lambda x: 2 * half(x) ** 3 / 3,
-        lambda x: 2 * x * half(x) ** 3 / 3,
-    ]
+    kernels = _moment_kernels(half)
     lo, hi = c + rho * math.cos(t2), c + rho * math.cos(t1)
     exact = [integrate.quad(f, lo, hi, epsabs=1e-14, epsrel=1e-12)[0] for f in kernels]
     arr = [np.array(v) for v in (c, rho, t1, t2)]
