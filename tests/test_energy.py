@@ -162,3 +162,22 @@ def test_energy_command_reports_the_temperature_and_takes_a_profile(
     with pytest.raises(SystemExit) as info:
         main(["energy", "--case", str(case)])
     assert info.value.code == 2 and "exactly one of --move and --profile" in capsys.readouterr().err
+
+
+def test_support_bearing_friction_is_reported_and_driven() -> None:
+    # SKF's simplified estimate, M = mu P d / 2 (angular-contact single row:
+    # mu = 0.002): at 0.25 m/s and 1.5 kN for 2 s on a 25 mm bore,
+    # E = 0.5 * 0.002 * 1500 * 0.025 * omega * 2 s, and the motor supplies it.
+    t = np.linspace(0.0, 2.0, 11)
+    v = np.full_like(t, 0.25)
+    zero = np.zeros_like(t)
+    p = Profile(t, v * t, v, zero, zero + 1500.0)
+    s = reference_screw()
+    without = axis_cycle(p, s, OIL, Axis(moving_mass=0.0))
+    with_b = axis_cycle(p, s, OIL, Axis(moving_mass=0.0, bearing_bore=0.025))
+    omega = 2 * math.pi * 0.25 / s.lead
+    m_b = 0.5 * 0.002 * 1500.0 * 0.025
+    assert with_b.bearing_energy == pytest.approx(m_b * omega * 2.0, rel=1e-12)
+    assert without.bearing_energy == 0.0
+    np.testing.assert_allclose(with_b.motor_torque - without.motor_torque, m_b, rtol=1e-12)
+    assert with_b.friction_energy == without.friction_energy  # the screw's, reported apart

@@ -116,6 +116,7 @@ class Case:
     text: str
     screw_source: str = ""
     axis: dict[str, float] = field(default_factory=dict)
+    axis_bearing_type: str = "angular-contact ball, single row"
     thermal: dict[str, float] = field(default_factory=dict)
 
 
@@ -211,7 +212,13 @@ def parse_case(text: str, *, source: str = "case") -> Case:
                 ("gear_ratio", ""),
                 ("incline", "rad"),
             )
-        },
+        }
+        | (
+            {"bearing_bore": si("axis", "bearing_bore", data.axis.bearing_bore, "m")}
+            if data.axis.bearing_bore is not None
+            else {}
+        ),
+        axis_bearing_type=data.axis.bearing_type,
         thermal={
             name: si("axis", name, getattr(data.axis, name), unit)
             for name, unit in (

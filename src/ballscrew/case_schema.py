@@ -186,6 +186,17 @@ class AxisSection(BaseModel):
     motor_inertia: Value = _f("0 kg*m**2", "moment of inertia", "of the motor's rotor")
     gear_ratio: Value = _f(1.0, "-", "motor turns per screw turn")
     incline: Value = _f("0 deg", "angle", "of the axis above the horizontal (90 deg: vertical)")
+    bearing_bore: Value | None = _f(
+        None,
+        "length",
+        "bore of the fixed-end support bearings (none: their friction left out)",
+        "30 mm",
+    )
+    bearing_type: str = _f(
+        "angular-contact ball, single row",
+        "-",
+        "support bearing type for SKF's friction coefficient (see ballscrew.bearings)",
+    )
     screw_length: Value | None = _f(
         None,
         "length",

@@ -126,7 +126,7 @@ def energy_command(
         if temperature
         else float(case.temperature.flat[0])
     )
-    axis = Axis(**case.axis)
+    axis = Axis(**case.axis, bearing_type=case.axis_bearing_type)
     results: dict[str, Any] = {}
     for name in model_names:
         params = dict(case.model_parameters.get(name, {}))
@@ -137,6 +137,7 @@ def energy_command(
             "friction_energy_per_cycle_J": r.friction_energy / cycles,
             "friction_energy_out_J": r.friction_energy_out,
             "friction_energy_back_J": r.friction_energy_back,
+            "bearing_energy_J": r.bearing_energy,
             "constant_efficiency_energy_J": r.constant_efficiency_energy,
             "load_work_J": r.load_work,
             "peak_motor_torque_Nm": r.peak_motor_torque,

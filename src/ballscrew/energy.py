@@ -11,7 +11,9 @@ one vectorised call and returns, in SI:
   (inertia, gravity on an axis inclined by :math:`\theta`, process force);
 * the friction torque :math:`T_f \ge 0` (it opposes the rotation) and the
   torque that moves the load, :math:`T_F = F l/2\pi`;
-* the motor torque :math:`T_m = [T_F + \mathrm{sign}(\omega)T_f +
+* the support bearings' friction :math:`T_b` (:mod:`ballscrew.bearings`,
+  reported separately from the screw's);
+* the motor torque :math:`T_m = [T_F + \mathrm{sign}(\omega)(T_f + T_b) +
   (J_s + J_c)\dot\omega]/i + J_m i\dot\omega` with gear ratio :math:`i`
   (motor turns per screw turn);
 * friction power :math:`T_f|\omega|` and energy :math:`\int T_f|\omega|\,dt`
@@ -35,6 +37,7 @@ from typing import Any
 
 import numpy as np
 
+from .bearings import simplified_bearing_torque
 from .chain import FrictionResult, friction_torque
 from .errors import BallScrewInputError, FloatArray, check_finite, check_nonnegative, check_positive
 from .geometry import BallScrew
@@ -63,6 +66,10 @@ class Axis:
     incline : float
         Angle of the axis above the horizontal [rad], in [-π/2, π/2]; +x
         climbs for a positive angle (π/2: a vertical axis moving up at +x).
+    bearing_bore : float, optional
+        Bore of the fixed-end support bearings [m]; None leaves their friction out.
+    bearing_type : str
+        A type of :data:`ballscrew.bearings.SKF_FRICTION_COEFFICIENTS`.
     """
 
     moving_mass: float
@@ -71,6 +78,8 @@ class Axis:
     motor_inertia: float = 0.0
     gear_ratio: float = 1.0
     incline: float = 0.0
+    bearing_bore: float | None = None
+    bearing_type: str = "angular-contact ball, single row"
 
     def __post_init__(self) -> None:
         for name in ("moving_mass", "screw_inertia", "coupling_inertia", "motor_inertia"):
@@ -100,6 +109,8 @@ class CycleResult:
     friction_energy: float
     friction_energy_out: float
     friction_energy_back: float
+    bearing_torque: FloatArray
+    bearing_energy: float
     constant_efficiency_energy: float
     load_work: float
     peak_motor_torque: float
@@ -174,7 +185,13 @@ def axis_cycle(
     t_f = fr.total
     t_load = force * lead / (2.0 * math.pi)
     t_inertia = (axis.screw_inertia + axis.coupling_inertia) * alpha
-    t_screw = t_load + np.sign(omega) * t_f + t_inertia
+    if axis.bearing_bore is None:
+        t_b = np.zeros_like(t_f)
+    else:
+        t_b = np.broadcast_to(
+            simplified_bearing_torque(force, axis.bearing_bore, axis.bearing_type), t_f.shape
+        )
+    t_screw = t_load + np.sign(omega) * (t_f + t_b) + t_inertia
     i = axis.gear_ratio
     t_motor = t_screw / i + axis.motor_inertia * i * alpha
     power = t_f * np.abs(omega)
@@ -200,6 +217,8 @@ def axis_cycle(
         friction_energy=_integral(power, time),
         friction_energy_out=_integral(out, time),
         friction_energy_back=_integral(back, time),
+        bearing_torque=t_b,
+        bearing_energy=_integral(t_b * np.abs(omega), time),
         constant_efficiency_energy=_integral(catalog.total * np.abs(omega), time),
         # Work on the load: the change of kinetic and potential energy (exact,
         # whatever the sampling of steps in acceleration) plus the process
