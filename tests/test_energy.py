@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -181,3 +182,35 @@ def test_support_bearing_friction_is_reported_and_driven() -> None:
     assert without.bearing_energy == 0.0
     np.testing.assert_allclose(with_b.motor_torque - without.motor_torque, m_b, rtol=1e-12)
     assert with_b.friction_energy == without.friction_energy  # the screw's, reported apart
+
+
+def test_energy_report_files_are_complete_and_reproducible(
+    tmp_path: object, capsys: pytest.CaptureFixture[str]
+) -> None:
+    from ballscrew.cli import main
+
+    case = tmp_path / "axis.toml"  # type: ignore[operator]
+    case.write_text(
+        '[screw]\npitch_diameter = "40 mm"\nlead = "10 mm"\nball_diameter = "6.35 mm"\n'
+        'preload = "2 kN"\n[lubricant]\nname = "mineral ISO VG 68"\n'
+        '[axis]\nmoving_mass = "200 kg"\nbearing_bore = "30 mm"\n'
+    )
+    outputs = []
+    for k in range(2):
+        out = tmp_path / f"r{k}"  # type: ignore[operator]
+        with pytest.raises(SystemExit) as info:
+            move = "stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2"
+            main(["energy", "--case", str(case), "--move", move, "--out", str(out)])
+        assert info.value.code == 0
+        files = sorted(p.relative_to(out) for p in out.rglob("*") if p.is_file())
+        outputs.append({f: (out / f).read_bytes() for f in files})
+    assert outputs[0] == outputs[1]
+    names = {str(f) for f in outputs[0]}
+    for key in ("motion", "power", "energy"):
+        assert {f"figures/{key}.png", f"figures/{key}.svg", f"data/{key}.csv"} <= names
+    report = outputs[0][Path("report.md")].decode()
+    # Every file the Markdown links exists.
+    import re
+
+    for link in re.findall(r"\]\(([^)]+)\)", report):
+        assert link in names, link

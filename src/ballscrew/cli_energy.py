@@ -72,6 +72,8 @@ def parse_move(text: str) -> dict[str, float]:
 @click.option("--run-time", default="1 h", show_default=True,
               help="How long the cycle repeats, for the temperature reached (needs "
               "[axis] screw_length).")  # fmt: skip
+@click.option("--out", "out_dir", type=click.Path(file_okay=False), default=None,
+              help="Write a report (Markdown, HTML, plots, CSV) into this folder.")  # fmt: skip
 @click.option("--json", "json_file", default=None,
               help="Write the results as JSON to FILE ('-' for standard output).")  # fmt: skip
 def energy_command(
@@ -82,6 +84,7 @@ def energy_command(
     temperature: str | None,
     profile_file: str | None,
     run_time: str,
+    out_dir: str | None,
     json_file: str | None,
 ) -> None:
     """Friction energy and motor torques of the case's axis over back-and-forth cycles.
@@ -128,10 +131,13 @@ def energy_command(
     )
     axis = Axis(**case.axis, bearing_type=case.axis_bearing_type)
     results: dict[str, Any] = {}
+    cycles_by_model: dict[str, Any] = {}
+    histories: dict[str, Any] = {}
     for name in model_names:
         params = dict(case.model_parameters.get(name, {}))
         r = axis_cycle(profile, case.screw, case.lubricant, axis, temperature=temp, model=name,
                        **params)  # fmt: skip
+        cycles_by_model[name] = r
         results[name] = {
             "friction_energy_J": r.friction_energy,
             "friction_energy_per_cycle_J": r.friction_energy / cycles,
@@ -152,8 +158,18 @@ def energy_command(
             node = ThermalNode(**case.thermal)
             steady = steady_temperature(profile, case.screw, case.lubricant, axis, node,
                                         model=name, **params)  # fmt: skip
-            _, history = temperature_history(profile, case.screw, case.lubricant, axis, node,
-                                             hours, model=name, points=50, **params)  # fmt: skip
+            times, history = temperature_history(
+                profile,
+                case.screw,
+                case.lubricant,
+                axis,
+                node,
+                hours,
+                model=name,
+                points=50,
+                **params,
+            )
+            histories[name] = (times, history)
             results[name]["steady_temperature_C"] = steady.temperature
             results[name]["final_temperature_C"] = float(history[-1])
             warm = axis_cycle(profile, case.screw, case.lubricant, axis,
@@ -178,6 +194,12 @@ def energy_command(
     probe = Console()
     wide = probe.is_terminal or "COLUMNS" in os.environ
     Console(stderr=json_file == "-", width=None if wide else 200).print(table)
+    if out_dir:
+        from .energy_report import write_energy_report
+
+        files = write_energy_report(out_dir, case.title, profile, cycles_by_model, results,
+                                    histories or None)  # fmt: skip
+        click.echo(f"report: {Path(out_dir) / 'report.html'} ({len(files)} files)", err=True)
     if json_file:
         payload = {
             "ballscrew": __version__,

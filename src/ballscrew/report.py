@@ -15,14 +15,11 @@ renamed), so an interrupted run leaves each file either complete or as it was.
 
 from __future__ import annotations
 
-import base64
 import csv
-import html
 import io
 import json
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -31,6 +28,7 @@ import numpy as np
 from . import __version__
 from .case import Case, parse_case
 from .contact import hertz
+from .document import Block, html_page, markdown
 from .errors import BallScrewInputError
 from .files import atomic_write, sweep_temporaries
 from .loads import ball_loads
@@ -43,90 +41,16 @@ __all__ = ["regenerate", "write_report"]
 RECORD_NAME = "run.json"
 
 
-# --- a tiny document model rendered to Markdown and HTML --------------------------------------
-@dataclass(frozen=True)
-class _Block:
-    kind: str  # "h1", "h2", "p", "ul", "table", "img"
-    content: Any
-
-
-def _md(blocks: list[_Block]) -> str:
-    out: list[str] = []
-    for b in blocks:
-        if b.kind == "h1":
-            out.append(f"# {b.content}\n")
-        elif b.kind == "h2":
-            out.append(f"## {b.content}\n")
-        elif b.kind == "p":
-            out.append(f"{b.content}\n")
-        elif b.kind == "ul":
-            out.append("\n".join(f"- {item}" for item in b.content) + "\n")
-        elif b.kind == "table":
-            header, rows = b.content
-            out.append("| " + " | ".join(header) + " |")
-            out.append("|" + "---|" * len(header))
-            out.extend("| " + " | ".join(str(c) for c in row) + " |" for row in rows)
-            out.append("")
-        elif b.kind == "img":
-            key, caption = b.content
-            out.append(
-                f"![{caption}](figures/{key}.png)\n\n*{caption}* "
-                f"([SVG](figures/{key}.svg), [data](data/{key}.csv))\n"
-            )
-    return "\n".join(out)
-
-
-def _html(blocks: list[_Block], title: str, images: dict[str, bytes]) -> str:
-    parts = [
-        "<!DOCTYPE html>",
-        '<html lang="en"><head><meta charset="utf-8">',
-        f"<title>{html.escape(title)}</title>",
-        "<style>body{font-family:sans-serif;max-width:60em;margin:2em auto;line-height:1.45}"
-        "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #bbb;"
-        "padding:.25em .6em;text-align:left}img{max-width:100%}figcaption{font-style:italic}"
-        "</style></head><body>",
-    ]
-    for b in blocks:
-        if b.kind in ("h1", "h2"):
-            parts.append(f"<{b.kind}>{html.escape(b.content)}</{b.kind}>")
-        elif b.kind == "p":
-            parts.append(f"<p>{html.escape(b.content)}</p>")
-        elif b.kind == "ul":
-            parts.append(
-                "<ul>" + "".join(f"<li>{html.escape(i)}</li>" for i in b.content) + "</ul>"
-            )
-        elif b.kind == "table":
-            header, rows = b.content
-            parts.append(
-                "<table><tr>" + "".join(f"<th>{html.escape(h)}</th>" for h in header) + "</tr>"
-            )
-            for row in rows:
-                parts.append(
-                    "<tr>" + "".join(f"<td>{html.escape(str(c))}</td>" for c in row) + "</tr>"
-                )
-            parts.append("</table>")
-        elif b.kind == "img":
-            key, caption = b.content
-            data = base64.b64encode(images[key]).decode("ascii")
-            parts.append(
-                f'<figure><img alt="{html.escape(caption)}" '
-                f'src="data:image/png;base64,{data}">'
-                f"<figcaption>{html.escape(caption)}</figcaption></figure>"
-            )
-    parts.append("</body></html>\n")
-    return "\n".join(parts)
-
-
 def _fmt(x: float, digits: int = 4) -> str:
     return "n/a" if not math.isfinite(x) else f"{x:.{digits}g}"
 
 
-def _document(result: StudyResult) -> list[_Block]:
+def _document(result: StudyResult) -> list[Block]:
     case = result.case
     s = case.screw
     blocks = [
-        _Block("h1", f"Ball screw friction study: {case.title}"),
-        _Block(
+        Block("h1", f"Ball screw friction study: {case.title}"),
+        Block(
             "p",
             (
                 "Reproduction of J. Sušeň, 'A Study on the Ball Screw Friction Torque', "
@@ -136,9 +60,9 @@ def _document(result: StudyResult) -> list[_Block]:
             )
             + f"computed by ballscrew {__version__}. {' '.join(case.description.split())}".strip(),
         ),
-        _Block("h2", "Findings"),
-        _Block("ul", list(result.findings)),
-        _Block("h2", "Inputs"),
+        Block("h2", "Findings"),
+        Block("ul", list(result.findings)),
+        Block("h2", "Inputs"),
     ]
     assumed = {a.field: a.reason for a in case.assumptions}
     rows = [
@@ -171,7 +95,7 @@ def _document(result: StudyResult) -> list[_Block]:
         ("axial load", f"{result.axial_load:g} N", "operation.axial_load"),
     ]
     blocks.append(
-        _Block(
+        Block(
             "table",
             (
                 ["quantity", "value", "status"],
@@ -181,14 +105,14 @@ def _document(result: StudyResult) -> list[_Block]:
     )
     oil = case.lubricant
     blocks.append(
-        _Block(
+        Block(
             "p",
             f"Lubricant {oil.name}: ν40 = {oil.nu40 * 1e6:g} mm²/s, "
             f"ν100 = {oil.nu100 * 1e6:g} mm²/s, ρ15 = {oil.density15:g} kg/m³, "
             f"α = {oil.pressure_viscosity * 1e9:g} 1/GPa; source: {oil.source}.",
         )
     )
-    blocks.append(_Block("h2", "Derived quantities"))
+    blocks.append(Block("h2", "Derived quantities"))
     pre_rows = []
     for torque, force in result.preloads.items():
         q = float(ball_loads(s.replace(preload=force)).normal_load_1)
@@ -204,7 +128,7 @@ def _document(result: StudyResult) -> list[_Block]:
             )
         )
     blocks.append(
-        _Block(
+        Block(
             "p",
             f"Lead angle {math.degrees(s.lead_angle):.2f}°, "
             f"{s.balls_per_nut} loaded balls per half-nut. Preloads from the "
@@ -213,7 +137,7 @@ def _document(result: StudyResult) -> list[_Block]:
         )
     )
     blocks.append(
-        _Block(
+        Block(
             "table",
             (
                 [
@@ -229,14 +153,14 @@ def _document(result: StudyResult) -> list[_Block]:
         )
     )
     blocks.append(
-        _Block(
+        Block(
             "p",
             "Table 1 of the study: temperatures of Fig. 8 and the kinematic "
             "viscosity there (ASTM D341).",
         )
     )
     blocks.append(
-        _Block(
+        Block(
             "table",
             (
                 ["lubricant", "temperature [°C]", "viscosity [mm²/s]"],
@@ -244,17 +168,17 @@ def _document(result: StudyResult) -> list[_Block]:
             ),
         )
     )
-    blocks.append(_Block("h2", "Figures"))
+    blocks.append(Block("h2", "Figures"))
     for fig in result.figures:
-        blocks.append(_Block("img", (fig.key, f"{fig.title}. {fig.caption}")))
+        blocks.append(Block("img", (fig.key, f"{fig.title}. {fig.caption}")))
         picks = _pick_speeds(fig.series[0].speed_rpm)
         header = ["series"] + [f"{fig.series[0].speed_rpm[i]:.0f} rpm [N·m]" for i in picks]
         rows_t = [[se.label] + [_fmt(float(se.torque[i])) for i in picks] for se in fig.series]
-        blocks.append(_Block("table", (header, rows_t)))
+        blocks.append(Block("table", (header, rows_t)))
     if result.measured is not None:
-        blocks.append(_Block("h2", "Against the measured curve"))
+        blocks.append(Block("h2", "Against the measured curve"))
         blocks.append(
-            _Block(
+            Block(
                 "p",
                 f"Measured curve: {result.measured.source} "
                 f"({result.measured.speed.size} points); models at the "
@@ -262,7 +186,7 @@ def _document(result: StudyResult) -> list[_Block]:
             )
         )
         blocks.append(
-            _Block(
+            Block(
                 "table",
                 (
                     ["model", "RMSE [N·m]", "mean |rel. error|", "max |rel. error|"],
@@ -278,13 +202,13 @@ def _document(result: StudyResult) -> list[_Block]:
                 ),
             )
         )
-    blocks.append(_Block("h2", "Validity warnings"))
+    blocks.append(Block("h2", "Validity warnings"))
     blocks.append(
-        _Block("ul", list(result.validity) or ["none: every input within the stated ranges"])
+        Block("ul", list(result.validity) or ["none: every input within the stated ranges"])
     )
-    blocks.append(_Block("h2", "Assumptions"))
+    blocks.append(Block("h2", "Assumptions"))
     blocks.append(
-        _Block(
+        Block(
             "ul",
             [f"{a.field} = {a.value}: {a.reason}" for a in case.assumptions]
             + (
@@ -298,9 +222,9 @@ def _document(result: StudyResult) -> list[_Block]:
             ),
         )
     )
-    blocks.append(_Block("h2", "Model parameters"))
+    blocks.append(Block("h2", "Model parameters"))
     blocks.append(
-        _Block(
+        Block(
             "table",
             (
                 ["model", "parameters"],
@@ -312,7 +236,7 @@ def _document(result: StudyResult) -> list[_Block]:
         )
     )
     blocks.append(
-        _Block(
+        Block(
             "p",
             "Every other parameter has the model's documented default; see "
             "each model's docstring (ballscrew.friction) for its equations, "
@@ -382,8 +306,8 @@ def write_report(
     blocks = _document(result)
     title = f"Ball screw friction study: {result.case.title}"  # same as the h1
     for path, text in (
-        (folder / "report.md", _md(blocks)),
-        (folder / "report.html", _html(blocks, title, images)),
+        (folder / "report.md", markdown(blocks)),
+        (folder / "report.html", html_page(blocks, title, images)),
     ):
         atomic_write(path, text.encode("utf-8"))
         written.append(path)

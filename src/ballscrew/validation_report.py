@@ -23,9 +23,9 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
 from . import __version__
+from .document import Block, html_page, markdown
 from .files import atomic_write
 from .plotting import figure_bytes
-from .report import _Block, _html, _md
 from .validation import ModelScore, ScoreRow, summarise
 
 __all__ = ["summary_csv", "summary_table", "write_scorecard"]
@@ -115,14 +115,14 @@ def _figure(rows: list[ScoreRow]) -> Figure:
     return fig
 
 
-def _document(rows: list[ScoreRow], scores: list[ModelScore]) -> list[_Block]:
+def _document(rows: list[ScoreRow], scores: list[ModelScore]) -> list[Block]:
     header, table = summary_table(scores)
     trends = [r for r in rows if r.kind == "trend"]
     kinds = sorted({r.kind for r in rows if r.kind != "trend"})
     cases = {r.case: r for r in rows if r.kind != "trend"}
     blocks = [
-        _Block("h1", "Validation scorecard"),
-        _Block(
+        Block("h1", "Validation scorecard"),
+        Block(
             "p",
             f"ballscrew {__version__}: every registered model on {len(cases)} reference cases "
             f"({', '.join(kinds)}) and {len({r.case for r in trends})} trend checks. A case "
@@ -130,11 +130,11 @@ def _document(rows: list[ScoreRow], scores: list[ModelScore]) -> list[_Block]:
             "±30 %, Jungnickel's law within a factor 1.5). The rows marked training are the "
             "only ones the complete model's ball-train constant was fitted on.",
         ),
-        _Block("h2", "Summary"),
-        _Block("table", (header, table)),
-        _Block("img", ("predicted_vs_reference", "Predicted against reference torque.")),
-        _Block("h2", "Trends"),
-        _Block(
+        Block("h2", "Summary"),
+        Block("table", (header, table)),
+        Block("img", ("predicted_vs_reference", "Predicted against reference torque.")),
+        Block("h2", "Trends"),
+        Block(
             "table",
             (
                 ["trend", "band", *dict.fromkeys(r.model for r in trends)],
@@ -149,10 +149,10 @@ def _document(rows: list[ScoreRow], scores: list[ModelScore]) -> list[_Block]:
                 ],
             ),
         ),
-        _Block("p", f"Trend targets: {trends[0].source}." if trends else ""),
-        _Block("h2", "Sources"),
-        _Block("ul", sorted({r.source.split("; geometry:")[0] for r in rows})),
-        _Block(
+        Block("p", f"Trend targets: {trends[0].source}." if trends else ""),
+        Block("h2", "Sources"),
+        Block("ul", sorted({r.source.split("; geometry:")[0] for r in rows})),
+        Block(
             "p",
             "Every case, its geometry source and each model's prediction: validation.csv.",
         ),
@@ -172,8 +172,8 @@ def write_scorecard(rows: list[ScoreRow], out: str | Path) -> list[Path]:
         "summary.csv": summary_csv(scores),
         "predicted_vs_reference.png": png,
         "predicted_vs_reference.svg": figure_bytes(fig, "svg"),
-        "report.md": _md(blocks).encode("utf-8"),
-        "report.html": _html(blocks, "ballscrew validation scorecard", {
+        "report.md": markdown(blocks).encode("utf-8"),
+        "report.html": html_page(blocks, "ballscrew validation scorecard", {
             "predicted_vs_reference": png
         }).encode("utf-8"),
     }  # fmt: skip
