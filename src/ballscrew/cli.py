@@ -38,7 +38,9 @@ def cli() -> None:
     \b
     Examples:
       ballscrew study --out report          # reproduce the study (bundled case)
-      ballscrew torque --speed "0..3000 rpm" --model olaru --model catalog
+      ballscrew case --template --out my_screw.toml
+      ballscrew torque --case my_screw.toml --speed "0..3000 rpm" --model complete --model catalog
+      ballscrew energy --case my_screw.toml --move "stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2"
       ballscrew models
       ballscrew lubricants
     """  # noqa: D301 - click needs the literal \b to keep the example lines

@@ -117,7 +117,7 @@ def _span(values: object, unit: str) -> str:
 
 @click.command("screws")
 def screws_command() -> None:
-    """List the bundled catalogue nuts a case or --designation can name.
+    """List the bundled catalogue nuts a case file's designation can name.
 
     \b
     Example:
