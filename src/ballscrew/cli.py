@@ -40,7 +40,7 @@ def cli() -> None:
       ballscrew study --out report          # reproduce the study (bundled case)
       ballscrew case --template --out my_screw.toml
       ballscrew torque --case my_screw.toml --speed "0..3000 rpm" --model complete --model catalog
-      ballscrew energy --case my_screw.toml --move "stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2"
+      ballscrew energy --case my_axis.toml --move "stroke=0.3 m, feed=0.5 m/s, acceleration=2 m/s^2"
       ballscrew models
       ballscrew lubricants
     """  # noqa: D301 - click needs the literal \b to keep the example lines
