@@ -55,3 +55,16 @@ def test_history_with_constant_power_and_conductance_is_the_exponential() -> Non
     np.testing.assert_allclose(temp, expected, rtol=1e-5)
     # Heat capacity of steel: 7850 kg/m^3 * pi/4 * 0.04^2 m^2 * 1 m * 460 J/(kg K) + 3 kg * 460.
     assert capacity == pytest.approx((7850 * math.pi / 4 * 0.04**2 + 3.0) * 460.0, rel=1e-12)
+
+
+def test_mean_powers_over_temperatures_in_one_call_match_each_cycle() -> None:
+    from ballscrew.energy import axis_cycle
+    from ballscrew.thermal import mean_powers
+
+    screw, axis = reference_screw(), Axis(moving_mass=200.0)
+    temps = np.array([20.0, 35.0, 60.0])
+    powers = mean_powers(CYCLE, screw, "mineral ISO VG 68", axis, temps)
+    each = [axis_cycle(CYCLE, screw, "mineral ISO VG 68", axis, temperature=t).friction_energy
+            / CYCLE.duration for t in temps]  # fmt: skip
+    np.testing.assert_allclose(powers, each, rtol=1e-12)
+    assert powers[0] > powers[-1]  # thinner oil, less friction

@@ -44,7 +44,7 @@ from .geometry import BallScrew
 from .lubricant import Lubricant
 from .motion import Profile
 
-__all__ = ["Axis", "CycleResult", "axis_cycle", "reverse_efficiency"]
+__all__ = ["Axis", "CycleResult", "axis_cycle", "reverse_efficiency", "screw_motion"]
 
 STANDARD_GRAVITY = 9.80665
 """[m/s²]."""
@@ -138,6 +138,17 @@ def reverse_efficiency(result: FrictionResult, lead: float) -> FloatArray:
     return out
 
 
+def screw_motion(
+    profile: Profile, screw: BallScrew, axis: Axis
+) -> tuple[FloatArray, FloatArray, FloatArray]:
+    """Screw speed [rad/s], its acceleration [rad/s²] and the nut's axial force [N] per sample."""
+    omega = 2.0 * math.pi * profile.speed / screw.lead
+    alpha = 2.0 * math.pi * profile.acceleration / screw.lead
+    g_axial = STANDARD_GRAVITY * math.sin(axis.incline)
+    force = axis.moving_mass * (profile.acceleration + g_axial) + profile.process_force
+    return omega, alpha, force
+
+
 def _integral(y: FloatArray, t: FloatArray) -> float:
     """Trapezoidal rule (exact for piecewise-linear samples)."""
     return float(np.sum(0.5 * (y[1:] + y[:-1]) * np.diff(t)))
@@ -168,10 +179,8 @@ def axis_cycle(
     108.24
     """
     lead = screw.lead
-    omega = 2.0 * math.pi * profile.speed / lead
-    alpha = 2.0 * math.pi * profile.acceleration / lead
+    omega, alpha, force = screw_motion(profile, screw, axis)
     g_axial = STANDARD_GRAVITY * math.sin(axis.incline)
-    force = axis.moving_mass * (profile.acceleration + g_axial) + profile.process_force
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # recorded in the result's friction.warnings
         fr = friction_torque(

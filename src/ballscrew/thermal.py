@@ -26,12 +26,15 @@ per cycle drives the node).
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
-from .energy import Axis, axis_cycle
+from .chain import friction_torque
+from .energy import Axis, screw_motion
 from .errors import BallScrewInputError, FloatArray, check_positive
 from .geometry import BallScrew
 from .lubricant import Lubricant
@@ -41,6 +44,7 @@ __all__ = [
     "AIR",
     "ThermalNode",
     "convection_coefficient",
+    "mean_powers",
     "steady_temperature",
     "temperature_history",
 ]
@@ -105,13 +109,39 @@ def convection_coefficient(diameter: float, speed: float, surface: float, ambien
     return float(max(forced, natural * k / d))
 
 
+def mean_powers(
+    profile: Profile,
+    screw: BallScrew,
+    lubricant: Lubricant | str,
+    axis: Axis,
+    temperatures: npt.ArrayLike,
+    model: str = "complete",
+    **parameters: Any,
+) -> FloatArray:
+    """Mean friction power of the screw over the cycle at each lubricant temperature [W].
+
+    One friction call: the temperatures against the cycle's samples.
+    """
+    temps = np.atleast_1d(np.asarray(temperatures, dtype=float))
+    omega, _, force = screw_motion(profile, screw, axis)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        torque = friction_torque(
+            screw, lubricant, speed=omega[None, :], temperature=temps[:, None],
+            axial_load=force[None, :], model=model, **parameters,
+        ).total  # fmt: skip
+    power = torque * np.abs(omega)[None, :]
+    t = profile.time
+    energy = np.sum(0.5 * (power[:, 1:] + power[:, :-1]) * np.diff(t)[None, :], axis=1)
+    result: FloatArray = energy / profile.duration
+    return result
+
+
 def _mean_power(
     profile: Profile, screw: BallScrew, lubricant: Lubricant | str, axis: Axis,
     temperature: float, model: str, parameters: dict[str, Any],
 ) -> float:  # fmt: skip
-    r = axis_cycle(profile, screw, lubricant, axis, temperature=temperature, model=model,
-                   **parameters)  # fmt: skip
-    return float(r.friction_energy / profile.duration)
+    return float(mean_powers(profile, screw, lubricant, axis, temperature, model, **parameters)[0])
 
 
 def _conductance(node: ThermalNode, screw: BallScrew, speed: float, temperature: float) -> float:
@@ -203,9 +233,7 @@ def temperature_history(
         steady.temperature + 1.0,
         max(3, int(steady.temperature - node.ambient) // 2 + 3),
     )
-    powers = np.array(
-        [_mean_power(profile, screw, lubricant, axis, float(t), model, parameters) for t in grid]
-    )
+    powers = mean_powers(profile, screw, lubricant, axis, grid, model, **parameters)
     capacity = node.heat_capacity(screw)
 
     def rate(_t: float, y: FloatArray) -> FloatArray:
