@@ -508,7 +508,8 @@ def test_simplified_defaults_are_the_study_values() -> None:
 
 
 @pytest.mark.parametrize(
-    ("v", "m"), [(0.3, 7.8e-4), (3.0, 7.8e-4), (12.0, 7.8e-4), (3.0, 5e6), (1.0, 3e7)]
+    ("v", "m"),
+    [(0.3, 7.8e-4), (3.0, 7.8e-4), (12.0, 7.8e-4), (3.0, 5e6), (1.0, 3e7), (2.0, 3e7), (3.0, 1e8)],
 )
 def test_viscoelastic_friction_is_the_pressure_moment_over_the_lens(v: float, m: float) -> None:
     # Pöschel's bed: p = k z + gamma dz/dt + m d2z/dt2 with z = tau - (x^2 + y^2)/2R
@@ -561,8 +562,21 @@ def test_viscoelastic_leading_edge_terms(v: float, m: float) -> None:
     # Same penetration in both readings: they differ by the edge friction only.
     assert float(work.penetration) == tau
     assert float(work.friction - kinetic.friction) == pytest.approx(edge, rel=1e-6)
-    if m > 1.0:  # heavy bed: the edge friction is a visible share of the total
+    if m > 1.0:  # heavy bed: the edge terms are a visible share of the totals
         assert edge > 1e-3 * float(kinetic.friction)
+        # And the load balance includes the edge force: springs, dampers and
+        # bed mass over the lens (grid, as in the pressure-moment test) plus it.
+        k, g = 2.1e18, 3.5e13
+        xc = g * v / k
+        rm2 = rp**2 - 2 * m * v**2 / k + xc**2
+        xs = np.linspace(-rp, rp, 1601)
+        xs = 0.5 * (xs[1:] + xs[:-1])
+        x, y = np.meshgrid(xs, xs, indexing="ij")
+        inside = (x**2 + y**2 <= rp**2) & ((x - xc) ** 2 + y**2 <= rm2)
+        p = k * (tau - (x**2 + y**2) / (2 * radius)) + g * v * x / radius - m * v**2 / radius
+        support = float(np.sum(p[inside])) * (xs[1] - xs[0]) ** 2
+        assert support + float(kinetic.edge_force) == pytest.approx(q, rel=3e-3)
+        assert float(kinetic.edge_force) > 0.01 * q
     assert float(none.edge_force) == 0.0
 
 
@@ -584,6 +598,13 @@ def test_viscoelastic_defaults_are_the_study_values() -> None:
 
     p = get_model("viscoelastic").parameters
     assert (p["stiffness"], p["mass"], p["damping"]) == (2.1e18, 7.8e-4, 3.5e13)
+    # The contact solver's own defaults are the same values.
+    import inspect
+
+    own = inspect.signature(viscoelastic_contact).parameters
+    assert (own["stiffness"].default, own["mass"].default, own["damping"].default) == (
+        2.1e18, 7.8e-4, 3.5e13,
+    )  # fmt: skip
 
 
 def test_simplified_lubricant_torque_from_the_contact_states() -> None:
