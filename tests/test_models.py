@@ -693,7 +693,9 @@ def test_full_model_slip_zeroes_the_net_traction_of_a_fluid_film() -> None:
     # be the integral of tau |v| - both computed here on an independent polar
     # grid of the ellipse (500 x 720 midpoints, constant viscosity).
     a, b, p0, eta, h, omega = 2.5e-4, 6e-5, 1.2e9, 0.05, 2e-7, 30.0
-    c_hat, w_hat, tau0, gl = 400.0, 0.3, 2e6, 0.05
+    # tau_N reaches ~1e3 Pa at the contact's edge: a limiting stress of that order
+    # puts the film well into the nonlinear part of the harmonic law.
+    c_hat, w_hat, tau0, gl = 400.0, 0.3, 300.0, 1e-7
     asperity, lubricant, slip = _spin_contact(
         a=np.array([a]), b=np.array([b]), p_max=np.array([p0]), viscosity=np.array([eta]),
         film=np.array([h]), curvature=c_hat, spin=w_hat, screw_speed=np.array([omega]),
@@ -717,3 +719,57 @@ def test_full_model_slip_zeroes_the_net_traction_of_a_fluid_film() -> None:
     assert abs(net) < 2e-4 * scale
     assert float(lubricant[0]) == pytest.approx(float(np.sum(tau * speed * da)), rel=2e-4)
     assert float(asperity[0]) == 0.0
+
+
+@pytest.mark.parametrize("law", ["general", "eyring", "bair-winer"])
+def test_full_model_every_shear_law_is_newtonian_far_below_its_limits(law: str) -> None:
+    # With limiting and Eyring stresses far above the film's stresses, every
+    # law gives eta * rate, so the pure-spin power is the Newtonian closed form.
+    a, b, eta, h, w, omega = 2.5e-4, 6e-5, 0.05, 2e-7, 0.4, 3.0
+    _, lubricant, _ = _spin_contact(rheology_model=law, eyring_stress=1e30)
+    expected = eta * (w * omega) ** 2 / h * math.pi * a * b * (a**2 + b**2) / 4 / omega
+    assert float(lubricant[0]) == pytest.approx(expected, rel=1e-6)
+
+
+def test_full_model_assembles_its_contacts() -> None:
+    # The model's torque is the sum over the contacts of balls * P/|omega| from
+    # the contact power, with the sliding and spin per unit screw speed taken
+    # here from the kinematics at the operating speed (linear in it).
+    from ballscrew.friction._common import limiting_shear
+    from ballscrew.kinematics import differential_sliding, kinematics
+    from ballscrew.state import operating_state
+
+    s, w = reference_screw(), 80.0
+    r = friction_torque(s, OIL, speed=w, temperature=40.0, axial_load=700.0, model="harris-full")
+    st = operating_state(s, OIL, speed=w, temperature=40.0, axial_load=700.0,
+                         hertz_method="exact")  # fmt: skip
+    tau0, gl = limiting_shear(OIL, None, None)
+    c_s, c_n = (float(c) / w for c in differential_sliding(s, w))
+    kin = kinematics(s, w)
+    spins = {"screw": float(kin.spin_screw) / w, "nut": float(kin.spin_nut) / w}
+    asperity = lubricant = 0.0
+    for c in st.contacts:
+        if c.balls == 0:
+            continue
+        asp, lub, _ = full_contact_power(
+            a=np.atleast_1d(c.hertz.a), b=np.atleast_1d(c.hertz.b),
+            p_max=np.atleast_1d(c.hertz.p_max), asperity_share=np.atleast_1d(c.asperity_share),
+            viscosity=np.atleast_1d(c.viscosity), pressure_viscosity=OIL.pressure_viscosity,
+            film=np.atleast_1d(c.film_central), curvature=c_s if c.side == "screw" else c_n,
+            spin=spins[c.side], screw_speed=np.atleast_1d(w), tau0=tau0, gamma_l=gl, mu0=0.1,
+        )  # fmt: skip
+        asperity += c.balls * float(asp[0])
+        lubricant += c.balls * float(lub[0])
+    assert float(r.components["asperity"]) == pytest.approx(asperity, rel=1e-9)
+    assert float(r.components["lubricant"]) == pytest.approx(lubricant, rel=1e-9)
+
+
+def test_full_model_inputs_and_the_study_constants() -> None:
+    from ballscrew.friction import get_model
+
+    p = get_model("harris-full").parameters
+    assert (p["mu0"], p["asperity_b"], p["asperity_c"]) == (0.1, 1.42, 0.8)  # the study's
+    kw = {"speed": 10.0, "temperature": 40.0, "model": "harris-full"}
+    friction_torque(reference_screw(), OIL, nodes=(2, 2), **kw)  # type: ignore[arg-type]
+    with pytest.raises(BallScrewInputError, match="nodes"):
+        friction_torque(reference_screw(), OIL, nodes=(1, 8), **kw)  # type: ignore[arg-type]
