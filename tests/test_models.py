@@ -773,3 +773,10 @@ def test_full_model_inputs_and_the_study_constants() -> None:
     friction_torque(reference_screw(), OIL, nodes=(2, 2), **kw)  # type: ignore[arg-type]
     with pytest.raises(BallScrewInputError, match="nodes"):
         friction_torque(reference_screw(), OIL, nodes=(1, 8), **kw)  # type: ignore[arg-type]
+
+
+def test_simplified_model_general_law_at_its_default_exponent_is_eq5() -> None:
+    kw = {"speed": 150.0, "temperature": 40.0, "model": "harris-simplified"}
+    harmonic = friction_torque(reference_screw(), OIL, **kw)  # type: ignore[arg-type]
+    general = friction_torque(reference_screw(), OIL, rheology_model="general", **kw)  # type: ignore[arg-type]
+    assert float(general.total) == pytest.approx(float(harmonic.total), rel=1e-12)
