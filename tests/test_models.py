@@ -476,6 +476,7 @@ def test_every_shear_law_is_newtonian_at_a_tiny_shear_rate(law: str) -> None:
         tau0=1e6,
         gamma_l=0.07,
         rheology_model=law,
+        eyring_stress=5e6,
     )  # type: ignore[arg-type]
     assert float(lub) == pytest.approx(0.1 * 1.0 * math.pi * 2e-4 * 5e-5, rel=1e-5)
 
@@ -780,3 +781,20 @@ def test_simplified_model_general_law_at_its_default_exponent_is_eq5() -> None:
     harmonic = friction_torque(reference_screw(), OIL, **kw)  # type: ignore[arg-type]
     general = friction_torque(reference_screw(), OIL, rheology_model="general", **kw)  # type: ignore[arg-type]
     assert float(general.total) == pytest.approx(float(harmonic.total), rel=1e-12)
+
+
+def test_eyring_law_needs_its_stress() -> None:
+    # No default: no published Eyring stress fits every oil.
+    kw = {"speed": 10.0, "temperature": 40.0, "rheology_model": "eyring"}
+    for model in ("harris-simplified", "harris-full"):
+        with pytest.raises(BallScrewInputError, match="eyring_stress"):
+            friction_torque(reference_screw(), OIL, model=model, **kw)  # type: ignore[arg-type]
+        r = friction_torque(reference_screw(), OIL, model=model, eyring_stress=5e6, **kw)  # type: ignore[arg-type]
+        assert float(r.total) > 0.0
+
+
+def test_full_model_general_law_at_its_default_exponent_is_eq5() -> None:
+    kw = {"speed": 150.0, "temperature": 40.0, "model": "harris-full"}
+    harmonic = friction_torque(reference_screw(), OIL, **kw)  # type: ignore[arg-type]
+    general = friction_torque(reference_screw(), OIL, rheology_model="general", **kw)  # type: ignore[arg-type]
+    assert float(general.total) == pytest.approx(float(harmonic.total), rel=1e-9)

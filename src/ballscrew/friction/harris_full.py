@@ -96,7 +96,7 @@ def full_contact_power(
     mu0: float,
     rheology_model: str = "harmonic",
     rheology_exponent: float = 1.0,
-    eyring_stress: float = 5e6,
+    eyring_stress: float | None = None,
     nodes: tuple[int, int] = (8, 8),
     tolerance: float = 1e-6,
 ) -> tuple[FloatArray, FloatArray, FloatArray]:
@@ -240,7 +240,7 @@ def harris_full(
     mu0: float = 0.1,
     rheology_model: str = "harmonic",
     rheology_exponent: float = 1.0,
-    eyring_stress: float = 5e6,
+    eyring_stress: float | None = None,
     limiting_shear_stress: float | None = None,
     limiting_shear_coefficient: float | None = None,
     asperity_b: float = 1.42,

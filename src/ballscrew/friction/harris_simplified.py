@@ -155,19 +155,26 @@ def shear_stress(
     shear_rate: npt.ArrayLike,
     limiting_stress: npt.ArrayLike,
     exponent: float = 1.0,
-    eyring_stress: float = 5e6,
+    eyring_stress: float | None = None,
 ) -> FloatArray:
     """Lubricant shear stress [Pa] by a named law of :mod:`ballscrew.rheology`.
 
     ``model`` is one of ``"harmonic"`` (the study's eq. 5), ``"general"``
-    (eq. 7 with ``exponent``), ``"eyring"`` (uses ``eyring_stress`` [Pa]) or
-    ``"bair-winer"``.
+    (eq. 7 with ``exponent``), ``"eyring"`` (needs ``eyring_stress`` [Pa]; no
+    default, since no published value fits every oil) or ``"bair-winer"``.
     """
     if model == "harmonic":
         return rheology.harmonic_combination(viscosity, shear_rate, limiting_stress)
     if model == "general":
         return rheology.general_non_newtonian(viscosity, shear_rate, limiting_stress, exponent)
     if model == "eyring":
+        if eyring_stress is None:
+            raise BallScrewInputError(
+                "eyring_stress",
+                None,
+                "a stress [Pa] for the Eyring law; it has no default (its value depends on "
+                "the oil and pressure: a few MPa is usual)",
+            )
         return rheology.eyring_1936(viscosity, shear_rate, eyring_stress)
     if model == "bair-winer":
         return rheology.bair_winer_1979(viscosity, shear_rate, limiting_stress)
@@ -209,7 +216,7 @@ def simplified_contact_force(
     sliding_sign_on_lubricant: bool = False,
     rheology_model: str = "harmonic",
     rheology_exponent: float = 1.0,
-    eyring_stress: float = 5e6,
+    eyring_stress: float | None = None,
     pressure_viscosity_model: str = "roelands",
     nodes: int = 8,
 ) -> tuple[FloatArray, FloatArray]:
@@ -329,7 +336,7 @@ def harris_simplified(
     shear_velocity: str = "rolling",
     rheology_model: str = "harmonic",
     rheology_exponent: float = 1.0,
-    eyring_stress: float = 5e6,
+    eyring_stress: float | None = None,
     pressure_viscosity_model: str = "roelands",
     limiting_shear_stress: float | None = None,
     limiting_shear_coefficient: float | None = None,
@@ -358,8 +365,8 @@ def harris_simplified(
         Shear law; default ``"harmonic"`` (eq. 5).
     rheology_exponent : float
         :math:`n` of the general model (eq. 7).
-    eyring_stress : float
-        :math:`\tau_E` [Pa] of the Eyring law.
+    eyring_stress : float, optional
+        :math:`\tau_E` [Pa] of the Eyring law; required with ``rheology_model="eyring"``.
     pressure_viscosity_model : {"roelands", "barus"}
         Default Roelands: Barus overflows at contact pressures.
     limiting_shear_stress, limiting_shear_coefficient : float, optional
