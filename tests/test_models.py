@@ -807,3 +807,15 @@ def test_full_model_general_law_at_its_default_exponent_is_eq5() -> None:
     harmonic = friction_torque(reference_screw(), OIL, **kw)  # type: ignore[arg-type]
     general = friction_torque(reference_screw(), OIL, rheology_model="general", **kw)  # type: ignore[arg-type]
     assert float(general.total) == pytest.approx(float(harmonic.total), rel=1e-9)
+
+
+def test_viscoelastic_edge_cases_one_ball_and_no_speed() -> None:
+    # A nut with a single loaded ball still has friction; with the leading
+    # edge switched off, a ball at rest has exactly none (not NaN).
+    s = reference_screw().replace(nut="single", preload=0.0, circuits=1, loaded_turns=0.08)
+    assert s.balls_per_nut == 1
+    r = friction_torque(s, OIL, speed=50.0, temperature=40.0, axial_load=500.0,
+                        model="viscoelastic")  # fmt: skip
+    assert float(r.total) > 0.0
+    c = viscoelastic_contact(29.0, 0.0, 3.175e-3, leading_edge=False)
+    assert float(c.friction) == 0.0
