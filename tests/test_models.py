@@ -819,3 +819,22 @@ def test_viscoelastic_edge_cases_one_ball_and_no_speed() -> None:
     assert float(r.total) > 0.0
     c = viscoelastic_contact(29.0, 0.0, 3.175e-3, leading_edge=False)
     assert float(c.friction) == 0.0
+
+
+def test_full_model_slip_is_the_same_for_every_law_in_the_newtonian_limit() -> None:
+    # With spin and Heathcote sliding the slip is not zero; far below every
+    # law's limits all laws are Newtonian, so they must find the same slip.
+    kw = {"curvature": 400.0, "spin": 0.3, "tau0": 1e30, "eyring_stress": 1e30}
+    slips = [float(_spin_contact(rheology_model=law, **kw)[2][0])
+             for law in ("harmonic", "general", "eyring", "bair-winer")]  # fmt: skip
+    assert abs(slips[0]) > 0.0
+    np.testing.assert_allclose(slips, slips[0], rtol=1e-6)
+
+
+def test_full_model_node_counts_and_a_single_ball() -> None:
+    kw = {"speed": 60.0, "temperature": 40.0, "model": "harris-full"}
+    coarse = friction_torque(reference_screw(), OIL, nodes=(6, 6), **kw)  # type: ignore[arg-type]
+    fine = friction_torque(reference_screw(), OIL, nodes=(6, 48), **kw)  # type: ignore[arg-type]
+    assert float(coarse.total) != float(fine.total)  # the angular count is used
+    one = reference_screw().replace(nut="single", preload=0.0, circuits=1, loaded_turns=0.08)
+    assert float(friction_torque(one, OIL, axial_load=500.0, **kw).total) > 0.0  # type: ignore[arg-type]
