@@ -13,6 +13,7 @@ from ballscrew.energy import STANDARD_GRAVITY, Axis, axis_cycle
 from ballscrew.motion import Profile, back_and_forth, move
 
 OIL = lubricants.get("PAO ISO VG 68")
+FAST = 150_000.0  # d·n limit of a high-speed nut [mm·rpm]: 0.5 m/s on a 10 mm lead is 3000 rpm
 
 
 def test_constant_speed_energy_is_torque_times_speed_times_time() -> None:
@@ -33,7 +34,7 @@ def test_constant_speed_energy_is_torque_times_speed_times_time() -> None:
 
 def test_symmetric_cycle_does_no_net_work_on_a_horizontal_load() -> None:
     c = back_and_forth(0.3, 0.5, 2.0, dwell_time=0.2, cycles=2)
-    r = axis_cycle(c, reference_screw(), OIL, Axis(moving_mass=200.0))
+    r = axis_cycle(c, reference_screw(), OIL, Axis(moving_mass=200.0, dn_limit=FAST))
     peak = 200.0 * 2.0 * 0.0625  # kinetic energy at the feed: 25 J
     assert abs(r.load_work) < 1e-9 * peak
     # Out and back are mirror images: the same friction energy each way.
@@ -49,7 +50,8 @@ def test_rms_and_peak_motor_torque_of_a_frictionless_inertial_move() -> None:
     # cruising, so RMS = T sqrt(2 t_a / t). Sampled steps: error ~ dt / t_a.
     s = reference_screw().replace(nut="single", preload=0.0)
     p = move(0.3, 0.5, 2.0, sample_time=1e-4)
-    r = axis_cycle(p, s, OIL, Axis(moving_mass=200.0), model="catalog", friction_coefficient=0.0)
+    r = axis_cycle(p, s, OIL, Axis(moving_mass=200.0, dn_limit=FAST), model="catalog",
+                   friction_coefficient=0.0)  # fmt: skip
     t_acc = 200.0 * 2.0 * s.lead / (2 * math.pi)
     assert r.peak_motor_torque == pytest.approx(t_acc, rel=1e-12)
     assert r.rms_motor_torque == pytest.approx(t_acc * math.sqrt(2 * 0.25 / 0.85), rel=1e-3)
@@ -88,6 +90,7 @@ def test_energy_command_json_and_errors(
         '[screw]\npitch_diameter = "40 mm"\nlead = "10 mm"\nball_diameter = "6.35 mm"\n'
         'preload = "2 kN"\n[lubricant]\nname = "mineral ISO VG 68"\n'
         '[operation]\ntemperature = "40 degC"\n[axis]\nmoving_mass = "200 kg"\n'
+        'dn_limit = "150000 mm*rpm"\n'
     )
     move_text = "stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2, force=2 kN"
     with pytest.raises(SystemExit) as info:
@@ -100,7 +103,7 @@ def test_energy_command_json_and_errors(
     from ballscrew.case import load_case
 
     loaded = load_case(case)
-    api = axis_cycle(c, loaded.screw, loaded.lubricant, Axis(moving_mass=200.0))
+    api = axis_cycle(c, loaded.screw, loaded.lubricant, Axis(moving_mass=200.0, dn_limit=FAST))
     assert r["friction_energy_J"] == pytest.approx(api.friction_energy, rel=1e-12)
     assert r["load_work_J"] == pytest.approx(2 * 2000.0 * 0.3, rel=1e-3)
     for bad, words in [("stroke=300, feed=30 m/min, acceleration=2 m/s^2", "bare number"),
@@ -214,3 +217,43 @@ def test_energy_report_files_are_complete_and_reproducible(
 
     for link in re.findall(r"\]\(([^)]+)\)", report):
         assert link in names, link
+
+
+def test_energy_json_has_the_documented_keys_and_states_its_assumptions(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    import json
+
+    from ballscrew.cli import main
+    from ballscrew.thermal import estimated_screw_length
+
+    case = tmp_path / "axis.toml"
+    case.write_text(
+        '[screw]\npitch_diameter = "40 mm"\nlead = "10 mm"\nball_diameter = "6.35 mm"\n'
+        'preload = "2 kN"\n[lubricant]\nname = "mineral ISO VG 68"\n'
+        '[axis]\nmoving_mass = "200 kg"\nbearing_bore = "30 mm"\n'
+    )
+    with pytest.raises(SystemExit) as info:
+        main(["energy", "--case", str(case), "--move",
+              "stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2", "--steady-speeds",
+              "500, 1500 rpm", "--json", "-"])  # fmt: skip
+    assert info.value.code == 0
+    captured = capsys.readouterr()
+    payload = json.loads(captured.out)
+    for key in ("friction_energy_J", "bearing_energy_J", "constant_efficiency_energy_J",
+                "peak_motor_torque_Nm", "rms_motor_torque_Nm", "forward_efficiency",
+                "reverse_efficiency", "final_temperature_C"):  # fmt: skip
+        assert payload[key] == payload["models"]["complete"][key], key
+    assert payload["bearing_energy_J"] > 0.0
+    # No screw length given: the heat balance uses the estimate and says so.
+    from ballscrew.case import load_case
+
+    assert payload["thermal"]["screw_length"] == pytest.approx(
+        estimated_screw_length(load_case(case).screw, 0.3), rel=1e-12
+    )
+    assert "axis.screw_length" in captured.err and "estimated" in captured.err
+    # 30 m/min is 3000 rpm, d·n 120 000: past the default limit, said once.
+    assert captured.err.count("d·n = 120,000") == 1
+    steady = payload["models"]["complete"]["steady_at_speed"]
+    assert steady["speed_rpm"] == pytest.approx([500.0, 1500.0])
+    assert steady["temperature_C"][1] > steady["temperature_C"][0] > 20.0

@@ -61,10 +61,49 @@ def test_mean_powers_over_temperatures_in_one_call_match_each_cycle() -> None:
     from ballscrew.energy import axis_cycle
     from ballscrew.thermal import mean_powers
 
-    screw, axis = reference_screw(), Axis(moving_mass=200.0)
+    screw, axis = reference_screw(), Axis(moving_mass=200.0, dn_limit=1.5e5)
     temps = np.array([20.0, 35.0, 60.0])
     powers = mean_powers(CYCLE, screw, "mineral ISO VG 68", axis, temps)
     each = [axis_cycle(CYCLE, screw, "mineral ISO VG 68", axis, temperature=t).friction_energy
             / CYCLE.duration for t in temps]  # fmt: skip
     np.testing.assert_allclose(powers, each, rtol=1e-12)
     assert powers[0] > powers[-1]  # thinner oil, less friction
+
+
+def test_steady_at_speeds_balances_each_speed_as_a_separate_calculation_does() -> None:
+    from ballscrew import friction_torque
+    from ballscrew.thermal import steady_at_speeds
+
+    screw = reference_screw()
+    node = ThermalNode(screw_length=0.8, ambient=22.0, machine_resistance=3.0)
+    omega = np.array([20.0, 100.0, 250.0])
+    s = steady_at_speeds(screw, "mineral ISO VG 68", node, omega, axial_load=1000.0)
+    for w, temp in zip(omega, s.temperature, strict=True):
+        # Heat in: the model's torque at this speed and temperature, by a
+        # separate call. Heat out: convection over the screw plus the path
+        # into the machine.
+        torque = float(friction_torque(screw, "mineral ISO VG 68", speed=w, temperature=temp,
+                                       axial_load=1000.0).total)  # fmt: skip
+        h = float(convection_coefficient(screw.pitch_diameter, w, temp, 22.0))
+        out = (h * math.pi * screw.pitch_diameter * 0.8 + 1 / 3.0) * (temp - 22.0)
+        # Bisection to 200 K / 2^50 = 2e-13 K; heat in and out agree to the
+        # torque's rounding.
+        assert torque * w == pytest.approx(out, rel=1e-8)
+    assert np.all(np.diff(s.temperature) > 0.0)  # faster runs warmer
+
+
+def test_steady_at_one_speed_is_the_cycle_steady_state_of_constant_running() -> None:
+    from ballscrew.motion import Profile
+    from ballscrew.thermal import steady_at_speeds
+
+    screw = reference_screw()
+    node = ThermalNode(screw_length=1.0, ambient=20.0, machine_resistance=2.0)
+    omega = 150.0
+    v = omega * screw.lead / (2 * math.pi)
+    t = np.linspace(0.0, 10.0, 5)
+    steady_run = Profile(t, v * t, np.full(5, v), np.zeros(5), np.zeros(5))
+    cyc = steady_temperature(steady_run, screw, "mineral ISO VG 68", Axis(moving_mass=0.0), node)
+    at = steady_at_speeds(screw, "mineral ISO VG 68", node, [omega])
+    # Two solvers (scalar bisection over the cycle's mean power, vectorised
+    # bisection over the torque) of the same balance.
+    assert float(at.temperature[0]) == pytest.approx(cyc.temperature, abs=1e-6)

@@ -94,7 +94,8 @@ class Case:
     screw_source : str
         Where the screw's geometry came from when a designation named it.
     axis : dict
-        ``[axis]`` in SI (kg, kg·m², rad): the keywords of :class:`ballscrew.energy.Axis`.
+        ``[axis]`` in SI (kg, kg·m², rad, m; d·n in mm·rpm) and its choices
+        (bearing type, support): the keywords of :class:`ballscrew.energy.Axis`.
     thermal : dict
         ``[axis]``'s thermal keys in SI (m, kg, K/W, °C), those given: the
         keywords of :class:`ballscrew.thermal.ThermalNode`.
@@ -115,8 +116,7 @@ class Case:
     assumptions: tuple[Assumption, ...]
     text: str
     screw_source: str = ""
-    axis: dict[str, float] = field(default_factory=dict)
-    axis_bearing_type: str = "angular-contact ball, single row"
+    axis: dict[str, Any] = field(default_factory=dict)
     thermal: dict[str, float] = field(default_factory=dict)
 
 
@@ -211,14 +211,14 @@ def parse_case(text: str, *, source: str = "case") -> Case:
                 ("motor_inertia", "kg*m**2"),
                 ("gear_ratio", ""),
                 ("incline", "rad"),
+                ("bearing_bore", "m"),
+                ("bearing_span", "m"),
+                ("root_diameter", "m"),
+                ("dn_limit", "mm*rpm"),
             )
+            if getattr(data.axis, name) is not None
         }
-        | (
-            {"bearing_bore": si("axis", "bearing_bore", data.axis.bearing_bore, "m")}
-            if data.axis.bearing_bore is not None
-            else {}
-        ),
-        axis_bearing_type=data.axis.bearing_type,
+        | {"bearing_type": data.axis.bearing_type, "support": data.axis.support},
         thermal={
             name: si("axis", name, getattr(data.axis, name), unit)
             for name, unit in (

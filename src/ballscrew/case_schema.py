@@ -197,10 +197,34 @@ class AxisSection(BaseModel):
         "-",
         "support bearing type for SKF's friction coefficient (see ballscrew.bearings)",
     )
+    support: str = _f(
+        "fixed-supported",
+        "-",
+        "end mounting for the critical speed: fixed-free, supported-supported, "
+        "fixed-supported or fixed-fixed",
+    )
+    bearing_span: Value | None = _f(
+        None,
+        "length",
+        "distance between the screw's supports (none: critical speed not checked)",
+        "1 m",
+    )
+    root_diameter: Value | None = _f(
+        None,
+        "length",
+        "root diameter of the thread, from the catalogue (none: estimated from the groove)",
+        "34.1 mm",
+    )
+    dn_limit: Value = _f(
+        "70000 mm*rpm",
+        "length * angular speed",
+        "the nut's d·n limit from its catalogue (pitch diameter times speed)",
+    )
     screw_length: Value | None = _f(
         None,
         "length",
-        "screw length in the air, for the temperature (none: no heat balance)",
+        "screw length in the air, for the temperature (none: estimated from the stroke, "
+        "the nut and the diameter)",
         "1 m",
     )
     nut_mass: Value = _f("0 kg", "mass", "of the nut, for the heat capacity", "3 kg")

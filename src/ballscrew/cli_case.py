@@ -6,8 +6,9 @@ import math
 from pathlib import Path
 
 import click
-from rich.console import Console
 from rich.table import Table
+
+from .cli_common import stdout
 
 __all__ = ["case_command", "screws_command"]
 
@@ -97,7 +98,7 @@ def _print_resolved(path: str) -> None:
         table.add_column(column)
     for row in rows:
         table.add_row(*row)
-    console = Console()
+    console = stdout()
     console.print(table)
     if case.assumptions:
         console.print(f"{len(case.assumptions)} value(s) marked as assumed:")
@@ -143,7 +144,7 @@ def screws_command() -> None:
             f"{s.dynamic_load_rating / 1e3:g}" if s.dynamic_load_rating is not None else "-",
             s.page,
         )
-    console = Console()
+    console = stdout()
     console.print(table)
     console.print(
         "* turns per circuit not printed: derived or assumed (see ballscrew case --check)"

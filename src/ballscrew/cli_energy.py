@@ -70,8 +70,10 @@ def parse_move(text: str) -> dict[str, float]:
               help="A trajectory CSV (time, position or speed, force; units in the header) "
               "instead of --move.")  # fmt: skip
 @click.option("--run-time", default="1 h", show_default=True,
-              help="How long the cycle repeats, for the temperature reached (needs "
-              "[axis] screw_length).")  # fmt: skip
+              help="How long the cycle repeats, for the temperature reached.")  # fmt: skip
+@click.option("--steady-speeds", default=None,
+              help="Also the steady temperature and torque of continuous running at these "
+              "speeds, e.g. '500..3000:6 rpm' (under the move's process force).")  # fmt: skip
 @click.option("--out", "out_dir", type=click.Path(file_okay=False), default=None,
               help="Write a report (Markdown, HTML, plots, CSV) into this folder.")  # fmt: skip
 @click.option("--json", "json_file", default=None,
@@ -86,6 +88,7 @@ def energy_command(
     run_time: str,
     out_dir: str | None,
     json_file: str | None,
+    steady_speeds: str | None = None,
 ) -> None:
     """Friction energy and motor torques of the case's axis over back-and-forth cycles.
 
@@ -96,14 +99,23 @@ def energy_command(
                 force_from=50 mm, force_to=250 mm"
     """  # noqa: D301 - click needs the literal \b to keep the example lines
     import json
+    import warnings
+
+    import numpy as np
 
     from . import __version__
     from .case import load_case
     from .energy import Axis, axis_cycle
     from .files import atomic_write
     from .motion import back_and_forth, chain, read_trajectory
-    from .thermal import ThermalNode, steady_temperature, temperature_history
-    from .units import to_si
+    from .thermal import (
+        ThermalNode,
+        estimated_screw_length,
+        steady_at_speeds,
+        steady_temperature,
+        temperature_history,
+    )
+    from .units import parse_range, to_si
 
     case = load_case(case_file)
     if (move_text is None) == (profile_file is None):
@@ -124,19 +136,38 @@ def energy_command(
         one = read_trajectory(Path(profile_file).read_text(encoding="utf-8"), profile_file)
         profile = chain(*([one] * cycles))
     hours = to_si("--run-time", run_time, "s")
+    speeds = None if steady_speeds is None else parse_range("--steady-speeds", steady_speeds,
+                                                              "rad/s")  # fmt: skip
     temp = (
         to_si("--temperature", temperature, "degC")
         if temperature
         else float(case.temperature.flat[0])
     )
-    axis = Axis(**case.axis, bearing_type=case.axis_bearing_type)
+    axis = Axis(**case.axis)
+    assumptions: list[str] = []
+    thermal = dict(case.thermal)
+    if "screw_length" not in thermal:
+        travel = float(np.ptp(profile.position))
+        thermal["screw_length"] = estimated_screw_length(case.screw, travel)
+        assumptions.append(
+            f"axis.screw_length = {thermal['screw_length'] * 1e3:.0f} mm (estimated: travel, "
+            "nut and 4 diameters; give it for a real heat balance)"
+        )
+    if "machine_resistance" not in thermal:
+        assumptions.append("axis.machine_resistance: none (convection only, the warmest case)")
+    node = ThermalNode(**thermal)
     results: dict[str, Any] = {}
     cycles_by_model: dict[str, Any] = {}
     histories: dict[str, Any] = {}
+    steady_tables: dict[str, Any] = {}
+    speed_warnings: list[str] = []
     for name in model_names:
         params = dict(case.model_parameters.get(name, {}))
-        r = axis_cycle(profile, case.screw, case.lubricant, axis, temperature=temp, model=name,
-                       **params)  # fmt: skip
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # the speed limits are kept in the result
+            r = axis_cycle(profile, case.screw, case.lubricant, axis, temperature=temp,
+                           model=name, **params)  # fmt: skip
+        speed_warnings = list(r.speed_warnings)
         cycles_by_model[name] = r
         results[name] = {
             "friction_energy_J": r.friction_energy,
@@ -152,48 +183,64 @@ def energy_command(
             "reverse_efficiency": r.reverse_efficiency,
             "self_locking": r.reverse_efficiency <= 0.0,
             "duration_s": profile.duration,
-            "warnings": [str(issue) for issue in r.friction.warnings],
+            "warnings": [str(issue) for issue in r.friction.warnings] + list(r.speed_warnings),
         }
-        if "screw_length" in case.thermal:
-            node = ThermalNode(**case.thermal)
-            steady = steady_temperature(profile, case.screw, case.lubricant, axis, node,
-                                        model=name, **params)  # fmt: skip
-            times, history = temperature_history(
-                profile,
-                case.screw,
-                case.lubricant,
-                axis,
-                node,
-                hours,
-                model=name,
-                points=50,
-                **params,
-            )
-            histories[name] = (times, history)
-            results[name]["steady_temperature_C"] = steady.temperature
-            results[name]["final_temperature_C"] = float(history[-1])
+        steady = steady_temperature(profile, case.screw, case.lubricant, axis, node,
+                                    model=name, **params)  # fmt: skip
+        times, history = temperature_history(
+            profile, case.screw, case.lubricant, axis, node, hours, model=name, points=50,
+            **params,
+        )  # fmt: skip
+        histories[name] = (times, history)
+        results[name]["steady_temperature_C"] = steady.temperature
+        results[name]["final_temperature_C"] = float(history[-1])
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
             warm = axis_cycle(profile, case.screw, case.lubricant, axis,
                               temperature=float(history[-1]), model=name, **params)  # fmt: skip
-            results[name]["friction_energy_at_final_temperature_J"] = warm.friction_energy
+        results[name]["friction_energy_at_final_temperature_J"] = warm.friction_energy
+        if speeds is not None:
+            at = steady_at_speeds(case.screw, case.lubricant, node, speeds,
+                                  axial_load=m.get("force", 0.0), model=name,
+                                  **params)  # fmt: skip
+            steady_tables[name] = at
+            results[name]["steady_at_speed"] = {
+                "speed_rpm": (at.speed * 30 / np.pi).tolist(),
+                "temperature_C": at.temperature.tolist(),
+                "torque_Nm": at.torque.tolist(),
+                "power_W": at.power.tolist(),
+            }
+    for line in speed_warnings:
+        click.echo(f"warning: {line}", err=True)
+    for line in assumptions:
+        click.echo(f"note: {line}", err=True)
     table = Table(title=f"{case.title}: {cycles} cycle(s), {profile.duration:.4g} s, {temp:g} °C")
     for column in ("model", "friction energy [J]", "per cycle [J]", "catalogue rule [J]",
-                   "peak motor torque [N*m]", "RMS motor torque [N*m]",
+                   "bearings [J]", "peak motor torque [N*m]", "RMS motor torque [N*m]",
                    f"temperature after {run_time} [degC]"):  # fmt: skip
         table.add_column(column, justify="right")
     for name, v in results.items():
-        extra = f"{v['final_temperature_C']:.3g}" if "final_temperature_C" in v else "-"
         table.add_row(
             name,
             f"{v['friction_energy_J']:.4g}",
             f"{v['friction_energy_per_cycle_J']:.4g}",
             f"{v['constant_efficiency_energy_J']:.4g}",
+            f"{v['bearing_energy_J']:.4g}",
             f"{v['peak_motor_torque_Nm']:.4g}",
             f"{v['rms_motor_torque_Nm']:.4g}",
-            extra,
+            f"{v['final_temperature_C']:.3g}",
         )
     probe = Console()
     wide = probe.is_terminal or "COLUMNS" in os.environ
-    Console(stderr=json_file == "-", width=None if wide else 200).print(table)
+    out = Console(stderr=json_file == "-", markup=False, width=None if wide else 200)
+    out.print(table)
+    for name, at in steady_tables.items():
+        st = Table(title=f"{name}: continuous running at {m.get('force', 0.0):g} N")
+        for column in ("speed [rpm]", "steady temperature [degC]", "torque [N*m]", "power [W]"):
+            st.add_column(column, justify="right")
+        for w, tc, tq, pw in zip(at.speed, at.temperature, at.torque, at.power, strict=True):
+            st.add_row(f"{w * 30 / np.pi:.4g}", f"{tc:.3g}", f"{tq:.4g}", f"{pw:.4g}")
+        out.print(st)
     if out_dir:
         from .energy_report import write_energy_report
 
@@ -201,13 +248,18 @@ def energy_command(
                                     histories or None)  # fmt: skip
         click.echo(f"report: {Path(out_dir) / 'report.html'} ({len(files)} files)", err=True)
     if json_file:
+        first = results[model_names[0]]
         payload = {
             "ballscrew": __version__,
             "case": case.title,
+            "model": model_names[0],
+            **{k: v for k, v in first.items() if k != "steady_at_speed"},
             "move": m,
             "cycles": cycles,
             "temperature_C": temp,
             "axis": case.axis,
+            "thermal": thermal,
+            "assumptions": assumptions,
             "models": results,
         }
         text = json.dumps(payload, indent=1, ensure_ascii=False) + "\n"

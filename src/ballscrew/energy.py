@@ -21,7 +21,11 @@ one vectorised call and returns, in SI:
   same with the catalogue's constant-efficiency rule for comparison;
 * the peak and RMS motor torque, :math:`\sqrt{\int T_m^2\,dt / t}`;
 * the forward and back-driving efficiencies at the working point
-  (:func:`reverse_efficiency`).
+  (:func:`reverse_efficiency`);
+* a :class:`~ballscrew.errors.BallScrewSpeedWarning` where the profile's
+  top speed passes the nut's d·n limit or 80 % of the shaft's critical speed
+  (:mod:`ballscrew.limits`; the latter when the span between the supports
+  is given).
 
 The friction torque is the model's at the axial load and speed of each
 sample; the model sees the load through its ball loads, so load-dependent
@@ -39,8 +43,16 @@ import numpy as np
 
 from .bearings import simplified_bearing_torque
 from .chain import FrictionResult, friction_torque
-from .errors import BallScrewInputError, FloatArray, check_finite, check_nonnegative, check_positive
+from .errors import (
+    BallScrewInputError,
+    BallScrewSpeedWarning,
+    FloatArray,
+    check_finite,
+    check_nonnegative,
+    check_positive,
+)
 from .geometry import BallScrew
+from .limits import DEFAULT_DN_LIMIT, SUPPORT_EIGENVALUES, speed_limit_issues
 from .lubricant import Lubricant
 from .motion import Profile
 
@@ -70,6 +82,17 @@ class Axis:
         Bore of the fixed-end support bearings [m]; None leaves their friction out.
     bearing_type : str
         A type of :data:`ballscrew.bearings.SKF_FRICTION_COEFFICIENTS`.
+    support : str
+        End mounting of the screw, a key of
+        :data:`ballscrew.limits.SUPPORT_EIGENVALUES`.
+    bearing_span : float, optional
+        Distance between the screw's supports [m]; None skips the
+        critical-speed check.
+    root_diameter : float, optional
+        Root diameter of the thread [m]; None estimates it from the groove
+        (:func:`ballscrew.limits.root_diameter`).
+    dn_limit : float
+        The nut's d·n limit [mm·rpm] (catalogue value).
     """
 
     moving_mass: float
@@ -80,6 +103,10 @@ class Axis:
     incline: float = 0.0
     bearing_bore: float | None = None
     bearing_type: str = "angular-contact ball, single row"
+    support: str = "fixed-supported"
+    bearing_span: float | None = None
+    root_diameter: float | None = None
+    dn_limit: float = DEFAULT_DN_LIMIT
 
     def __post_init__(self) -> None:
         for name in ("moving_mass", "screw_inertia", "coupling_inertia", "motor_inertia"):
@@ -87,6 +114,14 @@ class Axis:
         check_positive("gear_ratio", self.gear_ratio)
         if not -math.pi / 2 <= check_finite("incline", self.incline) <= math.pi / 2:
             raise BallScrewInputError("incline", self.incline, "an angle in [-90°, 90°] (rad)")
+        if self.support not in SUPPORT_EIGENVALUES:
+            raise BallScrewInputError(
+                "support", self.support, f"one of {list(SUPPORT_EIGENVALUES)}"
+            )
+        for name in ("bearing_span", "root_diameter"):
+            if getattr(self, name) is not None:
+                check_positive(name, getattr(self, name), "m")
+        check_positive("dn_limit", self.dn_limit, "mm*rpm")
 
 
 @dataclass(frozen=True)
@@ -118,6 +153,7 @@ class CycleResult:
     forward_efficiency: float
     reverse_efficiency: float
     friction: FrictionResult = field(repr=False)
+    speed_warnings: tuple[str, ...] = ()
 
 
 def reverse_efficiency(result: FrictionResult, lead: float) -> FloatArray:
@@ -173,10 +209,10 @@ def axis_cycle(
     --------
     >>> from ballscrew import reference_screw
     >>> from ballscrew.motion import move
-    >>> r = axis_cycle(move(0.3, 0.5, 2.0), reference_screw(), "PAO ISO VG 68",
+    >>> r = axis_cycle(move(0.3, 0.25, 2.0), reference_screw(), "PAO ISO VG 68",
     ...                Axis(moving_mass=200.0), model="catalog")
     >>> round(r.friction_energy, 2)  # catalogue drag 0.564 N·m over 30 screw turns, plus load
-    108.24
+    106.82
     """
     lead = screw.lead
     omega, alpha, force = screw_motion(profile, screw, axis)
@@ -205,6 +241,12 @@ def axis_cycle(
     t_motor = t_screw / i + axis.motor_inertia * i * alpha
     power = t_f * np.abs(omega)
     time = profile.time
+    limits = speed_limit_issues(
+        screw, float(np.max(np.abs(omega))), span=axis.bearing_span, support=axis.support,
+        dn_limit=axis.dn_limit, root=axis.root_diameter,
+    )  # fmt: skip
+    for message in limits:
+        warnings.warn(message, BallScrewSpeedWarning, stacklevel=2)
     # Efficiencies at the working point: the sample of largest |F v| (the
     # process force at feed, or the peak of acceleration).
     k = int(np.argmax(np.abs(force * profile.speed)))
@@ -240,4 +282,5 @@ def axis_cycle(
         forward_efficiency=forward,
         reverse_efficiency=backward,
         friction=fr,
+        speed_warnings=tuple(limits),
     )

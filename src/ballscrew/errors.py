@@ -60,6 +60,13 @@ class BallScrewValidityWarning(UserWarning):
         self.issue = issue
 
 
+class BallScrewSpeedWarning(UserWarning):
+    """A motion drives the screw above its critical speed or its nut's d·n limit.
+
+    See :mod:`ballscrew.limits`.
+    """
+
+
 def _show(value: Any) -> str:
     """Short printable form of a scalar or the first offending array element."""
     try:

@@ -44,7 +44,9 @@ __all__ = [
     "AIR",
     "ThermalNode",
     "convection_coefficient",
+    "estimated_screw_length",
     "mean_powers",
+    "steady_at_speeds",
     "steady_temperature",
     "temperature_history",
 ]
@@ -84,29 +86,53 @@ class ThermalNode:
         return (screw_mass + self.nut_mass) * STEEL_HEAT_CAPACITY
 
 
-def convection_coefficient(diameter: float, speed: float, surface: float, ambient: float) -> float:
+def estimated_screw_length(screw: BallScrew, travel: float) -> float:
+    """Screw length in the air when none is given [m]: travel, nut and ends.
+
+    The nut's travel [m], the nut itself (its loaded turns plus one turn for
+    the return per circuit, twice for a double nut) and four pitch diameters
+    for the bearing seats and the free ends. An assumption for the heat
+    balance; give the real length where you know it.
+
+    Examples
+    --------
+    >>> from ballscrew import reference_screw
+    >>> round(estimated_screw_length(reference_screw(), 0.3), 3)
+    0.6
+    """
+    s = screw
+    nut = (s.loaded_turns + 1.0) * s.circuits * s.lead * (2.0 if s.nut == "double" else 1.0)
+    return abs(travel) + nut + 4.0 * s.pitch_diameter
+
+
+def convection_coefficient(
+    diameter: float, speed: npt.ArrayLike, surface: npt.ArrayLike, ambient: float
+) -> FloatArray:
     """Convection coefficient of a horizontal cylinder [W/(m²·K)]: rotating or still.
 
     The larger of Kreith's rotating-cylinder correlation at ``speed`` [rad/s]
     and Churchill and Chu's natural convection at the surface-to-air
-    temperature difference (``surface``, ``ambient`` in °C).
+    temperature difference (``surface``, ``ambient`` in °C). Broadcasts over
+    ``speed`` and ``surface``.
 
     Examples
     --------
     A 40 mm screw at 1500 rpm: Re = 1.6e4, Nu = 0.133 Re^(2/3) Pr^(1/3):
 
-    >>> round(convection_coefficient(0.04, 157.08, 30.0, 20.0), 1)
+    >>> round(float(convection_coefficient(0.04, 157.08, 30.0, 20.0)), 1)
     49.1
     """
     d = float(check_positive("diameter", diameter, "m"))
     k, nu, pr = AIR["conductivity"], AIR["kinematic_viscosity"], AIR["prandtl"]
-    re = abs(speed) * d**2 / nu
+    re = np.abs(np.asarray(speed, dtype=float)) * d**2 / nu
     forced = 0.133 * re ** (2 / 3) * pr ** (1 / 3) * k / d
-    dt = max(abs(surface - ambient), 1e-9)
-    film = 0.5 * (surface + ambient) + 273.15
+    surf = np.asarray(surface, dtype=float)
+    dt = np.maximum(np.abs(surf - ambient), 1e-9)
+    film = 0.5 * (surf + ambient) + 273.15
     ra = 9.80665 * (1 / film) * dt * d**3 / (nu * nu / pr)
     natural = (0.60 + 0.387 * ra ** (1 / 6) / (1 + (0.559 / pr) ** (9 / 16)) ** (8 / 27)) ** 2
-    return float(max(forced, natural * k / d))
+    result: FloatArray = np.maximum(forced, natural * k / d)
+    return result
 
 
 def mean_powers(
@@ -146,7 +172,7 @@ def _mean_power(
 
 def _conductance(node: ThermalNode, screw: BallScrew, speed: float, temperature: float) -> float:
     area = math.pi * screw.pitch_diameter * node.screw_length
-    h = convection_coefficient(screw.pitch_diameter, speed, temperature, node.ambient)
+    h = float(convection_coefficient(screw.pitch_diameter, speed, temperature, node.ambient))
     return h * area + (0.0 if node.machine_resistance is None else 1.0 / node.machine_resistance)
 
 
@@ -202,6 +228,68 @@ def steady_temperature(
     g = _conductance(node, screw, speed, t)
     power = _mean_power(profile, screw, lubricant, axis, t, model, parameters)
     return SteadyState(t, power, g * (t - node.ambient), g)
+
+
+@dataclass(frozen=True)
+class SteadyAtSpeed:
+    """Steady temperatures of continuous running, one per speed (arrays, SI, °C)."""
+
+    speed: FloatArray
+    temperature: FloatArray
+    torque: FloatArray
+    power: FloatArray
+    conductance: FloatArray
+
+
+def steady_at_speeds(
+    screw: BallScrew,
+    lubricant: Lubricant | str,
+    node: ThermalNode,
+    speeds: npt.ArrayLike,
+    *,
+    axial_load: float = 0.0,
+    model: str = "complete",
+    **parameters: Any,
+) -> SteadyAtSpeed:
+    r"""Steady temperature and friction torque of the screw running at each constant speed.
+
+    Solves :math:`T_f(\omega, T)\,|\omega| = G(\omega, T)(T - T_a)` for every
+    speed [rad/s] at once: a vectorised bisection between the ambient and
+    200 °C above it, one friction call per step over all the speeds.
+    A speed whose friction the node cannot shed below that raises an error.
+    """
+    check_positive("screw_length", node.screw_length, "m")
+    omega = np.atleast_1d(np.asarray(speeds, dtype=float))
+    area = math.pi * screw.pitch_diameter * node.screw_length
+    machine = 0.0 if node.machine_resistance is None else 1.0 / node.machine_resistance
+
+    def flows(temp: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            torque = friction_torque(
+                screw, lubricant, speed=omega, temperature=temp, axial_load=axial_load,
+                model=model, **parameters,
+            ).total  # fmt: skip
+        g = convection_coefficient(screw.pitch_diameter, omega, temp, node.ambient) * area
+        return torque, torque * np.abs(omega), g + machine
+
+    lo = np.full_like(omega, node.ambient)
+    hi = lo + 200.0
+    _, p_hi, g_hi = flows(hi)
+    if np.any(too_hot := p_hi > g_hi * (hi - node.ambient)):
+        raise BallScrewInputError(
+            "speed", float(omega[np.argmax(too_hot)]),
+            f"a speed whose friction the node can shed below {node.ambient + 200:g} °C "
+            "(give a machine_resistance or a longer screw_length)",
+        )  # fmt: skip
+    for _ in range(50):
+        mid = 0.5 * (lo + hi)
+        _, p, g = flows(mid)
+        warm = p > g * (mid - node.ambient)
+        lo, hi = np.where(warm, mid, lo), np.where(warm, hi, mid)
+    temp = 0.5 * (lo + hi)
+    torque, power, g = flows(temp)
+    return SteadyAtSpeed(omega, temp, torque, power, g)
 
 
 def temperature_history(
