@@ -10,20 +10,34 @@ import click
 from rich.console import Console
 from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 
-__all__ = ["case_option", "file_option", "progress", "stdout"]
+__all__ = ["case_option", "file_option", "progress", "stdout", "write_json"]
 
 F = TypeVar("F", bound=Callable[..., Any])
 
 
-def stdout() -> Console:
-    """Console for tables on standard output.
+def stdout(json_file: str | None = None) -> Console:
+    """Console for tables on standard output (standard error when JSON goes there).
 
     The terminal's width; when the output is not a terminal (files, pipes) 200
-    columns, unless ``COLUMNS`` says otherwise.
+    columns, unless ``COLUMNS`` says otherwise. Without markup: unit headers
+    such as ``[rpm]`` print as written.
     """
     probe = Console()
     fixed = probe.is_terminal or "COLUMNS" in os.environ
-    return Console(markup=False, width=None if fixed else 200)
+    return Console(markup=False, width=None if fixed else 200, stderr=json_file == "-")
+
+
+def write_json(json_file: str, text: str) -> None:
+    """Write JSON text to ``json_file`` atomically, or to standard output for ``-``."""
+    import sys
+    from pathlib import Path
+
+    from .files import atomic_write
+
+    if json_file == "-":
+        sys.stdout.write(text)
+    else:
+        atomic_write(Path(json_file), text.encode("utf-8"))
 
 
 def progress(console: Console) -> Progress:

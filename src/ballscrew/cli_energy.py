@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import os
-import sys
 from pathlib import Path
 from typing import Any
 
@@ -105,8 +104,8 @@ def energy_command(
 
     from . import __version__
     from .case import load_case
+    from .cli_common import write_json
     from .energy import Axis, axis_cycle
-    from .files import atomic_write
     from .motion import back_and_forth, chain, read_trajectory
     from .thermal import (
         ThermalNode,
@@ -262,8 +261,4 @@ def energy_command(
             "assumptions": assumptions,
             "models": results,
         }
-        text = json.dumps(payload, indent=1, ensure_ascii=False) + "\n"
-        if json_file == "-":
-            sys.stdout.write(text)
-        else:
-            atomic_write(Path(json_file), text.encode("utf-8"))
+        write_json(json_file, json.dumps(payload, indent=1, ensure_ascii=False) + "\n")

@@ -13,7 +13,7 @@ import numpy as np
 from rich.console import Console
 from rich.table import Table
 
-from .cli_common import case_option, file_option, progress, stdout
+from .cli_common import case_option, file_option, progress, stdout, write_json
 from .errors import BallScrewValidityWarning
 
 __all__ = ["torque"]
@@ -56,7 +56,11 @@ __all__ = ["torque"]
     show_default=True,
     help="semicolon-decimal-comma for spreadsheets in decimal-comma locales.",
 )
-@file_option("--json", "json_file", "Write the results and their provenance as JSON.")
+@file_option(
+    "--json",
+    "json_file",
+    "Write the results and their provenance as JSON to FILE ('-' for standard output).",
+)
 @click.option(
     "--table",
     "table_kind",
@@ -131,16 +135,21 @@ def torque(
     _report_warnings(results)
     rows = result_rows(results)
     pivot = table_kind == "pivot" or (table_kind == "auto" and len(rows) > 40)
-    stdout().print(_pivot_table(case.title, rows) if pivot else _full_table(case.title, rows))
+    stdout(json_file).print(
+        _pivot_table(case.title, rows) if pivot else _full_table(case.title, rows)
+    )
     if pivot and table_kind == "auto":
-        click.echo(f"({len(rows)} rows: torque shown as speeds x models; --table full for all)")
+        click.echo(
+            f"({len(rows)} rows: torque shown as speeds x models; --table full for all)",
+            err=json_file == "-",
+        )
     meta = provenance(case, results, ["ballscrew", *sys.argv[1:]])
     if csv_file:
         text = csv_text(rows, layout=csv_layout, dialect=csv_dialect)
         atomic_write(Path(csv_file), text.encode("utf-8"))
         atomic_write(Path(csv_file + ".meta.json"), json_text([], meta).encode("utf-8"))
     if json_file:
-        atomic_write(Path(json_file), json_text(rows, meta).encode("utf-8"))
+        write_json(json_file, json_text(rows, meta))
 
 
 def _report_warnings(results: dict[str, Any]) -> None:

@@ -18,7 +18,6 @@ import io
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 
-import matplotlib as mpl
 import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure as MplFigure
@@ -29,7 +28,7 @@ from .energy import CycleResult
 from .errors import FloatArray
 from .files import atomic_write
 from .motion import Profile
-from .plotting import figure_bytes
+from .plotting import write_figures
 
 __all__ = ["write_energy_report"]
 
@@ -124,15 +123,7 @@ def write_energy_report(
     }
     if history:
         figures["temperature"] = (_temperature_figure(history), "Temperature over time")
-    written: list[Path] = []
-    images: dict[str, bytes] = {}
-    with mpl.rc_context({"svg.hashsalt": "ballscrew"}):
-        for key, (fig, _) in figures.items():
-            images[key] = figure_bytes(fig, "png")
-            for kind in ("png", "svg"):
-                path = folder / "figures" / f"{key}.{kind}"
-                atomic_write(path, images[key] if kind == "png" else figure_bytes(fig, "svg"))
-                written.append(path)
+    written, images = write_figures(folder, {k: fig for k, (fig, _) in figures.items()})
     header = ["time [s]", "position [mm]", "table speed [m/s]", "axial force [N]"]
     columns: list[FloatArray] = [profile.time, profile.position * 1e3, profile.speed]
     first = next(iter(results.values()))

@@ -10,9 +10,12 @@ commas (as spreadsheets write them in decimal-comma locales), for example::
 
 The speed column may be the screw's angular speed (any unit pint converts to
 rad/s: ``rpm``, ``rad/s``) or the table's linear speed (``m/s``, ``mm/s``),
-which is turned into screw speed with the screw's lead. The torque column
-needs a unit convertible to N·m. Torques are taken as magnitudes (friction
-opposes the motion in either direction).
+which is turned into screw speed with the screw's lead; its sign is the
+direction of rotation. The torque column needs a unit convertible to N·m.
+Torques are taken as magnitudes (friction opposes the motion in either
+direction). Optional columns hold each point's lubricant temperature (a
+temperature unit: ``temperature [degC]``) and axial load (a force unit:
+``axial load [N]``), for curves measured at several temperatures or loads.
 """
 
 from __future__ import annotations
@@ -50,11 +53,17 @@ class MeasuredCurve:
         Friction torque magnitude [N·m].
     source : str
         Where it was read from.
+    temperature : numpy.ndarray or None
+        Lubricant temperature of each point [°C], if the file gives it.
+    axial_load : numpy.ndarray or None
+        Axial load of each point [N], if the file gives it.
     """
 
     speed: FloatArray
     torque: FloatArray
     source: str
+    temperature: FloatArray | None = None
+    axial_load: FloatArray | None = None
 
 
 def _dimension(unit: str) -> str:
@@ -63,7 +72,9 @@ def _dimension(unit: str) -> str:
         q = ureg.Quantity(1.0, unit)
     except (pint.errors.PintError, ValueError, TypeError, AttributeError, AssertionError):
         return "unknown"
-    for kind, ref in (("angular", "rad/s"), ("linear", "m/s"), ("torque", "N*m")):
+    if q.is_compatible_with("K"):
+        return "temperature"
+    for kind, ref in (("angular", "rad/s"), ("linear", "m/s"), ("torque", "N*m"), ("force", "N")):
         if q.is_compatible_with(ref):
             if (
                 kind == "angular"
@@ -106,8 +117,8 @@ def parse_measured(text: str, screw: BallScrew, source: str = "measured data") -
         if kind in ("angular", "linear") and "speed" not in columns:
             columns["speed"] = (i, match.group("unit").strip())
             columns["speed_kind"] = (i, kind)
-        elif kind == "torque" and "torque" not in columns:
-            columns["torque"] = (i, match.group("unit").strip())
+        elif kind in ("torque", "temperature", "force") and kind not in columns:
+            columns[kind] = (i, match.group("unit").strip())
     if "speed" not in columns:
         raise BallScrewInputError(
             f"{source}: header",
@@ -124,9 +135,10 @@ def parse_measured(text: str, screw: BallScrew, source: str = "measured data") -
     if len(rows) < 2:
         raise BallScrewInputError(source, "(no data rows)", "at least one data row")
     ureg = registry()
-    values: dict[str, list[float]] = {"speed": [], "torque": []}
+    keys = [k for k in ("speed", "torque", "temperature", "force") if k in columns]
+    values: dict[str, list[float]] = {k: [] for k in keys}
     for line, row in enumerate(rows[1:], start=2):
-        for key in ("speed", "torque"):
+        for key in keys:
             col = columns[key][0]
             cell = row[col].strip() if col < len(row) else ""
             if delimiter != "," and _DECIMAL_COMMA.match(cell):
@@ -160,8 +172,26 @@ def parse_measured(text: str, screw: BallScrew, source: str = "measured data") -
             float(np.max(np.abs(speed))),
             "speeds below 1e5 rad/s (about 1e6 rpm)",
         )
+    temperature = None
+    if "temperature" in columns:
+        kelvin = ureg.Quantity(np.asarray(values["temperature"]), columns["temperature"][1])
+        temperature = np.asarray(kelvin.to("degC").magnitude, dtype=float)
+        if np.any(temperature <= -273.15):
+            raise BallScrewInputError(
+                f"{source}: column '{header[columns['temperature'][0]].strip()}'",
+                float(np.min(temperature)),
+                "temperatures above absolute zero (check the unit)",
+            )
+    load = None
+    if "force" in columns:
+        newton = ureg.Quantity(np.asarray(values["force"]), columns["force"][1])
+        load = np.asarray(newton.to("N").magnitude, dtype=float)
     return MeasuredCurve(
-        speed=np.asarray(speed, dtype=float), torque=np.asarray(torque, dtype=float), source=source
+        speed=np.asarray(speed, dtype=float),
+        torque=np.asarray(torque, dtype=float),
+        source=source,
+        temperature=temperature,
+        axial_load=load,
     )
 
 

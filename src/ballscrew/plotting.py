@@ -9,6 +9,7 @@ give byte-identical files.
 from __future__ import annotations
 
 import io
+from pathlib import Path
 from typing import Any
 
 import matplotlib as mpl
@@ -99,3 +100,25 @@ def figure_bytes(figure: MplFigure, kind: str) -> bytes:
         else:  # pragma: no cover - internal use only
             raise ValueError(kind)
     return buffer.getvalue()
+
+
+def write_figures(
+    folder: Path, figures: dict[str, MplFigure]
+) -> tuple[list[Path], dict[str, bytes]]:
+    """Write each figure as ``folder/figures/KEY.png`` and ``.svg`` (atomically, no dates).
+
+    Returns the paths written and the PNG bytes by key (for an HTML page).
+    """
+    from .files import atomic_write
+
+    (folder / "figures").mkdir(parents=True, exist_ok=True)
+    written: list[Path] = []
+    images: dict[str, bytes] = {}
+    with mpl.rc_context({"svg.hashsalt": "ballscrew"}):
+        for key, fig in figures.items():
+            images[key] = figure_bytes(fig, "png")
+            for kind in ("png", "svg"):
+                path = folder / "figures" / f"{key}.{kind}"
+                atomic_write(path, images[key] if kind == "png" else figure_bytes(fig, "svg"))
+                written.append(path)
+    return written, images

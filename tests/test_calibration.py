@@ -1,0 +1,164 @@
+"""Calibration: parameters recovered from data the model made, with honest intervals."""
+
+from __future__ import annotations
+
+import warnings
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from ballscrew import friction_torque, reference_screw
+from ballscrew.calibration import fit_parameters, fitted_case_toml
+from ballscrew.case import parse_case
+from ballscrew.errors import BallScrewInputError
+from ballscrew.measured import MeasuredCurve, parse_measured
+
+OIL = "PAO ISO VG 68"
+TRUE_PRELOAD, TRUE_CB = 1500.0, 0.03
+W = np.geomspace(10.0, 3000.0, 12) * np.pi / 30
+TEMPS = np.array([20.0, 40.0])
+
+
+def _truth() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    w, t = (a.ravel() for a in np.meshgrid(W, TEMPS))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        torque = friction_torque(reference_screw().replace(preload=TRUE_PRELOAD), OIL, speed=w,
+                                 temperature=t, ball_train_constant=TRUE_CB).total  # fmt: skip
+    return w, t, np.asarray(torque)
+
+
+def _fit(torque: np.ndarray, free: list[str] | None = None) -> object:
+    w, t, _ = _truth()
+    curve = MeasuredCurve(w, torque, "synthetic", temperature=t)
+    return fit_parameters(reference_screw(), OIL, curve, free or ["preload", "ball_train_constant"])
+
+
+def test_noise_free_data_give_back_the_true_values() -> None:
+    _, _, torque = _truth()
+    r = _fit(torque)
+    # Starts are 2000 N and 0.0474: the optimum is the truth to the solver's tolerance.
+    assert r.estimates["preload"].value == pytest.approx(TRUE_PRELOAD, rel=1e-6)
+    assert r.estimates["ball_train_constant"].value == pytest.approx(TRUE_CB, rel=1e-6)
+    assert r.rms_residual < 1e-9
+
+
+def test_true_values_inside_the_intervals_in_most_seeded_trials() -> None:
+    # 5 % multiplicative noise, 10 seeds. A nominal 95 % interval covers the
+    # truth 9.5 times in 10 on average; P(6 or fewer | 0.95) = 1e-3, so 7 of
+    # 10 is a test that a broken interval fails and a sound one passes.
+    _, _, torque = _truth()
+    hits = {"preload": 0, "ball_train_constant": 0}
+    for seed in range(10):
+        rng = np.random.default_rng(seed)
+        r = _fit(torque * (1.0 + 0.05 * rng.standard_normal(torque.size)))
+        for name, true in (("preload", TRUE_PRELOAD), ("ball_train_constant", TRUE_CB)):
+            e = r.estimates[name]
+            hits[name] += e.low <= true <= e.high
+    assert hits["preload"] >= 7 and hits["ball_train_constant"] >= 7, hits
+
+
+def test_outliers_are_left_out_and_named() -> None:
+    _, _, torque = _truth()
+    rng = np.random.default_rng(3)
+    noisy = torque * (1.0 + 0.02 * rng.standard_normal(torque.size))
+    clean = _fit(noisy)
+    spoiled = noisy.copy()
+    spoiled[[2, 9, 17]] *= 3.0  # three wild readings
+    r = _fit(spoiled)
+    assert r.outliers == (2, 9, 17)
+    assert any("rows 3, 10, 18" in w for w in r.warnings)
+    # Without those three points the fit is the clean one to within its own
+    # scatter (2 % noise: a few percent on the estimates).
+    for name in ("preload", "ball_train_constant"):
+        assert r.estimates[name].value == pytest.approx(clean.estimates[name].value, rel=0.05)
+
+
+def test_a_parameter_the_data_cannot_see_is_held_with_a_warning() -> None:
+    # The hysteresis loss is 0.3 % of the torque: 5 % noise hides it.
+    _, _, torque = _truth()
+    rng = np.random.default_rng(11)
+    r = _fit(torque * (1.0 + 0.05 * rng.standard_normal(torque.size)),
+             ["preload", "hysteresis_loss_factor"])  # fmt: skip
+    e = r.estimates["hysteresis_loss_factor"]
+    assert not e.identified and e.low is None and e.value == e.start
+    assert any("hysteresis_loss_factor cannot be identified" in w for w in r.warnings)
+    assert r.estimates["preload"].identified
+
+
+def test_sparse_data_error_and_few_degrees_of_freedom_warn() -> None:
+    w, t, torque = _truth()
+    two = MeasuredCurve(w[:2], torque[:2], "two points", temperature=t[:2])
+    with pytest.raises(BallScrewInputError, match="more points than free parameters"):
+        fit_parameters(reference_screw(), OIL, two, ["preload", "ball_train_constant"])
+    four = MeasuredCurve(w[[0, 5, 11, 12]], torque[[0, 5, 11, 12]], "four",
+                         temperature=t[[0, 5, 11, 12]])  # fmt: skip
+    r = fit_parameters(reference_screw(), OIL, four, ["preload", "ball_train_constant"])
+    assert any("degree(s) of freedom" in w for w in r.warnings)
+    with pytest.raises(BallScrewInputError, match="--free"):
+        fit_parameters(reference_screw(), OIL, four, ["lead"])
+    with pytest.raises(BallScrewInputError, match="parameter of model 'catalog'"):
+        fit_parameters(reference_screw(), OIL, four, ["ball_train_constant"], model="catalog")
+
+
+def test_the_fitted_case_file_loads_and_gives_the_fitted_torque() -> None:
+    _, _, torque = _truth()
+    r = _fit(torque)
+    text = (
+        'title = "mine"\n[screw]\npitch_diameter = "40 mm"  # as drawn\nlead = "10 mm"\n'
+        'ball_diameter = "6.35 mm"\npreload_drag_torque = "0.3 N*m"\n'
+        '[lubricant]\nname = "PAO ISO VG 68"\n'
+    )
+    out = fitted_case_toml(text, r)
+    assert "# as drawn" in out  # the user's comments stay
+    case = parse_case(out)
+    assert case.screw.preload == pytest.approx(TRUE_PRELOAD, rel=1e-5)
+    fitted_cb = case.model_parameters["complete"]["ball_train_constant"]
+    assert fitted_cb == pytest.approx(TRUE_CB, rel=1e-5)
+
+
+def test_measured_files_carry_temperature_and_load_columns() -> None:
+    m = parse_measured(
+        "speed [rpm];temperature [K];axial load [kN];torque [N*mm]\n"
+        "100;313,15;1,5;300\n-200;293,15;0;400\n",
+        reference_screw(),
+    )
+    np.testing.assert_allclose(m.temperature, [40.0, 20.0])
+    np.testing.assert_allclose(m.axial_load, [1500.0, 0.0])
+    np.testing.assert_allclose(m.torque, [0.3, 0.4])
+    assert m.speed[1] < 0.0  # the direction is kept
+
+
+def test_fit_command_writes_case_report_and_json(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    import json
+
+    from ballscrew.cli import main
+
+    w, t, torque = _truth()
+    csv = tmp_path / "run.csv"
+    body = "".join(f"{float(a)!r},{float(b)!r},{float(c)!r}\n"
+                   for a, b, c in zip(w, t, torque, strict=True))  # fmt: skip
+    csv.write_text("speed [rad/s],temperature [degC],torque [N*m]\n" + body)
+    case = tmp_path / "s.toml"
+    case.write_text('[screw]\npitch_diameter = "40 mm"\nlead = "10 mm"\n'
+                    'ball_diameter = "6.35 mm"\npreload = "2 kN"\n'
+                    '[lubricant]\nname = "PAO ISO VG 68"\n')  # fmt: skip
+    with pytest.raises(SystemExit) as info:
+        main(["fit", "--case", str(case), "--measured", str(csv), "--free",
+              "preload, ball_train_constant", "--out", str(tmp_path / "fit"),
+              "--json", "-"])  # fmt: skip
+    assert info.value.code == 0
+    payload = json.loads(capsys.readouterr().out)
+    p = payload["parameters"]["preload"]
+    assert p["value"] == pytest.approx(TRUE_PRELOAD, rel=1e-5) and p["low"] <= p["high"]
+    assert payload["rms_residual_Nm"] < 1e-8 and isinstance(payload["warnings"], list)
+    for name in ("fitted-case.toml", "report.html", "report.md", "fit.json", "data/fit.csv",
+                 "figures/fit.png"):  # fmt: skip
+        assert (tmp_path / "fit" / name).is_file(), name
+    with pytest.raises(SystemExit) as info:
+        main(["fit", "--case", str(case), "--measured", str(csv), "--free", "preload",
+              "--start", "preload=1500"])  # fmt: skip
+    assert info.value.code == 2 and "bare number" in capsys.readouterr().err

@@ -1,0 +1,141 @@
+"""Friction forms for controllers: each checked against its definition."""
+
+from __future__ import annotations
+
+import math
+import warnings
+
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+
+from ballscrew import friction_torque, reference_screw
+from ballscrew.controller import (
+    coulomb_viscous,
+    fit_form,
+    lugre_rate,
+    nut_axial_stiffness,
+    stribeck,
+    stribeck_torque,
+)
+from ballscrew.errors import BallScrewInputError
+
+W = np.concatenate([-np.geomspace(0.01, 300.0, 40)[::-1], np.geomspace(0.01, 300.0, 40)])
+
+
+def test_a_pure_coulomb_viscous_curve_is_recovered_exactly() -> None:
+    torque = 0.42 * np.sign(W) + 2.5e-3 * W
+    f = coulomb_viscous(W, torque)
+    assert f.parameters["coulomb_torque"] == pytest.approx(0.42, rel=1e-12)
+    assert f.parameters["viscous_coefficient"] == pytest.approx(2.5e-3, rel=1e-12)
+    assert f.rms_error < 1e-14
+
+
+def test_coulomb_viscous_stays_physical_on_a_falling_curve() -> None:
+    # Torque that falls with speed: an unconstrained fit gives b < 0; the
+    # bounded one stops at b = 0 and T_c the mean torque.
+    torque = np.sign(W) * (0.5 - 1e-3 * np.abs(W))
+    f = coulomb_viscous(W, torque)
+    assert f.parameters["viscous_coefficient"] == 0.0
+    assert f.parameters["coulomb_torque"] == pytest.approx(float(np.mean(np.abs(torque))))
+
+
+def test_a_stribeck_curve_is_recovered_with_its_static_torque_above_coulomb() -> None:
+    true = {"coulomb_torque": 0.3, "static_torque": 0.5, "stribeck_speed": 2.0,
+            "stribeck_exponent": 1.3, "viscous_coefficient": 1e-3}  # fmt: skip
+    f = stribeck(W, stribeck_torque(W, **true))
+    for key, value in true.items():
+        assert f.parameters[key] == pytest.approx(value, rel=1e-6), key
+    # A curve with no drop: T_s = T_c by construction, never below.
+    g = stribeck(W, 0.4 * np.sign(W) + 1e-3 * W)
+    assert g.parameters["static_torque"] >= g.parameters["coulomb_torque"]
+    assert g.parameters["static_torque"] == pytest.approx(0.4, rel=1e-6)
+    assert any("no Stribeck drop" in n for n in g.notes)
+
+
+def test_stribeck_definition_at_the_stribeck_speed_and_far_beyond() -> None:
+    # Excess over Coulomb falls to 1/e at omega_s (any exponent), and to 0 far away.
+    for delta in (0.5, 1.0, 2.0):
+        t = float(stribeck_torque(2.0, 0.3, 0.5, 2.0, delta, 0.0))
+        assert t == pytest.approx(0.3 + 0.2 / math.e, rel=1e-12)
+    assert float(stribeck_torque(-1e4, 0.3, 0.5, 2.0, 1.0, 0.0)) == pytest.approx(-0.3)
+
+
+def test_lugre_at_constant_speed_settles_on_the_stribeck_curve() -> None:
+    # Integrate the bristle ODE at a constant speed: its steady torque must be
+    # the Stribeck curve, sigma_2 = b (the defining property of LuGre).
+    p = {"coulomb_torque": 0.3, "static_torque": 0.5, "stribeck_speed": 2.0,
+         "stribeck_exponent": 1.0, "viscous_coefficient": 1e-3, "bristle_stiffness": 3000.0,
+         "bristle_damping": 5.0}  # fmt: skip
+    for w in (-5.0, 0.5, 3.0):
+        sol = solve_ivp(lambda _t, z, w=w: lugre_rate(z, w, p)[0], (0.0, 1.0), [0.0],
+                        rtol=1e-10, atol=1e-14, method="LSODA")  # fmt: skip
+        _, torque = lugre_rate(sol.y[0, -1], w, p)
+        keys = ("coulomb_torque", "static_torque", "stribeck_speed", "stribeck_exponent",
+                "viscous_coefficient")  # fmt: skip
+        expected = stribeck_torque(w, *(p[k] for k in keys))
+        assert float(torque) == pytest.approx(float(expected), rel=1e-6)
+
+
+def test_nut_stiffness_follows_hertz() -> None:
+    # A single nut: delta ~ Q^(2/3), so K = dF/dx = 1.5 F/x. A double nut at
+    # no external load: each half takes half of a small load (preload_split),
+    # so K = 2 K_half at the preload.
+    single = reference_screw().replace(nut="single", preload=0.0)
+    k1, k2 = nut_axial_stiffness(single, 1000.0), nut_axial_stiffness(single, 2000.0)
+    # K ~ F^(1/3): doubling the load multiplies it by 2^(1/3) (to the finite step).
+    assert k2 / k1 == pytest.approx(2 ** (1 / 3), rel=1e-4)
+    double = reference_screw()  # 2 kN preload
+    assert nut_axial_stiffness(double) == pytest.approx(2 * k2, rel=1e-3)
+    with pytest.raises(BallScrewInputError, match="single nut"):
+        nut_axial_stiffness(single, 0.0)
+
+
+def test_lugre_rules_and_table_side_units() -> None:
+    screw = reference_screw()
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        torque = np.sign(W) * friction_torque(screw, "PAO ISO VG 68", speed=W,
+                                              temperature=40.0).total  # fmt: skip
+    f = fit_form("lugre", W, torque, screw=screw, inertia=4e-3)
+    k = nut_axial_stiffness(screw)
+    assert f.parameters["bristle_stiffness"] == pytest.approx(k * (0.01 / (2 * math.pi)) ** 2)
+    assert f.parameters["bristle_damping"] == pytest.approx(
+        2 * math.sqrt(f.parameters["bristle_stiffness"] * 4e-3)
+    )
+    side = f.as_dict(lead=0.01)["table_side"]
+    # F = 2 pi T / l; c = b (2 pi / l)^2.
+    assert side["coulomb_force"]["value"] == pytest.approx(
+        f.parameters["coulomb_torque"] * 2 * math.pi / 0.01
+    )
+    assert side["viscous_table_coefficient"]["value"] == pytest.approx(
+        f.parameters["viscous_coefficient"] * (2 * math.pi / 0.01) ** 2
+    )
+    with pytest.raises(BallScrewInputError, match="inertia"):
+        fit_form("lugre", W, torque, screw=screw)
+    with pytest.raises(BallScrewInputError, match="form"):
+        fit_form("dahl", W, torque)
+
+
+def test_export_friction_command(tmp_path: object, capsys: pytest.CaptureFixture[str]) -> None:
+    import json
+    from pathlib import Path
+
+    from ballscrew.cli import main
+
+    out = Path(str(tmp_path)) / "table.csv"
+    with pytest.raises(SystemExit) as info:
+        main(["export-friction", "--form", "table", "--temperature", "20, 40 degC",
+              "--speed", "10, 100, 1000 rpm", "--out", str(out)])  # fmt: skip
+    assert info.value.code == 0
+    lines = out.read_text().splitlines()
+    assert lines[0].startswith("speed [rad/s],speed [rpm],temperature [degC],torque [N*m]")
+    assert len(lines) == 1 + 2 * 6  # both directions, two temperatures
+    capsys.readouterr()
+    with pytest.raises(SystemExit) as info:
+        main(["export-friction", "--form", "coulomb-viscous", "--json", "-"])
+    assert info.value.code == 0
+    payload = json.loads(capsys.readouterr().out)
+    assert payload["parameters"]["viscous_coefficient"]["value"] >= 0.0
+    assert payload["parameters"]["coulomb_torque"]["unit"] == "N*m"
+    assert payload["rms_error_Nm"] >= 0.0
