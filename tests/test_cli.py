@@ -110,6 +110,7 @@ def test_study_writes_a_complete_reproducible_report(
         "fig9_all_models",
         "fig10_simplified_vs_complete",
         "fig11_complete_budget",
+        "fig12_controller",
     ]
     for key in keys:
         for sub, ext in (("figures", "png"), ("figures", "svg"), ("data", "csv")):

@@ -115,3 +115,24 @@ def test_a_study_of_another_case_is_that_case_s_study(study: StudyResult, tmp_pa
     text = (out / "report.md").read_text(encoding="utf-8")
     assert "Reproduction of" not in text and "Kamalzadeh" not in text and "nan" not in text
     assert "25 x 5 single nut" in text
+
+
+def test_controller_figure_is_the_stribeck_form_fitted_to_the_complete_curve(
+    study: StudyResult,
+) -> None:
+    # Fig. 12 must show, beside the complete model's curve, Tustin's form evaluated with the
+    # parameters printed in its caption; the curve must follow the model within the fit's own
+    # stated maximum error (the caption's number, not a tolerance chosen here).
+    fig = next(f for f in study.figures if f.key == "fig12_controller")
+    model, fitted = fig.series
+    assert model.model == "complete" and fitted.model == "stribeck"
+    p = fitted.parameters
+    w = np.asarray(model.speed_rpm) * np.pi / 30.0
+    tc, ts, ws, d, b = (p[k] for k in ("coulomb_torque", "static_torque", "stribeck_speed",
+                                       "stribeck_exponent", "viscous_coefficient"))  # fmt: skip
+    by_hand = tc + (ts - tc) * np.exp(-(np.abs(w / ws) ** d)) + b * w  # Tustin, written out
+    np.testing.assert_allclose(fitted.torque, by_hand, rtol=1e-12)
+    assert ts >= tc >= 0.0 and b >= 0.0
+    max_error = float(re.search(r"max ([0-9.e+-]+) N·m", fig.caption).group(1))  # type: ignore[union-attr]
+    keep = w > 0
+    assert np.max(np.abs(fitted.torque[keep] - model.torque[keep])) <= max_error * 1.01

@@ -80,6 +80,37 @@ def _params(case: Case, model: str) -> dict[str, Any]:
     return dict(case.model_parameters.get(model, {}))
 
 
+def _controller_figure(model_curve: Series, at: str) -> Figure:
+    """The complete model's curve and the Stribeck curve a controller would take from it."""
+    from .controller import stribeck, stribeck_torque
+
+    w = model_curve.speed_rpm * RPM
+    keep = w > 0.0
+    both = np.concatenate([-w[keep][::-1], w[keep]])
+    torque = np.concatenate([-model_curve.torque[keep][::-1], model_curve.torque[keep]])
+    fit = stribeck(both, torque)
+    p = fit.parameters
+    curve = stribeck_torque(w, **p)
+    m = model_curve
+    shown = Series("Stribeck fit", "stribeck", m.speed_rpm, np.abs(curve), m.preload,
+                   m.temperature, m.lubricant, p)  # fmt: skip
+    drop = (
+        f"static {p['static_torque']:.4g} N·m, Stribeck speed "
+        f"{p['stribeck_speed'] / RPM:.3g} rpm, exponent {p['stribeck_exponent']:.2f}"
+        if not fit.notes
+        else "no Stribeck drop in the model's curve (static = Coulomb)"
+    )
+    return Figure(
+        "fig12_controller",
+        "Friction for a controller",
+        f"The complete model, {at}, and the Stribeck curve fitted to it over both "
+        f"directions (ballscrew export-friction): Coulomb {p['coulomb_torque']:.4g} N·m, "
+        f"viscous {p['viscous_coefficient'] * RPM * 1e3:.4g} N·m per 1000 rpm, {drop}; fit "
+        f"error RMS {fit.rms_error:.3g} N·m, max {fit.max_error:.3g} N·m.",
+        (model_curve, shown),
+    )
+
+
 def reproduces_study(case: Case) -> bool:
     """True for the study's own case (the bundled file, unchanged).
 
@@ -339,6 +370,9 @@ def _run(
             stacked=True,
         )
     )
+
+    step("Fig. 12: friction for a controller")
+    figures.append(_controller_figure(series("complete", ref_preload, "complete model"), at))
 
     metrics: dict[str, dict[str, float]] = {}
     if measured is not None:
