@@ -257,3 +257,27 @@ def test_energy_json_has_the_documented_keys_and_states_its_assumptions(
     steady = payload["models"]["complete"]["steady_at_speed"]
     assert steady["speed_rpm"] == pytest.approx([500.0, 1500.0])
     assert steady["temperature_C"][1] > steady["temperature_C"][0] > 20.0
+
+
+def test_heat_balance_takes_the_bearing_span_as_the_screw_length(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    import json
+
+    from ballscrew.cli import main
+
+    case = tmp_path / "axis.toml"
+    case.write_text(
+        '[screw]\npitch_diameter = "40 mm"\nlead = "10 mm"\nball_diameter = "6.35 mm"\n'
+        'preload = "2 kN"\n[lubricant]\nname = "mineral ISO VG 68"\n'
+        '[axis]\nmoving_mass = "200 kg"\nbearing_span = "1.2 m"\n'
+    )
+    with pytest.raises(SystemExit) as info:
+        main(["energy", "--case", str(case), "--move",
+              "stroke=300 mm, feed=10 m/min, acceleration=2 m/s^2", "--json", "-"])  # fmt: skip
+    assert info.value.code == 0
+    captured = capsys.readouterr()
+    # The screw between its supports is at least the span: a 0.6 m estimate from the stroke
+    # would halve the cooled surface of a screw the user has described.
+    assert json.loads(captured.out)["thermal"]["screw_length"] == 1.2
+    assert "screw_length = 1200 mm (the bearing span" in captured.err

@@ -145,7 +145,13 @@ def energy_command(
     axis = Axis(**case.axis)
     assumptions: list[str] = []
     thermal = dict(case.thermal)
-    if "screw_length" not in thermal:
+    if "screw_length" not in thermal and axis.bearing_span is not None:
+        thermal["screw_length"] = axis.bearing_span
+        assumptions.append(
+            f"axis.screw_length = {axis.bearing_span * 1e3:.0f} mm (the bearing span; give "
+            "screw_length for a real heat balance)"
+        )
+    elif "screw_length" not in thermal:
         travel = float(np.ptp(profile.position))
         thermal["screw_length"] = estimated_screw_length(case.screw, travel)
         assumptions.append(
