@@ -139,3 +139,99 @@ def test_export_friction_command(tmp_path: object, capsys: pytest.CaptureFixture
     assert payload["parameters"]["viscous_coefficient"]["value"] >= 0.0
     assert payload["parameters"]["coulomb_torque"]["unit"] == "N*m"
     assert payload["rms_error_Nm"] >= 0.0
+
+
+def test_single_nut_stiffness_from_hertz_by_hand() -> None:
+    # Built here from the definitions: Q = F/(Z sin(alpha) cos(lambda)), the nut moves
+    # x = (delta_screw + delta_nut)/(sin(alpha) cos(lambda)), and Hertz's delta ~ Q^(2/3) makes
+    # K = dF/dx = 1.5 F/x exactly. The code's finite difference (step 1e-4 F) is within
+    # 1e-4 of that.
+    from ballscrew.contact import hertz
+
+    s = reference_screw().replace(nut="single", preload=0.0)
+    f = 1500.0
+    sa = math.sin(s.contact_angle) * math.cos(s.lead_angle)
+    q = f / (s.balls_per_nut * sa)
+    delta = (hertz(q, s.rx_screw, s.ry_screw, s.reduced_modulus).approach
+             + hertz(q, s.rx_nut, s.ry_nut, s.reduced_modulus).approach)  # fmt: skip
+    x = float(delta) / sa
+    assert nut_axial_stiffness(s, f) == pytest.approx(1.5 * f / x, rel=1e-4)
+
+
+def test_every_table_side_quantity_follows_the_lead() -> None:
+    # Table side by hand, l = 5 mm: F = T 2 pi/l, v = omega l/2 pi, and a rate or
+    # stiffness per radian becomes one per metre with (2 pi/l)^2.
+    p = {"coulomb_torque": 0.3, "static_torque": 0.5, "stribeck_speed": 2.0,
+         "stribeck_exponent": 1.3, "viscous_coefficient": 1e-3, "bristle_stiffness": 3000.0,
+         "bristle_damping": 5.0}  # fmt: skip
+    from ballscrew.controller import FrictionForm
+
+    lead = 0.005
+    k = 2 * math.pi / lead
+    side = FrictionForm("lugre", p, 0.0, 0.0).as_dict(lead=lead)["table_side"]
+    expected = {
+        "coulomb_force": (0.3 * k, "N"),
+        "static_force": (0.5 * k, "N"),
+        "stribeck_table_speed": (2.0 / k, "m/s"),
+        "viscous_table_coefficient": (1e-3 * k**2, "N*s/m"),
+        "bristle_table_stiffness": (3000.0 * k**2, "N/m"),
+        "bristle_table_damping": (5.0 * k**2, "N*s/m"),
+    }
+    assert set(side) == set(expected)
+    for name, (value, unit) in expected.items():
+        assert side[name]["value"] == pytest.approx(value, rel=1e-12), name
+        assert side[name]["unit"] == unit, name
+
+
+def test_lugre_bristle_equations_away_from_steady_state() -> None:
+    # From the LuGre definition: with the bristles relaxed (z = 0) the rate is the speed
+    # itself and the torque sigma_1 w + sigma_2 w; at z = g/sigma_0 (steady, w > 0) the rate
+    # is 0. g uses the exponent 1.5 at |w/w_s| = 2.25, where it matters.
+    p = {"coulomb_torque": 0.3, "static_torque": 0.5, "stribeck_speed": 2.0,
+         "stribeck_exponent": 1.5, "viscous_coefficient": 1e-3, "bristle_stiffness": 3000.0,
+         "bristle_damping": 5.0}  # fmt: skip
+    dz, torque = lugre_rate(0.0, 4.5, p)
+    assert float(dz) == pytest.approx(4.5) and float(torque) == pytest.approx((5.0 + 1e-3) * 4.5)
+    g = 0.3 + 0.2 * math.exp(-(2.25**1.5))
+    dz, torque = lugre_rate(g / 3000.0, 4.5, p)
+    assert float(dz) == pytest.approx(0.0, abs=1e-12)
+    assert float(torque) == pytest.approx(g + 1e-3 * 4.5, rel=1e-12)
+
+
+def test_stribeck_bounds_and_the_no_drop_note() -> None:
+    # The documented bounds: 0.5 <= delta <= 2 and omega_s <= 0.05 of the fastest speed.
+    # Curves built beyond them come back at the bound.
+    base = {"coulomb_torque": 0.3, "static_torque": 0.5, "viscous_coefficient": 1e-3}
+    steep = stribeck(W, stribeck_torque(W, stribeck_speed=2.0, stribeck_exponent=3.0, **base))
+    assert steep.parameters["stribeck_exponent"] == pytest.approx(2.0)
+    flat = stribeck(W, stribeck_torque(W, stribeck_speed=2.0, stribeck_exponent=0.3, **base))
+    assert flat.parameters["stribeck_exponent"] == pytest.approx(0.5)
+    wide = stribeck(W, stribeck_torque(W, stribeck_speed=60.0, stribeck_exponent=1.0, **base))
+    assert wide.parameters["stribeck_speed"] == pytest.approx(0.05 * 300.0, rel=1e-6)
+    # A drop of 2 % of the Coulomb torque is a drop; one of 0.5 % is noted as none.
+    for excess, noted in ((0.02, False), (0.005, True)):
+        t = stribeck_torque(W, 0.4, 0.4 * (1 + excess), 2.0, 1.0, 1e-3)
+        f = stribeck(W, t)
+        assert any("no Stribeck drop" in n for n in f.notes) is noted, excess
+    # A curve through standstill (omega = 0, torque 0) fits as well.
+    w0 = np.concatenate([W, [0.0]])
+    f0 = stribeck(w0, stribeck_torque(w0, stribeck_speed=2.0, stribeck_exponent=1.3, **base))
+    assert f0.parameters["stribeck_speed"] == pytest.approx(2.0, rel=1e-6)
+
+
+def test_lugre_damping_rule_with_its_ratio_and_a_refused_inertia() -> None:
+    p = {"coulomb_torque": 0.3, "static_torque": 0.5, "stribeck_speed": 2.0,
+         "stribeck_exponent": 1.0, "viscous_coefficient": 1e-3}  # fmt: skip
+    torque = stribeck_torque(W, **p)
+    f = fit_form("lugre", W, torque, bristle_stiffness=2000.0, inertia=4e-3, damping_ratio=0.7)
+    # sigma_1 = 2 zeta sqrt(sigma_0 J)
+    assert f.parameters["bristle_damping"] == pytest.approx(2 * 0.7 * math.sqrt(2000.0 * 4e-3))
+    for bad in (0.0, -1.0):
+        with pytest.raises(BallScrewInputError, match="inertia"):
+            fit_form("lugre", W, torque, bristle_stiffness=2000.0, inertia=bad)
+    screw = reference_screw()
+    g = fit_form("lugre", W, torque, screw=screw, bristle_damping=1.0)
+    # The note gives the contact stiffness in N/um.
+    note = next(n for n in g.notes if "N/um" in n)
+    shown = float(note.split("contact stiffness ")[1].split(" N/um")[0])
+    assert shown == pytest.approx(nut_axial_stiffness(screw) * 1e-6, rel=1e-3)
