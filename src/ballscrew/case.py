@@ -213,12 +213,18 @@ def parse_case(text: str, *, source: str = "case") -> Case:
                 ("incline", "rad"),
                 ("bearing_bore", "m"),
                 ("bearing_span", "m"),
+                ("bearing_outer_diameter", "m"),
+                ("bearing_static_rating", "N"),
                 ("root_diameter", "m"),
                 ("dn_limit", "mm*rpm"),
             )
             if getattr(data.axis, name) is not None
         }
-        | {"bearing_type": data.axis.bearing_type, "support": data.axis.support},
+        | {
+            "bearing_type": data.axis.bearing_type,
+            "bearing_lubrication": data.axis.bearing_lubrication,
+            "support": data.axis.support,
+        },
         thermal={
             name: si("axis", name, getattr(data.axis, name), unit)
             for name, unit in (

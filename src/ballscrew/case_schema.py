@@ -195,7 +195,28 @@ class AxisSection(BaseModel):
     bearing_type: str = _f(
         "angular-contact ball, single row",
         "-",
-        "support bearing type for SKF's friction coefficient (see ballscrew.bearings)",
+        "support bearing type (see ballscrew.bearings): SKF's coefficient, or Palmgren's "
+        "factors with bearing_outer_diameter, e.g. 'screw-support (ZKLN, ZKLF)'",
+    )
+    bearing_outer_diameter: Value | None = _f(
+        None,
+        "length",
+        "outside diameter of the support bearings: their friction is then Palmgren's, "
+        "rising with speed and viscosity (none: SKF's simplified estimate)",
+        "62 mm",
+    )
+    bearing_static_rating: Value | None = _f(
+        None,
+        "force",
+        "static load rating C0 of the support bearings, from their catalogue (needed with "
+        "bearing_outer_diameter)",
+        "40 kN",
+    )
+    bearing_lubrication: str = _f(
+        "grease",
+        "-",
+        "support bearings' lubrication for Palmgren's f0: 'grease' (or oil mist) or 'oil' "
+        "(bath or recirculating)",
     )
     support: str = _f(
         "fixed-supported",

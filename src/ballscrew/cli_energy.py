@@ -158,6 +158,17 @@ def energy_command(
             f"axis.screw_length = {thermal['screw_length'] * 1e3:.0f} mm (estimated: travel, "
             "nut and 4 diameters; give it for a real heat balance)"
         )
+    if axis.bearing_bore is not None and axis.bearing_outer_diameter is None:
+        assumptions.append(
+            "support bearings: SKF's simplified estimate, load term only (no drag rising with "
+            "speed); give axis.bearing_outer_diameter and bearing_static_rating for Palmgren's"
+        )
+    elif axis.bearing_bore is not None:
+        assumptions.append(
+            f"support bearings: Palmgren's model ({axis.bearing_type}, "
+            f"{axis.bearing_lubrication}), with the lubricant's viscosity at the cycle's "
+            "temperature and without the bearings' own preload"
+        )
     if "machine_resistance" not in thermal:
         assumptions.append("axis.machine_resistance: none (convection only, the warmest case)")
     node = ThermalNode(**thermal)

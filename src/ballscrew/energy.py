@@ -41,7 +41,12 @@ from typing import Any
 
 import numpy as np
 
-from .bearings import simplified_bearing_torque
+from .bearings import (
+    PALMGREN_BEARINGS,
+    SKF_FRICTION_COEFFICIENTS,
+    palmgren_bearing_torque,
+    simplified_bearing_torque,
+)
 from .chain import FrictionResult, friction_torque
 from .errors import (
     BallScrewInputError,
@@ -81,7 +86,20 @@ class Axis:
     bearing_bore : float, optional
         Bore of the fixed-end support bearings [m]; None leaves their friction out.
     bearing_type : str
-        A type of :data:`ballscrew.bearings.SKF_FRICTION_COEFFICIENTS`.
+        A type of :data:`ballscrew.bearings.SKF_FRICTION_COEFFICIENTS` (SKF's
+        simplified estimate) or, with ``bearing_outer_diameter``, of
+        :data:`ballscrew.bearings.PALMGREN_BEARINGS`.
+    bearing_outer_diameter : float, optional
+        Outside diameter of the support bearings [m]; given, their friction is
+        Palmgren's (it rises with speed and viscosity) and needs
+        ``bearing_static_rating``.
+    bearing_static_rating : float, optional
+        Their basic static load rating :math:`C_0` [N], for Palmgren's load term.
+    bearing_lubrication : str
+        "grease" (or oil mist) or "oil" (bath or recirculating), for
+        Palmgren's :math:`f_0`; the lubricant's viscosity is taken at the
+        cycle's temperature (for grease, give the base oil as the lubricant
+        or accept the screw oil's viscosity as an estimate).
     support : str
         End mounting of the screw, a key of
         :data:`ballscrew.limits.SUPPORT_EIGENVALUES`.
@@ -103,6 +121,9 @@ class Axis:
     incline: float = 0.0
     bearing_bore: float | None = None
     bearing_type: str = "angular-contact ball, single row"
+    bearing_outer_diameter: float | None = None
+    bearing_static_rating: float | None = None
+    bearing_lubrication: str = "grease"
     support: str = "fixed-supported"
     bearing_span: float | None = None
     root_diameter: float | None = None
@@ -118,9 +139,31 @@ class Axis:
             raise BallScrewInputError(
                 "support", self.support, f"one of {list(SUPPORT_EIGENVALUES)}"
             )
-        for name in ("bearing_span", "root_diameter"):
+        for name in ("bearing_span", "root_diameter", "bearing_bore", "bearing_outer_diameter"):
             if getattr(self, name) is not None:
                 check_positive(name, getattr(self, name), "m")
+        palmgren = self.bearing_outer_diameter is not None
+        types = PALMGREN_BEARINGS if palmgren else SKF_FRICTION_COEFFICIENTS
+        if self.bearing_type not in types:
+            model = "Palmgren's model" if palmgren else "SKF's simplified estimate"
+            raise BallScrewInputError("bearing_type", self.bearing_type,
+                                      f"one of {list(types)} for {model}")  # fmt: skip
+        if palmgren:
+            if self.bearing_bore is None:
+                raise BallScrewInputError(
+                    "bearing_bore", None, "the bore, given with bearing_outer_diameter"
+                )
+            if self.bearing_static_rating is None:
+                raise BallScrewInputError(
+                    "bearing_static_rating", None,
+                    "the support bearing's C0 from its catalogue, needed with "
+                    "bearing_outer_diameter for Palmgren's load term",
+                )  # fmt: skip
+            check_positive("bearing_static_rating", self.bearing_static_rating, "N")
+        if self.bearing_lubrication not in ("grease", "oil"):
+            raise BallScrewInputError(
+                "bearing_lubrication", self.bearing_lubrication, "'grease' or 'oil'"
+            )
         check_positive("dn_limit", self.dn_limit, "mm*rpm")
 
 
@@ -185,6 +228,26 @@ def screw_motion(
     return omega, alpha, force
 
 
+def _bearing_torque(
+    axis: Axis, lubricant: Lubricant | str, omega: FloatArray, force: FloatArray,
+    temperature: float,
+) -> FloatArray:  # fmt: skip
+    """The support bearings' friction [N·m] at each sample (0 without a bearing bore)."""
+    if axis.bearing_bore is None:
+        return np.zeros_like(omega)
+    if axis.bearing_outer_diameter is None:
+        return simplified_bearing_torque(force, axis.bearing_bore, axis.bearing_type)
+    from . import lubricants
+
+    oil = lubricants.get(lubricant) if isinstance(lubricant, str) else lubricant
+    assert axis.bearing_static_rating is not None  # checked by Axis
+    return palmgren_bearing_torque(
+        omega, force, oil.kinematic_viscosity(temperature), bore=axis.bearing_bore,
+        outer_diameter=axis.bearing_outer_diameter, static_rating=axis.bearing_static_rating,
+        bearing_type=axis.bearing_type, lubrication=axis.bearing_lubrication,
+    )  # fmt: skip
+
+
 def _integral(y: FloatArray, t: FloatArray) -> float:
     """Trapezoidal rule (exact for piecewise-linear samples)."""
     return float(np.sum(0.5 * (y[1:] + y[:-1]) * np.diff(t)))
@@ -230,12 +293,7 @@ def axis_cycle(
     t_f = fr.total
     t_load = force * lead / (2.0 * math.pi)
     t_inertia = (axis.screw_inertia + axis.coupling_inertia) * alpha
-    if axis.bearing_bore is None:
-        t_b = np.zeros_like(t_f)
-    else:
-        t_b = np.broadcast_to(
-            simplified_bearing_torque(force, axis.bearing_bore, axis.bearing_type), t_f.shape
-        )
+    t_b = np.broadcast_to(_bearing_torque(axis, lubricant, omega, force, temperature), t_f.shape)
     t_screw = t_load + np.sign(omega) * (t_f + t_b) + t_inertia
     i = axis.gear_ratio
     t_motor = t_screw / i + axis.motor_inertia * i * alpha
