@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 import warnings
 from pathlib import Path
 
@@ -162,3 +163,110 @@ def test_fit_command_writes_case_report_and_json(
         main(["fit", "--case", str(case), "--measured", str(csv), "--free", "preload",
               "--start", "preload=1500"])  # fmt: skip
     assert info.value.code == 2 and "bare number" in capsys.readouterr().err
+
+
+def _catalog_curve(loads: np.ndarray, noise: np.ndarray) -> MeasuredCurve:
+    w = np.full(loads.size, 100 * np.pi / 30)
+    clean = friction_torque(reference_screw(), OIL, speed=w, temperature=40.0, axial_load=loads,
+                            model="catalog").total  # fmt: skip
+    return MeasuredCurve(w, np.asarray(clean) * (1.0 + noise), "catalog", axial_load=loads)
+
+
+def test_interval_of_a_proportional_model_is_the_textbook_one() -> None:
+    # At no axial load the catalogue torque is K * A (K the preload coefficient): a
+    # one-parameter linear regression through the origin, solved here by hand: K = a.y/a.a,
+    # s^2 = sum r^2/(n-1), se = s/|a|, and the log-space interval exp(ln K +- t_{n-1} se/K)
+    # (Student's t from scipy). Only the solver's tolerance separates the two (1e-6).
+    from scipy.stats import t as student
+
+    rng = np.random.default_rng(5)
+    n = 12
+    curve = _catalog_curve(np.zeros(n), 0.05 * rng.standard_normal(n))
+    r = fit_parameters(reference_screw(), OIL, curve, ["preload_coefficient"], model="catalog")
+    a = friction_torque(reference_screw(), OIL, speed=1.0, temperature=40.0, model="catalog",
+                        preload_coefficient=1.0).total * np.ones(n)  # fmt: skip
+    y = curve.torque
+    k = float(a @ y / (a @ a))
+    s = math.sqrt(float(np.sum((y - k * a) ** 2)) / (n - 1))
+    half = student.ppf(0.975, n - 1) * s / math.sqrt(float(a @ a)) / k
+    e = r.estimates["preload_coefficient"]
+    assert e.value == pytest.approx(k, rel=1e-6)
+    assert e.low == pytest.approx(k * math.exp(-half), rel=1e-6)
+    assert e.high == pytest.approx(k * math.exp(half), rel=1e-6)
+    assert r.rms_residual == pytest.approx(math.sqrt(np.mean((y - k * a) ** 2)), rel=1e-6)
+
+
+@pytest.mark.parametrize("low, warned", [(0.0, False), (2500.0, True)])
+def test_correlation_of_two_linear_terms_as_regression_predicts(low: float, warned: bool) -> None:
+    # Catalogue torque = K * A + F_a * g(mu), nearly linear in mu: the estimates of a
+    # constant and a slope in F_a correlate as -mean(F)/rms(F) (regression through two
+    # columns, 1 and F). Loads 0..3 kN: -0.87, no warning; 2.5..3 kN: -0.998, a warning.
+    loads = np.linspace(low, 3000.0, 16)
+    rng = np.random.default_rng(8)
+    curve = _catalog_curve(loads, 0.002 * rng.standard_normal(loads.size))
+    free = ["preload_coefficient", "friction_coefficient"]
+    r = fit_parameters(reference_screw(), OIL, curve, free, model="catalog")
+    rho = -float(np.mean(loads) / np.sqrt(np.mean(loads**2)))
+    # 2e-2: g(mu) is linear in mu to the first order only (1/eta - 1 with mu ~ 0.003).
+    assert r.correlation[0, 1] == pytest.approx(rho, abs=2e-2)
+    assert any("are correlated" in w for w in r.warnings) is warned
+
+
+def test_defaults_temperature_and_load_when_the_file_has_none() -> None:
+    # Documented defaults of fit_parameters: 20 °C and no axial load.
+    w, t, torque = _truth()
+    keep = t == 20.0
+    bare = MeasuredCurve(w[keep], torque[keep], "no columns")
+    r = fit_parameters(reference_screw(), OIL, bare, ["preload"])
+    assert r.temperature.tolist() == [20.0] * int(keep.sum())
+    assert r.axial_load.tolist() == [0.0] * int(keep.sum())
+
+
+def test_every_parameter_unidentified_leaves_the_start_and_its_residual() -> None:
+    # Only the hysteresis factor free, under 5 % noise: held at its start, and the
+    # residual reported is that of the start values, computed here directly.
+    w, t, torque = _truth()
+    rng = np.random.default_rng(11)
+    noisy = torque * (1.0 + 0.05 * rng.standard_normal(torque.size))
+    r = fit_parameters(reference_screw().replace(preload=TRUE_PRELOAD), OIL,
+                       MeasuredCurve(w, noisy, "s", temperature=t), ["hysteresis_loss_factor"],
+                       parameters={"ball_train_constant": TRUE_CB})  # fmt: skip
+    assert not r.estimates["hysteresis_loss_factor"].identified
+    assert r.rms_residual == pytest.approx(math.sqrt(np.mean((torque - noisy) ** 2)), rel=1e-9)
+
+
+def test_identifiability_thresholds() -> None:
+    # A log parameter is unidentified when its 95 % interval (+-1.96 sd) spans more than a
+    # factor 100 (half-width ln(100)/2 = 2.303); a linear one when it spans its whole range.
+    from ballscrew.calibration import FITTABLE, _unidentified
+
+    log_p, lin_p = FITTABLE["preload"], FITTABLE["seal_torque"]
+    assert not _unidentified(log_p, 2.30 / 1.96, 10) and _unidentified(log_p, 2.31 / 1.96, 10)
+    span = lin_p.high - lin_p.low
+    assert not _unidentified(lin_p, 0.99 * span / 3.92, 10)
+    assert _unidentified(lin_p, 1.01 * span / 3.92, 10)
+    assert _unidentified(lin_p, math.inf, 10)
+
+
+def test_an_unseen_parameter_does_not_take_a_seen_one_down_with_it() -> None:
+    # Hysteresis is invisible under 5 % noise; the ball-train constant is not. Held one at a
+    # time, the second is still fitted, with its interval around the truth.
+    w, t, torque = _truth()
+    rng = np.random.default_rng(11)
+    noisy = torque * (1.0 + 0.05 * rng.standard_normal(torque.size))
+    r = fit_parameters(reference_screw().replace(preload=TRUE_PRELOAD), OIL,
+                       MeasuredCurve(w, noisy, "s", temperature=t),
+                       ["hysteresis_loss_factor", "ball_train_constant"])  # fmt: skip
+    assert not r.estimates["hysteresis_loss_factor"].identified
+    cb = r.estimates["ball_train_constant"]
+    assert cb.identified and cb.low is not None and cb.high is not None
+    assert cb.low <= TRUE_CB <= cb.high
+
+
+def test_json_outlier_rows_count_from_one_like_the_warning() -> None:
+    _, _, torque = _truth()
+    spoiled = torque.copy()
+    spoiled[[2, 9]] *= 3.0
+    r = _fit(spoiled)
+    assert r.as_dict()["outlier_rows"] == [3, 10]
+    assert any("rows 3, 10" in w for w in r.warnings)

@@ -155,7 +155,8 @@ class FitResult:
             "parameters": {k: e.as_dict() for k, e in self.estimates.items()},
             "rms_residual_Nm": self.rms_residual,
             "points": int(self.measured.size),
-            "outliers": list(self.outliers),
+            # Rows of the measured file, counted from 1 as the warning and the CSV do.
+            "outlier_rows": [i + 1 for i in self.outliers],
             "correlation": {
                 "names": list(self.correlation_names),
                 "matrix": self.correlation.tolist(),
@@ -288,6 +289,10 @@ def fit_parameters(
         loose = [s for s, sd in zip(active, sigma, strict=True) if _unidentified(s, sd, resid.size)]
         if not loose:
             break
+        # One at a time, the worst first: a direction the data cannot see often
+        # leans on a parameter they can, which is identified once the other is held.
+        width = {s.name: sd / _allowed_sd(s) for s, sd in zip(active, sigma, strict=True)}
+        loose = [max(loose, key=lambda s: width[s.name])]
         for s in loose:
             held[s.name] = starts[s.name]
             notes.append(
@@ -441,13 +446,19 @@ def _covariance(jac: FloatArray, resid: FloatArray, p: int) -> tuple[FloatArray,
     return sigma, corr
 
 
-def _unidentified(spec: FreeParameter, sd: float, n: int) -> bool:
-    if not math.isfinite(sd):
-        return True
-    half = 1.96 * sd
+def _allowed_sd(spec: FreeParameter) -> float:
+    """Largest standard deviation of an identified parameter (transformed space).
+
+    Beyond it the 95 % interval (±1.96 sd) spans more than a factor 100 (log
+    parameters) or the whole allowed range (others).
+    """
     if spec.log:
-        return half > math.log(100.0) / 2
-    return 2 * half > spec.high - spec.low
+        return math.log(100.0) / 2 / 1.96
+    return (spec.high - spec.low) / 2 / 1.96
+
+
+def _unidentified(spec: FreeParameter, sd: float, n: int) -> bool:
+    return not math.isfinite(sd) or sd > _allowed_sd(spec)
 
 
 def _t_quantile(dof: int) -> float:
@@ -474,7 +485,8 @@ def fitted_case_toml(case_text: str, result: FitResult, *, note: str = "") -> st
         if not e.identified:
             continue
         spec = FITTABLE[name]
-        span = f"95 % interval {e.low:.4g} to {e.high:.4g} {spec.unit}" if e.low is not None else ""
+        unit = "" if spec.unit == "-" else f" {spec.unit}"
+        span = f"95 % interval {e.low:.4g} to {e.high:.4g}{unit}" if e.low is not None else ""
         comment = f"fitted by ballscrew fit ({result.model}); {span}{note}"
         if spec.where == "screw":
             screw = doc["screw"]
