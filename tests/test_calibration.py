@@ -270,3 +270,18 @@ def test_json_outlier_rows_count_from_one_like_the_warning() -> None:
     r = _fit(spoiled)
     assert r.as_dict()["outlier_rows"] == [3, 10]
     assert any("rows 3, 10" in w for w in r.warnings)
+
+
+@pytest.mark.parametrize("k, flagged", [(3.8, False), (4.2, True)])
+def test_outlier_threshold_is_four_robust_standard_deviations(k: float, flagged: bool) -> None:
+    # Additive readings +-e in turn: the residuals are +-e, so the median absolute deviation
+    # is e and the robust standard deviation 1.4826 e (the normal distribution's
+    # 1/Phi^-1(3/4)). One reading k robust deviations off is an outlier past k = 4 only;
+    # 3.8 and 4.2 stay 5 % clear of the line; the fit moves the residuals by far less.
+    _, _, torque = _truth()
+    e = 0.01
+    signs = np.where(np.arange(torque.size) % 2 == 0, 1.0, -1.0)
+    data = torque + e * signs
+    data[7] = torque[7] + k * 1.4826 * e * signs[7]
+    r = _fit(data)
+    assert (r.outliers == (7,)) is flagged, r.outliers
