@@ -285,3 +285,21 @@ def test_outlier_threshold_is_four_robust_standard_deviations(k: float, flagged:
     data[7] = torque[7] + k * 1.4826 * e * signs[7]
     r = _fit(data)
     assert (r.outliers == (7,)) is flagged, r.outliers
+
+
+def test_of_two_unseen_directions_the_least_sensitive_parameter_is_held() -> None:
+    # One temperature: preload and c_B are nearly collinear and hysteresis is invisible, so
+    # the first round sees two unbounded directions. Holding the parameter the torque is
+    # least sensitive to (hysteresis) leaves preload and c_B fitted, as without it.
+    w, t, torque = _truth()
+    keep = t == 20.0
+    rng = np.random.default_rng(2)
+    data = torque[keep] * (1.0 + 0.03 * rng.standard_normal(int(keep.sum())))
+    curve = MeasuredCurve(w[keep], data, "one temperature", temperature=t[keep])
+    both = fit_parameters(reference_screw(), OIL, curve, ["preload", "ball_train_constant"])
+    three = fit_parameters(reference_screw(), OIL, curve,
+                           ["preload", "ball_train_constant", "hysteresis_loss_factor"])  # fmt: skip
+    assert not three.estimates["hysteresis_loss_factor"].identified
+    for name in ("preload", "ball_train_constant"):
+        assert three.estimates[name].identified
+        assert three.estimates[name].value == pytest.approx(both.estimates[name].value, rel=1e-3)

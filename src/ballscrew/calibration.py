@@ -291,7 +291,12 @@ def fit_parameters(
             break
         # One at a time, the worst first: a direction the data cannot see often
         # leans on a parameter they can, which is identified once the other is held.
-        width = {s.name: sd / _allowed_sd(s) for s, sd in zip(active, sigma, strict=True)}
+        # Ties (several unseen) go to the parameter the torque is least sensitive to.
+        norms = np.linalg.norm(jac, axis=0)
+        width = {
+            s.name: (sd / _allowed_sd(s), -norm)
+            for s, sd, norm in zip(active, sigma, norms, strict=True)
+        }
         loose = [max(loose, key=lambda s: width[s.name])]
         for s in loose:
             held[s.name] = starts[s.name]
