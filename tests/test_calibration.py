@@ -297,8 +297,8 @@ def test_of_two_unseen_directions_the_least_sensitive_parameter_is_held() -> Non
     data = torque[keep] * (1.0 + 0.03 * rng.standard_normal(int(keep.sum())))
     curve = MeasuredCurve(w[keep], data, "one temperature", temperature=t[keep])
     both = fit_parameters(reference_screw(), OIL, curve, ["preload", "ball_train_constant"])
-    three = fit_parameters(reference_screw(), OIL, curve,
-                           ["preload", "ball_train_constant", "hysteresis_loss_factor"])  # fmt: skip
+    free = ["preload", "ball_train_constant", "hysteresis_loss_factor"]
+    three = fit_parameters(reference_screw(), OIL, curve, free)
     assert not three.estimates["hysteresis_loss_factor"].identified
     for name in ("preload", "ball_train_constant"):
         assert three.estimates[name].identified

@@ -14,7 +14,7 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
 DOCS = sorted((ROOT / "docs").glob("*.md"))
-PHRASES = ("shared/reference", "research notes", "../shared")
+PHRASES = ("shared/reference", "shared/seed", "research notes", "../shared")
 
 # A dotted name such as ``ballscrew.ehl.hamrock_dowson_1977_minimum``.
 DOTTED = re.compile(r"\bballscrew(?:\.[A-Za-z_][A-Za-z0-9_]*)+")
@@ -112,3 +112,16 @@ def test_models_page_scorecard_and_constant_match_the_package() -> None:
         line = "| " + " | ".join(row) + " |"
         assert line in text, f"models.md scorecard lacks or misstates: {line}"
     assert f"= {BALL_TRAIN_CONSTANT}" in text
+
+
+def test_no_control_characters_in_sources_and_docs() -> None:
+    # A non-raw docstring once turned \alpha, \frac and \nu into BEL, form feed and a
+    # newline; ruff's invalid-character rules do not cover BEL or form feed.
+    import re
+
+    files = [*sorted((ROOT / "src" / "ballscrew").rglob("*.py")), *sorted(ROOT.glob("docs/*.md"))]
+    files += [ROOT / "README.md", *sorted((ROOT / "tests").glob("*.py"))]
+    bad = re.compile(r"[\x00-\x08\x0b-\x1f\x7f]")
+    for path in files:
+        text = path.read_text("utf-8")
+        assert not bad.search(text), f"{path.relative_to(ROOT)} holds a control character"

@@ -203,7 +203,8 @@ def test_energy_report_files_are_complete_and_reproducible(
         out = tmp_path / f"r{k}"  # type: ignore[operator]
         with pytest.raises(SystemExit) as info:
             move = "stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2"
-            main(["energy", "--case", str(case), "--move", move, "--out", str(out)])
+            main(["energy", "--case", str(case), "--move", move, "--out", str(out),
+                  "--steady-speeds", "1000, 2000 rpm"])  # fmt: skip
         assert info.value.code == 0
         files = sorted(p.relative_to(out) for p in out.rglob("*") if p.is_file())
         outputs.append({f: (out / f).read_bytes() for f in files})
@@ -217,6 +218,11 @@ def test_energy_report_files_are_complete_and_reproducible(
 
     for link in re.findall(r"\]\(([^)]+)\)", report):
         assert link in names, link
+    # The steady table has its own CSV; no Python repr of it leaks into the report.
+    steady = outputs[0][Path("data/steady.csv")].decode().splitlines()
+    assert steady[0] == "model,speed [rpm],steady temperature [degC],torque [N*m],power [W]"
+    assert len(steady) == 3
+    assert "{" not in report and "{" not in outputs[0][Path("data/summary.csv")].decode()
 
 
 def test_energy_json_has_the_documented_keys_and_states_its_assumptions(

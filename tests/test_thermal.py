@@ -107,3 +107,18 @@ def test_steady_at_one_speed_is_the_cycle_steady_state_of_constant_running() -> 
     # Two solvers (scalar bisection over the cycle's mean power, vectorised
     # bisection over the torque) of the same balance.
     assert float(at.temperature[0]) == pytest.approx(cyc.temperature, abs=1e-6)
+
+
+def test_rotating_cylinder_correlation_warns_past_its_reynolds_range() -> None:
+    # Re = omega d^2 / nu: a 100 mm screw at 7000 rpm reaches 4.6e5, past Kreith's 4.3e5;
+    # a 40 mm screw at 3000 rpm (3.2e4) stays inside.
+    import warnings as w
+
+    from ballscrew.errors import BallScrewValidityWarning
+    from ballscrew.thermal import convection_coefficient
+
+    with pytest.warns(BallScrewValidityWarning, match="Reynolds number 4.6"):
+        convection_coefficient(0.1, 7000 * math.pi / 30, 40.0, 20.0)
+    with w.catch_warnings():
+        w.simplefilter("error")
+        convection_coefficient(0.04, 3000 * math.pi / 30, 40.0, 20.0)

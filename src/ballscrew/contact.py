@@ -84,7 +84,7 @@ __all__ = [
 ]
 
 ArrayLike = npt.ArrayLike
-HertzMethod = Literal["exact", "houpert", "hamrock_brewe"]
+HertzMethod = Literal["exact", "houpert", "hamrock_brewe", "brewe_hamrock"]
 
 
 def reduced_modulus(e1: ArrayLike, nu1: ArrayLike, e2: ArrayLike, nu2: ArrayLike) -> FloatArray:
@@ -404,8 +404,7 @@ def hertz_hamrock_brewe_1983(
 
     Notes
     -----
-    Error against the exact solution: module docstring (at most 3.8 % in the
-    ellipticity, under 1.5 % in the semi-axes for ellipticities 1 to 15).
+    Error against the exact solution: the table in the module docstring.
 
     Examples
     --------

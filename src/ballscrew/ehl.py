@@ -17,8 +17,9 @@ oils ([1]_, and Part II of the series for the range of :math:`k`); the
 speed, load and materials parameters of those runs spanned roughly
 :math:`U \approx 10^{-12}` to :math:`10^{-11}`, :math:`W \approx 4\cdot10^{-7}`
 to :math:`10^{-5}` and :math:`G \approx 2500` to 5000 (approximate spans,
-not yet checked against the paper's tables; the warnings of
-:mod:`ballscrew.validity` use them). Ball screws
+not yet checked against the paper's tables; :mod:`ballscrew.validity` warns
+outside :math:`U` 1.7e-12 to 1.7e-11 and :math:`W` 3.7e-7 to 1.1e-5, and does
+not check :math:`G`). Ball screws
 at high speed reach :math:`U \approx 10^{-10}` and are extrapolated.
 Optical measurements on steel against sapphire found films on average 30 %
 thicker than the minimum-film formula predicts (Koye & Winer [3]_).

@@ -17,6 +17,7 @@ import csv
 import io
 from collections.abc import Mapping, Sequence
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
@@ -160,7 +161,20 @@ def write_energy_report(
             [[n, f"{float(t):.7g}", f"{float(v):.7g}"]
              for n, (ts, vs) in history.items() for t, v in zip(ts, vs, strict=True)],
         )  # fmt: skip
-    keys = sorted({k for v in summary.values() for k in v if k != "warnings"})
+    steady: dict[str, Any] = {
+        n: v["steady_at_speed"] for n, v in summary.items() if "steady_at_speed" in v
+    }
+    if steady:
+        data["steady"] = _csv(
+            ["model", "speed [rpm]", "steady temperature [degC]", "torque [N*m]", "power [W]"],
+            [[n, *(f"{float(x):.7g}" for x in row)]
+             for n, st in steady.items()
+             for row in zip(st["speed_rpm"], st["temperature_C"], st["torque_Nm"],
+                            st["power_W"], strict=True)],
+        )  # fmt: skip
+    # Scalars only in the summary table; the tables of each model have their own CSV.
+    keys = sorted({k for v in summary.values() for k in v
+                   if not isinstance(v[k], dict | list | tuple)})  # fmt: skip
     data["summary"] = _csv(["model", *keys], [[n, *(v.get(k, "") for k in keys)]
                                                for n, v in summary.items()])  # fmt: skip
     for key, content in data.items():

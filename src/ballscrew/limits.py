@@ -25,7 +25,8 @@ e\cos\alpha)` (:math:`d_m - d_b` for a groove that fits the ball). Give the
 catalogue's root diameter where you have it.
 
 **d·n.** The ball return limits the ball speed; catalogues state it as the
-product of the nominal diameter [mm] and the speed [rpm]. Typical limits:
+product of the nominal diameter [mm] and the speed [rpm]; here the ball
+centre (pitch) diameter stands for it, the nearest the geometry holds. Typical limits:
 about 70 000–76 000 for standard external returns and 130 000–160 000 for
 internal deflectors and high-speed nuts (the screw's catalogue has its own).
 """

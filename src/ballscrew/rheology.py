@@ -10,7 +10,7 @@ References
 ----------
 .. [1] S. Bair, W. O. Winer, "A rheological model for elastohydrodynamic
    contacts based on primary laboratory data", J. Lubr. Technol. 101 (1979)
-   258-264, doi:10.1115/1.3453339.
+   258-264.
 .. [2] A. A. Elsharkawy, B. J. Hamrock, "Subsurface stresses in micro-EHL
    line contacts", J. Tribol. 113 (1991) 645-655, doi:10.1115/1.2920673.
 .. [3] H. Eyring, "Viscosity, plasticity, and diffusion as examples of

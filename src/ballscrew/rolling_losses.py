@@ -9,7 +9,7 @@ mechanism                       function
 =============================== ===================================================
 EHL rolling resistance          :func:`rolling_force_houpert` (Houpert 2002), capped at
                                 speed by :func:`inlet_shear_heating_factor` and
-                                :func:`replenishment_factor` (SKF 2018)
+                                :func:`replenishment_factor` (SKF 2012)
 spin and differential sliding   :func:`spin_sliding_integral` (Hertz pressure times
                                 the sliding speed, over the contact ellipse) with the
                                 mixed-film coefficient :func:`mixed_friction_coefficient`
@@ -225,7 +225,7 @@ def limiting_traction_coefficient(
     ----------
     .. [1] S. Bair, W. O. Winer, "A rheological model for elastohydrodynamic
        contacts based on primary laboratory data", J. Lubr. Technol. 101
-       (1979) 258-264, doi:10.1115/1.3453342.
+       (1979) 258-264.
     .. [2] SKF, *Rolling bearings*, catalogue 10000 EN, 2012, p. 105 (sliding
        friction coefficient: :math:`\mu_{EHL}` 0.05 mineral, 0.04 synthetic oil).
 

@@ -35,7 +35,7 @@ import numpy.typing as npt
 
 from .chain import friction_torque
 from .energy import Axis, screw_motion
-from .errors import BallScrewInputError, FloatArray, check_positive
+from .errors import BallScrewInputError, BallScrewValidityWarning, FloatArray, check_positive
 from .geometry import BallScrew
 from .lubricant import Lubricant
 from .motion import Profile
@@ -55,7 +55,14 @@ AIR = {"conductivity": 0.0263, "kinematic_viscosity": 1.589e-5, "prandtl": 0.707
 """Air at 300 K and 1 bar: k [W/(m·K)], nu [m²/s], Pr [-] (Incropera, Table A.4)."""
 
 STEEL_DENSITY = 7850.0
+"""Density of the screw and nut steel [kg/m³] (a typical handbook value for carbon
+and low-alloy steels; an assumption of the heat capacity)."""
+
 STEEL_HEAT_CAPACITY = 460.0
+"""Specific heat capacity of that steel [J/(kg·K)] (typical handbook value; an assumption)."""
+
+KREITH_REYNOLDS_LIMIT = 4.3e5
+"""Largest rotational Reynolds number of Kreith's rotating-cylinder correlation [-]."""
 
 
 @dataclass(frozen=True)
@@ -125,6 +132,14 @@ def convection_coefficient(
     d = float(check_positive("diameter", diameter, "m"))
     k, nu, pr = AIR["conductivity"], AIR["kinematic_viscosity"], AIR["prandtl"]
     re = np.abs(np.asarray(speed, dtype=float)) * d**2 / nu
+    if re.size and float(np.max(re)) > KREITH_REYNOLDS_LIMIT:
+        warnings.warn(
+            f"rotational Reynolds number {float(np.max(re)):.3g} of the screw is above "
+            f"{KREITH_REYNOLDS_LIMIT:g}, the range of Kreith's rotating-cylinder correlation: "
+            "the convection coefficient is extrapolated",
+            BallScrewValidityWarning,
+            stacklevel=2,
+        )
     forced = 0.133 * re ** (2 / 3) * pr ** (1 / 3) * k / d
     surf = np.asarray(surface, dtype=float)
     dt = np.maximum(np.abs(surf - ambient), 1e-9)

@@ -6,16 +6,14 @@ with its source and the band a prediction should fall in:
 ``catalog``
     The manufacturers' preload drag torque :math:`T_p = 0.05/\sqrt{\tan\beta}
     \cdot F_{pr}l/2\pi` at their test conditions (100 rpm, ISO VG 68, no
-    wiper) over a grid of typical catalogue screws (nominal diameters 12 to
-    63 mm, leads 4 to 40 mm, preloads 2, 5 and 10 % of the dynamic load
-    rating, double nuts and 4-point single nuts), with the ±30 % band that
+    wiper) over the 20 HIWIN ground nuts of the bundled catalogue table
+    (nominal diameters 14 to 63 mm, leads 5 to 40 mm; preloads 2, 5 and 10 %
+    of the dynamic load rating, double nuts and 4-point single nuts), with the ±30 % band that
     the precision grades allow for the drag torque itself.
 ``jungnickel``
     Jungnickel's empirical loss law, fitted to measured losses of machine-tool
     ball screws, at 1000 and 3000 rpm for the double nuts of the grid, with a
     band of a factor 1.5 either way.
-``worked-example``
-    A manufacturer's worked example of the drag torque formula.
 
 Trends are checked on the project's reference screw
 (:func:`ballscrew.reference_screw`) and scored as rows of their own: the
@@ -178,70 +176,61 @@ def jungnickel_loss_torque(
 ) -> FloatArray:
     r"""Jungnickel's empirical loss torque of a preloaded ball screw [N·m].
 
-        Jungnickel [1]_ fitted the losses he measured on machine-tool ball screws
-        with a law built on the EHL rolling resistance of the balls (his
-        eq. 9.49). Per set of :math:`Z` balls that carries the preload (one
-        half-nut of a double nut, or a 4-point single nut), with
-        :math:`\lambda` the lead angle, :math:`Q = F_{pr}/(Z\sinlpha\cos\lambda)`,
-        :math:`W = Q/(E'r_b^2)`, :math:`r_b = D_w/2`, :math:`G = lpha_p E'`,
-        :math:`lpha_p = 1.29\cdot10^{-7}
-    u_{40}^{0.204}` (:math:`
-    u_{40}` in
-        m²/s) and the Vogel-Cameron viscosity
-        :math:`
-    u = A\exp(B/(T + 95))` through :math:`
-    u_{20}` and
-        :math:`
-    u_{40}`:
+    Jungnickel [1]_ fitted the losses he measured on machine-tool ball screws
+    with a law built on the EHL rolling resistance of the balls (his eq. 9.49).
+    Per set of :math:`Z` balls that carries the preload (one half-nut of a
+    double nut, or a 4-point single nut), with :math:`\lambda` the lead angle,
+    :math:`Q = F_{pr}/(Z\sin\alpha\cos\lambda)`, :math:`W = Q/(E'r_b^2)`,
+    :math:`r_b = D_w/2`, :math:`G = \alpha_p E'`,
+    :math:`\alpha_p = 1.29\cdot10^{-7}\nu_{40}^{0.204}` (:math:`\nu_{40}` in
+    mm²/s) and the Vogel-Cameron viscosity :math:`\nu = A\exp(B/(T + 95))`
+    through :math:`\nu_{20}` and :math:`\nu_{40}`:
 
-        .. math::
-            T = 9.16\,Z\,Q\,rac{d_m}{2\cos\lambda}\,G^{-0.2}W^{-c}
-                \left(rac{
-    ho_{40}\,
-    u(T)\,\omega\,d_m}{2E'D_w\cos\lambda}
-    ight)^{k}
+    .. math::
+        T = 9.16\,Z\,Q\,\frac{d_m}{2\cos\lambda}\,G^{-0.2}W^{-c}
+            \left(\frac{\rho_{40}\,\nu(T)\,\omega\,d_m}{2E'D_w\cos\lambda}\right)^{k}
 
-        with :math:`k = 0.512`, :math:`c = 0.516` for 2-point (double nut)
-        contact and :math:`k = 0.4936`, :math:`c = 0.5` for 4-point single nuts,
-        :math:`E' = 2.31\cdot10^{11}` Pa. The torque grows as
-        :math:`(\eta\omega)^{0.5}` and has no speed-independent part. It is a
-        loss per loaded ball, so a double nut, whose two halves each carry the
-        preload with their own balls, loses twice what one half does; this is how
-        it is applied here (Jungnickel's own convention for double nuts is not
-        given in the public implementation, so the double-nut values are
-        uncertain by up to that factor 2). Wiper losses (a factor 2 in that
-        implementation when the nut is sealed) are left out, as in the catalogue
-        drag torques. The law as coded in the open-source Thermca package
-        (``thermca/lib/ball_screw.py``, ``cont_loss``) was read to check the
-        constants; this is an independent implementation.
+    with :math:`k = 0.512`, :math:`c = 0.516` for 2-point (double nut)
+    contact and :math:`k = 0.4936`, :math:`c = 0.5` for 4-point single nuts,
+    :math:`E' = 2.31\cdot10^{11}` Pa. The torque grows as
+    :math:`(\eta\omega)^{0.5}` and has no speed-independent part. It is a
+    loss per loaded ball, so a double nut, whose two halves each carry the
+    preload with their own balls, loses twice what one half does; this is how
+    it is applied here (Jungnickel's own convention for double nuts is not
+    given in the public implementation, so the double-nut values are
+    uncertain by up to that factor 2). Wiper losses (a factor 2 in that
+    implementation when the nut is sealed) are left out, as in the catalogue
+    drag torques. The law as coded in the open-source Thermca package
+    (``thermca/lib/ball_screw.py``, ``cont_loss``) was read to check the
+    constants; this is an independent implementation.
 
     Parameters
     ----------
-        screw : BallScrew
-            ``nut`` "double" or "single-4point"; ``loaded_turns * circuits`` per
-            (half-)nut.
-        lubricant : Lubricant
-            Its viscosities at 20 and 40 °C and density at 40 °C are used.
-        speed : array_like
-            Screw speed [rad/s].
-        temperature : array_like
-            [°C].
+    screw : BallScrew
+        ``nut`` "double" or "single-4point"; ``loaded_turns * circuits`` per
+        (half-)nut.
+    lubricant : Lubricant
+        Its viscosities at 20 and 40 °C and density at 40 °C are used.
+    speed : array_like
+        Screw speed [rad/s].
+    temperature : array_like
+        [°C].
 
     References
     ----------
-        .. [1] T. Jungnickel, *Thermisches Verhalten von Kugelgewindetrieben*
-           (thermal behaviour of ball screw drives), doctoral thesis, TU Dresden,
-           2010, eq. 9.49.
+    .. [1] T. Jungnickel, *Thermisches Verhalten von Kugelgewindetrieben*
+       (thermal behaviour of ball screw drives), doctoral thesis, TU Dresden,
+       2010, eq. 9.49.
 
     Examples
     --------
-        The reference screw (40 x 10 mm, 6.35 mm balls, 2 x 2.5 turns per half,
-        2 kN) with mineral ISO VG 68 at 40 °C, 1000 rpm, both halves:
+    The reference screw (40 x 10 mm, 6.35 mm balls, 2 x 2.5 turns per half,
+    2 kN) with mineral ISO VG 68 at 40 °C, 1000 rpm, both halves:
 
-        >>> from ballscrew import lubricants
-        >>> round(float(jungnickel_loss_torque(reference_screw(),
-        ...     lubricants.get("mineral ISO VG 68"), 104.72, 40.0)), 3)
-        0.467
+    >>> from ballscrew import lubricants
+    >>> round(float(jungnickel_loss_torque(reference_screw(),
+    ...     lubricants.get("mineral ISO VG 68"), 104.72, 40.0)), 3)
+    0.467
     """
     e = JUNGNICKEL_MODULUS
     dm, dw = screw.pitch_diameter, screw.ball_diameter

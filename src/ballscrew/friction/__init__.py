@@ -3,7 +3,12 @@
 ========================= ==============================================
 name                      module
 ========================= ==============================================
+``"complete"``            :mod:`ballscrew.friction.complete`
 ``"catalog"``             :mod:`ballscrew.friction.catalog`
+``"harris-simplified"``   :mod:`ballscrew.friction.harris_simplified`
+``"olaru"``               :mod:`ballscrew.friction.olaru`
+``"viscoelastic"``        :mod:`ballscrew.friction.viscoelastic`
+``"harris-full"``         :mod:`ballscrew.friction.harris_full`
 ========================= ==============================================
 """
 

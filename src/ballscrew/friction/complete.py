@@ -73,8 +73,9 @@ BALL_TRAIN_CONSTANT: float = 0.0474
 r"""Ball-train force over the ball load, :math:`c_B = F_B/Q` [-].
 
 Fitted once (``scripts/fit_ball_train.py``) on the training cases of
-:mod:`ballscrew.validation`; its value, training set and scatter are listed in
-the model's documentation and in ``ballscrew models``.
+:mod:`ballscrew.validation`; its training set (10 double nuts at 5 % of their load
+rating) and scatter (the value matching each training case alone spreads over
+0.030 to 0.072, 16 to 84 %) are in the README and ``docs/models.md``.
 """
 
 HYSTERESIS_LOSS_FACTOR: float = 0.007
@@ -83,7 +84,7 @@ r"""Hysteresis loss factor :math:`\alpha_h` of hardened bearing steel [-].
 Johnson (Contact Mechanics, 1985, §9.2) puts the loss factor of hard metals at
 1 % or less; 0.7 % is the value commonly quoted for 52100 steel after
 Drutowski's rolling-ball measurements (J. Basic Eng. 81 (1959) 233), which
-could not be checked in the original. The term is 0.5 % of the reference
+could not be checked in the original. The term is 0.4 % of the reference
 screw's torque, so the choice hardly matters.
 """
 

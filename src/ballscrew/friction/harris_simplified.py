@@ -59,7 +59,7 @@ against 0.56 N·m from the catalogue formula.
 References
 ----------
 .. [1] J. Sušeň, "A Study on the Ball Screw Friction Torque", CTU Prague,
-   eqs. (5)-(8) (``shared/seed/ball-screw-friction-study.md``).
+   eqs. (5)-(8).
 .. [2] T. A. Harris, M. N. Kotzalas, *Advanced Concepts of Bearing
    Technology*, 5th ed., CRC Press, 2007, ch. 4-5.
 .. [3] H. L. Heathcote, "The ball bearing: in the making, under test and on
