@@ -47,7 +47,7 @@ moving_mass = "200 kg"
 CASE = tomllib.loads(CASE_TOML)
 
 
-@pytest.fixture
+@pytest.fixture(scope="module")
 def client() -> Iterator[TestClient]:
     with TestClient(create_app(allowed_hosts=["testserver"])) as c:
         yield c

@@ -26,11 +26,12 @@ server's log only.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import logging
 import threading
 import warnings
-from collections.abc import Awaitable, Callable
+from collections.abc import AsyncIterator, Awaitable, Callable
 from importlib import resources
 from typing import Any
 
@@ -209,9 +210,20 @@ def create_app(limits: Limits = LIMITS, allowed_hosts: list[str] | None = None) 
             return JSONResponse({"error": text}, status_code=500)
         return HTMLResponse(_message_page(text), status_code=500)
 
+    @contextlib.asynccontextmanager
+    async def lifespan(app: Starlette) -> AsyncIterator[None]:
+        # The first computation loads and compiles what the models need (about
+        # 0.7 s); done here, before the first visitor, the page opens at full speed.
+        try:
+            await compute(service.evaluate, service.WARM_UP, limits)
+        except Exception:  # the server still starts, and answers what it can
+            LOG.exception("warm-up computation failed")
+        yield
+
     hosts = list(allowed_hosts) if allowed_hosts is not None else list(LOOPBACK_HOSTS)
     return Starlette(
         debug=False,
+        lifespan=lifespan,
         routes=[
             Route("/", index, methods=["GET"]),
             Route("/static/{name}", static_file, methods=["GET"]),

@@ -81,6 +81,18 @@ class Limits:
 
 LIMITS = Limits()
 
+WARM_UP: dict[str, Any] = {
+    "case": {
+        "screw": {"designation": "40x10 double 2.5x2 6.35", "preload": "2 kN"},
+        "lubricant": {"name": "PAO ISO VG 68"},
+        "operation": {"speed": "10..3000:50 rpm", "temperature": "40 degC", "axial_load": "1 kN"},
+        "axis": {"moving_mass": "200 kg"},
+    },
+    "models": ["complete"],
+    "move": {"stroke": "300 mm", "feed": "15 m/min", "acceleration": "2 m/s**2"},
+}
+"""A request like the page's first, run once when the server starts."""
+
 
 class ApiError(Exception):
     """A request refused: HTTP status and a one-line message (and the field, when one is at fault).
@@ -210,6 +222,17 @@ def _operating_points(
     return arrays["speed"], arrays["temperature"], arrays["axial_load"]
 
 
+def _finite(data: Any) -> Any:
+    """``data`` with every non-finite number as None (JSON null): strict JSON has no NaN."""
+    if isinstance(data, float) and not math.isfinite(data):
+        return None
+    if isinstance(data, dict):
+        return {k: _finite(v) for k, v in data.items()}
+    if isinstance(data, list | tuple):
+        return [_finite(v) for v in data]
+    return data
+
+
 def _floats(values: Any) -> list[float | None]:
     """Numbers for JSON: non-finite ones as null."""
     return [float(v) if math.isfinite(v) else None for v in np.ravel(values).tolist()]
@@ -301,23 +324,26 @@ def _energy(case: Case, move: Mapping[str, Any], limits: Limits) -> dict[str, An
             profile, case.screw, case.lubricant, Axis(**case.axis), temperature=temperature,
             model="complete", **params,
         )  # fmt: skip
-    return {
-        "move": text,
-        "temperature_C": temperature,
-        "duration_s": profile.duration,
-        "friction_energy_J": r.friction_energy,
-        "friction_energy_out_J": r.friction_energy_out,
-        "friction_energy_back_J": r.friction_energy_back,
-        "constant_efficiency_energy_J": r.constant_efficiency_energy,
-        "bearing_energy_J": r.bearing_energy,
-        "load_work_J": r.load_work,
-        "peak_motor_torque_Nm": r.peak_motor_torque,
-        "rms_motor_torque_Nm": r.rms_motor_torque,
-        "forward_efficiency": r.forward_efficiency,
-        "reverse_efficiency": r.reverse_efficiency,
-        "warnings": list(r.speed_warnings),
-        "command": f'ballscrew energy --case case.toml --move "{text}"',
-    }
+    result: dict[str, Any] = _finite(
+        {
+            "move": text,
+            "temperature_C": temperature,
+            "duration_s": profile.duration,
+            "friction_energy_J": r.friction_energy,
+            "friction_energy_out_J": r.friction_energy_out,
+            "friction_energy_back_J": r.friction_energy_back,
+            "constant_efficiency_energy_J": r.constant_efficiency_energy,
+            "bearing_energy_J": r.bearing_energy,
+            "load_work_J": r.load_work,
+            "peak_motor_torque_Nm": r.peak_motor_torque,
+            "rms_motor_torque_Nm": r.rms_motor_torque,
+            "forward_efficiency": r.forward_efficiency,
+            "reverse_efficiency": r.reverse_efficiency,
+            "warnings": list(r.speed_warnings),
+            "command": f'ballscrew energy --case case.toml --move "{text}"',
+        }
+    )
+    return result
 
 
 def _curves(results: Mapping[str, FrictionResult]) -> list[dict[str, Any]]:

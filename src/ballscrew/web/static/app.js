@@ -352,7 +352,10 @@
   function renderEnergy(e) {
     $("energy_section").hidden = !e;
     if (!e) return;
-    const eff = (v) => (v <= 0 ? `${fmt(100 * v)} % (self-locking)` : `${fmt(100 * v)} %`);
+    const eff = (v) => {
+      if (v === null) return "none (no axial load)";
+      return v <= 0 ? `${fmt(100 * v)} % (self-locking)` : `${fmt(100 * v)} %`;
+    };
     const rows = [
       ["move", `${e.move}, out and back at ${fmt(e.temperature_C)} °C`],
       ["duration", `${fmt(e.duration_s)} s`],
