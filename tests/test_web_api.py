@@ -3,10 +3,12 @@
 from __future__ import annotations
 
 import builtins
+import dataclasses
 import io
 import json
 import os
 import pathlib
+import time
 import tomllib
 from collections.abc import Iterator
 from pathlib import Path
@@ -328,6 +330,26 @@ def test_an_internal_error_shows_no_traceback(monkeypatch: pytest.MonkeyPatch) -
             }
         page = c.get("/no/such/page")
         assert page.status_code == 404 and "Traceback" not in page.text
+
+
+def test_a_request_over_the_time_budget_is_answered_503(monkeypatch: pytest.MonkeyPatch) -> None:
+    def slow(*args: Any, **kwargs: Any) -> Any:
+        time.sleep(1.0)
+        raise RuntimeError("too late to matter")
+
+    limits = dataclasses.replace(LIMITS, seconds=0.2)
+    with TestClient(create_app(limits, allowed_hosts=["testserver"])) as c:
+        monkeypatch.setattr(service, "run_models", slow)
+        start = time.perf_counter()
+        first = c.post("/api/torque", json=CASE)
+        assert first.status_code == 503 and "took over 0.2 s" in first.json()["error"]
+        # The late computation still holds the worker: the next request is told so
+        # after half the budget.
+        second = c.post("/api/torque", json=CASE)
+        assert second.status_code == 503 and "busy" in second.json()["error"]
+        # Both answered within their budgets (0.2 + 0.1 s) plus slack for a loaded
+        # machine, not after the 1 s the computation takes.
+        assert time.perf_counter() - start < 0.9
 
 
 def test_the_page_is_served_with_its_script_and_a_strict_policy(client: TestClient) -> None:

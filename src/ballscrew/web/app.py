@@ -149,7 +149,8 @@ def create_app(limits: Limits = LIMITS, allowed_hosts: list[str] | None = None) 
         """Run ``function`` in a worker thread, one request at a time, within the budget."""
 
         def work() -> dict[str, Any]:
-            if not lock.acquire(timeout=limits.seconds):
+            # Half the budget to wait for the worker, so that "busy" is told in time.
+            if not lock.acquire(timeout=limits.seconds / 2):
                 raise ApiError(503, "the calculator is busy; try again in a moment")
             try:
                 # One at a time, so the warning filters (process-wide) are ours alone;

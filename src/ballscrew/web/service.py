@@ -68,7 +68,8 @@ class Limits:
     depth : int
         Nesting of tables in the case fields (a case file needs 4).
     seconds : float
-        Time a request may take, waiting included [s].
+        Time a request may take, waiting included [s]: 503 past it, or after
+        half of it waiting for the worker (one computation at a time).
     """
 
     body_bytes: int = 64 * 1024
