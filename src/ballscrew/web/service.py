@@ -33,7 +33,14 @@ from ..cli_energy import parse_move
 from ..cli_torque import run_models, warning_lines
 from ..errors import BallScrewInputError, BallScrewSpeedWarning, BallScrewValidityWarning
 from ..friction import MODELS, get_model
-from ..outputs import csv_text, json_text, provenance, result_rows
+from ..outputs import (
+    INPUT_DIGITS,
+    csv_text,
+    json_text,
+    provenance,
+    result_rows,
+    round_significant,
+)
 from ..units import parse_range, range_size
 
 __all__ = [
@@ -239,6 +246,11 @@ def _floats(values: Any) -> list[float | None]:
     return [float(v) if math.isfinite(v) else None for v in np.ravel(values).tolist()]
 
 
+def _inputs(values: Any) -> list[float | None]:
+    """Operating points for JSON, to the digits the CSV gives them (100 rpm, not 99.999...)."""
+    return _floats([round_significant(v, INPUT_DIGITS) for v in np.ravel(values).tolist()])
+
+
 def _quiet_run(
     case: Case, names: Sequence[str], w: np.ndarray, t: np.ndarray, f: np.ndarray
 ) -> dict[str, FrictionResult]:
@@ -271,9 +283,9 @@ def torque(payload: Mapping[str, Any], limits: Limits = LIMITS) -> dict[str, Any
     r = results[model]
     return {
         "model": r.model,
-        "speed_rpm": _floats(r.speed * 30.0 / math.pi),
-        "temperature_C": _floats(r.temperature),
-        "axial_load_N": _floats(r.axial_load),
+        "speed_rpm": _inputs(r.speed * 30.0 / math.pi),
+        "temperature_C": _inputs(r.temperature),
+        "axial_load_N": _inputs(r.axial_load),
         "torque_Nm": _floats(r.total),
         "power_loss_W": _floats(r.power_loss),
         "efficiency": _floats(r.efficiency),
@@ -361,7 +373,7 @@ def _curves(results: Mapping[str, FrictionResult]) -> list[dict[str, Any]]:
                         "model": name,
                         "temperature_C": temp,
                         "axial_load_N": load,
-                        "speed_rpm": _floats(w[at] * 30.0 / math.pi),
+                        "speed_rpm": _inputs(w[at] * 30.0 / math.pi),
                         "torque_Nm": _floats(total[at]),
                         "efficiency": _floats(eff[at]),
                         "power_W": _floats(power[at]),
@@ -378,7 +390,7 @@ def _budget(r: FrictionResult) -> dict[str, Any]:
         "model": r.model,
         "temperature_C": float(t[0]),
         "axial_load_N": float(f[0]),
-        "speed_rpm": _floats(w[at] * 30.0 / math.pi),
+        "speed_rpm": _inputs(w[at] * 30.0 / math.pi),
         "components": {k: _floats(np.ravel(v)[at]) for k, v in r.components.items()},
     }
 
