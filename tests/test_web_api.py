@@ -16,6 +16,8 @@ from typing import Any
 
 import numpy as np
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 from starlette.testclient import TestClient
 
 from ballscrew.case import parse_case
@@ -286,6 +288,63 @@ def test_nesting_and_malformed_bodies_are_refused(client: TestClient) -> None:
     for body in (b"{not json", b"[1, 2]", nested.encode()):
         response = client.post("/api/torque", content=body)
         assert response.status_code == 400, body[:20]
+
+
+JSON_VALUES = st.recursive(
+    st.none()
+    | st.booleans()
+    | st.integers(-(10**6), 10**6)
+    | st.floats(allow_nan=False, allow_infinity=False)
+    | st.sampled_from(["", "1", "2 kN", "-1 mm", "1e400 m", "0..1:5 rpm", "nan degC", "..", "x"])
+    | st.text(max_size=12),
+    lambda children: (
+        st.lists(children, max_size=3) | st.dictionaries(st.text(max_size=8), children, max_size=3)
+    ),
+    max_leaves=12,
+)
+CASE_KEYS = [
+    (section, key) for section, table in CASE.items() if isinstance(table, dict) for key in table
+]
+CASE_KEYS += [
+    ("screw", "nut"),
+    ("screw", "preload_share"),
+    ("lubricant", "nu40"),
+    ("study", "drag_torques"),
+]
+
+
+@settings(max_examples=80, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    where=st.sampled_from(CASE_KEYS),
+    value=JSON_VALUES,
+    extra=st.dictionaries(
+        st.sampled_from(["model", "speed", "temperature", "axial_load", "title", "x"]),
+        JSON_VALUES,
+        max_size=2,
+    ),
+    page=st.fixed_dictionaries({}, optional={"models": JSON_VALUES, "move": JSON_VALUES}),
+)
+def test_any_json_is_answered_without_an_internal_error(
+    client: TestClient,
+    where: tuple[str, str],
+    value: Any,
+    extra: dict[str, Any],
+    page: dict[str, Any],
+) -> None:
+    fields = json.loads(json.dumps(CASE))
+    section, key = where
+    fields.setdefault(section, {})[key] = value
+    response = client.post("/api/torque", json={**fields, **extra})
+    assert response.status_code in (200, 400, 422), response.text
+    response = client.post("/api/evaluate", json={"case": fields, **page})
+    assert response.status_code in (200, 400, 422), response.text
+    if response.status_code == 422:
+        assert " is not allowed: " in response.json()["error"]
+
+
+def test_an_uploaded_file_with_inf_comes_back_as_text(client: TestClient) -> None:
+    response = client.post("/api/case", content=b"[screw]\nconformity_nut = inf\n")
+    assert response.json()["fields"] == {"screw": {"conformity_nut": "inf"}}
 
 
 def test_a_request_must_name_this_server() -> None:

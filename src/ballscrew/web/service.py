@@ -269,7 +269,8 @@ def torque(payload: Mapping[str, Any], limits: Limits = LIMITS) -> dict[str, Any
     ``ballscrew torque --speed`` does. The points are every combination, the
     speed varying slowest (the rows of ``ballscrew torque``).
     """
-    model = payload.get("model", "complete")
+    model = payload.get("model")
+    model = "complete" if model is None else model
     fields = {k: v for k, v in payload.items() if k not in {"model", *_OVERRIDES}}
     try:
         if not isinstance(model, str):
@@ -309,13 +310,13 @@ def _models(value: Any, limits: Limits) -> list[str]:
 _MOVE_KEYS = ("stroke", "feed", "acceleration")
 
 
-def _energy(case: Case, move: Mapping[str, Any], limits: Limits) -> dict[str, Any]:
+def _energy(case: Case, move: Any, limits: Limits) -> dict[str, Any]:
     """The energy of one back-and-forth move (``ballscrew energy --move``), complete model."""
     from ..energy import Axis, axis_cycle
     from ..motion import back_and_forth
 
-    if not all(isinstance(move.get(k), str) for k in _MOVE_KEYS):
-        raise BallScrewInputError("--move", dict(move), "stroke, feed and acceleration as text")
+    if not isinstance(move, Mapping) or not all(isinstance(move.get(k), str) for k in _MOVE_KEYS):
+        raise BallScrewInputError("--move", move, "stroke, feed and acceleration as text")
     text = ", ".join(f"{k}={move[k]}" for k in _MOVE_KEYS)
     m = parse_move(text)
     seconds = 2.0 * (abs(m["stroke"]) / m["feed"] + m["feed"] / m["acceleration"])
@@ -472,8 +473,21 @@ def read_case_file(body: bytes) -> dict[str, Any]:
         raise ApiError.from_input(
             BallScrewInputError("case", "(file)", f"valid TOML ({exc})")
         ) from None
-    # Dates and times (TOML has them, case files do not) become text.
-    return {"fields": json.loads(json.dumps(fields, default=str))}
+    # Dates and times (TOML has them, case files do not) and inf or nan become
+    # text, which the form shows and the computation then refuses by name.
+    return {"fields": _as_text_where_json_cannot(fields)}
+
+
+def _as_text_where_json_cannot(data: Any) -> Any:
+    if isinstance(data, float) and not math.isfinite(data):
+        return repr(data)
+    if isinstance(data, dict):
+        return {k: _as_text_where_json_cannot(v) for k, v in data.items()}
+    if isinstance(data, list):
+        return [_as_text_where_json_cannot(v) for v in data]
+    if isinstance(data, str | int | float | bool):
+        return data
+    return str(data)
 
 
 def model_choices() -> list[dict[str, str]]:
