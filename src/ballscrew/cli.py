@@ -21,6 +21,7 @@ from .cli_case import case_command, screws_command
 from .cli_common import case_option, file_option, progress, stdout
 from .cli_energy import energy_command
 from .cli_fit import export_friction_command, fit_command
+from .cli_serve import serve_command
 from .cli_torque import torque
 from .contact import HERTZ_METHODS, hertz
 from .errors import BallScrewInputError
@@ -46,6 +47,7 @@ def cli() -> None:
       ballscrew export-friction --case my_screw.toml --form stribeck --temperature "20, 40 degC"
       ballscrew models
       ballscrew lubricants
+      ballscrew serve                       # the web calculator on http://127.0.0.1:8050/
     """  # noqa: D301 - click needs the literal \b to keep the example lines
 
 
@@ -340,6 +342,7 @@ cli.add_command(screws_command)
 cli.add_command(energy_command)
 cli.add_command(fit_command)
 cli.add_command(export_friction_command)
+cli.add_command(serve_command)
 
 
 def _terminate(signum: int, frame: object) -> None:

@@ -5,8 +5,9 @@ from __future__ import annotations
 import math
 import sys
 import warnings
+from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import click
 import numpy as np
@@ -14,9 +15,13 @@ from rich.console import Console
 from rich.table import Table
 
 from .cli_common import case_option, file_option, progress, stdout, write_json
-from .errors import BallScrewValidityWarning
+from .errors import BallScrewValidityWarning, FloatArray
 
-__all__ = ["torque"]
+if TYPE_CHECKING:
+    from .case import Case
+    from .chain import FrictionResult
+
+__all__ = ["operating_grid", "run_models", "torque", "warning_lines"]
 
 
 @click.command()
@@ -92,7 +97,6 @@ def torque(
           --csv-dialect semicolon-decimal-comma
     """  # noqa: D301 - click needs the literal \b to keep the example lines
     from .case import load_case
-    from .chain import FrictionResult, friction_torque
     from .files import atomic_write
     from .friction import get_model
     from .outputs import csv_text, json_text, provenance, result_rows
@@ -112,26 +116,15 @@ def torque(
         if axial_load
         else (case.axial_load)
     )
-    grid_w, grid_t, grid_f = (a.ravel() for a in np.meshgrid(w, t, f, indexing="ij"))
-    results: dict[str, FrictionResult] = {}
     console = Console(stderr=True)
     with progress(console) as bar:
         task = bar.add_task("models", total=len(model_names))
-        for name in model_names:
+
+        def advance(name: str) -> None:
             bar.update(task, description=name)
-            params = dict(case.model_parameters.get(name, {}))
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore", BallScrewValidityWarning)
-                results[name] = friction_torque(
-                    case.screw,
-                    case.lubricant,
-                    speed=grid_w,
-                    temperature=grid_t,
-                    axial_load=grid_f,
-                    model=name,
-                    **params,
-                )
             bar.advance(task)
+
+        results = run_models(case, model_names, w, t, f, on_model=advance)
     _report_warnings(results)
     rows = result_rows(results)
     pivot = table_kind == "pivot" or (table_kind == "auto" and len(rows) > 40)
@@ -152,28 +145,83 @@ def torque(
         write_json(json_file, json_text(rows, meta))
 
 
-def _report_warnings(results: dict[str, Any]) -> None:
-    """Each model's validity issues, one line each, once per run.
+def operating_grid(
+    speed: FloatArray, temperature: FloatArray, axial_load: FloatArray
+) -> tuple[FloatArray, FloatArray, FloatArray]:
+    """Every combination of the speeds, temperatures and loads, as three flat arrays.
 
-    Issues every ordinary ball screw has (``ValidityIssue.routine``) become one
-    note per quantity, naming the models, after the warnings.
+    The speed varies slowest, then the temperature, then the load: the row
+    order of the tables and files of ``ballscrew torque``.
     """
+    w, t, f = (np.ravel(a) for a in np.meshgrid(speed, temperature, axial_load, indexing="ij"))
+    return w, t, f
+
+
+def run_models(
+    case: Case,
+    model_names: Sequence[str],
+    speed: FloatArray,
+    temperature: FloatArray,
+    axial_load: FloatArray,
+    on_model: Callable[[str], None] | None = None,
+) -> dict[str, FrictionResult]:
+    """Each model over the grid of the operating points, with the case's model parameters.
+
+    The validity issues are kept in each result (:func:`warning_lines` tells
+    them); ``on_model(name)`` is called after each model.
+    """
+    from .chain import friction_torque
+
+    grid_w, grid_t, grid_f = operating_grid(speed, temperature, axial_load)
+    results: dict[str, FrictionResult] = {}
+    for name in model_names:
+        params = dict(case.model_parameters.get(name, {}))
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", BallScrewValidityWarning)
+            results[name] = friction_torque(
+                case.screw,
+                case.lubricant,
+                speed=grid_w,
+                temperature=grid_t,
+                axial_load=grid_f,
+                model=name,
+                **params,
+            )
+        if on_model is not None:
+            on_model(name)
+    return results
+
+
+def warning_lines(results: Mapping[str, FrictionResult]) -> list[str]:
+    """Each model's validity issues as the lines ``ballscrew torque`` prints.
+
+    One ``warning:`` line per issue; issues every ordinary ball screw has
+    (``ValidityIssue.routine``) become one ``note:`` per quantity, naming the
+    models, after the warnings.
+    """
+    lines: list[str] = []
     routine: dict[str, list[Any]] = {}
     for r in results.values():
         for issue in r.warnings:
             if issue.routine:
                 routine.setdefault(issue.quantity, []).append(issue)
             else:
-                click.echo(f"warning: {issue}", err=True)
+                lines.append(f"warning: {issue}")
     for quantity, found in routine.items():
         worst = max(found, key=lambda i: i.excess)
         names = ", ".join(i.model for i in found)
-        click.echo(
+        lines.append(
             f"note: {quantity} up to {worst.value:.3g}, outside {worst.low:.3g} to "
             f"{worst.high:.3g} ({worst.applies_to}) for {names}: usual for ball screws, "
-            f"{worst.routine}",
-            err=True,
+            f"{worst.routine}"
         )
+    return lines
+
+
+def _report_warnings(results: Mapping[str, FrictionResult]) -> None:
+    """Each model's validity issues, one line each, once per run (on standard error)."""
+    for line in warning_lines(results):
+        click.echo(line, err=True)
 
 
 def _full_table(title: str, rows: list[dict[str, Any]]) -> Table:

@@ -16,7 +16,7 @@ import pint
 
 from .errors import BallScrewInputError
 
-__all__ = ["parse_range", "registry", "to_si"]
+__all__ = ["parse_range", "range_size", "registry", "to_si"]
 
 
 @functools.cache
@@ -133,6 +133,25 @@ _RANGE = re.compile(
     r"^\s*(?P<lo>[-+]?[0-9.]+(?:[eE][-+]?\d+)?)\s*\.\.\s*(?P<hi>[-+]?[0-9.]+(?:[eE][-+]?\d+)?)"
     r"\s*(?::\s*(?P<n>\d+))?\s*(?P<unit>[^:]*?)\s*(?::\s*(?P<n2>\d+))?\s*$"
 )
+
+
+def range_size(text: str, default_points: int = 50) -> int:
+    """How many values :func:`parse_range` would give for ``text``, without converting any.
+
+    For a caller that must bound the work a text asks for before it is done
+    (a range ``a..b:n`` may ask for a million points).
+
+    Examples
+    --------
+    >>> range_size("0..3000:31 rpm"), range_size("0..3000 rpm"), range_size("20, 40 degC")
+    (31, 50, 2)
+    """
+    raw = str(text).strip()
+    match = _RANGE.match(raw)
+    if match:
+        count = match.group("n") or match.group("n2")
+        return int(count) if count else default_points
+    return raw.count(",") + 1
 
 
 def parse_range(field: str, text: str, unit: str, default_points: int = 50) -> list[float]:

@@ -1,0 +1,251 @@
+"""The web calculator driven in a real headless Chromium (Debian's, through Playwright).
+
+A uvicorn server runs the application on a free loopback port in a thread;
+the browser fills in the form, reads the charts and messages, downloads the
+files and opens a case file, as a person would. The screenshots go to
+``test-output/screenshots/`` (or ``$BALLSCREW_SCREENSHOTS``).
+
+Without Chromium these tests are skipped on a developer's machine and fail on
+CI (``CI`` set), where ``make test`` installs it.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import os
+import shutil
+import statistics
+import time
+from collections.abc import Iterator
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from ballscrew.case import parse_case
+from ballscrew.chain import friction_torque
+from cli_runner import run
+from web_server import running_server
+
+ROOT = Path(__file__).resolve().parents[1]
+DATA = Path(__file__).parent / "data"
+CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
+SHOTS = Path(os.environ.get("BALLSCREW_SCREENSHOTS", ROOT / "test-output" / "screenshots"))
+
+if CHROMIUM is None and not os.environ.get("CI"):
+    pytest.skip(
+        "no chromium on this machine (make test installs Debian's); on CI these tests run",
+        allow_module_level=True,
+    )
+
+sync_api = pytest.importorskip("playwright.sync_api")
+
+# Chromium's own background connections are refused on a closed network; without
+# these flags it waits on them. A fresh profile comes with every launch.
+CHROMIUM_ARGS = [
+    "--headless",
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-quic",
+    "--no-first-run",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+]
+
+# The page's defaults (templates/index.html), written as a case file.
+DEFAULT_CASE = """\
+title = "ball screw case"
+[screw]
+designation = "40x10 double 2.5x2 6.35"
+preload = "2 kN"
+[lubricant]
+name = "PAO ISO VG 68"
+[operation]
+speed = "10..3000:50 rpm"
+temperature = "40 degC"
+axial_load = "1 kN"
+"""
+
+
+@pytest.fixture(scope="module")
+def base_url() -> Iterator[str]:
+    with running_server() as url:
+        yield url
+
+
+@pytest.fixture(scope="module")
+def browser() -> Iterator[sync_api.Browser]:
+    assert CHROMIUM is not None, "CI needs chromium: make test installs it"
+    with sync_api.sync_playwright() as p:
+        b = p.chromium.launch(executable_path=CHROMIUM, headless=True, args=CHROMIUM_ARGS)
+        yield b
+        b.close()
+
+
+@pytest.fixture
+def page(browser: sync_api.Browser, base_url: str) -> Iterator[sync_api.Page]:
+    context = browser.new_context(viewport={"width": 1280, "height": 900}, accept_downloads=True)
+    pg = context.new_page()
+    errors: list[str] = []
+    pg.on("pageerror", lambda exc: errors.append(str(exc)))
+    pg.goto(base_url)
+    wait_revision(pg, 0)
+    yield pg
+    context.close()
+    assert errors == [], errors  # no script error on the page
+
+
+def revision(pg: sync_api.Page) -> int:
+    return int(pg.get_attribute("body", "data-revision") or 0)
+
+
+def wait_revision(pg: sync_api.Page, after: int, timeout: float = 10.0) -> int:
+    """Wait until the page has shown results newer than revision ``after``."""
+    deadline = time.monotonic() + timeout
+    while (now := revision(pg)) <= after:
+        assert time.monotonic() < deadline, f"no new results after revision {after}"
+        pg.wait_for_timeout(20)
+    return now
+
+
+def settle(pg: sync_api.Page) -> int:
+    """Wait until no request is pending and the results shown are the latest."""
+    last = revision(pg)
+    while True:
+        pg.wait_for_timeout(400)  # longer than the page's 120 ms debounce plus a compute
+        now = revision(pg)
+        if now == last and pg.text_content("#status") != "computing...":
+            return now
+        last = now
+
+
+def download(pg: sync_api.Page, button: str) -> str:
+    with pg.expect_download() as info:
+        pg.click(button)
+    return Path(info.value.path()).read_text(encoding="utf-8")
+
+
+def curve(pg: sync_api.Page, model: str) -> str:
+    return pg.get_attribute(f'#chart_torque polyline[data-series="{model}"]', "points") or ""
+
+
+def test_fill_in_a_screw_and_see_the_plot_update(page: sync_api.Page) -> None:
+    before = curve(page, "complete")
+    assert before.count(",") == 50  # one vertex per speed of the default grid
+    page.check('input[name="screw_mode"][value="dimensions"]')
+    for field, value in (("pitch_diameter", "32"), ("lead", "20"), ("ball_diameter", "3.969")):
+        page.fill(f"#{field}", value)
+    page.wait_for_selector("text=ball centre diameter 32 mm, lead 20 mm, balls 3.969 mm")
+    settle(page)
+    after = curve(page, "complete")
+    assert after and after != before
+    # How long the page takes from a change to new charts (debounce included):
+    # the issue asks for under half a second with the closed-form models.
+    latencies = []
+    for temperature in ("20", "30", "50", "60", "40"):
+        rev = revision(page)
+        page.fill("#temperature", temperature)
+        wait_revision(page, rev)
+        latencies.append(int(page.get_attribute("body", "data-update-ms") or 0))
+    print(f"page update latency [ms]: {latencies}")
+    assert statistics.median(latencies) < 500, latencies
+
+
+def test_a_bad_value_shows_the_command_lines_message_beside_its_field(
+    page: sync_api.Page, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    page.check('input[name="screw_mode"][value="dimensions"]')
+    settle(page)
+    good_case = download(page, "#download_toml")
+    page.fill("#lead", "-10")
+    box = page.wait_for_selector('.field.invalid[data-field="screw.lead"] .error')
+    assert box is not None
+    shown = box.text_content()
+    # The command line, given the same case with that lead:
+    assert 'lead = "10 mm"' in good_case
+    path = tmp_path / "bad.toml"
+    path.write_text(good_case.replace('lead = "10 mm"', 'lead = "-10 mm"'), encoding="utf-8")
+    code, _, err = run(["torque", "--case", str(path)], capsys)
+    assert code == 2
+    assert shown == err.strip().removeprefix("error: ")
+    assert shown.startswith("screw.lead = -0.01 is not allowed")
+    assert page.is_hidden("#general_error")
+    assert "stale" in (page.get_attribute("#results", "class") or "")
+    # Corrected, the message goes and the results come back.
+    rev = revision(page)
+    page.fill("#lead", "10")
+    wait_revision(page, rev)
+    assert page.query_selector(".field.invalid") is None
+
+
+def test_the_downloaded_csv_is_the_librarys_result(page: sync_api.Page) -> None:
+    text = download(page, "#download_csv")
+    rows = list(csv.DictReader(io.StringIO(text)))
+    case = parse_case(DEFAULT_CASE)
+    expected = friction_torque(
+        case.screw,
+        case.lubricant,
+        speed=case.speed,
+        temperature=40.0,
+        axial_load=1000.0,
+        model="complete",
+    )
+    complete = [r for r in rows if r["model"] == "complete"]
+    # Speeds are written to 12 significant digits.
+    np.testing.assert_allclose(
+        [float(r["speed [rpm]"]) for r in complete], np.linspace(10, 3000, 50), rtol=5e-12
+    )
+    # The CSV writes results to 7 significant digits: within half a unit of the 7th.
+    np.testing.assert_allclose(
+        [float(r["torque [N*m]"]) for r in complete], expected.total, rtol=5e-7
+    )
+    np.testing.assert_allclose(
+        [float(r["efficiency [-]"]) for r in complete], expected.efficiency, rtol=5e-7
+    )
+    assert {r["temperature [degC]"] for r in rows} == {"40.0"}
+    assert {r["axial load [N]"] for r in rows} == {"1000.0"}
+    assert {r["model"] for r in rows} == {"complete", "catalog"}
+    # The README's reference: about 0.6 N*m at 100 rpm (0.61 with no axial load).
+    at_100 = np.interp(100.0, np.linspace(10, 3000, 50), expected.total)
+    assert 0.55 < at_100 < 0.7
+
+
+def test_open_a_case_file(
+    page: sync_api.Page, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    small = DATA / "small_case.toml"
+    rev = revision(page)
+    page.set_input_files("#upload", str(small))
+    page.wait_for_selector("text=small test case:")
+    wait_revision(page, rev)
+    settle(page)
+    assert page.input_value("#pitch_diameter") == "32"
+    assert "kept as the file gives them" in (page.text_content("#upload_notice") or "")
+    shown_csv = download(page, "#download_csv")
+    shown_case = download(page, "#download_toml")
+    # What the page shows for the file is what the command line computes from it.
+    out = tmp_path / "cli.csv"
+    args = ["torque", "--case", str(small), "--model", "complete", "--model", "catalog"]
+    code, _, err = run([*args, "--csv", str(out)], capsys)
+    assert code == 0, err
+    assert shown_csv == out.read_text(encoding="utf-8")
+    # The values the file marks as assumed keep their reasons in the case file offered.
+    assert 'assumed = "typical nominal diameter' in shown_case
+    assert parse_case(shown_case).screw == parse_case(small.read_text("utf-8")).screw
+
+
+def test_screenshots_at_desktop_and_phone_widths(browser: sync_api.Browser, base_url: str) -> None:
+    SHOTS.mkdir(parents=True, exist_ok=True)
+    for name, width, height in (("desktop", 1280, 900), ("phone", 390, 844)):
+        context = browser.new_context(viewport={"width": width, "height": height})
+        pg = context.new_page()
+        pg.goto(base_url)
+        wait_revision(pg, 0)
+        settle(pg)
+        # Nothing wider than the screen: no sideways scrolling on a phone.
+        assert pg.evaluate("document.documentElement.scrollWidth") <= width
+        pg.screenshot(path=str(SHOTS / f"web-{name}.png"), full_page=True)
+        context.close()
+    assert (SHOTS / "web-desktop.png").stat().st_size > 10_000
