@@ -21,6 +21,7 @@ from .cli_case import case_command, screws_command
 from .cli_common import case_option, file_option, progress, stdout
 from .cli_energy import energy_command
 from .cli_fit import export_friction_command, fit_command
+from .cli_sweep import sweep_command
 from .cli_torque import torque
 from .contact import HERTZ_METHODS, hertz
 from .errors import BallScrewInputError
@@ -44,6 +45,7 @@ def cli() -> None:
       ballscrew energy --case my_axis.toml --move "stroke=0.3 m, feed=0.5 m/s, acceleration=2 m/s^2"
       ballscrew fit --case my_screw.toml --measured run.csv --free preload,ball_train_constant
       ballscrew export-friction --case my_screw.toml --form stribeck --temperature "20, 40 degC"
+      ballscrew sweep examples/sweep_preload.toml --out preload.zarr --workers 2
       ballscrew models
       ballscrew lubricants
     """  # noqa: D301 - click needs the literal \b to keep the example lines
@@ -340,6 +342,7 @@ cli.add_command(screws_command)
 cli.add_command(energy_command)
 cli.add_command(fit_command)
 cli.add_command(export_friction_command)
+cli.add_command(sweep_command)
 
 
 def _terminate(signum: int, frame: object) -> None:
