@@ -218,9 +218,19 @@ def field_unit(name: str, models: Sequence[str], where: str = "") -> tuple[str, 
             "speed, temperature, axial_load, screw.KEY, lubricant.KEY or MODEL.PARAMETER "
             f"(models: {sorted(MODELS)})",
         )
-    close = difflib.get_close_matches(key, allowed, n=1)
-    hint = f"; did you mean {owner}.{close[0]}?" if close else ""
-    raise BallScrewInputError(where, name, f"one of {owner}.{allowed}{hint}")
+    raise BallScrewInputError(
+        where,
+        name,
+        f"one of {', '.join(f'{owner}.{k}' for k in allowed)}{_hint(key, allowed, owner)}",
+    )
+
+
+def _hint(key: str, allowed: Sequence[str], prefix: str = "") -> str:
+    """'; did you mean X?' for a misspelt or shortened key, else ''."""
+    close = difflib.get_close_matches(key, list(allowed), n=1)
+    close = close or [k for k in allowed if key and k.startswith(key)][:1]
+    dotted = f"{prefix}." if prefix else ""
+    return f"; did you mean {dotted}{close[0]}?" if close else ""
 
 
 def _values(where: str, raw: Any, unit: str | None, default: Any = None) -> list[Any]:
@@ -310,10 +320,8 @@ def _check(case: Case, models: Sequence[str], where: str, name: str, value: Any)
 def _unknown(where: str, given: Mapping[str, Any], allowed: Sequence[str]) -> None:
     for key in given:
         if key not in allowed:
-            close = difflib.get_close_matches(key, list(allowed), n=1)
-            hint = f"; did you mean {close[0]}?" if close else ""
             raise BallScrewInputError(
-                f"{where}{key}", given[key], f"one of the keys {list(allowed)}{hint}"
+                f"{where}{key}", given[key], f"one of the keys {list(allowed)}{_hint(key, allowed)}"
             )
 
 
