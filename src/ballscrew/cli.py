@@ -191,19 +191,20 @@ def study(
             measured = read_measured(measured_file, case.screw)
             measured_text = Path(measured_file).read_text("utf-8")
     with progress(console) as bar:
-        task = bar.add_task("computing", total=6 + (measured is not None))
+        task = bar.add_task("computing", total=9 + (measured is not None))
 
         def tick(text: str) -> None:
             bar.update(task, description=text, advance=1)
 
         result = run_study(case, measured, progress=tick)
-        task2 = bar.add_task("writing", total=len(result.figures) + 1)
+        extra = result.sensitivity is not None
+        task2 = bar.add_task("writing", total=len(result.figures) + 1 + extra)
 
         def tick2(text: str) -> None:
             bar.update(task2, description=text, advance=1)
 
         files: list[Path] = []
-        expected = 3 * len(result.figures) + 3
+        expected = 3 * (len(result.figures) + extra) + 3
         try:
             write_report(result, out_dir, measured_text, progress=tick2, written=files)
         except KeyboardInterrupt:
