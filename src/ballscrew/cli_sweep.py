@@ -18,7 +18,7 @@ __all__ = ["sweep_command"]
 RPM = 30.0 / math.pi
 
 
-def _point(where: dict[str, Any]) -> str:
+def _point(where: dict[str, Any], units: dict[str, str]) -> str:
     """A grid point in words, with units people read."""
     parts = []
     for key, value in where.items():
@@ -31,7 +31,8 @@ def _point(where: dict[str, Any]) -> str:
         elif key == "sample":
             parts.append(f"sample {value}")
         elif isinstance(value, float):
-            parts.append(f"{key} {value:.4g}")
+            unit = units.get(key, "1")
+            parts.append(f"{key} {value:.4g}" + (f" {unit}" if unit not in ("1", "") else ""))
         else:
             parts.append(f"{key} {value}")
     return ", ".join(parts)
@@ -42,11 +43,14 @@ def _summary_table(report: Any) -> Table:
     for col in ("output", "model", "min", "mean", "max", "max at"):
         table.add_column(col, justify="left" if col in ("output", "model", "max at") else "right")
     units = {"torque": "N·m", "efficiency": "-", "power_loss": "W"}
+    fields = {a.name: a.unit for a in report.plan.spec.axes}
+    if report.plan.spec.uncertainty is not None:
+        fields |= {d.name: d.unit for d in report.plan.spec.uncertainty.inputs}
     for name in ("torque", "efficiency", "power_loss"):
         for model, s in report.summary.get(name, {}).items():
             table.add_row(
                 f"{name} [{units[name]}]", model, f"{s['min']:.4g}", f"{s['mean']:.4g}",
-                f"{s['max']:.4g}", _point(s["max_at"]),
+                f"{s['max']:.4g}", _point(s["max_at"], fields),
             )  # fmt: skip
     return table
 

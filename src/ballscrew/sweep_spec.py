@@ -85,9 +85,6 @@ DISTRIBUTIONS: dict[str, tuple[str, str]] = {
 }
 """Distribution name -> its two parameters (lognormal: median and the std of ln)."""
 
-DEFAULT_CHUNK_POINTS = 1 << 18
-"""Points per stored chunk: about 2 MB per output, and 0.1 s of the complete model."""
-
 
 @dataclass(frozen=True)
 class Axis:
@@ -161,7 +158,8 @@ class SweepSpec:
     uncertainty : Uncertainty or None
         The Monte Carlo and sensitivity settings.
     chunk_points : int
-        Operating points per stored chunk (target).
+        Points per stored chunk (target); default the smallest ``ModelSpec.chunk``
+        of the models (131072 for all but harris-full's 4096).
     text : str
         The sweep file's text.
     """
@@ -452,7 +450,10 @@ def parse_sweep(text: str, *, folder: str | Path = ".", source: str = "sweep") -
     outputs = _names(
         "outputs", raw.get("outputs"), ["torque", "efficiency", "power_loss"], list(OUTPUTS)
     )
-    chunk_points = raw.get("chunk_points", DEFAULT_CHUNK_POINTS)
+    # Default: the smallest of the models' own chunks (1 MB per output for most), so that
+    # each friction call stays on the chain's unexpanded-grid path, whose memory the model's
+    # chunk bounds.
+    chunk_points = raw.get("chunk_points", min(MODELS[m].chunk for m in models))
     if isinstance(chunk_points, bool) or not isinstance(chunk_points, int) or chunk_points < 1:
         raise BallScrewInputError("chunk_points", chunk_points, "a whole number >= 1")
     parameters = {m: dict(case.model_parameters.get(m, {})) for m in models}
