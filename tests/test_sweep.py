@@ -295,3 +295,12 @@ def test_cli_prints_a_summary_and_json(tmp_path: Path, capsys: pytest.CaptureFix
     assert s["max"] == pytest.approx(float(torque.max()), rel=1e-15)
     assert s["max_at"]["speed"] == pytest.approx(1000 * np.pi / 30)
     assert "Sweep summary" in err and "store:" in err
+
+
+@pytest.mark.parametrize("name", ["sweep_preload.toml", "sweep_uncertainty.toml"])
+def test_example_sweep_files_are_valid(name: str) -> None:
+    from ballscrew.sweep_spec import load_sweep
+
+    path = Path(__file__).resolve().parents[1] / "examples" / name
+    plan = plan_sweep(load_sweep(path))  # every grid point is checked here
+    assert plan.points > 0 and plan.dims[-3:] == ("speed", "temperature", "axial_load")
