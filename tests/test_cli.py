@@ -112,6 +112,7 @@ def test_study_writes_a_complete_reproducible_report(
         "fig10_simplified_vs_complete",
         "fig11_complete_budget",
         "fig12_controller",
+        "fig13_sensitivity",
     ]
     for key in keys:
         for sub, ext in (("figures", "png"), ("figures", "svg"), ("data", "csv")):

@@ -136,3 +136,34 @@ def test_controller_figure_is_the_stribeck_form_fitted_to_the_complete_curve(
     max_error = float(re.search(r"max ([0-9.e+-]+) N·m", fig.caption).group(1))  # type: ignore[union-attr]
     keep = w > 0
     assert np.max(np.abs(fitted.torque[keep] - model.torque[keep])) <= max_error * 1.01
+
+
+def test_sensitivity_finding_follows_the_indices(study: StudyResult) -> None:
+    from ballscrew.study import _sensitivity_finding
+
+    s = study.sensitivity
+    assert s is not None and s.evaluations == s.base_samples * (len(s.inputs) + 2)
+    (line,) = [f for f in study.findings if f.startswith("Uncertainty of the complete model")]
+    top = s.indices.ranking()[0]
+    assert f"{s.inputs[top].label} (S_T = {s.indices.total[top]:.2f}" in line
+    pre = [u.distribution.name for u in s.inputs].index("screw.preload")
+    # The same words must turn when the numbers do: make the preload clearly first ...
+    total = np.full(len(s.inputs), 0.05)
+    total[pre] = 0.9
+    conf = np.full(len(s.inputs), 0.01)
+    first = replace_indices(s, total, conf)
+    assert "The preload is the leading uncertainty, as the study found" in _sensitivity_finding(
+        first, True
+    )
+    # ... or first but within the interval of the runner-up ...
+    total[(pre + 1) % len(total)] = 0.88
+    assert "not clearly ahead" in _sensitivity_finding(replace_indices(s, total, conf), True)
+    # ... or last.
+    total[pre] = 0.0
+    text = _sensitivity_finding(replace_indices(s, total, conf), False)
+    assert f"rank {len(total)} of {len(total)}" in text and "study" not in text
+
+
+def replace_indices(s: object, total: np.ndarray, conf: np.ndarray) -> object:
+    indices = dataclasses.replace(s.indices, total=total.copy(), total_conf=conf)  # type: ignore[attr-defined]
+    return dataclasses.replace(s, indices=indices)  # type: ignore[type-var]

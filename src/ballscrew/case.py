@@ -39,7 +39,15 @@ from .geometry import BallScrew
 from .lubricant import Lubricant
 from .units import parse_range, to_si
 
-__all__ = ["Assumption", "Case", "default_case_path", "load_case", "parse_case"]
+__all__ = [
+    "LUBRICANT_UNITS",
+    "SCREW_UNITS",
+    "Assumption",
+    "Case",
+    "default_case_path",
+    "load_case",
+    "parse_case",
+]
 
 
 @dataclass(frozen=True)
@@ -238,6 +246,36 @@ def parse_case(text: str, *, source: str = "case") -> Case:
     )
 
 
+SCREW_UNITS: dict[str, str] = {
+    "pitch_diameter": "m",
+    "lead": "m",
+    "ball_diameter": "m",
+    "contact_angle": "rad",
+    "conformity_screw": "",
+    "conformity_nut": "",
+    "loaded_turns": "",
+    "circuits": "",
+    "youngs_modulus_ball": "Pa",
+    "youngs_modulus_races": "Pa",
+    "poisson_ratio_ball": "",
+    "poisson_ratio_races": "",
+    "roughness_ball": "m",
+    "roughness_screw": "m",
+    "roughness_nut": "m",
+}
+"""The SI unit of each numeric ``[screw]`` key that is a :class:`BallScrew` field ("" = none)."""
+
+LUBRICANT_UNITS: dict[str, str] = {
+    "nu40": "m**2/s",
+    "nu100": "m**2/s",
+    "density15": "kg/m**3",
+    "pressure_viscosity": "1/Pa",
+    "limiting_shear_stress": "Pa",
+    "limiting_shear_coefficient": "",
+}
+"""The SI unit of each numeric ``[lubricant]`` key ("" = none)."""
+
+
 _LENGTHS = ("pitch_diameter", "lead", "ball_diameter")
 
 
@@ -257,25 +295,8 @@ def _screw(
             if key not in given:
                 shown = f"{base[key] * 1e3:g} mm" if key in _LENGTHS else f"{base[key]:g}"
                 notes.append(Assumption(f"screw.{key}", shown, why))
-    units = {
-        "pitch_diameter": "m",
-        "lead": "m",
-        "ball_diameter": "m",
-        "contact_angle": "rad",
-        "conformity_screw": "",
-        "conformity_nut": "",
-        "loaded_turns": "",
-        "circuits": "",
-        "youngs_modulus_ball": "Pa",
-        "youngs_modulus_races": "Pa",
-        "poisson_ratio_ball": "",
-        "poisson_ratio_races": "",
-        "roughness_ball": "m",
-        "roughness_screw": "m",
-        "roughness_nut": "m",
-    }
     geometry: dict[str, Any] = {}
-    for name, unit in units.items():
+    for name, unit in SCREW_UNITS.items():
         value = getattr(s, name)
         if name in given and value is not None:
             geometry[name] = si("screw", name, value, unit)
@@ -339,14 +360,7 @@ def _screw(
 
 def _lubricant(section: LubricantSection, notes: list[Assumption]) -> Lubricant:
     name = str(_unwrap("lubricant.name", section.name, notes))
-    custom = {
-        "nu40": ("m**2/s", section.nu40),
-        "nu100": ("m**2/s", section.nu100),
-        "density15": ("kg/m**3", section.density15),
-        "pressure_viscosity": ("1/Pa", section.pressure_viscosity),
-        "limiting_shear_stress": ("Pa", section.limiting_shear_stress),
-        "limiting_shear_coefficient": ("", section.limiting_shear_coefficient),
-    }
+    custom = {key: (unit, getattr(section, key)) for key, unit in LUBRICANT_UNITS.items()}
     given = {
         key: to_si(f"lubricant.{key}", _unwrap(f"lubricant.{key}", raw, notes), unit)
         for key, (unit, raw) in custom.items()

@@ -96,6 +96,7 @@ def friction_torque(
     axial_load: npt.ArrayLike = 0.0,
     model: str = "complete",
     chunk_size: int | None = None,
+    warn: bool = True,
     **parameters: Any,
 ) -> FrictionResult:
     r"""Friction torque of a ball screw with a rotating screw and translating nut.
@@ -120,6 +121,10 @@ def friction_torque(
     chunk_size : int, optional
         Operating points evaluated at once; bounds the memory of large grids.
         Default: the model's own (``ModelSpec.chunk``).
+    warn : bool
+        False: record the validity issues in the result without warning
+        (for callers that gather them, such as sweeps on worker threads,
+        where changing the warning filters is not thread-safe).
     **parameters
         The model's own parameters (see its docstring); an unknown name is
         an error listing the valid ones.
@@ -190,7 +195,7 @@ def friction_torque(
     used = dict(spec.parameters)
     used.update(parameters)
     issues = validity.check(screw, lubricant, w, t, fa, spec.name, used, spec.checks)
-    for issue in issues:
+    for issue in issues if warn else ():
         if issue.routine:
             # Left by every ordinary ball screw: told once per quantity and model
             # in a session (as a note with the reason), recorded in every result.

@@ -22,6 +22,7 @@ from .cli_common import case_option, file_option, progress, stdout
 from .cli_energy import energy_command
 from .cli_fit import export_friction_command, fit_command
 from .cli_serve import serve_command
+from .cli_sweep import sweep_command
 from .cli_torque import torque
 from .contact import HERTZ_METHODS, hertz
 from .errors import BallScrewInputError
@@ -45,6 +46,7 @@ def cli() -> None:
       ballscrew energy --case my_axis.toml --move "stroke=0.3 m, feed=0.5 m/s, acceleration=2 m/s^2"
       ballscrew fit --case my_screw.toml --measured run.csv --free preload,ball_train_constant
       ballscrew export-friction --case my_screw.toml --form stribeck --temperature "20, 40 degC"
+      ballscrew sweep examples/sweep_preload.toml --out preload.zarr --workers 2
       ballscrew models
       ballscrew lubricants
       ballscrew serve                       # the web calculator on http://127.0.0.1:8050/
@@ -191,19 +193,20 @@ def study(
             measured = read_measured(measured_file, case.screw)
             measured_text = Path(measured_file).read_text("utf-8")
     with progress(console) as bar:
-        task = bar.add_task("computing", total=6 + (measured is not None))
+        task = bar.add_task("computing", total=9 + (measured is not None))
 
         def tick(text: str) -> None:
             bar.update(task, description=text, advance=1)
 
         result = run_study(case, measured, progress=tick)
-        task2 = bar.add_task("writing", total=len(result.figures) + 1)
+        extra = result.sensitivity is not None
+        task2 = bar.add_task("writing", total=len(result.figures) + 1 + extra)
 
         def tick2(text: str) -> None:
             bar.update(task2, description=text, advance=1)
 
         files: list[Path] = []
-        expected = 3 * len(result.figures) + 3
+        expected = 3 * (len(result.figures) + extra) + 3
         try:
             write_report(result, out_dir, measured_text, progress=tick2, written=files)
         except KeyboardInterrupt:
@@ -343,6 +346,7 @@ cli.add_command(energy_command)
 cli.add_command(fit_command)
 cli.add_command(export_friction_command)
 cli.add_command(serve_command)
+cli.add_command(sweep_command)
 
 
 def _terminate(signum: int, frame: object) -> None:

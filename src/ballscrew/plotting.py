@@ -18,9 +18,10 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure as MplFigure
 
 from .measured import MeasuredCurve
+from .sensitivity import SobolIndices
 from .study import RPM, Figure
 
-__all__ = ["figure_bytes", "render"]
+__all__ = ["figure_bytes", "render", "sensitivity_figure"]
 
 _STYLE: dict[str, Any] = {
     "svg.hashsalt": "ballscrew",
@@ -85,6 +86,31 @@ def render(
             ax.set_ylim(0.0, 1.1 * top if top > 0 else 1.0)
         ax.set_xlim(left=0.0)
         ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
+        out.tight_layout()
+    return out
+
+
+def sensitivity_figure(indices: SobolIndices, title: str) -> MplFigure:
+    """The inputs ranked by their total Sobol index, with first-order indices beside.
+
+    Horizontal bars, largest share of the variance at the top; the whiskers
+    are the 95 % bootstrap half-widths.
+    """
+    order = indices.ranking()[::-1]  # barh draws from the bottom up
+    y = np.arange(len(order), dtype=float)
+    with mpl.rc_context(_STYLE):  # type: ignore[arg-type]
+        out = MplFigure(figsize=(7.5, 0.45 * len(order) + 1.6))
+        FigureCanvasAgg(out)
+        ax = out.add_subplot(1, 1, 1)
+        ax.barh(y + 0.2, indices.total[order], height=0.38, xerr=indices.total_conf[order],
+                label="total index S_T", color="C0", capsize=2)  # fmt: skip
+        ax.barh(y - 0.2, indices.first[order], height=0.38, xerr=indices.first_conf[order],
+                label="first-order index S_1", color="C1", capsize=2)  # fmt: skip
+        ax.set_yticks(y, [indices.names[i] for i in order])
+        ax.set_xlabel("share of the variance of the torque (averaged over the operating points)")
+        ax.set_xlim(left=min(0.0, float(np.min(indices.first - indices.first_conf))))
+        ax.set_title(title)
+        ax.legend(fontsize=7, loc="lower right")
         out.tight_layout()
     return out
 

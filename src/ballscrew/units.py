@@ -34,7 +34,7 @@ def registry() -> pint.UnitRegistry:  # type: ignore[type-arg]
         return pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
 
 
-def to_si(field: str, value: Any, unit: str) -> float:
+def to_si(field: str, value: Any, unit: str | None) -> float:
     """Convert ``value`` to the SI unit ``unit`` and return the magnitude.
 
     Parameters
@@ -47,9 +47,11 @@ def to_si(field: str, value: Any, unit: str) -> float:
         quantity (``unit=""``): anywhere else it is an error that shows how
         to write it, since a number without a unit ("100" for a speed) is
         the commonest silent slip (rad/s or rpm? m or mm?).
-    unit : str
+    unit : str or None
         Target unit, in pint's notation ("m", "N", "rad", "rad/s", "degC"),
-        or "" for a dimensionless number.
+        or "" for a dimensionless number. None: whatever the value's unit is,
+        converted to SI base units, and a bare number taken as SI (the
+        convention of model parameters, whose units the models document).
 
     Examples
     --------
@@ -66,7 +68,8 @@ def to_si(field: str, value: Any, unit: str) -> float:
     """
     ureg = registry()
     if isinstance(value, bool):
-        raise BallScrewInputError(field, value, f"a quantity in units of {unit}, e.g. '1 {unit}'")
+        wanted = "a number" if unit is None else f"a quantity in units of {unit}, e.g. '1 {unit}'"
+        raise BallScrewInputError(field, value, wanted)
     try:
         if isinstance(value, int | float):
             if unit:
@@ -78,6 +81,8 @@ def to_si(field: str, value: Any, unit: str) -> float:
                 if unit:
                     raise _bare(field, value, unit)
                 magnitude = float(quantity.magnitude)
+            elif unit is None:
+                magnitude = float(quantity.to_base_units().magnitude)
             else:
                 magnitude = float(quantity.to(unit).magnitude)
     except BallScrewInputError:
@@ -96,9 +101,12 @@ def to_si(field: str, value: Any, unit: str) -> float:
             if isinstance(exc, pint.errors.DimensionalityError)
             else ("not a quantity")
         )
-        raise BallScrewInputError(
-            field, value, f"a quantity convertible to {unit} ({reason}), e.g. '1 {unit}'"
-        ) from None
+        wanted = (
+            "a number or a quantity with its unit"
+            if unit is None
+            else f"a quantity convertible to {unit} ({reason}), e.g. '1 {unit}'"
+        )
+        raise BallScrewInputError(field, value, wanted) from None
     if not math.isfinite(magnitude):
         raise BallScrewInputError(field, value, "a finite quantity")
     return magnitude
@@ -154,12 +162,13 @@ def range_size(text: str, default_points: int = 50) -> int:
     return raw.count(",") + 1
 
 
-def parse_range(field: str, text: str, unit: str, default_points: int = 50) -> list[float]:
+def parse_range(field: str, text: str, unit: str | None, default_points: int = 50) -> list[float]:
     """Parse ``"0..3000 rpm"``, ``"10..3000:31 rpm"`` or a list ``"20, 30, 45 degC"`` to SI values.
 
     ``a..b`` gives ``default_points`` evenly spaced values (``a..b:n`` gives
     ``n``; the count may also follow the unit); a comma-separated list gives
-    those values. The unit is written once, at the end.
+    those values. The unit is written once, at the end. ``unit`` is the SI
+    target unit, as for :func:`to_si`.
 
     Examples
     --------
