@@ -7,6 +7,7 @@ an internal error.
 from __future__ import annotations
 
 import math
+import os
 import signal
 import sys
 from pathlib import Path
@@ -27,6 +28,7 @@ from .cli_torque import torque
 from .contact import HERTZ_METHODS, hertz
 from .errors import BallScrewInputError
 from .examples import reference_screw
+from .files import record_signal, signal_received
 from .kinematics import rpm_to_rad_s
 from .state import operating_state
 
@@ -350,7 +352,14 @@ cli.add_command(sweep_command)
 
 
 def _terminate(signum: int, frame: object) -> None:
-    """Treat SIGTERM like Ctrl-C: unwind, keep only complete files, exit 130."""
+    """Treat SIGTERM like Ctrl-C: unwind, keep only complete files, exit 130.
+
+    The signal is also recorded: a library that turns the KeyboardInterrupt
+    raised inside its own code into another exception (numpy does, in a
+    comparison of structured arrays) must still end the run as interrupted,
+    not as an internal error.
+    """
+    record_signal(signum)
     raise KeyboardInterrupt
 
 
@@ -360,7 +369,9 @@ def main(argv: list[str] | None = None) -> None:
     Exit status: 0 on success, 2 on bad input (one line on stderr naming the
     field and the problem), 1 on an internal error, 130 when interrupted.
     """
+    record_signal(None)
     previous = signal.signal(signal.SIGTERM, _terminate)
+    previous_int = signal.signal(signal.SIGINT, _terminate)
     try:
         status = cli.main(args=argv, prog_name="ballscrew", standalone_mode=False)
     except BallScrewInputError as exc:
@@ -378,8 +389,19 @@ def main(argv: list[str] | None = None) -> None:
         click.echo(f"error: {exc.format_message()}", err=True)
         sys.exit(exc.exit_code)
     except Exception as exc:
+        if signal_received():  # the interrupt, turned into another exception on its way up
+            click.echo(
+                "interrupted: files already written are complete; nothing is half-written",
+                err=True,
+            )
+            sys.exit(130)
+        if os.environ.get("BALLSCREW_TRACEBACK"):
+            import traceback
+
+            traceback.print_exc()
         click.echo(f"internal error: {type(exc).__name__}: {exc}", err=True)
         sys.exit(1)
     finally:
         signal.signal(signal.SIGTERM, previous)
+        signal.signal(signal.SIGINT, previous_int)
     sys.exit(status if isinstance(status, int) else 0)

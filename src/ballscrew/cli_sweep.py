@@ -167,6 +167,7 @@ def sweep_command(
       ballscrew sweep examples/sweep_uncertainty.toml --out mc.zarr --workers 2
       ballscrew sweep big.toml --out big.zarr --scheduler tcp://127.0.0.1:8786
     """  # noqa: D301 - click needs the literal \b to keep the example lines
+    from .files import signal_received
     from .sweep import run_sweep
     from .sweep_spec import load_sweep
     from .sweep_store import partial_path
@@ -187,14 +188,16 @@ def sweep_command(
                 spec, target, workers=workers, scheduler=scheduler, restart=restart,
                 progress=step, notify=lambda text: console.print(text, highlight=False),
             )  # fmt: skip
-        except KeyboardInterrupt:
+        except (KeyboardInterrupt, Exception) as exc:
+            if not isinstance(exc, KeyboardInterrupt) and not signal_received():
+                raise
             click.echo(
                 f"interrupted: {counts[0]} of {counts[1]} chunks are kept in "
                 f"{partial_path(target.absolute())}; run the same command again to resume "
                 f"(--restart to start over); {target} was not written",
                 err=True,
             )
-            raise
+            raise KeyboardInterrupt from exc
     console_out = stdout(json_file)
     console_out.print(_summary_table(report))
     percentiles = _percentile_table(report.out)

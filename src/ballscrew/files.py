@@ -35,6 +35,27 @@ def _temporary(path: Path) -> Path:
     return path.parent / f".{path.name}.{secrets.token_hex(6)}.tmp"
 
 
+_RECEIVED: list[int] = []
+
+
+def record_signal(signum: int | None) -> None:
+    """Record that SIGINT or SIGTERM arrived (``None`` forgets earlier ones).
+
+    The command line's handlers call it before raising KeyboardInterrupt, so
+    that a library which turns that exception into another one on its way up
+    cannot make an interrupted run look like an internal error.
+    """
+    if signum is None:
+        _RECEIVED.clear()
+    else:
+        _RECEIVED.append(signum)
+
+
+def signal_received() -> bool:
+    """Whether SIGINT or SIGTERM has arrived since the last ``record_signal(None)``."""
+    return bool(_RECEIVED)
+
+
 @contextlib.contextmanager
 def deferred_signals() -> Iterator[None]:
     """Hold SIGINT and SIGTERM back for the duration of the block, then deliver them.
