@@ -287,3 +287,55 @@ def test_heat_balance_takes_the_bearing_span_as_the_screw_length(
     # would halve the cooled surface of a screw the user has described.
     assert json.loads(captured.out)["thermal"]["screw_length"] == 1.2
     assert "screw_length = 1200 mm (the bearing span" in captured.err
+
+
+def test_load_work_of_a_vertical_lift_is_the_force_times_speed_integral() -> None:
+    # A vertical axis accelerating up from rest at 1 m/s² for 0.5 s while cutting against
+    # 300 N: the work on the load, computed another way as the integral of F v dt with
+    # F = m (a + g) + F_p (g = 9.80665 m/s², standard gravity) on a fine grid, equals
+    # 1/2 m v^2 + m g h + F_p h. Tolerance: the fine grid's trapezoidal error (1e-8).
+    from ballscrew.energy import reverse_efficiency
+
+    t = np.linspace(0.0, 0.5, 5001)
+    a = np.ones_like(t)
+    p = Profile(t, 0.5 * t**2, t, a, np.full_like(t, 300.0))
+    axis = Axis(moving_mass=20.0, incline=math.pi / 2, dn_limit=FAST)
+    r = axis_cycle(p, reference_screw(), OIL, axis, model="catalog")
+    f = 20.0 * (1.0 + 9.80665) + 300.0
+    by_force = float(np.sum(0.5 * (f * t[1:] + f * t[:-1]) * np.diff(t)))
+    closed = 0.5 * 20.0 * 0.5**2 + 20.0 * 9.80665 * 0.125 + 300.0 * 0.125
+    assert r.load_work == pytest.approx(closed, rel=1e-12)
+    assert r.load_work == pytest.approx(by_force, rel=1e-8)
+    np.testing.assert_allclose(r.axial_force, f, rtol=1e-12)
+    # No axial load: no back-driving efficiency to speak of.
+    idle = Profile(t, 0.5 * t**2, t, a, np.zeros_like(t))
+    still = axis_cycle(idle, reference_screw(), OIL, Axis(moving_mass=0.0, dn_limit=FAST),
+                       model="catalog")  # fmt: skip
+    assert np.isnan(reverse_efficiency(still.friction, reference_screw().lead)).all()
+
+
+def test_slow_moves_split_their_energy_by_direction_and_gear_the_motor_speed() -> None:
+    # 1 mm/s out then back on a 10 mm lead: omega = 0.63 rad/s, below 1 rad/s. Every joule
+    # is out or back; the motor turns i times the screw.
+    t = np.linspace(0.0, 2.0, 201)
+    v = np.where(t < 1.0, 1e-3, -1e-3)
+    zero = np.zeros_like(t)
+    p = Profile(t, np.cumsum(v) * 0.01, v, zero, zero)
+    r = axis_cycle(p, reference_screw(), OIL, Axis(moving_mass=0.0, gear_ratio=3.0))
+    assert r.friction_energy_out > 0.0 and r.friction_energy_back > 0.0
+    assert r.friction_energy_out + r.friction_energy_back == pytest.approx(
+        r.friction_energy, rel=1e-12
+    )
+    np.testing.assert_allclose(r.motor_speed, 3.0 * 2 * math.pi * v / 0.01, rtol=1e-12)
+
+
+@pytest.mark.parametrize("incline, ok", [(math.pi / 2, True), (-math.pi / 2, True),
+                                         (1.58, False), (-1.58, False)])  # fmt: skip
+def test_incline_from_straight_down_to_straight_up(incline: float, ok: bool) -> None:
+    from ballscrew.errors import BallScrewInputError
+
+    if ok:
+        assert Axis(moving_mass=1.0, incline=incline).incline == incline
+    else:
+        with pytest.raises(BallScrewInputError, match="incline"):
+            Axis(moving_mass=1.0, incline=incline)
