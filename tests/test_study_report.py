@@ -139,7 +139,7 @@ def test_controller_figure_is_the_stribeck_form_fitted_to_the_complete_curve(
 
 
 def test_sensitivity_finding_follows_the_indices(study: StudyResult) -> None:
-    from ballscrew.study import _sensitivity_finding
+    from ballscrew.study_sensitivity import sensitivity_finding as _sensitivity_finding
 
     s = study.sensitivity
     assert s is not None and s.evaluations == s.base_samples * (len(s.inputs) + 2)

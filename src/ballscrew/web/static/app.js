@@ -354,7 +354,7 @@
     if (!e) return;
     const eff = (v) => {
       if (v === null) return "none (no axial load)";
-      return v <= 0 ? `${fmt(100 * v)} % (self-locking)` : `${fmt(100 * v)} %`;
+      return v <= 0 ? `${fmt(100 * v)} % (the load cannot back-drive the screw at this load)` : `${fmt(100 * v)} %`;
     };
     const rows = [
       ["move", `${e.move}, out and back at ${fmt(e.temperature_C)} °C`],
