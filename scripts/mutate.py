@@ -110,6 +110,11 @@ def main() -> None:
     parser.add_argument("files", nargs="+", type=Path)
     parser.add_argument("--tests", nargs="*", default=["tests", "src"], help="pytest targets")
     parser.add_argument("--limit", type=int, default=0, help="at most this many per file")
+    parser.add_argument(
+        "--timeout", type=float, default=300.0,
+        help="seconds per mutant's test run; a run that hangs (a mutant that makes a loop "
+        "endless) counts as killed",
+    )  # fmt: skip
     args = parser.parse_args()
     # SIGTERM unwinds like Ctrl-C, so the finally below restores the file being mutated.
     signal.signal(signal.SIGTERM, signal.default_int_handler)
@@ -125,13 +130,18 @@ def main() -> None:
         try:
             for k, m in enumerate(todo, 1):
                 path.write_text(mutated(original, m.index), "utf-8")
-                run = subprocess.run(
-                    [python, "-m", "pytest", "-x", "-q", "-p", "no:cacheprovider", *args.tests],
-                    capture_output=True,
-                    text=True,
-                    check=False,
-                )
-                killed = run.returncode != 0
+                try:
+                    run = subprocess.run(
+                        [python, "-m", "pytest", "-x", "-q", "-p", "no:cacheprovider",
+                         *args.tests],
+                        capture_output=True,
+                        text=True,
+                        check=False,
+                        timeout=args.timeout,
+                    )  # fmt: skip
+                    killed = run.returncode != 0
+                except subprocess.TimeoutExpired:
+                    killed = True
                 totals["killed" if killed else "survived"] += 1
                 if not killed:
                     survivors.append(m)
