@@ -206,8 +206,8 @@ def sweep_command(
     for model, s in report.sobol.items():
         console_out.print(_sobol_table(model, s))
     figures = _figures(target, report)
-    for note in report.issues:
-        click.echo(f"note: {note}", err=True)
+    for line in report.issues:  # "warning: ..." or, for routine ranges, "note: ..."
+        click.echo(line, err=True)
     rate = report.points_per_second
     parts = [f"{report.plan.points:,} points in {report.plan.n_chunks} chunks",
              f"{report.computed} computed {report.mode}"]  # fmt: skip

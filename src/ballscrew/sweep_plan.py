@@ -212,7 +212,9 @@ def compute_chunk(plan: Plan, index: int) -> tuple[dict[str, FloatArray], ChunkR
             components[(*local, plan.components.index(name))] = value
         for issue in r.warnings:
             if issue.quantity not in issues or issue.excess > issues[issue.quantity][0]:
-                issues[issue.quantity] = (issue.excess, issue.note())
+                # Routine ranges (left by every ordinary ball screw) are notes; the rest warn.
+                kind = "note" if issue.routine else "warning"
+                issues[issue.quantity] = (issue.excess, f"{kind}: {issue.note()}")
     out["components"] = components
     stats = {}
     for name in ("torque", "efficiency", "power_loss"):
