@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pytest
@@ -225,27 +226,37 @@ def test_energy_report_files_are_complete_and_reproducible(
     assert "{" not in report and "{" not in outputs[0][Path("data/summary.csv")].decode()
 
 
-def test_energy_json_has_the_documented_keys_and_states_its_assumptions(
-    tmp_path: Path, capsys: pytest.CaptureFixture[str]
-) -> None:
+def _energy_json(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], axis_line: str, args: list[str]
+) -> tuple[Path, dict[str, Any], Any]:
+    """Run ``ballscrew energy --json -`` on the 40 x 10 axis with one more [axis] line."""
     import json
 
     from ballscrew.cli import main
-    from ballscrew.thermal import estimated_screw_length
 
     case = tmp_path / "axis.toml"
     case.write_text(
         '[screw]\npitch_diameter = "40 mm"\nlead = "10 mm"\nball_diameter = "6.35 mm"\n'
         'preload = "2 kN"\n[lubricant]\nname = "mineral ISO VG 68"\n'
-        '[axis]\nmoving_mass = "200 kg"\nbearing_bore = "30 mm"\n'
+        f'[axis]\nmoving_mass = "200 kg"\n{axis_line}\n'
     )
     with pytest.raises(SystemExit) as info:
-        main(["energy", "--case", str(case), "--move",
-              "stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2", "--steady-speeds",
-              "500, 1500 rpm", "--json", "-"])  # fmt: skip
+        main(["energy", "--case", str(case), *args, "--json", "-"])
     assert info.value.code == 0
     captured = capsys.readouterr()
-    payload = json.loads(captured.out)
+    return case, json.loads(captured.out), captured
+
+
+def test_energy_json_has_the_documented_keys_and_states_its_assumptions(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    from ballscrew.thermal import estimated_screw_length
+
+    case, payload, captured = _energy_json(
+        tmp_path, capsys, 'bearing_bore = "30 mm"',
+        ["--move", "stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2", "--steady-speeds",
+         "500, 1500 rpm"],
+    )  # fmt: skip
     for key in ("friction_energy_J", "bearing_energy_J", "constant_efficiency_energy_J",
                 "peak_motor_torque_Nm", "rms_motor_torque_Nm", "forward_efficiency",
                 "reverse_efficiency", "final_temperature_C"):  # fmt: skip
@@ -268,24 +279,13 @@ def test_energy_json_has_the_documented_keys_and_states_its_assumptions(
 def test_heat_balance_takes_the_bearing_span_as_the_screw_length(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    import json
-
-    from ballscrew.cli import main
-
-    case = tmp_path / "axis.toml"
-    case.write_text(
-        '[screw]\npitch_diameter = "40 mm"\nlead = "10 mm"\nball_diameter = "6.35 mm"\n'
-        'preload = "2 kN"\n[lubricant]\nname = "mineral ISO VG 68"\n'
-        '[axis]\nmoving_mass = "200 kg"\nbearing_span = "1.2 m"\n'
-    )
-    with pytest.raises(SystemExit) as info:
-        main(["energy", "--case", str(case), "--move",
-              "stroke=300 mm, feed=10 m/min, acceleration=2 m/s^2", "--json", "-"])  # fmt: skip
-    assert info.value.code == 0
-    captured = capsys.readouterr()
+    _, payload, captured = _energy_json(
+        tmp_path, capsys, 'bearing_span = "1.2 m"',
+        ["--move", "stroke=300 mm, feed=10 m/min, acceleration=2 m/s^2"],
+    )  # fmt: skip
     # The screw between its supports is at least the span: a 0.6 m estimate from the stroke
     # would halve the cooled surface of a screw the user has described.
-    assert json.loads(captured.out)["thermal"]["screw_length"] == 1.2
+    assert payload["thermal"]["screw_length"] == 1.2
     assert "screw_length = 1200 mm (the bearing span" in captured.err
 
 

@@ -327,6 +327,19 @@ def _csv(fig_series: Any) -> bytes:
     return buffer.getvalue().encode("utf-8")
 
 
+def _write_figure(folder: Path, key: str, drawing: Any, table: bytes, written: list[Path]) -> bytes:
+    """Write a figure as PNG and SVG and its data as CSV; return the PNG for the HTML."""
+    png = figure_bytes(drawing, "png")
+    for path, data in (
+        (folder / "figures" / f"{key}.png", png),
+        (folder / "figures" / f"{key}.svg", figure_bytes(drawing, "svg")),
+        (folder / "data" / f"{key}.csv", table),
+    ):
+        atomic_write(path, data)
+        written.append(path)
+    return png
+
+
 def write_report(
     result: StudyResult,
     out: str | Path,
@@ -349,28 +362,14 @@ def write_report(
         step(f"drawing {fig.key}")
         band_source = "Kamalzadeh, via the study" if result.reproduction else "given in the case"
         drawing = render(fig, result.case.measured_range, result.measured, band_source)
-        png = figure_bytes(drawing, "png")
-        images[fig.key] = png
-        for path, data in (
-            (folder / "figures" / f"{fig.key}.png", png),
-            (folder / "figures" / f"{fig.key}.svg", figure_bytes(drawing, "svg")),
-            (folder / "data" / f"{fig.key}.csv", _csv(fig.series)),
-        ):
-            atomic_write(path, data)
-            written.append(path)
+        images[fig.key] = _write_figure(folder, fig.key, drawing, _csv(fig.series), written)
     if result.sensitivity is not None:
         step(f"drawing {SENSITIVITY_KEY}")
         drawing = sensitivity_figure(result.sensitivity.indices_labelled(), "Uncertainty of the "
                                      "complete model's torque: share of its variance")  # fmt: skip
-        png = figure_bytes(drawing, "png")
-        images[SENSITIVITY_KEY] = png
-        for path, data in (
-            (folder / "figures" / f"{SENSITIVITY_KEY}.png", png),
-            (folder / "figures" / f"{SENSITIVITY_KEY}.svg", figure_bytes(drawing, "svg")),
-            (folder / "data" / f"{SENSITIVITY_KEY}.csv", _sensitivity_csv(result.sensitivity)),
-        ):
-            atomic_write(path, data)
-            written.append(path)
+        images[SENSITIVITY_KEY] = _write_figure(
+            folder, SENSITIVITY_KEY, drawing, _sensitivity_csv(result.sensitivity), written
+        )
     step("writing the report")
     blocks = _document(result)
     title = f"Ball screw friction study: {result.case.title}"  # same as the h1
