@@ -1,6 +1,6 @@
 r"""Uncertainty propagation and global sensitivity: sampling and Sobol indices (SALib).
 
-The uncertain inputs are :class:`~ballscrew.sweep_spec.Distribution` objects
+The uncertain inputs are :class:`~ballscrew.sweep_uncertainty.Distribution` objects
 (normal, uniform, lognormal, in SI). Two designs, both seeded and so
 repeatable:
 
@@ -37,7 +37,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .errors import BallScrewInputError, FloatArray
-from .sweep_spec import Distribution
+from .sweep_uncertainty import Distribution
 
 __all__ = ["SobolIndices", "problem", "sample", "sobol_indices"]
 

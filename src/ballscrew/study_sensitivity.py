@@ -19,7 +19,7 @@ import numpy as np
 from .case import Case
 from .chain import friction_torque as chain_friction_torque
 from .sensitivity import SobolIndices
-from .sweep_spec import Distribution
+from .sweep_uncertainty import Distribution
 
 __all__ = [
     "SOBOL_BASE_SAMPLES",
@@ -158,7 +158,7 @@ def study_sensitivity(
     parameter set, evaluated over every speed in one friction call.
     """
     from .sensitivity import sample, sobol_indices
-    from .sweep_spec import resolve
+    from .sweep_fields import resolve
 
     inputs = uncertain_inputs(case, preloads)
     dists = [i.distribution for i in inputs]
