@@ -142,3 +142,27 @@ def test_case_file_bearing_keys_reach_the_axis() -> None:
     axis = Axis(**case.axis)
     assert (axis.bearing_outer_diameter, axis.bearing_static_rating) == (0.062, 40e3)
     assert axis.bearing_lubrication == "oil"
+
+
+def test_factor_tables_are_the_printed_ones() -> None:
+    # Transcribed from the catalogues: SKF's mu (Rolling bearings, "estimating the frictional
+    # moment") and Schaeffler HR 1's f0 for grease / oil (pp. 57-59).
+    from ballscrew.bearings import SKF_FRICTION_COEFFICIENTS
+
+    assert SKF_FRICTION_COEFFICIENTS == {
+        "deep-groove ball": 0.0015,
+        "angular-contact ball, single row": 0.0020,
+        "angular-contact ball, double row": 0.0024,
+        "four-point contact ball": 0.0024,
+        "thrust ball": 0.0013,
+    }
+    printed = {
+        "angular-contact ball, single row": (2.0, 3.0),
+        "angular-contact ball, double row": (4.0, 6.0),
+        "four-point contact ball": (2.7, 4.0),
+        "thrust ball": (1.0, 1.5),
+        "screw-support (ZKLN, ZKLF)": (4.0, 6.0),
+    }
+    for name, (grease, oil) in printed.items():
+        spec = PALMGREN_BEARINGS[name]
+        assert (spec.f0_grease, spec.f0_oil) == (grease, oil), name

@@ -122,3 +122,49 @@ def test_rotating_cylinder_correlation_warns_past_its_reynolds_range() -> None:
     with w.catch_warnings():
         w.simplefilter("error")
         convection_coefficient(0.04, 3000 * math.pi / 30, 40.0, 20.0)
+
+
+@pytest.mark.parametrize("length, resistance", [(0.7, None), (1.3, 2.5)])
+def test_cycle_conductance_is_convection_over_the_screw_plus_the_machine_path(
+    length: float, resistance: float | None
+) -> None:
+    # G = h pi d L + 1/R_m, with h the rotating-cylinder value at the cycle's RMS speed and
+    # the steady temperature, recomputed here; no machine path when R_m is None.
+    from ballscrew.thermal import _rms_speed
+
+    screw = reference_screw()
+    node = ThermalNode(screw_length=length, ambient=20.0, machine_resistance=resistance)
+    s = steady_temperature(CYCLE, screw, "mineral ISO VG 68", Axis(moving_mass=200.0), node)
+    h = float(convection_coefficient(0.04, _rms_speed(CYCLE, screw), s.temperature, 20.0))
+    expected = h * math.pi * 0.04 * length + (0.0 if resistance is None else 1.0 / resistance)
+    assert s.conductance == pytest.approx(expected, rel=1e-12)
+
+
+def test_heat_capacity_of_a_bare_screw_and_the_history_from_ambient() -> None:
+    # No nut mass given: the steel cylinder alone, 7850 * pi/4 * d^2 * L * 460 J/K.
+    screw = reference_screw()
+    node = ThermalNode(screw_length=0.7)
+    assert node.heat_capacity(screw) == pytest.approx(7850 * math.pi / 4 * 0.04**2 * 0.7 * 460.0)
+    t, temp = temperature_history(CYCLE, screw, "mineral ISO VG 68", Axis(moving_mass=200.0),
+                                  node, 600.0, model="catalog", points=11)  # fmt: skip
+    assert t[0] == 0.0 and t[-1] == 600.0 and temp[0] == 20.0
+
+
+def test_a_node_that_cannot_shed_its_heat_names_the_speed_and_the_limit() -> None:
+    # 1 mm of screw in still air at 3000 rpm: the friction cannot leave below 200 K above the
+    # ambient, and the message says the limit in °C.
+    from ballscrew.errors import BallScrewInputError
+    from ballscrew.thermal import steady_at_speeds
+
+    node = ThermalNode(screw_length=1e-3, ambient=25.0)
+    with pytest.raises(BallScrewInputError, match="shed below 225 °C"):
+        steady_at_speeds(reference_screw(), "mineral ISO VG 68", node, [314.0])
+
+
+def test_estimated_length_of_a_single_nut_counts_its_turns_once() -> None:
+    # travel + (turns + 1) * circuits * lead + 4 d, the nut counted once for a single nut.
+    from ballscrew.thermal import estimated_screw_length
+
+    s = reference_screw().replace(nut="single", preload=0.0)
+    expected = 0.3 + (s.loaded_turns + 1.0) * s.circuits * s.lead + 4 * s.pitch_diameter
+    assert estimated_screw_length(s, 0.3) == pytest.approx(expected, rel=1e-12)
