@@ -106,3 +106,13 @@ def test_axis_refuses_unknown_supports_and_bad_spans() -> None:
         Axis(moving_mass=1.0, bearing_span=-1.0)
     with pytest.raises(BallScrewInputError, match="dn_limit"):
         Axis(moving_mass=1.0, dn_limit=0.0)
+
+
+def test_critical_speed_message_gives_the_span_and_root_in_mm() -> None:
+    # A designer checks the message against the drawing: 1500 mm span, 33.5 mm root.
+    from ballscrew.limits import speed_limit_issues
+
+    (message,) = speed_limit_issues(reference_screw(), 3000 * math.pi / 30, span=1.5,
+                                    support="fixed-free", root=0.0335,
+                                    dn_limit=1e9)  # fmt: skip
+    assert "fixed-free span of 1500 mm, root diameter 33.5 mm" in message

@@ -99,3 +99,78 @@ def test_trajectory_from_csv_with_units_and_decimal_commas() -> None:
         with pytest.raises(BallScrewInputError) as info:
             read_trajectory(bad)
         assert words in str(info.value)
+
+
+@pytest.mark.parametrize(("s", "j"), [(0.3, 50.0), (0.01, 50.0)])
+def test_s_curve_speed_is_the_derivative_of_its_position(s: float, j: float) -> None:
+    # Inside each phase x(t) is a cubic: a centred difference of positions on three samples
+    # of one phase gives v to O(dt^2 j) (1e-4 s, 50 m/s^3: 1e-7 m/s). The jerk phases'
+    # position errors cancel at the end of a move, so only this check sees them.
+    p = move(s, 0.5, 2.0, jerk=j, sample_time=1e-4)
+    numeric = (p.position[2:] - p.position[:-2]) / (p.time[2:] - p.time[:-2])
+    jerk = np.diff(p.acceleration) / np.diff(p.time)
+    same_phase = np.abs(jerk[1:] - jerk[:-1]) < 1e-6 * j  # both intervals in one phase
+    np.testing.assert_allclose(numeric[same_phase], p.speed[1:-1][same_phase], atol=1e-6)
+    accel = (p.speed[2:] - p.speed[:-2]) / (p.time[2:] - p.time[:-2])
+    np.testing.assert_allclose(accel[same_phase], p.acceleration[1:-1][same_phase], atol=1e-6)
+
+
+def test_a_one_metre_move_the_force_over_the_whole_move_and_rest_at_the_end() -> None:
+    # 1 m at 0.5 m/s and 2 m/s²: 1/0.5 + 0.5/2 s. No window: the force on every sample,
+    # from x = 0 to x = s included; the move ends with a = v = 0.
+    p = move(1.0, 0.5, 2.0, process_force=100.0)
+    assert p.duration == pytest.approx(2.25, rel=1e-12)
+    assert float(p.position[-1]) == pytest.approx(1.0, rel=1e-12)
+    np.testing.assert_array_equal(p.process_force, 100.0)
+    assert float(p.acceleration[-1]) == 0.0 and float(p.speed[-1]) == 0.0
+    still = move(0.0, 0.5, 2.0)
+    assert float(np.abs(still.position).max()) == 0.0
+
+
+def test_dwell_samples_and_place() -> None:
+    d = dwell(1.0, sample_time=0.25)
+    np.testing.assert_allclose(d.time, [0.0, 0.25, 0.5, 0.75, 1.0])
+    np.testing.assert_array_equal(d.position, 0.0)
+    np.testing.assert_array_equal(dwell(0.5, position=0.2).position, 0.2)
+
+
+def test_chain_moves_each_piece_to_where_the_last_ended() -> None:
+    # A trajectory recorded from t = 5 s at x = 0.1 m, twice: the chain starts at 0 s and
+    # 0 m, the second copy starts where the first ended, and the duration is the sum.
+    from ballscrew.motion import read_trajectory
+
+    rec = read_trajectory("time [s],position [m]\n5,0.1\n5.5,0.15\n6,0.3\n")
+    assert rec.duration == pytest.approx(1.0, rel=1e-12)
+    c = chain(rec, rec)
+    np.testing.assert_allclose(c.time, [0.0, 0.5, 1.0, 1.5, 2.0])
+    np.testing.assert_allclose(c.position, [0.0, 0.05, 0.2, 0.25, 0.4], atol=1e-15)
+
+
+def test_back_and_forth_defaults_one_cycle_no_dwell_no_force() -> None:
+    c = back_and_forth(0.3, 0.5, 2.0)
+    assert c.duration == pytest.approx(2 * 0.85, rel=1e-12)
+    assert not c.process_force.any()
+    assert float(c.position[-1]) == pytest.approx(0.0, abs=1e-12)
+
+
+def test_profiles_need_two_samples_at_increasing_times() -> None:
+    from ballscrew.motion import Profile
+
+    two = np.array([0.0, 1.0])
+    assert Profile(two, two, two, two, two).duration == 1.0
+    same = np.array([0.0, 0.0, 1.0])
+    with pytest.raises(BallScrewInputError, match="time"):
+        Profile(same, same, same, same, same)
+
+
+def test_trajectory_errors_name_the_line_and_the_header() -> None:
+    from ballscrew.motion import read_trajectory
+
+    # Line 1 is the header: the third line holds the time that does not increase.
+    with pytest.raises(BallScrewInputError, match="line 3"):
+        read_trajectory("time [s],position [mm]\n0,0\n0,1\n1,2\n")
+    with pytest.raises(BallScrewInputError, match=r"time \[s\],force \[N\]"):
+        read_trajectory("time [s],force [N]\n0,0\n1,1\n")
+    # Speeds integrated by the trapezoidal rule over steps of 2 s: 0 + 2 * (0 + 1)/2 + ...
+    q = read_trajectory("time [s],speed [m/s]\n0,0\n2,1\n4,1\n")
+    np.testing.assert_allclose(q.position, [0.0, 1.0, 3.0])

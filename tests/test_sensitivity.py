@@ -109,3 +109,20 @@ def test_cli_writes_the_sensitivity_figure(
     png = tmp_path / "u.zarr.sensitivity-catalog.png"
     assert png.read_bytes().startswith(b"\x89PNG")
     assert "Sobol indices of the mean torque: catalog" in out and "P95" in out
+
+
+def test_smallest_sobol_sample_and_a_constant_output() -> None:
+    # N = 2 is the smallest power of two Saltelli's scheme takes: 2 (D + 2) rows. An output
+    # that does not vary has every index 0; outputs of the wrong count are named with D + 2.
+    from ballscrew.errors import BallScrewInputError
+
+    inputs = [
+        Distribution("a", "uniform", 0.0, 1.0, ""),
+        Distribution("b", "uniform", 0.0, 1.0, ""),
+    ]
+    rows = sample(inputs, 2, 1, sobol=True)
+    assert rows.shape == (2 * (2 + 2), 2)
+    flat = sobol_indices(inputs, np.full(rows.shape[0], 3.0), 1)
+    assert not np.any(flat.total) and not np.any(flat.first)
+    with pytest.raises(BallScrewInputError, match="multiple of D \\+ 2 = 4"):
+        sobol_indices(inputs, np.ones(7), 1)
