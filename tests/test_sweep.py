@@ -304,3 +304,46 @@ def test_example_sweep_files_are_valid(name: str) -> None:
     path = Path(__file__).resolve().parents[1] / "examples" / name
     plan = plan_sweep(load_sweep(path))  # every grid point is checked here
     assert plan.points > 0 and plan.dims[-3:] == ("speed", "temperature", "axial_load")
+
+
+def test_uneven_chunks_hold_every_point_of_a_direct_grid(tmp_path: Path) -> None:
+    # chunk_points = 5 cuts the operating grid (7 x 2 x 2) inside its dimensions, so chunks
+    # start at non-zero offsets everywhere; the whole store equals one broadcast friction
+    # call per preload, assembled here independently of the chunking.
+    text = (
+        f'case = "{CASE.as_posix()}"\nmodels = ["complete"]\nchunk_points = 5\n[axes]\n'
+        'speed = "10..3000:7 rpm"\ntemperature = "20, 40 degC"\naxial_load = "0, 1 kN"\n'
+        '"screw.preload" = "0.8, 1.2, 1.6 kN"\n'
+    )
+    out = tmp_path / "uneven.zarr"
+    report = run_sweep(parse_sweep(text), out)
+    assert report.plan.n_chunks > 12
+    case = load_case(CASE)
+    w = np.linspace(10.0, 3000.0, 7) * np.pi / 30
+    with xr.open_zarr(out) as ds:
+        stored = ds["torque"].values
+    for k, preload in enumerate((800.0, 1200.0, 1600.0)):
+        direct = friction_torque(
+            case.screw.replace(preload=preload), case.lubricant, speed=w[:, None, None],
+            temperature=np.array([20.0, 40.0])[None, :, None],
+            axial_load=np.array([0.0, 1000.0])[None, None, :],
+        ).total  # fmt: skip
+        np.testing.assert_allclose(stored[0, k], direct, rtol=1e-12)
+
+
+def test_chunk_report_time_and_memory() -> None:
+    # The report's seconds lie within the wall time of the call; its peak memory is the
+    # process's high-water mark (Linux: VmHWM of /proc/self/status, in kB).
+    from ballscrew.sweep_plan import compute_chunk
+
+    plan = plan_sweep(parse_sweep(SWEEP))
+    began = time.perf_counter()
+    _, report = compute_chunk(plan, 0)
+    wall = time.perf_counter() - began
+    assert 0.0 < report.seconds <= wall
+    status = Path("/proc/self/status")
+    if status.exists():
+        line = next(x for x in status.read_text().splitlines() if x.startswith("VmHWM:"))
+        hwm = int(line.split()[1]) * 1024
+        # Both are the same high-water mark; memory touched between the two reads moves it.
+        assert report.peak_rss == pytest.approx(hwm, rel=0.05)
