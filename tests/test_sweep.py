@@ -307,17 +307,18 @@ def test_example_sweep_files_are_valid(name: str) -> None:
 
 
 def test_uneven_chunks_hold_every_point_of_a_direct_grid(tmp_path: Path) -> None:
-    # chunk_points = 5 cuts the operating grid (7 x 2 x 2) inside its dimensions, so chunks
-    # start at non-zero offsets everywhere; the whole store equals one broadcast friction
+    # chunk_points = 8 cuts the 7 speeds of the operating grid (7 x 2 x 2) into pieces of
+    # two (the last of one), starting at non-zero offsets; the whole store equals one
+    # broadcast friction
     # call per preload, assembled here independently of the chunking.
     text = (
-        f'case = "{CASE.as_posix()}"\nmodels = ["complete"]\nchunk_points = 5\n[axes]\n'
+        f'case = "{CASE.as_posix()}"\nmodels = ["complete"]\nchunk_points = 8\n[axes]\n'
         'speed = "10..3000:7 rpm"\ntemperature = "20, 40 degC"\naxial_load = "0, 1 kN"\n'
         '"screw.preload" = "0.8, 1.2, 1.6 kN"\n'
     )
     out = tmp_path / "uneven.zarr"
     report = run_sweep(parse_sweep(text), out)
-    assert report.plan.n_chunks > 12
+    assert report.plan.chunks == (1, 1, 2, 2, 2) and report.plan.n_chunks == 3 * 4
     case = load_case(CASE)
     w = np.linspace(10.0, 3000.0, 7) * np.pi / 30
     with xr.open_zarr(out) as ds:
