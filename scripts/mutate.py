@@ -111,6 +111,11 @@ def main() -> None:
     parser.add_argument("--tests", nargs="*", default=["tests", "src"], help="pytest targets")
     parser.add_argument("--limit", type=int, default=0, help="at most this many per file")
     parser.add_argument(
+        "--lines", default="",
+        help="only the mutants on these lines, e.g. '12,40,41' (to rerun the survivors of an "
+        "earlier run after writing tests)",
+    )  # fmt: skip
+    parser.add_argument(
         "--timeout", type=float, default=300.0,
         help="seconds per mutant's test run; a run that hangs (a mutant that makes a loop "
         "endless) counts as killed",
@@ -123,6 +128,9 @@ def main() -> None:
     for path in args.files:
         original = path.read_text("utf-8")
         todo = mutants(original)
+        if args.lines:
+            wanted = {int(x) for x in args.lines.split(",") if x.strip()}
+            todo = [m for m in todo if m.line in wanted]
         if args.limit:
             todo = todo[: args.limit]
         survivors = []
