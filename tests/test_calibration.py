@@ -303,3 +303,46 @@ def test_of_two_unseen_directions_the_least_sensitive_parameter_is_held() -> Non
     for name in ("preload", "ball_train_constant"):
         assert three.estimates[name].identified
         assert three.estimates[name].value == pytest.approx(both.estimates[name].value, rel=1e-3)
+
+
+def test_residuals_signs_and_the_correlation_diagonal() -> None:
+    # Residuals are model minus measurement: a reading tripled lies far above the fit that
+    # leaves it out, so its residual is negative; each parameter correlates with itself by 1.
+    _, _, torque = _truth()
+    spoiled = torque.copy()
+    spoiled[4] *= 3.0
+    r = _fit(spoiled)
+    assert r.outliers == (4,) and float(r.residuals[4]) < -torque[4]
+    np.testing.assert_array_equal(np.diag(r.correlation), 1.0)
+
+
+@pytest.mark.parametrize("points, warned", [(4, True), (5, False)])
+def test_few_degrees_of_freedom_warn_below_three(points: int, warned: bool) -> None:
+    # Two free parameters: 4 points leave 2 degrees of freedom (warned), 5 leave 3 (not).
+    w, t, torque = _truth()
+    rows = np.linspace(0, torque.size - 1, points).round().astype(int)
+    curve = MeasuredCurve(w[rows], torque[rows], "few", temperature=t[rows])
+    r = fit_parameters(reference_screw(), OIL, curve, ["preload", "ball_train_constant"])
+    assert any("degree(s) of freedom" in x for x in r.warnings) is warned
+
+
+@pytest.mark.parametrize("spoiled, dropped", [(4, True), (5, False)])
+def test_outliers_are_at_most_a_fifth_of_the_points(spoiled: int, dropped: bool) -> None:
+    # 24 points: 4 wild readings (17 %) are outliers; 5 (21 %) are more than a fifth, so the
+    # model is taken to miss the data's shape and nothing is left out.
+    _, _, torque = _truth()
+    rng = np.random.default_rng(4)
+    data = torque * (1.0 + 0.01 * rng.standard_normal(torque.size))
+    data[[1, 6, 11, 16, 21][:spoiled]] *= 3.0
+    r = _fit(data)
+    assert (len(r.outliers) == spoiled) is dropped
+    assert dropped or r.outliers == ()
+
+
+def test_a_log_parameter_cannot_start_at_zero() -> None:
+    w, t, torque = _truth()
+    curve = MeasuredCurve(w, torque, "s", temperature=t)
+    # A single nut without preload: its preload cannot seed a fit in log space.
+    single = reference_screw().replace(nut="single", preload=0.0)
+    with pytest.raises(BallScrewInputError, match="positive start value"):
+        fit_parameters(single, OIL, curve, ["preload"])
