@@ -312,6 +312,31 @@ def test_load_work_of_a_vertical_lift_is_the_force_times_speed_integral() -> Non
     still = axis_cycle(idle, reference_screw(), OIL, Axis(moving_mass=0.0, dn_limit=FAST),
                        model="catalog")  # fmt: skip
     assert np.isnan(reverse_efficiency(still.friction, reference_screw().lead)).all()
+    # A load of 0.5 N is still a load: its back-driving efficiency is a (very negative)
+    # number, 1 - 2 pi T / (F l), not "no load".
+    light = Profile(t, 0.5 * t**2, t, a, np.full_like(t, 0.5))
+    weak = axis_cycle(light, reference_screw(), OIL, Axis(moving_mass=0.0, dn_limit=FAST),
+                      model="catalog")  # fmt: skip
+    eta = reverse_efficiency(weak.friction, reference_screw().lead)
+    expected = 1.0 - 2 * math.pi * weak.friction.total / (0.5 * reference_screw().lead)
+    np.testing.assert_allclose(eta, expected, rtol=1e-12)
+
+
+def test_load_work_of_a_lift_caught_in_motion() -> None:
+    # The same lift recorded from t = 0.25 s to 0.5 s: it starts at 0.25 m/s and 31.25 mm,
+    # and ends at 0.5 m/s and 125 mm. The work on the load is the change of kinetic and
+    # potential energy plus the process force's work, 1/2 m (v1^2 - v0^2) + (m g + F_p)
+    # (x1 - x0); computed another way as the integral of F v dt (tolerance: the fine
+    # grid's trapezoidal error, 1e-8).
+    t = np.linspace(0.25, 0.5, 5001)
+    p = Profile(t, 0.5 * t**2, t, np.ones_like(t), np.full_like(t, 300.0))
+    axis = Axis(moving_mass=20.0, incline=math.pi / 2, dn_limit=FAST)
+    r = axis_cycle(p, reference_screw(), OIL, axis, model="catalog")
+    f = 20.0 * (1.0 + 9.80665) + 300.0
+    by_force = float(np.sum(0.5 * (f * t[1:] + f * t[:-1]) * np.diff(t)))
+    closed = 0.5 * 20.0 * (0.25 - 0.0625) + (20.0 * 9.80665 + 300.0) * (0.125 - 0.03125)
+    assert r.load_work == pytest.approx(closed, rel=1e-12)
+    assert r.load_work == pytest.approx(by_force, rel=1e-8)
 
 
 def test_slow_moves_split_their_energy_by_direction_and_gear_the_motor_speed() -> None:

@@ -219,13 +219,10 @@ def compute_chunk(plan: Plan, index: int) -> tuple[dict[str, FloatArray], ChunkR
     stats = {}
     for name in ("torque", "efficiency", "power_loss"):
         values = out[name]
-        offset = np.ravel_multi_index(
-            tuple(s.start for s in region), plan.shape
-        )  # the chunk's first point, as a flat index of the whole grid
         lo, hi = int(np.nanargmin(values)), int(np.nanargmax(values))
         stats[name] = {
-            "min": [float(values.flat[lo]), _flat(plan, region, lo, offset)],
-            "max": [float(values.flat[hi]), _flat(plan, region, hi, offset)],
+            "min": [float(values.flat[lo]), _flat(plan, region, lo)],
+            "max": [float(values.flat[hi]), _flat(plan, region, hi)],
             "sum": [float(np.nansum(values)), float(np.count_nonzero(np.isfinite(values)))],
         }
     report = ChunkReport(
@@ -235,7 +232,7 @@ def compute_chunk(plan: Plan, index: int) -> tuple[dict[str, FloatArray], ChunkR
     return out, report
 
 
-def _flat(plan: Plan, region: tuple[slice, ...], local: int, offset: int) -> float:
+def _flat(plan: Plan, region: tuple[slice, ...], local: int) -> float:
     """Flat index in the whole grid of the chunk's flat position ``local``."""
     where = np.unravel_index(local, tuple(s.stop - s.start for s in region))
     return float(
