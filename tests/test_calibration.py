@@ -316,9 +316,10 @@ def test_residuals_signs_and_the_correlation_diagonal() -> None:
     np.testing.assert_array_equal(np.diag(r.correlation), 1.0)
 
 
-@pytest.mark.parametrize("points, warned", [(4, True), (5, False)])
+@pytest.mark.parametrize("points, warned", [(3, True), (4, True), (5, False)])
 def test_few_degrees_of_freedom_warn_below_three(points: int, warned: bool) -> None:
-    # Two free parameters: 4 points leave 2 degrees of freedom (warned), 5 leave 3 (not).
+    # Two free parameters: 3 and 4 points leave 1 and 2 degrees of freedom (warned), 5 leave
+    # 3 (not).
     w, t, torque = _truth()
     rows = np.linspace(0, torque.size - 1, points).round().astype(int)
     curve = MeasuredCurve(w[rows], torque[rows], "few", temperature=t[rows])
@@ -346,3 +347,17 @@ def test_a_log_parameter_cannot_start_at_zero() -> None:
     single = reference_screw().replace(nut="single", preload=0.0)
     with pytest.raises(BallScrewInputError, match="positive start value"):
         fit_parameters(single, OIL, curve, ["preload"])
+
+
+def test_nothing_identifiable_leaves_the_start_and_its_residuals() -> None:
+    # The hysteresis factor alone, on data it barely touches: it is held at its start, and
+    # the residuals are those of the case as given (model minus measurement, at the case's
+    # 2 kN preload and the default ball-train constant) computed here directly.
+    w, t, torque = _truth()
+    r = _fit(torque, ["hysteresis_loss_factor"])
+    assert not r.estimates["hysteresis_loss_factor"].identified
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        start = friction_torque(reference_screw(), OIL, speed=w, temperature=t).total
+    np.testing.assert_allclose(r.residuals, start - torque, rtol=1e-9, atol=1e-12)
+    assert r.rms_residual == pytest.approx(float(np.sqrt(np.mean((start - torque) ** 2))), 1e-9)

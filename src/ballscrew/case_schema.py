@@ -181,7 +181,12 @@ class AxisSection(BaseModel):
 
     model_config = ConfigDict(extra="forbid")
     moving_mass: Value = _f("0 kg", "mass", "table, workpiece and nut", "200 kg")
-    screw_inertia: Value = _f("0 kg*m**2", "moment of inertia", "of the screw", "1.5e-3 kg*m**2")
+    screw_inertia: Value | None = _f(
+        None,
+        "moment of inertia",
+        "of the screw (none: a solid steel shaft of the pitch diameter over screw_length)",
+        "1.5e-3 kg*m**2",
+    )
     coupling_inertia: Value = _f("0 kg*m**2", "moment of inertia", "of the coupling")
     motor_inertia: Value = _f("0 kg*m**2", "moment of inertia", "of the motor's rotor")
     gear_ratio: Value = _f(1.0, "-", "motor turns per screw turn")

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 import os
 from pathlib import Path
 from typing import Any
@@ -97,23 +98,18 @@ def energy_command(
         --move "stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2, force=2 kN, \\
                 force_from=50 mm, force_to=250 mm"
     """  # noqa: D301 - click needs the literal \b to keep the example lines
-    import json
     import warnings
 
     import numpy as np
 
     from . import __version__
+    from .axis_setup import axis_setup
     from .case import load_case
     from .cli_common import write_json
-    from .energy import Axis, axis_cycle
+    from .energy import axis_cycle, weight_back_driving
     from .motion import back_and_forth, chain, read_trajectory
-    from .thermal import (
-        ThermalNode,
-        estimated_screw_length,
-        steady_at_speeds,
-        steady_temperature,
-        temperature_history,
-    )
+    from .outputs import json_document
+    from .thermal import steady_at_speeds, steady_temperature, temperature_history
     from .units import parse_range, to_si
 
     case = load_case(case_file)
@@ -142,36 +138,10 @@ def energy_command(
         if temperature
         else float(case.temperature.flat[0])
     )
-    axis = Axis(**case.axis)
-    assumptions: list[str] = []
-    thermal = dict(case.thermal)
-    if "screw_length" not in thermal and axis.bearing_span is not None:
-        thermal["screw_length"] = axis.bearing_span
-        assumptions.append(
-            f"axis.screw_length = {axis.bearing_span * 1e3:.0f} mm (the bearing span; give "
-            "screw_length for a real heat balance)"
-        )
-    elif "screw_length" not in thermal:
-        travel = float(np.ptp(profile.position))
-        thermal["screw_length"] = estimated_screw_length(case.screw, travel)
-        assumptions.append(
-            f"axis.screw_length = {thermal['screw_length'] * 1e3:.0f} mm (estimated: travel, "
-            "nut and 4 diameters; give it for a real heat balance)"
-        )
-    if axis.bearing_bore is not None and axis.bearing_outer_diameter is None:
-        assumptions.append(
-            "support bearings: SKF's simplified estimate, load term only (no drag rising with "
-            "speed); give axis.bearing_outer_diameter and bearing_static_rating for Palmgren's"
-        )
-    elif axis.bearing_bore is not None:
-        assumptions.append(
-            f"support bearings: Palmgren's model ({axis.bearing_type}, "
-            f"{axis.bearing_lubrication}), with the lubricant's viscosity at the cycle's "
-            "temperature and without the bearings' own preload"
-        )
-    if "machine_resistance" not in thermal:
-        assumptions.append("axis.machine_resistance: none (convection only, the warmest case)")
-    node = ThermalNode(**thermal)
+    setup = axis_setup(case.screw, case.axis, case.thermal, float(np.ptp(profile.position)))
+    axis, node, assumptions = setup.axis, setup.node, list(setup.notes)
+    thermal = {k: getattr(node, k) for k in ("screw_length", "ambient", "machine_resistance",
+                                              "nut_mass")}  # fmt: skip
     results: dict[str, Any] = {}
     cycles_by_model: dict[str, Any] = {}
     histories: dict[str, Any] = {}
@@ -198,6 +168,9 @@ def energy_command(
             "forward_efficiency": r.forward_efficiency,
             "reverse_efficiency": r.reverse_efficiency,
             "self_locking": r.reverse_efficiency <= 0.0,
+            "weight_reverse_efficiency": weight_back_driving(
+                case.screw, case.lubricant, axis, temperature=temp, model=name, **params
+            ),
             "duration_s": profile.duration,
             "warnings": [str(issue) for issue in r.friction.warnings] + list(r.speed_warnings),
         }
@@ -232,7 +205,8 @@ def energy_command(
         click.echo(f"note: {line}", err=True)
     table = Table(title=f"{case.title}: {cycles} cycle(s), {profile.duration:.4g} s, {temp:g} °C")
     for column in ("model", "friction energy [J]", "per cycle [J]", "catalogue rule [J]",
-                   "bearings [J]", "peak motor torque [N*m]", "RMS motor torque [N*m]",
+                   "bearings [J]", "efficiency fwd / back", "peak motor torque [N*m]",
+                   "RMS motor torque [N*m]",
                    f"temperature after {run_time} [degC]"):  # fmt: skip
         table.add_column(column, justify="right")
     for name, v in results.items():
@@ -242,6 +216,7 @@ def energy_command(
             f"{v['friction_energy_per_cycle_J']:.4g}",
             f"{v['constant_efficiency_energy_J']:.4g}",
             f"{v['bearing_energy_J']:.4g}",
+            f"{v['forward_efficiency']:.3f} / {v['reverse_efficiency']:.3f}",
             f"{v['peak_motor_torque_Nm']:.4g}",
             f"{v['rms_motor_torque_Nm']:.4g}",
             f"{v['final_temperature_C']:.3g}",
@@ -250,6 +225,20 @@ def energy_command(
     wide = probe.is_terminal or "COLUMNS" in os.environ
     out = Console(stderr=json_file == "-", markup=False, width=None if wide else 200)
     out.print(table)
+    for name, v in results.items():
+        eta = v["weight_reverse_efficiency"]
+        if not math.isnan(eta):
+            # The catalogue's test: a load back-drives the screw when the reverse
+            # efficiency is positive.
+            verdict = (
+                "it turns the screw: hold the axis with a brake"
+                if eta > 0.0
+                else "the screw holds it (self-locking)"
+            )
+            out.print(
+                f"{name}: the weight along the axis ({math.degrees(axis.incline):g} deg), motor "
+                f"off: reverse efficiency {eta:.3f}; {verdict}"
+            )
     for name, at in steady_tables.items():
         st = Table(title=f"{name}: continuous running at {m.get('force', 0.0):g} N")
         for column in ("speed [rpm]", "steady temperature [degC]", "torque [N*m]", "power [W]"):
@@ -273,9 +262,9 @@ def energy_command(
             "move": m,
             "cycles": cycles,
             "temperature_C": temp,
-            "axis": case.axis,
+            "axis": {k: getattr(axis, k) for k in axis.__dataclass_fields__},
             "thermal": thermal,
             "assumptions": assumptions,
             "models": results,
         }
-        write_json(json_file, json.dumps(payload, indent=1, ensure_ascii=False) + "\n")
+        write_json(json_file, json_document(payload))

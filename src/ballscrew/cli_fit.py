@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import json
 import math
 import sys
 from pathlib import Path
@@ -113,7 +112,9 @@ def fit_command(
         click.echo(f"fit: {Path(out_dir) / 'report.html'} and {Path(out_dir) / 'fitted-case.toml'}"
                    f" ({len(files)} files)", err=True)  # fmt: skip
     if json_file:
-        write_json(json_file, json.dumps(payload, indent=1, ensure_ascii=False) + "\n")
+        from .outputs import json_document
+
+        write_json(json_file, json_document(payload))
 
 
 def _version() -> str:
@@ -176,9 +177,9 @@ def export_friction_command(
     """  # noqa: D301 - click needs the literal \b to keep the example lines
     import numpy as np
 
+    from .axis_setup import axis_setup
     from .case import load_case
     from .controller import fit_form
-    from .energy import Axis
     from .files import atomic_write
     from .friction import get_model
     from .units import parse_range, to_si
@@ -193,8 +194,11 @@ def export_friction_command(
     w = np.concatenate([-speeds[::-1], speeds])
     params = dict(case.model_parameters.get(model, {}))
     lead = case.screw.lead
-    j = to_si("--inertia", inertia, "kg*m**2") if inertia else _axis_inertia(Axis(**case.axis),
-                                                                            lead)  # fmt: skip
+    j = (
+        to_si("--inertia", inertia, "kg*m**2")
+        if inertia
+        else _axis_inertia(axis_setup(case.screw, case.axis, case.thermal, 0.0).axis, lead)
+    )
     s0 = to_si("--bristle-stiffness", bristle_stiffness, "N*m/rad") if bristle_stiffness else None
     s1 = to_si("--bristle-damping", bristle_damping, "N*m*s/rad") if bristle_damping else None
     rows: list[dict[str, Any]] = []
@@ -255,7 +259,9 @@ def export_friction_command(
         else:
             payload["fits"] = fits
             payload |= {k: v for k, v in fits[0].items() if k in ("parameters", "rms_error_Nm")}
-        write_json(json_file, json.dumps(payload, indent=1, ensure_ascii=False) + "\n")
+        from .outputs import json_document
+
+        write_json(json_file, json_document(payload))
     sys.stdout.flush()
 
 

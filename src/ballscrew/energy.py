@@ -61,7 +61,14 @@ from .limits import DEFAULT_DN_LIMIT, SUPPORT_EIGENVALUES, speed_limit_issues
 from .lubricant import Lubricant
 from .motion import Profile
 
-__all__ = ["Axis", "CycleResult", "axis_cycle", "reverse_efficiency", "screw_motion"]
+__all__ = [
+    "Axis",
+    "CycleResult",
+    "axis_cycle",
+    "reverse_efficiency",
+    "screw_motion",
+    "weight_back_driving",
+]
 
 STANDARD_GRAVITY = 9.80665
 """[m/s²]."""
@@ -215,6 +222,39 @@ def reverse_efficiency(result: FrictionResult, lead: float) -> FloatArray:
             f > 0.0, 1.0 - 2.0 * math.pi * result.total / (f * lead), math.nan
         )
     return out
+
+
+def weight_back_driving(
+    screw: BallScrew,
+    lubricant: Lubricant | str,
+    axis: Axis,
+    *,
+    temperature: float = 40.0,
+    creep_speed: float = 0.1,
+    model: str = "complete",
+    **parameters: Any,
+) -> float:
+    r"""Reverse efficiency under the axis's weight alone, motor off [-].
+
+    The load is the weight's component along the axis,
+    :math:`F = m g \sin\theta`, and the screw turns at ``creep_speed``
+    [rad/s] (the friction of breaking away, without the film of a fast
+    move): :math:`\eta' = 1 - 2\pi T_f/(F l)`. Positive: the weight turns
+    the screw, and a vertical axis needs a brake; zero or negative: the screw
+    holds it (self-locking). NaN for a horizontal axis or no moving mass.
+    The support bearings' friction, which also holds, is left out (the
+    conservative side).
+    """
+    weight = axis.moving_mass * STANDARD_GRAVITY * abs(math.sin(axis.incline))
+    if weight <= 0.0:
+        return math.nan
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        fr = friction_torque(
+            screw, lubricant, speed=creep_speed, temperature=temperature, axial_load=weight,
+            model=model, **parameters,
+        )  # fmt: skip
+    return float(np.ravel(reverse_efficiency(fr, screw.lead))[0])
 
 
 def screw_motion(

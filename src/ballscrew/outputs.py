@@ -184,6 +184,22 @@ def _clean(obj: Any) -> Any:
     return obj
 
 
+def finite_or_null(obj: Any) -> Any:
+    """JSON-safe copy: non-finite numbers become None (JSON null); strict JSON has no NaN."""
+    if isinstance(obj, float) and not math.isfinite(obj):
+        return None
+    if isinstance(obj, Mapping):
+        return {str(k): finite_or_null(v) for k, v in obj.items()}
+    if isinstance(obj, list | tuple):
+        return [finite_or_null(v) for v in obj]
+    return obj
+
+
+def json_document(data: Any) -> str:
+    """``data`` as strict JSON text, one item per line: non-finite numbers are null."""
+    return json.dumps(finite_or_null(data), indent=1, ensure_ascii=False, allow_nan=False) + "\n"
+
+
 def json_text(rows: Sequence[Mapping[str, Any]], meta: Mapping[str, Any]) -> str:
     """The rows and their provenance as one JSON document (strict JSON: no NaN)."""
     document = _clean({"provenance": meta, "rows": list(rows)})

@@ -36,6 +36,7 @@ from ..friction import MODELS, get_model
 from ..outputs import (
     INPUT_DIGITS,
     csv_text,
+    finite_or_null,
     json_text,
     provenance,
     result_rows,
@@ -230,17 +231,6 @@ def _operating_points(
     return arrays["speed"], arrays["temperature"], arrays["axial_load"]
 
 
-def _finite(data: Any) -> Any:
-    """``data`` with every non-finite number as None (JSON null): strict JSON has no NaN."""
-    if isinstance(data, float) and not math.isfinite(data):
-        return None
-    if isinstance(data, dict):
-        return {k: _finite(v) for k, v in data.items()}
-    if isinstance(data, list | tuple):
-        return [_finite(v) for v in data]
-    return data
-
-
 def _floats(values: Any) -> list[float | None]:
     """Numbers for JSON: non-finite ones as null."""
     return [float(v) if math.isfinite(v) else None for v in np.ravel(values).tolist()]
@@ -312,7 +302,8 @@ _MOVE_KEYS = ("stroke", "feed", "acceleration")
 
 def _energy(case: Case, move: Any, limits: Limits) -> dict[str, Any]:
     """The energy of one back-and-forth move (``ballscrew energy --move``), complete model."""
-    from ..energy import Axis, axis_cycle
+    from ..axis_setup import axis_setup
+    from ..energy import axis_cycle
     from ..motion import back_and_forth
 
     if not isinstance(move, Mapping) or not all(isinstance(move.get(k), str) for k in _MOVE_KEYS):
@@ -330,15 +321,16 @@ def _energy(case: Case, move: Any, limits: Limits) -> dict[str, Any]:
     profile = back_and_forth(m["stroke"], m["feed"], m["acceleration"])
     temperature = float(case.temperature.flat[0])
     params = dict(case.model_parameters.get("complete", {}))
+    setup = axis_setup(case.screw, case.axis, case.thermal, abs(m["stroke"]))
     with warnings.catch_warnings():
         # The speed limits are returned in the result, as the command line reports them.
         warnings.simplefilter("ignore", BallScrewSpeedWarning)
         warnings.simplefilter("ignore", BallScrewValidityWarning)
         r = axis_cycle(
-            profile, case.screw, case.lubricant, Axis(**case.axis), temperature=temperature,
+            profile, case.screw, case.lubricant, setup.axis, temperature=temperature,
             model="complete", **params,
         )  # fmt: skip
-    result: dict[str, Any] = _finite(
+    result: dict[str, Any] = finite_or_null(
         {
             "move": text,
             "temperature_C": temperature,
@@ -354,6 +346,8 @@ def _energy(case: Case, move: Any, limits: Limits) -> dict[str, Any]:
             "forward_efficiency": r.forward_efficiency,
             "reverse_efficiency": r.reverse_efficiency,
             "warnings": list(r.speed_warnings),
+            # The page shows no temperature: the heat balance's notes do not apply.
+            "notes": [n for n in setup.notes if "machine_resistance" not in n],
             "command": f'ballscrew energy --case case.toml --move "{text}"',
         }
     )

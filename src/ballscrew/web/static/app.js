@@ -311,7 +311,11 @@
       `${fmt(s.preload_N)} N, ${s.loaded_balls} loaded balls per nut; ${s.lubricant}.` +
       (s.source ? ` Source: ${s.source}.` : "") +
       (s.assumptions.length ? ` Assumed: ${s.assumptions.join("; ")}.` : "");
-    const warnings = [...data.warnings, ...(data.energy ? data.energy.warnings.map((w) => `warning: ${w}`) : [])];
+    const warnings = [
+      ...data.warnings,
+      ...(data.energy ? data.energy.warnings.map((w) => `warning: ${w}`) : []),
+      ...(data.energy ? data.energy.notes.map((n) => `note: ${n}`) : []),
+    ];
     $("warnings").innerHTML = warnings.length
       ? warnings.map((w) => `<li class="${w.startsWith("warning") ? "warn" : "note"}">${esc(w)}</li>`).join("")
       : "<li>Every input is inside the validity ranges of the models and correlations used.</li>";

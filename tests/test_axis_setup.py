@@ -1,0 +1,131 @@
+"""What a case's [axis] section leaves out, and whether a weight back-drives the screw."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from ballscrew import friction_torque, lubricants, reference_screw
+from ballscrew.axis_setup import axis_setup, shaft_inertia
+from ballscrew.energy import STANDARD_GRAVITY, Axis, weight_back_driving
+
+OIL = lubricants.get("PAO ISO VG 68")
+
+
+def test_shaft_inertia_is_the_integral_of_r_squared_dm() -> None:
+    # J = integral of r^2 dm over a solid cylinder, dm = rho L 2 pi r dr, integrated
+    # numerically on 20001 radii (trapezoidal error ~ (R/n)^2, 1e-8 relative), for three
+    # shafts at once (broadcast over diameter and length).
+    d = np.array([0.016, 0.04, 0.08])
+    length = np.array([0.5, 1.0, 2.5])
+    r = np.linspace(0.0, 1.0, 20001)[None, :] * (d[:, None] / 2)
+    integrand = r**2 * 7850.0 * length[:, None] * 2 * math.pi * r
+    numeric = np.sum(0.5 * (integrand[:, 1:] + integrand[:, :-1]) * np.diff(r, axis=1), axis=1)
+    np.testing.assert_allclose(shaft_inertia(d, length), numeric, rtol=1e-7)
+    # The density is a parameter: aluminium (2700 kg/m³) scales it linearly.
+    assert float(shaft_inertia(0.04, 1.0, 2700.0)) == pytest.approx(
+        float(shaft_inertia(0.04, 1.0)) * 2700.0 / 7850.0, rel=1e-14
+    )
+
+
+def test_setup_fills_the_gaps_and_says_so() -> None:
+    s = reference_screw()
+    # Nothing given: the length is estimated from the travel, the inertia from that length,
+    # the bearings are left out; a note for each.
+    bare = axis_setup(s, {"moving_mass": 200.0}, {}, 0.3)
+    assert bare.node.screw_length == pytest.approx(0.6, abs=1e-3)  # see estimated_screw_length
+    # 40 mm over 0.6 m of steel: pi 7850 0.6 0.04^4 / 32 = 1.184e-3 kg m^2.
+    assert bare.axis.screw_inertia == pytest.approx(1.184e-3, rel=1e-3)
+    text = "\n".join(bare.notes)
+    assert "axis.screw_length = 600 mm (estimated" in text
+    assert "axis.screw_inertia = 0.00118 kg*m^2" in text
+    assert "support bearings: not counted" in text
+    assert "machine_resistance: none" in text
+    # The bearing span is the length when given; a given inertia and length are kept.
+    spanned = axis_setup(s, {"moving_mass": 1.0, "bearing_span": 1.2}, {}, 0.3)
+    assert spanned.node.screw_length == 1.2
+    assert spanned.axis.screw_inertia == pytest.approx(2 * 1.184e-3, rel=1e-3)
+    given = axis_setup(
+        s, {"moving_mass": 1.0, "screw_inertia": 0.0, "bearing_bore": 0.03},
+        {"screw_length": 0.9, "machine_resistance": 2.0}, 0.3,
+    )  # fmt: skip
+    assert given.axis.screw_inertia == 0.0 and given.node.screw_length == 0.9
+    assert given.node.machine_resistance == 2.0
+    assert not any("screw_inertia" in n or "screw_length" in n for n in given.notes)
+    assert any("SKF's simplified estimate" in n for n in given.notes)
+    palmgren = axis_setup(
+        s, {"moving_mass": 1.0, "bearing_bore": 0.03, "bearing_outer_diameter": 0.062,
+            "bearing_static_rating": 4e4, "bearing_type": "screw-support (ZKLN, ZKLF)"},
+        {"screw_length": 0.9}, 0.3,
+    )  # fmt: skip
+    assert any("Palmgren's model (screw-support (ZKLN, ZKLF)" in n for n in palmgren.notes)
+
+
+@pytest.mark.parametrize("mass", [10.0, 50.0, 500.0])
+def test_a_weight_back_drives_when_its_torque_beats_the_friction(mass: float) -> None:
+    # Motor off, a vertical axis: the weight m g pushes the nut, which turns the screw with
+    # the torque m g l / 2 pi; it does when that torque exceeds the screw's friction torque
+    # at a creep speed under that load. 10 kg (0.16 N m) is held by the 2 kN preload's drag
+    # (about 0.58 N m); 500 kg (7.8 N m) is not.
+    s = reference_screw()
+    axis = Axis(moving_mass=mass, incline=math.pi / 2)
+    eta = weight_back_driving(s, OIL, axis, temperature=20.0)
+    weight = mass * STANDARD_GRAVITY
+    friction = float(friction_torque(s, OIL, speed=0.1, temperature=20.0, axial_load=weight).total)
+    drive = weight * s.lead / (2 * math.pi)
+    assert (eta > 0.0) == (drive > friction)
+    assert eta == pytest.approx((drive - friction) / drive, rel=1e-9)
+    if mass == 10.0:
+        assert eta < 0.0
+    if mass == 500.0:
+        assert eta > 0.0
+    # Hanging the other way (the axis inclined down) is the same weight on the nut.
+    down = weight_back_driving(s, OIL, Axis(moving_mass=mass, incline=-math.pi / 2),
+                               temperature=20.0)  # fmt: skip
+    assert down == pytest.approx(eta, rel=1e-12)
+
+
+def test_no_weight_along_the_axis_means_no_verdict() -> None:
+    s = reference_screw()
+    assert math.isnan(weight_back_driving(s, OIL, Axis(moving_mass=200.0)))
+    assert math.isnan(weight_back_driving(s, OIL, Axis(moving_mass=0.0, incline=1.0)))
+
+
+def test_energy_command_states_the_gaps_and_the_weight(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    from ballscrew.cli import main
+
+    case = tmp_path / "z.toml"
+    base = (
+        '[screw]\npitch_diameter = "32 mm"\nlead = "5 mm"\nball_diameter = "3.175 mm"\n'
+        'preload = "1.2 kN"\n[lubricant]\nname = "mineral ISO VG 68"\n'
+        '[operation]\ntemperature = "25 degC"\n[axis]\nmoving_mass = "120 kg"\n'
+        'screw_length = "800 mm"\ndn_limit = "150000 mm*rpm"\n'
+    )
+    move_text = "stroke=400 mm, feed=15 m/min, acceleration=3 m/s^2"
+    case.write_text(base + 'incline = "90 deg"\n', "utf-8")
+    with pytest.raises(SystemExit) as info:
+        main(["energy", "--case", str(case), "--move", move_text, "--json", "-"])
+    assert info.value.code == 0
+    captured = capsys.readouterr()
+    payload = json.loads(captured.out)
+    assert payload["axis"]["screw_inertia"] == pytest.approx(float(shaft_inertia(0.032, 0.8)))
+    assert "axis.screw_inertia = 0.000646 kg*m^2" in captured.err
+    assert payload["weight_reverse_efficiency"] > 0.0
+    assert "hold the axis with a brake" in captured.err  # the table goes to stderr with -
+    # Horizontal: no verdict, written as null (strict JSON has no NaN).
+    case.write_text(base, "utf-8")
+    with pytest.raises(SystemExit) as info:
+        main(["energy", "--case", str(case), "--move", move_text, "--json", "-"])
+    out = capsys.readouterr().out
+
+    def refuse(word: str) -> None:
+        raise AssertionError(f"{word} in strict JSON")
+
+    flat = json.loads(out, parse_constant=refuse)
+    assert flat["weight_reverse_efficiency"] is None
