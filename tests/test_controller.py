@@ -186,16 +186,17 @@ def test_every_table_side_quantity_follows_the_lead() -> None:
 def test_lugre_bristle_equations_away_from_steady_state() -> None:
     # From the LuGre definition: with the bristles relaxed (z = 0) the rate is the speed
     # itself and the torque sigma_1 w + sigma_2 w; at z = g/sigma_0 (steady, w > 0) the rate
-    # is 0. g uses the exponent 1.5 at |w/w_s| = 2.25, where it matters.
+    # is 0. g uses the exponent 1.5 at |w/w_s| = 3, where it matters (3^1.5 = 5.196, while
+    # 3 x 1.5 = 4.5; at 2.25 the two would coincide).
     p = {"coulomb_torque": 0.3, "static_torque": 0.5, "stribeck_speed": 2.0,
          "stribeck_exponent": 1.5, "viscous_coefficient": 1e-3, "bristle_stiffness": 3000.0,
          "bristle_damping": 5.0}  # fmt: skip
-    dz, torque = lugre_rate(0.0, 4.5, p)
-    assert float(dz) == pytest.approx(4.5) and float(torque) == pytest.approx((5.0 + 1e-3) * 4.5)
-    g = 0.3 + 0.2 * math.exp(-(2.25**1.5))
-    dz, torque = lugre_rate(g / 3000.0, 4.5, p)
+    dz, torque = lugre_rate(0.0, 6.0, p)
+    assert float(dz) == pytest.approx(6.0) and float(torque) == pytest.approx((5.0 + 1e-3) * 6.0)
+    g = 0.3 + 0.2 * math.exp(-(3.0**1.5))
+    dz, torque = lugre_rate(g / 3000.0, 6.0, p)
     assert float(dz) == pytest.approx(0.0, abs=1e-12)
-    assert float(torque) == pytest.approx(g + 1e-3 * 4.5, rel=1e-12)
+    assert float(torque) == pytest.approx(g + 1e-3 * 6.0, rel=1e-12)
 
 
 def test_stribeck_bounds_and_the_no_drop_note() -> None:
