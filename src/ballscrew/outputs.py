@@ -23,7 +23,7 @@ import dataclasses
 import io
 import json
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
 import numpy as np
@@ -173,26 +173,25 @@ def _jsonable(value: Any) -> Any:
     return repr(value)
 
 
+def _map_nonfinite(obj: Any, replace: Callable[[float], Any]) -> Any:
+    """A copy of nested mappings and lists with each non-finite float replaced."""
+    if isinstance(obj, float) and not math.isfinite(obj):
+        return replace(obj)
+    if isinstance(obj, Mapping):
+        return {str(k): _map_nonfinite(v, replace) for k, v in obj.items()}
+    if isinstance(obj, list | tuple):
+        return [_map_nonfinite(v, replace) for v in obj]
+    return obj
+
+
 def _clean(obj: Any) -> Any:
     """JSON-safe copy: non-finite numbers become the strings "inf", "-inf", "nan"."""
-    if isinstance(obj, float) and not math.isfinite(obj):
-        return repr(obj)
-    if isinstance(obj, Mapping):
-        return {str(k): _clean(v) for k, v in obj.items()}
-    if isinstance(obj, list | tuple):
-        return [_clean(v) for v in obj]
-    return obj
+    return _map_nonfinite(obj, repr)
 
 
 def finite_or_null(obj: Any) -> Any:
     """JSON-safe copy: non-finite numbers become None (JSON null); strict JSON has no NaN."""
-    if isinstance(obj, float) and not math.isfinite(obj):
-        return None
-    if isinstance(obj, Mapping):
-        return {str(k): finite_or_null(v) for k, v in obj.items()}
-    if isinstance(obj, list | tuple):
-        return [finite_or_null(v) for v in obj]
-    return obj
+    return _map_nonfinite(obj, lambda _: None)
 
 
 def json_document(data: Any) -> str:
