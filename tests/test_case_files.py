@@ -83,3 +83,27 @@ def test_case_errors_name_the_key(edit: tuple[str, str], field: str, words: str)
 def test_case_needs_exactly_one_command(capsys: pytest.CaptureFixture[str]) -> None:
     code, _, err = run(["case"], capsys)
     assert code == 2 and "exactly one" in err
+
+
+def test_check_shows_the_axis_as_the_energy_command_will_use_it(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    base = (
+        '[screw]\npitch_diameter = "32 mm"\nlead = "5 mm"\nball_diameter = "3.175 mm"\n'
+        'preload = "1.2 kN"\n[lubricant]\nname = "mineral ISO VG 68"\n'
+    )
+    file = tmp_path / "z.toml"
+    file.write_text(base, "utf-8")
+    code, out, _ = run(["case", "--check", str(file)], capsys)
+    assert code == 0 and "moving mass" not in out  # no [axis]: nothing to show
+    file.write_text(
+        base + '[axis]\nmoving_mass = "120 kg"\nincline = "90 deg"\nscrew_length = "800 mm"\n'
+        'bearing_bore = "20 mm"\n',
+        "utf-8",
+    )
+    code, out, _ = run(["case", "--check", str(file)], capsys)
+    assert code == 0 and "case file OK" in out
+    # pi 7850 kg/m^3 x 0.8 m x (0.032 m)^4 / 32 = 6.465e-4 kg m^2
+    assert "0.000646 kg*m^2 (estimated: a solid steel shaft over 800 mm)" in out
+    assert "120 kg" in out and "90 deg" in out and "SKF's simplified estimate" in out
+    assert "none (critical speed not checked)" in out and "none (convection only)" in out

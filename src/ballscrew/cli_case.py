@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
+from typing import Any
 
 import click
 from rich.table import Table
@@ -93,6 +94,7 @@ def _print_resolved(path: str) -> None:
         ("operation", "temperatures", _span(case.temperature, "degC")),
         ("operation", "axial loads", _span(case.axial_load, "N")),
     ]
+    rows += _axis_rows(case)
     table = Table(title=f"{case.title}: resolved from {path}")
     for column in ("section", "quantity", "value"):
         table.add_column(column)
@@ -105,6 +107,56 @@ def _print_resolved(path: str) -> None:
         for a in case.assumptions:
             console.print(f"  {a.field} = {a.value}: {a.reason}", highlight=False)
     console.print("case file OK", style="bold green")
+
+
+def _axis_rows(case: Any) -> list[tuple[str, str, str]]:
+    """The ``[axis]`` section as ``ballscrew energy`` will use it (none if the file has none)."""
+    import tomllib
+
+    if "axis" not in tomllib.loads(case.text):
+        return []
+    a, th = case.axis, case.thermal
+    later = "(estimated by ballscrew energy)"
+
+    def given(value: float | None, scale: float, unit: str, missing: str = later) -> str:
+        return missing if value is None else f"{value * scale:.4g} {unit}"
+
+    bearings = (
+        "not counted (no bearing_bore)"
+        if a.get("bearing_bore") is None
+        else f"{a['bearing_type']}, bore {a['bearing_bore'] * 1e3:.4g} mm: "
+        + (
+            "SKF's simplified estimate"
+            if a.get("bearing_outer_diameter") is None
+            else f"Palmgren's model ({a['bearing_lubrication']})"
+        )
+    )
+    length = th.get("screw_length", a.get("bearing_span"))
+    inertia = later
+    if length is not None:
+        from .axis_setup import shaft_inertia
+
+        j = float(shaft_inertia(case.screw.pitch_diameter, length))
+        inertia = f"{j:.3g} kg*m^2 (estimated: a solid steel shaft over {length * 1e3:.0f} mm)"
+    return [
+        ("axis", "moving mass", f"{a['moving_mass']:.4g} kg"),
+        ("axis", "screw inertia", given(a.get("screw_inertia"), 1.0, "kg*m^2", inertia)),
+        ("axis", "coupling / motor inertia",
+         f"{a['coupling_inertia']:.4g} / {a['motor_inertia']:.4g} kg*m^2"),
+        ("axis", "gear ratio", f"{a['gear_ratio']:g}"),
+        ("axis", "incline", f"{math.degrees(a['incline']):.4g} deg"),
+        ("axis", "support bearings", bearings),
+        ("axis", "span, mounting", given(a.get("bearing_span"), 1e3, "mm",
+                                         "none (critical speed not checked)")
+         + f", {a['support']}"),
+        ("axis", "d*n limit", f"{a['dn_limit']:,.0f} mm*rpm"),
+        ("axis", "screw length in the air",
+         given(th.get("screw_length"), 1e3, "mm",
+               "the bearing span" if a.get("bearing_span") is not None else later)),
+        ("axis", "ambient, machine resistance",
+         f"{th['ambient']:g} degC, "
+         + given(th.get("machine_resistance"), 1.0, "K/W", "none (convection only)")),
+    ]  # fmt: skip
 
 
 def _span(values: object, unit: str) -> str:
