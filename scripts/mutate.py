@@ -45,6 +45,7 @@ class Mutant:
     index: int
     line: int
     text: str
+    column: int = 0
 
 
 def _docstring_ids(tree: ast.AST) -> set[int]:
@@ -92,7 +93,7 @@ def mutants(source: str) -> list[Mutant]:
     """Every mutation of ``source`` this script makes, in order."""
     tree = ast.parse(source)
     return [
-        Mutant(i, getattr(node, "lineno", 0), _apply(node))
+        Mutant(i, getattr(node, "lineno", 0), _apply(node), getattr(node, "col_offset", -1) + 1)
         for i, node in enumerate(_candidates(tree))
     ]
 
@@ -164,7 +165,7 @@ def main() -> None:
         print(f"{path}: {len(todo)} mutants, {len(todo) - len(survivors)} killed, "
               f"{len(survivors)} survived ({time.monotonic() - start:.0f} s)")  # fmt: skip
         for m in survivors:
-            print(f"  survived: line {m.line}: {m.text}")
+            print(f"  survived: line {m.line}, column {m.column}: {m.text}")
     print(f"total: {totals['killed']} killed, {totals['survived']} survived")
 
 
