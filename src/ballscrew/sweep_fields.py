@@ -31,6 +31,12 @@ DERIVED: dict[str, str] = {
 }
 """Sweep-only fields that are not case keys, with what they do."""
 
+_CASE_FIELDS: dict[str, dict[str, str]] = {
+    "screw": {"preload": "N", "nut": "-", **SCREW_UNITS},
+    "lubricant": {"name": "-", "viscosity_scale": "", **LUBRICANT_UNITS},
+}
+"""The case keys a sweep may vary and their SI units ("-": text values)."""
+
 
 def field_unit(name: str, models: Sequence[str], where: str = "") -> tuple[str, str | None]:
     """Where a varied field lives (``screw``, ``lubricant`` or a model) and its SI unit.
@@ -41,22 +47,11 @@ def field_unit(name: str, models: Sequence[str], where: str = "") -> tuple[str, 
     """
     where = where or f"axes.{name}"
     owner, _, key = name.partition(".")
-    if owner == "screw":
-        if key == "preload":
-            return owner, "N"
-        if key == "nut":
-            return owner, "-"
-        if key in SCREW_UNITS:
-            return owner, SCREW_UNITS[key]
-        allowed = ["preload", "nut", *SCREW_UNITS]
-    elif owner == "lubricant":
-        if key == "name":
-            return owner, "-"
-        if key == "viscosity_scale":
-            return owner, ""
-        if key in LUBRICANT_UNITS:
-            return owner, LUBRICANT_UNITS[key]
-        allowed = ["name", "viscosity_scale", *LUBRICANT_UNITS]
+    if owner in _CASE_FIELDS:
+        units = _CASE_FIELDS[owner]
+        if key in units:
+            return owner, units[key]
+        allowed = list(units)
     elif owner in MODELS:
         if owner not in models:
             raise BallScrewInputError(
