@@ -42,12 +42,16 @@ def test_setup_fills_the_gaps_and_says_so() -> None:
     assert bare.axis.screw_inertia == pytest.approx(1.184e-3, rel=1e-3)
     text = "\n".join(bare.notes)
     assert "axis.screw_length = 600 mm (estimated" in text
-    assert "axis.screw_inertia = 0.00118 kg*m^2" in text
+    assert (
+        "axis.screw_inertia = 0.00118 kg*m^2 (a solid steel shaft of the pitch diameter "
+        "40 mm over 600 mm" in text
+    )
     assert "support bearings: not counted" in text
     assert "machine_resistance: none" in text
     # The bearing span is the length when given; a given inertia and length are kept.
     spanned = axis_setup(s, {"moving_mass": 1.0, "bearing_span": 1.2}, {}, 0.3)
     assert spanned.node.screw_length == 1.2
+    assert "axis.screw_length = 1200 mm (the bearing span" in spanned.notes[0]
     assert spanned.axis.screw_inertia == pytest.approx(2 * 1.184e-3, rel=1e-3)
     given = axis_setup(
         s, {"moving_mass": 1.0, "screw_inertia": 0.0, "bearing_bore": 0.03},
