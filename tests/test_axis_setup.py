@@ -97,6 +97,8 @@ def test_no_weight_along_the_axis_means_no_verdict() -> None:
     s = reference_screw()
     assert math.isnan(weight_back_driving(s, OIL, Axis(moving_mass=200.0)))
     assert math.isnan(weight_back_driving(s, OIL, Axis(moving_mass=0.0, incline=1.0)))
+    # A 50 g slide still has a weight (0.49 N): the screw holds it, a number, not NaN.
+    assert weight_back_driving(s, OIL, Axis(moving_mass=0.05, incline=math.pi / 2)) < -10.0
 
 
 def test_energy_command_states_the_gaps_and_the_weight(
