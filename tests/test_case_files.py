@@ -107,3 +107,15 @@ def test_check_shows_the_axis_as_the_energy_command_will_use_it(
     assert "0.000646 kg*m^2 (estimated: a solid steel shaft over 800 mm)" in out
     assert "120 kg" in out and "90 deg" in out and "SKF's simplified estimate" in out
     assert "none (critical speed not checked)" in out and "none (convection only)" in out
+    # Given values are shown as given, in mm and SI.
+    file.write_text(
+        base + '[axis]\nmoving_mass = "120 kg"\nscrew_inertia = "1.5e-3 kg*m**2"\n'
+        'bearing_span = "1 m"\nscrew_length = "1.2 m"\nmachine_resistance = "2 K/W"\n'
+        'bearing_bore = "20 mm"\n',
+        "utf-8",
+    )
+    code, out, _ = run(["case", "--check", str(file)], capsys)
+    assert code == 0
+    for shown in ("0.0015 kg*m^2", "bore 20 mm", "1000 mm, fixed-supported", "1200 mm",
+                  "20 degC, 2 K/W"):  # fmt: skip
+        assert shown in out, shown
