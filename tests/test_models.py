@@ -21,6 +21,7 @@ from ballscrew.friction.harris_full import full_contact_power
 from ballscrew.friction.harris_simplified import mean_sliding_factor, simplified_contact_force
 from ballscrew.friction.olaru import curvature_fit, pivoting_fit
 from ballscrew.friction.viscoelastic import lens_moments, viscoelastic_contact
+from ballscrew.kinematics import kinematics
 
 OIL = lubricants.get("PAO ISO VG 68")
 
@@ -195,7 +196,7 @@ def test_viscoelastic_torque_arms() -> None:
     b = friction_torque(
         s, OIL, speed=100.0, temperature=40.0, model="viscoelastic", torque_arm="ball-radius"
     )
-    lever = s.pitch_diameter * (1 - s.gamma**2) / 4
+    lever = float(kinematics(s, 1.0).entrainment_speed)  # u / omega, the energy arm
     assert float(b.total / e.total) == pytest.approx(s.ball_diameter / 2 / lever, rel=1e-12)
 
 
@@ -592,11 +593,13 @@ def test_viscoelastic_leading_edge_terms(v: float, m: float) -> None:
 
 def test_viscoelastic_torque_is_the_power_of_the_contacts() -> None:
     # Energy balance: T |omega| = sum over balls of F u at the screw and at the
-    # nut contact, u = omega d_m (1 - gamma^2) / 4 the rolling speed of the ball.
+    # nut contact, u = omega d_m (1 - gamma^2 cos^4 lambda) / (4 cos lambda) the rolling
+    # speed of the ball (computed here from the closed form, not the kinematics module).
     s = reference_screw().replace(nut="single", preload=0.0)
     w, fa = 150.0, 2500.0
     r = friction_torque(s, OIL, speed=w, temperature=40.0, axial_load=fa, model="viscoelastic")
-    u = w * s.pitch_diameter * (1 - s.gamma**2) / 4
+    cos_l = math.cos(s.lead_angle)
+    u = w * s.pitch_diameter * (1 - s.gamma**2 * cos_l**4) / (4 * cos_l)
     q = fa / (s.balls_per_nut * math.sin(s.contact_angle) * math.cos(s.lead_angle))
     f = float(viscoelastic_contact(q, u, s.ball_diameter / 2).friction)
     assert float(r.total) * w == pytest.approx(s.balls_per_nut * 2 * f * u, rel=1e-9)
@@ -621,7 +624,7 @@ def test_simplified_lubricant_torque_from_the_contact_states() -> None:
     # The study's eqs. (5) and (8) assembled by hand from the contact states:
     # per contact, F = (1 - A_c/A0) * integral over the ellipse of the harmonic
     # mean of tau_N = eta(p) u / h_min (Roelands) and tau_lim = tau0 + gamma_L p,
-    # on a 400 x 400 polar grid; torque = sum of balls * F * d_m (1 - gamma^2) / 4.
+    # on a 400 x 400 polar grid; torque = sum of balls * F * u / omega.
     # The model's 8-node Gauss rule is good to 7e-4 (its docstring): tolerance 2e-3.
     from ballscrew.friction._common import limiting_shear
     from ballscrew.lubricant import roelands_1966
@@ -646,7 +649,7 @@ def test_simplified_lubricant_torque_from_the_contact_states() -> None:
         tau = tau_n * tau_lim / (tau_n + tau_lim)
         area_weight = a * b * rr * (1 / 400) * (2 * np.pi / 400)  # dA = a b r dr dphi
         force = (1 - float(c.asperity_share)) * float(np.sum(tau * area_weight))
-        torque += c.balls * force * s.pitch_diameter * (1 - s.gamma**2) / 4
+        torque += c.balls * force * float(kinematics(s, 1.0).entrainment_speed)
     assert float(r.components["lubricant"]) == pytest.approx(torque, rel=2e-3)
 
 

@@ -1,40 +1,74 @@
-r"""Ideal rolling kinematics of a ball screw: rotating screw, translating nut.
+r"""Rolling kinematics of a ball screw with the helix kept: rotating screw, translating nut.
 
 The screw turns at :math:`\omega` and the nut translates without turning. In
-the frame that follows the ball set (the "cage" frame of a bearing) the balls
-roll without sliding on both grooves; this is the bearing analogy with the
-screw as the rotating inner ring and the nut as the fixed outer ring (Harris
-& Kotzalas [1]_ ch. 8, used by Olaru et al. [2]_). With :math:`\gamma =
-D_w\cos\alpha/d_m`:
+the frame of the nut the screw performs a screw motion of lead :math:`l`
+(every point of it moves along its own helix), and the centre of each loaded
+ball moves along the helix of the pitch circle, radius :math:`d_m/2`, lead
+angle :math:`\lambda` (:math:`\tan\lambda = l/\pi d_m`). The contact normals
+lie in the normal plane of that helix (the groove is the envelope of the
+ball swept along it), inclined at the contact angle :math:`\alpha`. With
+:math:`\gamma = D_w\cos\alpha/d_m`, rolling without slip *along* the groove
+at both contacts gives, exactly (Lin, Ravani & Velinsky [1]_; Wei & Lin
+[2]_; derived again for this package and checked against a numerical
+rigid-body evaluation of the surface velocities, ``tests/test_kinematics.py``):
 
 .. math::
-    \omega_m = \tfrac{\omega}{2}(1-\gamma),\qquad
-    \omega_b = \frac{d_m}{2D_w}(1-\gamma^2)\,\omega,\qquad
-    u = \frac{\omega d_m}{4}(1-\gamma^2),\qquad
+    \omega_m = \tfrac{\omega}{2}(1-\gamma\cos^2\lambda),\qquad
+    \omega_b = \frac{\omega d_m}{2D_w\cos\lambda}(1-\gamma^2\cos^4\lambda),\qquad
+    u = \frac{\omega d_m}{4\cos\lambda}(1-\gamma^2\cos^4\lambda),\qquad
     v_t = \frac{\omega l}{2\pi}
 
-are the orbital speed of the ball centres about the screw axis (relative to
-the nut), the ball's rotational speed about its own axis, the entrainment
-(rolling) speed of both contacts, and the table (nut) speed. The ball's axis
-is taken perpendicular to the contact line; the grooves' angular velocities
-then have components :math:`(\omega-\omega_m)\sin\alpha` (screw) and
-:math:`\omega_m\sin\alpha` (nut) along the contact normal, the spin speeds of
-the two contacts. The axial advance of the balls along the helix adds terms
-of order :math:`\tan\lambda`, neglected here (exact treatment: Wei & Lin
-[3]_).
+the orbital speed of the ball centres about the screw axis (relative to the
+nut), the ball's rolling speed about its own axis (relative to the frame
+that follows its centre), the entrainment (rolling) speed of both contacts,
+and the table (nut) speed. With the ball's axis perpendicular to the contact
+line (relative to that frame), the spins, the angular speeds about the
+contact normal, are
+
+.. math::
+    \omega_{s,s} = (\omega-\omega_m)\sin\alpha\cos\lambda,\qquad
+    \omega_{s,n} = \omega_m\sin\alpha\cos\lambda .
+
+**The helix forbids pure rolling.** Across the groove (along
+:math:`\mathbf m = \mathbf n\times\mathbf t`, in the contact plane,
+perpendicular to the rolling direction :math:`\mathbf t`) the screw's surface
+at its contact moves at :math:`\omega R\sin\lambda` relative to the ball
+centre (:math:`R = D_w/2`): the part :math:`\omega\sin\lambda` of the screw's
+angular velocity that lies along :math:`\mathbf t` sweeps it sideways. The
+nut's surface does not move across the groove, and any rotation of a rigid
+ball moves its two contact points across the groove at equal and opposite
+speeds. So the transverse slips at the two contacts always add up to
+
+.. math:: s_\perp = \omega R\sin\lambda
+
+whatever the ball does: "there is always slip" [1]_. How it is shared
+between the screw and the nut contact is not a matter of kinematics (the
+ball's rotation about :math:`\mathbf t` is free); it follows from the ball's
+moment balance (:mod:`ballscrew.helix`). Its ratio to the rolling speed is
+:math:`D_w\sin 2\lambda/(d_m(1-\gamma^2\cos^4\lambda))`: 0.6 % for a
+40 x 5 mm screw with 3.175 mm balls, 2.5 % for 40 x 10 mm with 6.35 mm
+balls, 9 % for 40 x 40 mm.
+
+As :math:`\lambda\to0` every value above becomes that of an angular-contact
+bearing with the screw as inner ring and the nut as fixed outer ring
+(Harris & Kotzalas [3]_ ch. 8, used by Olaru et al. [4]_), and the
+transverse slip vanishes.
 
 All functions accept arrays and broadcast; speeds may be negative (reverse
 rotation); magnitudes follow :math:`|\omega|`, signs follow :math:`\omega`.
 
 References
 ----------
-.. [1] T. A. Harris, M. N. Kotzalas, *Advanced Concepts of Bearing
+.. [1] W. T. Lin, B. Ravani, S. A. Velinsky, "Kinematics of the ball screw
+   mechanism", J. Mech. Des. 116 (1994) 849-855.
+.. [2] C. C. Wei, J. F. Lin, "Kinematic analysis of the ball screw mechanism
+   considering variable contact angles and elastic deformations", J. Mech.
+   Des. 125 (2003) 717-733, doi:10.1115/1.1623761.
+.. [3] T. A. Harris, M. N. Kotzalas, *Advanced Concepts of Bearing
    Technology*, 5th ed., CRC Press, 2007, ch. 8.
-.. [2] D. Olaru, G. C. Puiu, L. C. Balan, V. Puiu, "A new model to estimate
+.. [4] D. Olaru, G. C. Puiu, L. C. Balan, V. Puiu, "A new model to estimate
    friction torque in a ball screw system", *Product Engineering*, Springer,
    2005, doi:10.1007/1-4020-2933-0_20.
-.. [3] C. C. Wei, J. F. Lin, J. Mech. Des. 125 (2003) 717-733,
-   doi:10.1115/1.1623762.
 """
 
 from __future__ import annotations
@@ -80,15 +114,20 @@ class Kinematics:
         Angular speed of the ball centres about the screw axis, relative to
         the nut :math:`\omega_m` [rad/s].
     ball_speed : numpy.ndarray
-        Angular speed of a ball about its own axis :math:`\omega_b` [rad/s].
+        Rolling speed of a ball about its own axis, relative to the frame that
+        follows its centre, :math:`\omega_b` [rad/s].
     entrainment_speed : numpy.ndarray
         Mean rolling speed of the surfaces at either contact :math:`u` [m/s].
     spin_screw, spin_nut : numpy.ndarray
         Spin (angular speed about the contact normal) at the ball-screw and
         ball-nut contacts [rad/s].
+    transverse_slip : numpy.ndarray
+        Sum of the across-groove slips at the screw and nut contacts of a
+        ball, :math:`s_\perp = \omega R\sin\lambda` [m/s] (module docstring).
     spin_to_roll_screw, spin_to_roll_nut : float
         Spin over ball speed at each contact [-], a property of the geometry:
-        :math:`D_w\sin\alpha/(d_m(1\mp\gamma))`.
+        :math:`D_w\sin\alpha\cos^2\lambda(1\pm\gamma\cos^2\lambda)/
+        (d_m(1-\gamma^2\cos^4\lambda))`.
     """
 
     screw_speed: FloatArray
@@ -98,13 +137,14 @@ class Kinematics:
     entrainment_speed: FloatArray
     spin_screw: FloatArray
     spin_nut: FloatArray
+    transverse_slip: FloatArray
 
     spin_to_roll_screw: float
     spin_to_roll_nut: float
 
 
 def kinematics(screw: BallScrew, speed: npt.ArrayLike) -> Kinematics:
-    r"""Ideal rolling speeds for a screw turning at ``speed``.
+    r"""Rolling speeds and the transverse slip for a screw turning at ``speed``.
 
     Parameters
     ----------
@@ -128,22 +168,30 @@ def kinematics(screw: BallScrew, speed: npt.ArrayLike) -> Kinematics:
     ...               conformity_nut=0.55, loaded_turns=2.5, circuits=2)
     >>> k = kinematics(s, rpm_to_rad_s(1000.0))
     >>> round(float(k.table_speed), 4), round(float(k.entrainment_speed), 4)
-    (0.1667, 1.034)
+    (0.1667, 1.0374)
+    >>> round(float(k.transverse_slip / k.entrainment_speed), 4)  # slip-to-roll ratio
+    0.0254
     """
     w = check_finite("speed", speed)
     g = screw.gamma
+    lam = screw.lead_angle
+    cos_l, sin_l = math.cos(lam), math.sin(lam)
+    g_l = g * cos_l**2  # gamma cos^2(lambda)
     sin_a = math.sin(screw.contact_angle)
-    orbital = 0.5 * w * (1.0 - g)
+    roll = 1.0 - g_l * g_l  # 1 - gamma^2 cos^4(lambda)
+    orbital = 0.5 * w * (1.0 - g_l)
+    to_roll = screw.ball_diameter * sin_a * cos_l**2 / (screw.pitch_diameter * roll)
     return Kinematics(
         screw_speed=w,
         table_speed=w * screw.lead / (2.0 * math.pi),
         orbital_speed=orbital,
-        ball_speed=w * screw.pitch_diameter / (2.0 * screw.ball_diameter) * (1.0 - g * g),
-        entrainment_speed=0.25 * w * screw.pitch_diameter * (1.0 - g * g),
-        spin_screw=(w - orbital) * sin_a,
-        spin_nut=orbital * sin_a,
-        spin_to_roll_screw=screw.ball_diameter * sin_a / (screw.pitch_diameter * (1.0 - g)),
-        spin_to_roll_nut=screw.ball_diameter * sin_a / (screw.pitch_diameter * (1.0 + g)),
+        ball_speed=w * screw.pitch_diameter / (2.0 * screw.ball_diameter * cos_l) * roll,
+        entrainment_speed=0.25 * w * screw.pitch_diameter / cos_l * roll,
+        spin_screw=(w - orbital) * sin_a * cos_l,
+        spin_nut=orbital * sin_a * cos_l,
+        transverse_slip=0.5 * w * screw.ball_diameter * sin_l,
+        spin_to_roll_screw=to_roll * (1.0 + g_l),
+        spin_to_roll_nut=to_roll * (1.0 - g_l),
     )
 
 
@@ -160,11 +208,14 @@ def differential_sliding(screw: BallScrew, speed: npt.ArrayLike) -> tuple[FloatA
 
     .. math::
         \Delta v(y) = -C\,y^2 \mp \omega_s y,\qquad
-        C_s = \frac{\omega_b + (\omega-\omega_m)\cos\alpha}{2R_{d,s}},\quad
-        C_n = \frac{\omega_b - \omega_m\cos\alpha}{2R_{d,n}}
+        C_s = \frac{\omega_b + (\omega-\omega_m)\cos\alpha\cos\lambda}{2R_{d,s}},\quad
+        C_n = \frac{\omega_b - \omega_m\cos\alpha\cos\lambda}{2R_{d,n}}
 
     where the linear term is the spin (see :class:`Kinematics`) and a uniform
-    slip adds to both when the ball's speed departs from ideal rolling.
+    slip adds to both when the ball's speed departs from rolling; the
+    grooves' angular velocities enter through their components
+    :math:`(\omega-\omega_m)\cos\alpha\cos\lambda` and
+    :math:`\omega_m\cos\alpha\cos\lambda` along the ball's rolling axis.
 
     Parameters
     ----------
@@ -184,10 +235,10 @@ def differential_sliding(screw: BallScrew, speed: npt.ArrayLike) -> tuple[FloatA
     >>> from ballscrew import reference_screw
     >>> cs, cn = differential_sliding(reference_screw(), 100.0)
     >>> round(float(cs)), round(float(cn))
-    (52660, 42031)
+    (52793, 42197)
     """
     kin = kinematics(screw, speed)
-    cos_a = math.cos(screw.contact_angle)
+    cos_a = math.cos(screw.contact_angle) * math.cos(screw.lead_angle)
     c_s = (kin.ball_speed + (kin.screw_speed - kin.orbital_speed) * cos_a) / (
         2.0 * screw.deformed_radius_screw
     )

@@ -29,6 +29,7 @@ import numpy as np
 from .contact import ellipticity_exact
 from .errors import BallScrewValidityWarning, FloatArray
 from .geometry import BallScrew
+from .kinematics import kinematics
 from .loads import LIFT_OFF_RATIO, ball_loads
 from .lubricant import Lubricant
 
@@ -283,7 +284,7 @@ def _film_issues(
         issues += outside("radius ratio Ry/Rx (Houpert fits)", ratios)
     eta_hi = float(lubricant.dynamic_viscosity(t_lo))
     eta_lo = float(lubricant.dynamic_viscosity(t_hi))
-    u_scale = screw.pitch_diameter * (1.0 - screw.gamma**2) / 4.0
+    u_scale = float(kinematics(screw, 1.0).entrainment_speed)  # u per unit screw speed
     ep = screw.reduced_modulus
     u_values: list[float] = []
     if w_max > 0.0:

@@ -10,6 +10,7 @@ import numpy as np
 
 from ..errors import FloatArray, check_choice, check_nonnegative
 from ..geometry import BallScrew
+from ..kinematics import kinematics
 from ..lubricant import Lubricant
 from ..state import OperatingState
 
@@ -36,9 +37,10 @@ def torque_from_contact_forces(
     ``"energy"`` (default)
         The force dissipates power at the rolling speed of its contact,
         :math:`P = \sum_j Z_j F_j u`, and the screw supplies it:
-        :math:`T = P/\omega = \sum_j Z_j F_j\,d_m(1-\gamma^2)/4` (the ratio
-        :math:`u/\omega` is a property of the geometry, so the torque is
-        defined at zero speed too).
+        :math:`T = P/\omega = \sum_j Z_j F_j\,u/\omega` with
+        :math:`u/\omega = d_m(1-\gamma^2\cos^4\lambda)/(4\cos\lambda)`
+        (:mod:`ballscrew.kinematics`; a property of the geometry, so the torque
+        is defined at zero speed too).
     ``"contact-radius"``
         Each force acts at its contact's distance from the axis, projected on
         the circumference, averaged over screw and nut:
@@ -65,7 +67,7 @@ def lever_arms(screw: BallScrew, arm: str) -> dict[str, float]:
     """
     check_choice("torque_arm", arm, TORQUE_ARMS)
     if arm == "energy":
-        rolling = screw.pitch_diameter * (1.0 - screw.gamma**2) / 4.0
+        rolling = float(kinematics(screw, 1.0).entrainment_speed)
         return {"screw": rolling, "nut": rolling}
     if arm == "contact-radius":
         cos_l = math.cos(screw.lead_angle)

@@ -273,7 +273,8 @@ def olaru(
     lever = screw.contact_radius_screw * math.cos(screw.lead_angle)
     omega = np.abs(state.kinematics.screw_speed)
     rpm = omega * 60.0 / (2.0 * math.pi)
-    # |omega_s| / |omega| at each contact, a property of the geometry (kinematics module).
+    # |omega_s| / |omega| at each contact: the bearing kinematics of Olaru's paper, which
+    # neglects the helix (ballscrew.kinematics keeps it; the spin differs by cos(lambda)).
     spin_per_speed = {
         "screw": 0.5 * (1.0 + gamma) * math.sin(screw.contact_angle),
         "nut": 0.5 * (1.0 - gamma) * math.sin(screw.contact_angle),
