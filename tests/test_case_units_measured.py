@@ -36,7 +36,9 @@ def test_to_si(text: object, unit: str, expected: float) -> None:
     assert to_si("x", text, unit) == pytest.approx(expected, rel=1e-12)
 
 
-@pytest.mark.parametrize("bad", ["32 kg", "fast", "", "nan mm", "inf N", True, "1e999 m"])
+@pytest.mark.parametrize(
+    "bad", ["32 kg", "fast", "", "nan mm", "inf N", True, "1e999 m", "[", "(2 mm"]
+)
 def test_to_si_rejects(bad: object) -> None:
     with pytest.raises(BallScrewInputError, match="field"):
         to_si("field", bad, "m")

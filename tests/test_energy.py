@@ -262,6 +262,12 @@ def test_energy_json_has_the_documented_keys_and_states_its_assumptions(
                 "reverse_efficiency", "final_temperature_C"):  # fmt: skip
         assert payload[key] == payload["models"]["complete"][key], key
     assert payload["bearing_energy_J"] > 0.0
+    # The split by mechanism adds up to the screw friction energy (the trapezoidal rule is
+    # linear in the integrand, so to round-off).
+    parts = payload["friction_energy_by_mechanism_J"]
+    assert {"rolling", "helix_slip", "ball_ball"} <= set(parts)
+    assert sum(parts.values()) == pytest.approx(payload["friction_energy_J"], rel=1e-9)
+    assert parts["helix_slip"] > 0.0
     # No screw length given: the heat balance uses the estimate and says so.
     from ballscrew.case import load_case
 

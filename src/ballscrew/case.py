@@ -311,6 +311,8 @@ def _screw(
         geometry["nut"] = _unwrap("screw.nut", s.nut, notes)
     elif "nut" in base:
         geometry["nut"] = base["nut"]
+    if s.ball_separation is not None:
+        geometry["ball_separation"] = _unwrap("screw.ball_separation", s.ball_separation, notes)
     circuits = geometry["circuits"]
     if circuits != int(circuits):
         raise BallScrewInputError("screw.circuits", circuits, "a whole number >= 1")

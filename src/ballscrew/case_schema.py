@@ -99,6 +99,13 @@ class ScrewSection(BaseModel):
         'preload) or "single-4point" (oversize balls); default "double"',
         "double",
     )
+    ball_separation: Literal["none", "spacer-balls", "cage"] | Assumed | None = _f(
+        None,
+        "-",
+        'how the balls are kept apart: "none" (a full ball train, most nuts), "spacer-balls" '
+        '(a spacer between every two load balls) or "cage" (a ball retainer); default "none"',
+        "none",
+    )
     preload: Value | None = _f(
         None, "force", "axial preload force (give this or preload_drag_torque)", "2 kN", fill=True
     )

@@ -73,6 +73,7 @@ def _print_resolved(path: str) -> None:
         ("screw", "conformity screw / nut", f"{s.conformity_screw:.4g} / {s.conformity_nut:.4g}"),
         ("screw", "loaded turns x circuits", f"{s.loaded_turns:g} x {s.circuits}"),
         ("screw", "nut", s.nut),
+        ("screw", "balls kept apart by", s.ball_separation),
         ("screw", "preload", f"{s.preload:.4g} N"),
         ("screw", "lead angle", f"{math.degrees(s.lead_angle):.4g} deg"),
         ("screw", "loaded balls per nut", f"{s.balls_per_nut}"),

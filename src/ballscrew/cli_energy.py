@@ -160,6 +160,7 @@ def energy_command(
             "friction_energy_per_cycle_J": r.friction_energy / cycles,
             "friction_energy_out_J": r.friction_energy_out,
             "friction_energy_back_J": r.friction_energy_back,
+            "friction_energy_by_mechanism_J": r.friction_energy_by_mechanism,
             "bearing_energy_J": r.bearing_energy,
             "constant_efficiency_energy_J": r.constant_efficiency_energy,
             "load_work_J": r.load_work,

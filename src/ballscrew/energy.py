@@ -179,6 +179,10 @@ class CycleResult:
     """Everything :func:`axis_cycle` computes (arrays per sample of the profile).
 
     Energies in J, torques in N·m, powers in W, speeds in rad/s, forces in N.
+    ``friction_energy_by_mechanism`` splits ``friction_energy`` by the model's
+    components (for the complete model: EHL rolling, sliding, the helix's
+    transverse slip, hysteresis, ball-ball sliding, recirculation, ...); its
+    values add up to it.
     """
 
     model: str
@@ -203,6 +207,7 @@ class CycleResult:
     forward_efficiency: float
     reverse_efficiency: float
     friction: FrictionResult = field(repr=False)
+    friction_energy_by_mechanism: dict[str, float] = field(default_factory=dict)
     speed_warnings: tuple[str, ...] = ()
 
 
@@ -381,4 +386,8 @@ def axis_cycle(
         reverse_efficiency=backward,
         friction=fr,
         speed_warnings=tuple(limits),
+        friction_energy_by_mechanism={
+            name: _integral(np.broadcast_to(part, t_f.shape) * np.abs(omega), time)
+            for name, part in fr.components.items()
+        },
     )

@@ -29,7 +29,7 @@ References
    Springer, 2005, doi:10.1007/1-4020-2933-0_20.
 .. [3] C. C. Wei, J. F. Lin, "Kinematic analysis of the ball screw mechanism
    considering variable contact angles and elastic deformations", J. Mech.
-   Des. 125 (2003) 717-733, doi:10.1115/1.1623762.
+   Des. 125 (2003) 717-733, doi:10.1115/1.1623761.
 """
 
 from __future__ import annotations
@@ -44,7 +44,13 @@ from .contact import reduced_modulus
 from .ehl import composite_roughness
 from .errors import BallScrewInputError, check_in_range, check_nonnegative, check_positive
 
-__all__ = ["NUT_ARRANGEMENTS", "BallScrew", "NutArrangement"]
+__all__ = [
+    "BALL_SEPARATIONS",
+    "NUT_ARRANGEMENTS",
+    "BallScrew",
+    "BallSeparation",
+    "NutArrangement",
+]
 
 NutArrangement = Literal["double", "single", "single-4point"]
 NUT_ARRANGEMENTS: tuple[str, ...] = get_args(NutArrangement)
@@ -58,6 +64,24 @@ NUT_ARRANGEMENTS: tuple[str, ...] = get_args(NutArrangement)
 ``"single-4point"``
     one nut with oversize balls, each ball touching screw and nut twice
     (gothic-arch grooves, 4-point contact).
+"""
+
+BallSeparation = Literal["none", "spacer-balls", "cage"]
+BALL_SEPARATIONS: tuple[str, ...] = get_args(BallSeparation)
+"""Allowed values of :attr:`BallScrew.ball_separation`: how the balls are kept apart.
+
+``"none"``
+    a full ball train: neighbouring balls touch and slide on each other (most
+    nuts);
+``"spacer-balls"``
+    a smaller spacer ball between every two load balls: the spacers turn the
+    other way and roll on their neighbours; half the places of a turn hold
+    load balls;
+``"cage"``
+    a ball retainer (caged-ball nuts): the balls sit in separate pockets and
+    do not touch; the loaded balls are counted as for ``"none"`` (the
+    retainer's thin separators are not subtracted: give ``loaded_turns`` to
+    match the catalogue's ball count if it differs).
 """
 
 _STEEL_E = 2.1e11
@@ -99,6 +123,9 @@ class BallScrew:
         Ball circuits per nut; for ``nut="double"`` per half-nut.
     nut : {"double", "single", "single-4point"}
         Nut arrangement, see :data:`NUT_ARRANGEMENTS`.
+    ball_separation : {"none", "spacer-balls", "cage"}
+        How the balls are kept apart, see :data:`BALL_SEPARATIONS`; default
+        ``"none"``.
     preload : float
         Axial preload force :math:`F_{pr}` [N], >= 0. For ``"double"`` the
         force with which the two half-nuts are pressed against each other; for
@@ -137,6 +164,7 @@ class BallScrew:
     circuits: int
     nut: NutArrangement = "double"
     preload: float = 0.0
+    ball_separation: BallSeparation = "none"
     youngs_modulus_ball: float = _STEEL_E
     youngs_modulus_races: float = _STEEL_E
     poisson_ratio_ball: float = _STEEL_NU
@@ -186,6 +214,10 @@ class BallScrew:
         object.__setattr__(self, "circuits", int(self.circuits))
         if self.nut not in NUT_ARRANGEMENTS:
             raise BallScrewInputError("nut", self.nut, f"one of {list(NUT_ARRANGEMENTS)}")
+        if self.ball_separation not in BALL_SEPARATIONS:
+            raise BallScrewInputError(
+                "ball_separation", self.ball_separation, f"one of {list(BALL_SEPARATIONS)}"
+            )
         if self.nut == "single" and self.preload > 0.0:
             raise BallScrewInputError(
                 "preload",
@@ -253,13 +285,15 @@ class BallScrew:
 
     @property
     def balls_per_circuit(self) -> int:
-        r"""Balls in the loaded turns of a circuit, :math:`\lfloor i\pi d_m/D_w\cos\lambda\rfloor`.
+        r"""Load balls of a circuit's loaded turns, :math:`\lfloor i\pi d_m/D_w\cos\lambda\rfloor`.
 
         The helix length of the loaded turns divided by the ball diameter,
-        rounded down (balls touch each other; the return path is not counted).
+        rounded down (balls touch each other; the return path is not counted);
+        with spacer balls, every other place: half of that, rounded up.
         """
         length = self.loaded_turns * math.pi * self.pitch_diameter / math.cos(self.lead_angle)
-        return math.floor(length / self.ball_diameter + 1e-9)
+        places = math.floor(length / self.ball_diameter + 1e-9)
+        return (places + 1) // 2 if self.ball_separation == "spacer-balls" else places
 
     @property
     def balls_per_nut(self) -> int:

@@ -13,6 +13,9 @@ EHL rolling resistance          :func:`rolling_force_houpert` (Houpert 2002), ca
 spin and differential sliding   :func:`spin_sliding_integral` (Hertz pressure times
                                 the sliding speed, over the contact ellipse) with the
                                 mixed-film coefficient :func:`mixed_friction_coefficient`
+spin with a transverse slip     :func:`spin_slip_integrals` (power and transverse force
+                                of a spinning contact that also slips across the
+                                groove; used by :mod:`ballscrew.helix`)
 elastic hysteresis              :func:`hysteresis_rolling_force` (Johnson 1985)
 =============================== ===================================================
 
@@ -37,6 +40,7 @@ __all__ = [
     "replenishment_factor",
     "rolling_force_houpert",
     "spin_sliding_integral",
+    "spin_slip_integrals",
 ]
 
 
@@ -267,18 +271,22 @@ def mixed_friction_coefficient(
     return result
 
 
-def _disk_rule(n_radial: int, n_angle: int) -> tuple[FloatArray, FloatArray, FloatArray]:
-    r"""Nodes X, Y and weights over the half disk X >= 0 for integrands times sqrt(1-X²-Y²).
+def _disk_rule(
+    n_radial: int, n_angle: int, *, half: bool = True
+) -> tuple[FloatArray, FloatArray, FloatArray]:
+    r"""Nodes X, Y and weights over the unit disk for integrands times sqrt(1-X²-Y²).
 
     With :math:`\rho = \sin\theta`, :math:`\sqrt{1-\rho^2}\,\rho\,d\rho =
     \cos^2\theta\sin\theta\,d\theta`, smooth on [0, π/2]: Gauss-Legendre in
     :math:`\theta`, midpoint in the angle (the integrand has kinks on the pure-rolling
-    lines). The weights include the factor 2 of the mirrored half.
+    lines). With ``half`` the nodes cover X >= 0 only and the weights include the
+    factor 2 of the mirrored half (for integrands even in X); otherwise the whole disk.
     """
     t, w_t = np.polynomial.legendre.leggauss(n_radial)
     theta = 0.25 * np.pi * (t + 1.0)
     w_theta = 0.25 * np.pi * w_t * np.cos(theta) ** 2 * np.sin(theta)
-    phi = (np.arange(n_angle) + 0.5) * (np.pi / n_angle) - np.pi / 2.0
+    span = np.pi if half else 2.0 * np.pi
+    phi = (np.arange(n_angle) + 0.5) * (span / n_angle) - span / 2.0
     rho = np.sin(theta)
     x = (rho[:, None] * np.cos(phi)[None, :]).ravel()
     y = (rho[:, None] * np.sin(phi)[None, :]).ravel()
@@ -287,6 +295,7 @@ def _disk_rule(n_radial: int, n_angle: int) -> tuple[FloatArray, FloatArray, Flo
 
 
 _RULE = _disk_rule(12, 48)
+_FULL_RULE = _disk_rule(12, 96, half=False)
 
 
 def spin_sliding_integral(curvature: npt.ArrayLike, aspect: npt.ArrayLike) -> FloatArray:
@@ -337,19 +346,99 @@ def spin_sliding_integral(curvature: npt.ArrayLike, aspect: npt.ArrayLike) -> Fl
     >>> round(float(spin_sliding_integral(0.0, 1.0) / (math.pi**2 / 8)), 4)
     1.0
     """
-    kappa = np.asarray(curvature, dtype=float)
-    beta = np.asarray(aspect, dtype=float)
-    kappa, beta = np.broadcast_arrays(kappa, beta)
-    x, y, w = _RULE
-    flat_k = kappa.reshape(-1)
-    flat_b = beta.reshape(-1)
-    out = np.empty(flat_k.shape)
+    power, _ = _sliding_quadrature(curvature, aspect, 0.0, force=False)
+    return power
+
+
+def _sliding_quadrature(
+    curvature: npt.ArrayLike, aspect: npt.ArrayLike, slip: npt.ArrayLike, *, force: bool
+) -> tuple[FloatArray, FloatArray]:
+    """Power and (optionally) transverse-force integrals on the disk rule, in bounded chunks."""
+    kappa, beta, sigma = np.broadcast_arrays(
+        np.asarray(curvature, dtype=float),
+        np.asarray(aspect, dtype=float),
+        np.asarray(slip, dtype=float),
+    )
+    x, y, w = _FULL_RULE if force else _RULE  # with a slip the integrand is not even in X
+    flat = [a.reshape(-1) for a in (kappa, beta, sigma)]
+    power = np.empty(flat[0].shape)
+    side = np.empty(flat[0].shape) if force else power
     step = 4096
-    for start in range(0, flat_k.size, step):  # bounded memory, not a loop over points
-        k = flat_k[start : start + step, None]
-        b = flat_b[start : start + step, None]
+    for start in range(0, power.size, step):  # bounded memory, not a loop over points
+        k, b, sg = (a[start : start + step, None] for a in flat)
         vx = k * y * y + y
-        speed = np.sqrt(vx * vx + (b * x) ** 2)
-        out[start : start + step] = speed @ w
-    result: FloatArray = out.reshape(kappa.shape)
-    return result
+        vy = b * x + sg
+        speed = np.sqrt(vx * vx + vy * vy)
+        power[start : start + step] = speed @ w
+        if force:
+            share = np.divide(vy, speed, out=np.zeros_like(speed), where=speed > 0.0)
+            side[start : start + step] = share @ w
+    result = power.reshape(kappa.shape)
+    lateral: FloatArray = (side.reshape(kappa.shape) * (1.5 / math.pi)) if force else result
+    return result, lateral
+
+
+def spin_slip_integrals(
+    curvature: npt.ArrayLike, aspect: npt.ArrayLike, slip: npt.ArrayLike
+) -> tuple[FloatArray, FloatArray]:
+    r"""Power and transverse force of a spinning contact that also slips across the groove [-].
+
+    The contact of :func:`spin_sliding_integral` (spin :math:`\omega_s`,
+    Heathcote coefficient :math:`C`, semi-axes :math:`a` across and :math:`b`
+    along the rolling direction) slips besides uniformly across the groove at
+    :math:`\Delta v`: :math:`v_x = -Cy^2 - \omega_s y`, :math:`v_y = \omega_s x +
+    \Delta v`. Sliding everywhere against the local coefficient :math:`\mu`
+    (full slip, :math:`\boldsymbol\tau = \mu p\,\mathbf v/|\mathbf v|`), the
+    contact dissipates and transmits
+
+    .. math::
+        P = \mu\,\frac{3Q}{2\pi}\,|\omega_s|\,a\,J(\kappa,\beta,\sigma),\qquad
+        F_y = \mu Q\,G(\kappa,\beta,\sigma)
+
+    .. math::
+        J = \iint_{X^2+Y^2\le1}\sqrt{1-X^2-Y^2}\,|\hat{\mathbf v}|\,dX\,dY,\qquad
+        G = \frac{3}{2\pi}\iint_{X^2+Y^2\le1}\sqrt{1-X^2-Y^2}\,
+            \frac{\beta X + \sigma}{|\hat{\mathbf v}|}\,dX\,dY
+
+    with :math:`\hat{\mathbf v} = (-\kappa Y^2 - Y,\ \beta X + \sigma)`,
+    :math:`\kappa = Ca/\omega_s`, :math:`\beta = b/a` and the slip ratio
+    :math:`\sigma = \Delta v/(\omega_s a)`. :math:`J(\kappa,\beta,0)` is
+    :func:`spin_sliding_integral`; as :math:`\sigma\to\infty`, :math:`G\to1`
+    (the whole contact slides one way: :math:`F_y = \mu Q`) and
+    :math:`J\to\tfrac{2\pi}{3}\sigma` (:math:`P = \mu Q\Delta v`). In between the
+    spin turns part of the friction away from the slip: a spinning contact
+    gives less transverse force for a small slip than Coulomb's
+    :math:`\mu Q` (the spin-creep coupling of rolling contact mechanics,
+    Johnson [1]_ §8.4), and the slip in turn lowers the spin's own
+    dissipation. Exact identity, used in the tests: :math:`P = F_y\Delta v +
+    M_z\omega_s + (\text{Heathcote})`, with :math:`M_z` the friction moment
+    about the normal.
+
+    Parameters
+    ----------
+    curvature : array_like
+        :math:`\kappa` [-], >= 0.
+    aspect : array_like
+        :math:`\beta = b/a` [-], in (0, 1].
+    slip : array_like
+        :math:`\sigma` [-], >= 0.
+
+    Returns
+    -------
+    J, G : numpy.ndarray
+        The power and transverse-force integrals [-].
+
+    References
+    ----------
+    .. [1] K. L. Johnson, *Contact Mechanics*, Cambridge University Press,
+       1985, §8.4 (spin and creep in rolling contact; full-slip limits).
+
+    Examples
+    --------
+    >>> j, g = spin_slip_integrals(0.0, 0.2, [0.0, 1.0, 1e4])
+    >>> [round(float(v), 3) for v in g]
+    [0.0, 0.921, 1.0]
+    >>> round(float(j[2] / 1e4 / (2 * math.pi / 3)), 4)
+    1.0
+    """
+    return _sliding_quadrature(curvature, aspect, slip, force=True)

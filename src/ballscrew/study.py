@@ -353,7 +353,8 @@ def _run(
             "The study's simplified model against the complete model",
             "The simplified model charges asperity friction and saturated lubricant shear at the "
             "rolling speed; the complete model adds up EHL rolling resistance, spin and "
-            "Heathcote sliding, hysteresis and ball-ball sliding.",
+            "Heathcote sliding, the slip the helix forces across the groove, hysteresis, "
+            "ball-ball sliding and the recirculation push.",
             compare_series,
             log_y=True,
         )

@@ -72,7 +72,7 @@ SOBOL_SEED = 20_240_613
 
 def uncertain_inputs(case: Case, preloads: dict[float, float]) -> tuple[UncertainInput, ...]:
     """The study case's uncertain inputs, their ranges and where each range comes from."""
-    from .friction.complete import BALL_TRAIN_CONSTANT
+    from .friction.complete import BALL_TRAIN_CONSTANT, BALL_TRAIN_SCATTER
 
     screw = case.screw
     forces = sorted(f for f in preloads.values() if f > 0.0)
@@ -128,12 +128,13 @@ def uncertain_inputs(case: Case, preloads: dict[float, float]) -> tuple[Uncertai
                 "complete.ball_train_constant",
                 "lognormal",
                 BALL_TRAIN_CONSTANT,
-                math.log(0.072 / 0.030) / 2.0,
+                math.log(BALL_TRAIN_SCATTER[1] / BALL_TRAIN_SCATTER[0]) / 2.0,
                 "",
             ),
             "ball-train constant c_B",
-            "its fit: the values matching single training cases span 0.030 to 0.072 "
-            "(16 to 84 %), a lognormal about the fitted 0.0474",
+            f"its fit: the values matching single training cases span "
+            f"{BALL_TRAIN_SCATTER[0]:.4f} to {BALL_TRAIN_SCATTER[1]:.4f} (16 to 84 %), a "
+            f"lognormal about the fitted {BALL_TRAIN_CONSTANT}",
         ),
         UncertainInput(
             Distribution("lubricant.limiting_shear_coefficient", "uniform", 0.03, 0.08, ""),

@@ -10,6 +10,7 @@ from __future__ import annotations
 import functools
 import math
 import re
+import tokenize
 from typing import Any
 
 import pint
@@ -95,6 +96,9 @@ def to_si(field: str, value: Any, unit: str | None) -> float:
         AssertionError,
         ArithmeticError,
         RecursionError,
+        LookupError,
+        SyntaxError,
+        tokenize.TokenError,  # the unit library's tokenizer on unbalanced brackets
     ) as exc:
         reason = (
             "incompatible unit"

@@ -15,6 +15,7 @@
   const PART_NAMES = {
     rolling: "EHL rolling", sliding: "spin and sliding", hysteresis: "elastic hysteresis",
     four_point: "4-point spin", ball_ball: "ball-ball sliding", seals: "wipers",
+    helix_slip: "helix slip across the groove", recirculation: "recirculation push",
     preload: "preload drag", load: "load term",
   };
   const PRELOAD_UNITS = {
