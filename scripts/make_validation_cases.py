@@ -25,7 +25,7 @@ from pathlib import Path
 from ballscrew.files import atomic_write
 from ballscrew.friction.catalog import preload_torque
 from ballscrew.lubricants import get
-from ballscrew.validation import jungnickel_loss_torque, screw_from_row
+from ballscrew.validation import acceptance_band, jungnickel_loss_torque, screw_from_row
 
 ROOT = Path(__file__).resolve().parents[1] / "src" / "ballscrew" / "data"
 PRELOADS = (0.02, 0.05, 0.10)
@@ -33,12 +33,13 @@ CONFORMITY = 0.55  # typical gothic-arch and circular-arc grooves: 0.52-0.56 (no
 CATALOG_SOURCE = (
     "THK's preload torque formula Tp = 0.05/sqrt(tan b) Fpr l/2pi (THK General Catalog, A-688) "
     "under HIWIN's test conditions for drag torque: 100 rpm, ISO VG 68, no wiper (HIWIN GmbH "
-    "catalogue, 3.6.3); band +-30 % (THK's torque tolerance for grades C2/C3 at 0.6-1 N*m, "
-    "A-688 Table 13)"
+    "catalogue, 3.6.3); band: the makers' tolerance of the preload torque at its level, grade "
+    "C3 (THK A-688 Table 13: +-45 % at 0.2-0.4 N*m, 35 % to 0.6, 30 % to 1.0, 25 % to 2.5, "
+    "20 % to 6.3; below 0.2 N*m the first row's 45 %)"
 )
 JUNGNICKEL_SOURCE = (
     "Jungnickel (2010) empirical ball screw loss law as implemented in Thermca "
-    "(ball_screw.py); band: factor 1.5 either way"
+    "(ball_screw.py); band: factor 2 either way (its double-nut convention is not documented)"
 )
 COLUMNS = [
     "case", "kind", "training", "nominal_diameter_mm", "lead_mm", "ball_diameter_mm",
@@ -102,6 +103,7 @@ def main() -> None:
             for share in PRELOADS:
                 fpr = round(share * float(g["dynamic_load_rating_kN"]) * 1e3, 1)
                 tp = float(preload_torque(fpr, lead * 1e-3, beta))
+                band = acceptance_band(tp)
                 rows.append(
                     base
                     | {
@@ -114,8 +116,8 @@ def main() -> None:
                         "speed_rpm": 100.0,
                         "temperature_C": 20.0,
                         "reference_Nm": round(tp, 5),
-                        "reference_low_Nm": round(0.7 * tp, 5),
-                        "reference_high_Nm": round(1.3 * tp, 5),
+                        "reference_low_Nm": round((1.0 - band) * tp, 5),
+                        "reference_high_Nm": round((1.0 + band) * tp, 5),
                         "source": f"{CATALOG_SOURCE}; geometry: {g['source']}",
                     }
                 )  # fmt: skip
@@ -135,8 +137,8 @@ def main() -> None:
                     "speed_rpm": rpm,
                     "temperature_C": 40.0,
                     "reference_Nm": round(tj, 5),
-                    "reference_low_Nm": round(tj / 1.5, 5),
-                    "reference_high_Nm": round(tj * 1.5, 5),
+                    "reference_low_Nm": round(tj / 2.0, 5),
+                    "reference_high_Nm": round(tj * 2.0, 5),
                     "source": f"{JUNGNICKEL_SOURCE}; geometry: {g['source']}",
                 }
             )
