@@ -11,7 +11,7 @@ A sweep file is TOML (``docs/sweeps.md`` lists every key)::
     temperature = "20, 40 degC"
     axial_load = "0..5 kN:6"
     "screw.preload" = "1, 2, 3 kN"    # a case field: the outer loop, one screw at a time
-    "complete.ball_train_constant" = [0.03, 0.0474, 0.07]   # a model parameter
+    "complete.ball_train_constant" = [0.025, 0.0358, 0.05]   # a model parameter
 
     [uncertainty]                     # optional: Monte Carlo and Sobol indices
     samples = 256
