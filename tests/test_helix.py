@@ -168,6 +168,29 @@ def test_arrays_equal_point_by_point_and_unloaded_balls_add_nothing() -> None:
     assert np.all(grid.power[1] == 0.0) and np.all(grid.force[1] == 0.0)
 
 
+def test_a_contact_that_carries_nothing_takes_the_slip_for_free() -> None:
+    # Screw contact loaded, nut contact unloaded (and the reverse): no transverse force can
+    # be balanced, so the ball slips at the free contact and nothing is dissipated.
+    loaded = SlipContact("screw", 0.09, 30.0, 0.26e-3, 0.2, 0.39)
+    free = SlipContact("nut", 0.09, 0.0, 0.0, 0.2, 0.31)
+    r = transverse_slip_loss([loaded, free], 2.5e-4)
+    assert float(r.screw_share) == 0.0 and float(r.power) == 0.0
+    assert abs(float(r.force)) < 1e-12  # G(0) of the rule: round-off about 1e-17
+    r = transverse_slip_loss([SlipContact("screw", 0.09, 0.0, 0.0, 0.2, 0.39),
+                              SlipContact("nut", 0.09, 30.0, 0.26e-3, 0.2, 0.31)], 2.5e-4)  # fmt: skip
+    assert float(r.screw_share) == 1.0 and float(r.power) == 0.0
+
+
+def test_reference_without_heathcote_by_default_equals_the_tables() -> None:
+    # A contact given without its Heathcote coefficient has none: the reference solver and
+    # the tabulated one then solve the same balance (1e-5: interpolation and tolerances).
+    c = [SlipContact("screw", 0.092, 29.0, 0.265e-3, 0.19, 0.39),
+         SlipContact("nut", 0.089, 29.0, 0.257e-3, 0.22, 0.31)]  # fmt: skip
+    ref, fast = ball_slip_balance(c, 1e-4), transverse_slip_loss(c, 1e-4)
+    assert float(fast.power) == pytest.approx(ref.power, rel=1e-5)
+    assert float(fast.screw_share) == pytest.approx(ref.screw_share, abs=1e-5)
+
+
 def test_bad_contacts_are_refused() -> None:
     c = SlipContact("screw", 0.1, 30.0, 0.26e-3, 0.2, 0.35)
     with pytest.raises(ValueError, match="screw and one nut"):

@@ -174,13 +174,15 @@ def test_spin_shares_the_screw_speed_component_along_the_normal() -> None:
     assert float(k.spin_nut / k.ball_speed) == pytest.approx(k.spin_to_roll_nut, rel=1e-14)
 
 
-@pytest.mark.parametrize("lead", [5e-3, 10e-3, 40e-3])
-def test_four_point_ball_rolls_about_the_line_through_its_screw_contacts(lead: float) -> None:
+@pytest.mark.parametrize(("lead", "alpha_deg"), [(5e-3, 45.0), (10e-3, 40.0), (40e-3, 50.0)])
+def test_four_point_ball_rolls_about_the_line_through_its_screw_contacts(
+    lead: float, alpha_deg: float
+) -> None:
     # Rigid-body check with the helix: relative to the frame that follows the ball centre,
     # the ball turns about b (the line through its two screw contacts at +-alpha in the
     # normal plane) at omega_b / cos(alpha). Then nothing slips along the groove at any of
     # the four contact centres, and the spin about each normal is four_point_spin's.
-    s = reference_screw().replace(lead=lead)
+    s = reference_screw().replace(lead=lead, contact_angle=math.radians(alpha_deg))
     omega = 23.0
     rm, r, alpha = s.pitch_diameter / 2, s.ball_diameter / 2, s.contact_angle
     lam = math.atan(lead / (2 * math.pi * rm))

@@ -167,11 +167,10 @@ def _tables(aspect: float) -> tuple[FloatArray, FloatArray, FloatArray]:
 
 
 def _lookup(aspect: float, sigma: FloatArray) -> tuple[FloatArray, FloatArray]:
-    """J and G at slip ratios ``sigma`` (>= 0, inf allowed), by linear interpolation."""
+    """J and G at finite slip ratios ``sigma`` >= 0, by linear interpolation."""
     t_nodes, j_nodes, g_nodes = _tables(aspect)
-    with np.errstate(invalid="ignore"):
-        t = np.where(np.isinf(sigma), 1.0, sigma / (1.0 + sigma))
-    j: FloatArray = np.interp(t, t_nodes, j_nodes) * np.where(np.isinf(sigma), 0.0, 1.0 + sigma)
+    t = sigma / (1.0 + sigma)
+    j: FloatArray = np.interp(t, t_nodes, j_nodes) * (1.0 + sigma)
     g: FloatArray = np.interp(t, t_nodes, g_nodes)
     return j, g
 
@@ -224,16 +223,16 @@ def transverse_slip_loss(contacts: Sequence[SlipContact], slip: float) -> SlipSh
         )
         for c in contacts
     ]
-    shape = np.broadcast_shapes(*(a[0].shape for a in arrays))
+    shape = np.broadcast_shapes(*(mu.shape for mu, _, _ in arrays))
     capacity = [np.broadcast_to(mu * q, shape).reshape(-1) for mu, q, _ in arrays]
     scale = [np.broadcast_to(c.spin * a, shape).reshape(-1) for c, (_, _, a) in zip(
         contacts, arrays, strict=True)]  # fmt: skip
 
     def ratio(speed: FloatArray, k: int, index: Index) -> FloatArray:
+        # An unloaded contact (a = 0) has no capacity: its ratio is never used, 0 is taken.
         w = scale[k][index]
-        with np.errstate(divide="ignore", invalid="ignore"):
-            r: FloatArray = np.where(w > 0.0, speed / np.where(w > 0.0, w, 1.0), np.inf)
-        return np.where(speed > 0.0, r, 0.0)
+        r: FloatArray = speed / np.where(w > 0.0, w, np.inf)
+        return r
 
     def side_force(x: FloatArray, side: str, index: Index) -> FloatArray:
         share = x if side == "screw" else 1.0 - x
@@ -251,11 +250,12 @@ def transverse_slip_loss(contacts: Sequence[SlipContact], slip: float) -> SlipSh
     everything = np.arange(n)
     lo, hi = np.zeros(n), np.ones(n)
     f_lo, f_hi = residual(lo, everything), residual(hi, everything)
-    total_capacity = sum(capacity, np.zeros(n))
+    # A side that cannot carry a transverse force (unloaded) takes all the slip, free.
+    x = np.where(f_lo >= 0.0, 0.0, np.where(f_hi <= 0.0, 1.0, 0.5))
     loaded = (f_lo < 0.0) & (f_hi > 0.0)
-    x = np.full(n, 0.5)
-    if loaded.any() and s > 0.0:
+    if loaded.any():
         idx = np.flatnonzero(loaded)
+        total_capacity = sum(capacity, np.zeros(n))
         x[idx] = illinois(
             lambda xx, i: residual(xx, idx[i]),
             lo[idx], hi[idx], f_lo[idx], f_hi[idx],
@@ -264,15 +264,9 @@ def transverse_slip_loss(contacts: Sequence[SlipContact], slip: float) -> SlipSh
     power = np.zeros(n)
     for k, c in enumerate(contacts):
         share = x if c.side == "screw" else 1.0 - x
-        sigma = ratio(share * s, k, everything)
-        j_slip = _lookup(c.aspect, sigma)[0]
+        j_slip = _lookup(c.aspect, ratio(share * s, k, everything))[0]
         j_spin = _lookup(c.aspect, np.zeros(n))[0]
-        with np.errstate(invalid="ignore"):
-            extra = np.where(
-                np.isinf(sigma), capacity[k] * share * s,  # no spin scale: plain Coulomb
-                capacity[k] * 1.5 / math.pi * scale[k] * (j_slip - j_spin),
-            )  # fmt: skip
-        power += np.where(capacity[k] > 0.0, extra, 0.0)
+        power += capacity[k] * 1.5 / math.pi * scale[k] * (j_slip - j_spin)
     force = side_force(x, "screw", everything)
     return SlipShare(
         power=power.reshape(shape), screw_share=x.reshape(shape), force=force.reshape(shape)
