@@ -23,8 +23,8 @@ import tempfile
 import time
 from pathlib import Path
 
-from ballscrew.sweep import run_sweep
-from ballscrew.sweep_spec import parse_sweep
+from ballscrew.sweep.run import run_sweep
+from ballscrew.sweep.spec import parse_sweep
 
 CASE = """
 [case]

@@ -23,7 +23,7 @@ from scipy.optimize import brentq, minimize_scalar
 from ballscrew import friction_torque, reference_screw
 from ballscrew.errors import BallScrewValidityWarning
 from ballscrew.lubricants import get
-from ballscrew.validation import ReferenceCase, load_cases
+from ballscrew.study.validation import ReferenceCase, load_cases
 
 RAD_PER_S_PER_RPM = 2 * math.pi / 60
 

@@ -25,7 +25,7 @@ from pathlib import Path
 from ballscrew.files import atomic_write
 from ballscrew.friction.catalog import preload_torque
 from ballscrew.lubricants import get
-from ballscrew.validation import acceptance_band, jungnickel_loss_torque, screw_from_row
+from ballscrew.study.validation import acceptance_band, jungnickel_loss_torque, screw_from_row
 
 ROOT = Path(__file__).resolve().parents[1] / "src" / "ballscrew" / "data"
 PRELOADS = (0.02, 0.05, 0.10)
@@ -51,7 +51,7 @@ COLUMNS = [
 
 def _table() -> list[dict[str, str]]:
     """One row per distinct geometry with ball diameter, turns and rating, in file order."""
-    from ballscrew.designation import catalog_screws
+    from ballscrew.io.designation import catalog_screws
 
     seen: set[tuple[float, ...]] = set()
     table = []

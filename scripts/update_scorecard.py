@@ -10,8 +10,8 @@ from __future__ import annotations
 from pathlib import Path
 
 from ballscrew.files import atomic_write
-from ballscrew.validation import SUMMARY_FILE, score, summarise
-from ballscrew.validation_report import summary_csv
+from ballscrew.report.validation import summary_csv
+from ballscrew.study.validation import SUMMARY_FILE, score, summarise
 
 if __name__ == "__main__":
     target = Path(__file__).resolve().parents[1] / "src" / "ballscrew" / "data" / SUMMARY_FILE

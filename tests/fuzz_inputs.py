@@ -22,8 +22,8 @@ from collections.abc import Callable
 from pathlib import Path
 
 from ballscrew import BallScrewInputError, reference_screw
-from ballscrew.case import parse_case
-from ballscrew.measured import parse_measured
+from ballscrew.io.case import parse_case
+from ballscrew.io.measured import parse_measured
 
 BASE_CASE = (Path(__file__).parent / "data" / "small_case.toml").read_text()
 BASE_CSV = "speed [rpm],torque [N*m]\n10,0.21\n100,0.25\n1000,0.31\n3000,0.42\n"

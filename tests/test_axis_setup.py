@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 
 from ballscrew import friction_torque, lubricants, reference_screw
-from ballscrew.axis_setup import axis_setup, shaft_inertia
-from ballscrew.energy import STANDARD_GRAVITY, Axis, weight_back_driving
+from ballscrew.axis.energy import STANDARD_GRAVITY, Axis, weight_back_driving
+from ballscrew.axis.setup import axis_setup, shaft_inertia
 
 OIL = lubricants.get("PAO ISO VG 68")
 

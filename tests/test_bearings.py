@@ -8,16 +8,16 @@ import numpy as np
 import pytest
 
 from ballscrew import lubricants, reference_screw
+from ballscrew.axis.energy import Axis, axis_cycle
+from ballscrew.axis.motion import Profile
 from ballscrew.bearings import (
     PALMGREN_BEARINGS,
     palmgren_bearing_torque,
     palmgren_drag_torque,
     palmgren_load_torque,
 )
-from ballscrew.case import parse_case
-from ballscrew.energy import Axis, axis_cycle
 from ballscrew.errors import BallScrewInputError
-from ballscrew.motion import Profile
+from ballscrew.io.case import parse_case
 
 RPM = math.pi / 30.0
 

@@ -10,10 +10,10 @@ import numpy as np
 import pytest
 
 from ballscrew import friction_torque, reference_screw
-from ballscrew.calibration import fit_parameters, fitted_case_toml
-from ballscrew.case import parse_case
 from ballscrew.errors import BallScrewInputError
-from ballscrew.measured import MeasuredCurve, parse_measured
+from ballscrew.fit.calibration import fit_parameters, fitted_case_toml
+from ballscrew.io.case import parse_case
+from ballscrew.io.measured import MeasuredCurve, parse_measured
 
 OIL = "PAO ISO VG 68"
 TRUE_PRELOAD, TRUE_CB = 1500.0, 0.03
@@ -238,7 +238,7 @@ def test_every_parameter_unidentified_leaves_the_start_and_its_residual() -> Non
 def test_identifiability_thresholds() -> None:
     # A log parameter is unidentified when its 95 % interval (+-1.96 sd) spans more than a
     # factor 100 (half-width ln(100)/2 = 2.303); a linear one when it spans its whole range.
-    from ballscrew.calibration import FITTABLE, _unidentified
+    from ballscrew.fit.calibration import FITTABLE, _unidentified
 
     log_p, lin_p = FITTABLE["preload"], FITTABLE["seal_torque"]
     assert not _unidentified(log_p, 2.30 / 1.96, 10) and _unidentified(log_p, 2.31 / 1.96, 10)

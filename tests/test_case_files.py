@@ -7,9 +7,9 @@ from pathlib import Path
 import pytest
 
 from ballscrew import friction_torque
-from ballscrew.case import load_case, parse_case
-from ballscrew.case_schema import SECTIONS, CaseFile, reference_markdown, reference_rows, template
 from ballscrew.errors import BallScrewInputError
+from ballscrew.io.case import load_case, parse_case
+from ballscrew.io.schema import SECTIONS, CaseFile, reference_markdown, reference_rows, template
 from cli_runner import run
 
 DOCS = Path(__file__).parents[1] / "docs" / "case-files.md"

@@ -9,9 +9,9 @@ import numpy as np
 import pytest
 
 from ballscrew import BallScrewInputError, reference_screw
-from ballscrew.case import default_case_path, load_case, parse_case
 from ballscrew.friction.catalog import preload_from_drag_torque, preload_torque
-from ballscrew.measured import error_metrics, parse_measured
+from ballscrew.io.case import default_case_path, load_case, parse_case
+from ballscrew.io.measured import error_metrics, parse_measured
 from ballscrew.units import parse_range, to_si
 
 SMALL = Path(__file__).parent / "data" / "small_case.toml"
@@ -181,7 +181,7 @@ def test_measured_csv_with_decimal_commas_and_semicolons() -> None:
     # cells; with "," between cells the decimal comma used to split the
     # number and the torque was read as 0.
     from ballscrew import reference_screw
-    from ballscrew.measured import parse_measured
+    from ballscrew.io.measured import parse_measured
 
     screw = reference_screw()
     semi = parse_measured("speed [rpm];torque [N*m]\n100;0,31\n500;0,36\n", screw)

@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from ballscrew import __version__, friction_torque
-from ballscrew.case import load_case
+from ballscrew.io.case import load_case
 from cli_runner import run
 
 DATA = Path(__file__).parent / "data"

@@ -10,7 +10,8 @@ import pytest
 from scipy.integrate import solve_ivp
 
 from ballscrew import friction_torque, reference_screw
-from ballscrew.controller import (
+from ballscrew.errors import BallScrewInputError
+from ballscrew.fit.controller import (
     coulomb_viscous,
     fit_form,
     lugre_rate,
@@ -18,7 +19,6 @@ from ballscrew.controller import (
     stribeck,
     stribeck_torque,
 )
-from ballscrew.errors import BallScrewInputError
 
 W = np.concatenate([-np.geomspace(0.01, 300.0, 40)[::-1], np.geomspace(0.01, 300.0, 40)])
 
@@ -164,7 +164,7 @@ def test_every_table_side_quantity_follows_the_lead() -> None:
     p = {"coulomb_torque": 0.3, "static_torque": 0.5, "stribeck_speed": 2.0,
          "stribeck_exponent": 1.3, "viscous_coefficient": 1e-3, "bristle_stiffness": 3000.0,
          "bristle_damping": 5.0}  # fmt: skip
-    from ballscrew.controller import FrictionForm
+    from ballscrew.fit.controller import FrictionForm
 
     lead = 0.005
     k = 2 * math.pi / lead

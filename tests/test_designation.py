@@ -7,9 +7,9 @@ import math
 import pytest
 
 from ballscrew import BallScrew
-from ballscrew.case import parse_case
-from ballscrew.designation import catalog_screws, find, parse_size, resolve
 from ballscrew.errors import BallScrewInputError
+from ballscrew.io.case import parse_case
+from ballscrew.io.designation import catalog_screws, find, parse_size, resolve
 
 CASE = """
 [screw]

@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 
 from ballscrew import friction_torque, lubricants, reference_screw
-from ballscrew.energy import STANDARD_GRAVITY, Axis, axis_cycle
-from ballscrew.motion import Profile, back_and_forth, move
+from ballscrew.axis.energy import STANDARD_GRAVITY, Axis, axis_cycle
+from ballscrew.axis.motion import Profile, back_and_forth, move
 
 OIL = lubricants.get("PAO ISO VG 68")
 FAST = 150_000.0  # d·n limit of a high-speed nut [mm·rpm]: 0.5 m/s on a 10 mm lead is 3000 rpm
@@ -101,7 +101,7 @@ def test_energy_command_json_and_errors(
     r = payload["models"]["complete"]
     # The same as the API on the same cycle.
     c = back_and_forth(0.3, 0.5, 2.0, cycles=2, process_force=2000.0)
-    from ballscrew.case import load_case
+    from ballscrew.io.case import load_case
 
     loaded = load_case(case)
     api = axis_cycle(c, loaded.screw, loaded.lubricant, Axis(moving_mass=200.0, dn_limit=FAST))
@@ -121,7 +121,7 @@ def test_back_driving_decided_as_the_catalogue_does(lead_mm: float, mu: float) -
     # catalogue model and no preload, 1 - 2 pi T/(F l) = 2 - 1/eta agrees to
     # first order in mu (difference ~ mu^2 / tan^2 beta), and both call the
     # screw self-locking when the lead angle is below the friction angle.
-    from ballscrew.energy import reverse_efficiency
+    from ballscrew.axis.energy import reverse_efficiency
 
     s = reference_screw().replace(nut="single", preload=0.0, lead=lead_mm * 1e-3)
     r = friction_torque(s, OIL, speed=10.0, temperature=40.0, axial_load=3000.0,
@@ -138,8 +138,8 @@ def test_energy_command_reports_the_temperature_and_takes_a_profile(
 ) -> None:
     import json
 
+    from ballscrew.axis.thermal import ThermalNode, steady_temperature
     from ballscrew.cli import main
-    from ballscrew.thermal import ThermalNode, steady_temperature
 
     case = tmp_path / "axis.toml"  # type: ignore[operator]
     case.write_text(
@@ -155,8 +155,8 @@ def test_energy_command_reports_the_temperature_and_takes_a_profile(
     assert info.value.code == 0
     r = json.loads(capsys.readouterr().out)["models"]["complete"]
     # Two hours is many time constants: the node has reached its steady temperature.
-    from ballscrew.case import load_case
-    from ballscrew.motion import read_trajectory
+    from ballscrew.axis.motion import read_trajectory
+    from ballscrew.io.case import load_case
 
     loaded = load_case(case)
     steady = steady_temperature(read_trajectory(profile.read_text()), loaded.screw,
@@ -250,7 +250,7 @@ def _energy_json(
 def test_energy_json_has_the_documented_keys_and_states_its_assumptions(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    from ballscrew.thermal import estimated_screw_length
+    from ballscrew.axis.thermal import estimated_screw_length
 
     case, payload, captured = _energy_json(
         tmp_path, capsys, 'bearing_bore = "30 mm"',
@@ -269,7 +269,7 @@ def test_energy_json_has_the_documented_keys_and_states_its_assumptions(
     assert sum(parts.values()) == pytest.approx(payload["friction_energy_J"], rel=1e-9)
     assert parts["helix_slip"] > 0.0
     # No screw length given: the heat balance uses the estimate and says so.
-    from ballscrew.case import load_case
+    from ballscrew.io.case import load_case
 
     assert payload["thermal"]["screw_length"] == pytest.approx(
         estimated_screw_length(load_case(case).screw, 0.3), rel=1e-12
@@ -300,7 +300,7 @@ def test_load_work_of_a_vertical_lift_is_the_force_times_speed_integral() -> Non
     # 300 N: the work on the load, computed another way as the integral of F v dt with
     # F = m (a + g) + F_p (g = 9.80665 m/s², standard gravity) on a fine grid, equals
     # 1/2 m v^2 + m g h + F_p h. Tolerance: the fine grid's trapezoidal error (1e-8).
-    from ballscrew.energy import reverse_efficiency
+    from ballscrew.axis.energy import reverse_efficiency
 
     t = np.linspace(0.0, 0.5, 5001)
     a = np.ones_like(t)

@@ -10,9 +10,9 @@ import numpy as np
 import pytest
 
 from ballscrew import BallScrewInputError, friction_torque
-from ballscrew.case import load_case, parse_case
 from ballscrew.cli import main
-from ballscrew.measured import read_measured
+from ballscrew.io.case import load_case, parse_case
+from ballscrew.io.measured import read_measured
 from fuzz_inputs import campaign, mutate_case
 
 

@@ -176,8 +176,9 @@ def test_a_contact_that_carries_nothing_takes_the_slip_for_free() -> None:
     r = transverse_slip_loss([loaded, free], 2.5e-4)
     assert float(r.screw_share) == 0.0 and float(r.power) == 0.0
     assert abs(float(r.force)) < 1e-12  # G(0) of the rule: round-off about 1e-17
-    r = transverse_slip_loss([SlipContact("screw", 0.09, 0.0, 0.0, 0.2, 0.39),
-                              SlipContact("nut", 0.09, 30.0, 0.26e-3, 0.2, 0.31)], 2.5e-4)  # fmt: skip
+    pair = [SlipContact("screw", 0.09, 0.0, 0.0, 0.2, 0.39),
+            SlipContact("nut", 0.09, 30.0, 0.26e-3, 0.2, 0.31)]  # fmt: skip
+    r = transverse_slip_loss(pair, 2.5e-4)
     assert float(r.screw_share) == 1.0 and float(r.power) == 0.0
 
 

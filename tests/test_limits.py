@@ -10,10 +10,10 @@ import pytest
 from scipy.optimize import brentq
 
 from ballscrew import reference_screw
-from ballscrew.energy import Axis, axis_cycle
+from ballscrew.axis.energy import Axis, axis_cycle
+from ballscrew.axis.motion import move
 from ballscrew.errors import BallScrewInputError, BallScrewSpeedWarning
 from ballscrew.limits import SAFETY_FACTOR, critical_speed, root_diameter
-from ballscrew.motion import move
 
 # Catalogue rule n = f d_r / L^2 * 1e7 rpm (d_r, L in mm), f printed to three
 # digits (HIWIN, THK, engineering tables): fixed-free 3.4, supported-supported

@@ -7,8 +7,8 @@ import math
 import numpy as np
 import pytest
 
+from ballscrew.axis.motion import back_and_forth, chain, dwell, move
 from ballscrew.errors import BallScrewInputError
-from ballscrew.motion import back_and_forth, chain, dwell, move
 
 
 @pytest.mark.parametrize("stroke", [0.3, -0.3])
@@ -75,7 +75,7 @@ def test_bad_moves_are_refused(kwargs: dict[str, float], field: str) -> None:
 
 
 def test_trajectory_from_csv_with_units_and_decimal_commas() -> None:
-    from ballscrew.motion import read_trajectory
+    from ballscrew.axis.motion import read_trajectory
 
     # x = 0.5 t^2 [m] sampled in mm and ms: v = t, a = 1 (finite differences
     # of second order are exact for a quadratic).
@@ -137,7 +137,7 @@ def test_dwell_samples_and_place() -> None:
 def test_chain_moves_each_piece_to_where_the_last_ended() -> None:
     # A trajectory recorded from t = 5 s at x = 0.1 m, twice: the chain starts at 0 s and
     # 0 m, the second copy starts where the first ended, and the duration is the sum.
-    from ballscrew.motion import read_trajectory
+    from ballscrew.axis.motion import read_trajectory
 
     rec = read_trajectory("time [s],position [m]\n5,0.1\n5.5,0.15\n6,0.3\n")
     assert rec.duration == pytest.approx(1.0, rel=1e-12)
@@ -154,7 +154,7 @@ def test_back_and_forth_defaults_one_cycle_no_dwell_no_force() -> None:
 
 
 def test_profiles_need_two_samples_at_increasing_times() -> None:
-    from ballscrew.motion import Profile
+    from ballscrew.axis.motion import Profile
 
     two = np.array([0.0, 1.0])
     assert Profile(two, two, two, two, two).duration == 1.0
@@ -164,7 +164,7 @@ def test_profiles_need_two_samples_at_increasing_times() -> None:
 
 
 def test_trajectory_errors_name_the_line_and_the_header() -> None:
-    from ballscrew.motion import read_trajectory
+    from ballscrew.axis.motion import read_trajectory
 
     # Line 1 is the header: the third line holds the time that does not increase.
     with pytest.raises(BallScrewInputError, match="line 3"):

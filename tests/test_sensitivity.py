@@ -11,10 +11,10 @@ import xarray as xr
 from scipy import stats
 
 from ballscrew import friction_torque
-from ballscrew.case import load_case
-from ballscrew.sensitivity import sample, sobol_indices
-from ballscrew.sweep import run_sweep
-from ballscrew.sweep_spec import Distribution, parse_sweep
+from ballscrew.io.case import load_case
+from ballscrew.sweep.run import run_sweep
+from ballscrew.sweep.sensitivity import sample, sobol_indices
+from ballscrew.sweep.spec import Distribution, parse_sweep
 from cli_runner import run
 
 CASE = Path(__file__).parent / "data" / "small_case.toml"

@@ -8,8 +8,8 @@ import re
 import numpy as np
 import pytest
 
-from ballscrew.case import load_case
-from ballscrew.study import StudyResult, run_study
+from ballscrew.io.case import load_case
+from ballscrew.study.run import StudyResult, run_study
 
 
 @pytest.fixture(scope="module")
@@ -90,8 +90,8 @@ axial_load = "1.5 kN"
 
 def test_a_study_of_another_case_is_that_case_s_study(study: StudyResult, tmp_path: object) -> None:
     from ballscrew import friction_torque
-    from ballscrew.case import parse_case
-    from ballscrew.report import write_report
+    from ballscrew.io.case import parse_case
+    from ballscrew.report.study import write_report
 
     case = parse_case(USER_CASE)
     result = run_study(case)
@@ -139,7 +139,7 @@ def test_controller_figure_is_the_stribeck_form_fitted_to_the_complete_curve(
 
 
 def test_sensitivity_finding_follows_the_indices(study: StudyResult) -> None:
-    from ballscrew.study_sensitivity import sensitivity_finding as _sensitivity_finding
+    from ballscrew.study.sensitivity import sensitivity_finding as _sensitivity_finding
 
     s = study.sensitivity
     assert s is not None and s.evaluations == s.base_samples * (len(s.inputs) + 2)

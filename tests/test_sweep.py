@@ -14,10 +14,10 @@ import pytest
 import xarray as xr
 
 from ballscrew import friction_torque
-from ballscrew.case import load_case
-from ballscrew.sweep import plan_sweep, run_sweep
-from ballscrew.sweep_spec import parse_sweep
-from ballscrew.sweep_store import partial_path, progress_path
+from ballscrew.io.case import load_case
+from ballscrew.sweep.run import plan_sweep, run_sweep
+from ballscrew.sweep.spec import parse_sweep
+from ballscrew.sweep.store import partial_path, progress_path
 from cli_runner import run
 
 DATA = Path(__file__).parent / "data"
@@ -299,7 +299,7 @@ def test_cli_prints_a_summary_and_json(tmp_path: Path, capsys: pytest.CaptureFix
 
 @pytest.mark.parametrize("name", ["sweep_preload.toml", "sweep_uncertainty.toml"])
 def test_example_sweep_files_are_valid(name: str) -> None:
-    from ballscrew.sweep_spec import load_sweep
+    from ballscrew.sweep.spec import load_sweep
 
     path = Path(__file__).resolve().parents[1] / "examples" / name
     plan = plan_sweep(load_sweep(path))  # every grid point is checked here
@@ -335,7 +335,7 @@ def test_uneven_chunks_hold_every_point_of_a_direct_grid(tmp_path: Path) -> None
 def test_chunk_report_time_and_memory() -> None:
     # The report's seconds lie within the wall time of the call; its peak memory is the
     # process's high-water mark (Linux: VmHWM of /proc/self/status, in kB).
-    from ballscrew.sweep_plan import compute_chunk
+    from ballscrew.sweep.plan import compute_chunk
 
     plan = plan_sweep(parse_sweep(SWEEP))
     began = time.perf_counter()

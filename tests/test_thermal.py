@@ -8,9 +8,9 @@ import numpy as np
 import pytest
 
 from ballscrew import reference_screw
-from ballscrew.energy import Axis
-from ballscrew.motion import back_and_forth
-from ballscrew.thermal import (
+from ballscrew.axis.energy import Axis
+from ballscrew.axis.motion import back_and_forth
+from ballscrew.axis.thermal import (
     AIR,
     ThermalNode,
     convection_coefficient,
@@ -58,8 +58,8 @@ def test_history_with_constant_power_and_conductance_is_the_exponential() -> Non
 
 
 def test_mean_powers_over_temperatures_in_one_call_match_each_cycle() -> None:
-    from ballscrew.energy import axis_cycle
-    from ballscrew.thermal import mean_powers
+    from ballscrew.axis.energy import axis_cycle
+    from ballscrew.axis.thermal import mean_powers
 
     screw, axis = reference_screw(), Axis(moving_mass=200.0, dn_limit=1.5e5)
     temps = np.array([20.0, 35.0, 60.0])
@@ -72,7 +72,7 @@ def test_mean_powers_over_temperatures_in_one_call_match_each_cycle() -> None:
 
 def test_steady_at_speeds_balances_each_speed_as_a_separate_calculation_does() -> None:
     from ballscrew import friction_torque
-    from ballscrew.thermal import steady_at_speeds
+    from ballscrew.axis.thermal import steady_at_speeds
 
     screw = reference_screw()
     node = ThermalNode(screw_length=0.8, ambient=22.0, machine_resistance=3.0)
@@ -93,8 +93,8 @@ def test_steady_at_speeds_balances_each_speed_as_a_separate_calculation_does() -
 
 
 def test_steady_at_one_speed_is_the_cycle_steady_state_of_constant_running() -> None:
-    from ballscrew.motion import Profile
-    from ballscrew.thermal import steady_at_speeds
+    from ballscrew.axis.motion import Profile
+    from ballscrew.axis.thermal import steady_at_speeds
 
     screw = reference_screw()
     node = ThermalNode(screw_length=1.0, ambient=20.0, machine_resistance=2.0)
@@ -114,8 +114,8 @@ def test_rotating_cylinder_correlation_warns_past_its_reynolds_range() -> None:
     # a 40 mm screw at 3000 rpm (3.2e4) stays inside.
     import warnings as w
 
+    from ballscrew.axis.thermal import convection_coefficient
     from ballscrew.errors import BallScrewValidityWarning
-    from ballscrew.thermal import convection_coefficient
 
     with pytest.warns(BallScrewValidityWarning, match="Reynolds number 4.6"):
         convection_coefficient(0.1, 7000 * math.pi / 30, 40.0, 20.0)
@@ -130,7 +130,7 @@ def test_cycle_conductance_is_convection_over_the_screw_plus_the_machine_path(
 ) -> None:
     # G = h pi d L + 1/R_m, with h the rotating-cylinder value at the cycle's RMS speed and
     # the steady temperature, recomputed here; no machine path when R_m is None.
-    from ballscrew.thermal import _rms_speed
+    from ballscrew.axis.thermal import _rms_speed
 
     screw = reference_screw()
     node = ThermalNode(screw_length=length, ambient=20.0, machine_resistance=resistance)
@@ -153,8 +153,8 @@ def test_heat_capacity_of_a_bare_screw_and_the_history_from_ambient() -> None:
 def test_a_node_that_cannot_shed_its_heat_names_the_speed_and_the_limit() -> None:
     # 1 mm of screw in still air at 3000 rpm: the friction cannot leave below 200 K above the
     # ambient, and the message says the limit in °C.
+    from ballscrew.axis.thermal import steady_at_speeds
     from ballscrew.errors import BallScrewInputError
-    from ballscrew.thermal import steady_at_speeds
 
     node = ThermalNode(screw_length=1e-3, ambient=25.0)
     with pytest.raises(BallScrewInputError, match="shed below 225 °C"):
@@ -163,7 +163,7 @@ def test_a_node_that_cannot_shed_its_heat_names_the_speed_and_the_limit() -> Non
 
 def test_estimated_length_of_a_single_nut_counts_its_turns_once() -> None:
     # travel + (turns + 1) * circuits * lead + 4 d, the nut counted once for a single nut.
-    from ballscrew.thermal import estimated_screw_length
+    from ballscrew.axis.thermal import estimated_screw_length
 
     s = reference_screw().replace(nut="single", preload=0.0)
     expected = 0.3 + (s.loaded_turns + 1.0) * s.circuits * s.lead + 4 * s.pitch_diameter

@@ -13,7 +13,8 @@ import numpy as np
 import pytest
 
 from ballscrew import lubricants, reference_screw
-from ballscrew.validation import (
+from ballscrew.report.validation import summary_table
+from ballscrew.study.validation import (
     acceptance_band,
     bundled_summary,
     jungnickel_loss_torque,
@@ -22,7 +23,6 @@ from ballscrew.validation import (
     summarise,
     trend_slopes,
 )
-from ballscrew.validation_report import summary_table
 
 CASES = load_cases()
 
@@ -113,7 +113,7 @@ def test_a_model_that_is_jungnickels_law_passes_its_exponents_and_level() -> Non
     # A toy model returning Jungnickel's law itself: its exponent rows sit at the law's
     # values and its Jungnickel cases at ratio 1, whatever the catalogue says.
     from ballscrew.friction import MODELS, register
-    from ballscrew.validation import jungnickel_loss_torque
+    from ballscrew.study.validation import jungnickel_loss_torque
 
     @register("toy-jungnickel", title="toy", reference="test", validity="test")
     def toy(screw, lubricant, speed, temperature, axial_load):  # type: ignore[no-untyped-def]

@@ -20,8 +20,8 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from starlette.testclient import TestClient
 
-from ballscrew.case import parse_case
 from ballscrew.chain import friction_torque
+from ballscrew.io.case import parse_case
 from ballscrew.units import parse_range
 from ballscrew.web import create_app, service
 from ballscrew.web.service import LIMITS

@@ -23,8 +23,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ballscrew.case import parse_case
 from ballscrew.chain import friction_torque
+from ballscrew.io.case import parse_case
 from cli_runner import run
 from web_server import running_server
 

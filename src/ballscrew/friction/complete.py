@@ -73,7 +73,7 @@ zero speed. Oil churning in a bath is not modelled (ball screws run on
 circulating oil, oil-air or grease).
 
 The ball-train constant was fitted once on the training set of
-:mod:`ballscrew.validation` (see :data:`BALL_TRAIN_CONSTANT`) and is never
+:mod:`ballscrew.study.validation` (see :data:`BALL_TRAIN_CONSTANT`) and is never
 changed per case.
 
 Kinematics with the helix (:mod:`ballscrew.kinematics`): rolling, spin and
@@ -112,7 +112,7 @@ BALL_TRAIN_CONSTANT: float = 0.0358
 r"""Ball-train force over the ball load, :math:`c_B = F_B/Q` [-].
 
 Fitted once (``scripts/fit_ball_train.py``) on the training cases of
-:mod:`ballscrew.validation` (10 double nuts at 5 % of their load rating), with
+:mod:`ballscrew.study.validation` (10 double nuts at 5 % of their load rating), with
 every other mechanism in place, the helix's transverse slip included. The
 value matching each training case alone spreads over 0.031 to 0.047 (16 to
 84 %, median 0.037). On the reference screw (40 x 10 mm, 2 kN, mineral ISO VG
@@ -319,7 +319,7 @@ def _helix_slip(
     reference="Houpert, Tribol. Trans. 45 (2002) 345; SKF Rolling bearings 10000 EN (2012) "
     "friction model; Johnson, Contact Mechanics (1985) ch. 8-9; Lin, Ravani & Velinsky, "
     "J. Mech. Des. 116 (1994) 849 (the helix's slip); ball-train constant fitted once "
-    "(ballscrew.validation)",
+    "(ballscrew.study.validation)",
     validity="lubricated steel ball screws with oil or grease, 2-point or 4-point contact, "
     "Hamrock-Dowson film (ellipticity 1-8); ball-train constant trained on catalogue drag "
     "torques of 14-63 mm catalogue screws (HIWIN)",

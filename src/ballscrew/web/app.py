@@ -1,7 +1,7 @@
 """The web calculator's application: one page, its script and style, and a JSON API.
 
 Built on Starlette (an ASGI toolkit) and served by uvicorn
-(:mod:`ballscrew.cli_serve`). Routes:
+(:mod:`ballscrew.cli.serve`). Routes:
 
 ``GET /``
     The page (server-rendered HTML; a small script calls the API as inputs change).
@@ -47,8 +47,8 @@ from starlette.routing import Route
 from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
 from .. import __version__, lubricants
-from ..designation import catalog_screws
 from ..errors import BallScrewSpeedWarning, BallScrewValidityWarning
+from ..io.designation import catalog_screws
 from . import service
 from .service import LIMITS, ApiError, Limits
 

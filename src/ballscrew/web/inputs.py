@@ -1,7 +1,7 @@
 """What a web request may carry, and how it becomes a case: limits, refusals, parsing.
 
 A request's fields are turned into a case file's TOML text and read by
-:func:`ballscrew.case.parse_case`, so the rules, units and one-line messages
+:func:`ballscrew.io.case.parse_case`, so the rules, units and one-line messages
 are the command line's. The work a request may ask for is bounded here,
 before any of it is done (:class:`Limits`): operating points, the nesting of
 the fields, the body's size. Uploaded case files are parsed as TOML data
@@ -19,8 +19,8 @@ from typing import Any
 
 import tomlkit
 
-from ..case import Case, parse_case
 from ..errors import BallScrewInputError
+from ..io.case import Case, parse_case
 from ..units import range_size
 
 __all__ = [

@@ -1,11 +1,11 @@
 """What the web calculator computes, without the web: request data in, plain data out.
 
 Every request is turned into a case file's TOML text and read by
-:func:`ballscrew.case.parse_case`, so the rules, units and one-line messages
+:func:`ballscrew.io.case.parse_case`, so the rules, units and one-line messages
 are the command line's; the models run through
-:func:`ballscrew.cli_torque.run_models` and the tables through
-:mod:`ballscrew.outputs`, so the numbers and files are those of ``ballscrew
-torque``; the energy of a move is :func:`ballscrew.energy.axis_cycle` on the
+:func:`ballscrew.cli.torque.run_models` and the tables through
+:mod:`ballscrew.report.outputs`, so the numbers and files are those of ``ballscrew
+torque``; the energy of a move is :func:`ballscrew.axis.energy.axis_cycle` on the
 move of ``ballscrew energy --move``.
 
 The work a request may ask for is bounded before any of it is done: the
@@ -24,13 +24,13 @@ from typing import Any
 
 import numpy as np
 
-from ..case import Case
 from ..chain import FrictionResult
-from ..cli_energy import parse_move
-from ..cli_torque import run_models, warning_lines
+from ..cli.energy import parse_move
+from ..cli.torque import run_models, warning_lines
 from ..errors import BallScrewInputError, BallScrewSpeedWarning, BallScrewValidityWarning
 from ..friction import MODELS, get_model
-from ..outputs import (
+from ..io.case import Case
+from ..report.outputs import (
     INPUT_DIGITS,
     csv_text,
     finite_or_null,
@@ -178,9 +178,9 @@ _MOVE_KEYS = ("stroke", "feed", "acceleration")
 
 def _energy(case: Case, move: Any, limits: Limits) -> dict[str, Any]:
     """The energy of one back-and-forth move (``ballscrew energy --move``), complete model."""
-    from ..axis_setup import axis_setup
-    from ..energy import axis_cycle
-    from ..motion import back_and_forth
+    from ..axis.energy import axis_cycle
+    from ..axis.motion import back_and_forth
+    from ..axis.setup import axis_setup
 
     if not isinstance(move, Mapping) or not all(isinstance(move.get(k), str) for k in _MOVE_KEYS):
         raise BallScrewInputError("--move", move, "stroke, feed and acceleration as text")

@@ -1,0 +1,6 @@
+"""The axis around the screw.
+
+Motion profiles (:mod:`.motion`), torques, powers and energies over a cycle
+(:mod:`.energy`), the temperature screw and nut reach (:mod:`.thermal`), and an axis
+from a case file with what it leaves out filled in and stated (:mod:`.setup`).
+"""

@@ -1,0 +1,393 @@
+r"""Torques, powers and energies of a feed axis over a motion profile.
+
+An :class:`Axis` is the ball screw with what it moves and drives: the moving
+mass, the inertias of screw, coupling and motor, a gear ratio, the incline of
+the axis (gravity) and the lubricant temperature. :func:`axis_cycle` runs one
+friction model over every sample of a :class:`~ballscrew.axis.motion.Profile` in
+one vectorised call and returns, in SI:
+
+* the screw speed :math:`\omega = 2\pi v/l` and acceleration;
+* the axial force the nut must deliver, :math:`F = m(a + g\sin\theta) + F_p`
+  (inertia, gravity on an axis inclined by :math:`\theta`, process force);
+* the friction torque :math:`T_f \ge 0` (it opposes the rotation) and the
+  torque that moves the load, :math:`T_F = F l/2\pi`;
+* the support bearings' friction :math:`T_b` (:mod:`ballscrew.bearings`,
+  reported separately from the screw's);
+* the motor torque :math:`T_m = [T_F + \mathrm{sign}(\omega)(T_f + T_b) +
+  (J_s + J_c)\dot\omega]/i + J_m i\dot\omega` with gear ratio :math:`i`
+  (motor turns per screw turn);
+* friction power :math:`T_f|\omega|` and energy :math:`\int T_f|\omega|\,dt`
+  (trapezoidal rule over the samples), split by direction of travel, and the
+  same with the catalogue's constant-efficiency rule for comparison;
+* the peak and RMS motor torque, :math:`\sqrt{\int T_m^2\,dt / t}`;
+* the forward and back-driving efficiencies at the working point
+  (:func:`reverse_efficiency`);
+* a :class:`~ballscrew.errors.BallScrewSpeedWarning` where the profile's
+  top speed passes the nut's d·n limit or 80 % of the shaft's critical speed
+  (:mod:`ballscrew.limits`; the latter when the span between the supports
+  is given).
+
+The friction torque is the model's at the axial load and speed of each
+sample; the model sees the load through its ball loads, so load-dependent
+friction is in :math:`T_f` and is not counted again.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from ..bearings import (
+    PALMGREN_BEARINGS,
+    SKF_FRICTION_COEFFICIENTS,
+    palmgren_bearing_torque,
+    simplified_bearing_torque,
+)
+from ..chain import FrictionResult, friction_torque
+from ..errors import (
+    BallScrewInputError,
+    BallScrewSpeedWarning,
+    FloatArray,
+    check_finite,
+    check_nonnegative,
+    check_positive,
+)
+from ..geometry import BallScrew
+from ..limits import DEFAULT_DN_LIMIT, SUPPORT_EIGENVALUES, speed_limit_issues
+from ..lubricant import Lubricant
+from .motion import Profile
+
+__all__ = [
+    "Axis",
+    "CycleResult",
+    "axis_cycle",
+    "reverse_efficiency",
+    "screw_motion",
+    "weight_back_driving",
+]
+
+STANDARD_GRAVITY = 9.80665
+"""[m/s²]."""
+
+
+@dataclass(frozen=True)
+class Axis:
+    """A feed axis driven by a ball screw (SI units).
+
+    Attributes
+    ----------
+    moving_mass : float
+        Table, workpiece and nut [kg], >= 0.
+    screw_inertia, coupling_inertia, motor_inertia : float
+        Mass moments of inertia [kg·m²] about the screw's axis (screw and
+        coupling) and the motor's axis, >= 0.
+    gear_ratio : float
+        Motor turns per screw turn [-], > 0 (1 for a direct drive).
+    incline : float
+        Angle of the axis above the horizontal [rad], in [-π/2, π/2]; +x
+        climbs for a positive angle (π/2: a vertical axis moving up at +x).
+    bearing_bore : float, optional
+        Bore of the fixed-end support bearings [m]; None leaves their friction out.
+    bearing_type : str
+        A type of :data:`ballscrew.bearings.SKF_FRICTION_COEFFICIENTS` (SKF's
+        simplified estimate) or, with ``bearing_outer_diameter``, of
+        :data:`ballscrew.bearings.PALMGREN_BEARINGS`.
+    bearing_outer_diameter : float, optional
+        Outside diameter of the support bearings [m]; given, their friction is
+        Palmgren's (it rises with speed and viscosity) and needs
+        ``bearing_static_rating``.
+    bearing_static_rating : float, optional
+        Their basic static load rating :math:`C_0` [N], for Palmgren's load term.
+    bearing_lubrication : str
+        "grease" (or oil mist) or "oil" (bath or recirculating), for
+        Palmgren's :math:`f_0`; the lubricant's viscosity is taken at the
+        cycle's temperature (for grease, give the base oil as the lubricant
+        or accept the screw oil's viscosity as an estimate).
+    support : str
+        End mounting of the screw, a key of
+        :data:`ballscrew.limits.SUPPORT_EIGENVALUES`.
+    bearing_span : float, optional
+        Distance between the screw's supports [m]; None skips the
+        critical-speed check.
+    root_diameter : float, optional
+        Root diameter of the thread [m]; None estimates it from the groove
+        (:func:`ballscrew.limits.root_diameter`).
+    dn_limit : float
+        The nut's d·n limit [mm·rpm] (catalogue value).
+    """
+
+    moving_mass: float
+    screw_inertia: float = 0.0
+    coupling_inertia: float = 0.0
+    motor_inertia: float = 0.0
+    gear_ratio: float = 1.0
+    incline: float = 0.0
+    bearing_bore: float | None = None
+    bearing_type: str = "angular-contact ball, single row"
+    bearing_outer_diameter: float | None = None
+    bearing_static_rating: float | None = None
+    bearing_lubrication: str = "grease"
+    support: str = "fixed-supported"
+    bearing_span: float | None = None
+    root_diameter: float | None = None
+    dn_limit: float = DEFAULT_DN_LIMIT
+
+    def __post_init__(self) -> None:
+        for name in ("moving_mass", "screw_inertia", "coupling_inertia", "motor_inertia"):
+            check_nonnegative(name, getattr(self, name))
+        check_positive("gear_ratio", self.gear_ratio)
+        if not -math.pi / 2 <= check_finite("incline", self.incline) <= math.pi / 2:
+            raise BallScrewInputError("incline", self.incline, "an angle in [-90°, 90°] (rad)")
+        if self.support not in SUPPORT_EIGENVALUES:
+            raise BallScrewInputError(
+                "support", self.support, f"one of {list(SUPPORT_EIGENVALUES)}"
+            )
+        for name in ("bearing_span", "root_diameter", "bearing_bore", "bearing_outer_diameter"):
+            if getattr(self, name) is not None:
+                check_positive(name, getattr(self, name), "m")
+        palmgren = self.bearing_outer_diameter is not None
+        types = PALMGREN_BEARINGS if palmgren else SKF_FRICTION_COEFFICIENTS
+        if self.bearing_type not in types:
+            model = "Palmgren's model" if palmgren else "SKF's simplified estimate"
+            raise BallScrewInputError("bearing_type", self.bearing_type,
+                                      f"one of {list(types)} for {model}")  # fmt: skip
+        if palmgren:
+            if self.bearing_bore is None:
+                raise BallScrewInputError(
+                    "bearing_bore", None, "the bore, given with bearing_outer_diameter"
+                )
+            if self.bearing_static_rating is None:
+                raise BallScrewInputError(
+                    "bearing_static_rating", None,
+                    "the support bearing's C0 from its catalogue, needed with "
+                    "bearing_outer_diameter for Palmgren's load term",
+                )  # fmt: skip
+            check_positive("bearing_static_rating", self.bearing_static_rating, "N")
+        if self.bearing_lubrication not in ("grease", "oil"):
+            raise BallScrewInputError(
+                "bearing_lubrication", self.bearing_lubrication, "'grease' or 'oil'"
+            )
+        check_positive("dn_limit", self.dn_limit, "mm*rpm")
+
+
+@dataclass(frozen=True)
+class CycleResult:
+    """Everything :func:`axis_cycle` computes (arrays per sample of the profile).
+
+    Energies in J, torques in N·m, powers in W, speeds in rad/s, forces in N.
+    ``friction_energy_by_mechanism`` splits ``friction_energy`` by the model's
+    components (for the complete model: EHL rolling, sliding, the helix's
+    transverse slip, hysteresis, ball-ball sliding, recirculation, ...); its
+    values add up to it.
+    """
+
+    model: str
+    time: FloatArray
+    screw_speed: FloatArray
+    axial_force: FloatArray
+    friction_torque: FloatArray
+    load_torque: FloatArray
+    inertia_torque: FloatArray
+    motor_torque: FloatArray
+    motor_speed: FloatArray
+    friction_power: FloatArray
+    friction_energy: float
+    friction_energy_out: float
+    friction_energy_back: float
+    bearing_torque: FloatArray
+    bearing_energy: float
+    constant_efficiency_energy: float
+    load_work: float
+    peak_motor_torque: float
+    rms_motor_torque: float
+    forward_efficiency: float
+    reverse_efficiency: float
+    friction: FrictionResult = field(repr=False)
+    friction_energy_by_mechanism: dict[str, float] = field(default_factory=dict)
+    speed_warnings: tuple[str, ...] = ()
+
+
+def reverse_efficiency(result: FrictionResult, lead: float) -> FloatArray:
+    r"""Back-driving efficiency: the load drives the screw [-].
+
+    The load's power :math:`|F|l\omega/2\pi` reaches the screw less the
+    friction :math:`T_f\omega`: :math:`\eta' = 1 - 2\pi T_f/(|F| l)`. Zero
+    or negative means self-locking: the load cannot turn the screw. With the
+    catalogue model this is :math:`2 - 1/\eta`, which agrees with THK's
+    :math:`\tan(\beta-\rho)/\tan\beta` to first order in :math:`\mu`.
+    NaN where there is no axial load.
+    """
+    f = np.abs(np.asarray(result.axial_load, dtype=float))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        out: FloatArray = np.where(
+            f > 0.0, 1.0 - 2.0 * math.pi * result.total / (f * lead), math.nan
+        )
+    return out
+
+
+def weight_back_driving(
+    screw: BallScrew,
+    lubricant: Lubricant | str,
+    axis: Axis,
+    *,
+    temperature: float = 40.0,
+    creep_speed: float = 0.1,
+    model: str = "complete",
+    **parameters: Any,
+) -> float:
+    r"""Reverse efficiency under the axis's weight alone, motor off [-].
+
+    The load is the weight's component along the axis,
+    :math:`F = m g \sin\theta`, and the screw turns at ``creep_speed``
+    [rad/s] (the friction of breaking away, without the film of a fast
+    move): :math:`\eta' = 1 - 2\pi T_f/(F l)`. Positive: the weight turns
+    the screw, and a vertical axis needs a brake; zero or negative: the screw
+    holds it (self-locking). NaN for a horizontal axis or no moving mass.
+    The support bearings' friction, which also holds, is left out (the
+    conservative side).
+    """
+    weight = axis.moving_mass * STANDARD_GRAVITY * abs(math.sin(axis.incline))
+    if weight <= 0.0:
+        return math.nan
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        fr = friction_torque(
+            screw, lubricant, speed=creep_speed, temperature=temperature, axial_load=weight,
+            model=model, **parameters,
+        )  # fmt: skip
+    return float(np.ravel(reverse_efficiency(fr, screw.lead))[0])
+
+
+def screw_motion(
+    profile: Profile, screw: BallScrew, axis: Axis
+) -> tuple[FloatArray, FloatArray, FloatArray]:
+    """Screw speed [rad/s], its acceleration [rad/s²] and the nut's axial force [N] per sample."""
+    omega = 2.0 * math.pi * profile.speed / screw.lead
+    alpha = 2.0 * math.pi * profile.acceleration / screw.lead
+    g_axial = STANDARD_GRAVITY * math.sin(axis.incline)
+    force = axis.moving_mass * (profile.acceleration + g_axial) + profile.process_force
+    return omega, alpha, force
+
+
+def _bearing_torque(
+    axis: Axis, lubricant: Lubricant | str, omega: FloatArray, force: FloatArray,
+    temperature: float,
+) -> FloatArray:  # fmt: skip
+    """The support bearings' friction [N·m] at each sample (0 without a bearing bore)."""
+    if axis.bearing_bore is None:
+        return np.zeros_like(omega)
+    if axis.bearing_outer_diameter is None:
+        return simplified_bearing_torque(force, axis.bearing_bore, axis.bearing_type)
+    from .. import lubricants
+
+    oil = lubricants.get(lubricant) if isinstance(lubricant, str) else lubricant
+    assert axis.bearing_static_rating is not None  # checked by Axis
+    return palmgren_bearing_torque(
+        omega, force, oil.kinematic_viscosity(temperature), bore=axis.bearing_bore,
+        outer_diameter=axis.bearing_outer_diameter, static_rating=axis.bearing_static_rating,
+        bearing_type=axis.bearing_type, lubrication=axis.bearing_lubrication,
+    )  # fmt: skip
+
+
+def _integral(y: FloatArray, t: FloatArray) -> float:
+    """Trapezoidal rule (exact for piecewise-linear samples)."""
+    return float(np.sum(0.5 * (y[1:] + y[:-1]) * np.diff(t)))
+
+
+def axis_cycle(
+    profile: Profile,
+    screw: BallScrew,
+    lubricant: Lubricant | str,
+    axis: Axis,
+    *,
+    temperature: float = 40.0,
+    model: str = "complete",
+    **parameters: Any,
+) -> CycleResult:
+    """Torques, powers and energies of ``axis`` driven through ``profile``.
+
+    One call of the friction model over all samples. ``temperature`` [°C]
+    is the lubricant's (constant over the profile).
+
+    Examples
+    --------
+    >>> from ballscrew import reference_screw
+    >>> from ballscrew.axis.motion import move
+    >>> r = axis_cycle(move(0.3, 0.25, 2.0), reference_screw(), "PAO ISO VG 68",
+    ...                Axis(moving_mass=200.0), model="catalog")
+    >>> round(r.friction_energy, 2)  # catalogue drag 0.564 N·m over 30 screw turns, plus load
+    106.82
+    """
+    lead = screw.lead
+    omega, alpha, force = screw_motion(profile, screw, axis)
+    g_axial = STANDARD_GRAVITY * math.sin(axis.incline)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # recorded in the result's friction.warnings
+        fr = friction_torque(
+            screw, lubricant, speed=omega, temperature=temperature, axial_load=force,
+            model=model, **parameters,
+        )  # fmt: skip
+        catalog = friction_torque(
+            screw, lubricant, speed=omega, temperature=temperature, axial_load=force,
+            model="catalog",
+        )  # fmt: skip
+    t_f = fr.total
+    t_load = force * lead / (2.0 * math.pi)
+    t_inertia = (axis.screw_inertia + axis.coupling_inertia) * alpha
+    t_b = np.broadcast_to(_bearing_torque(axis, lubricant, omega, force, temperature), t_f.shape)
+    t_screw = t_load + np.sign(omega) * (t_f + t_b) + t_inertia
+    i = axis.gear_ratio
+    t_motor = t_screw / i + axis.motor_inertia * i * alpha
+    power = t_f * np.abs(omega)
+    time = profile.time
+    limits = speed_limit_issues(
+        screw, float(np.max(np.abs(omega))), span=axis.bearing_span, support=axis.support,
+        dn_limit=axis.dn_limit, root=axis.root_diameter,
+    )  # fmt: skip
+    for message in limits:
+        warnings.warn(message, BallScrewSpeedWarning, stacklevel=2)
+    # Efficiencies at the working point: the sample of largest |F v| (the
+    # process force at feed, or the peak of acceleration).
+    k = int(np.argmax(np.abs(force * profile.speed)))
+    forward = float(np.ravel(fr.efficiency)[k])
+    backward = float(np.ravel(reverse_efficiency(fr, lead))[k])
+    out = np.where(omega > 0.0, power, 0.0)
+    back = np.where(omega < 0.0, power, 0.0)
+    return CycleResult(
+        model=fr.model,
+        time=time,
+        screw_speed=omega,
+        axial_force=force,
+        friction_torque=t_f,
+        load_torque=t_load,
+        inertia_torque=t_inertia,
+        motor_torque=t_motor,
+        motor_speed=omega * i,
+        friction_power=power,
+        friction_energy=_integral(power, time),
+        friction_energy_out=_integral(out, time),
+        friction_energy_back=_integral(back, time),
+        bearing_torque=t_b,
+        bearing_energy=_integral(t_b * np.abs(omega), time),
+        constant_efficiency_energy=_integral(catalog.total * np.abs(omega), time),
+        # Work on the load: the change of kinetic and potential energy (exact,
+        # whatever the sampling of steps in acceleration) plus the process
+        # force's work.
+        load_work=0.5 * axis.moving_mass * float(profile.speed[-1] ** 2 - profile.speed[0] ** 2)
+        + axis.moving_mass * g_axial * float(profile.position[-1] - profile.position[0])
+        + _integral(profile.process_force * profile.speed, time),
+        peak_motor_torque=float(np.max(np.abs(t_motor))),
+        rms_motor_torque=math.sqrt(_integral(t_motor**2, time) / profile.duration),
+        forward_efficiency=forward,
+        reverse_efficiency=backward,
+        friction=fr,
+        speed_warnings=tuple(limits),
+        friction_energy_by_mechanism={
+            name: _integral(np.broadcast_to(part, t_f.shape) * np.abs(omega), time)
+            for name, part in fr.components.items()
+        },
+    )

@@ -1,0 +1,296 @@
+r"""Motion profiles of a feed axis: moves, dwells, back-and-forth cycles, measured trajectories.
+
+A :class:`Profile` samples the table's motion at increasing times: position,
+speed and acceleration (SI: s, m, m/s, m/s²) and the axial process force on
+the table [N] (positive when it pushes against the +x direction). Build one
+with
+
+* :func:`move`: a point-to-point move of a given stroke at a feed rate
+  (speed limit), an acceleration limit and, optionally, a jerk limit (an
+  S-curve); without a jerk limit the speed profile is a trapezoid (a
+  triangle when the stroke is too short to reach the feed rate);
+* :func:`dwell`: standing still;
+* :func:`chain`: profiles one after another (times and positions continue);
+* :func:`back_and_forth`: a move out, a dwell, the move back, a dwell,
+  repeated;
+* :func:`read_trajectory`: a CSV of time and position or speed (units in the
+  header), with an optional process force.
+
+Every phase of a move is a polynomial in time, so the samples are exact (no
+numerical integration): the position at the end is the stroke to rounding.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import BallScrewInputError, FloatArray, check_nonnegative, check_positive
+
+__all__ = ["Profile", "back_and_forth", "chain", "dwell", "move", "read_trajectory"]
+
+
+@dataclass(frozen=True)
+class Profile:
+    """A sampled motion of the table (arrays of equal length, times increasing).
+
+    Attributes
+    ----------
+    time : numpy.ndarray
+        [s], strictly increasing.
+    position, speed, acceleration : numpy.ndarray
+        Table position [m], speed [m/s] and acceleration [m/s²].
+    process_force : numpy.ndarray
+        Axial process force on the table [N], positive against +x.
+    """
+
+    time: FloatArray
+    position: FloatArray
+    speed: FloatArray
+    acceleration: FloatArray
+    process_force: FloatArray
+
+    def __post_init__(self) -> None:
+        n = self.time.size
+        for name in ("position", "speed", "acceleration", "process_force"):
+            if getattr(self, name).shape != (n,):
+                raise BallScrewInputError(name, f"shape {getattr(self, name).shape}", f"({n},)")
+        if n < 2 or not np.all(np.diff(self.time) > 0.0):
+            raise BallScrewInputError("time", "(profile)", "at least 2 strictly increasing times")
+
+    @property
+    def duration(self) -> float:
+        """Total time [s]."""
+        return float(self.time[-1] - self.time[0])
+
+
+def _phases(
+    stroke: float, feed: float, accel: float, jerk: float
+) -> list[tuple[float, float, float]]:
+    """(duration, acceleration at its start, jerk) of each phase of a rest-to-rest move.
+
+    Symmetric S-curve: jerk +j, 0, -j (accelerating), cruise, then the
+    mirror; ``jerk = inf`` gives the trapezoid (constant +a, cruise, -a). The
+    peak speed is lowered (and with it, for an S-curve, the peak
+    acceleration) when the stroke is too short to reach the feed rate.
+    """
+    smooth = math.isfinite(jerk)
+
+    def shape(v: float) -> tuple[float, float, float]:
+        a = min(accel, math.sqrt(v * jerk)) if smooth else accel
+        t_j = a / jerk if smooth else 0.0
+        return a, t_j, max(v / a - t_j, 0.0)
+
+    def distance(v: float) -> float:  # accelerating and braking, no cruise
+        _, t_j, t_a = shape(v)
+        return v * (2.0 * t_j + t_a)
+
+    v = feed
+    if distance(v) > stroke:  # the feed rate is not reached: bisect the peak speed
+        lo, hi = 0.0, feed
+        for _ in range(200):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (mid, hi) if distance(mid) < stroke else (lo, mid)
+        v = 0.5 * (lo + hi)
+    a, t_j, t_a = shape(v)
+    t_v = max((stroke - distance(v)) / v, 0.0)
+    if not smooth:
+        return [(t_a, a, 0.0), (t_v, 0.0, 0.0), (t_a, -a, 0.0)]
+    return [
+        (t_j, 0.0, jerk), (t_a, a, 0.0), (t_j, a, -jerk), (t_v, 0.0, 0.0),
+        (t_j, 0.0, -jerk), (t_a, -a, 0.0), (t_j, -a, jerk),
+    ]  # fmt: skip
+
+
+def move(
+    stroke: float,
+    feed: float,
+    acceleration: float,
+    *,
+    jerk: float | None = None,
+    process_force: float = 0.0,
+    force_window: tuple[float, float] | None = None,
+    sample_time: float = 1e-3,
+) -> Profile:
+    r"""A rest-to-rest move of the table: trapezoidal, or an S-curve with a jerk limit.
+
+    Parameters
+    ----------
+    stroke : float
+        Distance [m]; negative to move towards -x.
+    feed : float
+        Feed rate (speed limit) [m/s], > 0.
+    acceleration : float
+        Acceleration limit [m/s²], > 0.
+    jerk : float, optional
+        Jerk limit [m/s³]; None for a trapezoidal speed profile.
+    process_force : float
+        Axial process force [N] while the table is inside ``force_window``.
+    force_window : (float, float), optional
+        Distances from the start [m] between which the force acts (e.g. the
+        middle 200 mm of a 300 mm stroke: ``(0.05, 0.25)``); the whole move
+        when None.
+    sample_time : float
+        Spacing of the samples [s]; the phase boundaries are always samples.
+
+    Returns
+    -------
+    Profile
+
+    Examples
+    --------
+    A 300 mm move at 30 m/min and 2 m/s² takes s/v + v/a = 0.6 + 0.25 s:
+
+    >>> p = move(0.3, 0.5, 2.0)
+    >>> round(p.duration, 6), round(float(p.position[-1]), 12), round(float(p.speed.max()), 12)
+    (0.85, 0.3, 0.5)
+    """
+    s = float(check_nonnegative("stroke", abs(stroke), "m"))
+    v = float(check_positive("feed", feed, "m/s"))
+    a = float(check_positive("acceleration", acceleration, "m/s²"))
+    j = math.inf if jerk is None else float(check_positive("jerk", jerk, "m/s³"))
+    dt = float(check_positive("sample_time", sample_time, "s"))
+    sign = 1.0 if stroke >= 0 else -1.0
+    if s == 0.0:
+        return dwell(dt, sample_time=dt)
+    phases = [ph for ph in _phases(s, v, a, j) if ph[0] > 0.0]
+    times, pos, spd, acc = [0.0], [0.0], [0.0], [0.0]
+    t0, x0, v0 = 0.0, 0.0, 0.0
+    for duration, a_start, jj in phases:
+        n = max(1, math.ceil(duration / dt))
+        tau = np.linspace(0.0, duration, n + 1)[1:]
+        x = x0 + v0 * tau + 0.5 * a_start * tau**2 + jj * tau**3 / 6.0
+        vv = v0 + a_start * tau + 0.5 * jj * tau**2
+        aa = a_start + jj * tau
+        times += list(t0 + tau)
+        pos += list(x)
+        spd += list(vv)
+        acc += list(aa)
+        t0, x0, v0 = t0 + duration, float(x[-1]), float(vv[-1])
+    t = np.asarray(times)
+    x_arr = sign * np.asarray(pos)
+    v_arr = sign * np.clip(np.asarray(spd), 0.0, None)
+    a_arr = sign * np.asarray(acc)
+    a_arr[-1] = 0.0
+    v_arr[-1] = 0.0
+    lo, hi = (0.0, s) if force_window is None else force_window
+    inside = (np.abs(x_arr) >= lo) & (np.abs(x_arr) <= hi)
+    force = np.where(inside, float(process_force), 0.0)
+    return Profile(t, x_arr, v_arr, a_arr, force)
+
+
+def dwell(duration: float, *, position: float = 0.0, sample_time: float = 1e-3) -> Profile:
+    """Standing still for ``duration`` [s] at ``position`` [m]."""
+    d = float(check_positive("duration", duration, "s"))
+    n = max(1, math.ceil(d / float(check_positive("sample_time", sample_time, "s"))))
+    t = np.linspace(0.0, d, n + 1)
+    zero = np.zeros_like(t)
+    return Profile(t, zero + position, zero, zero.copy(), zero.copy())
+
+
+def chain(*profiles: Profile) -> Profile:
+    """Profiles one after another; each starts where the previous one ended (time and place)."""
+    if not profiles:
+        raise BallScrewInputError("profiles", "()", "at least one profile")
+    parts: dict[str, list[FloatArray]] = {k: [] for k in ("t", "x", "v", "a", "f")}
+    t_end, x_end = 0.0, 0.0
+    for i, p in enumerate(profiles):
+        skip = 0 if i == 0 else 1  # the first sample repeats the previous end
+        parts["t"].append(p.time[skip:] - p.time[0] + t_end)
+        parts["x"].append(p.position[skip:] - p.position[0] + x_end)
+        parts["v"].append(p.speed[skip:])
+        parts["a"].append(p.acceleration[skip:])
+        parts["f"].append(p.process_force[skip:])
+        t_end = float(parts["t"][-1][-1])
+        x_end = float(parts["x"][-1][-1])
+    return Profile(*(np.concatenate(parts[k]) for k in ("t", "x", "v", "a", "f")))
+
+
+def back_and_forth(
+    stroke: float,
+    feed: float,
+    acceleration: float,
+    *,
+    jerk: float | None = None,
+    dwell_time: float = 0.0,
+    cycles: int = 1,
+    process_force: float = 0.0,
+    force_window: tuple[float, float] | None = None,
+    sample_time: float = 1e-3,
+) -> Profile:
+    """``cycles`` times: the move out, a dwell, the move back, a dwell.
+
+    The process force acts on the way out only (a cut), inside ``force_window``.
+    """
+    if isinstance(cycles, bool) or not isinstance(cycles, int) or cycles < 1:
+        raise BallScrewInputError("cycles", cycles, "a whole number >= 1")
+    out = move(stroke, feed, acceleration, jerk=jerk, process_force=process_force,
+               force_window=force_window, sample_time=sample_time)  # fmt: skip
+    back = move(-stroke, feed, acceleration, jerk=jerk, sample_time=sample_time)
+    one = [out, back] if dwell_time <= 0.0 else [
+        out, dwell(dwell_time, sample_time=sample_time), back,
+        dwell(dwell_time, sample_time=sample_time),
+    ]  # fmt: skip
+    return chain(*(one * cycles))
+
+
+def read_trajectory(text: str, source: str = "trajectory") -> Profile:
+    """A profile from CSV text: time, and position or table speed, and optionally force.
+
+    The header names each column with its unit in brackets, e.g. ``time [s],
+    position [mm], force [kN]`` or ``time [ms];speed [m/min]`` (semicolons
+    or tabs allow decimal commas). Speed and acceleration (or position) are
+    derived by finite differences (central, second order) on the given times.
+    """
+    import csv
+    import io
+    import re
+
+    from ..units import registry
+
+    first = next((line for line in text.splitlines() if line.strip()), "")
+    delimiter = ";" if ";" in first else ("\t" if "\t" in first else ",")
+    rows = [r for r in csv.reader(io.StringIO(text.lstrip("\ufeff")), delimiter=delimiter) if r]
+    if len(rows) < 3:
+        raise BallScrewInputError(source, "(too short)", "a header and at least 2 data rows")
+    header = re.compile(r"^\s*(\w[\w ]*?)\s*\[([^\]]+)\]\s*$")
+    ureg = registry()
+    columns: dict[str, tuple[int, str]] = {}
+    for i, cell in enumerate(rows[0]):
+        m = header.match(cell)
+        if not m:
+            raise BallScrewInputError(f"{source}: header", cell, "'name [unit]', e.g. 'time [s]'")
+        unit = m.group(2).strip()
+        for kind, si in (("time", "s"), ("position", "m"), ("speed", "m/s"), ("force", "N")):
+            if ureg.Quantity(1.0, unit).is_compatible_with(si) and kind not in columns:
+                columns[kind] = (i, unit)
+                break
+    if "time" not in columns or not ({"position", "speed"} & set(columns)):
+        raise BallScrewInputError(
+            f"{source}: header", ",".join(rows[0]),
+            "a time column and a position or speed column, each with its unit",
+        )  # fmt: skip
+
+    def column(kind: str, si: str) -> FloatArray:
+        i, unit = columns[kind]
+        try:
+            raw = [float(r[i].replace(",", ".") if delimiter != "," else r[i]) for r in rows[1:]]
+        except (ValueError, IndexError):
+            raise BallScrewInputError(f"{source}: column {kind}", "(data)", "numbers") from None
+        return np.asarray(ureg.Quantity(np.asarray(raw), unit).to(si).magnitude, dtype=float)
+
+    t = column("time", "s")
+    if not np.all(np.diff(t) > 0.0):
+        k = int(np.argmax(np.diff(t) <= 0.0)) + 3
+        raise BallScrewInputError(f"{source}: line {k}", float(t[k - 2]), "times increasing")
+    if "position" in columns:
+        x = column("position", "m")
+        v = np.gradient(x, t, edge_order=2)
+    else:
+        v = column("speed", "m/s")
+        x = np.concatenate([[0.0], np.cumsum(0.5 * (v[1:] + v[:-1]) * np.diff(t))])
+    a = np.gradient(v, t, edge_order=2)
+    f = column("force", "N") if "force" in columns else np.zeros_like(t)
+    return Profile(t, x, v, a, f)

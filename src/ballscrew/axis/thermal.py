@@ -1,0 +1,350 @@
+r"""The temperature a ball screw reaches: a lumped heat balance solved with the friction.
+
+One thermal node holds the screw and the nut at the lubricant temperature
+:math:`T`. The friction of a repeated cycle heats it with the mean power
+:math:`\bar P(T)` (from :func:`ballscrew.axis.energy.axis_cycle` at that
+temperature: a warmer, thinner oil changes the friction); it loses heat by
+convection from the screw's surface and, optionally, by conduction into the
+machine through a thermal resistance :math:`R_m`:
+
+.. math::
+    C\,\frac{dT}{dt} = \bar P(T) - G(T)\,(T - T_a), \qquad
+    G = h\,\pi d L + 1/R_m .
+
+The convection coefficient is the larger of forced convection from a
+cylinder rotating in still air, :math:`Nu = 0.133\,Re^{2/3}Pr^{1/3}` with
+:math:`Re = \omega d^2/\nu` (Kreith, *Principles of Heat Transfer*; valid for
+:math:`Re < 4.3\cdot10^5`), at the cycle's RMS screw speed, and natural
+convection from a horizontal cylinder (Churchill and Chu 1975,
+:math:`Nu = \{0.60 + 0.387\,Ra^{1/6}/[1 + (0.559/Pr)^{9/16}]^{8/27}\}^2`).
+Air properties are taken at 300 K. :func:`steady_temperature` solves the
+balance for :math:`dT/dt = 0`; :func:`temperature_history` integrates it over
+time (the cycle is short against the thermal time constant, so the mean power
+per cycle drives the node).
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+
+from ..chain import friction_torque
+from ..errors import BallScrewInputError, BallScrewValidityWarning, FloatArray, check_positive
+from ..geometry import BallScrew
+from ..lubricant import Lubricant
+from .energy import Axis, screw_motion
+from .motion import Profile
+
+__all__ = [
+    "AIR",
+    "ThermalNode",
+    "convection_coefficient",
+    "estimated_screw_length",
+    "mean_powers",
+    "steady_at_speeds",
+    "steady_temperature",
+    "temperature_history",
+]
+
+AIR = {"conductivity": 0.0263, "kinematic_viscosity": 1.589e-5, "prandtl": 0.707}
+"""Air at 300 K and 1 bar: k [W/(m·K)], nu [m²/s], Pr [-] (Incropera, Table A.4)."""
+
+STEEL_DENSITY = 7850.0
+"""Density of the screw and nut steel [kg/m³] (a typical handbook value for carbon
+and low-alloy steels; an assumption of the heat capacity)."""
+
+STEEL_HEAT_CAPACITY = 460.0
+"""Specific heat capacity of that steel [J/(kg·K)] (typical handbook value; an assumption)."""
+
+KREITH_REYNOLDS_LIMIT = 4.3e5
+"""Largest rotational Reynolds number of Kreith's rotating-cylinder correlation [-]."""
+
+
+@dataclass(frozen=True)
+class ThermalNode:
+    """The screw and nut as one thermal mass (SI; temperatures in °C).
+
+    Attributes
+    ----------
+    screw_length : float
+        Length of screw exposed to the air [m].
+    ambient : float
+        Air and machine temperature [°C].
+    machine_resistance : float or None
+        Thermal resistance from the nut into the machine [K/W]; None for no
+        conduction path (convection only, the conservative case).
+    nut_mass : float
+        Mass of the nut [kg], added to the screw's for the heat capacity.
+    """
+
+    screw_length: float
+    ambient: float = 20.0
+    machine_resistance: float | None = None
+    nut_mass: float = 0.0
+
+    def heat_capacity(self, screw: BallScrew) -> float:
+        """Heat capacity of screw and nut [J/K] (steel)."""
+        screw_mass = STEEL_DENSITY * math.pi * screw.pitch_diameter**2 / 4 * self.screw_length
+        return (screw_mass + self.nut_mass) * STEEL_HEAT_CAPACITY
+
+
+def estimated_screw_length(screw: BallScrew, travel: float) -> float:
+    """Screw length in the air when none is given [m]: travel, nut and ends.
+
+    The nut's travel [m], the nut itself (its loaded turns plus one turn for
+    the return per circuit, twice for a double nut) and four pitch diameters
+    for the bearing seats and the free ends. An assumption for the heat
+    balance; give the real length where you know it.
+
+    Examples
+    --------
+    >>> from ballscrew import reference_screw
+    >>> round(estimated_screw_length(reference_screw(), 0.3), 3)
+    0.6
+    """
+    s = screw
+    nut = (s.loaded_turns + 1.0) * s.circuits * s.lead * (2.0 if s.nut == "double" else 1.0)
+    return abs(travel) + nut + 4.0 * s.pitch_diameter
+
+
+def convection_coefficient(
+    diameter: float, speed: npt.ArrayLike, surface: npt.ArrayLike, ambient: float
+) -> FloatArray:
+    """Convection coefficient of a horizontal cylinder [W/(m²·K)]: rotating or still.
+
+    The larger of Kreith's rotating-cylinder correlation at ``speed`` [rad/s]
+    and Churchill and Chu's natural convection at the surface-to-air
+    temperature difference (``surface``, ``ambient`` in °C). Broadcasts over
+    ``speed`` and ``surface``.
+
+    Examples
+    --------
+    A 40 mm screw at 1500 rpm: Re = 1.6e4, Nu = 0.133 Re^(2/3) Pr^(1/3):
+
+    >>> round(float(convection_coefficient(0.04, 157.08, 30.0, 20.0)), 1)
+    49.1
+    """
+    d = float(check_positive("diameter", diameter, "m"))
+    k, nu, pr = AIR["conductivity"], AIR["kinematic_viscosity"], AIR["prandtl"]
+    re = np.abs(np.asarray(speed, dtype=float)) * d**2 / nu
+    if re.size and float(np.max(re)) > KREITH_REYNOLDS_LIMIT:
+        warnings.warn(
+            f"rotational Reynolds number {float(np.max(re)):.3g} of the screw is above "
+            f"{KREITH_REYNOLDS_LIMIT:g}, the range of Kreith's rotating-cylinder correlation: "
+            "the convection coefficient is extrapolated",
+            BallScrewValidityWarning,
+            stacklevel=2,
+        )
+    forced = 0.133 * re ** (2 / 3) * pr ** (1 / 3) * k / d
+    surf = np.asarray(surface, dtype=float)
+    dt = np.maximum(np.abs(surf - ambient), 1e-9)
+    film = 0.5 * (surf + ambient) + 273.15
+    ra = 9.80665 * (1 / film) * dt * d**3 / (nu * nu / pr)
+    natural = (0.60 + 0.387 * ra ** (1 / 6) / (1 + (0.559 / pr) ** (9 / 16)) ** (8 / 27)) ** 2
+    result: FloatArray = np.maximum(forced, natural * k / d)
+    return result
+
+
+def mean_powers(
+    profile: Profile,
+    screw: BallScrew,
+    lubricant: Lubricant | str,
+    axis: Axis,
+    temperatures: npt.ArrayLike,
+    model: str = "complete",
+    **parameters: Any,
+) -> FloatArray:
+    """Mean friction power of the screw over the cycle at each lubricant temperature [W].
+
+    One friction call: the temperatures against the cycle's samples.
+    """
+    temps = np.atleast_1d(np.asarray(temperatures, dtype=float))
+    omega, _, force = screw_motion(profile, screw, axis)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        torque = friction_torque(
+            screw, lubricant, speed=omega[None, :], temperature=temps[:, None],
+            axial_load=force[None, :], model=model, **parameters,
+        ).total  # fmt: skip
+    power = torque * np.abs(omega)[None, :]
+    t = profile.time
+    energy = np.sum(0.5 * (power[:, 1:] + power[:, :-1]) * np.diff(t)[None, :], axis=1)
+    result: FloatArray = energy / profile.duration
+    return result
+
+
+def _mean_power(
+    profile: Profile, screw: BallScrew, lubricant: Lubricant | str, axis: Axis,
+    temperature: float, model: str, parameters: dict[str, Any],
+) -> float:  # fmt: skip
+    return float(mean_powers(profile, screw, lubricant, axis, temperature, model, **parameters)[0])
+
+
+def _conductance(node: ThermalNode, screw: BallScrew, speed: float, temperature: float) -> float:
+    area = math.pi * screw.pitch_diameter * node.screw_length
+    h = float(convection_coefficient(screw.pitch_diameter, speed, temperature, node.ambient))
+    return h * area + (0.0 if node.machine_resistance is None else 1.0 / node.machine_resistance)
+
+
+def _rms_speed(profile: Profile, screw: BallScrew) -> float:
+    omega = 2 * math.pi * profile.speed / screw.lead
+    dt = np.diff(profile.time)
+    mean_sq = np.sum(0.5 * (omega[1:] ** 2 + omega[:-1] ** 2) * dt) / profile.duration
+    return float(math.sqrt(mean_sq))
+
+
+@dataclass(frozen=True)
+class SteadyState:
+    """The steady temperature of a repeated cycle and the heat flows there."""
+
+    temperature: float
+    friction_power: float
+    heat_out: float
+    conductance: float
+
+
+def steady_temperature(
+    profile: Profile,
+    screw: BallScrew,
+    lubricant: Lubricant | str,
+    axis: Axis,
+    node: ThermalNode,
+    *,
+    model: str = "complete",
+    **parameters: Any,
+) -> SteadyState:
+    r"""Temperature at which the cycle's mean friction power leaves as heat [°C].
+
+    Solves :math:`\bar P(T) = G(T)(T - T_a)` by bisection between the
+    ambient temperature and 200 °C above it.
+    """
+    check_positive("screw_length", node.screw_length, "m")
+    speed = _rms_speed(profile, screw)
+
+    def imbalance(t: float) -> float:
+        power = _mean_power(profile, screw, lubricant, axis, t, model, parameters)
+        return power - _conductance(node, screw, speed, t) * (t - node.ambient)
+
+    lo, hi = node.ambient, node.ambient + 200.0
+    if imbalance(hi) > 0.0:
+        raise BallScrewInputError(
+            "thermal", "(steady state)", "a cycle whose friction the node can shed below "
+            f"{hi:g} °C (give a machine_resistance or a longer screw_length)",
+        )  # fmt: skip
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if imbalance(mid) > 0.0 else (lo, mid)
+    t = 0.5 * (lo + hi)
+    g = _conductance(node, screw, speed, t)
+    power = _mean_power(profile, screw, lubricant, axis, t, model, parameters)
+    return SteadyState(t, power, g * (t - node.ambient), g)
+
+
+@dataclass(frozen=True)
+class SteadyAtSpeed:
+    """Steady temperatures of continuous running, one per speed (arrays, SI, °C)."""
+
+    speed: FloatArray
+    temperature: FloatArray
+    torque: FloatArray
+    power: FloatArray
+    conductance: FloatArray
+
+
+def steady_at_speeds(
+    screw: BallScrew,
+    lubricant: Lubricant | str,
+    node: ThermalNode,
+    speeds: npt.ArrayLike,
+    *,
+    axial_load: float = 0.0,
+    model: str = "complete",
+    **parameters: Any,
+) -> SteadyAtSpeed:
+    r"""Steady temperature and friction torque of the screw running at each constant speed.
+
+    Solves :math:`T_f(\omega, T)\,|\omega| = G(\omega, T)(T - T_a)` for every
+    speed [rad/s] at once: a vectorised bisection between the ambient and
+    200 °C above it, one friction call per step over all the speeds.
+    A speed whose friction the node cannot shed below that raises an error.
+    """
+    check_positive("screw_length", node.screw_length, "m")
+    omega = np.atleast_1d(np.asarray(speeds, dtype=float))
+    area = math.pi * screw.pitch_diameter * node.screw_length
+    machine = 0.0 if node.machine_resistance is None else 1.0 / node.machine_resistance
+
+    def flows(temp: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            torque = friction_torque(
+                screw, lubricant, speed=omega, temperature=temp, axial_load=axial_load,
+                model=model, **parameters,
+            ).total  # fmt: skip
+        g = convection_coefficient(screw.pitch_diameter, omega, temp, node.ambient) * area
+        return torque, torque * np.abs(omega), g + machine
+
+    lo = np.full_like(omega, node.ambient)
+    hi = lo + 200.0
+    _, p_hi, g_hi = flows(hi)
+    if np.any(too_hot := p_hi > g_hi * (hi - node.ambient)):
+        raise BallScrewInputError(
+            "speed", float(omega[np.argmax(too_hot)]),
+            f"a speed whose friction the node can shed below {node.ambient + 200:g} °C "
+            "(give a machine_resistance or a longer screw_length)",
+        )  # fmt: skip
+    for _ in range(50):
+        mid = 0.5 * (lo + hi)
+        _, p, g = flows(mid)
+        warm = p > g * (mid - node.ambient)
+        lo, hi = np.where(warm, mid, lo), np.where(warm, hi, mid)
+    temp = 0.5 * (lo + hi)
+    torque, power, g = flows(temp)
+    return SteadyAtSpeed(omega, temp, torque, power, g)
+
+
+def temperature_history(
+    profile: Profile,
+    screw: BallScrew,
+    lubricant: Lubricant | str,
+    axis: Axis,
+    node: ThermalNode,
+    duration: float,
+    *,
+    model: str = "complete",
+    points: int = 200,
+    **parameters: Any,
+) -> tuple[FloatArray, FloatArray]:
+    """Temperature over ``duration`` [s] of repeating the cycle from the ambient: (t, T).
+
+    The mean power per cycle is tabulated over temperature (every 2 K up to
+    the steady temperature) and the heat balance integrated with scipy's
+    ``solve_ivp``.
+    """
+    from scipy.integrate import solve_ivp
+
+    check_positive("duration", duration, "s")
+    steady = steady_temperature(profile, screw, lubricant, axis, node, model=model,
+                                **parameters)  # fmt: skip
+    speed = _rms_speed(profile, screw)
+    grid = np.linspace(
+        node.ambient,
+        steady.temperature + 1.0,
+        max(3, int(steady.temperature - node.ambient) // 2 + 3),
+    )
+    powers = mean_powers(profile, screw, lubricant, axis, grid, model, **parameters)
+    capacity = node.heat_capacity(screw)
+
+    def rate(_t: float, y: FloatArray) -> FloatArray:
+        temp = float(y[0])
+        power = float(np.interp(temp, grid, powers))
+        loss = _conductance(node, screw, speed, temp) * (temp - node.ambient)
+        return np.array([(power - loss) / capacity])
+
+    times = np.linspace(0.0, duration, points)
+    sol = solve_ivp(rate, (0.0, duration), [node.ambient], t_eval=times, rtol=1e-8, atol=1e-8)
+    return times, np.asarray(sol.y[0])

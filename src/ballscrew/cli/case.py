@@ -1,0 +1,206 @@
+"""``ballscrew case``: write a case-file template, check a case file, list its keys."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Any
+
+import click
+from rich.table import Table
+
+from .common import stdout
+
+__all__ = ["case_command", "screws_command"]
+
+
+@click.command("case")
+@click.option("--template", "want_template", is_flag=True, help="Write a commented template.")
+@click.option(
+    "--out",
+    "out_file",
+    type=click.Path(dir_okay=False),
+    default=None,
+    help="File for --template or --reference (default: print it).",
+)
+@click.option(
+    "--check",
+    "check_file",
+    type=click.Path(dir_okay=False),
+    default=None,
+    help="Validate a case file and print its resolved values in SI and usual units.",
+)
+@click.option("--reference", "want_reference", is_flag=True, help="Every key as a Markdown table.")
+def case_command(
+    want_template: bool, out_file: str | None, check_file: str | None, want_reference: bool
+) -> None:
+    """Write, check or document case files (TOML with units).
+
+    \b
+    Examples:
+      ballscrew case --template --out my_screw.toml   # every key, commented
+      ballscrew case --check my_screw.toml            # resolved values, or the error
+      ballscrew torque --case my_screw.toml --speed "100, 1000 rpm"
+    """  # noqa: D301 - click needs the literal \b to keep the example lines
+    from ..files import atomic_write
+    from ..io.schema import reference_markdown, template
+
+    if sum([want_template, want_reference, check_file is not None]) != 1:
+        raise click.UsageError("give exactly one of --template, --check FILE, --reference")
+    if want_template or want_reference:
+        text = template() if want_template else reference_markdown()
+        if out_file:
+            atomic_write(Path(out_file), text.encode("utf-8"))
+            click.echo(f"wrote {out_file}", err=True)
+        else:
+            click.echo(text, nl=False)
+        return
+    assert check_file is not None
+    _print_resolved(check_file)
+
+
+def _print_resolved(path: str) -> None:
+    from ..io.case import load_case
+
+    case = load_case(path)
+    s, oil = case.screw, case.lubricant
+    rows = [
+        *([("screw", "designation", case.screw_source)] if case.screw_source else []),
+        ("screw", "pitch diameter", f"{s.pitch_diameter * 1e3:.4g} mm"),
+        ("screw", "lead", f"{s.lead * 1e3:.4g} mm"),
+        ("screw", "ball diameter", f"{s.ball_diameter * 1e3:.4g} mm"),
+        ("screw", "contact angle", f"{math.degrees(s.contact_angle):.4g} deg"),
+        ("screw", "conformity screw / nut", f"{s.conformity_screw:.4g} / {s.conformity_nut:.4g}"),
+        ("screw", "loaded turns x circuits", f"{s.loaded_turns:g} x {s.circuits}"),
+        ("screw", "nut", s.nut),
+        ("screw", "balls kept apart by", s.ball_separation),
+        ("screw", "preload", f"{s.preload:.4g} N"),
+        ("screw", "lead angle", f"{math.degrees(s.lead_angle):.4g} deg"),
+        ("screw", "loaded balls per nut", f"{s.balls_per_nut}"),
+        ("screw", "gamma = D_w cos(alpha) / d_m", f"{s.gamma:.4g}"),
+        (
+            "screw",
+            "roughness ball / screw / nut",
+            f"{s.roughness_ball * 1e6:.3g} / {s.roughness_screw * 1e6:.3g} / "
+            f"{s.roughness_nut * 1e6:.3g} um",
+        ),
+        ("lubricant", "name", oil.name),
+        (
+            "lubricant",
+            "viscosity at 40 / 100 degC",
+            f"{oil.nu40 * 1e6:.4g} / {oil.nu100 * 1e6:.4g} cSt",
+        ),
+        ("lubricant", "pressure-viscosity alpha", f"{oil.pressure_viscosity * 1e9:.4g} 1/GPa"),
+        ("operation", "speeds", _span(case.speed * 30.0 / math.pi, "rpm")),
+        ("operation", "temperatures", _span(case.temperature, "degC")),
+        ("operation", "axial loads", _span(case.axial_load, "N")),
+    ]
+    rows += _axis_rows(case)
+    table = Table(title=f"{case.title}: resolved from {path}")
+    for column in ("section", "quantity", "value"):
+        table.add_column(column)
+    for row in rows:
+        table.add_row(*row)
+    console = stdout()
+    console.print(table)
+    if case.assumptions:
+        console.print(f"{len(case.assumptions)} value(s) marked as assumed:")
+        for a in case.assumptions:
+            console.print(f"  {a.field} = {a.value}: {a.reason}", highlight=False)
+    console.print("case file OK", style="bold green")
+
+
+def _axis_rows(case: Any) -> list[tuple[str, str, str]]:
+    """The ``[axis]`` section as ``ballscrew energy`` will use it (none if the file has none)."""
+    import tomllib
+
+    if "axis" not in tomllib.loads(case.text):
+        return []
+    a, th = case.axis, case.thermal
+    later = "(estimated by ballscrew energy)"
+
+    def given(value: float | None, scale: float, unit: str, missing: str = later) -> str:
+        return missing if value is None else f"{value * scale:.4g} {unit}"
+
+    bearings = (
+        "not counted (no bearing_bore)"
+        if a.get("bearing_bore") is None
+        else f"{a['bearing_type']}, bore {a['bearing_bore'] * 1e3:.4g} mm: "
+        + (
+            "SKF's simplified estimate"
+            if a.get("bearing_outer_diameter") is None
+            else f"Palmgren's model ({a['bearing_lubrication']})"
+        )
+    )
+    length = th.get("screw_length", a.get("bearing_span"))
+    inertia = later
+    if length is not None:
+        from ..axis.setup import shaft_inertia
+
+        j = float(shaft_inertia(case.screw.pitch_diameter, length))
+        inertia = f"{j:.3g} kg*m^2 (estimated: a solid steel shaft over {length * 1e3:.0f} mm)"
+    return [
+        ("axis", "moving mass", f"{a['moving_mass']:.4g} kg"),
+        ("axis", "screw inertia", given(a.get("screw_inertia"), 1.0, "kg*m^2", inertia)),
+        ("axis", "coupling / motor inertia",
+         f"{a['coupling_inertia']:.4g} / {a['motor_inertia']:.4g} kg*m^2"),
+        ("axis", "gear ratio", f"{a['gear_ratio']:g}"),
+        ("axis", "incline", f"{math.degrees(a['incline']):.4g} deg"),
+        ("axis", "support bearings", bearings),
+        ("axis", "span, mounting", given(a.get("bearing_span"), 1e3, "mm",
+                                         "none (critical speed not checked)")
+         + f", {a['support']}"),
+        ("axis", "d*n limit", f"{a['dn_limit']:,.0f} mm*rpm"),
+        ("axis", "screw length in the air",
+         given(th.get("screw_length"), 1e3, "mm",
+               "the bearing span" if a.get("bearing_span") is not None else later)),
+        ("axis", "ambient, machine resistance",
+         f"{th['ambient']:g} degC, "
+         + given(th.get("machine_resistance"), 1.0, "K/W", "none (convection only)")),
+    ]  # fmt: skip
+
+
+def _span(values: object, unit: str) -> str:
+    import numpy as np
+
+    v = np.asarray(values, dtype=float)
+    if v.size == 1:
+        return f"{float(v[0]):.4g} {unit}"
+    return f"{v.size} values, {float(v.min()):.4g} to {float(v.max()):.4g} {unit}"
+
+
+@click.command("screws")
+def screws_command() -> None:
+    """List the bundled catalogue nuts a case file's designation can name.
+
+    \b
+    Example:
+      ballscrew screws
+      then in a case file:  designation = "HIWIN R40-10K5-FDC"
+    """  # noqa: D301 - click needs the literal \b to keep the example lines
+    from ..io.designation import catalog_screws
+
+    table = Table(title="Catalogue ball screw nuts (values as printed; - = not printed)")
+    for column in ("designation", "nut", "d x lead [mm]", "ball [mm]", "turns x circuits",
+                   "C_a [kN]", "page"):  # fmt: skip
+        table.add_column(column, no_wrap=column == "designation")
+    for s in catalog_screws():
+        turns = f"{s.loaded_turns:g}" if s.loaded_turns is not None else "-"
+        if s.loaded_turns is not None and not s.turns_status.startswith("read"):
+            turns += "*"
+        table.add_row(
+            s.name,
+            s.nut,
+            f"{s.nominal_diameter * 1e3:g} x {s.lead * 1e3:g}",
+            f"{s.ball_diameter * 1e3:g}" if s.ball_diameter is not None else "-",
+            f"{turns} x {s.circuits}",
+            f"{s.dynamic_load_rating / 1e3:g}" if s.dynamic_load_rating is not None else "-",
+            s.page,
+        )
+    console = stdout()
+    console.print(table)
+    console.print(
+        "* turns per circuit not printed: derived or assumed (see ballscrew case --check)"
+    )
+    for maker, source in {s.maker: s.source for s in catalog_screws()}.items():
+        console.print(f"{maker}: {source}", highlight=False)

@@ -1,0 +1,64 @@
+"""``ballscrew serve``: the web calculator on this machine (:mod:`ballscrew.web`)."""
+
+from __future__ import annotations
+
+import ipaddress
+
+import click
+
+__all__ = ["serve_command"]
+
+
+def _is_loopback(host: str) -> bool:
+    if host == "localhost":
+        return True
+    try:
+        return ipaddress.ip_address(host.strip("[]")).is_loopback
+    except ValueError:
+        return False
+
+
+@click.command("serve")
+@click.option("--host", default="127.0.0.1", show_default=True,
+              help="Address to listen on; loopback keeps it to this machine.")  # fmt: skip
+@click.option("--port", default=8050, show_default=True, type=click.IntRange(0, 65535),
+              help="Port to listen on (0: any free one).")  # fmt: skip
+def serve_command(host: str, port: int) -> None:
+    """Start the web calculator: one page and a JSON API (POST /api/torque).
+
+    Open the address it prints in a browser; Ctrl-C stops it. It answers to
+    the loopback names only (127.0.0.1, localhost) unless --host names
+    another address, which other machines can then reach.
+
+    \b
+    Examples:
+      ballscrew serve
+      ballscrew serve --port 8080
+    """  # noqa: D301 - click needs the literal \b to keep the example lines
+    import uvicorn
+
+    from ..web import create_app
+    from ..web.app import LOOPBACK_HOSTS
+
+    hosts = list(LOOPBACK_HOSTS)
+    if not _is_loopback(host):
+        hosts = ["*"] if host in ("0.0.0.0", "::") else [*hosts, host]
+        click.echo(
+            f"warning: listening on {host}: other machines can reach this calculator",
+            err=True,
+        )
+    if port:
+        shown = f"[{host}]" if ":" in host else host
+        click.echo(f"ballscrew calculator on http://{shown}:{port}/ (Ctrl-C to stop)", err=True)
+    uvicorn.run(
+        create_app(allowed_hosts=hosts),
+        host=host,
+        port=port,
+        log_level="info",  # says where it listens (the port, when 0 was asked for)
+        access_log=False,
+        # Bounded: connections at once (503 beyond), idle keep-alive, header size.
+        limit_concurrency=64,
+        timeout_keep_alive=5,
+        h11_max_incomplete_event_size=16 * 1024,
+        server_header=False,
+    )

@@ -1,0 +1,222 @@
+"""``ballscrew sweep``: a design-space or uncertainty sweep into a Zarr store."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+from typing import Any
+
+import click
+from rich.console import Console
+from rich.table import Table
+
+from .common import file_option, progress, stdout, write_json
+
+__all__ = ["sweep_command"]
+
+RPM = 30.0 / math.pi
+
+
+def _point(where: dict[str, Any], units: dict[str, str]) -> str:
+    """A grid point in words, with units people read."""
+    parts = []
+    for key, value in where.items():
+        if key == "speed":
+            parts.append(f"{value * RPM:.4g} rpm")
+        elif key == "temperature":
+            parts.append(f"{value:g} °C")
+        elif key == "axial_load":
+            parts.append(f"{value:g} N load")
+        elif key == "sample":
+            parts.append(f"sample {value}")
+        elif isinstance(value, float):
+            unit = units.get(key, "1")
+            parts.append(f"{key} {value:.4g}" + (f" {unit}" if unit not in ("1", "") else ""))
+        else:
+            parts.append(f"{key} {value}")
+    return ", ".join(parts)
+
+
+def _summary_table(report: Any) -> Table:
+    table = Table(title=f"Sweep summary: {report.plan.points:,} points")
+    for col in ("output", "model", "min", "mean", "max", "max at"):
+        table.add_column(col, justify="left" if col in ("output", "model", "max at") else "right")
+    units = {"torque": "N·m", "efficiency": "-", "power_loss": "W"}
+    fields = {a.name: a.unit for a in report.plan.spec.axes}
+    if report.plan.spec.uncertainty is not None:
+        fields |= {d.name: d.unit for d in report.plan.spec.uncertainty.inputs}
+    for name in ("torque", "efficiency", "power_loss"):
+        for model, s in report.summary.get(name, {}).items():
+            table.add_row(
+                f"{name} [{units[name]}]", model, f"{s['min']:.4g}", f"{s['mean']:.4g}",
+                f"{s['max']:.4g}", _point(s["max_at"], fields),
+            )  # fmt: skip
+    return table
+
+
+def _percentile_table(out: Path) -> Table | None:
+    import xarray as xr
+
+    with xr.open_zarr(out) as ds:
+        if "torque_percentile" not in ds:
+            return None
+        p = ds["torque_percentile"].load()
+    table = Table(title="Monte Carlo: friction torque percentiles [N·m]")
+    table.add_column("model")
+    table.add_column("speed [rpm]", justify="right")
+    for q in p["percentile"].values:
+        table.add_column(f"P{float(q):g}", justify="right")
+    speeds = p["speed"].values
+    picks = sorted({0, len(speeds) // 2, len(speeds) - 1})
+    for model in p["model"].values:
+        for i in picks:
+            values = p.sel(model=model).isel(speed=i, temperature=0, axial_load=0).values
+            table.add_row(str(model), f"{speeds[i] * RPM:.4g}", *(f"{v:.4g}" for v in values))
+    return table
+
+
+def _sobol_table(model: str, s: Any) -> Table:
+    table = Table(title=f"Sobol indices of the mean torque: {model} (95 % half-widths)")
+    for col in ("input", "total S_T", "first-order S_1"):
+        table.add_column(col, justify="left" if col == "input" else "right")
+    for i in s.ranking():
+        table.add_row(
+            s.names[i], f"{s.total[i]:.3f} ± {s.total_conf[i]:.3f}",
+            f"{s.first[i]:.3f} ± {s.first_conf[i]:.3f}",
+        )  # fmt: skip
+    return table
+
+
+def _figures(out: Path, report: Any) -> list[Path]:
+    """The sensitivity ranking figure of each model, beside the store."""
+    from ..files import atomic_write
+    from ..report.plotting import figure_bytes, sensitivity_figure
+
+    written = []
+    for model, s in report.sobol.items():
+        fig = sensitivity_figure(s, f"Share of the torque variance: {model}")
+        for kind in ("png", "svg"):
+            path = out.parent / f"{out.name}.sensitivity-{model}.{kind}"
+            atomic_write(path, figure_bytes(fig, kind))
+            written.append(path)
+    return written
+
+
+def _json(report: Any) -> str:
+    data: dict[str, Any] = {
+        "store": str(report.out),
+        "points": report.plan.points,
+        "chunks": report.plan.n_chunks,
+        "dims": dict(zip(report.plan.dims, report.plan.shape, strict=True)),
+        "mode": report.mode,
+        "summary": report.summary,
+        "validity": list(report.issues),
+        "sobol": {
+            model: {
+                name: {
+                    "total": float(s.total[i]), "total_conf": float(s.total_conf[i]),
+                    "first": float(s.first[i]), "first_conf": float(s.first_conf[i]),
+                }
+                for i, name in enumerate(s.names)
+            }
+            for model, s in report.sobol.items()
+        },
+    }  # fmt: skip
+    return json.dumps(data, indent=2, ensure_ascii=False) + "\n"
+
+
+@click.command(name="sweep")
+@click.argument("sweep_file", type=click.Path(dir_okay=False))
+@click.option(
+    "--out",
+    "out",
+    type=click.Path(),
+    required=True,
+    help="Zarr store to write (an earlier sweep store there is replaced when done).",
+)
+@click.option(
+    "--workers", type=int, default=None, help="Run on a local Dask cluster of N processes."
+)
+@click.option(
+    "--scheduler",
+    default=None,
+    help="Run on a running Dask cluster, e.g. tcp://10.0.0.5:8786 (its workers must see --out).",
+)
+@click.option(
+    "--restart", is_flag=True, help="Discard the chunks an interrupted run left, start again."
+)
+@file_option("--json", "json_file", "Write the summary as JSON to FILE ('-' for standard output).")
+def sweep_command(
+    sweep_file: str,
+    out: str,
+    workers: int | None,
+    scheduler: str | None,
+    restart: bool,
+    json_file: str | None,
+) -> None:
+    """Sweep a design space or propagate uncertainty; the result is a Zarr store.
+
+    The sweep file names a base case, the axes (operating points, case fields,
+    model parameters), the models and outputs, and optionally uncertain inputs
+    (Monte Carlo percentiles, Sobol indices). See docs/sweeps.md.
+
+    \b
+    Examples:
+      ballscrew sweep examples/sweep_preload.toml --out preload.zarr
+      ballscrew sweep examples/sweep_uncertainty.toml --out mc.zarr --workers 2
+      ballscrew sweep big.toml --out big.zarr --scheduler tcp://127.0.0.1:8786
+    """  # noqa: D301 - click needs the literal \b to keep the example lines
+    from ..files import signal_received
+    from ..sweep.run import run_sweep
+    from ..sweep.spec import load_sweep
+    from ..sweep.store import partial_path
+
+    spec = load_sweep(sweep_file)
+    target = Path(out)
+    console = Console(stderr=True)
+    counts = [0, 0]
+    with progress(console) as bar:
+        task = bar.add_task("chunks", total=None)
+
+        def step(done: int, total: int) -> None:
+            counts[:] = [done, total]
+            bar.update(task, completed=done, total=total, description=f"chunks {done}/{total}")
+
+        try:
+            report = run_sweep(
+                spec, target, workers=workers, scheduler=scheduler, restart=restart,
+                progress=step, notify=lambda text: console.print(text, highlight=False),
+            )  # fmt: skip
+        except (KeyboardInterrupt, Exception) as exc:
+            if not isinstance(exc, KeyboardInterrupt) and not signal_received():
+                raise
+            click.echo(
+                f"interrupted: {counts[0]} of {counts[1]} chunks are kept in "
+                f"{partial_path(target.absolute())}; run the same command again to resume "
+                f"(--restart to start over); {target} was not written",
+                err=True,
+            )
+            raise KeyboardInterrupt from exc
+    console_out = stdout(json_file)
+    console_out.print(_summary_table(report))
+    percentiles = _percentile_table(report.out)
+    if percentiles is not None:
+        console_out.print(percentiles)
+    for model, s in report.sobol.items():
+        console_out.print(_sobol_table(model, s))
+    figures = _figures(target, report)
+    for line in report.issues:  # "warning: ..." or, for routine ranges, "note: ..."
+        click.echo(line, err=True)
+    rate = report.points_per_second
+    parts = [f"{report.plan.points:,} points in {report.plan.n_chunks} chunks",
+             f"{report.computed} computed {report.mode}"]  # fmt: skip
+    if report.resumed:
+        parts.append(f"{report.resumed} resumed")
+    if math.isfinite(rate):
+        parts.append(f"{rate:.3g} points/s")
+    pngs = [str(p) for p in figures if p.suffix == ".png"]
+    shown = f"; figures: {', '.join(pngs)}" if pngs else ""
+    click.echo(f"store: {target} ({'; '.join(parts)}){shown}", err=json_file == "-")
+    if json_file is not None:
+        write_json(json_file, _json(report))

@@ -1,0 +1,269 @@
+"""``ballscrew torque``: friction torque, power loss and efficiency over a grid of points."""
+
+from __future__ import annotations
+
+import math
+import sys
+import warnings
+from collections.abc import Callable, Mapping, Sequence
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import click
+import numpy as np
+from rich.console import Console
+from rich.table import Table
+
+from ..errors import BallScrewValidityWarning, FloatArray
+from .common import case_option, file_option, progress, stdout, write_json
+
+if TYPE_CHECKING:
+    from ..chain import FrictionResult
+    from ..io.case import Case
+
+__all__ = ["operating_grid", "run_models", "torque", "warning_lines"]
+
+
+@click.command()
+@case_option
+@click.option(
+    "--model",
+    "model_names",
+    multiple=True,
+    default=("complete",),
+    show_default=True,
+    help="Friction model; repeat for several.",
+)
+@click.option(
+    "--speed",
+    default=None,
+    help="Screw speed(s), e.g. '0..3000 rpm', "
+    "'0..3000:31 rpm' or '100, 1000 rpm' (default: the case's).",
+)
+@click.option("--temperature", default=None, help="Temperature(s), e.g. '20, 40 degC'.")
+@click.option("--axial-load", default=None, help="Axial load(s), e.g. '0, 2 kN'.")
+@file_option(
+    "--csv",
+    "csv_file",
+    "Write the table as CSV (units in the header; provenance in FILE.meta.json beside it).",
+)
+@click.option(
+    "--csv-layout",
+    type=click.Choice(["long", "wide"]),
+    default="long",
+    show_default=True,
+    help="long: a row per model and point, with components; wide: a torque column per model.",
+)
+@click.option(
+    "--csv-dialect",
+    type=click.Choice(["comma", "semicolon-decimal-comma"]),
+    default="comma",
+    show_default=True,
+    help="semicolon-decimal-comma for spreadsheets in decimal-comma locales.",
+)
+@file_option(
+    "--json",
+    "json_file",
+    "Write the results and their provenance as JSON to FILE ('-' for standard output).",
+)
+@click.option(
+    "--table",
+    "table_kind",
+    type=click.Choice(["auto", "full", "pivot"]),
+    default="auto",
+    show_default=True,
+    help="Terminal table: every row, or torque as speeds x models (auto: pivot above 40 rows).",
+)
+def torque(
+    case_file: str | None,
+    model_names: tuple[str, ...],
+    speed: str | None,
+    temperature: str | None,
+    axial_load: str | None,
+    csv_file: str | None,
+    csv_layout: str,
+    csv_dialect: str,
+    json_file: str | None,
+    table_kind: str,
+) -> None:
+    """Friction torque, power loss and efficiency of one case over speeds, temperatures, loads.
+
+    \b
+    Examples:
+      ballscrew torque --speed "0..3000:7 rpm"
+      ballscrew torque --model olaru --model catalog --temperature "20, 45 degC" --csv t.csv
+      ballscrew torque --case my_screw.toml --axial-load "0, 2 kN" --json t.json
+      ballscrew torque --model complete --model catalog --csv t.csv --csv-layout wide \\
+          --csv-dialect semicolon-decimal-comma
+    """  # noqa: D301 - click needs the literal \b to keep the example lines
+    from ..files import atomic_write
+    from ..friction import get_model
+    from ..io.case import load_case
+    from ..report.outputs import csv_text, json_text, provenance, result_rows
+    from ..units import parse_range
+
+    case = load_case(case_file)
+    for name in model_names:
+        get_model(name)
+    w = np.asarray(parse_range("--speed", speed, "rad/s")) if speed else case.speed
+    t = (
+        np.asarray(parse_range("--temperature", temperature, "degC"))
+        if temperature
+        else (case.temperature)
+    )
+    f = (
+        np.asarray(parse_range("--axial-load", axial_load, "N"))
+        if axial_load
+        else (case.axial_load)
+    )
+    console = Console(stderr=True)
+    with progress(console) as bar:
+        task = bar.add_task("models", total=len(model_names))
+
+        def advance(name: str) -> None:
+            bar.update(task, description=name)
+            bar.advance(task)
+
+        results = run_models(case, model_names, w, t, f, on_model=advance)
+    _report_warnings(results)
+    rows = result_rows(results)
+    pivot = table_kind == "pivot" or (table_kind == "auto" and len(rows) > 40)
+    stdout(json_file).print(
+        _pivot_table(case.title, rows) if pivot else _full_table(case.title, rows)
+    )
+    if pivot and table_kind == "auto":
+        click.echo(
+            f"({len(rows)} rows: torque shown as speeds x models; --table full for all)",
+            err=json_file == "-",
+        )
+    meta = provenance(case, results, ["ballscrew", *sys.argv[1:]])
+    if csv_file:
+        text = csv_text(rows, layout=csv_layout, dialect=csv_dialect)
+        atomic_write(Path(csv_file), text.encode("utf-8"))
+        atomic_write(Path(csv_file + ".meta.json"), json_text([], meta).encode("utf-8"))
+    if json_file:
+        write_json(json_file, json_text(rows, meta))
+
+
+def operating_grid(
+    speed: FloatArray, temperature: FloatArray, axial_load: FloatArray
+) -> tuple[FloatArray, FloatArray, FloatArray]:
+    """Every combination of the speeds, temperatures and loads, as three flat arrays.
+
+    The speed varies slowest, then the temperature, then the load: the row
+    order of the tables and files of ``ballscrew torque``.
+    """
+    w, t, f = (np.ravel(a) for a in np.meshgrid(speed, temperature, axial_load, indexing="ij"))
+    return w, t, f
+
+
+def run_models(
+    case: Case,
+    model_names: Sequence[str],
+    speed: FloatArray,
+    temperature: FloatArray,
+    axial_load: FloatArray,
+    on_model: Callable[[str], None] | None = None,
+) -> dict[str, FrictionResult]:
+    """Each model over the grid of the operating points, with the case's model parameters.
+
+    The validity issues are kept in each result (:func:`warning_lines` tells
+    them); ``on_model(name)`` is called after each model.
+    """
+    from ..chain import friction_torque
+
+    grid_w, grid_t, grid_f = operating_grid(speed, temperature, axial_load)
+    results: dict[str, FrictionResult] = {}
+    for name in model_names:
+        params = dict(case.model_parameters.get(name, {}))
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", BallScrewValidityWarning)
+            results[name] = friction_torque(
+                case.screw,
+                case.lubricant,
+                speed=grid_w,
+                temperature=grid_t,
+                axial_load=grid_f,
+                model=name,
+                **params,
+            )
+        if on_model is not None:
+            on_model(name)
+    return results
+
+
+def warning_lines(results: Mapping[str, FrictionResult]) -> list[str]:
+    """Each model's validity issues as the lines ``ballscrew torque`` prints.
+
+    One ``warning:`` line per issue; issues every ordinary ball screw has
+    (``ValidityIssue.routine``) become one ``note:`` per quantity, naming the
+    models, after the warnings.
+    """
+    lines: list[str] = []
+    routine: dict[str, list[Any]] = {}
+    for r in results.values():
+        for issue in r.warnings:
+            if issue.routine:
+                routine.setdefault(issue.quantity, []).append(issue)
+            else:
+                lines.append(f"warning: {issue}")
+    for quantity, found in routine.items():
+        worst = max(found, key=lambda i: i.excess)
+        names = ", ".join(i.model for i in found)
+        lines.append(
+            f"note: {quantity} up to {worst.value:.3g}, outside {worst.low:.3g} to "
+            f"{worst.high:.3g} ({worst.applies_to}) for {names}: usual for ball screws, "
+            f"{worst.routine}"
+        )
+    return lines
+
+
+def _report_warnings(results: Mapping[str, FrictionResult]) -> None:
+    """Each model's validity issues, one line each, once per run (on standard error)."""
+    for line in warning_lines(results):
+        click.echo(line, err=True)
+
+
+def _full_table(title: str, rows: list[dict[str, Any]]) -> Table:
+    keys = [k for k in rows[0] if k in _MAIN_COLUMNS]
+    table = Table(title=f"{title}: friction torque", show_lines=False)
+    for key in keys:
+        table.add_column(key, justify="right", overflow="fold")
+    for row in rows:
+        table.add_row(*(_show(row[k]) for k in keys))
+    return table
+
+
+_MAIN_COLUMNS = (
+    "model",
+    "speed [rpm]",
+    "temperature [degC]",
+    "axial load [N]",
+    "torque [N*m]",
+    "power loss [W]",
+    "efficiency [-]",
+)
+
+
+def _show(value: object) -> str:
+    return value if isinstance(value, str) else f"{value:.5g}"
+
+
+def _pivot_table(title: str, rows: list[dict[str, Any]]) -> Table:
+    """Torque [N·m] as rows of (temperature, load, speed) and a column per model."""
+    models = list(dict.fromkeys(str(r["model"]) for r in rows))
+    cells: dict[tuple[Any, ...], dict[str, float]] = {}
+    for r in rows:
+        key = (r["temperature [degC]"], r["axial load [N]"], r["speed [rpm]"])
+        cells.setdefault(key, {})[str(r["model"])] = r["torque [N*m]"]
+    table = Table(title=f"{title}: friction torque [N*m]")
+    for column in ("temperature [degC]", "axial load [N]", "speed [rpm]", *models):
+        table.add_column(column, justify="right", overflow="fold")
+    for (temp, load, rpm), by_model in sorted(cells.items()):
+        table.add_row(
+            _show(temp),
+            _show(load),
+            _show(rpm),
+            *(_show(by_model.get(m, math.nan)) for m in models),
+        )
+    return table

@@ -1,0 +1,513 @@
+r"""Calibration: the uncertain inputs of a friction model that explain a measured curve.
+
+:func:`fit_parameters` adjusts the chosen parameters :math:`\theta` (the screw's
+preload, a model's coefficients) to minimise the squared residuals
+:math:`r_i = T_{model}(\omega_i, T_i, F_i; \theta) - T_{meas,i}` [N·m] by bounded
+nonlinear least squares (scipy's trust-region reflective ``least_squares``),
+in log space for parameters that span decades.
+
+Uncertainty: at the optimum the covariance of the transformed parameters is
+:math:`s^2 (J^T J)^{-1}` with :math:`s^2 = \sum r_i^2/(n-p)` and :math:`J` the
+Jacobian of the residuals, and the 95 % interval is :math:`\hat\theta \pm
+t_{0.975,\,n-p}\,\sigma` (Student's t), mapped back through the exponential
+for log parameters (so intervals are asymmetric there). This is the usual
+linearised interval (e.g. Seber and Wild, *Nonlinear Regression*, 1989,
+§5.1); it is accurate when the model is close to linear over the interval.
+
+Robustness:
+
+* outliers: a first fit's residuals give a robust scale
+  :math:`\hat\sigma = 1.4826\,\mathrm{MAD}`; points beyond :math:`4\hat\sigma`
+  are reported and left out of the final fit (after a soft-L1 refit that keeps
+  them from steering the estimate);
+* identifiability: a parameter whose 95 % interval spans more than a factor
+  100 (log parameters) or the whole allowed range (others) cannot be
+  identified from the data; it is held at its start value, the others are
+  refitted, and a warning says so. Pairs with :math:`|\rho| > 0.95` get a
+  warning that the data cannot separate them;
+* too few points (:math:`n \le p`) is an error.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+
+from ..chain import friction_torque
+from ..errors import BallScrewInputError, FloatArray
+from ..friction import get_model
+from ..geometry import BallScrew
+from ..io.measured import MeasuredCurve
+from ..lubricant import Lubricant
+from ..lubricants import get as get_lubricant
+
+Index = npt.NDArray[np.intp]
+
+__all__ = ["FITTABLE", "Estimate", "FitResult", "FreeParameter", "fit_parameters"]
+
+
+@dataclass(frozen=True)
+class FreeParameter:
+    """A parameter calibration may adjust: where it lives, its unit and bounds."""
+
+    name: str
+    where: str  # "screw", or "model"
+    unit: str
+    low: float
+    high: float
+    log: bool
+    description: str
+
+
+FITTABLE: dict[str, FreeParameter] = {
+    p.name: p
+    for p in (
+        FreeParameter("preload", "screw", "N", 1.0, 1e6, True, "the nut's axial preload"),
+        FreeParameter("limiting_shear_coefficient", "model", "-", 1e-3, 0.5, True,
+                      "pressure slope gamma_L of the lubricant's limiting shear stress"),
+        FreeParameter("limiting_shear_stress", "model", "Pa", 1e4, 1e8, True,
+                      "limiting shear stress tau_0 at ambient pressure"),
+        FreeParameter("ball_train_constant", "model", "-", 1e-5, 1.0, True,
+                      "ball-to-ball friction constant c_B of the complete model"),
+        FreeParameter("boundary_friction", "model", "-", 1e-3, 0.5, True,
+                      "boundary (asperity) friction coefficient"),
+        FreeParameter("hysteresis_loss_factor", "model", "-", 1e-5, 0.2, True,
+                      "elastic hysteresis loss factor"),
+        FreeParameter("seal_torque", "model", "N*m", 0.0, 100.0, False,
+                      "drag torque of wipers or seals"),
+        FreeParameter("friction_coefficient", "model", "-", 1e-5, 0.5, True,
+                      "the catalogue rule's friction coefficient"),
+        FreeParameter("preload_coefficient", "model", "-", 1e-4, 1.0, True,
+                      "the catalogue rule's preload torque coefficient"),
+    )
+}  # fmt: skip
+"""Parameters :func:`fit_parameters` may free, with their bounds."""
+
+CORRELATION_LIMIT = 0.95
+"""|correlation| above which a pair is reported as not separable."""
+
+OUTLIER_SCALE = 4.0
+"""Robust standard deviations beyond which a point is an outlier."""
+
+MAX_OUTLIER_SHARE = 0.2
+"""Largest share of the points that may be left out as outliers."""
+
+
+@dataclass(frozen=True)
+class Estimate:
+    """A fitted parameter: value and 95 % interval (None when not identified)."""
+
+    name: str
+    value: float
+    low: float | None
+    high: float | None
+    start: float
+    unit: str
+    identified: bool = True
+
+    def as_dict(self) -> dict[str, Any]:
+        """JSON-ready dict."""
+        return {
+            "value": self.value,
+            "low": self.low,
+            "high": self.high,
+            "start": self.start,
+            "unit": self.unit,
+            "identified": self.identified,
+        }
+
+
+@dataclass(frozen=True)
+class FitResult:
+    """Everything a calibration computes (SI; torques in N·m)."""
+
+    model: str
+    estimates: dict[str, Estimate]
+    correlation: FloatArray
+    correlation_names: tuple[str, ...]
+    screw: BallScrew
+    model_parameters: dict[str, Any]
+    speed: FloatArray
+    temperature: FloatArray
+    axial_load: FloatArray
+    measured: FloatArray
+    fitted: FloatArray
+    outliers: tuple[int, ...]
+    rms_residual: float
+    warnings: tuple[str, ...] = field(default=())
+
+    @property
+    def residuals(self) -> FloatArray:
+        """Model minus measurement at every point [N·m]."""
+        out: FloatArray = self.fitted - self.measured
+        return out
+
+    def as_dict(self) -> dict[str, Any]:
+        """The JSON object of ``ballscrew fit --json``."""
+        return {
+            "model": self.model,
+            "parameters": {k: e.as_dict() for k, e in self.estimates.items()},
+            "rms_residual_Nm": self.rms_residual,
+            "points": int(self.measured.size),
+            # Rows of the measured file, counted from 1 as the warning and the CSV do.
+            "outlier_rows": [i + 1 for i in self.outliers],
+            "correlation": {
+                "names": list(self.correlation_names),
+                "matrix": self.correlation.tolist(),
+            },
+            "warnings": list(self.warnings),
+        }
+
+
+def _spec(name: str, model: str) -> FreeParameter:
+    if name not in FITTABLE:
+        raise BallScrewInputError("--free", name, f"one of {sorted(FITTABLE)}")
+    spec = FITTABLE[name]
+    if spec.where == "model":
+        get_model(model).check_parameters({name: 0.0})
+    return spec
+
+
+def _start(
+    spec: FreeParameter, screw: BallScrew, lubricant: Lubricant, model: str,
+    parameters: dict[str, Any],
+) -> float:  # fmt: skip
+    if spec.where == "screw":
+        value = float(getattr(screw, spec.name))
+    elif parameters.get(spec.name) is not None:
+        value = float(parameters[spec.name])
+    else:
+        default = get_model(model).parameters.get(spec.name)
+        value = float(getattr(lubricant, spec.name) if default is None else default)
+    if spec.log and value <= 0.0:
+        raise BallScrewInputError(
+            spec.name, value, f"a positive start value for a fit in log space ({spec.unit})"
+        )
+    return min(max(value, spec.low), spec.high)
+
+
+def _to_theta(spec: FreeParameter, value: float) -> float:
+    return math.log(value) if spec.log else value
+
+
+def _from_theta(spec: FreeParameter, theta: float) -> float:
+    return math.exp(theta) if spec.log else theta
+
+
+def fit_parameters(
+    screw: BallScrew,
+    lubricant: Lubricant | str,
+    measured: MeasuredCurve,
+    free: Sequence[str],
+    *,
+    model: str = "complete",
+    temperature: float = 20.0,
+    axial_load: float = 0.0,
+    parameters: dict[str, Any] | None = None,
+    start: dict[str, float] | None = None,
+) -> FitResult:
+    """Fit ``free`` parameters of ``model`` to a measured torque curve.
+
+    Parameters
+    ----------
+    screw, lubricant
+        The screw and oil; the screw's fields in ``free`` are start values.
+    measured : MeasuredCurve
+        Speeds [rad/s] and torques [N·m]; its temperature and axial load
+        columns, where given, replace ``temperature`` [°C] and ``axial_load`` [N].
+    free : sequence of str
+        Names from :data:`FITTABLE`.
+    parameters : dict, optional
+        The model's other parameters (held fixed).
+    start : dict, optional
+        Start values by name (SI), instead of the screw's or the model's.
+
+    Returns
+    -------
+    FitResult
+    """
+    oil = get_lubricant(lubricant) if isinstance(lubricant, str) else lubricant
+    fixed = dict(parameters or {})
+    names = list(dict.fromkeys(free))
+    if not names:
+        raise BallScrewInputError("--free", "(none)", f"one or more of {sorted(FITTABLE)}")
+    specs = [_spec(n, model) for n in names]
+    starts = {s.name: _start(s, screw, oil, model, fixed) for s in specs}
+    for key, value in (start or {}).items():
+        spec = _spec(key, model)
+        starts[key] = min(max(float(value), spec.low), spec.high)
+    speed = np.asarray(measured.speed, dtype=float)
+    torque = np.asarray(measured.torque, dtype=float)
+    n = speed.size
+    temp = (
+        np.full(n, float(temperature))
+        if measured.temperature is None
+        else np.asarray(measured.temperature, dtype=float)
+    )
+    load = (
+        np.full(n, float(axial_load))
+        if measured.axial_load is None
+        else np.asarray(measured.axial_load, dtype=float)
+    )
+    if n <= len(names):
+        raise BallScrewInputError(
+            "measured", f"{n} points", f"more points than free parameters ({len(names)})"
+        )
+
+    def predict(values: dict[str, float], rows: Index) -> FloatArray:
+        s = screw
+        kwargs = dict(fixed)
+        for name, value in values.items():
+            if FITTABLE[name].where == "screw":
+                s = s.replace(**{name: value})
+            else:
+                kwargs[name] = value
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            out = friction_torque(
+                s, oil, speed=speed[rows], temperature=temp[rows], axial_load=load[rows],
+                model=model, **kwargs,
+            ).total  # fmt: skip
+        return np.asarray(out, dtype=float)
+
+    notes: list[str] = []
+    active = list(specs)
+    held: dict[str, float] = {}
+    everything = np.arange(n)
+    rows = everything
+    outliers: tuple[int, ...] = ()
+    theta = np.array([_to_theta(s, starts[s.name]) for s in active])
+    for _ in range(len(specs) + 1):
+        theta, jac, resid, rows, outliers = _solve(active, theta, held, predict, torque, everything)
+        sigma, corr = _covariance(jac, resid, len(active))
+        loose = [s for s, sd in zip(active, sigma, strict=True) if _unidentified(s, sd, resid.size)]
+        if not loose:
+            break
+        # One at a time, the worst first: a direction the data cannot see often
+        # leans on a parameter they can, which is identified once the other is held.
+        # Ties (several unseen) go to the parameter the torque is least sensitive to.
+        norms = np.linalg.norm(jac, axis=0)
+        width = {
+            s.name: (sd / _allowed_sd(s), -norm)
+            for s, sd, norm in zip(active, sigma, norms, strict=True)
+        }
+        loose = [max(loose, key=lambda s: width[s.name])]
+        for s in loose:
+            held[s.name] = starts[s.name]
+            notes.append(
+                f"{s.name} cannot be identified from these data (its 95 % interval spans more "
+                f"than {'a factor 100' if s.log else 'its allowed range'}): held at its start "
+                f"value {starts[s.name]:.4g} {s.unit}; measure where it matters, or leave it "
+                "out of --free"
+            )
+        keep = [i for i, s in enumerate(active) if s not in loose]
+        active = [active[i] for i in keep]
+        theta = theta[keep]
+        if not active:
+            sigma, corr = np.zeros(0), np.zeros((0, 0))
+            resid = predict(held, rows) - torque[rows]
+            break
+    t_q = _t_quantile(resid.size - len(active))
+    estimates: dict[str, Estimate] = {}
+    values = dict(held)
+    for s, th, sd in zip(active, theta, sigma, strict=True):
+        value = _from_theta(s, float(th))
+        values[s.name] = value
+        low = _from_theta(s, float(th - t_q * sd)) if math.isfinite(sd) else None
+        high = _from_theta(s, float(th + t_q * sd)) if math.isfinite(sd) else None
+        estimates[s.name] = Estimate(s.name, value, low, high, starts[s.name], s.unit)
+        if value in (s.low, s.high) or math.isclose(value, s.low) or math.isclose(value, s.high):
+            notes.append(
+                f"{s.name} = {value:.4g} {s.unit} sits on its bound [{s.low:g}, {s.high:g}]: "
+                "the model cannot reach the data with it; check the case or free another "
+                "parameter"
+            )
+    for name, value in held.items():
+        spec = FITTABLE[name]
+        estimates[name] = Estimate(name, value, None, None, value, spec.unit, identified=False)
+    for i in range(len(active)):
+        for j in range(i + 1, len(active)):
+            if abs(corr[i, j]) > CORRELATION_LIMIT:
+                notes.append(
+                    f"{active[i].name} and {active[j].name} are correlated (rho = "
+                    f"{corr[i, j]:+.3f}): the data barely separate them, so each is known less "
+                    "well than their combination; measurements at other loads or "
+                    "temperatures would separate them"
+                )
+    if outliers:
+        notes.append(
+            f"{len(outliers)} point(s) more than {OUTLIER_SCALE:g} robust standard deviations "
+            f"from the fit left out: rows {', '.join(str(i + 1) for i in outliers)}"
+        )
+    dof = resid.size - len(active)
+    if 0 < dof < 3:
+        notes.append(
+            f"only {dof} degree(s) of freedom: the intervals are wide and rest on few points"
+        )
+    fitted_screw = screw
+    model_values = dict(fixed)
+    for name, value in values.items():
+        if FITTABLE[name].where == "screw":
+            fitted_screw = fitted_screw.replace(**{name: value})
+        else:
+            model_values[name] = value
+    fitted = predict(values, everything)
+    inliers = np.setdiff1d(everything, np.asarray(outliers, dtype=int))
+    rms = float(np.sqrt(np.mean((fitted[inliers] - torque[inliers]) ** 2)))
+    return FitResult(
+        model=model,
+        estimates={n: estimates[n] for n in names},
+        correlation=corr,
+        correlation_names=tuple(s.name for s in active),
+        screw=fitted_screw,
+        model_parameters=model_values,
+        speed=speed,
+        temperature=temp,
+        axial_load=load,
+        measured=torque,
+        fitted=fitted,
+        outliers=outliers,
+        rms_residual=rms,
+        warnings=tuple(notes),
+    )
+
+
+def _solve(
+    active: list[FreeParameter],
+    theta0: FloatArray,
+    held: dict[str, float],
+    predict: Any,
+    torque: FloatArray,
+    everything: Index,
+) -> tuple[FloatArray, FloatArray, FloatArray, Index, tuple[int, ...]]:
+    """Fit, find outliers, refit robustly, then fit the inliers by plain least squares."""
+    from scipy.optimize import least_squares
+
+    lower = np.array([_to_theta(s, s.low) if s.log else s.low for s in active])
+    upper = np.array([_to_theta(s, s.high) if s.log else s.high for s in active])
+
+    def residual(theta: FloatArray, rows: Index) -> FloatArray:
+        values = dict(held)
+        values.update(
+            {s.name: _from_theta(s, float(t)) for s, t in zip(active, theta, strict=True)}
+        )
+        out: FloatArray = predict(values, rows) - torque[rows]
+        return out
+
+    def run(theta: FloatArray, rows: Index, **kw: Any) -> Any:
+        return least_squares(
+            residual, np.clip(theta, lower, upper), bounds=(lower, upper), args=(rows,),
+            x_scale="jac", **kw,
+        )  # fmt: skip
+
+    first = run(theta0, everything)
+    # A floor on the scale: data the model reproduces to rounding have no outliers.
+    floor = 1e-6 * float(np.median(np.abs(torque)))
+    scale = max(1.4826 * float(np.median(np.abs(first.fun - np.median(first.fun)))), floor)
+    rows = everything
+    theta = first.x
+    if np.any(np.abs(first.fun) > OUTLIER_SCALE * scale):
+        robust = run(first.x, everything, loss="soft_l1", f_scale=scale)
+        r = robust.fun
+        scale = max(1.4826 * float(np.median(np.abs(r - np.median(r)))), floor)
+        bad = np.abs(r) > OUTLIER_SCALE * scale
+        # Outliers are a few points; if many points miss, the model misses the
+        # data's shape, and dropping them would hide it.
+        if 0 < np.count_nonzero(bad) <= MAX_OUTLIER_SHARE * torque.size:
+            rows = everything[~bad]
+            theta = robust.x
+    final = run(theta, rows, jac="3-point")
+    outliers = tuple(int(i) for i in np.setdiff1d(everything, rows))
+    return final.x, final.jac, final.fun, rows, outliers
+
+
+def _covariance(jac: FloatArray, resid: FloatArray, p: int) -> tuple[FloatArray, FloatArray]:
+    """Standard deviations of the transformed parameters and their correlation matrix."""
+    n = resid.size
+    s2 = float(resid @ resid) / max(n - p, 1)
+    norms = np.linalg.norm(jac, axis=0)
+    scaled = jac / np.where(norms > 0.0, norms, 1.0)
+    _, sv, vt = np.linalg.svd(scaled, full_matrices=False)
+    # Directions the data do not constrain (a column of zeros, or columns that
+    # move together): infinite variance for the parameters in them, where a
+    # pseudo-inverse would report zero.
+    weak = sv <= 1e-7 * max(float(sv[0]), 1e-300)
+    inv = (vt[~weak].T / sv[~weak] ** 2) @ vt[~weak]
+    unseen = (norms <= 1e-12 * max(float(np.linalg.norm(jac)), 1e-300)) | np.any(
+        np.abs(vt[weak]) > 0.1, axis=0
+    )
+    with np.errstate(divide="ignore", invalid="ignore"):
+        sigma = np.sqrt(s2 * np.clip(np.diag(inv), 0.0, None)) / norms
+        corr = inv / np.sqrt(np.outer(np.diag(inv), np.diag(inv)))
+    sigma = np.where(unseen, math.inf, sigma)
+    corr = np.where(np.isfinite(corr), corr, 0.0)
+    np.fill_diagonal(corr, 1.0)
+    return sigma, corr
+
+
+def _allowed_sd(spec: FreeParameter) -> float:
+    """Largest standard deviation of an identified parameter (transformed space).
+
+    Beyond it the 95 % interval (±1.96 sd) spans more than a factor 100 (log
+    parameters) or the whole allowed range (others).
+    """
+    if spec.log:
+        return math.log(100.0) / 2 / 1.96
+    return (spec.high - spec.low) / 2 / 1.96
+
+
+def _unidentified(spec: FreeParameter, sd: float, n: int) -> bool:
+    return not math.isfinite(sd) or sd > _allowed_sd(spec)
+
+
+def _t_quantile(dof: int) -> float:
+    from scipy.stats import t
+
+    return float(t.ppf(0.975, max(dof, 1)))
+
+
+def fitted_case_toml(case_text: str, result: FitResult, *, note: str = "") -> str:
+    """The case file's TOML with the fitted values written in (comments kept).
+
+    The screw's fitted fields replace its own (a fitted preload replaces
+    ``preload_share`` or ``preload_drag_torque``); fitted model parameters go
+    to ``[study.model_parameters.<model>]`` in SI. Each carries its 95 %
+    interval as a comment; parameters the data could not identify are left
+    as they were.
+    """
+    import tomlkit
+
+    doc = tomlkit.parse(case_text)
+    if "title" in doc:
+        doc["title"] = f"{doc['title']} (fitted)"
+    for name, e in result.estimates.items():
+        if not e.identified:
+            continue
+        spec = FITTABLE[name]
+        unit = "" if spec.unit == "-" else f" {spec.unit}"
+        span = f"95 % interval {e.low:.4g} to {e.high:.4g}{unit}" if e.low is not None else ""
+        comment = f"fitted by ballscrew fit ({result.model}); {span}{note}"
+        if spec.where == "screw":
+            screw = doc["screw"]
+            assert isinstance(screw, dict)
+            if name == "preload":
+                for other in ("preload_share", "preload_drag_torque"):
+                    if other in screw:
+                        del screw[other]
+            item = tomlkit.item(f"{e.value:.6g} {spec.unit}")
+            item.comment(comment)
+            screw[name] = item
+        else:
+            study = doc.setdefault("study", tomlkit.table())
+            params = study.setdefault("model_parameters", tomlkit.table())
+            table = params.setdefault(result.model, tomlkit.table())
+            number = tomlkit.item(float(f"{e.value:.6g}"))
+            number.comment(comment)
+            table[name] = number
+    return tomlkit.dumps(doc)

@@ -1,0 +1,420 @@
+"""Ball screw case files: TOML with explicit units, validated on load.
+
+A case describes one ball screw, its lubricant, its operating range and (for
+``ballscrew study``) the study's settings. Every dimensional value is written
+with its unit (``pitch_diameter = "32 mm"``, ``preload = "1.5 kN"``) and
+converted by pint at load time. A value may also be a table that says it was
+assumed and why::
+
+    lead = { value = "20 mm", assumed = "high-speed screw of that class" }
+
+Pydantic validates the structure (unknown keys are errors, so typos are
+caught); every problem becomes one :class:`~ballscrew.errors.BallScrewInputError`
+naming the field by its dotted path (``screw.lead``).
+
+The preload is given either directly (``preload``) or as the catalogue drag
+torque it produces (``preload_drag_torque``), which the case turns into a
+preload with :func:`ballscrew.friction.catalog.preload_from_drag_torque`, as
+the study did.
+"""
+
+from __future__ import annotations
+
+import difflib
+import tomllib
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from pydantic import ValidationError
+
+from .. import lubricants
+from ..errors import BallScrewInputError, FloatArray
+from ..geometry import BallScrew
+from ..lubricant import Lubricant
+from ..units import parse_range, to_si
+from .designation import resolve
+from .schema import SECTIONS, Assumed, CaseFile, LubricantSection, ScrewSection
+
+__all__ = [
+    "LUBRICANT_UNITS",
+    "SCREW_UNITS",
+    "Assumption",
+    "Case",
+    "default_case_path",
+    "load_case",
+    "parse_case",
+]
+
+
+@dataclass(frozen=True)
+class Assumption:
+    """A value of a case that was assumed rather than known."""
+
+    field: str
+    value: str
+    reason: str
+
+
+def _unwrap(field: str, raw: Any, notes: list[Assumption]) -> Any:
+    if isinstance(raw, Assumed):
+        notes.append(Assumption(field, str(raw.value), raw.assumed))
+        return raw.value
+    return raw
+
+
+@dataclass(frozen=True)
+class Case:
+    """A loaded, validated case.
+
+    Attributes
+    ----------
+    title, description : str
+        Labels.
+    screw : BallScrew
+        The ball screw, with the case's preload.
+    lubricant : Lubricant
+        The oil.
+    speed : numpy.ndarray
+        Screw speeds [rad/s].
+    temperature : numpy.ndarray
+        Temperatures [°C].
+    axial_load : numpy.ndarray
+        Axial loads [N].
+    drag_torques : tuple of float
+        Study: catalogue drag torques [N·m] whose preloads are compared;
+        the middle one is the case's own when the preload is derived.
+    measured_range : tuple of float
+        Study: the measured torque band [N·m].
+    study_temperature : float
+        Study: temperature of Figs. 3 to 7 [°C].
+    lubricant_temperatures : dict
+        Study: lubricant name -> temperatures [°C] (Fig. 8, Table 1).
+    model_parameters : dict
+        Study: model name -> parameters passed to it.
+    assumptions : tuple of Assumption
+        Every value marked as assumed, with its reason.
+    text : str
+        The TOML text the case was read from.
+    screw_source : str
+        Where the screw's geometry came from when a designation named it.
+    axis : dict
+        ``[axis]`` in SI (kg, kg·m², rad, m; d·n in mm·rpm) and its choices
+        (bearing type, support): the keywords of :class:`ballscrew.axis.energy.Axis`.
+    thermal : dict
+        ``[axis]``'s thermal keys in SI (m, kg, K/W, °C), those given: the
+        keywords of :class:`ballscrew.axis.thermal.ThermalNode`.
+    """
+
+    title: str
+    description: str
+    screw: BallScrew
+    lubricant: Lubricant
+    speed: FloatArray
+    temperature: FloatArray
+    axial_load: FloatArray
+    drag_torques: tuple[float, ...]
+    measured_range: tuple[float, ...]
+    study_temperature: float
+    lubricant_temperatures: dict[str, tuple[float, ...]]
+    model_parameters: dict[str, dict[str, Any]]
+    assumptions: tuple[Assumption, ...]
+    text: str
+    screw_source: str = ""
+    axis: dict[str, Any] = field(default_factory=dict)
+    thermal: dict[str, float] = field(default_factory=dict)
+
+
+def _validation_error(exc: ValidationError) -> BallScrewInputError:
+    """One error naming the field; a misspelt key first, with the likely intended one."""
+    errors = exc.errors()
+    err = next((e for e in errors if e["type"] == "extra_forbidden"), errors[0])
+    path = ".".join(str(p) for p in err["loc"] if not str(p).startswith(("function-", "_")))
+    # pydantic reports union members in the path; keep the field names only.
+    parts = [p for p in path.split(".") if p not in {"str", "float", "int", "Assumed"}]
+    field = ".".join(parts) or "case"
+    kind = err["type"]
+    allowed = {
+        "missing": "a value (the field is required)",
+        "extra_forbidden": "no such field (check the spelling)",
+    }.get(kind, err["msg"])
+    if kind == "extra_forbidden":
+        section = parts[0] if len(parts) > 1 else ""
+        model = SECTIONS.get(section, CaseFile)
+        close = difflib.get_close_matches(parts[-1], list(model.model_fields), n=1)
+        if close:
+            allowed = f"no such field; did you mean {'.'.join([*parts[:-1], close[0]])}?"
+    value = "(missing)" if kind == "missing" else err.get("input", "")
+    return BallScrewInputError(field, value, allowed)
+
+
+def parse_case(text: str, *, source: str = "case") -> Case:
+    """Validate a case given as TOML text; see the module docstring for the format."""
+    try:
+        raw = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise BallScrewInputError(source, "(file)", f"valid TOML ({exc})") from None
+    try:
+        data = CaseFile.model_validate(raw)
+    except ValidationError as exc:
+        raise _validation_error(exc) from None
+    notes: list[Assumption] = []
+    s = data.screw
+
+    def si(section: str, name: str, value: Any, unit: str) -> float:
+        return to_si(f"{section}.{name}", _unwrap(f"{section}.{name}", value, notes), unit)
+
+    screw, screw_source = _screw(s, si, notes)
+
+    lub = _lubricant(data.lubricant, notes)
+    op = data.operation
+    speed = parse_range("operation.speed", _unwrap("operation.speed", op.speed, notes), "rad/s")
+    temperature = parse_range(
+        "operation.temperature", _unwrap("operation.temperature", op.temperature, notes), "degC"
+    )
+    axial = parse_range(
+        "operation.axial_load", _unwrap("operation.axial_load", op.axial_load, notes), "N"
+    )
+    st = data.study
+    drag = tuple(si("study", f"drag_torques[{i}]", v, "N*m") for i, v in enumerate(st.drag_torques))
+    band = tuple(
+        si("study", f"measured_range[{i}]", v, "N*m") for i, v in enumerate(st.measured_range)
+    )
+    temps = {
+        name: tuple(si("study", f"lubricant_temperatures.{name}", v, "degC") for v in values)
+        for name, values in st.lubricant_temperatures.items()
+    }
+    for name in temps:
+        if name != lub.name:
+            lubricants.get(name)  # unknown names fail here, listing the bundled ones
+    return Case(
+        title=data.title,
+        description=data.description,
+        screw=screw,
+        lubricant=lub,
+        speed=np.asarray(speed),
+        temperature=np.asarray(temperature),
+        axial_load=np.asarray(axial),
+        drag_torques=drag,
+        measured_range=band,
+        study_temperature=(
+            float(temperature[0])
+            if st.temperature is None
+            else si("study", "temperature", st.temperature, "degC")
+        ),
+        lubricant_temperatures=temps,
+        model_parameters={k: dict(v) for k, v in st.model_parameters.items()},
+        assumptions=tuple(notes),
+        text=text,
+        screw_source=screw_source,
+        axis={
+            name: si("axis", name, getattr(data.axis, name), unit)
+            for name, unit in (
+                ("moving_mass", "kg"),
+                ("screw_inertia", "kg*m**2"),
+                ("coupling_inertia", "kg*m**2"),
+                ("motor_inertia", "kg*m**2"),
+                ("gear_ratio", ""),
+                ("incline", "rad"),
+                ("bearing_bore", "m"),
+                ("bearing_span", "m"),
+                ("bearing_outer_diameter", "m"),
+                ("bearing_static_rating", "N"),
+                ("root_diameter", "m"),
+                ("dn_limit", "mm*rpm"),
+            )
+            if getattr(data.axis, name) is not None
+        }
+        | {
+            "bearing_type": data.axis.bearing_type,
+            "bearing_lubrication": data.axis.bearing_lubrication,
+            "support": data.axis.support,
+        },
+        thermal={
+            name: si("axis", name, getattr(data.axis, name), unit)
+            for name, unit in (
+                ("screw_length", "m"),
+                ("nut_mass", "kg"),
+                ("machine_resistance", "K/W"),
+                ("ambient", "degC"),
+            )
+            if getattr(data.axis, name) is not None
+        },
+    )
+
+
+SCREW_UNITS: dict[str, str] = {
+    "pitch_diameter": "m",
+    "lead": "m",
+    "ball_diameter": "m",
+    "contact_angle": "rad",
+    "conformity_screw": "",
+    "conformity_nut": "",
+    "loaded_turns": "",
+    "circuits": "",
+    "youngs_modulus_ball": "Pa",
+    "youngs_modulus_races": "Pa",
+    "poisson_ratio_ball": "",
+    "poisson_ratio_races": "",
+    "roughness_ball": "m",
+    "roughness_screw": "m",
+    "roughness_nut": "m",
+}
+"""The SI unit of each numeric ``[screw]`` key that is a :class:`BallScrew` field ("" = none)."""
+
+LUBRICANT_UNITS: dict[str, str] = {
+    "nu40": "m**2/s",
+    "nu100": "m**2/s",
+    "density15": "kg/m**3",
+    "pressure_viscosity": "1/Pa",
+    "limiting_shear_stress": "Pa",
+    "limiting_shear_coefficient": "",
+}
+"""The SI unit of each numeric ``[lubricant]`` key ("" = none)."""
+
+
+_LENGTHS = ("pitch_diameter", "lead", "ball_diameter")
+
+
+def _screw(
+    s: ScrewSection, si: Callable[[str, str, Any, str], float], notes: list[Assumption]
+) -> tuple[BallScrew, str]:
+    """The screw of a case: designation first, keys given in the file override it."""
+    given = s.model_fields_set
+    base: dict[str, Any] = {}
+    rating: float | None = None
+    origin = ""
+    if s.designation is not None:
+        name = str(_unwrap("screw.designation", s.designation, notes))
+        resolved = resolve(name)
+        base, rating, origin = resolved.geometry, resolved.dynamic_load_rating, resolved.source
+        for key, why in resolved.notes.items():
+            if key not in given:
+                shown = f"{base[key] * 1e3:g} mm" if key in _LENGTHS else f"{base[key]:g}"
+                notes.append(Assumption(f"screw.{key}", shown, why))
+    geometry: dict[str, Any] = {}
+    for name, unit in SCREW_UNITS.items():
+        value = getattr(s, name)
+        if name in given and value is not None:
+            geometry[name] = si("screw", name, value, unit)
+        elif name in base:
+            geometry[name] = base[name]
+        elif value is not None:  # the schema's default
+            geometry[name] = si("screw", name, value, unit)
+        elif name in ("pitch_diameter", "lead", "ball_diameter"):
+            where = f" (the designation {s.designation!r} does not give it)" if base else ""
+            raise BallScrewInputError(f"screw.{name}", "(missing)", f"a value{where}")
+    if s.nut is not None:
+        geometry["nut"] = _unwrap("screw.nut", s.nut, notes)
+    elif "nut" in base:
+        geometry["nut"] = base["nut"]
+    if s.ball_separation is not None:
+        geometry["ball_separation"] = _unwrap("screw.ball_separation", s.ball_separation, notes)
+    circuits = geometry["circuits"]
+    if circuits != int(circuits):
+        raise BallScrewInputError("screw.circuits", circuits, "a whole number >= 1")
+    geometry["circuits"] = int(circuits)
+    if s.dynamic_load_rating is not None:
+        rating = si("screw", "dynamic_load_rating", s.dynamic_load_rating, "N")
+    ways = [
+        k for k in ("preload", "preload_drag_torque", "preload_share") if getattr(s, k) is not None
+    ]
+    if len(ways) != 1:
+        raise BallScrewInputError(
+            "screw.preload",
+            ", ".join(ways) or "(missing)",
+            "exactly one of preload (a force), preload_drag_torque and preload_share "
+            "(of the dynamic load rating)",
+        )
+    try:
+        screw = BallScrew(preload=0.0, **geometry)
+    except BallScrewInputError as exc:
+        raise BallScrewInputError(f"screw.{exc.field}", exc.value, exc.allowed) from None
+    if s.preload is not None:
+        preload = si("screw", "preload", s.preload, "N")
+    elif s.preload_drag_torque is not None:
+        from ..friction.catalog import preload_from_drag_torque
+
+        torque = si("screw", "preload_drag_torque", s.preload_drag_torque, "N*m")
+        preload = float(preload_from_drag_torque(torque, screw))
+    else:
+        share = si("screw", "preload_share", s.preload_share, "")
+        if not 0.0 <= share <= 0.2:
+            raise BallScrewInputError(
+                "screw.preload_share", s.preload_share, "0 to 20 % (catalogues: 2 to 10 %)"
+            )
+        if rating is None:
+            raise BallScrewInputError(
+                "screw.dynamic_load_rating",
+                "(missing)",
+                "a force, needed by preload_share (or a designation whose catalogue row gives it)",
+            )
+        preload = share * rating
+    try:
+        screw = screw.replace(preload=preload)
+    except BallScrewInputError as exc:
+        raise BallScrewInputError(f"screw.{exc.field}", exc.value, exc.allowed) from None
+    return screw, origin
+
+
+def _lubricant(section: LubricantSection, notes: list[Assumption]) -> Lubricant:
+    name = str(_unwrap("lubricant.name", section.name, notes))
+    custom = {key: (unit, getattr(section, key)) for key, unit in LUBRICANT_UNITS.items()}
+    given = {
+        key: to_si(f"lubricant.{key}", _unwrap(f"lubricant.{key}", raw, notes), unit)
+        for key, (unit, raw) in custom.items()
+        if raw is not None
+    }
+    own = {"nu40", "nu100", "density15"}
+    try:
+        lubricants.get(name)
+        bundled = True
+    except BallScrewInputError:
+        bundled = False
+    if not bundled and not own <= set(given):
+        missing = sorted(own - set(given))
+        raise BallScrewInputError(
+            f"lubricant.{missing[0]}",
+            "(missing)",
+            f"a value: {name!r} is not a bundled lubricant ({', '.join(lubricants.names())}), "
+            f"so your own oil needs {', '.join(sorted(own))} (missing: {', '.join(missing)})",
+        )
+    try:
+        if not given:
+            return lubricants.get(name)
+        if own <= set(given):
+            return Lubricant.from_viscosities(
+                name,
+                given.pop("nu40"),
+                given.pop("nu100"),
+                given.pop("density15"),
+                given.pop("pressure_viscosity", None),
+                source="case file",
+                **given,
+            )
+        return lubricants.get(name).replace(**given)
+    except BallScrewInputError as exc:
+        field = exc.field if exc.field.startswith("lubricant") else f"lubricant.{exc.field}"
+        raise BallScrewInputError(field, exc.value, exc.allowed) from None
+
+
+def default_case_path() -> Path:
+    """Path of the bundled default case (the study's set-up)."""
+    return Path(str(resources.files("ballscrew").joinpath("data/kamalzadeh_stage.toml")))
+
+
+def load_case(path: str | Path | None = None) -> Case:
+    """Load a case file; the bundled default case when ``path`` is None."""
+    file = default_case_path() if path is None else Path(path)
+    try:
+        data = file.read_bytes()
+    except OSError as exc:
+        raise BallScrewInputError("case", str(file), f"a readable file ({exc.strerror})") from None
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError:
+        raise BallScrewInputError("case", str(file), "a UTF-8 text file") from None
+    return parse_case(text, source=str(file))

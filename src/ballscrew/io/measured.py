@@ -1,0 +1,236 @@
+"""Measured torque-speed curves: reading them (units in the header) and error metrics.
+
+A measured curve is a CSV file with a header naming each column and its unit
+in brackets; the separator may be a comma, or a semicolon or tab with decimal
+commas (as spreadsheets write them in decimal-comma locales), for example::
+
+    speed [rpm],torque [N*m]
+    100,0.31
+    500,0.36
+
+The speed column may be the screw's angular speed (any unit pint converts to
+rad/s: ``rpm``, ``rad/s``) or the table's linear speed (``m/s``, ``mm/s``),
+which is turned into screw speed with the screw's lead; its sign is the
+direction of rotation. The torque column needs a unit convertible to N·m.
+Torques are taken as magnitudes (friction opposes the motion in either
+direction). Optional columns hold each point's lubricant temperature (a
+temperature unit: ``temperature [degC]``) and axial load (a force unit:
+``axial load [N]``), for curves measured at several temperatures or loads.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import numpy.typing as npt
+import pint
+
+from ..errors import BallScrewInputError, FloatArray
+from ..geometry import BallScrew
+from ..units import registry
+
+__all__ = ["MeasuredCurve", "error_metrics", "parse_measured", "read_measured"]
+
+_DECIMAL_COMMA = re.compile(r"^[-+]?\d*,\d+(?:[eE][-+]?\d+)?$|^[-+]?\d+,$")
+_HEADER = re.compile(r"^\s*(?P<name>[^\[\]]+?)\s*\[(?P<unit>[^\[\]]+)\]\s*$")
+
+
+@dataclass(frozen=True)
+class MeasuredCurve:
+    """A measured friction characteristic.
+
+    Attributes
+    ----------
+    speed : numpy.ndarray
+        Screw speed [rad/s].
+    torque : numpy.ndarray
+        Friction torque magnitude [N·m].
+    source : str
+        Where it was read from.
+    temperature : numpy.ndarray or None
+        Lubricant temperature of each point [°C], if the file gives it.
+    axial_load : numpy.ndarray or None
+        Axial load of each point [N], if the file gives it.
+    """
+
+    speed: FloatArray
+    torque: FloatArray
+    source: str
+    temperature: FloatArray | None = None
+    axial_load: FloatArray | None = None
+
+
+def _dimension(unit: str) -> str:
+    ureg = registry()
+    try:
+        q = ureg.Quantity(1.0, unit)
+    except (pint.errors.PintError, ValueError, TypeError, AttributeError, AssertionError):
+        return "unknown"
+    if q.is_compatible_with("K"):
+        return "temperature"
+    for kind, ref in (("angular", "rad/s"), ("linear", "m/s"), ("torque", "N*m"), ("force", "N")):
+        if q.is_compatible_with(ref):
+            if (
+                kind == "angular"
+                and q.is_compatible_with("1/s")
+                and "rad" not in unit
+                and ("rpm" not in unit and "rev" not in unit and "deg" not in unit)
+            ):
+                return "frequency"
+            return kind
+    return "other"
+
+
+def parse_measured(text: str, screw: BallScrew, source: str = "measured data") -> MeasuredCurve:
+    """Parse a measured curve from CSV text (see the module docstring)."""
+    text = text.lstrip("\ufeff")
+    first = next((line for line in text.splitlines() if line.strip()), "")
+    # The separator is the header's: a semicolon or a tab (spreadsheets in
+    # decimal-comma locales), else a comma.
+    delimiter = ";" if ";" in first else ("\t" if "\t" in first else ",")
+    rows = list(csv.reader(io.StringIO(text), delimiter=delimiter))
+    rows = [r for r in rows if any(cell.strip() for cell in r)]
+    if delimiter == "," and rows:
+        wide = next((i for i, r in enumerate(rows[1:], start=2) if len(r) > len(rows[0])), None)
+        if wide is not None:
+            raise BallScrewInputError(
+                f"{source}: line {wide}",
+                ",".join(rows[wide - 1]),
+                f"{len(rows[0])} comma-separated cells like the header; decimal commas need "
+                "';' (or tab) as the separator",
+            )
+    if not rows:
+        raise BallScrewInputError(source, "(empty)", "a CSV file with a header and data rows")
+    header = rows[0]
+    columns: dict[str, tuple[int, str]] = {}
+    for i, cell in enumerate(header):
+        match = _HEADER.match(cell)
+        if not match:
+            continue
+        kind = _dimension(match.group("unit").strip())
+        if kind in ("angular", "linear") and "speed" not in columns:
+            columns["speed"] = (i, match.group("unit").strip())
+            columns["speed_kind"] = (i, kind)
+        elif kind in ("torque", "temperature", "force") and kind not in columns:
+            columns[kind] = (i, match.group("unit").strip())
+    if "speed" not in columns:
+        raise BallScrewInputError(
+            f"{source}: header",
+            ",".join(header),
+            "a speed column with its unit, e.g. 'speed [rpm]', 'speed [rad/s]' or "
+            "'table speed [mm/s]'",
+        )
+    if "torque" not in columns:
+        raise BallScrewInputError(
+            f"{source}: header",
+            ",".join(header),
+            "a torque column with its unit, e.g. 'torque [N*m]'",
+        )
+    if len(rows) < 2:
+        raise BallScrewInputError(source, "(no data rows)", "at least one data row")
+    ureg = registry()
+    keys = [k for k in ("speed", "torque", "temperature", "force") if k in columns]
+    values: dict[str, list[float]] = {k: [] for k in keys}
+    for line, row in enumerate(rows[1:], start=2):
+        for key in keys:
+            col = columns[key][0]
+            cell = row[col].strip() if col < len(row) else ""
+            if delimiter != "," and _DECIMAL_COMMA.match(cell):
+                cell = cell.replace(",", ".")
+            try:
+                number = float(cell)
+            except ValueError:
+                raise BallScrewInputError(
+                    f"{source}: line {line}, column '{header[col].strip()}'", cell, "a number"
+                ) from None
+            if not math.isfinite(number):
+                raise BallScrewInputError(
+                    f"{source}: line {line}, column '{header[col].strip()}'",
+                    cell,
+                    "a finite number",
+                )
+            values[key].append(number)
+    speed_unit = columns["speed"][1]
+    speed = np.asarray(values["speed"])
+    if columns["speed_kind"][1] == "linear":
+        table = ureg.Quantity(speed, speed_unit).to("m/s").magnitude
+        speed = np.asarray(table) * (2.0 * math.pi / screw.lead)
+    else:
+        speed = np.asarray(ureg.Quantity(speed, speed_unit).to("rad/s").magnitude)
+    torque = np.abs(
+        ureg.Quantity(np.asarray(values["torque"]), columns["torque"][1]).to("N*m").magnitude
+    )
+    if np.any(np.abs(speed) > 1e5):
+        raise BallScrewInputError(
+            f"{source}: column '{header[columns['speed'][0]].strip()}'",
+            float(np.max(np.abs(speed))),
+            "speeds below 1e5 rad/s (about 1e6 rpm)",
+        )
+    temperature = None
+    if "temperature" in columns:
+        kelvin = ureg.Quantity(np.asarray(values["temperature"]), columns["temperature"][1])
+        temperature = np.asarray(kelvin.to("degC").magnitude, dtype=float)
+        if np.any(temperature <= -273.15):
+            raise BallScrewInputError(
+                f"{source}: column '{header[columns['temperature'][0]].strip()}'",
+                float(np.min(temperature)),
+                "temperatures above absolute zero (check the unit)",
+            )
+    load = None
+    if "force" in columns:
+        newton = ureg.Quantity(np.asarray(values["force"]), columns["force"][1])
+        load = np.asarray(newton.to("N").magnitude, dtype=float)
+    return MeasuredCurve(
+        speed=np.asarray(speed, dtype=float),
+        torque=np.asarray(torque, dtype=float),
+        source=source,
+        temperature=temperature,
+        axial_load=load,
+    )
+
+
+def read_measured(path: str | Path, screw: BallScrew) -> MeasuredCurve:
+    """Read a measured curve from a CSV file (see the module docstring)."""
+    file = Path(path)
+    try:
+        data = file.read_bytes()
+    except OSError as exc:
+        raise BallScrewInputError(
+            "measured", str(file), f"a readable file ({exc.strerror})"
+        ) from None
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError:
+        raise BallScrewInputError("measured", str(file), "a UTF-8 text file") from None
+    return parse_measured(text, screw, source=str(file))
+
+
+def error_metrics(model: npt.ArrayLike, measured: npt.ArrayLike) -> dict[str, float]:
+    """RMSE [N·m], mean and maximum relative error [-] of a model against measurements.
+
+    Relative errors are :math:`(T_{model} - T_{meas})/T_{meas}`; the mean is of
+    their magnitudes. Points with zero measured torque are left out of the
+    relative errors.
+
+    Examples
+    --------
+    >>> m = error_metrics([1.0, 2.2], [1.0, 2.0])
+    >>> round(m["rmse"], 4), round(m["mean_relative"], 3), round(m["max_relative"], 3)
+    (0.1414, 0.05, 0.1)
+    """
+    mod = np.asarray(model, dtype=float)
+    meas = np.asarray(measured, dtype=float)
+    rmse = float(np.sqrt(np.mean((mod - meas) ** 2)))
+    nonzero = meas != 0.0
+    rel = np.abs(mod[nonzero] - meas[nonzero]) / np.abs(meas[nonzero])
+    return {
+        "rmse": rmse,
+        "mean_relative": float(np.mean(rel)) if rel.size else math.nan,
+        "max_relative": float(np.max(rel)) if rel.size else math.nan,
+    }

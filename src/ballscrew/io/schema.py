@@ -1,0 +1,450 @@
+"""The schema of case files: every key, its unit, default and meaning, in one place.
+
+The pydantic models below validate a case file's structure (unknown keys are
+errors, so a misspelt key is named); their field descriptions, units and
+examples also generate the commented template (:func:`template`, ``ballscrew
+case --template``) and the reference table of the documentation
+(:func:`reference_rows`, ``ballscrew case --reference``), so that the three
+cannot drift apart. :mod:`ballscrew.io.case` turns a validated file into SI
+values and objects.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from typing import Any, Literal
+
+from pydantic import BaseModel, ConfigDict, Field
+from pydantic.fields import FieldInfo
+
+__all__ = [
+    "Assumed",
+    "CaseFile",
+    "LubricantSection",
+    "ReferenceRow",
+    "reference_markdown",
+    "reference_rows",
+    "template",
+]
+
+
+class Assumed(BaseModel):
+    """A value marked as assumed: ``{ value = "20 mm", assumed = "why" }``."""
+
+    model_config = ConfigDict(extra="forbid")
+    value: str | float | int
+    assumed: str = Field(min_length=1)
+
+
+Value = str | float | int | Assumed
+
+
+def _f(
+    default: Any, unit: str, text: str, example: Any = None, *, fill: bool = False, **kwargs: Any
+) -> Any:
+    """A field with its unit (``"-"`` for a number) and an example value.
+
+    ``fill``: an optional key that the template writes filled in (one of a
+    pair of which exactly one is needed).
+    """
+    extra = {"unit": unit, "example": example if example is not None else default, "fill": fill}
+    if default is ...:
+        return Field(description=text, json_schema_extra=extra, **kwargs)
+    return Field(default=default, description=text, json_schema_extra=extra, **kwargs)
+
+
+class ScrewSection(BaseModel):
+    """``[screw]``: geometry, preload, materials and roughness."""
+
+    model_config = ConfigDict(extra="forbid")
+    designation: str | Assumed | None = _f(
+        None,
+        "-",
+        "a catalogue nut ('HIWIN R40-10K5-FDC', see ballscrew screws) or a size in mm "
+        "('40x10 double 2.5x2 6.35'); keys given below override what it gives",
+        "HIWIN R40-10K5-FDC",
+    )
+    pitch_diameter: Value | None = _f(
+        None,
+        "length",
+        "diameter through the ball centres d_m (required unless the designation gives it)",
+        "40 mm",
+        fill=True,
+    )
+    lead: Value | None = _f(
+        None,
+        "length",
+        "axial advance per screw revolution (required unless the designation gives it)",
+        "10 mm",
+        fill=True,
+    )
+    ball_diameter: Value | None = _f(
+        None,
+        "length",
+        "ball diameter D_w (required unless the designation gives it)",
+        "6.35 mm",
+        fill=True,
+    )
+    contact_angle: Value = _f("45 deg", "angle", "nominal contact angle")
+    conformity_screw: Value = _f(0.55, "-", "screw groove radius / ball diameter (> 0.5)")
+    conformity_nut: Value = _f(0.55, "-", "nut groove radius / ball diameter (> 0.5)")
+    loaded_turns: Value = _f(2.5, "-", "loaded turns per circuit")
+    circuits: Value = _f(2, "-", "ball circuits per nut (per half-nut for a double nut)")
+    # Left out (None): BallScrew's own defaults apply (one place for them).
+    nut: Literal["double", "single", "single-4point"] | Assumed | None = _f(
+        None,
+        "-",
+        'nut arrangement: "double" (two half-nuts or a lead offset), "single" (no '
+        'preload) or "single-4point" (oversize balls); default "double"',
+        "double",
+    )
+    ball_separation: Literal["none", "spacer-balls", "cage"] | Assumed | None = _f(
+        None,
+        "-",
+        'how the balls are kept apart: "none" (a full ball train, most nuts), "spacer-balls" '
+        '(a spacer between every two load balls) or "cage" (a ball retainer); default "none"',
+        "none",
+    )
+    preload: Value | None = _f(
+        None, "force", "axial preload force (give this or preload_drag_torque)", "2 kN", fill=True
+    )
+    preload_drag_torque: Value | None = _f(
+        None,
+        "torque",
+        "catalogue drag torque of the preload, turned into a preload by the catalogue rule "
+        "(give this or preload)",
+        "0.4 N*m",
+    )
+    preload_share: Value | None = _f(
+        None,
+        "-",
+        "preload as a share of the dynamic load rating, e.g. '5 %' (give this, preload or "
+        "preload_drag_torque)",
+        "5 %",
+    )
+    dynamic_load_rating: Value | None = _f(
+        None,
+        "force",
+        "dynamic load rating C_a, for preload_share (default: the designation's catalogue value)",
+        "63.4 kN",
+    )
+    youngs_modulus_ball: Value | None = _f(None, "pressure", "default 210 GPa", "210 GPa")
+    youngs_modulus_races: Value | None = _f(None, "pressure", "default 210 GPa", "210 GPa")
+    poisson_ratio_ball: Value | None = _f(None, "-", "default 0.3", 0.3)
+    poisson_ratio_races: Value | None = _f(None, "-", "default 0.3", 0.3)
+    roughness_ball: Value | None = _f(None, "length", "RMS roughness, default 0.08 um", "0.08 um")
+    roughness_screw: Value | None = _f(None, "length", "RMS roughness, default 0.3 um", "0.3 um")
+    roughness_nut: Value | None = _f(None, "length", "RMS roughness, default 0.3 um", "0.3 um")
+
+
+class LubricantSection(BaseModel):
+    """``[lubricant]``: a bundled oil by name, or your own (nu40, nu100 and density15)."""
+
+    model_config = ConfigDict(extra="forbid")
+    name: str | Assumed = _f(
+        ...,
+        "-",
+        "a bundled lubricant (ballscrew lubricants) or a name for your own",
+        "PAO ISO VG 68",
+    )
+    nu40: Value | None = _f(
+        None,
+        "kinematic viscosity",
+        "your oil: viscosity at 40 °C (with nu100, density15)",
+        "68 cSt",
+    )
+    nu100: Value | None = _f(
+        None, "kinematic viscosity", "your oil: viscosity at 100 °C", "10.3 cSt"
+    )
+    density15: Value | None = _f(None, "density", "your oil: density at 15 °C", "850 kg/m**3")
+    pressure_viscosity: Value | None = _f(
+        None,
+        "1/pressure",
+        "pressure-viscosity coefficient alpha (estimated if left out)",
+        "18 1/GPa",
+    )
+    limiting_shear_stress: Value | None = _f(
+        None, "pressure", "limiting shear stress tau_0 of the traction model", "2 MPa"
+    )
+    limiting_shear_coefficient: Value | None = _f(
+        None, "-", "pressure coefficient gamma_L of the limiting shear stress", 0.047
+    )
+
+
+class OperationSection(BaseModel):
+    """``[operation]``: the operating points (each a value, a list or a range)."""
+
+    model_config = ConfigDict(extra="forbid")
+    speed: Value = _f(
+        "10..3000:60 rpm", "angular speed", "screw speed(s): 'a..b:n unit' or 'a, b unit'"
+    )
+    temperature: Value = _f("20 degC", "temperature", "lubricant temperature(s)")
+    axial_load: Value = _f("0 N", "force", "external axial load(s) on the nut")
+
+
+class AxisSection(BaseModel):
+    """``[axis]``: what the screw moves and drives, for ``ballscrew energy``."""
+
+    model_config = ConfigDict(extra="forbid")
+    moving_mass: Value = _f("0 kg", "mass", "table, workpiece and nut", "200 kg")
+    screw_inertia: Value | None = _f(
+        None,
+        "moment of inertia",
+        "of the screw (none: a solid steel shaft of the pitch diameter over screw_length)",
+        "1.5e-3 kg*m**2",
+    )
+    coupling_inertia: Value = _f("0 kg*m**2", "moment of inertia", "of the coupling")
+    motor_inertia: Value = _f("0 kg*m**2", "moment of inertia", "of the motor's rotor")
+    gear_ratio: Value = _f(1.0, "-", "motor turns per screw turn")
+    incline: Value = _f("0 deg", "angle", "of the axis above the horizontal (90 deg: vertical)")
+    bearing_bore: Value | None = _f(
+        None,
+        "length",
+        "bore of the fixed-end support bearings (none: their friction left out)",
+        "30 mm",
+    )
+    bearing_type: str = _f(
+        "angular-contact ball, single row",
+        "-",
+        "support bearing type (see ballscrew.bearings): SKF's coefficient, or Palmgren's "
+        "factors with bearing_outer_diameter, e.g. 'screw-support (ZKLN, ZKLF)'",
+    )
+    bearing_outer_diameter: Value | None = _f(
+        None,
+        "length",
+        "outside diameter of the support bearings: their friction is then Palmgren's, "
+        "rising with speed and viscosity (none: SKF's simplified estimate)",
+        "62 mm",
+    )
+    bearing_static_rating: Value | None = _f(
+        None,
+        "force",
+        "static load rating C0 of the support bearings, from their catalogue (needed with "
+        "bearing_outer_diameter)",
+        "40 kN",
+    )
+    bearing_lubrication: str = _f(
+        "grease",
+        "-",
+        "support bearings' lubrication for Palmgren's f0: 'grease' (or oil mist) or 'oil' "
+        "(bath or recirculating)",
+    )
+    support: str = _f(
+        "fixed-supported",
+        "-",
+        "end mounting for the critical speed: fixed-free, supported-supported, "
+        "fixed-supported or fixed-fixed",
+    )
+    bearing_span: Value | None = _f(
+        None,
+        "length",
+        "distance between the screw's supports (none: critical speed not checked)",
+        "1 m",
+    )
+    root_diameter: Value | None = _f(
+        None,
+        "length",
+        "root diameter of the thread, from the catalogue (none: estimated from the groove)",
+        "34.1 mm",
+    )
+    dn_limit: Value = _f(
+        "70000 mm*rpm",
+        "length * angular speed",
+        "the nut's d·n limit from its catalogue (pitch diameter times speed)",
+    )
+    screw_length: Value | None = _f(
+        None,
+        "length",
+        "screw length in the air, for the temperature (none: estimated from the stroke, "
+        "the nut and the diameter)",
+        "1 m",
+    )
+    nut_mass: Value = _f("0 kg", "mass", "of the nut, for the heat capacity", "3 kg")
+    machine_resistance: Value | None = _f(
+        None,
+        "thermal resistance",
+        "from the nut into the machine (none: convection only)",
+        "2 K/W",
+    )
+    ambient: Value = _f("20 degC", "temperature", "of the air and the machine")
+
+
+class StudySection(BaseModel):
+    """``[study]``: settings of ``ballscrew study`` (the study's own values by default)."""
+
+    model_config = ConfigDict(extra="forbid")
+    drag_torques: list[Value] = _f(
+        [],
+        "torque",
+        "catalogue drag torques whose preloads the study compares (default: the case's preload "
+        "x 0.5, 1 and 1.5)",
+        ["0.2 N*m", "0.4 N*m", "0.6 N*m"],
+    )
+    measured_range: list[Value] = _f(
+        [],
+        "torque",
+        "a measured torque band [low, high] of YOUR screw, drawn on the figures (none if empty)",
+        ["0.2 N*m", "0.6 N*m"],
+    )
+    temperature: Value | None = _f(
+        None,
+        "temperature",
+        "temperature of the study's figures (default: the operation's first)",
+        "20 degC",
+    )
+    lubricant_temperatures: dict[str, list[Value]] = _f(
+        {},
+        "temperature",
+        "lubricant name -> temperatures of the lubricant comparison (default: the case's "
+        "lubricant at 20, 30, 40 and 50 degC)",
+        {"PAO ISO VG 68": ["20 degC", "40 degC"], "SAE 20": ["24 degC", "40 degC"]},
+    )
+    model_parameters: dict[str, dict[str, Any]] = _f(
+        {},
+        "-",
+        "model name -> its parameters (see ballscrew models)",
+        {"complete": {"lubrication": "oil"}},
+    )
+
+
+class CaseFile(BaseModel):
+    """A case file: one ball screw, its lubricant, operating range and study settings."""
+
+    model_config = ConfigDict(extra="forbid")
+    title: str = _f("ball screw case", "-", "title of tables and reports")
+    description: str = _f("", "-", "free text")
+    screw: ScrewSection
+    lubricant: LubricantSection
+    operation: OperationSection = Field(default_factory=OperationSection)
+    axis: AxisSection = Field(default_factory=AxisSection)
+    study: StudySection = Field(default_factory=StudySection)
+
+
+SECTIONS: dict[str, type[BaseModel]] = {
+    "screw": ScrewSection,
+    "lubricant": LubricantSection,
+    "operation": OperationSection,
+    "axis": AxisSection,
+    "study": StudySection,
+}
+
+
+@dataclass(frozen=True)
+class ReferenceRow:
+    """One key of a case file: where it lives, its unit, default and meaning."""
+
+    section: str
+    key: str
+    unit: str
+    required: bool
+    default: str
+    example: str
+    description: str
+    fill: bool = False
+
+
+def _toml(value: Any) -> str:
+    """A value written as TOML (strings quoted, lists and tables inline)."""
+    if isinstance(value, str):
+        return json.dumps(value, ensure_ascii=False)
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, int | float):
+        return repr(value)
+    if isinstance(value, list):
+        return "[" + ", ".join(_toml(v) for v in value) + "]"
+    if isinstance(value, dict):
+        return "{ " + ", ".join(f"{_key(k)} = {_toml(v)}" for k, v in value.items()) + " }"
+    raise TypeError(f"no TOML form for {value!r}")
+
+
+def _key(name: str) -> str:
+    return name if name.replace("_", "").replace("-", "").isalnum() else json.dumps(name)
+
+
+def _default(info: FieldInfo) -> Any:
+    if info.is_required():
+        return None
+    if info.default_factory is not None:
+        return info.default_factory()  # type: ignore[call-arg]
+    return info.default
+
+
+def reference_rows() -> list[ReferenceRow]:
+    """Every key of a case file, from the schema (top-level keys first)."""
+    rows: list[ReferenceRow] = []
+    sections: list[tuple[str, type[BaseModel]]] = [("", CaseFile)]
+    sections += list(SECTIONS.items())
+    for section, model in sections:
+        for key, info in model.model_fields.items():
+            if section == "" and key in SECTIONS:
+                continue
+            extra = info.json_schema_extra if isinstance(info.json_schema_extra, dict) else {}
+            default = _default(info)
+            rows.append(
+                ReferenceRow(
+                    section=section,
+                    key=key,
+                    unit=str(extra.get("unit", "-")),
+                    required=info.is_required(),
+                    default="" if default in (None, "", [], {}) else _toml(default),
+                    example=_toml(extra.get("example")) if extra.get("example") is not None else "",
+                    description=info.description or "",
+                    fill=bool(extra.get("fill", False)),
+                )
+            )
+    return rows
+
+
+def reference_markdown() -> str:
+    """The reference table of case-file keys, as Markdown."""
+    lines = [
+        "| section | key | unit | required | default | example | meaning |",
+        "|---|---|---|---|---|---|---|",
+    ]
+    for r in reference_rows():
+        cells = [
+            f"[{r.section}]" if r.section else "(top)",
+            f"`{r.key}`",
+            r.unit,
+            "yes" if r.required else "",
+            f"`{r.default}`" if r.default else "",
+            f"`{r.example}`" if r.example else "",
+            r.description.replace("|", "\\|"),
+        ]
+        lines.append("| " + " | ".join(cells) + " |")
+    return "\n".join(lines) + "\n"
+
+
+def template() -> str:
+    """A commented case file with every key: required ones filled with examples.
+
+    Optional keys are commented out with their default (or an example); every
+    value carries its unit. Edit, then check it with ``ballscrew case --check``.
+    """
+    out = [
+        "# ballscrew case file (TOML). Every dimensional value needs its unit:",
+        '# "40 mm", "2 kN", "3000 rpm", "40 degC". Any value may be written as',
+        '# { value = "20 mm", assumed = "why" } to record that it was assumed.',
+        "# Check it with:  ballscrew case --check FILE",
+        "",
+    ]
+    for r in reference_rows():
+        if r.section == "":
+            out += _entry(r)
+    for section in SECTIONS:
+        out += ["", f"[{section}]"]
+        for r in reference_rows():
+            if r.section == section:
+                out += _entry(r)
+    return "\n".join(out) + "\n"
+
+
+def _entry(r: ReferenceRow) -> list[str]:
+    unit = "" if r.unit == "-" else f" [{r.unit}]"
+    comment = f"# {r.description}{unit}"
+    if r.required or r.fill:
+        return [comment, f"{_key(r.key)} = {r.example}"]
+    shown = r.default or r.example
+    return [comment, f"# {_key(r.key)} = {shown}"]

@@ -1,0 +1,211 @@
+"""The report of ``ballscrew energy --out DIR``: plots over time, energy bars, CSV, Markdown, HTML.
+
+:func:`write_energy_report` writes into one folder, every file atomically:
+
+* ``figures/motion.png``/``.svg``: table speed and motor torque against time;
+* ``figures/power.png``/``.svg``: friction power of the screw against time;
+* ``figures/energy.png``/``.svg``: energy per model by component (screw out,
+  screw back, support bearings) beside the catalogue rule's;
+* ``figures/temperature.png``/``.svg`` when a temperature history is given;
+* ``data/time_series.csv`` with units in the header, ``data/summary.csv``;
+* ``report.md`` and ``report.html``.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure as MplFigure
+
+from .. import __version__
+from ..axis.energy import CycleResult
+from ..axis.motion import Profile
+from ..errors import FloatArray
+from ..files import atomic_write
+from .document import Block, html_page, markdown
+from .plotting import write_figures
+
+__all__ = ["write_energy_report"]
+
+
+def _figure() -> tuple[MplFigure, object]:
+    fig = MplFigure(figsize=(7.0, 4.0))
+    FigureCanvasAgg(fig)
+    return fig, fig.add_subplot(1, 1, 1)
+
+
+def _motion_figure(profile: Profile, results: Mapping[str, CycleResult]) -> MplFigure:
+    fig = MplFigure(figsize=(7.0, 5.5))
+    FigureCanvasAgg(fig)
+    top, bottom = fig.subplots(2, 1, sharex=True)
+    top.plot(profile.time, profile.speed * 60.0, color="black")
+    top.set_ylabel("table speed [m/min]")
+    for name, r in results.items():
+        bottom.plot(r.time, r.motor_torque, label=name)
+    bottom.set_xlabel("time [s]")
+    bottom.set_ylabel("motor torque [N·m]")
+    bottom.legend()
+    fig.tight_layout()
+    return fig
+
+
+def _power_figure(results: Mapping[str, CycleResult]) -> MplFigure:
+    fig, ax = _figure()
+    for name, r in results.items():
+        ax.plot(r.time, r.friction_power, label=name)  # type: ignore[attr-defined]
+    ax.set_xlabel("time [s]")  # type: ignore[attr-defined]
+    ax.set_ylabel("screw friction power [W]")  # type: ignore[attr-defined]
+    ax.legend()  # type: ignore[attr-defined]
+    fig.tight_layout()
+    return fig
+
+
+def _energy_figure(results: Mapping[str, CycleResult]) -> MplFigure:
+    fig, ax = _figure()
+    names = list(results)
+    x = np.arange(len(names))
+    out = np.array([results[n].friction_energy_out for n in names])
+    back = np.array([results[n].friction_energy_back for n in names])
+    bearings = np.array([results[n].bearing_energy for n in names])
+    ax.bar(x, out, label="screw, moving out")  # type: ignore[attr-defined]
+    ax.bar(x, back, bottom=out, label="screw, moving back")  # type: ignore[attr-defined]
+    ax.bar(x, bearings, bottom=out + back, label="support bearings")  # type: ignore[attr-defined]
+    rule = [results[n].constant_efficiency_energy for n in names]
+    ax.scatter(x, rule, color="black", marker="_", s=400, zorder=3,  # type: ignore[attr-defined]
+               label="catalogue rule (screw)")  # fmt: skip
+    ax.set_xticks(x, names)  # type: ignore[attr-defined]
+    ax.set_ylabel("friction energy [J]")  # type: ignore[attr-defined]
+    ax.legend()  # type: ignore[attr-defined]
+    fig.tight_layout()
+    return fig
+
+
+def _temperature_figure(history: Mapping[str, tuple[FloatArray, FloatArray]]) -> MplFigure:
+    fig, ax = _figure()
+    for name, (t, temp) in history.items():
+        ax.plot(t / 60.0, temp, label=name)  # type: ignore[attr-defined]
+    ax.set_xlabel("time [min]")  # type: ignore[attr-defined]
+    ax.set_ylabel("screw and nut temperature [°C]")  # type: ignore[attr-defined]
+    ax.legend()  # type: ignore[attr-defined]
+    fig.tight_layout()
+    return fig
+
+
+def _csv(header: list[str], rows: Sequence[Sequence[object]]) -> bytes:
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow(header)
+    writer.writerows(rows)
+    return buffer.getvalue().encode("utf-8")
+
+
+def write_energy_report(
+    out: str | Path,
+    title: str,
+    profile: Profile,
+    results: Mapping[str, CycleResult],
+    summary: Mapping[str, Mapping[str, object]],
+    history: Mapping[str, tuple[FloatArray, FloatArray]] | None = None,
+) -> list[Path]:
+    """Write the report files into ``out``; returns the paths written."""
+    folder = Path(out)
+    (folder / "figures").mkdir(parents=True, exist_ok=True)
+    (folder / "data").mkdir(parents=True, exist_ok=True)
+    figures = {
+        "motion": (_motion_figure(profile, results), "Table speed and motor torque"),
+        "power": (_power_figure(results), "Friction power of the screw"),
+        "energy": (_energy_figure(results), "Friction energy by component"),
+    }
+    if history:
+        figures["temperature"] = (_temperature_figure(history), "Temperature over time")
+    written, images = write_figures(folder, {k: fig for k, (fig, _) in figures.items()})
+    header = ["time [s]", "position [mm]", "table speed [m/s]", "axial force [N]"]
+    columns: list[FloatArray] = [profile.time, profile.position * 1e3, profile.speed]
+    first = next(iter(results.values()))
+    columns.append(first.axial_force)
+    for name, r in results.items():
+        header += [f"friction torque {name} [N*m]", f"motor torque {name} [N*m]",
+                   f"friction power {name} [W]"]  # fmt: skip
+        columns += [r.friction_torque, r.motor_torque, r.friction_power]
+    rows = [[f"{float(v):.7g}" for v in values] for values in zip(*columns, strict=True)]
+    data = {"time_series": _csv(header, rows)}
+    # One CSV per figure, as the report links them.
+    names = list(results)
+    data["motion"] = _csv(
+        ["time [s]", "table speed [m/min]", *(f"motor torque {n} [N*m]" for n in names)],
+        [[f"{float(t):.7g}", f"{float(v) * 60:.7g}",
+          *(f"{float(results[n].motor_torque[i]):.7g}" for n in names)]
+         for i, (t, v) in enumerate(zip(profile.time, profile.speed, strict=True))],
+    )  # fmt: skip
+    data["power"] = _csv(
+        ["time [s]", *(f"friction power {n} [W]" for n in names)],
+        [[f"{float(t):.7g}", *(f"{float(results[n].friction_power[i]):.7g}" for n in names)]
+         for i, t in enumerate(profile.time)],
+    )  # fmt: skip
+    data["energy"] = _csv(
+        ["model", "screw out [J]", "screw back [J]", "support bearings [J]",
+         "catalogue rule [J]"],
+        [[n, f"{r.friction_energy_out:.7g}", f"{r.friction_energy_back:.7g}",
+          f"{r.bearing_energy:.7g}", f"{r.constant_efficiency_energy:.7g}"]
+         for n, r in results.items()],
+    )  # fmt: skip
+    if history:
+        data["temperature"] = _csv(
+            ["model", "time [s]", "temperature [degC]"],
+            [[n, f"{float(t):.7g}", f"{float(v):.7g}"]
+             for n, (ts, vs) in history.items() for t, v in zip(ts, vs, strict=True)],
+        )  # fmt: skip
+    steady: dict[str, Any] = {
+        n: v["steady_at_speed"] for n, v in summary.items() if "steady_at_speed" in v
+    }
+    if steady:
+        data["steady"] = _csv(
+            ["model", "speed [rpm]", "steady temperature [degC]", "torque [N*m]", "power [W]"],
+            [[n, *(f"{float(x):.7g}" for x in row)]
+             for n, st in steady.items()
+             for row in zip(st["speed_rpm"], st["temperature_C"], st["torque_Nm"],
+                            st["power_W"], strict=True)],
+        )  # fmt: skip
+    # Scalars only in the summary table; the tables of each model have their own CSV.
+    keys = sorted({k for v in summary.values() for k in v
+                   if not isinstance(v[k], dict | list | tuple)})  # fmt: skip
+    data["summary"] = _csv(["model", *keys], [[n, *(v.get(k, "") for k in keys)]
+                                               for n, v in summary.items()])  # fmt: skip
+    for key, content in data.items():
+        path = folder / "data" / f"{key}.csv"
+        atomic_write(path, content)
+        written.append(path)
+    blocks = [
+        Block("h1", f"Feed axis energy: {title}"),
+        Block("p", f"Computed by ballscrew {__version__}; {profile.duration:.4g} s of motion."),
+        Block(
+            "table",
+            (
+                ["quantity", *summary],
+                [[k, *(_fmt(v.get(k)) for v in summary.values())] for k in keys],
+            ),
+        ),
+    ]
+    for key, (_, caption) in figures.items():
+        blocks.append(Block("img", (key, caption)))
+    warnings = sorted({w for v in summary.values() for w in v.get("warnings", [])})  # type: ignore[attr-defined]
+    blocks += [Block("h2", "Validity"), Block("ul", warnings or ["none"])]
+    for name, text in (
+        ("report.md", markdown(blocks)),
+        ("report.html", html_page(blocks, f"Feed axis energy: {title}", images)),
+    ):
+        atomic_write(folder / name, text.encode("utf-8"))
+        written.append(folder / name)
+    return written
+
+
+def _fmt(value: object) -> str:
+    if isinstance(value, float):
+        return f"{value:.4g}"
+    return "" if value is None else str(value)

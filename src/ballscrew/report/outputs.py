@@ -1,0 +1,205 @@
+"""Result tables as files a colleague can open, trust and trace: CSV and JSON.
+
+A table of friction results is built once (:func:`result_rows`, long format:
+one row per model and operating point, in user units) and written as
+
+* CSV, long (one row per model and point, with the model's components) or
+  wide (one row per point, one torque column per model), with a comma or,
+  for spreadsheets in decimal-comma locales, a semicolon and decimal commas;
+* JSON, with the rows and their provenance inline.
+
+Every CSV has a ``.meta.json`` file beside it with the provenance
+(:func:`provenance`): package version, the case as read, the resolved screw
+and lubricant in SI, each model's parameters and reference, and the validity
+warnings. Numbers are rounded at output only (inputs to 12 significant
+digits, so 100 rpm is not written 99.99999999999999; results to 7), and the
+bytes are reproducible (no time stamps).
+"""
+
+from __future__ import annotations
+
+import csv
+import dataclasses
+import io
+import json
+import math
+from collections.abc import Callable, Mapping, Sequence
+from typing import Any
+
+import numpy as np
+
+from .. import __version__
+from ..chain import FrictionResult
+from ..io.case import Case
+
+__all__ = [
+    "DIALECTS",
+    "csv_text",
+    "json_text",
+    "provenance",
+    "result_rows",
+    "round_significant",
+]
+
+INPUT_DIGITS = 12
+RESULT_DIGITS = 7
+
+DIALECTS = ("comma", "semicolon-decimal-comma")
+"""CSV flavours: ``comma`` (RFC 4180, decimal point) and ``semicolon-decimal-comma``
+(semicolon separator and decimal comma, what spreadsheets in e.g. German or
+French locales read as numbers)."""
+
+POINT_KEYS = ("speed [rpm]", "temperature [degC]", "axial load [N]")
+
+
+def round_significant(x: float, digits: int) -> float:
+    """``x`` rounded to ``digits`` significant digits (finite values; others unchanged).
+
+    >>> round_significant(99.99999999999999, 12), round_significant(0.123456789, 3)
+    (100.0, 0.123)
+    """
+    if not math.isfinite(x) or x == 0.0:
+        return float(x)
+    return float(f"{x:.{digits}g}")
+
+
+def result_rows(results: Mapping[str, FrictionResult]) -> list[dict[str, Any]]:
+    """Long-format rows (model, point, torque, power, efficiency, components), user units."""
+    rows: list[dict[str, Any]] = []
+    for name, r in results.items():
+        w, t, f = (
+            np.ravel(np.broadcast_to(x, r.total.shape))
+            for x in (r.speed, r.temperature, r.axial_load)
+        )
+        total, power, eff = (np.ravel(x) for x in (r.total, r.power_loss, r.efficiency))
+        parts = {k: np.ravel(np.broadcast_to(v, r.total.shape)) for k, v in r.components.items()}
+        for k in range(total.size):
+            row: dict[str, Any] = {
+                "model": name,
+                "speed [rpm]": round_significant(float(w[k]) * 30.0 / math.pi, INPUT_DIGITS),
+                "temperature [degC]": round_significant(float(t[k]), INPUT_DIGITS),
+                "axial load [N]": round_significant(float(f[k]), INPUT_DIGITS),
+                "torque [N*m]": round_significant(float(total[k]), RESULT_DIGITS),
+                "power loss [W]": round_significant(float(power[k]), RESULT_DIGITS),
+                "efficiency [-]": round_significant(float(eff[k]), RESULT_DIGITS),
+            }
+            for part, values in parts.items():
+                row[f"{part} [N*m]"] = round_significant(float(values[k]), RESULT_DIGITS)
+            rows.append(row)
+    return rows
+
+
+def _wide(rows: Sequence[Mapping[str, Any]]) -> list[dict[str, Any]]:
+    """One row per operating point, one torque column per model."""
+    models = list(dict.fromkeys(str(r["model"]) for r in rows))
+    points: dict[tuple[Any, ...], dict[str, Any]] = {}
+    for r in rows:
+        key = tuple(r[k] for k in POINT_KEYS)
+        point = points.setdefault(key, {k: r[k] for k in POINT_KEYS})
+        point[f"torque {r['model']} [N*m]"] = r["torque [N*m]"]
+    columns = [*POINT_KEYS, *(f"torque {m} [N*m]" for m in models)]
+    return [{c: p.get(c, "") for c in columns} for p in points.values()]
+
+
+def csv_text(
+    rows: Sequence[Mapping[str, Any]], *, layout: str = "long", dialect: str = "comma"
+) -> str:
+    """The rows as CSV text; ``layout`` "long" or "wide", ``dialect`` one of :data:`DIALECTS`."""
+    table = list(rows) if layout == "long" else _wide(rows)
+    columns = list(dict.fromkeys(k for r in table for k in r))
+    buffer = io.StringIO()
+    separator = ";" if dialect == "semicolon-decimal-comma" else ","
+    writer = csv.DictWriter(
+        buffer, fieldnames=columns, lineterminator="\n", delimiter=separator, restval=""
+    )
+    writer.writeheader()
+    for r in table:
+        writer.writerow({k: _cell(v, dialect) for k, v in r.items()})
+    return buffer.getvalue()
+
+
+def _cell(value: Any, dialect: str) -> Any:
+    if isinstance(value, float):
+        text = repr(value)
+        return text.replace(".", ",") if dialect == "semicolon-decimal-comma" else text
+    return value
+
+
+def provenance(
+    case: Case,
+    results: Mapping[str, FrictionResult],
+    command: Sequence[str] = (),
+) -> dict[str, Any]:
+    """What a result was computed from: package, case, screw, lubricant, models, warnings."""
+    from ..friction import get_model
+
+    screw = dataclasses.asdict(case.screw)
+    oil = case.lubricant
+    return {
+        "ballscrew": __version__,
+        "command": list(command),
+        "units": "SI (m, N, Pa, Pa*s, m**2/s, kg/m**3, 1/Pa, rad, rad/s); temperatures in degC",
+        "case": {
+            "title": case.title,
+            "assumptions": [dataclasses.asdict(a) for a in case.assumptions],
+            "text": case.text,
+        },
+        "screw": screw,
+        "lubricant": {
+            "name": oil.name,
+            "nu40": oil.nu40,
+            "nu100": oil.nu100,
+            "density15": oil.density15,
+            "pressure_viscosity": oil.pressure_viscosity,
+            "source": oil.source,
+        },
+        "models": {
+            name: {
+                "title": get_model(name).title,
+                "reference": get_model(name).reference,
+                "parameters": {k: _jsonable(v) for k, v in r.parameters.items()},
+                "warnings": [dataclasses.asdict(issue) for issue in r.warnings],
+            }
+            for name, r in results.items()
+        },
+    }
+
+
+def _jsonable(value: Any) -> Any:
+    if isinstance(value, str | int | float | bool) or value is None:
+        return value
+    if isinstance(value, np.generic):
+        return value.item()
+    return repr(value)
+
+
+def _map_nonfinite(obj: Any, replace: Callable[[float], Any]) -> Any:
+    """A copy of nested mappings and lists with each non-finite float replaced."""
+    if isinstance(obj, float) and not math.isfinite(obj):
+        return replace(obj)
+    if isinstance(obj, Mapping):
+        return {str(k): _map_nonfinite(v, replace) for k, v in obj.items()}
+    if isinstance(obj, list | tuple):
+        return [_map_nonfinite(v, replace) for v in obj]
+    return obj
+
+
+def _clean(obj: Any) -> Any:
+    """JSON-safe copy: non-finite numbers become the strings "inf", "-inf", "nan"."""
+    return _map_nonfinite(obj, repr)
+
+
+def finite_or_null(obj: Any) -> Any:
+    """JSON-safe copy: non-finite numbers become None (JSON null); strict JSON has no NaN."""
+    return _map_nonfinite(obj, lambda _: None)
+
+
+def json_document(data: Any) -> str:
+    """``data`` as strict JSON text, one item per line: non-finite numbers are null."""
+    return json.dumps(finite_or_null(data), indent=1, ensure_ascii=False, allow_nan=False) + "\n"
+
+
+def json_text(rows: Sequence[Mapping[str, Any]], meta: Mapping[str, Any]) -> str:
+    """The rows and their provenance as one JSON document (strict JSON: no NaN)."""
+    document = _clean({"provenance": meta, "rows": list(rows)})
+    return json.dumps(document, indent=1, ensure_ascii=False, allow_nan=False) + "\n"
