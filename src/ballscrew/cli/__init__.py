@@ -1,4 +1,4 @@
-"""The ``ballscrew`` command: the group and ``main`` (:mod:`.main`), one module per command.
+"""The ``ballscrew`` command: the group and ``main`` (:mod:`.group`), one module per command.
 
 Each command module parses its options, calls the wing that computes, and formats; nothing
 is computed here.
@@ -6,6 +6,6 @@ is computed here.
 
 from __future__ import annotations
 
-from .main import cli, main
+from .group import cli, main
 
 __all__ = ["cli", "main"]
