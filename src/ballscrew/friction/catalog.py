@@ -14,7 +14,8 @@ friction part of the driving torque :math:`F_a l/(2\pi\eta)`:
     \eta = \frac{\tan\beta}{\tan(\beta + \rho)},\quad \rho = \arctan\mu
 
 (forward efficiency, rotation to translation). This is the engineers'
-reference against which the physical models are held.
+reference against which the physical models are held. The formulas themselves
+are in :mod:`ballscrew.catalog_formulas` (named here too).
 
 References
 ----------
@@ -30,15 +31,14 @@ import math
 from typing import Any
 
 import numpy as np
-import numpy.typing as npt
 
-from ..errors import (
-    BallScrewInputError,
-    FloatArray,
-    check_in_range,
-    check_nonnegative,
-    check_positive,
+from ..catalog_formulas import (
+    catalog_efficiency,
+    preload_from_drag_torque,
+    preload_torque,
+    preload_torque_coefficient,
 )
+from ..errors import FloatArray
 from ..geometry import BallScrew
 from ..lubricant import Lubricant
 from ..validity import ValidityIssue, ValidityRange, outside
@@ -51,120 +51,6 @@ __all__ = [
     "preload_torque",
     "preload_torque_coefficient",
 ]
-
-
-def preload_torque_coefficient(lead_angle: npt.ArrayLike, coefficient: float = 0.05) -> FloatArray:
-    r"""Catalogue preload torque coefficient :math:`K = c/\sqrt{\tan\beta}` [-].
-
-    Parameters
-    ----------
-    lead_angle : array_like
-        :math:`\beta` [rad], in (0, π/2).
-    coefficient : float
-        :math:`c`; 0.05 in the catalogues.
-
-    Examples
-    --------
-    >>> round(float(preload_torque_coefficient(math.atan(0.01 / (math.pi * 0.04)))), 4)
-    0.1772
-    """
-    beta = check_in_range("lead_angle", lead_angle, 0.0, math.pi / 2, unit="rad")
-    c = check_positive("coefficient", coefficient)
-    result: FloatArray = c / np.sqrt(np.tan(beta))
-    return result
-
-
-def preload_torque(
-    preload: npt.ArrayLike, lead: float, lead_angle: float, coefficient: float = 0.05
-) -> FloatArray:
-    r"""Catalogue dynamic preload (drag) torque :math:`T_p = K F_{pr} l/2\pi` [N·m].
-
-    Parameters
-    ----------
-    preload : array_like
-        :math:`F_{pr}` [N].
-    lead : float
-        :math:`l` [m].
-    lead_angle : float
-        :math:`\beta` [rad].
-    coefficient : float
-        :math:`c` of :func:`preload_torque_coefficient`.
-
-    Examples
-    --------
-    40 mm x 10 mm screw with 2 kN preload:
-
-    >>> round(float(preload_torque(2000.0, 0.01, math.atan(0.01 / (math.pi * 0.04)))), 4)
-    0.5642
-    """
-    fpr = check_nonnegative("preload", preload, "N")
-    lead_m = check_positive("lead", lead, "m")
-    k = preload_torque_coefficient(lead_angle, coefficient)
-    result: FloatArray = k * fpr * lead_m / (2.0 * math.pi)
-    return result
-
-
-def preload_from_drag_torque(
-    drag_torque: npt.ArrayLike, screw: BallScrew, coefficient: float = 0.05
-) -> FloatArray:
-    r"""Preload that the catalogue formula turns into the given drag torque.
-
-    The inverse of :func:`preload_torque`, :math:`F_{pr} = 2\pi T_p/(K l)`,
-    which the study uses to turn measured drag torques (0.2 and 0.6 N·m) into
-    preloads.
-
-    Parameters
-    ----------
-    drag_torque : array_like
-        :math:`T_p` [N·m], >= 0.
-    screw : BallScrew
-        Provides the lead and lead angle (its own preload is ignored).
-    coefficient : float
-        :math:`c` of :func:`preload_torque_coefficient`.
-
-    Returns
-    -------
-    numpy.ndarray
-        :math:`F_{pr}` [N].
-
-    Examples
-    --------
-    >>> from ballscrew import reference_screw
-    >>> round(float(preload_from_drag_torque(0.5642, reference_screw())), 0)
-    2000.0
-    """
-    tp = check_nonnegative("drag_torque", drag_torque, "N·m")
-    k = preload_torque_coefficient(screw.lead_angle, coefficient)
-    result: FloatArray = 2.0 * math.pi * tp / (k * screw.lead)
-    return result
-
-
-def catalog_efficiency(
-    lead_angle: npt.ArrayLike, friction_coefficient: npt.ArrayLike
-) -> FloatArray:
-    r"""Forward efficiency of a screw, :math:`\eta = \tan\beta/\tan(\beta + \arctan\mu)` [-].
-
-    Parameters
-    ----------
-    lead_angle : array_like
-        :math:`\beta` [rad].
-    friction_coefficient : array_like
-        :math:`\mu` [-]; catalogues use about 0.003 to 0.01 for ball screws.
-
-    Examples
-    --------
-    >>> round(float(catalog_efficiency(math.radians(4.55), 0.003)), 4)
-    0.9634
-    """
-    beta = check_in_range("lead_angle", lead_angle, 0.0, math.pi / 2, unit="rad")
-    mu = check_nonnegative("friction_coefficient", friction_coefficient)
-    rho = np.arctan(mu)
-    if np.any(beta + rho >= math.pi / 2):
-        raise BallScrewInputError(
-            "friction_coefficient", float(np.max(mu)), "a value with lead angle + atan(mu) < 90°"
-        )
-    result: FloatArray = np.tan(beta) / np.tan(beta + rho)
-    return result
 
 
 CATALOG_TEMPERATURE_RANGE = ValidityRange(

@@ -336,7 +336,7 @@ def _screw(
     if s.preload is not None:
         preload = si("screw", "preload", s.preload, "N")
     elif s.preload_drag_torque is not None:
-        from ..friction.catalog import preload_from_drag_torque
+        from ..catalog_formulas import preload_from_drag_torque
 
         torque = si("screw", "preload_drag_torque", s.preload_drag_torque, "N*m")
         preload = float(preload_from_drag_torque(torque, screw))

@@ -18,7 +18,8 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure as MplFigure
 
 from ..io.measured import MeasuredCurve
-from ..study.run import RPM, Figure
+from ..study.run import RPM
+from ..study.series import Figure
 from ..sweep.sensitivity import SobolIndices
 
 __all__ = ["figure_bytes", "render", "sensitivity_figure"]

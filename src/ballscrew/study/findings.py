@@ -10,14 +10,11 @@ study found.
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
 
 import numpy as np
 
 from ..io.case import Case
-
-if TYPE_CHECKING:
-    from .run import Figure, Series
+from .series import Figure, Series
 
 __all__ = ["study_findings"]
 

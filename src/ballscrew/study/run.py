@@ -21,10 +21,10 @@ from typing import Any
 import numpy as np
 
 from .. import lubricants
+from ..catalog_formulas import preload_from_drag_torque
 from ..chain import FrictionResult
 from ..chain import friction_torque as chain_friction_torque
-from ..errors import BallScrewValidityWarning, FloatArray
-from ..friction.catalog import preload_from_drag_torque
+from ..errors import BallScrewValidityWarning
 from ..io.case import Case
 from ..io.measured import MeasuredCurve, error_metrics
 from ..lubricant import Lubricant
@@ -36,36 +36,11 @@ from .sensitivity import (
     sensitivity_finding,
     study_sensitivity,
 )
+from .series import Figure, Series
 
 __all__ = ["Figure", "Series", "StudyResult", "StudySensitivity", "UncertainInput", "run_study"]
 
 RPM = 2.0 * math.pi / 60.0
-
-
-@dataclass(frozen=True)
-class Series:
-    """One plotted curve: friction torque against screw speed."""
-
-    label: str
-    model: str
-    speed_rpm: FloatArray
-    torque: FloatArray
-    preload: float
-    temperature: float
-    lubricant: str
-    parameters: dict[str, Any] = field(default_factory=dict)
-
-
-@dataclass(frozen=True)
-class Figure:
-    """A figure of the study (or one it lacks) with its series."""
-
-    key: str
-    title: str
-    caption: str
-    series: tuple[Series, ...]
-    log_y: bool = False
-    stacked: bool = False
 
 
 @dataclass(frozen=True)
@@ -137,7 +112,7 @@ def _preloads(case: Case) -> dict[float, float]:
     The case's ``drag_torques`` if given; otherwise the case's own preload
     times 0.5, 1 and 1.5, keyed by their catalogue drag torque.
     """
-    from ..friction.catalog import preload_torque
+    from ..catalog_formulas import preload_torque
 
     screw = case.screw
     if case.drag_torques:
@@ -171,6 +146,180 @@ def run_study(
     return replace(result, validity=tuple(issue.note() for issue in worst.values()))
 
 
+@dataclass
+class _Context:
+    """What every figure of the study is computed from, and how a series is computed."""
+
+    case: Case
+    preloads: dict[float, float]
+    issues: list[ValidityIssue]
+    table: list[tuple[str, float, float]] = field(default_factory=list)
+
+    def __post_init__(self) -> None:
+        self.screw = self.case.screw
+        self.ref_preload = self.screw.preload
+        self.ref_label = f"{self.ref_preload:.0f} N"
+        self.speed = self.case.speed
+        self.speed_rpm = self.speed / RPM
+        self.temperature = self.case.study_temperature
+        self.oil = self.case.lubricant
+        self.load = float(self.case.axial_load.flat[0])
+        self.at = f"{self.oil.name} at {self.temperature:g} °C" + (
+            f", axial load {self.load:g} N" if self.load else ""
+        )
+        self.lubricant_temperatures = self.case.lubricant_temperatures or {
+            self.oil.name: (20.0, 30.0, 40.0, 50.0)
+        }
+
+    def friction_torque(self, *args: Any, **kwargs: Any) -> FrictionResult:
+        """The chain's, recording each call's validity issues."""
+        result = chain_friction_torque(*args, **kwargs)
+        self.issues.extend(result.warnings)
+        return result
+
+    def lubricant(self, name: str | None) -> Lubricant:
+        return self.oil if name is None or name == self.oil.name else lubricants.get(name)
+
+    def series(self, model: str, preload: float, label: str, lubricant_name: str | None = None,
+               temperature: float | None = None, **extra: Any) -> Series:  # fmt: skip
+        """One model's torque over the case's speeds."""
+        lub = self.lubricant(lubricant_name)
+        t = self.temperature if temperature is None else temperature
+        params = _params(self.case, model) | extra
+        result = self.friction_torque(
+            self.screw.replace(preload=preload), lub, speed=self.speed, temperature=t,
+            axial_load=self.load, model=model, **params,
+        )  # fmt: skip
+        return Series(label, model, self.speed_rpm, result.total, preload, t, lub.name, params)
+
+    def at_reference(self, model: str, label: str, **extra: Any) -> Series:
+        return self.series(model, self.ref_preload, label, **extra)
+
+    def at_preloads(self, model: str) -> tuple[Series, ...]:
+        """The model at each preload derived from the study's drag torques."""
+        return tuple(
+            self.series(model, f, f"{f:.0f} N ({t:g} N·m drag)") for t, f in self.preloads.items()
+        )
+
+
+ALL_MODELS = ("catalog", "complete", "olaru", "viscoelastic", "harris-simplified", "harris-full")
+"""The models of Fig. 9, in its legend's order."""
+
+
+def _lubricant_series(c: _Context) -> tuple[Series, ...]:
+    """The simplified model for each lubricant and temperature; fills the viscosity table."""
+    out = []
+    for name, temps in c.lubricant_temperatures.items():
+        for t in temps:
+            out.append(c.series("harris-simplified", c.ref_preload, f"{name}, {t:g} °C",
+                                lubricant_name=name, temperature=t))  # fmt: skip
+            c.table.append((name, t, float(c.lubricant(name).kinematic_viscosity(t))))
+    return tuple(out)
+
+
+def _budget_series(c: _Context) -> tuple[Series, ...]:
+    """The complete model's components, one series each (those that are not zero)."""
+    params = _params(c.case, "complete")
+    budget = c.friction_torque(c.screw, c.oil, speed=c.speed, temperature=c.temperature,
+                               axial_load=c.load, model="complete", **params)  # fmt: skip
+    return tuple(
+        Series(name.replace("_", "-"), "complete", c.speed_rpm, value, c.ref_preload,
+               c.temperature, c.oil.name, params)
+        for name, value in budget.components.items()
+        if float(np.max(value)) > 0.0
+    )  # fmt: skip
+
+
+@dataclass(frozen=True)
+class FigureSpec:
+    """One figure of the study: its step, key, title, caption and how its series are made."""
+
+    step: str
+    key: str
+    title: str
+    caption: Callable[[_Context], str]
+    series: Callable[[_Context], tuple[Series, ...]]
+    log_y: bool = False
+    stacked: bool = False
+
+    def build(self, c: _Context) -> Figure:
+        return Figure(self.key, self.title, self.caption(c), self.series(c), self.log_y,
+                      self.stacked)  # fmt: skip
+
+
+# fmt: off
+FIGURES: tuple[FigureSpec, ...] = (
+    FigureSpec(
+        "Fig. 3: Olaru's model", "fig3_olaru", "Olaru's model (Fig. 3)",
+        lambda c: f"Olaru et al.'s model at the reference preload ({c.ref_label}), {c.at}.",
+        lambda c: (c.at_reference("olaru", f"Olaru, {c.ref_label}"),),
+    ),
+    FigureSpec(
+        "Figs. 4 and 5: viscoelastic model", "fig4_viscoelastic", "Viscoelastic model (Fig. 4)",
+        lambda c: "Viscoelastic model with the study's k, m, gamma at the reference preload.",
+        lambda c: (c.at_reference("viscoelastic", f"viscoelastic, {c.ref_label}"),),
+    ),
+    FigureSpec(
+        "Figs. 4 and 5: viscoelastic model", "fig5_viscoelastic_preload",
+        "Viscoelastic model: preload (Fig. 5)",
+        lambda c: "Viscoelastic model at the preloads of the measured drag torques.",
+        lambda c: c.at_preloads("viscoelastic"),
+    ),
+    FigureSpec(
+        "Figs. 6 and 7: simplified model", "fig6_simplified", "Simplified model (Fig. 6)",
+        lambda c: f"The study's simplified model at the reference preload, {c.at}.",
+        lambda c: (c.at_reference("harris-simplified", f"simplified, {c.ref_label}"),),
+    ),
+    FigureSpec(
+        "Figs. 6 and 7: simplified model", "fig7_simplified_preload",
+        "Simplified model: preload (Fig. 7)",
+        lambda c: "Simplified model at the preloads of the measured drag torques.",
+        lambda c: c.at_preloads("harris-simplified"),
+    ),
+    FigureSpec(
+        "Fig. 8: lubricants and temperatures", "fig8_lubricants",
+        "Simplified model: lubricants and temperatures (Fig. 8, Table 1)",
+        lambda c: f"Simplified model at the reference preload ({c.ref_label}) for each "
+        "lubricant and temperature of the table below.",
+        _lubricant_series,
+    ),
+    FigureSpec(
+        "All models and the catalogue formula", "fig9_all_models",
+        "All models and the catalogue drag torque",
+        lambda c: f"Every model at the reference preload ({c.ref_label}), {c.at}; logarithmic "
+        "torque axis.",
+        lambda c: tuple(c.at_reference(m, m) for m in ALL_MODELS),
+        log_y=True,
+    ),
+    FigureSpec(
+        "Simplified model against the complete model", "fig10_simplified_vs_complete",
+        "The study's simplified model against the complete model",
+        lambda c: "The simplified model charges asperity friction and saturated lubricant "
+        "shear at the rolling speed; the complete model adds up EHL rolling resistance, spin "
+        "and Heathcote sliding, the slip the helix forces across the groove, hysteresis, "
+        "ball-ball sliding and the recirculation push.",
+        lambda c: (
+            c.at_reference("harris-simplified", "simplified (study's reading)"),
+            c.at_reference("harris-simplified", "simplified, sliding speed in the shear rate",
+                           shear_velocity="sliding"),
+            c.at_reference("complete", "complete model"),
+        ),
+        log_y=True,
+    ),
+    FigureSpec(
+        "Loss budget of the complete model", "fig11_complete_budget",
+        "Loss budget of the complete model",
+        lambda c: f"The complete model's torque split by mechanism, stacked, at the reference "
+        f"preload ({c.ref_label}), {c.at}.",
+        _budget_series,
+        stacked=True,
+    ),
+)
+# fmt: on
+"""The study's figures, in order (Fig. 12, the controller's fit, is made from Fig. 10's
+complete-model curve by :func:`_controller_figure`)."""
+
+
 def _run(
     case: Case,
     measured: MeasuredCurve | None = None,
@@ -188,234 +337,39 @@ def _run(
     measured : MeasuredCurve, optional
         A measured torque-speed curve to compare with.
     progress : callable, optional
-        Called with a short description as each figure starts.
+        Called with a short description as each step starts.
 
     Returns
     -------
     StudyResult
     """
     step = progress or (lambda _text: None)
-    issues = found if found is not None else []
-
-    def friction_torque(*args: Any, **kwargs: Any) -> FrictionResult:
-        """The chain's, recording each call's validity issues."""
-        result = chain_friction_torque(*args, **kwargs)
-        issues.extend(result.warnings)
-        return result
-
-    screw0 = case.screw
-    preloads = _preloads(case)
-    ref_preload = screw0.preload
-    speed = case.speed
-    speed_rpm = speed / RPM
-    temp = case.study_temperature
-    oil = case.lubricant
-    load = float(case.axial_load.flat[0])
-    at = f"{oil.name} at {temp:g} °C" + (f", axial load {load:g} N" if load else "")
-    lubricant_temperatures = case.lubricant_temperatures or {oil.name: (20.0, 30.0, 40.0, 50.0)}
-
-    def lubricant_named(name: str) -> Lubricant:
-        return oil if name == oil.name else lubricants.get(name)
-
-    def series(
-        model: str,
-        preload: float,
-        label: str,
-        lubricant_name: str | None = None,
-        temperature: float | None = None,
-        **extra: Any,
-    ) -> Series:
-        lub = oil if lubricant_name is None else lubricant_named(lubricant_name)
-        t = temp if temperature is None else temperature
-        params = _params(case, model)
-        params.update(extra)
-        result = friction_torque(
-            screw0.replace(preload=preload),
-            lub,
-            speed=speed,
-            temperature=t,
-            axial_load=load,
-            model=model,
-            **params,
-        )
-        return Series(label, model, speed_rpm, result.total, preload, t, lub.name, params)
-
-    def preload_series(model: str) -> tuple[Series, ...]:
-        """The model at each preload derived from the study's drag torques."""
-        return tuple(series(model, f, f"{f:.0f} N ({t:g} N·m drag)") for t, f in preloads.items())
-
+    c = _Context(case, _preloads(case), found if found is not None else [])
     figures: list[Figure] = []
-    ref_label = f"{ref_preload:.0f} N"
-
-    step("Fig. 3: Olaru's model")
-    figures.append(
-        Figure(
-            "fig3_olaru",
-            "Olaru's model (Fig. 3)",
-            f"Olaru et al.'s model at the reference preload ({ref_label}), {at}.",
-            (series("olaru", ref_preload, f"Olaru, {ref_label}"),),
-        )
-    )
-    step("Figs. 4 and 5: viscoelastic model")
-    figures.append(
-        Figure(
-            "fig4_viscoelastic",
-            "Viscoelastic model (Fig. 4)",
-            "Viscoelastic model with the study's k, m, gamma at the reference preload.",
-            (series("viscoelastic", ref_preload, f"viscoelastic, {ref_label}"),),
-        )
-    )
-    figures.append(
-        Figure(
-            "fig5_viscoelastic_preload",
-            "Viscoelastic model: preload (Fig. 5)",
-            "Viscoelastic model at the preloads of the measured drag torques.",
-            preload_series("viscoelastic"),
-        )
-    )
-    step("Figs. 6 and 7: simplified model")
-    figures.append(
-        Figure(
-            "fig6_simplified",
-            "Simplified model (Fig. 6)",
-            f"The study's simplified model at the reference preload, {at}.",
-            (series("harris-simplified", ref_preload, f"simplified, {ref_label}"),),
-        )
-    )
-    figures.append(
-        Figure(
-            "fig7_simplified_preload",
-            "Simplified model: preload (Fig. 7)",
-            "Simplified model at the preloads of the measured drag torques.",
-            preload_series("harris-simplified"),
-        )
-    )
-    step("Fig. 8: lubricants and temperatures")
-    lub_series = []
-    table: list[tuple[str, float, float]] = []
-    for name, temps in lubricant_temperatures.items():
-        lub = lubricant_named(name)
-        for t in temps:
-            lub_series.append(
-                series(
-                    "harris-simplified",
-                    ref_preload,
-                    f"{name}, {t:g} °C",
-                    lubricant_name=name,
-                    temperature=t,
-                )
-            )
-            table.append((name, t, float(lub.kinematic_viscosity(t))))
-    figures.append(
-        Figure(
-            "fig8_lubricants",
-            "Simplified model: lubricants and temperatures (Fig. 8, Table 1)",
-            f"Simplified model at the reference preload ({ref_label}) for each lubricant and "
-            "temperature of the table below.",
-            tuple(lub_series),
-        )
-    )
-    step("All models and the catalogue formula")
-    all_series = tuple(
-        series(m, ref_preload, m)
-        for m in (
-            "catalog",
-            "complete",
-            "olaru",
-            "viscoelastic",
-            "harris-simplified",
-            "harris-full",
-        )
-    )
-    figures.append(
-        Figure(
-            "fig9_all_models",
-            "All models and the catalogue drag torque",
-            f"Every model at the reference preload ({ref_label}), {at}; logarithmic torque axis.",
-            all_series,
-            log_y=True,
-        )
-    )
-    step("Simplified model against the complete model")
-    compare_series = (
-        series("harris-simplified", ref_preload, "simplified (study's reading)"),
-        series(
-            "harris-simplified",
-            ref_preload,
-            "simplified, sliding speed in the shear rate",
-            shear_velocity="sliding",
-        ),
-        series("complete", ref_preload, "complete model"),
-    )
-    figures.append(
-        Figure(
-            "fig10_simplified_vs_complete",
-            "The study's simplified model against the complete model",
-            "The simplified model charges asperity friction and saturated lubricant shear at the "
-            "rolling speed; the complete model adds up EHL rolling resistance, spin and "
-            "Heathcote sliding, the slip the helix forces across the groove, hysteresis, "
-            "ball-ball sliding and the recirculation push.",
-            compare_series,
-            log_y=True,
-        )
-    )
-    step("Loss budget of the complete model")
-    params = _params(case, "complete")
-    budget = friction_torque(
-        screw0, oil, speed=speed, temperature=temp, axial_load=load, model="complete", **params
-    )
-    budget_series = tuple(
-        Series(name.replace("_", "-"), "complete", speed_rpm, value, ref_preload, temp, oil.name,
-               params)
-        for name, value in budget.components.items()
-        if float(np.max(value)) > 0.0
-    )  # fmt: skip
-    figures.append(
-        Figure(
-            "fig11_complete_budget",
-            "Loss budget of the complete model",
-            f"The complete model's torque split by mechanism, stacked, at the reference preload "
-            f"({ref_label}), {at}.",
-            budget_series,
-            stacked=True,
-        )
-    )
-
+    for k, spec in enumerate(FIGURES):
+        if k == 0 or spec.step != FIGURES[k - 1].step:
+            step(spec.step)
+        figures.append(spec.build(c))
     step("Fig. 12: friction for a controller")
-    figures.append(_controller_figure(series("complete", ref_preload, "complete model"), at))
-
+    compared = next(f for f in figures if f.key == "fig10_simplified_vs_complete")
+    figures.append(_controller_figure(compared.series[-1], c.at))
     step("Sensitivity: Sobol indices of the complete model")
-    sensitivity = study_sensitivity(case, preloads, temp, load)
-
+    sensitivity = study_sensitivity(case, c.preloads, c.temperature, c.load)
     metrics: dict[str, dict[str, float]] = {}
     if measured is not None:
         step("Measured curve")
-        for s in all_series:
-            params = _params(case, s.model)
-            model_torque = friction_torque(
-                screw0,
-                oil,
-                speed=measured.speed,
-                temperature=temp,
-                axial_load=load,
-                model=s.model,
-                **params,
-            ).total
-            metrics[s.model] = error_metrics(model_torque, measured.torque)
-
+        for model in ALL_MODELS:
+            model_torque = c.friction_torque(
+                c.screw, c.oil, speed=measured.speed, temperature=c.temperature,
+                axial_load=c.load, model=model, **_params(case, model),
+            ).total  # fmt: skip
+            metrics[model] = error_metrics(model_torque, measured.torque)
     reproduction = reproduces_study(case)
-    findings = study_findings(case, figures, preloads, lubricant_temperatures, reproduction)
+    findings = study_findings(case, figures, c.preloads, c.lubricant_temperatures, reproduction)
     if sensitivity is not None:
         findings.append(sensitivity_finding(sensitivity, reproduction))
     return StudyResult(
-        case=case,
-        preloads=preloads,
-        figures=tuple(figures),
-        viscosity_table=tuple(table),
-        findings=tuple(findings),
-        measured=measured,
-        metrics=metrics,
-        reproduction=reproduction,
-        axial_load=load,
-        sensitivity=sensitivity,
-    )
+        case=case, preloads=c.preloads, figures=tuple(figures), viscosity_table=tuple(c.table),
+        findings=tuple(findings), measured=measured, metrics=metrics,
+        reproduction=reproduction, axial_load=c.load, sensitivity=sensitivity,
+    )  # fmt: skip
