@@ -161,6 +161,7 @@ def _tables(aspect: float) -> tuple[FloatArray, FloatArray, FloatArray]:
     t = np.linspace(0.0, 1.0, TABLE_NODES)
     sigma = t[:-1] / (1.0 - t[:-1])
     j, g = rl.spin_slip_integrals(0.0, aspect, sigma)
+    g[0] = 0.0  # no slip, no net transverse force (odd in X; the rule leaves 1e-17)
     # t = 1 is sigma -> infinity: J/sigma -> 2 pi / 3 (the disk's pressure weight), G -> 1.
     j_scaled = np.append(j / (1.0 + sigma), 2.0 * math.pi / 3.0)
     return t, j_scaled, np.append(g, 1.0)
@@ -250,8 +251,9 @@ def transverse_slip_loss(contacts: Sequence[SlipContact], slip: float) -> SlipSh
     everything = np.arange(n)
     lo, hi = np.zeros(n), np.ones(n)
     f_lo, f_hi = residual(lo, everything), residual(hi, everything)
-    # A side that cannot carry a transverse force (unloaded) takes all the slip, free.
-    x = np.where(f_lo >= 0.0, 0.0, np.where(f_hi <= 0.0, 1.0, 0.5))
+    # A side that cannot carry a transverse force (unloaded) takes all the slip, free: the
+    # nut's when f(0) >= 0, else the screw's; the others are solved below.
+    x = np.where(f_lo >= 0.0, 0.0, 1.0)
     loaded = (f_lo < 0.0) & (f_hi > 0.0)
     if loaded.any():
         idx = np.flatnonzero(loaded)
