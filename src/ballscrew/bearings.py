@@ -24,13 +24,13 @@ not included in either estimate.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
 import numpy.typing as npt
 
 from .errors import BallScrewInputError, FloatArray, check_finite, check_positive
+from .kinematics import rad_s_to_rpm
 
 __all__ = [
     "PALMGREN_BEARINGS",
@@ -169,7 +169,7 @@ def palmgren_drag_torque(
     nu = check_positive("kinematic_viscosity", kinematic_viscosity, "m^2/s")
     dm = float(check_positive("mean_diameter", mean_diameter, "m"))
     f = float(check_positive("f0", f0))
-    nu_n = nu * 1e6 * w * (30.0 / math.pi)  # mm²/s times 1/min
+    nu_n = nu * 1e6 * rad_s_to_rpm(w)  # mm²/s times 1/min
     dm_mm3 = (dm * 1e3) ** 3
     n_mm = np.where(nu_n >= 2000.0, f * 1e-7 * np.cbrt(nu_n) ** 2 * dm_mm3, 160e-7 * f * dm_mm3)
     result: FloatArray = n_mm * 1e-3

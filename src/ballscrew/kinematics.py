@@ -76,6 +76,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numpy as np
 import numpy.typing as npt
 
 from .errors import FloatArray, check_finite
@@ -86,6 +87,7 @@ __all__ = [
     "differential_sliding",
     "four_point_spin",
     "kinematics",
+    "rad_s_to_rpm",
     "rpm_to_rad_s",
 ]
 
@@ -97,6 +99,18 @@ def rpm_to_rad_s(speed_rpm: npt.ArrayLike) -> FloatArray:
     6.283185
     """
     result: FloatArray = check_finite("speed_rpm", speed_rpm) * (2.0 * math.pi / 60.0)
+    return result
+
+
+def rad_s_to_rpm(speed: npt.ArrayLike) -> FloatArray:
+    """Convert radians per second to revolutions per minute.
+
+    The inverse of :func:`rpm_to_rad_s`.
+
+    >>> round(float(rad_s_to_rpm(2 * math.pi)), 9)
+    60.0
+    """
+    result: FloatArray = np.asarray(speed, dtype=float) * 30.0 / math.pi
     return result
 
 

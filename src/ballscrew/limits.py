@@ -40,6 +40,7 @@ import numpy.typing as npt
 
 from .errors import BallScrewInputError, FloatArray, check_positive
 from .geometry import BallScrew
+from .kinematics import rad_s_to_rpm
 
 __all__ = [
     "DEFAULT_DN_LIMIT",
@@ -147,7 +148,7 @@ def speed_limit_issues(
     not checked), ``root`` [m] the root diameter (None: :func:`root_diameter`),
     ``dn_limit`` in mm·rpm.
     """
-    rpm = abs(max_speed) * 30.0 / math.pi
+    rpm = float(rad_s_to_rpm(abs(max_speed)))
     out: list[str] = []
     dn = screw.pitch_diameter * 1e3 * rpm
     if dn > dn_limit:
@@ -158,7 +159,7 @@ def speed_limit_issues(
         )
     if span is not None:
         d_r = root_diameter(screw) if root is None else root
-        allowed = SAFETY_FACTOR * float(critical_speed(d_r, span, support)) * 30.0 / math.pi
+        allowed = SAFETY_FACTOR * float(rad_s_to_rpm(critical_speed(d_r, span, support)))
         if rpm > allowed:
             out.append(
                 f"{rpm:,.0f} rpm exceeds 80 % of the shaft's critical speed ({allowed:,.0f} rpm "

@@ -29,7 +29,7 @@ import numpy as np
 from .contact import ellipticity_exact
 from .errors import BallScrewValidityWarning, FloatArray
 from .geometry import BallScrew
-from .kinematics import kinematics
+from .kinematics import kinematics, rad_s_to_rpm
 from .loads import LIFT_OFF_RATIO, ball_loads
 from .lubricant import Lubricant
 
@@ -205,7 +205,7 @@ def check(
     issues: list[ValidityIssue] = []
     if speed.size == 0:
         return issues
-    n_max = float(np.max(np.abs(speed))) * 60.0 / (2.0 * math.pi)
+    n_max = float(rad_s_to_rpm(np.max(np.abs(speed))))
     issues += outside("speed factor d_m*n [mm*rpm]", [screw.pitch_diameter * 1e3 * n_max])
     if screw.nut != "single" and screw.preload > 0.0:
         issues += outside(

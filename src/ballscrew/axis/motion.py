@@ -29,7 +29,15 @@ import numpy as np
 
 from ..errors import BallScrewInputError, FloatArray, check_nonnegative, check_positive
 
-__all__ = ["Profile", "back_and_forth", "chain", "dwell", "move", "read_trajectory"]
+__all__ = [
+    "Profile",
+    "back_and_forth",
+    "chain",
+    "dwell",
+    "move",
+    "parse_move",
+    "read_trajectory",
+]
 
 
 @dataclass(frozen=True)
@@ -294,3 +302,39 @@ def read_trajectory(text: str, source: str = "trajectory") -> Profile:
     a = np.gradient(v, t, edge_order=2)
     f = column("force", "N") if "force" in columns else np.zeros_like(t)
     return Profile(t, x, v, a, f)
+
+
+MOVE_KEYS: dict[str, tuple[str, bool]] = {  # key: (SI unit, required)
+    "stroke": ("m", True),
+    "feed": ("m/s", True),
+    "acceleration": ("m/s**2", True),
+    "jerk": ("m/s**3", False),
+    "dwell": ("s", False),
+    "force": ("N", False),
+    "force_from": ("m", False),
+    "force_to": ("m", False),
+}
+
+
+def parse_move(text: str) -> dict[str, float]:
+    """``"stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2"`` to SI values by key.
+
+    Keys: stroke, feed, acceleration (required); jerk, dwell, force (the
+    process force on the way out), force_from, force_to (its window, distances
+    from the start).
+    """
+    from ..units import to_si  # the unit library only when text is read
+
+    out: dict[str, float] = {}
+    for part in (p.strip() for p in text.split(",") if p.strip()):
+        key, sep, value = part.partition("=")
+        key = key.strip()
+        if not sep or key not in MOVE_KEYS:
+            raise BallScrewInputError(
+                "--move", part, f"key=value with a unit; keys: {', '.join(MOVE_KEYS)}"
+            )
+        out[key] = to_si(f"--move {key}", value.strip().replace("^", "**"), MOVE_KEYS[key][0])
+    missing = [k for k, (_, needed) in MOVE_KEYS.items() if needed and k not in out]
+    if missing:
+        raise BallScrewInputError("--move", text, f"also {', '.join(missing)} (with units)")
+    return out

@@ -61,6 +61,7 @@ def case_command(
 
 def _print_resolved(path: str) -> None:
     from ..io.case import load_case
+    from ..kinematics import rad_s_to_rpm
 
     case = load_case(path)
     s, oil = case.screw, case.lubricant
@@ -91,7 +92,7 @@ def _print_resolved(path: str) -> None:
             f"{oil.nu40 * 1e6:.4g} / {oil.nu100 * 1e6:.4g} cSt",
         ),
         ("lubricant", "pressure-viscosity alpha", f"{oil.pressure_viscosity * 1e9:.4g} 1/GPa"),
-        ("operation", "speeds", _span(case.speed * 30.0 / math.pi, "rpm")),
+        ("operation", "speeds", _span(rad_s_to_rpm(case.speed), "rpm")),
         ("operation", "temperatures", _span(case.temperature, "degC")),
         ("operation", "axial loads", _span(case.axial_load, "N")),
     ]

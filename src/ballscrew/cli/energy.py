@@ -5,49 +5,12 @@ from __future__ import annotations
 import math
 import os
 from pathlib import Path
-from typing import Any
 
 import click
 from rich.console import Console
 from rich.table import Table
 
-__all__ = ["energy_command", "parse_move"]
-
-_MOVE_KEYS = {
-    "stroke": ("m", True),
-    "feed": ("m/s", True),
-    "acceleration": ("m/s**2", True),
-    "jerk": ("m/s**3", False),
-    "dwell": ("s", False),
-    "force": ("N", False),
-    "force_from": ("m", False),
-    "force_to": ("m", False),
-}
-
-
-def parse_move(text: str) -> dict[str, float]:
-    """``"stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2"`` to SI values by key.
-
-    Keys: stroke, feed, acceleration (required); jerk, dwell, force (the
-    process force on the way out), force_from, force_to (its window, distances
-    from the start).
-    """
-    from ..errors import BallScrewInputError
-    from ..units import to_si
-
-    out: dict[str, float] = {}
-    for part in (p.strip() for p in text.split(",") if p.strip()):
-        key, sep, value = part.partition("=")
-        key = key.strip()
-        if not sep or key not in _MOVE_KEYS:
-            raise BallScrewInputError(
-                "--move", part, f"key=value with a unit; keys: {', '.join(_MOVE_KEYS)}"
-            )
-        out[key] = to_si(f"--move {key}", value.strip().replace("^", "**"), _MOVE_KEYS[key][0])
-    missing = [k for k, (_, needed) in _MOVE_KEYS.items() if needed and k not in out]
-    if missing:
-        raise BallScrewInputError("--move", text, f"also {', '.join(missing)} (with units)")
-    return out
+__all__ = ["energy_command"]
 
 
 @click.command("energy")
@@ -98,16 +61,10 @@ def energy_command(
         --move "stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2, force=2 kN, \\
                 force_from=50 mm, force_to=250 mm"
     """  # noqa: D301 - click needs the literal \b to keep the example lines
-    import warnings
-
-    import numpy as np
-
     from .. import __version__
-    from ..axis.energy import axis_cycle, weight_back_driving
-    from ..axis.motion import back_and_forth, chain, read_trajectory
-    from ..axis.setup import axis_setup
-    from ..axis.thermal import steady_at_speeds, steady_temperature, temperature_history
+    from ..axis.run import energy_run, profile_from_file, profile_from_move
     from ..io.case import load_case
+    from ..kinematics import rad_s_to_rpm
     from ..report.outputs import json_document
     from ..units import parse_range, to_si
     from .common import write_json
@@ -117,92 +74,23 @@ def energy_command(
         raise click.UsageError("give exactly one of --move and --profile")
     m: dict[str, float] = {}
     if move_text is not None:
+        from ..axis.motion import parse_move
+
         m = parse_move(move_text)
-        window = None
-        if "force_from" in m or "force_to" in m:
-            window = (m.get("force_from", 0.0), m.get("force_to", abs(m["stroke"])))
-        profile = back_and_forth(
-            m["stroke"], m["feed"], m["acceleration"], jerk=m.get("jerk"),
-            dwell_time=m.get("dwell", 0.0), cycles=cycles, process_force=m.get("force", 0.0),
-            force_window=window,
-        )  # fmt: skip
+        profile = profile_from_move(m, cycles)
     else:
         assert profile_file is not None
-        one = read_trajectory(Path(profile_file).read_text(encoding="utf-8"), profile_file)
-        profile = chain(*([one] * cycles))
-    hours = to_si("--run-time", run_time, "s")
+        profile = profile_from_file(profile_file, cycles)
     speeds = None if steady_speeds is None else parse_range("--steady-speeds", steady_speeds,
                                                               "rad/s")  # fmt: skip
-    temp = (
-        to_si("--temperature", temperature, "degC")
-        if temperature
-        else float(case.temperature.flat[0])
-    )
-    setup = axis_setup(case.screw, case.axis, case.thermal, float(np.ptp(profile.position)))
-    axis, node, assumptions = setup.axis, setup.node, list(setup.notes)
-    thermal = {k: getattr(node, k) for k in ("screw_length", "ambient", "machine_resistance",
-                                              "nut_mass")}  # fmt: skip
-    results: dict[str, Any] = {}
-    cycles_by_model: dict[str, Any] = {}
-    histories: dict[str, Any] = {}
-    steady_tables: dict[str, Any] = {}
-    speed_warnings: list[str] = []
-    for name in model_names:
-        params = dict(case.model_parameters.get(name, {}))
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")  # the speed limits are kept in the result
-            r = axis_cycle(profile, case.screw, case.lubricant, axis, temperature=temp,
-                           model=name, **params)  # fmt: skip
-        speed_warnings = list(r.speed_warnings)
-        cycles_by_model[name] = r
-        results[name] = {
-            "friction_energy_J": r.friction_energy,
-            "friction_energy_per_cycle_J": r.friction_energy / cycles,
-            "friction_energy_out_J": r.friction_energy_out,
-            "friction_energy_back_J": r.friction_energy_back,
-            "friction_energy_by_mechanism_J": r.friction_energy_by_mechanism,
-            "bearing_energy_J": r.bearing_energy,
-            "constant_efficiency_energy_J": r.constant_efficiency_energy,
-            "load_work_J": r.load_work,
-            "peak_motor_torque_Nm": r.peak_motor_torque,
-            "rms_motor_torque_Nm": r.rms_motor_torque,
-            "forward_efficiency": r.forward_efficiency,
-            "reverse_efficiency": r.reverse_efficiency,
-            "self_locking": r.reverse_efficiency <= 0.0,
-            "weight_reverse_efficiency": weight_back_driving(
-                case.screw, case.lubricant, axis, temperature=temp, model=name, **params
-            ),
-            "duration_s": profile.duration,
-            "warnings": [str(issue) for issue in r.friction.warnings] + list(r.speed_warnings),
-        }
-        steady = steady_temperature(profile, case.screw, case.lubricant, axis, node,
-                                    model=name, **params)  # fmt: skip
-        times, history = temperature_history(
-            profile, case.screw, case.lubricant, axis, node, hours, model=name, points=50,
-            **params,
-        )  # fmt: skip
-        histories[name] = (times, history)
-        results[name]["steady_temperature_C"] = steady.temperature
-        results[name]["final_temperature_C"] = float(history[-1])
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            warm = axis_cycle(profile, case.screw, case.lubricant, axis,
-                              temperature=float(history[-1]), model=name, **params)  # fmt: skip
-        results[name]["friction_energy_at_final_temperature_J"] = warm.friction_energy
-        if speeds is not None:
-            at = steady_at_speeds(case.screw, case.lubricant, node, speeds,
-                                  axial_load=m.get("force", 0.0), model=name,
-                                  **params)  # fmt: skip
-            steady_tables[name] = at
-            results[name]["steady_at_speed"] = {
-                "speed_rpm": (at.speed * 30 / np.pi).tolist(),
-                "temperature_C": at.temperature.tolist(),
-                "torque_Nm": at.torque.tolist(),
-                "power_W": at.power.tolist(),
-            }
-    for line in speed_warnings:
+    temp = to_si("--temperature", temperature, "degC") if temperature else None
+    run = energy_run(case, profile, model_names, cycles=cycles, temperature=temp,
+                     run_time=to_si("--run-time", run_time, "s"), steady_speeds=speeds,
+                     move=m)  # fmt: skip
+    temp, axis, results = run.temperature, run.axis, run.results
+    for line in run.speed_warnings:
         click.echo(f"warning: {line}", err=True)
-    for line in assumptions:
+    for line in run.assumptions:
         click.echo(f"note: {line}", err=True)
     table = Table(title=f"{case.title}: {cycles} cycle(s), {profile.duration:.4g} s, {temp:g} °C")
     for column in ("model", "friction energy [J]", "per cycle [J]", "catalogue rule [J]",
@@ -240,32 +128,18 @@ def energy_command(
                 f"{name}: the weight along the axis ({math.degrees(axis.incline):g} deg), motor "
                 f"off: reverse efficiency {eta:.3f}; {verdict}"
             )
-    for name, at in steady_tables.items():
+    for name, at in run.steady.items():
         st = Table(title=f"{name}: continuous running at {m.get('force', 0.0):g} N")
         for column in ("speed [rpm]", "steady temperature [degC]", "torque [N*m]", "power [W]"):
             st.add_column(column, justify="right")
         for w, tc, tq, pw in zip(at.speed, at.temperature, at.torque, at.power, strict=True):
-            st.add_row(f"{w * 30 / np.pi:.4g}", f"{tc:.3g}", f"{tq:.4g}", f"{pw:.4g}")
+            st.add_row(f"{rad_s_to_rpm(w):.4g}", f"{tc:.3g}", f"{tq:.4g}", f"{pw:.4g}")
         out.print(st)
     if out_dir:
         from ..report.energy import write_energy_report
 
-        files = write_energy_report(out_dir, case.title, profile, cycles_by_model, results,
-                                    histories or None)  # fmt: skip
+        files = write_energy_report(out_dir, case.title, profile, run.cycles_by_model, results,
+                                    run.histories or None)  # fmt: skip
         click.echo(f"report: {Path(out_dir) / 'report.html'} ({len(files)} files)", err=True)
     if json_file:
-        first = results[model_names[0]]
-        payload = {
-            "ballscrew": __version__,
-            "case": case.title,
-            "model": model_names[0],
-            **{k: v for k, v in first.items() if k != "steady_at_speed"},
-            "move": m,
-            "cycles": cycles,
-            "temperature_C": temp,
-            "axis": {k: getattr(axis, k) for k in axis.__dataclass_fields__},
-            "thermal": thermal,
-            "assumptions": assumptions,
-            "models": results,
-        }
-        write_json(json_file, json_document(payload))
+        write_json(json_file, json_document(run.as_dict(__version__)))

@@ -2,10 +2,8 @@
 
 from __future__ import annotations
 
-import math
 import sys
 from pathlib import Path
-from typing import Any
 
 import click
 from rich.table import Table
@@ -175,64 +173,33 @@ def export_friction_command(
       ballscrew export-friction --case my_screw.toml --form stribeck --temperature "20, 40 degC"
       ballscrew export-friction --case my_screw.toml --form table --out friction_table.csv
     """  # noqa: D301 - click needs the literal \b to keep the example lines
-    import numpy as np
-
-    from ..axis.setup import axis_setup
     from ..files import atomic_write
-    from ..fit.controller import fit_form
-    from ..friction import get_model
+    from ..fit.controller import TABLE_SIDE, UNITS
+    from ..fit.export import export_friction, log_speeds
     from ..io.case import load_case
+    from ..kinematics import rad_s_to_rpm
+    from ..report.outputs import csv_text, json_document
     from ..units import parse_range, to_si
 
-    case = load_case(case_file)
-    model = get_model(model_name).name
-    temps = (parse_range("--temperature", temperature, "degC") if temperature
-             else [float(case.temperature.flat[0])])  # fmt: skip
-    speeds = _log_speeds(speed)
-    load = (to_si("--axial-load", axial_load, "N") if axial_load
-            else float(case.axial_load.flat[0]))  # fmt: skip
-    w = np.concatenate([-speeds[::-1], speeds])
-    params = dict(case.model_parameters.get(model, {}))
-    lead = case.screw.lead
-    j = (
-        to_si("--inertia", inertia, "kg*m**2")
-        if inertia
-        else _axis_inertia(axis_setup(case.screw, case.axis, case.thermal, 0.0).axis, lead)
-    )
-    s0 = to_si("--bristle-stiffness", bristle_stiffness, "N*m/rad") if bristle_stiffness else None
-    s1 = to_si("--bristle-damping", bristle_damping, "N*m*s/rad") if bristle_damping else None
-    rows: list[dict[str, Any]] = []
-    fits: list[dict[str, Any]] = []
-    console = stdout(json_file)
-    for temp in temps:
-        torque = _torque(case, w, temp, load, model, params)
-        signed = np.sign(w) * torque
-        if form == "table":
-            rows += [
-                {"speed [rad/s]": float(v), "speed [rpm]": float(v * 30 / math.pi),
-                 "temperature [degC]": temp, "torque [N*m]": float(tq),
-                 "table speed [m/s]": float(v * lead / (2 * math.pi)),
-                 "force [N]": float(tq * 2 * math.pi / lead)}
-                for v, tq in zip(w, signed, strict=True)
-            ]  # fmt: skip
-            continue
-        fitted = fit_form(form, w, signed, screw=case.screw, inertia=j or None,
-                          bristle_stiffness=s0, bristle_damping=s1)  # fmt: skip
-        fits.append({"temperature_C": temp, "axial_load_N": load, **fitted.as_dict(lead)})
-        from ..fit.controller import stribeck_torque
+    def si(flag: str, text: str | None, unit: str) -> float | None:
+        return to_si(flag, text, unit) if text else None
 
-        curve = _form_curve(form, fitted.parameters, w, stribeck_torque)
-        rows += [
-            {"speed [rpm]": float(v * 30 / math.pi), "temperature [degC]": temp,
-             f"torque {model} [N*m]": float(a), f"torque {form} [N*m]": float(b)}
-            for v, a, b in zip(w, signed, curve, strict=True)
-        ]  # fmt: skip
-        table = Table(title=f"{case.title}: {form} fit of {model} at {temp:g} degC, {load:g} N")
+    result = export_friction(
+        load_case(case_file), model_name, form,
+        temperatures=parse_range("--temperature", temperature, "degC") if temperature else None,
+        speeds=log_speeds(speed), axial_load=si("--axial-load", axial_load, "N"),
+        inertia=si("--inertia", inertia, "kg*m**2"),
+        bristle_stiffness=si("--bristle-stiffness", bristle_stiffness, "N*m/rad"),
+        bristle_damping=si("--bristle-damping", bristle_damping, "N*m*s/rad"),
+    )  # fmt: skip
+    console = stdout(json_file)
+    lo, hi = rad_s_to_rpm(result.speeds[0]), rad_s_to_rpm(result.speeds[-1])
+    for temp, fitted in result.fitted:
+        table = Table(title=f"{result.case.title}: {form} fit of {result.model} at {temp:g} degC, "
+                      f"{result.axial_load:g} N")  # fmt: skip
         for column in ("parameter", "screw side", "unit", "table side", "unit "):
             table.add_column(column, justify="right")
-        side = fitted.as_dict(lead)["table_side"]
-        from ..fit.controller import TABLE_SIDE, UNITS
-
+        side = fitted.as_dict(result.lead)["table_side"]
         for name, value in fitted.parameters.items():
             t_name = TABLE_SIDE.get(name, (None,))[0]
             t_val = side.get(t_name) if t_name else None
@@ -240,71 +207,14 @@ def export_friction_command(
             table.add_row(name, f"{value:.5g}", UNITS[name], *shown)
         console.print(table)
         console.print(f"fit error: RMS {fitted.rms_error:.3g} N*m, max {fitted.max_error:.3g} N*m "
-                      f"over {speeds[0] * 30 / math.pi:.3g} to {speeds[-1] * 30 / math.pi:.4g} rpm "
-                      "both ways")  # fmt: skip
+                      f"over {lo:.3g} to {hi:.4g} rpm both ways")  # fmt: skip
         for note in fitted.notes:
             click.echo(f"note: {note}", err=True)
     if form == "table":
-        click.echo(f"lookup table: {len(rows)} rows over {len(temps)} temperature(s)",
-                   err=json_file == "-")  # fmt: skip
+        click.echo(f"lookup table: {len(result.rows)} rows over {len(result.temperatures)} "
+                   "temperature(s)", err=json_file == "-")  # fmt: skip
     if out_file:
-        from ..report.outputs import csv_text
-
-        atomic_write(Path(out_file), csv_text(rows).encode("utf-8"))
+        atomic_write(Path(out_file), csv_text(result.rows).encode("utf-8"))
     if json_file:
-        payload: dict[str, Any] = {"ballscrew": _version(), "case": case.title, "model": model,
-                                   "form": form, "lead_m": lead}  # fmt: skip
-        if form == "table":
-            payload["table"] = rows
-        else:
-            payload["fits"] = fits
-            payload |= {k: v for k, v in fits[0].items() if k in ("parameters", "rms_error_Nm")}
-        from ..report.outputs import json_document
-
-        write_json(json_file, json_document(payload))
+        write_json(json_file, json_document(result.as_dict(_version())))
     sys.stdout.flush()
-
-
-def _torque(case: Any, w: Any, temp: float, load: float, model: str, params: Any) -> Any:
-    """The model's torque magnitude; validity warnings are the torque command's business."""
-    import warnings
-
-    from ..chain import friction_torque
-
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        return friction_torque(case.screw, case.lubricant, speed=w, temperature=temp,
-                               axial_load=load, model=model, **params).total  # fmt: skip
-
-
-def _log_speeds(text: str) -> Any:
-    """Positive screw speeds [rad/s]; a range 'a..b:n unit' is spaced logarithmically."""
-    import numpy as np
-
-    from ..errors import BallScrewInputError
-    from ..units import parse_range
-
-    values = np.asarray(parse_range("--speed", text, "rad/s"), dtype=float)
-    if values.size < 3 or np.any(values <= 0.0):
-        raise BallScrewInputError("--speed", text, "3 or more positive speeds, e.g. "
-                                  "'0.1..3000:60 rpm'")  # fmt: skip
-    if ".." in text:
-        values = np.geomspace(values.min(), values.max(), values.size)
-    return np.unique(values)
-
-
-def _axis_inertia(axis: Any, lead: float) -> float:
-    """Inertia at the screw [kg·m²]: screw, coupling, motor through the gear, and the table."""
-    return float(axis.screw_inertia + axis.coupling_inertia
-                 + axis.motor_inertia * axis.gear_ratio**2
-                 + axis.moving_mass * (lead / (2 * math.pi)) ** 2)  # fmt: skip
-
-
-def _form_curve(form: str, p: dict[str, float], w: Any, stribeck_torque: Any) -> Any:
-    import numpy as np
-
-    if form == "coulomb-viscous":
-        return p["coulomb_torque"] * np.sign(w) + p["viscous_coefficient"] * w
-    keys = ("coulomb_torque", "static_torque", "stribeck_speed", "stribeck_exponent",
-            "viscous_coefficient")  # fmt: skip
-    return stribeck_torque(w, *(p[k] for k in keys))

@@ -15,15 +15,15 @@ from .common import file_option, progress, stdout, write_json
 
 __all__ = ["sweep_command"]
 
-RPM = 30.0 / math.pi
-
 
 def _point(where: dict[str, Any], units: dict[str, str]) -> str:
     """A grid point in words, with units people read."""
     parts = []
     for key, value in where.items():
         if key == "speed":
-            parts.append(f"{value * RPM:.4g} rpm")
+            from ..kinematics import rad_s_to_rpm
+
+            parts.append(f"{rad_s_to_rpm(value):.4g} rpm")
         elif key == "temperature":
             parts.append(f"{value:g} °C")
         elif key == "axial_load":
@@ -58,6 +58,8 @@ def _summary_table(report: Any) -> Table:
 def _percentile_table(out: Path) -> Table | None:
     import xarray as xr
 
+    from ..kinematics import rad_s_to_rpm
+
     with xr.open_zarr(out) as ds:
         if "torque_percentile" not in ds:
             return None
@@ -72,7 +74,8 @@ def _percentile_table(out: Path) -> Table | None:
     for model in p["model"].values:
         for i in picks:
             values = p.sel(model=model).isel(speed=i, temperature=0, axial_load=0).values
-            table.add_row(str(model), f"{speeds[i] * RPM:.4g}", *(f"{v:.4g}" for v in values))
+            table.add_row(str(model), f"{rad_s_to_rpm(speeds[i]):.4g}",
+                          *(f"{v:.4g}" for v in values))  # fmt: skip
     return table
 
 

@@ -4,8 +4,6 @@ from __future__ import annotations
 
 import math
 import sys
-import warnings
-from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -14,14 +12,12 @@ import numpy as np
 from rich.console import Console
 from rich.table import Table
 
-from ..errors import BallScrewValidityWarning, FloatArray
 from .common import case_option, file_option, progress, stdout, write_json
 
 if TYPE_CHECKING:
-    from ..chain import FrictionResult
-    from ..io.case import Case
+    pass
 
-__all__ = ["operating_grid", "run_models", "torque", "warning_lines"]
+__all__ = ["torque"]
 
 
 @click.command()
@@ -99,23 +95,16 @@ def torque(
     from ..files import atomic_write
     from ..friction import get_model
     from ..io.case import load_case
-    from ..report.outputs import csv_text, json_text, provenance, result_rows
+    from ..report.outputs import json_text
+    from ..report.torque import torque_run
     from ..units import parse_range
 
     case = load_case(case_file)
     for name in model_names:
         get_model(name)
-    w = np.asarray(parse_range("--speed", speed, "rad/s")) if speed else case.speed
-    t = (
-        np.asarray(parse_range("--temperature", temperature, "degC"))
-        if temperature
-        else (case.temperature)
-    )
-    f = (
-        np.asarray(parse_range("--axial-load", axial_load, "N"))
-        if axial_load
-        else (case.axial_load)
-    )
+    w = np.asarray(parse_range("--speed", speed, "rad/s")) if speed else None
+    t = np.asarray(parse_range("--temperature", temperature, "degC")) if temperature else None
+    f = np.asarray(parse_range("--axial-load", axial_load, "N")) if axial_load else None
     console = Console(stderr=True)
     with progress(console) as bar:
         task = bar.add_task("models", total=len(model_names))
@@ -124,9 +113,10 @@ def torque(
             bar.update(task, description=name)
             bar.advance(task)
 
-        results = run_models(case, model_names, w, t, f, on_model=advance)
-    _report_warnings(results)
-    rows = result_rows(results)
+        run = torque_run(case, model_names, w, t, f, on_model=advance)
+    for line in run.warning_lines():
+        click.echo(line, err=True)
+    rows = run.rows
     pivot = table_kind == "pivot" or (table_kind == "auto" and len(rows) > 40)
     stdout(json_file).print(
         _pivot_table(case.title, rows) if pivot else _full_table(case.title, rows)
@@ -136,92 +126,13 @@ def torque(
             f"({len(rows)} rows: torque shown as speeds x models; --table full for all)",
             err=json_file == "-",
         )
-    meta = provenance(case, results, ["ballscrew", *sys.argv[1:]])
+    command = ["ballscrew", *sys.argv[1:]]
     if csv_file:
-        text = csv_text(rows, layout=csv_layout, dialect=csv_dialect)
-        atomic_write(Path(csv_file), text.encode("utf-8"))
-        atomic_write(Path(csv_file + ".meta.json"), json_text([], meta).encode("utf-8"))
+        atomic_write(Path(csv_file), run.csv(layout=csv_layout, dialect=csv_dialect).encode())
+        meta = json_text([], run.provenance(command))
+        atomic_write(Path(csv_file + ".meta.json"), meta.encode("utf-8"))
     if json_file:
-        write_json(json_file, json_text(rows, meta))
-
-
-def operating_grid(
-    speed: FloatArray, temperature: FloatArray, axial_load: FloatArray
-) -> tuple[FloatArray, FloatArray, FloatArray]:
-    """Every combination of the speeds, temperatures and loads, as three flat arrays.
-
-    The speed varies slowest, then the temperature, then the load: the row
-    order of the tables and files of ``ballscrew torque``.
-    """
-    w, t, f = (np.ravel(a) for a in np.meshgrid(speed, temperature, axial_load, indexing="ij"))
-    return w, t, f
-
-
-def run_models(
-    case: Case,
-    model_names: Sequence[str],
-    speed: FloatArray,
-    temperature: FloatArray,
-    axial_load: FloatArray,
-    on_model: Callable[[str], None] | None = None,
-) -> dict[str, FrictionResult]:
-    """Each model over the grid of the operating points, with the case's model parameters.
-
-    The validity issues are kept in each result (:func:`warning_lines` tells
-    them); ``on_model(name)`` is called after each model.
-    """
-    from ..chain import friction_torque
-
-    grid_w, grid_t, grid_f = operating_grid(speed, temperature, axial_load)
-    results: dict[str, FrictionResult] = {}
-    for name in model_names:
-        params = dict(case.model_parameters.get(name, {}))
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", BallScrewValidityWarning)
-            results[name] = friction_torque(
-                case.screw,
-                case.lubricant,
-                speed=grid_w,
-                temperature=grid_t,
-                axial_load=grid_f,
-                model=name,
-                **params,
-            )
-        if on_model is not None:
-            on_model(name)
-    return results
-
-
-def warning_lines(results: Mapping[str, FrictionResult]) -> list[str]:
-    """Each model's validity issues as the lines ``ballscrew torque`` prints.
-
-    One ``warning:`` line per issue; issues every ordinary ball screw has
-    (``ValidityIssue.routine``) become one ``note:`` per quantity, naming the
-    models, after the warnings.
-    """
-    lines: list[str] = []
-    routine: dict[str, list[Any]] = {}
-    for r in results.values():
-        for issue in r.warnings:
-            if issue.routine:
-                routine.setdefault(issue.quantity, []).append(issue)
-            else:
-                lines.append(f"warning: {issue}")
-    for quantity, found in routine.items():
-        worst = max(found, key=lambda i: i.excess)
-        names = ", ".join(i.model for i in found)
-        lines.append(
-            f"note: {quantity} up to {worst.value:.3g}, outside {worst.low:.3g} to "
-            f"{worst.high:.3g} ({worst.applies_to}) for {names}: usual for ball screws, "
-            f"{worst.routine}"
-        )
-    return lines
-
-
-def _report_warnings(results: Mapping[str, FrictionResult]) -> None:
-    """Each model's validity issues, one line each, once per run (on standard error)."""
-    for line in warning_lines(results):
-        click.echo(line, err=True)
+        write_json(json_file, run.json(command))
 
 
 def _full_table(title: str, rows: list[dict[str, Any]]) -> Table:

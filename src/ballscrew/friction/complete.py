@@ -92,7 +92,7 @@ from ..contact import hertz
 from ..errors import FloatArray, check_choice, check_nonnegative
 from ..geometry import BallScrew
 from ..helix import SlipContact, transverse_slip_loss
-from ..kinematics import differential_sliding, four_point_spin, kinematics
+from ..kinematics import differential_sliding, four_point_spin, kinematics, rad_s_to_rpm
 from ..lubricant import Lubricant
 from ..state import ContactState, OperatingState, operating_state
 from ..validity import film_checks
@@ -409,7 +409,7 @@ def complete(
     unit = kinematics(screw, 1.0)
     rolling_lever = float(unit.entrainment_speed)  # u / |omega| [m]
     if thermal_correction:
-        rpm = np.abs(kin.screw_speed) * 60.0 / (2.0 * math.pi)
+        rpm = rad_s_to_rpm(np.abs(kin.screw_speed))
         nu = lubricant.kinematic_viscosity(state.temperature) * 1e6  # mm²/s
         dm_mm = screw.pitch_diameter * 1e3
         section = 3.4 * screw.ball_diameter * 1e3  # D - d of a 72-series bearing, ~3.4 D_w

@@ -90,6 +90,7 @@ import numpy.typing as npt
 from ..contact import hertz
 from ..errors import BallScrewInputError, FloatArray, check_choice, check_nonnegative
 from ..geometry import BallScrew
+from ..kinematics import rad_s_to_rpm
 from ..loads import ball_loads
 from ..lubricant import Lubricant
 from ..rolling_losses import rolling_force_houpert
@@ -272,7 +273,7 @@ def olaru(
     spin_ratio = dw * math.sin(screw.contact_angle) / screw.pitch_diameter
     lever = screw.contact_radius_screw * math.cos(screw.lead_angle)
     omega = np.abs(state.kinematics.screw_speed)
-    rpm = omega * 60.0 / (2.0 * math.pi)
+    rpm = rad_s_to_rpm(omega)
     # |omega_s| / |omega| at each contact: the bearing kinematics of Olaru's paper, which
     # neglects the helix (ballscrew.kinematics keeps it; the spin differs by cos(lambda)).
     spin_per_speed = {

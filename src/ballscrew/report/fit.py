@@ -21,6 +21,7 @@ from matplotlib.figure import Figure as MplFigure
 from ..files import atomic_write
 from ..fit.calibration import FitResult, fitted_case_toml
 from ..io.case import Case
+from ..kinematics import rad_s_to_rpm
 from .document import Block, html_page, markdown
 from .outputs import csv_text
 from .plotting import write_figures
@@ -32,7 +33,7 @@ def _figure(result: FitResult) -> MplFigure:
     fig = MplFigure(figsize=(7.0, 6.0))
     FigureCanvasAgg(fig)
     top, bottom = fig.subplots(2, 1, sharex=True)
-    rpm = np.abs(result.speed) * 30 / np.pi
+    rpm = rad_s_to_rpm(np.abs(result.speed))
     order = np.argsort(rpm)
     outlier = np.zeros(rpm.size, dtype=bool)
     outlier[list(result.outliers)] = True
@@ -68,7 +69,7 @@ def write_fit_report(
     folder.mkdir(parents=True, exist_ok=True)
     written, images = write_figures(folder, {"fit": _figure(result)})
     rows = [
-        {"speed [rpm]": float(w * 30 / np.pi), "temperature [degC]": float(t),
+        {"speed [rpm]": float(rad_s_to_rpm(w)), "temperature [degC]": float(t),
          "axial load [N]": float(f), "measured torque [N*m]": float(m),
          "fitted torque [N*m]": float(p), "residual [N*m]": float(p - m),
          "outlier": "yes" if i in result.outliers else ""}

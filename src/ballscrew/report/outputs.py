@@ -31,6 +31,7 @@ import numpy as np
 from .. import __version__
 from ..chain import FrictionResult
 from ..io.case import Case
+from ..kinematics import rad_s_to_rpm
 
 __all__ = [
     "DIALECTS",
@@ -76,7 +77,7 @@ def result_rows(results: Mapping[str, FrictionResult]) -> list[dict[str, Any]]:
         for k in range(total.size):
             row: dict[str, Any] = {
                 "model": name,
-                "speed [rpm]": round_significant(float(w[k]) * 30.0 / math.pi, INPUT_DIGITS),
+                "speed [rpm]": round_significant(float(rad_s_to_rpm(w[k])), INPUT_DIGITS),
                 "temperature [degC]": round_significant(float(t[k]), INPUT_DIGITS),
                 "axial load [N]": round_significant(float(f[k]), INPUT_DIGITS),
                 "torque [N*m]": round_significant(float(total[k]), RESULT_DIGITS),

@@ -18,7 +18,7 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure as MplFigure
 
 from ..io.measured import MeasuredCurve
-from ..study.run import RPM
+from ..kinematics import rad_s_to_rpm
 from ..study.series import Figure
 from ..sweep.sensitivity import SobolIndices
 
@@ -65,7 +65,7 @@ def render(
                 ax.plot(s.speed_rpm, s.torque, lw=1.6, label=s.label)
         if measured is not None:
             ax.plot(
-                measured.speed / RPM,
+                rad_s_to_rpm(measured.speed),
                 measured.torque,
                 "k.",
                 ms=4,

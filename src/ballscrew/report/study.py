@@ -31,6 +31,7 @@ from ..errors import BallScrewInputError
 from ..files import atomic_write, sweep_temporaries
 from ..io.case import Case, parse_case
 from ..io.measured import MeasuredCurve, parse_measured
+from ..kinematics import rad_s_to_rpm, rpm_to_rad_s
 from ..loads import ball_loads
 from ..study.run import StudyResult, StudySensitivity, run_study
 from .document import Block, html_page, markdown
@@ -88,8 +89,7 @@ def _document(result: StudyResult) -> list[Block]:
         ("lubricant", case.lubricant.name, "lubricant.name"),
         (
             "speed range",
-            f"{case.speed.min() * 60 / (2 * math.pi):g} to "
-            f"{case.speed.max() * 60 / (2 * math.pi):g} rpm",
+            f"{rad_s_to_rpm(case.speed.min()):g} to {rad_s_to_rpm(case.speed.max()):g} rpm",
             "operation.speed",
         ),
         ("temperature (Figs. 3-7)", f"{case.study_temperature:g} °C", "study.temperature"),
@@ -321,7 +321,7 @@ def _csv(fig_series: Any) -> bytes:
     )
     for i in range(first.speed_rpm.size):
         writer.writerow(
-            [repr(float(first.speed_rpm[i])), repr(float(first.speed_rpm[i] * 2 * math.pi / 60))]
+            [repr(float(first.speed_rpm[i])), repr(float(rpm_to_rad_s(first.speed_rpm[i])))]
             + [repr(float(s.torque[i])) for s in fig_series]
         )
     return buffer.getvalue().encode("utf-8")

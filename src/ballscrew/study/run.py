@@ -12,7 +12,6 @@ computed from the series and set beside what the study found
 
 from __future__ import annotations
 
-import math
 import warnings
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
@@ -27,6 +26,7 @@ from ..chain import friction_torque as chain_friction_torque
 from ..errors import BallScrewValidityWarning
 from ..io.case import Case
 from ..io.measured import MeasuredCurve, error_metrics
+from ..kinematics import rad_s_to_rpm, rpm_to_rad_s
 from ..lubricant import Lubricant
 from ..validity import ValidityIssue
 from .findings import study_findings
@@ -39,8 +39,6 @@ from .sensitivity import (
 from .series import Figure, Series
 
 __all__ = ["Figure", "Series", "StudyResult", "StudySensitivity", "UncertainInput", "run_study"]
-
-RPM = 2.0 * math.pi / 60.0
 
 
 @dataclass(frozen=True)
@@ -68,7 +66,7 @@ def _controller_figure(model_curve: Series, at: str) -> Figure:
     """The complete model's curve and the Stribeck curve a controller would take from it."""
     from ..fit.controller import stribeck, stribeck_torque
 
-    w = model_curve.speed_rpm * RPM
+    w = rpm_to_rad_s(model_curve.speed_rpm)
     keep = w > 0.0
     both = np.concatenate([-w[keep][::-1], w[keep]])
     torque = np.concatenate([-model_curve.torque[keep][::-1], model_curve.torque[keep]])
@@ -80,7 +78,7 @@ def _controller_figure(model_curve: Series, at: str) -> Figure:
                    m.temperature, m.lubricant, p)  # fmt: skip
     drop = (
         f"static {p['static_torque']:.4g} N·m, Stribeck speed "
-        f"{p['stribeck_speed'] / RPM:.3g} rpm, exponent {p['stribeck_exponent']:.2f}"
+        f"{rad_s_to_rpm(p['stribeck_speed']):.3g} rpm, exponent {p['stribeck_exponent']:.2f}"
         if not fit.notes
         else "no Stribeck drop in the model's curve (static = Coulomb)"
     )
@@ -89,7 +87,8 @@ def _controller_figure(model_curve: Series, at: str) -> Figure:
         "Friction for a controller",
         f"The complete model, {at}, and the Stribeck curve fitted to it over both "
         f"directions (ballscrew export-friction): Coulomb {p['coulomb_torque']:.4g} N·m, "
-        f"viscous {p['viscous_coefficient'] * RPM * 1e3:.4g} N·m per 1000 rpm, {drop}; fit "
+        f"viscous {float(rpm_to_rad_s(p['viscous_coefficient'])) * 1e3:.4g} N·m per 1000 "
+        f"rpm, {drop}; fit "
         f"error RMS {fit.rms_error:.3g} N·m, max {fit.max_error:.3g} N·m.",
         (model_curve, shown),
     )
@@ -160,7 +159,7 @@ class _Context:
         self.ref_preload = self.screw.preload
         self.ref_label = f"{self.ref_preload:.0f} N"
         self.speed = self.case.speed
-        self.speed_rpm = self.speed / RPM
+        self.speed_rpm = rad_s_to_rpm(self.speed)
         self.temperature = self.case.study_temperature
         self.oil = self.case.lubricant
         self.load = float(self.case.axial_load.flat[0])

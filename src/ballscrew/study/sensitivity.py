@@ -18,6 +18,7 @@ import numpy as np
 
 from ..chain import friction_torque as chain_friction_torque
 from ..io.case import Case
+from ..kinematics import rad_s_to_rpm
 from ..sweep.sensitivity import SobolIndices
 from ..sweep.uncertainty import Distribution
 
@@ -29,8 +30,6 @@ __all__ = [
     "study_sensitivity",
     "uncertain_inputs",
 ]
-
-RPM = 2.0 * math.pi / 60.0
 
 
 @dataclass(frozen=True)
@@ -188,7 +187,7 @@ def study_sensitivity(
         y[k] = float(np.mean(torque.total))  # fmt: skip
     indices = sobol_indices(dists, y, SOBOL_SEED)
     p5, p50, p95 = (float(v) for v in np.percentile(y, [5.0, 50.0, 95.0]))
-    rpm = (float(speed.min() / RPM), float(speed.max() / RPM))
+    rpm = (float(rad_s_to_rpm(speed.min())), float(rad_s_to_rpm(speed.max())))
     result = StudySensitivity(inputs, indices, SOBOL_BASE_SAMPLES, rows.shape[0],
                               (p5, p50, p95), rpm, int(speed.size))  # fmt: skip
     _SENSITIVITY_CACHE[key] = result

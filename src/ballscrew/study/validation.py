@@ -66,6 +66,7 @@ from ..chain import friction_torque, models
 from ..errors import BallScrewValidityWarning, FloatArray
 from ..examples import reference_screw
 from ..geometry import BallScrew
+from ..kinematics import rpm_to_rad_s
 from ..lubricant import Lubricant
 from ..lubricants import get as get_lubricant
 
@@ -84,7 +85,6 @@ __all__ = [
 
 CASES_FILE = "validation_cases.csv"
 SUMMARY_FILE = "scorecard_summary.csv"
-RPM = 2.0 * math.pi / 60.0
 
 ACCEPTANCE_BANDS: tuple[tuple[float, float], ...] = (
     (0.4, 0.45),
@@ -216,7 +216,7 @@ def _torque(case: ReferenceCase, model: str, **params: Any) -> float:
         r = friction_torque(
             case.screw,
             get_lubricant(case.lubricant),
-            speed=case.speed_rpm * RPM,
+            speed=rpm_to_rad_s(case.speed_rpm),
             temperature=case.temperature,
             axial_load=case.axial_load,
             model=model,
@@ -337,7 +337,9 @@ def _trend_rows(model: str) -> list[ScoreRow]:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", BallScrewValidityWarning)
             return float(
-                friction_torque(s, oil, speed=rpm * RPM, temperature=temp, model=model).total
+                friction_torque(
+                    s, oil, speed=rpm_to_rad_s(rpm), temperature=temp, model=model
+                ).total
             )
 
     def ratio(a: float, b: float) -> float:
@@ -376,9 +378,9 @@ def _exponent_rows(model: str, cases: list[ReferenceCase], torque: list[float]) 
         if not {1000.0, 3000.0} <= set(by_speed):
             continue
         (case, t1), (_, t3) = by_speed[1000.0], by_speed[3000.0]
-        w = 1000.0 * RPM
+        w = rpm_to_rad_s(1000.0)
         law = [
-            float(jungnickel_loss_torque(case.screw, oil, n * RPM, case.temperature))
+            float(jungnickel_loss_torque(case.screw, oil, rpm_to_rad_s(n), case.temperature))
             for n in (1000.0, 3000.0)
         ]
         # 2 and 10 % of the load rating: the case's 5 % preload times 0.4 and 2.

@@ -3,7 +3,7 @@
 Every request is turned into a case file's TOML text and read by
 :func:`ballscrew.io.case.parse_case`, so the rules, units and one-line messages
 are the command line's; the models run through
-:func:`ballscrew.cli.torque.run_models` and the tables through
+:func:`ballscrew.report.torque.run_models` and the tables through
 :mod:`ballscrew.report.outputs`, so the numbers and files are those of ``ballscrew
 torque``; the energy of a move is :func:`ballscrew.axis.energy.axis_cycle` on the
 move of ``ballscrew energy --move``.
@@ -24,12 +24,12 @@ from typing import Any
 
 import numpy as np
 
+from ..axis.motion import parse_move
 from ..chain import FrictionResult
-from ..cli.energy import parse_move
-from ..cli.torque import run_models, warning_lines
 from ..errors import BallScrewInputError, BallScrewSpeedWarning, BallScrewValidityWarning
 from ..friction import MODELS, get_model
 from ..io.case import Case
+from ..kinematics import rad_s_to_rpm
 from ..report.outputs import (
     INPUT_DIGITS,
     csv_text,
@@ -39,6 +39,7 @@ from ..report.outputs import (
     result_rows,
     round_significant,
 )
+from ..report.torque import run_models, warning_lines
 from ..units import parse_range
 from .inputs import (
     LIMITS,
@@ -150,7 +151,7 @@ def torque(payload: Mapping[str, Any], limits: Limits = LIMITS) -> dict[str, Any
     r = results[model]
     return {
         "model": r.model,
-        "speed_rpm": _inputs(r.speed * 30.0 / math.pi),
+        "speed_rpm": _inputs(rad_s_to_rpm(r.speed)),
         "temperature_C": _inputs(r.temperature),
         "axial_load_N": _inputs(r.axial_load),
         "torque_Nm": _floats(r.total),
@@ -244,7 +245,7 @@ def _curves(results: Mapping[str, FrictionResult]) -> list[dict[str, Any]]:
                         "model": name,
                         "temperature_C": temp,
                         "axial_load_N": load,
-                        "speed_rpm": _inputs(w[at] * 30.0 / math.pi),
+                        "speed_rpm": _inputs(rad_s_to_rpm(w[at])),
                         "torque_Nm": _floats(total[at]),
                         "efficiency": _floats(eff[at]),
                         "power_W": _floats(power[at]),
@@ -261,7 +262,7 @@ def _budget(r: FrictionResult) -> dict[str, Any]:
         "model": r.model,
         "temperature_C": float(t[0]),
         "axial_load_N": float(f[0]),
-        "speed_rpm": _inputs(w[at] * 30.0 / math.pi),
+        "speed_rpm": _inputs(rad_s_to_rpm(w[at])),
         "components": {k: _floats(np.ravel(v)[at]) for k, v in r.components.items()},
     }
 

@@ -1,0 +1,207 @@
+"""The energy of an axis over a motion cycle, every model at once.
+
+What ``ballscrew energy`` and the web page compute.
+
+:func:`energy_run` takes a case (with its ``[axis]``), a motion profile and the
+models, and returns an :class:`EnergyRun`: per model the cycle's energies and
+torques (:func:`ballscrew.axis.energy.axis_cycle`), the weight's back-driving
+verdict, the temperature the repeated cycle reaches and the energy at it
+(:mod:`ballscrew.axis.thermal`), and optionally the steady temperature of
+continuous running at given speeds. :meth:`EnergyRun.as_dict` is the JSON
+document the command writes.
+"""
+
+from __future__ import annotations
+
+import warnings
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+
+from ..errors import FloatArray
+from ..io.case import Case
+from ..kinematics import rad_s_to_rpm
+from .energy import Axis, CycleResult, axis_cycle, weight_back_driving
+from .motion import Profile, back_and_forth, chain, read_trajectory
+from .setup import axis_setup
+from .thermal import (
+    SteadyAtSpeed,
+    ThermalNode,
+    steady_at_speeds,
+    steady_temperature,
+    temperature_history,
+)
+
+__all__ = ["EnergyRun", "energy_run", "profile_from_file", "profile_from_move"]
+
+
+def profile_from_move(move: dict[str, float], cycles: int) -> Profile:
+    """Back-and-forth cycles of a move given as SI values by key.
+
+    The keys are those of :func:`ballscrew.axis.motion.parse_move`.
+    """
+    window = None
+    if "force_from" in move or "force_to" in move:
+        window = (move.get("force_from", 0.0), move.get("force_to", abs(move["stroke"])))
+    return back_and_forth(
+        move["stroke"], move["feed"], move["acceleration"], jerk=move.get("jerk"),
+        dwell_time=move.get("dwell", 0.0), cycles=cycles, process_force=move.get("force", 0.0),
+        force_window=window,
+    )  # fmt: skip
+
+
+def profile_from_file(path: str, cycles: int) -> Profile:
+    """A trajectory CSV (units in the header) repeated ``cycles`` times."""
+    one = read_trajectory(Path(path).read_text(encoding="utf-8"), path)
+    return chain(*([one] * cycles))
+
+
+@dataclass
+class EnergyRun:
+    """Everything ``ballscrew energy`` reports, per model."""
+
+    case: Case
+    profile: Profile
+    cycles: int
+    temperature: float
+    axis: Axis
+    node: ThermalNode
+    thermal: dict[str, float]
+    assumptions: list[str]
+    move: dict[str, float]
+    results: dict[str, dict[str, Any]] = field(default_factory=dict)
+    cycles_by_model: dict[str, CycleResult] = field(default_factory=dict)
+    histories: dict[str, tuple[FloatArray, FloatArray]] = field(default_factory=dict)
+    steady: dict[str, SteadyAtSpeed] = field(default_factory=dict)
+    speed_warnings: list[str] = field(default_factory=list)
+
+    def as_dict(self, version: str) -> dict[str, Any]:
+        """The JSON document of ``ballscrew energy --json``: the first model at the top."""
+        first_name = next(iter(self.results))
+        first = self.results[first_name]
+        return {
+            "ballscrew": version,
+            "case": self.case.title,
+            "model": first_name,
+            **{k: v for k, v in first.items() if k != "steady_at_speed"},
+            "move": self.move,
+            "cycles": self.cycles,
+            "temperature_C": self.temperature,
+            "axis": {k: getattr(self.axis, k) for k in self.axis.__dataclass_fields__},
+            "thermal": self.thermal,
+            "assumptions": self.assumptions,
+            "models": self.results,
+        }
+
+
+def _cycle_numbers(r: CycleResult, cycles: int) -> dict[str, Any]:
+    return {
+        "friction_energy_J": r.friction_energy,
+        "friction_energy_per_cycle_J": r.friction_energy / cycles,
+        "friction_energy_out_J": r.friction_energy_out,
+        "friction_energy_back_J": r.friction_energy_back,
+        "friction_energy_by_mechanism_J": r.friction_energy_by_mechanism,
+        "bearing_energy_J": r.bearing_energy,
+        "constant_efficiency_energy_J": r.constant_efficiency_energy,
+        "load_work_J": r.load_work,
+        "peak_motor_torque_Nm": r.peak_motor_torque,
+        "rms_motor_torque_Nm": r.rms_motor_torque,
+        "forward_efficiency": r.forward_efficiency,
+        "reverse_efficiency": r.reverse_efficiency,
+        "self_locking": r.reverse_efficiency <= 0.0,
+    }
+
+
+def energy_run(
+    case: Case,
+    profile: Profile,
+    model_names: Sequence[str],
+    *,
+    cycles: int = 1,
+    temperature: float | None = None,
+    run_time: float = 3600.0,
+    steady_speeds: npt.ArrayLike | None = None,
+    move: dict[str, float] | None = None,
+) -> EnergyRun:
+    """Each model's energy, torques and temperatures over ``profile`` (module docstring).
+
+    Parameters
+    ----------
+    case : Case
+        The screw, lubricant, model parameters and ``[axis]``.
+    profile : Profile
+        The motion (all its cycles).
+    model_names : sequence of str
+        Friction models.
+    cycles : int
+        How many cycles ``profile`` holds (for the energy per cycle).
+    temperature : float, optional
+        Lubricant temperature [°C]; default the case's first.
+    run_time : float
+        How long the cycle repeats for the temperature reached [s].
+    steady_speeds : array_like, optional
+        Speeds of continuous running [rad/s] for the steady temperatures.
+    move : dict, optional
+        The move's keys (SI), kept in the result; its ``force`` is the load of
+        continuous running.
+    """
+    m = dict(move or {})
+    temp = float(case.temperature.flat[0]) if temperature is None else float(temperature)
+    setup = axis_setup(case.screw, case.axis, case.thermal, float(np.ptp(profile.position)))
+    node = setup.node
+    run = EnergyRun(
+        case, profile, cycles, temp, setup.axis, node,
+        {k: getattr(node, k) for k in ("screw_length", "ambient", "machine_resistance",
+                                       "nut_mass")},
+        list(setup.notes), m,
+    )  # fmt: skip
+    for name in model_names:
+        _one_model(run, name, run_time, steady_speeds)
+    return run
+
+
+def _one_model(
+    run: EnergyRun, name: str, run_time: float, steady_speeds: npt.ArrayLike | None
+) -> None:
+    case, profile, axis, node = run.case, run.profile, run.axis, run.node
+    params = dict(case.model_parameters.get(name, {}))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # the speed limits are kept in the result
+        r = axis_cycle(profile, case.screw, case.lubricant, axis, temperature=run.temperature,
+                       model=name, **params)  # fmt: skip
+    run.speed_warnings = list(r.speed_warnings)
+    run.cycles_by_model[name] = r
+    numbers = _cycle_numbers(r, run.cycles)
+    numbers["weight_reverse_efficiency"] = weight_back_driving(
+        case.screw, case.lubricant, axis, temperature=run.temperature, model=name, **params
+    )
+    numbers["duration_s"] = profile.duration
+    numbers["warnings"] = [str(issue) for issue in r.friction.warnings] + list(r.speed_warnings)
+    steady = steady_temperature(profile, case.screw, case.lubricant, axis, node, model=name,
+                                **params)  # fmt: skip
+    times, history = temperature_history(profile, case.screw, case.lubricant, axis, node,
+                                         run_time, model=name, points=50, **params)  # fmt: skip
+    run.histories[name] = (times, history)
+    numbers["steady_temperature_C"] = steady.temperature
+    numbers["final_temperature_C"] = float(history[-1])
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        warm = axis_cycle(profile, case.screw, case.lubricant, axis,
+                          temperature=float(history[-1]), model=name, **params)  # fmt: skip
+    numbers["friction_energy_at_final_temperature_J"] = warm.friction_energy
+    if steady_speeds is not None:
+        at = steady_at_speeds(case.screw, case.lubricant, node, steady_speeds,
+                              axial_load=run.move.get("force", 0.0), model=name,
+                              **params)  # fmt: skip
+        run.steady[name] = at
+        numbers["steady_at_speed"] = {
+            "speed_rpm": rad_s_to_rpm(at.speed).tolist(),
+            "temperature_C": at.temperature.tolist(),
+            "torque_Nm": at.torque.tolist(),
+            "power_W": at.power.tolist(),
+        }
+    run.results[name] = numbers

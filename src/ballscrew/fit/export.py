@@ -1,0 +1,161 @@
+"""Friction for a servo drive, fitted to a model's torque-speed curve.
+
+What ``ballscrew export-friction`` computes.
+
+:func:`export_friction` evaluates a model over a speed range in both
+directions at each temperature, and either fits a friction form to it
+(:func:`ballscrew.fit.controller.fit_form`) or keeps the curve as a lookup
+table; :meth:`FrictionExport.as_dict` is the command's JSON document and
+:attr:`FrictionExport.rows` its CSV.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from ..axis.energy import Axis
+from ..axis.setup import axis_setup
+from ..chain import friction_torque
+from ..errors import BallScrewInputError, FloatArray
+from ..friction import get_model
+from ..io.case import Case
+from ..kinematics import rad_s_to_rpm
+from ..units import parse_range
+from .controller import FrictionForm, fit_form, stribeck_torque
+
+__all__ = ["FrictionExport", "axis_inertia", "export_friction", "log_speeds"]
+
+
+def log_speeds(text: str) -> FloatArray:
+    """Positive screw speeds [rad/s]; a range 'a..b:n unit' is spaced logarithmically."""
+    values = np.asarray(parse_range("--speed", text, "rad/s"), dtype=float)
+    if values.size < 3 or np.any(values <= 0.0):
+        raise BallScrewInputError("--speed", text, "3 or more positive speeds, e.g. "
+                                  "'0.1..3000:60 rpm'")  # fmt: skip
+    if ".." in text:
+        values = np.geomspace(values.min(), values.max(), values.size)
+    result: FloatArray = np.unique(values)
+    return result
+
+
+def axis_inertia(axis: Axis, lead: float) -> float:
+    """Inertia at the screw [kg·m²]: screw, coupling, motor through the gear, and the table."""
+    return float(axis.screw_inertia + axis.coupling_inertia
+                 + axis.motor_inertia * axis.gear_ratio**2
+                 + axis.moving_mass * (lead / (2 * math.pi)) ** 2)  # fmt: skip
+
+
+@dataclass
+class FrictionExport:
+    """The curve (or fitted form) of one model at each temperature."""
+
+    case: Case
+    model: str
+    form: str
+    temperatures: list[float]
+    speeds: FloatArray
+    axial_load: float
+    fitted: list[tuple[float, FrictionForm]] = field(default_factory=list)
+    rows: list[dict[str, Any]] = field(default_factory=list)
+
+    @property
+    def lead(self) -> float:
+        """The screw's lead [m]."""
+        return self.case.screw.lead
+
+    def as_dict(self, version: str) -> dict[str, Any]:
+        """The JSON document of ``ballscrew export-friction --json``."""
+        payload: dict[str, Any] = {"ballscrew": version, "case": self.case.title,
+                                   "model": self.model, "form": self.form,
+                                   "lead_m": self.lead}  # fmt: skip
+        if self.form == "table":
+            payload["table"] = self.rows
+            return payload
+        fits = [{"temperature_C": t, "axial_load_N": self.axial_load, **f.as_dict(self.lead)}
+                for t, f in self.fitted]  # fmt: skip
+        payload["fits"] = fits
+        payload |= {k: v for k, v in fits[0].items() if k in ("parameters", "rms_error_Nm")}
+        return payload
+
+
+def _form_curve(form: str, p: dict[str, float], w: FloatArray) -> FloatArray:
+    if form == "coulomb-viscous":
+        result: FloatArray = p["coulomb_torque"] * np.sign(w) + p["viscous_coefficient"] * w
+        return result
+    keys = ("coulomb_torque", "static_torque", "stribeck_speed", "stribeck_exponent",
+            "viscous_coefficient")  # fmt: skip
+    return stribeck_torque(w, *(p[k] for k in keys))
+
+
+def export_friction(
+    case: Case,
+    model: str,
+    form: str,
+    *,
+    temperatures: Sequence[float] | None = None,
+    speeds: FloatArray,
+    axial_load: float | None = None,
+    inertia: float | None = None,
+    bristle_stiffness: float | None = None,
+    bristle_damping: float | None = None,
+) -> FrictionExport:
+    """A model's curve over ``speeds`` both ways at each temperature, fitted to ``form``.
+
+    Parameters
+    ----------
+    case : Case
+        Screw, lubricant, model parameters, ``[axis]`` (for LuGre's inertia).
+    model : str
+        Friction model.
+    form : {"coulomb-viscous", "stribeck", "lugre", "table"}
+        The form, or the table itself.
+    temperatures : sequence of float, optional
+        [°C]; default the case's first.
+    speeds : array_like
+        Positive screw speeds [rad/s]; mirrored to negative ones.
+    axial_load : float, optional
+        [N]; default the case's first.
+    inertia, bristle_stiffness, bristle_damping : float, optional
+        LuGre's inputs (default: from the case's axis and the nut's stiffness).
+    """
+    name = get_model(model).name
+    temps = list(temperatures) if temperatures is not None else [float(case.temperature.flat[0])]
+    load = float(case.axial_load.flat[0]) if axial_load is None else axial_load
+    lead = case.screw.lead
+    j = inertia if inertia else axis_inertia(
+        axis_setup(case.screw, case.axis, case.thermal, 0.0).axis, lead)  # fmt: skip
+    w = np.concatenate([-speeds[::-1], speeds])
+    params = dict(case.model_parameters.get(name, {}))
+    out = FrictionExport(case, name, form, temps, speeds, load)
+    for temp in temps:
+        with warnings.catch_warnings():  # validity warnings are the torque command's business
+            warnings.simplefilter("ignore")
+            torque = friction_torque(case.screw, case.lubricant, speed=w, temperature=temp,
+                                     axial_load=load, model=name, **params).total  # fmt: skip
+        signed = np.sign(w) * torque
+        if form == "table":
+            out.rows += [
+                {"speed [rad/s]": float(v), "speed [rpm]": float(rad_s_to_rpm(v)),
+                 "temperature [degC]": temp, "torque [N*m]": float(tq),
+                 "table speed [m/s]": float(v * lead / (2 * math.pi)),
+                 "force [N]": float(tq * 2 * math.pi / lead)}
+                for v, tq in zip(w, signed, strict=True)
+            ]  # fmt: skip
+            continue
+        fitted = fit_form(form, w, signed, screw=case.screw, inertia=j or None,
+                          bristle_stiffness=bristle_stiffness,
+                          bristle_damping=bristle_damping)  # fmt: skip
+        out.fitted.append((temp, fitted))
+        curve = _form_curve(form, fitted.parameters, w)
+        out.rows += [
+            {"speed [rpm]": float(rad_s_to_rpm(v)), "temperature [degC]": temp,
+             f"torque {name} [N*m]": float(a), f"torque {form} [N*m]": float(b)}
+            for v, a, b in zip(w, signed, curve, strict=True)
+        ]  # fmt: skip
+    return out
