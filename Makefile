@@ -1,6 +1,7 @@
 # Two commands do all set-up on a fresh machine with Python 3.11+ and pip:
 #   make run   - the main job: reproduce the study, report in study-report/
-#   make test  - the whole test suite: ruff, mypy on src/, pytest with doctests
+#   make test  - the whole test suite: ruff, mypy on src/, the import contracts, pytest with
+#                doctests (make test-fast: the same without the tests marked slow)
 PYTHON ?= python3
 VENV   ?= .venv
 BIN    := $(VENV)/bin
@@ -26,6 +27,7 @@ test: $(STAMP) chromium
 	$(BIN)/ruff check src tests benchmarks examples scripts
 	$(BIN)/ruff format --check src tests benchmarks examples scripts
 	$(BIN)/mypy src
+	$(BIN)/lint-imports
 	$(BIN)/pytest -q
 
 chromium:

@@ -16,19 +16,13 @@ SI units throughout (m, N, Pa, Pa·s, m²/s, rad/s); temperatures in °C.
 
 from __future__ import annotations
 
-from importlib.metadata import PackageNotFoundError, version
-
 from . import contact, ehl, friction, kinematics, loads, lubricants, rheology
+from ._version import __version__
 from .chain import FrictionResult, friction_torque, models
 from .errors import BallScrewInputError
 from .examples import reference_screw
 from .geometry import BallScrew
 from .lubricant import Lubricant
-
-try:
-    __version__ = version("ballscrew")
-except PackageNotFoundError:  # pragma: no cover - running from a source tree
-    __version__ = "0.0.0"
 
 __all__ = [
     "BallScrew",

@@ -162,6 +162,7 @@ def palmgren_drag_torque(
     A screw-support bearing of 30 mm bore and 62 mm outside diameter, grease
     (f0 = 4), VG 68 at 40 °C, 3000 rpm: 4e-7 * 204000^(2/3) * 46^3 N·mm.
 
+    >>> import math
     >>> round(float(palmgren_drag_torque(100 * math.pi, 68e-6, 0.046, 4.0)), 4)
     0.1349
     """
@@ -254,6 +255,7 @@ def palmgren_bearing_torque(
 
     Examples
     --------
+    >>> import math
     >>> m = palmgren_bearing_torque([0.0, 100 * math.pi], 2000.0, 68e-6, bore=0.03,
     ...                             outer_diameter=0.062, static_rating=40e3)
     >>> [round(float(x), 3) for x in m]

@@ -70,6 +70,7 @@ from .errors import (
     check_nonnegative,
     check_positive,
 )
+from .materials import reduced_modulus
 
 __all__ = [
     "HERTZ_METHODS",
@@ -85,44 +86,6 @@ __all__ = [
 
 ArrayLike = npt.ArrayLike
 HertzMethod = Literal["exact", "houpert", "hamrock_brewe", "brewe_hamrock"]
-
-
-def reduced_modulus(e1: ArrayLike, nu1: ArrayLike, e2: ArrayLike, nu2: ArrayLike) -> FloatArray:
-    r"""Reduced (effective) elastic modulus of two bodies in contact, Hamrock's convention.
-
-    .. math:: E' = \frac{2}{(1-\nu_1^2)/E_1 + (1-\nu_2^2)/E_2}
-
-    Parameters
-    ----------
-    e1, e2 : array_like
-        Young's moduli of the two bodies [Pa].
-    nu1, nu2 : array_like
-        Poisson's ratios of the two bodies [-], in [0, 0.5).
-
-    Returns
-    -------
-    numpy.ndarray
-        Reduced modulus :math:`E'` [Pa]. Note that Johnson's :math:`E^*` is
-        :math:`E'/2`.
-
-    Examples
-    --------
-    Two steel bodies (E = 210 GPa, ν = 0.3):
-
-    >>> round(float(reduced_modulus(210e9, 0.3, 210e9, 0.3)) / 1e9, 2)
-    230.77
-
-    References
-    ----------
-    .. [1] B. J. Hamrock, S. R. Schmid, B. O. Jacobson, *Fundamentals of
-       Fluid Film Lubrication*, 2nd ed., Marcel Dekker, 2004, ch. 16.
-    """
-    e1a = check_positive("e1 (Young's modulus)", e1, "Pa")
-    e2a = check_positive("e2 (Young's modulus)", e2, "Pa")
-    nu1a = check_in_range("nu1 (Poisson's ratio)", nu1, 0.0, 0.5, inclusive=(True, False))
-    nu2a = check_in_range("nu2 (Poisson's ratio)", nu2, 0.0, 0.5, inclusive=(True, False))
-    result: FloatArray = 2.0 / ((1.0 - nu1a**2) / e1a + (1.0 - nu2a**2) / e2a)
-    return result
 
 
 @dataclass(frozen=True)

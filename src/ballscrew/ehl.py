@@ -42,6 +42,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .errors import FloatArray, check_finite, check_in_range, check_nonnegative, check_positive
+from .materials import composite_roughness
 
 __all__ = [
     "asperity_share",
@@ -188,20 +189,6 @@ def hamrock_dowson_1977_central(
     result: FloatArray = (
         2.69 * r * uu**0.67 * gg**0.53 * ww**-0.067 * (1.0 - 0.61 * np.exp(-0.73 * kk))
     )
-    return result
-
-
-def composite_roughness(sigma1: ArrayLike, sigma2: ArrayLike) -> FloatArray:
-    r"""Composite RMS roughness of two surfaces, :math:`\sqrt{\sigma_1^2 + \sigma_2^2}` [m].
-
-    Examples
-    --------
-    >>> round(float(composite_roughness(0.3e-6, 0.4e-6)) * 1e6, 6)
-    0.5
-    """
-    s1 = check_nonnegative("sigma1", sigma1, "m")
-    s2 = check_nonnegative("sigma2", sigma2, "m")
-    result: FloatArray = np.hypot(s1, s2)
     return result
 
 

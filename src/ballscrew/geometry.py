@@ -40,9 +40,13 @@ from typing import Any, Literal, get_args
 
 import numpy as np
 
-from .contact import reduced_modulus
-from .ehl import composite_roughness
 from .errors import BallScrewInputError, check_in_range, check_nonnegative, check_positive
+from .materials import (
+    STEEL_POISSON_RATIO,
+    STEEL_YOUNGS_MODULUS,
+    composite_roughness,
+    reduced_modulus,
+)
 
 __all__ = [
     "BALL_SEPARATIONS",
@@ -84,8 +88,8 @@ BALL_SEPARATIONS: tuple[str, ...] = get_args(BallSeparation)
     match the catalogue's ball count if it differs).
 """
 
-_STEEL_E = 2.1e11
-_STEEL_NU = 0.3
+_STEEL_E = STEEL_YOUNGS_MODULUS
+_STEEL_NU = STEEL_POISSON_RATIO
 
 PLAUSIBLE_SIZES: tuple[tuple[str, float, float, str], ...] = (
     ("pitch_diameter", 2e-3, 0.5, "ball screws are made from about 4 mm to 200 mm"),

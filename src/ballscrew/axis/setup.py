@@ -29,8 +29,9 @@ import numpy.typing as npt
 
 from ..errors import FloatArray
 from ..geometry import BallScrew
+from ..materials import STEEL_DENSITY
 from .energy import Axis
-from .thermal import STEEL_DENSITY, ThermalNode, estimated_screw_length
+from .thermal import ThermalNode, estimated_screw_length
 
 __all__ = ["AxisSetup", "axis_setup", "shaft_inertia"]
 

@@ -37,6 +37,7 @@ from ..chain import friction_torque
 from ..errors import BallScrewInputError, BallScrewValidityWarning, FloatArray, check_positive
 from ..geometry import BallScrew
 from ..lubricant import Lubricant
+from ..materials import STEEL_DENSITY, STEEL_SPECIFIC_HEAT
 from .energy import Axis, screw_motion
 from .motion import Profile
 
@@ -54,12 +55,9 @@ __all__ = [
 AIR = {"conductivity": 0.0263, "kinematic_viscosity": 1.589e-5, "prandtl": 0.707}
 """Air at 300 K and 1 bar: k [W/(m·K)], nu [m²/s], Pr [-] (Incropera, Table A.4)."""
 
-STEEL_DENSITY = 7850.0
-"""Density of the screw and nut steel [kg/m³] (a typical handbook value for carbon
-and low-alloy steels; an assumption of the heat capacity)."""
 
-STEEL_HEAT_CAPACITY = 460.0
-"""Specific heat capacity of that steel [J/(kg·K)] (typical handbook value; an assumption)."""
+STEEL_HEAT_CAPACITY = STEEL_SPECIFIC_HEAT
+"""Specific heat of the screw and nut steel [J/(kg·K)] (:mod:`ballscrew.materials`)."""
 
 KREITH_REYNOLDS_LIMIT = 4.3e5
 """Largest rotational Reynolds number of Kreith's rotating-cylinder correlation [-]."""

@@ -61,7 +61,7 @@ def energy_command(
         --move "stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2, force=2 kN, \\
                 force_from=50 mm, force_to=250 mm"
     """  # noqa: D301 - click needs the literal \b to keep the example lines
-    from .. import __version__
+    from .._version import __version__
     from ..axis.run import energy_run, profile_from_file, profile_from_move
     from ..io.case import load_case
     from ..kinematics import rad_s_to_rpm

@@ -7,18 +7,23 @@ from collections.abc import Sequence
 from typing import Literal, get_args
 
 import numpy as np
+import numpy.typing as npt
 
-from ..errors import FloatArray, check_choice, check_nonnegative
+from .. import rheology
+from ..errors import BallScrewInputError, FloatArray, check_choice, check_nonnegative
 from ..geometry import BallScrew
 from ..kinematics import kinematics
-from ..lubricant import Lubricant
+from ..lubricant import Lubricant, pressure_viscosity_unchecked
 from ..state import OperatingState
 
 __all__ = [
+    "RHEOLOGY_MODELS",
     "TORQUE_ARMS",
     "TorqueArm",
     "lever_arms",
     "limiting_shear",
+    "local_viscosity",
+    "shear_stress",
     "torque_from_contact_forces",
 ]
 
@@ -91,3 +96,50 @@ def limiting_shear(
         float(check_nonnegative("limiting_shear_stress", t0, "Pa")),
         float(check_nonnegative("limiting_shear_coefficient", gl)),
     )
+
+
+RHEOLOGY_MODELS = ("harmonic", "general", "eyring", "bair-winer")
+"""The lubricant shear laws the Harris models take by name (:func:`shear_stress`)."""
+
+
+def shear_stress(
+    model: str,
+    viscosity: npt.ArrayLike,
+    shear_rate: npt.ArrayLike,
+    limiting_stress: npt.ArrayLike,
+    exponent: float = 1.0,
+    eyring_stress: float | None = None,
+) -> FloatArray:
+    """Lubricant shear stress [Pa] by a named law of :mod:`ballscrew.rheology`.
+
+    ``model`` is one of ``"harmonic"`` (the study's eq. 5), ``"general"``
+    (eq. 7 with ``exponent``), ``"eyring"`` (needs ``eyring_stress`` [Pa]; no
+    default, since no published value fits every oil) or ``"bair-winer"``.
+    """
+    if model == "harmonic":
+        return rheology.harmonic_combination(viscosity, shear_rate, limiting_stress)
+    if model == "general":
+        return rheology.general_non_newtonian(viscosity, shear_rate, limiting_stress, exponent)
+    if model == "eyring":
+        if eyring_stress is None:
+            raise BallScrewInputError(
+                "eyring_stress",
+                None,
+                "a stress [Pa] for the Eyring law; it has no default (its value depends on "
+                "the oil and pressure: a few MPa is usual)",
+            )
+        return rheology.eyring_1936(viscosity, shear_rate, eyring_stress)
+    if model == "bair-winer":
+        return rheology.bair_winer_1979(viscosity, shear_rate, limiting_stress)
+    raise BallScrewInputError("rheology", model, f"one of {list(RHEOLOGY_MODELS)}")
+
+
+def local_viscosity(
+    viscosity: FloatArray, pressure_viscosity: float, pressure: FloatArray, model: str
+) -> FloatArray:
+    """Viscosity at the local pressure [Pa·s], rows of ``pressure`` against ``viscosity``.
+
+    :func:`ballscrew.lubricant.pressure_viscosity_unchecked` (the one
+    implementation of Roelands' and Barus's equations) on rows of pressures.
+    """
+    return pressure_viscosity_unchecked(model, viscosity[..., None], pressure_viscosity, pressure)

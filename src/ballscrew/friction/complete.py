@@ -94,6 +94,7 @@ from ..geometry import BallScrew
 from ..helix import SlipContact, transverse_slip_loss
 from ..kinematics import differential_sliding, four_point_spin, kinematics, rad_s_to_rpm
 from ..lubricant import Lubricant
+from ..materials import STEEL_DENSITY
 from ..state import ContactState, OperatingState, operating_state
 from ..validity import film_checks
 from ._common import limiting_shear
@@ -142,9 +143,6 @@ A tube return lifts the balls out of the groove, bends twice and sets them
 back: four bends of about a right angle each; a deflector's crossover turns
 them about as much. An assumption, stated with the result.
 """
-
-STEEL_DENSITY: float = 7850.0
-"""Density of the balls (bearing steel) [kg/m³]."""
 
 _K_RS = {"oil": 3e-8, "grease": 6e-8}
 

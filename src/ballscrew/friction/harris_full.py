@@ -72,9 +72,8 @@ from ..lubricant import Lubricant
 from ..numerics import illinois
 from ..state import operating_state
 from ..validity import film_checks
-from ._common import limiting_shear
+from ._common import RHEOLOGY_MODELS, limiting_shear, local_viscosity, shear_stress
 from ._registry import register
-from .harris_simplified import RHEOLOGY_MODELS, local_viscosity, shear_stress
 
 __all__ = ["full_contact_power", "harris_full"]
 

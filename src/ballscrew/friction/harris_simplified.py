@@ -73,7 +73,6 @@ import functools
 import numpy as np
 import numpy.typing as npt
 
-from .. import rheology
 from ..errors import (
     BallScrewInputError,
     FloatArray,
@@ -83,10 +82,16 @@ from ..errors import (
 )
 from ..geometry import BallScrew
 from ..kinematics import differential_sliding
-from ..lubricant import Lubricant, pressure_viscosity_unchecked
+from ..lubricant import Lubricant
 from ..state import operating_state
 from ..validity import film_checks
-from ._common import limiting_shear, torque_from_contact_forces
+from ._common import (
+    RHEOLOGY_MODELS,
+    limiting_shear,
+    local_viscosity,
+    shear_stress,
+    torque_from_contact_forces,
+)
 from ._registry import register
 
 __all__ = [
@@ -102,8 +107,6 @@ __all__ = [
 
 HEATHCOTE_ROLLING_LINE = 0.347
 """Position of the two pure-rolling lines, as a fraction of the semi-major axis (Heathcote)."""
-
-RHEOLOGY_MODELS = ("harmonic", "general", "eyring", "bair-winer")
 
 
 @functools.cache
@@ -149,55 +152,12 @@ def mean_sliding_speed(curvature_coefficient: npt.ArrayLike, a: npt.ArrayLike) -
     return result
 
 
-def shear_stress(
-    model: str,
-    viscosity: npt.ArrayLike,
-    shear_rate: npt.ArrayLike,
-    limiting_stress: npt.ArrayLike,
-    exponent: float = 1.0,
-    eyring_stress: float | None = None,
-) -> FloatArray:
-    """Lubricant shear stress [Pa] by a named law of :mod:`ballscrew.rheology`.
-
-    ``model`` is one of ``"harmonic"`` (the study's eq. 5), ``"general"``
-    (eq. 7 with ``exponent``), ``"eyring"`` (needs ``eyring_stress`` [Pa]; no
-    default, since no published value fits every oil) or ``"bair-winer"``.
-    """
-    if model == "harmonic":
-        return rheology.harmonic_combination(viscosity, shear_rate, limiting_stress)
-    if model == "general":
-        return rheology.general_non_newtonian(viscosity, shear_rate, limiting_stress, exponent)
-    if model == "eyring":
-        if eyring_stress is None:
-            raise BallScrewInputError(
-                "eyring_stress",
-                None,
-                "a stress [Pa] for the Eyring law; it has no default (its value depends on "
-                "the oil and pressure: a few MPa is usual)",
-            )
-        return rheology.eyring_1936(viscosity, shear_rate, eyring_stress)
-    if model == "bair-winer":
-        return rheology.bair_winer_1979(viscosity, shear_rate, limiting_stress)
-    raise BallScrewInputError("rheology", model, f"one of {list(RHEOLOGY_MODELS)}")
-
-
 @functools.cache
 def _pressure_nodes(nodes: int) -> tuple[FloatArray, FloatArray]:
     """Gauss-Legendre nodes and weights on [0, 1], weights multiplied by 2 s (disk mean)."""
     x, w = np.polynomial.legendre.leggauss(nodes)
     s = 0.5 * (x + 1.0)
     return s, w * s  # 2 * (w/2) * s
-
-
-def local_viscosity(
-    viscosity: FloatArray, pressure_viscosity: float, pressure: FloatArray, model: str
-) -> FloatArray:
-    """Viscosity at the local pressure [Pa·s], rows of ``pressure`` against ``viscosity``.
-
-    :func:`ballscrew.lubricant.pressure_viscosity_unchecked` (the one
-    implementation of Roelands' and Barus's equations) on rows of pressures.
-    """
-    return pressure_viscosity_unchecked(model, viscosity[..., None], pressure_viscosity, pressure)
 
 
 def simplified_contact_force(

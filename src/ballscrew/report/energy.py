@@ -23,7 +23,7 @@ import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure as MplFigure
 
-from .. import __version__
+from .._version import __version__
 from ..axis.energy import CycleResult
 from ..axis.motion import Profile
 from ..errors import FloatArray

@@ -28,7 +28,7 @@ from typing import Any
 
 import numpy as np
 
-from .. import __version__
+from .._version import __version__
 from ..chain import FrictionResult
 from ..io.case import Case
 from ..kinematics import rad_s_to_rpm

@@ -25,7 +25,7 @@ from typing import Any
 
 import numpy as np
 
-from .. import __version__
+from .._version import __version__
 from ..contact import hertz
 from ..errors import BallScrewInputError
 from ..files import atomic_write, sweep_temporaries

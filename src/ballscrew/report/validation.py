@@ -31,7 +31,7 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from matplotlib.ticker import FormatStrFormatter, LogLocator, NullFormatter
 
-from .. import __version__
+from .._version import __version__
 from ..files import atomic_write
 from ..study.validation import (
     ACCEPTANCE_BANDS,

@@ -31,7 +31,7 @@ from typing import Any
 
 import numpy as np
 
-from .. import __version__
+from .._version import __version__
 from ..chain import friction_torque
 from ..errors import BallScrewInputError, FloatArray
 from ..files import atomic_write, deferred_signals

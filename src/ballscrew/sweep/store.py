@@ -19,7 +19,7 @@ from typing import Any, Literal
 
 import numpy as np
 
-from .. import __version__
+from .._version import __version__
 from ..errors import BallScrewInputError
 from ..files import deferred_signals
 from ..friction import get_model

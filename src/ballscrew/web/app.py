@@ -46,7 +46,8 @@ from starlette.responses import HTMLResponse, JSONResponse, Response
 from starlette.routing import Route
 from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
-from .. import __version__, lubricants
+from .. import lubricants
+from .._version import __version__
 from ..errors import BallScrewSpeedWarning, BallScrewValidityWarning
 from ..io.designation import catalog_screws
 from . import service

@@ -1,0 +1,113 @@
+"""``ballscrew demo``: a contact and lubricant summary of the bundled reference screw."""
+
+from __future__ import annotations
+
+import math
+
+import click
+from rich.console import Console
+from rich.table import Table
+
+__all__ = ["demo"]
+
+
+@click.command()
+@click.option(
+    "--lubricant",
+    "lubricant_name",
+    default="PAO ISO VG 68",
+    show_default=True,
+    help="Name of a bundled lubricant.",
+)
+@click.option(
+    "--temperature",
+    default=40.0,
+    show_default=True,
+    type=float,
+    help="Lubricant temperature for the film table [°C].",
+)
+def demo(lubricant_name: str, temperature: float) -> None:
+    """Print a contact and lubricant summary for the bundled reference screw.
+
+    \b
+    Examples:
+      ballscrew demo
+      ballscrew demo --lubricant "SAE 20" --temperature 30
+    """  # noqa: D301 - click needs the literal \b to keep the example lines
+    import numpy as np
+
+    from .. import lubricants
+    from ..contact import HERTZ_METHODS, hertz
+    from ..examples import reference_screw
+    from ..kinematics import rpm_to_rad_s
+    from ..state import operating_state
+
+    console = Console(width=110, markup=False)
+    screw = reference_screw()
+    oil = lubricants.get(lubricant_name)
+
+    geo = Table(title="Reference ball screw (bundled example)", show_header=False)
+    rows = [
+        ("pitch diameter", f"{screw.pitch_diameter * 1e3:.2f} mm"),
+        ("lead / lead angle", f"{screw.lead * 1e3:.2f} mm / {math.degrees(screw.lead_angle):.3f}°"),
+        ("ball diameter", f"{screw.ball_diameter * 1e3:.3f} mm"),
+        ("contact angle", f"{math.degrees(screw.contact_angle):.1f}°"),
+        ("conformity screw / nut", f"{screw.conformity_screw:.3f} / {screw.conformity_nut:.3f}"),
+        ("nut / preload", f"{screw.nut} / {screw.preload:.0f} N"),
+        ("loaded balls per (half-)nut", f"{screw.balls_per_nut}"),
+        ("reduced modulus E'", f"{screw.reduced_modulus / 1e9:.2f} GPa"),
+    ]
+    for key, value in rows:
+        geo.add_row(key, value)
+    console.print(geo)
+
+    state0 = operating_state(screw, oil, speed=0.0, temperature=temperature)
+    q = float(state0.loads.normal_load_1)
+    ht = Table(title=f"Hertz contact at the preload, Q = {q:.2f} N per ball")
+    for col in ("contact", "method", "a [mm]", "b [mm]", "a/b", "p_max [GPa]", "approach [µm]"):
+        ht.add_column(col, justify="right")
+    for side, rx, ry in (
+        ("screw", screw.rx_screw, screw.ry_screw),
+        ("nut", screw.rx_nut, screw.ry_nut),
+    ):
+        for method in HERTZ_METHODS:
+            c = hertz(q, rx, ry, screw.reduced_modulus, method=method)
+            ht.add_row(
+                side,
+                method,
+                f"{float(c.a) * 1e3:.4f}",
+                f"{float(c.b) * 1e3:.4f}",
+                f"{float(c.ellipticity):.3f}",
+                f"{float(c.p_max) / 1e9:.3f}",
+                f"{float(c.approach) * 1e6:.3f}",
+            )
+    console.print(ht)
+
+    temps = np.array([20.0, 30.0, 40.0, 45.0, 60.0, 100.0])
+    vt = Table(title="Bundled lubricants: kinematic viscosity [mm²/s] (ASTM D341)")
+    vt.add_column("lubricant")
+    for t in temps:
+        vt.add_column(f"{t:g} °C", justify="right")
+    vt.add_column("α [1/GPa]", justify="right")
+    for lub in lubricants.all_lubricants():
+        nu = lub.kinematic_viscosity(temps) * 1e6
+        vt.add_row(lub.name, *(f"{v:.1f}" for v in nu), f"{lub.pressure_viscosity * 1e9:.1f}")
+    console.print(vt)
+
+    speeds_rpm = np.array([10.0, 100.0, 1000.0, 3000.0])
+    st = operating_state(screw, oil, speed=rpm_to_rad_s(speeds_rpm), temperature=temperature)
+    ft = Table(title=f"EHL film of {oil.name} at {temperature:g} °C (Hamrock-Dowson 1977)")
+    for col in ("contact", "speed [rpm]", "u [m/s]", "h_min [µm]", "h_c [µm]", "Λ", "A_c/A_0"):
+        ft.add_column(col, justify="right")
+    for contact in st.contacts[:2]:
+        for i, n in enumerate(speeds_rpm):
+            ft.add_row(
+                contact.name,
+                f"{n:g}",
+                f"{contact.entrainment_speed[i]:.4f}",
+                f"{contact.film_minimum[i] * 1e6:.4f}",
+                f"{contact.film_central[i] * 1e6:.4f}",
+                f"{contact.film_parameter[i]:.3f}",
+                f"{contact.asperity_share[i]:.3f}",
+            )
+    console.print(ft)
