@@ -459,3 +459,38 @@ def test_many_distinct_loads_give_the_directly_integrated_torque(
     monkeypatch.setattr(module, "DIRECT_INTEGRALS", 10**9)
     direct = friction_torque(reference_screw(), OIL, **kwargs).components["sliding"]
     np.testing.assert_allclose(splined, direct, rtol=1e-7)
+
+
+def test_sliding_component_carries_the_heathcote_term() -> None:
+    # The sliding torque by hand: spin and Heathcote coefficient from the closed forms of the
+    # helix kinematics (not the kinematics module), the mixed coefficient from the contact
+    # state, the integral on the direct rule. Heathcote adds about 3e-4 to the spin's power,
+    # so the 1e-9 tolerance tells its presence.
+    s = reference_screw()
+    w, temp = 500 * RPM, 40.0
+    r = friction_torque(s, OIL, speed=w, temperature=temp)
+    st = operating_state(s, OIL, speed=w, temperature=temp, hertz_method="exact")
+    cos_l, sin_a, cos_a = (
+        math.cos(s.lead_angle),
+        math.sin(s.contact_angle),
+        math.cos(s.contact_angle),
+    )
+    g = s.gamma * cos_l**2
+    om_m = w / 2 * (1 - g)
+    omega_b = w * s.pitch_diameter / (2 * s.ball_diameter * cos_l) * (1 - g * g)
+    spin = {"screw": (w - om_m) * sin_a * cos_l, "nut": om_m * sin_a * cos_l}
+    heathcote = {
+        "screw": (omega_b + (w - om_m) * cos_a * cos_l) / (2 * s.deformed_radius_screw),
+        "nut": (omega_b - om_m * cos_a * cos_l) / (2 * s.deformed_radius_nut),
+    }
+    expected = 0.0
+    for c in st.contacts:
+        a, b, q = float(c.hertz.a), float(c.hertz.b), float(c.load)
+        share = float(c.asperity_share)
+        mu = share * 0.1 + (1 - share) * (
+            OIL.limiting_shear_coefficient + OIL.limiting_shear_stress / (q / (math.pi * a * b))
+        )
+        kappa = heathcote[c.side] * a / spin[c.side]
+        integral = float(rl.spin_sliding_integral(kappa, b / a))
+        expected += c.balls * mu * 1.5 / math.pi * q * spin[c.side] * a * integral / w
+    assert float(r.components["sliding"]) == pytest.approx(expected, rel=1e-9)

@@ -216,8 +216,8 @@ def ball_ball_friction(
     tau0: float,
     gamma_l: float,
     *,
-    asperity_b: float = 1.42,
-    asperity_c: float = 0.8,
+    asperity_b: float,
+    asperity_c: float,
 ) -> FloatArray:
     r"""Friction coefficient between two neighbouring balls of a cage-less train [-].
 
@@ -276,10 +276,7 @@ def ball_ball_friction(
 
 
 def _helix_slip(
-    state: OperatingState,
-    mu: dict[str, FloatArray],
-    spin: dict[str, float],
-    curvature: dict[str, float],
+    state: OperatingState, mu: dict[str, FloatArray], spin: dict[str, float]
 ) -> FloatArray:
     """Torque of the transverse slip, summed over the balls of every family [N·m]."""
     screw = state.screw
@@ -287,13 +284,9 @@ def _helix_slip(
     by_name = {c.name: c for c in state.contacts}
 
     def slip_contact(c: ContactState) -> SlipContact:
-        a = c.hertz.a
-        aspect = float(np.max(np.where(a > 0.0, c.hertz.b / np.where(a > 0.0, a, 1.0), 0.0)))
-        return SlipContact(
-            side=c.side, friction=mu[c.name], load=c.load, semi_axis=a,
-            aspect=aspect if aspect > 0.0 else 1.0, spin=spin[c.side],
-            curvature=curvature[c.side] / spin[c.side],
-        )  # fmt: skip
+        # b/a = 1/k: Hertz's ellipticity depends on the curvatures alone, not on the load.
+        aspect = 1.0 / float(np.max(c.hertz.ellipticity))
+        return SlipContact(c.side, mu[c.name], c.load, c.hertz.a, aspect, spin[c.side])
 
     groups: list[tuple[tuple[str, ...], int]]
     if screw.nut == "single-4point":  # each ball touches both families' contacts
@@ -302,7 +295,7 @@ def _helix_slip(
         groups = [((f"screw-{f}", f"nut-{f}"), by_name[f"screw-{f}"].balls) for f in (1, 2)]
     total: FloatArray = np.zeros(state.shape)
     for names, balls in groups:
-        if balls == 0:
+        if not balls:
             continue
         share = transverse_slip_loss([slip_contact(by_name[n]) for n in names], slip)
         total = total + balls * share.power
@@ -426,7 +419,7 @@ def complete(
     parts = {k: np.zeros(shape) for k in ("rolling", "sliding", "hysteresis", "four_point")}
     mu: dict[str, FloatArray] = {}
     for c in state.contacts:
-        if c.balls == 0:
+        if not c.balls:
             continue
         z = c.balls
         f_r = rl.rolling_force_houpert(
@@ -451,7 +444,7 @@ def complete(
         parts["hysteresis"] += (
             z * rl.hysteresis_rolling_force(c.load, c.hertz.b, c.rx, alpha_h) * rolling_lever
         )
-    parts["helix_slip"] = _helix_slip(state, mu, spin4 if four else spin, curvature)
+    parts["helix_slip"] = _helix_slip(state, mu, spin4 if four else spin)
     parts["ball_ball"], parts["recirculation"] = _ball_train(
         state, c_b, mu_bl, tau0, gamma_l, theta, asperity_b, asperity_c
     )
@@ -483,7 +476,6 @@ def _ball_train(
     omega2 = state.kinematics.screw_speed**2
     # Push per circuit over omega^2 [N s^2]: mu_bl m v_c^2 Theta / D_w.
     push = mu_bl * mass * centre**2 * theta / screw.ball_diameter
-    per_family = screw.circuits if screw.nut == "double" else 0
     ball_ball: FloatArray = np.zeros(shape)
     recirculation: FloatArray = np.zeros(shape)
     for c in state.contacts:
@@ -494,12 +486,10 @@ def _ball_train(
             asperity_b=asperity_b, asperity_c=asperity_c,
         ) if touching else np.zeros(1)  # fmt: skip
         ball_ball = ball_ball + c.balls * mu_bb * c_b * c.load * sliding
-        # The grooves drive the train only where its balls carry load (a lifted-off
-        # half-nut's balls are not pushed round).
-        circuits = per_family if screw.nut == "double" else (screw.circuits if c.family == 1 else 0)
-        if circuits:
+        # Each family of a double nut has its circuits; a 4-point ball belongs to both
+        # families, and is counted with the first. The grooves drive the train only where
+        # its balls carry load (sign 0: a lifted-off half-nut's balls are not pushed round).
+        if screw.nut == "double" or c.family == 1:
             per_circuit = push * (centre + 0.5 * screw.balls_per_circuit * mu_bb * sliding)
-            recirculation = recirculation + np.where(
-                c.load > 0.0, circuits * per_circuit * omega2, 0.0
-            )
+            recirculation = recirculation + screw.circuits * per_circuit * omega2 * np.sign(c.load)
     return ball_ball, recirculation

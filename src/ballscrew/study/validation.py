@@ -524,11 +524,6 @@ class ModelScore:
     median_abs_log10: float
     groups: dict[str, tuple[int, int]]
 
-    @property
-    def share_within(self) -> float:
-        """Share of the reference cases (catalogue and Jungnickel) inside their band [-]."""
-        return self.within / self.cases if self.cases else math.nan
-
 
 def summarise(rows: list[ScoreRow]) -> list[ModelScore]:
     """Per model: the reference cases inside their band, median |log10 ratio|, each group."""
