@@ -184,3 +184,28 @@ def test_lubricant_by_name_and_wrong_objects_are_clear() -> None:
 def test_below_absolute_zero_is_refused_by_every_model(model: str) -> None:
     with pytest.raises(BallScrewInputError, match="temperature = -300"):
         friction_torque(reference_screw(), OIL, speed=1.0, temperature=-300.0, model=model)
+
+
+def test_the_chain_builds_the_contact_state_once_and_keeps_it(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # The models that use a contact state get the chain's: with the models' own builder
+    # disabled the chain still computes, and the result carries the state it used.
+    from ballscrew import lubricants, reference_screw
+    from ballscrew.friction import _common
+    from ballscrew.state import operating_state
+
+    def refuse(*args: object, **kwargs: object) -> None:
+        raise AssertionError("the model built a second state")
+
+    monkeypatch.setattr(_common, "operating_state", refuse)
+    oil = lubricants.get("mineral ISO VG 68")
+    s = reference_screw()
+    for model in ("complete", "olaru", "harris-simplified", "harris-full"):
+        r = friction_torque(s, oil, speed=[10.0, 100.0], temperature=40.0, model=model)
+        assert r.state is not None, model
+    alone = operating_state(s, oil, speed=[10.0, 100.0], temperature=40.0, hertz_method="exact")
+    np.testing.assert_allclose(r.state.contacts[0].film_parameter, alone.contacts[0].film_parameter)
+    assert friction_torque(s, oil, speed=10.0, temperature=40.0, model="catalog").state is None
+    chunked = friction_torque(s, oil, speed=[10.0, 100.0], temperature=40.0, chunk_size=1)
+    assert chunked.state is None

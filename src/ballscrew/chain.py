@@ -27,7 +27,7 @@ from .errors import (
 from .friction import MODELS, ModelSpec, get_model
 from .geometry import BallScrew
 from .lubricant import Lubricant
-from .state import operating_points
+from .state import OperatingState, operating_points, operating_state
 
 __all__ = ["FrictionResult", "friction_torque", "models"]
 
@@ -58,6 +58,11 @@ class FrictionResult:
         The validity-range issues this call warned about (quantity, value,
         range, source, model; ``str()`` gives the message; see
         :mod:`ballscrew.validity`).
+    state : OperatingState or None
+        The contact state the model worked on (loads, Hertz ellipses, film,
+        film parameter, asperity share of every contact), kept as the chain
+        built it for models that use one, when the points were evaluated in
+        one chunk; None otherwise.
     """
 
     model: str
@@ -70,6 +75,7 @@ class FrictionResult:
     axial_load: FloatArray
     parameters: dict[str, Any] = field(default_factory=dict)
     warnings: tuple[validity.ValidityIssue, ...] = ()
+    state: OperatingState | None = field(default=None, repr=False)
 
 
 _NOTED: set[tuple[str, str]] = set()
@@ -170,19 +176,34 @@ def friction_torque(
     w, t, fa = np.broadcast_arrays(w0, t0, fa0)
     shape = w.shape
     n = w.size
+    used = dict(spec.parameters)
+    used.update(parameters)
+
+    def state_of(sw: FloatArray, st: FloatArray, sf: FloatArray) -> OperatingState | None:
+        """The contact state, built once per chunk, for the models that use one."""
+        if not spec.uses_state:
+            return None
+        return operating_state(
+            screw, lubricant, speed=sw, temperature=st, axial_load=sf,
+            hertz_method=used["hertz_method"], asperity_b=used["asperity_b"],
+            asperity_c=used["asperity_c"], broadcast=False,
+        )  # fmt: skip
+
+    state = None
     if n <= chunk:
         # The unexpanded inputs: a grid given as an outer product is only
         # expanded where a quantity depends on all three.
+        state = state_of(w0, t0, fa0)
         components = {
             key: np.array(np.broadcast_to(value, shape), dtype=float)
-            for key, value in spec(screw, lubricant, w0, t0, fa0, **parameters).items()
+            for key, value in spec(screw, lubricant, w0, t0, fa0, state, **parameters).items()
         }
     else:
         flat = [np.ascontiguousarray(x).reshape(-1) for x in (w, t, fa)]
         pieces: dict[str, list[FloatArray]] = {}
         for start in range(0, n, chunk):
-            sl = slice(start, min(start + chunk, n))
-            out = spec(screw, lubricant, flat[0][sl], flat[1][sl], flat[2][sl], **parameters)
+            sw, st, sf = (x[start : min(start + chunk, n)] for x in flat)
+            out = spec(screw, lubricant, sw, st, sf, state_of(sw, st, sf), **parameters)
             for key, value in out.items():
                 pieces.setdefault(key, []).append(value)
         components = {key: np.concatenate(parts).reshape(shape) for key, parts in pieces.items()}
@@ -192,8 +213,6 @@ def friction_torque(
     useful = np.abs(fa) * (screw.lead / (2.0 * math.pi))
     # useful / (useful + T): 0 where there is no load (and no division by 0 when T = 0 too).
     efficiency = useful / np.maximum(useful + total, np.finfo(float).tiny)
-    used = dict(spec.parameters)
-    used.update(parameters)
     issues = validity.check(screw, lubricant, w, t, fa, spec.name, used, spec.checks)
     for issue in issues if warn else ():
         if issue.routine:
@@ -215,4 +234,5 @@ def friction_torque(
         axial_load=fa,
         parameters=used,
         warnings=tuple(issues),
+        state=state,
     )

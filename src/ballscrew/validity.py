@@ -27,6 +27,7 @@ from typing import Any
 import numpy as np
 
 from .contact import ellipticity_exact
+from .ehl import dimensionless_load, dimensionless_speed
 from .errors import BallScrewValidityWarning, FloatArray
 from .geometry import BallScrew
 from .kinematics import kinematics, rad_s_to_rpm
@@ -284,22 +285,22 @@ def _film_issues(
         issues += outside("radius ratio Ry/Rx (Houpert fits)", ratios)
     eta_hi = float(lubricant.dynamic_viscosity(t_lo))
     eta_lo = float(lubricant.dynamic_viscosity(t_hi))
-    u_scale = float(kinematics(screw, 1.0).entrainment_speed)  # u per unit screw speed
     ep = screw.reduced_modulus
+    radii = (screw.rx_screw, screw.rx_nut)
     u_values: list[float] = []
     if w_max > 0.0:
-        for rx in (screw.rx_screw, screw.rx_nut):
-            u_values.append(eta_hi * w_max * u_scale / (ep * rx))
-            u_values.append(eta_lo * w_min * u_scale / (ep * rx))
+        # The extreme U: the thickest oil at the fastest speed, the thinnest at the slowest.
+        u = kinematics(screw, np.array([w_max, w_min])).entrainment_speed
+        u_values = [
+            float(v)
+            for rx in radii
+            for v in dimensionless_speed(np.array([eta_hi, eta_lo]), u, ep, rx)
+        ]
     loads = ball_loads(screw, np.array([0.0, fa_max]))
     q = np.concatenate([loads.normal_load_1, loads.normal_load_2])
     q = q[q > 0.0]
-    w_values = [
-        float(v) / (ep * rx**2)
-        for v in (q.min(), q.max())
-        if q.size
-        for rx in (screw.rx_screw, screw.rx_nut)
-    ]
+    extremes = (q.min(), q.max()) if q.size else ()
+    w_values = [float(dimensionless_load(v, ep, rx)) for v in extremes for rx in radii]
     issues += outside("dimensionless speed U", u_values)
     issues += outside("dimensionless load W", w_values)
     return tuple(issues)

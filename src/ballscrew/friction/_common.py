@@ -14,7 +14,7 @@ from ..errors import BallScrewInputError, FloatArray, check_choice, check_nonneg
 from ..geometry import BallScrew
 from ..kinematics import kinematics
 from ..lubricant import Lubricant, pressure_viscosity_unchecked
-from ..state import OperatingState
+from ..state import OperatingState, operating_state
 
 __all__ = [
     "RHEOLOGY_MODELS",
@@ -23,6 +23,7 @@ __all__ = [
     "lever_arms",
     "limiting_shear",
     "local_viscosity",
+    "model_state",
     "shear_stress",
     "torque_from_contact_forces",
 ]
@@ -143,3 +144,29 @@ def local_viscosity(
     implementation of Roelands' and Barus's equations) on rows of pressures.
     """
     return pressure_viscosity_unchecked(model, viscosity[..., None], pressure_viscosity, pressure)
+
+
+def model_state(
+    screw: BallScrew,
+    lubricant: Lubricant,
+    speed: FloatArray,
+    temperature: FloatArray,
+    axial_load: FloatArray,
+    *,
+    hertz_method: str,
+    asperity_b: float,
+    asperity_c: float,
+    state: OperatingState | None = None,
+) -> OperatingState:
+    """The contact state a model works on: the chain's, or built here when called directly.
+
+    Built unbroadcast (:func:`ballscrew.state.operating_points`), so that each
+    layer works on the values it depends on.
+    """
+    if state is not None:
+        return state
+    return operating_state(
+        screw, lubricant, speed=speed, temperature=temperature, axial_load=axial_load,
+        hertz_method=hertz_method, asperity_b=asperity_b, asperity_c=asperity_c,
+        broadcast=False,
+    )  # fmt: skip

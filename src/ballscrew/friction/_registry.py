@@ -51,6 +51,11 @@ class ModelSpec:
         equations, including checks of its own ranges.
     chunk : int
         Operating points the chain evaluates at once (bounds memory).
+    uses_state : bool
+        The model takes the contact state (a keyword argument ``state``): the
+        chain builds it once, with the model's ``hertz_method``,
+        ``asperity_b`` and ``asperity_c``, passes it in and keeps it on the
+        result.
     """
 
     name: str
@@ -62,6 +67,7 @@ class ModelSpec:
     purpose: str = ""
     chunk: int = 1 << 17
     checks: tuple[Callable[..., Any], ...] = ()
+    uses_state: bool = False
 
     def check_parameters(self, given: dict[str, Any]) -> None:
         """Raise if ``given`` holds a parameter the model does not have."""
@@ -79,10 +85,13 @@ class ModelSpec:
         speed: FloatArray,
         temperature: FloatArray,
         axial_load: FloatArray,
+        state: Any = None,
         **params: Any,
     ) -> dict[str, FloatArray]:
-        """Evaluate the model (parameters checked first)."""
+        """Evaluate the model (parameters checked first), with the contact state if given."""
         self.check_parameters(params)
+        if state is not None and self.uses_state:
+            params = {**params, "state": state}
         out = self.function(screw, lubricant, speed, temperature, axial_load, **params)
         shape = np.broadcast_shapes(speed.shape, temperature.shape, axial_load.shape)
         return {k: np.broadcast_to(np.asarray(v, dtype=float), shape) for k, v in out.items()}
@@ -105,8 +114,10 @@ def register(
     """Register a model function under ``name`` (decorator).
 
     The model's parameters and defaults are read from its keyword-only
-    arguments; ``chunk`` is the number of operating points evaluated at once
-    (chosen so that the model's largest temporary arrays stay near 100 MB).
+    arguments (a keyword ``state`` is not a parameter: it asks the chain for
+    the contact state, see :class:`ModelSpec`); ``chunk`` is the number of
+    operating points evaluated at once (chosen so that the model's largest
+    temporary arrays stay near 100 MB).
     """
 
     def deco(func: ModelFunction) -> ModelFunction:
@@ -114,11 +125,12 @@ def register(
         params = {
             p.name: p.default
             for p in sig.parameters.values()
-            if p.kind is inspect.Parameter.KEYWORD_ONLY
+            if p.kind is inspect.Parameter.KEYWORD_ONLY and p.name != "state"
         }
         MODELS[name] = ModelSpec(
-            name, func, title, reference, validity, params, purpose, chunk, checks
-        )
+            name, func, title, reference, validity, params, purpose, chunk, checks,
+            uses_state="state" in sig.parameters,
+        )  # fmt: skip
         return func
 
     return deco

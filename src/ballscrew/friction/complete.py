@@ -95,9 +95,9 @@ from ..helix import SlipContact, transverse_slip_loss
 from ..kinematics import differential_sliding, four_point_spin, kinematics, rad_s_to_rpm
 from ..lubricant import Lubricant
 from ..materials import STEEL_DENSITY
-from ..state import ContactState, OperatingState, operating_state
+from ..state import ContactState, OperatingState
 from ..validity import film_checks
-from ._common import limiting_shear
+from ._common import limiting_shear, model_state
 from ._registry import register
 
 __all__ = [
@@ -325,6 +325,7 @@ def complete(
     temperature: FloatArray,
     axial_load: FloatArray,
     *,
+    state: OperatingState | None = None,
     boundary_friction: float = 0.1,
     limiting_shear_stress: float | None = None,
     limiting_shear_coefficient: float | None = None,
@@ -384,17 +385,10 @@ def complete(
     alpha_h = float(check_nonnegative("hysteresis_loss_factor", hysteresis_loss_factor))
     seal = float(check_nonnegative("seal_torque", seal_torque, "N·m"))
     tau0, gamma_l = limiting_shear(lubricant, limiting_shear_stress, limiting_shear_coefficient)
-    state = operating_state(
-        screw,
-        lubricant,
-        speed=speed,
-        temperature=temperature,
-        axial_load=axial_load,
-        hertz_method=hertz_method,
-        asperity_b=asperity_b,
-        asperity_c=asperity_c,
-        broadcast=False,
-    )
+    state = model_state(
+        screw, lubricant, speed, temperature, axial_load, hertz_method=hertz_method,
+        asperity_b=asperity_b, asperity_c=asperity_c, state=state,
+    )  # fmt: skip
     kin = state.kinematics
     shape = state.shape
     unit = kinematics(screw, 1.0)

@@ -70,9 +70,15 @@ from ..geometry import BallScrew
 from ..kinematics import differential_sliding, kinematics
 from ..lubricant import Lubricant
 from ..numerics import illinois
-from ..state import operating_state
+from ..state import OperatingState
 from ..validity import film_checks
-from ._common import RHEOLOGY_MODELS, limiting_shear, local_viscosity, shear_stress
+from ._common import (
+    RHEOLOGY_MODELS,
+    limiting_shear,
+    local_viscosity,
+    model_state,
+    shear_stress,
+)
 from ._registry import register
 
 __all__ = ["full_contact_power", "harris_full"]
@@ -236,6 +242,7 @@ def harris_full(
     temperature: FloatArray,
     axial_load: FloatArray,
     *,
+    state: OperatingState | None = None,
     mu0: float = 0.1,
     rheology_model: str = "harmonic",
     rheology_exponent: float = 1.0,
@@ -285,17 +292,10 @@ def harris_full(
         raise BallScrewInputError("nodes", nodes, "two whole numbers >= 2") from None
     if min(n_nodes) < 2:
         raise BallScrewInputError("nodes", nodes, "two whole numbers >= 2")
-    state = operating_state(
-        screw,
-        lubricant,
-        speed=speed,
-        temperature=temperature,
-        axial_load=axial_load,
-        hertz_method=hertz_method,
-        asperity_b=asperity_b,
-        asperity_c=asperity_c,
-        broadcast=False,
-    )
+    state = model_state(
+        screw, lubricant, speed, temperature, axial_load, hertz_method=hertz_method,
+        asperity_b=asperity_b, asperity_c=asperity_c, state=state,
+    )  # fmt: skip
     kin = state.kinematics
     c_s, c_n = (float(c) for c in differential_sliding(screw, 1.0))  # per unit screw speed
     unit = kinematics(screw, 1.0)

@@ -83,12 +83,13 @@ from ..errors import (
 from ..geometry import BallScrew
 from ..kinematics import differential_sliding
 from ..lubricant import Lubricant
-from ..state import operating_state
+from ..state import OperatingState
 from ..validity import film_checks
 from ._common import (
     RHEOLOGY_MODELS,
     limiting_shear,
     local_viscosity,
+    model_state,
     shear_stress,
     torque_from_contact_forces,
 )
@@ -290,6 +291,7 @@ def harris_simplified(
     temperature: FloatArray,
     axial_load: FloatArray,
     *,
+    state: OperatingState | None = None,
     mu0: float = 0.1,
     sliding_coefficient: float = 0.3,
     sliding_sign_on_lubricant: bool = False,
@@ -355,17 +357,10 @@ def harris_simplified(
     if isinstance(nodes, bool) or not isinstance(nodes, int) or nodes < 2:
         raise BallScrewInputError("nodes", nodes, "a whole number >= 2")
 
-    state = operating_state(
-        screw,
-        lubricant,
-        speed=speed,
-        temperature=temperature,
-        axial_load=axial_load,
-        hertz_method=hertz_method,
-        asperity_b=asperity_b,
-        asperity_c=asperity_c,
-        broadcast=False,
-    )
+    state = model_state(
+        screw, lubricant, speed, temperature, axial_load, hertz_method=hertz_method,
+        asperity_b=asperity_b, asperity_c=asperity_c, state=state,
+    )  # fmt: skip
     c_screw, c_nut = differential_sliding(screw, state.kinematics.screw_speed)
     asperity_forces, lubricant_forces = [], []
     for contact in state.contacts:

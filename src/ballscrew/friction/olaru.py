@@ -94,8 +94,9 @@ from ..kinematics import rad_s_to_rpm
 from ..loads import ball_loads
 from ..lubricant import Lubricant
 from ..rolling_losses import rolling_force_houpert
-from ..state import operating_state
+from ..state import OperatingState
 from ..validity import ValidityIssue, ValidityRange, film_checks, outside
+from ._common import model_state
 from ._registry import register
 
 __all__ = [
@@ -209,6 +210,7 @@ def olaru(
     temperature: FloatArray,
     axial_load: FloatArray,
     *,
+    state: OperatingState | None = None,
     mu0: float = 0.1,
     sliding_friction: str = "asperity",
     asperity_b: float = 1.42,
@@ -256,17 +258,10 @@ def olaru(
     check_nonnegative("ball_ball_force", ball_ball_force, "N")
     check_nonnegative("ball_ball_friction", ball_ball_friction)
     check_nonnegative("kappa", kappa)
-    state = operating_state(
-        screw,
-        lubricant,
-        speed=speed,
-        temperature=temperature,
-        axial_load=axial_load,
-        hertz_method=hertz_method,
-        asperity_b=asperity_b,
-        asperity_c=asperity_c,
-        broadcast=False,
-    )
+    state = model_state(
+        screw, lubricant, speed, temperature, axial_load, hertz_method=hertz_method,
+        asperity_b=asperity_b, asperity_c=asperity_c, state=state,
+    )  # fmt: skip
     dw = screw.ball_diameter
     gamma = screw.gamma
     ra = 0.5 * dw * (1.0 + kappa) / (1.0 + 0.5 * kappa)
