@@ -168,7 +168,7 @@ def _one_model(
     run: EnergyRun, name: str, run_time: float, steady_speeds: npt.ArrayLike | None
 ) -> None:
     case, profile, axis, node = run.case, run.profile, run.axis, run.node
-    params = dict(case.model_parameters.get(name, {}))
+    params = case.parameters_for(name)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # the speed limits are kept in the result
         r = axis_cycle(profile, case.screw, case.lubricant, axis, temperature=run.temperature,

@@ -86,7 +86,7 @@ def fit_command(
     with stdout(json_file).status(f"fitting {', '.join(free)} of {model}"):
         result = fit_parameters(
             case.screw, case.lubricant, measured, free, model=model, temperature=temp,
-            axial_load=load, parameters=dict(case.model_parameters.get(model, {})), start=start,
+            axial_load=load, parameters=case.parameters_for(model), start=start,
         )  # fmt: skip
     table = Table(title=f"{case.title}: {model} fitted to {measured.source} "
                   f"({measured.speed.size} points)")  # fmt: skip

@@ -42,14 +42,15 @@ def _summary_table(report: Any) -> Table:
     table = Table(title=f"Sweep summary: {report.plan.points:,} points")
     for col in ("output", "model", "min", "mean", "max", "max at"):
         table.add_column(col, justify="left" if col in ("output", "model", "max at") else "right")
-    units = {"torque": "N·m", "efficiency": "-", "power_loss": "W"}
+    from ..sweep.spec import SCALAR_OUTPUTS
+
     fields = {a.name: a.unit for a in report.plan.spec.axes}
     if report.plan.spec.uncertainty is not None:
         fields |= {d.name: d.unit for d in report.plan.spec.uncertainty.inputs}
-    for name in ("torque", "efficiency", "power_loss"):
-        for model, s in report.summary.get(name, {}).items():
+    for o in SCALAR_OUTPUTS:
+        for model, s in report.summary.get(o.name, {}).items():
             table.add_row(
-                f"{name} [{units[name]}]", model, f"{s['min']:.4g}", f"{s['mean']:.4g}",
+                f"{o.name} [{o.shown_unit}]", model, f"{s['min']:.4g}", f"{s['mean']:.4g}",
                 f"{s['max']:.4g}", _point(s["max_at"], fields),
             )  # fmt: skip
     return table

@@ -131,7 +131,7 @@ def export_friction(
     j = inertia if inertia else axis_inertia(
         axis_setup(case.screw, case.axis, case.thermal, 0.0).axis, lead)  # fmt: skip
     w = np.concatenate([-speeds[::-1], speeds])
-    params = dict(case.model_parameters.get(name, {}))
+    params = case.parameters_for(name)
     out = FrictionExport(case, name, form, temps, speeds, load)
     for temp in temps:
         with warnings.catch_warnings():  # validity warnings are the torque command's business

@@ -127,6 +127,10 @@ class Case:
     axis: dict[str, Any] = field(default_factory=dict)
     thermal: dict[str, float] = field(default_factory=dict)
 
+    def parameters_for(self, model: str) -> dict[str, Any]:
+        """The case's parameters of ``model`` (a fresh dict; empty when it gives none)."""
+        return dict(self.model_parameters.get(model, {}))
+
 
 def _validation_error(exc: ValidationError) -> BallScrewInputError:
     """One error naming the field; a misspelt key first, with the likely intended one."""

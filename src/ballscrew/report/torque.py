@@ -102,7 +102,7 @@ def run_models(
     grid_w, grid_t, grid_f = operating_grid(speed, temperature, axial_load)
     results: dict[str, FrictionResult] = {}
     for name in model_names:
-        params = dict(case.model_parameters.get(name, {}))
+        params = case.parameters_for(name)
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", BallScrewValidityWarning)
             results[name] = friction_torque(

@@ -58,10 +58,6 @@ class StudyResult:
     sensitivity: StudySensitivity | None = None
 
 
-def _params(case: Case, model: str) -> dict[str, Any]:
-    return dict(case.model_parameters.get(model, {}))
-
-
 def _controller_figure(model_curve: Series, at: str) -> Figure:
     """The complete model's curve and the Stribeck curve a controller would take from it."""
     from ..fit.controller import stribeck, stribeck_torque
@@ -184,7 +180,7 @@ class _Context:
         """One model's torque over the case's speeds."""
         lub = self.lubricant(lubricant_name)
         t = self.temperature if temperature is None else temperature
-        params = _params(self.case, model) | extra
+        params = self.case.parameters_for(model) | extra
         result = self.friction_torque(
             self.screw.replace(preload=preload), lub, speed=self.speed, temperature=t,
             axial_load=self.load, model=model, **params,
@@ -218,7 +214,7 @@ def _lubricant_series(c: _Context) -> tuple[Series, ...]:
 
 def _budget_series(c: _Context) -> tuple[Series, ...]:
     """The complete model's components, one series each (those that are not zero)."""
-    params = _params(c.case, "complete")
+    params = c.case.parameters_for("complete")
     budget = c.friction_torque(c.screw, c.oil, speed=c.speed, temperature=c.temperature,
                                axial_load=c.load, model="complete", **params)  # fmt: skip
     return tuple(
@@ -360,7 +356,7 @@ def _run(
         for model in ALL_MODELS:
             model_torque = c.friction_torque(
                 c.screw, c.oil, speed=measured.speed, temperature=c.temperature,
-                axial_load=c.load, model=model, **_params(case, model),
+                axial_load=c.load, model=model, **case.parameters_for(model),
             ).total  # fmt: skip
             metrics[model] = error_metrics(model_torque, measured.torque)
     reproduction = reproduces_study(case)

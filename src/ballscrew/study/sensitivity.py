@@ -167,7 +167,7 @@ def study_sensitivity(
     if key in _SENSITIVITY_CACHE:
         return _SENSITIVITY_CACHE[key]
     rows = sample(dists, SOBOL_BASE_SAMPLES, SOBOL_SEED, sobol=True)
-    params = dict(case.model_parameters.get("complete", {}))
+    params = case.parameters_for("complete")
     picks = np.unique(np.linspace(0, case.speed.size - 1, SOBOL_SPEEDS).round().astype(int))
     speed = case.speed[picks]
     y = np.empty(rows.shape[0])

@@ -35,7 +35,7 @@ from .._version import __version__
 from ..chain import friction_torque
 from ..errors import BallScrewInputError, FloatArray
 from ..files import atomic_write, deferred_signals
-from .spec import OPERATING, OUTPUTS, SweepSpec, resolve
+from .spec import OPERATING, OUTPUTS, SCALAR_OUTPUTS, SweepSpec, resolve
 
 __all__ = ["ChunkReport", "Plan", "compute_chunk", "plan_sweep", "run_chunk"]
 
@@ -191,9 +191,11 @@ def compute_chunk(plan: Plan, index: int) -> tuple[dict[str, FloatArray], ChunkR
     op = region[1 + n_outer :]
     w, t, f = (plan.spec.operating[k][s] for k, s in zip(OPERATING, op, strict=True))
     shape = tuple(s.stop - s.start for s in region)
-    out = {name: np.full(shape, np.nan) for name in ("torque", "efficiency", "power_loss")}
+    asked = [o for o in SCALAR_OUTPUTS if o.name in plan.spec.outputs]  # only what was asked
+    with_components = "components" in plan.spec.outputs
+    out = {o.name: np.full(shape, np.nan) for o in asked}
     comp_shape = (*shape[: 1 + n_outer], len(plan.components), *shape[1 + n_outer :])
-    components = np.full(comp_shape, np.nan)
+    components = np.full(comp_shape if with_components else (0,), np.nan)
     issues: dict[str, tuple[float, str]] = {}
     outer_ranges = [range(s.start, s.stop) for s in region[1 : 1 + n_outer]]
     for position in itertools.product(*outer_ranges):  # screws, never operating points
@@ -205,19 +207,20 @@ def compute_chunk(plan: Plan, index: int) -> tuple[dict[str, FloatArray], ChunkR
             screw, lubricant, speed=w[:, None, None], temperature=t[None, :, None],
             axial_load=f[None, None, :], model=model, warn=False, **params,
         )  # fmt: skip
-        out["torque"][local] = r.total
-        out["efficiency"][local] = r.efficiency
-        out["power_loss"][local] = r.power_loss
-        for name, value in r.components.items():
+        for o in asked:
+            assert o.read is not None
+            out[o.name][local] = o.read(r)
+        for name, value in r.components.items() if with_components else ():
             components[(*local, plan.components.index(name))] = value
         for issue in r.warnings:
             if issue.quantity not in issues or issue.excess > issues[issue.quantity][0]:
                 # Routine ranges (left by every ordinary ball screw) are notes; the rest warn.
                 kind = "note" if issue.routine else "warning"
                 issues[issue.quantity] = (issue.excess, f"{kind}: {issue.note()}")
-    out["components"] = components
+    if with_components:
+        out["components"] = components
     stats = {}
-    for name in ("torque", "efficiency", "power_loss"):
+    for name in (o.name for o in asked):
         values = out[name]
         lo, hi = int(np.nanargmin(values)), int(np.nanargmax(values))
         stats[name] = {

@@ -29,7 +29,7 @@ values of one point to the case's screw, lubricant and model parameters.
 from __future__ import annotations
 
 import tomllib
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -37,6 +37,7 @@ from typing import Any
 import numpy as np
 import tomlkit
 
+from ..chain import FrictionResult
 from ..errors import BallScrewInputError, FloatArray
 from ..friction import MODELS, get_model
 from ..io.case import Case, load_case, parse_case
@@ -53,8 +54,11 @@ from .uncertainty import Distribution, Uncertainty, parse_uncertainty
 __all__ = [
     "OPERATING",
     "OUTPUTS",
+    "OUTPUT_TABLE",
+    "SCALAR_OUTPUTS",
     "Axis",
     "Distribution",
+    "Output",
     "SweepSpec",
     "Uncertainty",
     "field_unit",
@@ -63,13 +67,36 @@ __all__ = [
     "resolve",
 ]
 
-OUTPUTS: dict[str, str] = {
-    "torque": "N*m",
-    "efficiency": "1",
-    "power_loss": "W",
-    "components": "N*m",
-}
+
+@dataclass(frozen=True)
+class Output:
+    """One output a sweep can store: name, unit (stored and shown), long name, how to read it.
+
+    ``read`` takes a :class:`ballscrew.FrictionResult` and gives the output's
+    array; None for ``components``, which has a dimension of its own.
+    """
+
+    name: str
+    unit: str
+    shown_unit: str
+    long_name: str
+    read: Callable[[FrictionResult], FloatArray] | None
+
+
+OUTPUT_TABLE: tuple[Output, ...] = (
+    Output("torque", "N*m", "N·m", "friction torque on the screw", lambda r: r.total),
+    Output("efficiency", "1", "-", "forward efficiency, rotation to translation",
+           lambda r: r.efficiency),
+    Output("power_loss", "W", "W", "friction power loss", lambda r: r.power_loss),
+    Output("components", "N*m", "N·m", "torque contribution of each loss mechanism", None),
+)  # fmt: skip
+"""The outputs a sweep can store: the plan, the store and the command iterate over it."""
+
+OUTPUTS: dict[str, str] = {o.name: o.unit for o in OUTPUT_TABLE}
 """The outputs a sweep can store, with their units."""
+
+SCALAR_OUTPUTS: tuple[Output, ...] = tuple(o for o in OUTPUT_TABLE if o.read is not None)
+"""The outputs with one value per point (all but ``components``)."""
 
 TOP_KEYS = ("case", "models", "outputs", "chunk_points", "axes", "parameters", "uncertainty")
 
@@ -194,16 +221,14 @@ def parse_sweep(text: str, *, folder: str | Path = ".", source: str = "sweep") -
     unknown_keys("", raw, TOP_KEYS)
     case = _case(raw, Path(folder))
     models = _names("models", raw.get("models"), ["complete"], sorted(MODELS))
-    outputs = _names(
-        "outputs", raw.get("outputs"), ["torque", "efficiency", "power_loss"], list(OUTPUTS)
-    )
+    outputs = _names("outputs", raw.get("outputs"), [o.name for o in SCALAR_OUTPUTS], list(OUTPUTS))
     # Default: the smallest of the models' own chunks (1 MB per output for most), so that
     # each friction call stays on the chain's unexpanded-grid path, whose memory the model's
     # chunk bounds.
     chunk_points = raw.get("chunk_points", min(MODELS[m].chunk for m in models))
     if isinstance(chunk_points, bool) or not isinstance(chunk_points, int) or chunk_points < 1:
         raise BallScrewInputError("chunk_points", chunk_points, "a whole number >= 1")
-    parameters = {m: dict(case.model_parameters.get(m, {})) for m in models}
+    parameters = {m: case.parameters_for(m) for m in models}
     fixed = raw.get("parameters", {})
     if not isinstance(fixed, dict):
         raise BallScrewInputError("parameters", fixed, "a table [parameters.MODEL]")

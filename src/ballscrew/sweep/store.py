@@ -23,7 +23,7 @@ from .._version import __version__
 from ..errors import BallScrewInputError
 from ..files import deferred_signals
 from ..friction import get_model
-from .spec import OPERATING, OUTPUTS
+from .spec import OPERATING, OUTPUT_TABLE, OUTPUTS, SCALAR_OUTPUTS
 
 __all__ = ["FORMAT", "attributes", "create", "finalize", "markers", "partial_path"]
 
@@ -35,10 +35,7 @@ extensions in format 3."""
 FINGERPRINT = "fingerprint"
 
 LONG_NAMES = {
-    "torque": "friction torque on the screw",
-    "efficiency": "forward efficiency, rotation to translation",
-    "power_loss": "friction power loss",
-    "components": "torque contribution of each loss mechanism",
+    **{o.name: o.long_name for o in OUTPUT_TABLE},
     "speed": "screw speed",
     "temperature": "lubricant temperature",
     "axial_load": "external axial load on the nut",
@@ -249,7 +246,7 @@ def percentile_variables(partial: Path, plan: Any, chunk_bytes: int = 1 << 25) -
         budget = max(1, budget // rechunk[name])
     out = {}
     q = np.asarray(u.percentiles) / 100.0
-    for name in ("torque", "efficiency", "power_loss"):
+    for name in (o.name for o in SCALAR_OUTPUTS):
         if name not in ds:
             continue
         value = ds[name].chunk(rechunk).quantile(q, dim="sample")

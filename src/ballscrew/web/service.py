@@ -197,7 +197,7 @@ def _energy(case: Case, move: Any, limits: Limits) -> dict[str, Any]:
         )
     profile = back_and_forth(m["stroke"], m["feed"], m["acceleration"])
     temperature = float(case.temperature.flat[0])
-    params = dict(case.model_parameters.get("complete", {}))
+    params = case.parameters_for("complete")
     setup = axis_setup(case.screw, case.axis, case.thermal, abs(m["stroke"]))
     with warnings.catch_warnings():
         # The speed limits are returned in the result, as the command line reports them.
