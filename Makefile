@@ -11,7 +11,7 @@ STAMP  := $(VENV)/.installed
 # fetched everywhere); test installs it when it is missing, with sudo unless root.
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: run test clean chromium
+.PHONY: run test test-fast clean chromium
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -c 'import sys; sys.exit("Python >= 3.11 is required, found " + sys.version.split()[0]) if sys.version_info < (3, 11) else None'
@@ -29,6 +29,12 @@ test: $(STAMP) chromium
 	$(BIN)/mypy src
 	$(BIN)/lint-imports
 	$(BIN)/pytest -q
+
+test-fast: $(STAMP)
+	$(BIN)/ruff check src tests benchmarks examples scripts
+	$(BIN)/mypy src
+	$(BIN)/lint-imports
+	$(BIN)/pytest -q -m "not slow"
 
 chromium:
 	@if command -v chromium >/dev/null 2>&1; then :; \

@@ -1,7 +1,7 @@
 """Mutation testing: change one token of the physics and see whether a test fails.
 
     .venv/bin/python scripts/mutate.py src/ballscrew/rolling_losses.py \
-        src/ballscrew/friction/complete.py --tests tests/test_complete.py
+        src/ballscrew/friction/complete.py --tests tests/friction/test_complete.py
 
 For every numeric constant (scaled by 1.1, or 0 <-> 1 for the whole numbers 0 and 1), every
 arithmetic operator (+ <-> -, * <-> /, ** -> *) and every comparison (< <-> <=, > <-> >=)

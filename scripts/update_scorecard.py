@@ -2,7 +2,7 @@
 
     .venv/bin/python scripts/update_scorecard.py
 
-tests/test_validation.py recomputes it too and fails when the bundled file is stale.
+tests/study/test_validation.py recomputes it too and fails when the bundled file is stale.
 """
 
 from __future__ import annotations

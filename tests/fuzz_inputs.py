@@ -8,7 +8,7 @@ Run a larger campaign with::
 
     .venv/bin/python tests/fuzz_inputs.py --n 5000 --seed 1
 
-The test suite runs a bounded number (tests/test_fuzz.py).
+The test suite runs a bounded number (tests/cli/test_fuzz.py).
 """
 
 from __future__ import annotations
@@ -25,7 +25,7 @@ from ballscrew import BallScrewInputError, reference_screw
 from ballscrew.io.case import parse_case
 from ballscrew.io.measured import parse_measured
 
-BASE_CASE = (Path(__file__).parent / "data" / "small_case.toml").read_text()
+BASE_CASE = (Path(__file__).resolve().parent / "data" / "small_case.toml").read_text()
 BASE_CSV = "speed [rpm],torque [N*m]\n10,0.21\n100,0.25\n1000,0.31\n3000,0.42\n"
 
 ODD_VALUES = [

@@ -22,7 +22,7 @@ effective radius. All quantities in SI units.
 Largest error against ``"exact"``, over radius ratios :math:`R_{big}/R_{small}`
 from 1 to 72 (ellipticity 1 to 15) and, in brackets, from 1 to 10
 (ellipticity 1 to 4.5); measured by
-``tests/test_contact.py::test_approximations_error_table``:
+``tests/physics/test_contact.py::test_approximations_error_table``:
 
 ============== ============= ============ ============= ============= =============
 method          a             b            p_max         approach      a/b

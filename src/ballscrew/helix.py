@@ -64,7 +64,7 @@ Two evaluations, which the tests hold against each other:
   the Illinois method for all points at once. Against the reference it
   agrees within 0.6 % on the power (40 x 5 mm; 0.02 % at 40 x 40 mm) and
   0.007 on the share of the slip, nearly all of it from the Heathcote term
-  (without it the two agree to 1e-6) (``tests/test_helix.py``).
+  (without it the two agree to 1e-6) (``tests/physics/test_helix.py``).
 
 References
 ----------

@@ -10,7 +10,7 @@ ball swept along it), inclined at the contact angle :math:`\alpha`. With
 :math:`\gamma = D_w\cos\alpha/d_m`, rolling without slip *along* the groove
 at both contacts gives, exactly (Lin, Ravani & Velinsky [1]_; Wei & Lin
 [2]_; derived again for this package and checked against a numerical
-rigid-body evaluation of the surface velocities, ``tests/test_kinematics.py``):
+rigid-body evaluation of the surface velocities, ``tests/physics/test_kinematics.py``):
 
 .. math::
     \omega_m = \tfrac{\omega}{2}(1-\gamma\cos^2\lambda),\qquad
@@ -92,25 +92,29 @@ __all__ = [
 ]
 
 
+_RAD_S_PER_RPM = 2.0 * math.pi / 60.0
+
+
 def rpm_to_rad_s(speed_rpm: npt.ArrayLike) -> FloatArray:
     """Convert revolutions per minute to radians per second.
 
     >>> round(float(rpm_to_rad_s(60.0)), 6)
     6.283185
     """
-    result: FloatArray = check_finite("speed_rpm", speed_rpm) * (2.0 * math.pi / 60.0)
+    result: FloatArray = check_finite("speed_rpm", speed_rpm) * _RAD_S_PER_RPM
     return result
 
 
 def rad_s_to_rpm(speed: npt.ArrayLike) -> FloatArray:
     """Convert radians per second to revolutions per minute.
 
-    The inverse of :func:`rpm_to_rad_s`.
+    The inverse of :func:`rpm_to_rad_s`: it divides by the factor that one
+    multiplies by, so a speed typed in rpm comes back as typed to rounding.
 
     >>> round(float(rad_s_to_rpm(2 * math.pi)), 9)
     60.0
     """
-    result: FloatArray = np.asarray(speed, dtype=float) * 30.0 / math.pi
+    result: FloatArray = np.asarray(speed, dtype=float) / _RAD_S_PER_RPM
     return result
 
 

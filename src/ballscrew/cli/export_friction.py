@@ -8,15 +8,10 @@ from pathlib import Path
 import click
 from rich.table import Table
 
+from .._version import __version__
 from .common import case_option, stdout, write_json
 
 __all__ = ["export_friction_command"]
-
-
-def _version() -> str:
-    from .._version import __version__
-
-    return __version__
 
 
 @click.command("export-friction")
@@ -114,5 +109,5 @@ def export_friction_command(
     if out_file:
         atomic_write(Path(out_file), csv_text(result.rows).encode("utf-8"))
     if json_file:
-        write_json(json_file, json_document(result.as_dict(_version())))
+        write_json(json_file, json_document(result.as_dict(__version__)))
     sys.stdout.flush()

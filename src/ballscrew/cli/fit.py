@@ -7,6 +7,7 @@ from pathlib import Path
 import click
 from rich.table import Table
 
+from .._version import __version__
 from .common import case_option, stdout, write_json
 
 __all__ = ["fit_command"]
@@ -100,7 +101,7 @@ def fit_command(
     console.print(f"RMS residual: {result.rms_residual:.4g} N*m")
     for note in result.warnings:
         click.echo(f"warning: {note}", err=True)
-    payload = {"ballscrew": _version(), "case": case.title, "measured": measured.source,
+    payload = {"ballscrew": __version__, "case": case.title, "measured": measured.source,
                **result.as_dict()}  # fmt: skip
     if out_dir:
         from ..report.fit import write_fit_report
@@ -112,9 +113,3 @@ def fit_command(
         from ..report.outputs import json_document
 
         write_json(json_file, json_document(payload))
-
-
-def _version() -> str:
-    from .._version import __version__
-
-    return __version__

@@ -175,7 +175,7 @@ def _interpolated_integral(kappa: FloatArray, aspect: FloatArray) -> FloatArray:
     grid spanning the points (65 nodes when :math:`\beta` is constant) and
     interpolated with cubic splines: to a relative 1e-8 over one contact's
     range, 1e-4 over :math:`\kappa` from 0 to 2 and :math:`\beta` from
-    0.05 to 1 (``tests/test_complete.py``), below the 12 x 48-point rule's
+    0.05 to 1 (``tests/friction/test_complete.py``), below the 12 x 48-point rule's
     own error.
     """
     from scipy.interpolate import RectBivariateSpline, make_interp_spline

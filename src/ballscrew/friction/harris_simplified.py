@@ -213,7 +213,7 @@ def simplified_contact_force(
         Gauss-Legendre nodes in the pressure coordinate; the default 8
         integrate the lubricant term to a relative 7e-4 (12 nodes: 4e-5;
         PAO ISO VG 68 and SAE 20 at 20-45 °C, 0.1-320 rad/s, against 96
-        nodes; ``tests/test_models.py``).
+        nodes; ``tests/friction/test_models.py``).
 
     Returns
     -------

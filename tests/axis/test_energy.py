@@ -9,11 +9,12 @@ from typing import Any
 import numpy as np
 import pytest
 
-from ballscrew import friction_torque, lubricants, reference_screw
+from ballscrew import friction_torque, reference_screw
 from ballscrew.axis.energy import STANDARD_GRAVITY, Axis, axis_cycle
 from ballscrew.axis.motion import Profile, back_and_forth, move
+from shared import PAO
 
-OIL = lubricants.get("PAO ISO VG 68")
+OIL = PAO
 FAST = 150_000.0  # d·n limit of a high-speed nut [mm·rpm]: 0.5 m/s on a 10 mm lead is 3000 rpm
 
 
@@ -188,6 +189,7 @@ def test_support_bearing_friction_is_reported_and_driven() -> None:
     assert with_b.friction_energy == without.friction_energy  # the screw's, reported apart
 
 
+@pytest.mark.slow
 def test_energy_report_files_are_complete_and_reproducible(
     tmp_path: object, capsys: pytest.CaptureFixture[str]
 ) -> None:

@@ -14,6 +14,7 @@ from ballscrew import BallScrew, lubricants
 from ballscrew.contact import HERTZ_METHODS, hertz
 from ballscrew.loads import ball_loads, preload_split
 from ballscrew.state import operating_state
+from shared import ALL_MODELS
 
 E_STEEL = 2.1e11 / 0.91
 finite = {"allow_nan": False, "allow_infinity": False}
@@ -80,7 +81,7 @@ def test_operating_state_is_finite_for_plausible_screws(
         assert 0.0 <= float(c.asperity_share) <= 1.0
 
 
-MODEL_NAMES = ["catalog", "complete", "olaru", "viscoelastic", "harris-simplified", "harris-full"]
+MODEL_NAMES = ALL_MODELS
 FLUID_PART = {
     "harris-simplified": "lubricant",
     "olaru": "rolling",

@@ -14,12 +14,13 @@ import math
 import numpy as np
 import pytest
 
-from ballscrew import BallScrew, friction_torque, lubricants, reference_screw
+from ballscrew import BallScrew, friction_torque, reference_screw
 from ballscrew import rolling_losses as rl
 from ballscrew.loads import ball_loads
 from ballscrew.state import operating_state
+from shared import MINERAL
 
-OIL = lubricants.get("mineral ISO VG 68")
+OIL = MINERAL
 
 
 def _houpert_fc(e: float) -> float:  # Houpert's curvature factor, E in [0, 1]

@@ -13,8 +13,8 @@ import pytest
 from ballscrew import __version__, friction_torque
 from ballscrew.io.case import load_case
 from cli_runner import run
+from shared import DATA
 
-DATA = Path(__file__).parent / "data"
 SMALL = DATA / "small_case.toml"
 
 
@@ -94,6 +94,7 @@ def test_torque_outputs_agree_with_the_library(
         assert float(row["torque [N*m]"]) == pytest.approx(float(r.total), rel=6e-7)
 
 
+@pytest.mark.slow
 def test_study_writes_a_complete_reproducible_report(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
@@ -142,6 +143,7 @@ def test_study_writes_a_complete_reproducible_report(
         assert (out_dir / rel).read_bytes() == (again / rel).read_bytes(), rel
 
 
+@pytest.mark.slow
 def test_study_with_a_measured_curve(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     # A synthetic curve written for this test only (not a measurement).
     measured = tmp_path / "curve.csv"

@@ -12,8 +12,9 @@ from ballscrew.errors import BallScrewValidityWarning
 from ballscrew.friction import MODELS, register
 from ballscrew.friction.olaru import SPIN_PARAMETER_RANGE
 from ballscrew.validity import RANGES, ValidityIssue, ValidityRange, outside
+from shared import PAO
 
-OIL = lubricants.get("PAO ISO VG 68")
+OIL = PAO
 
 
 def _messages(**kwargs: object) -> list[str]:
@@ -120,7 +121,7 @@ def test_point_by_point_warnings_are_those_of_the_array_call() -> None:
 
     import numpy as np
 
-    from ballscrew import friction_torque, lubricants, reference_screw
+    from ballscrew import friction_torque, reference_screw
 
     screw, oil = reference_screw(), lubricants.get("PAO ISO VG 68")
     speeds = np.array([1.0, 30.0, 300.0])

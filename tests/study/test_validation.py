@@ -149,6 +149,7 @@ def test_catalog_model_scores_itself_perfectly_and_summary_counts() -> None:
     assert s.median_abs_log10 < 1e-4
 
 
+@pytest.mark.slow
 def test_bundled_scorecard_summary_is_current() -> None:
     # `ballscrew models` shows data/scorecard_summary.csv; recompute it so it cannot go stale
     # (after a model change run scripts/update_scorecard.py).
@@ -157,6 +158,7 @@ def test_bundled_scorecard_summary_is_current() -> None:
     assert bundled_summary() == fresh
 
 
+@pytest.mark.slow
 def test_validate_command_writes_the_scorecard(tmp_path: Path) -> None:
     out = tmp_path / "card"
     run = subprocess.run(

@@ -11,8 +11,9 @@ from ballscrew.errors import BallScrewInputError
 from ballscrew.io.case import load_case, parse_case
 from ballscrew.io.schema import SECTIONS, CaseFile, reference_markdown, reference_rows, template
 from cli_runner import run
+from shared import ROOT
 
-DOCS = Path(__file__).parents[1] / "docs" / "case-files.md"
+DOCS = ROOT / "docs" / "case-files.md"
 
 
 def test_template_round_trips_through_check_and_torque(

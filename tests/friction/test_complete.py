@@ -9,14 +9,15 @@ import numpy as np
 import pytest
 from scipy import integrate, special
 
-from ballscrew import BallScrew, friction_torque, lubricants, reference_screw
+from ballscrew import BallScrew, friction_torque, reference_screw
 from ballscrew import rolling_losses as rl
 from ballscrew.friction.complete import BALL_TRAIN_CONSTANT
 from ballscrew.friction.harris_full import full_contact_power
 from ballscrew.kinematics import differential_sliding, four_point_spin, kinematics
 from ballscrew.state import operating_state
+from shared import MINERAL
 
-OIL = lubricants.get("mineral ISO VG 68")
+OIL = MINERAL
 RPM = 2.0 * math.pi / 60.0
 
 

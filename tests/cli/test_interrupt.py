@@ -41,7 +41,8 @@ def _interrupt(out: Path, sig: int, figures: int = 2) -> subprocess.CompletedPro
         text=True,
     )
     began = time.monotonic()
-    while time.monotonic() < began + 60 and proc.poll() is None:
+    # A shared machine can take minutes to compute the study before the first figure.
+    while time.monotonic() < began + 300 and proc.poll() is None:
         if _new_pngs(out, start) >= figures:
             break
         time.sleep(0.005)
@@ -51,6 +52,7 @@ def _interrupt(out: Path, sig: int, figures: int = 2) -> subprocess.CompletedPro
     return subprocess.CompletedProcess(proc.args, proc.returncode, stdout, stderr)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("sig", [signal.SIGINT, signal.SIGTERM])
 def test_interrupted_run_leaves_complete_files(tmp_path: Path, sig: int) -> None:
     out = tmp_path / "report"
@@ -63,6 +65,7 @@ def test_interrupted_run_leaves_complete_files(tmp_path: Path, sig: int) -> None
     _complete(out)
 
 
+@pytest.mark.slow
 def test_interrupted_rerun_keeps_previous_complete_outputs(tmp_path: Path) -> None:
     out = tmp_path / "report"
     first = subprocess.run(

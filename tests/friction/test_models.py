@@ -22,8 +22,9 @@ from ballscrew.friction.harris_simplified import mean_sliding_factor, simplified
 from ballscrew.friction.olaru import curvature_fit, pivoting_fit
 from ballscrew.friction.viscoelastic import lens_moments, viscoelastic_contact
 from ballscrew.kinematics import kinematics
+from shared import PAO
 
-OIL = lubricants.get("PAO ISO VG 68")
+OIL = PAO
 
 
 # --- catalog -------------------------------------------------------------------------------

@@ -19,8 +19,8 @@ from ballscrew.sweep.run import plan_sweep, run_sweep
 from ballscrew.sweep.spec import parse_sweep
 from ballscrew.sweep.store import partial_path, progress_path
 from cli_runner import run
+from shared import DATA, ROOT
 
-DATA = Path(__file__).parent / "data"
 CASE = DATA / "small_case.toml"
 
 # Two models, a screw axis, a model-parameter axis and a lubricant axis; chunk_points
@@ -55,6 +55,7 @@ def in_process(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return out
 
 
+@pytest.mark.slow
 def test_three_execution_modes_give_identical_arrays(in_process: Path, tmp_path: Path) -> None:
     from distributed import LocalCluster
 
@@ -193,6 +194,7 @@ def _interrupted(
     return subprocess.CompletedProcess(args, proc.returncode, stdout, stderr)
 
 
+@pytest.mark.slow
 def test_killed_cli_run_leaves_no_store_and_reruns_resume(tmp_path: Path) -> None:
     sweep = tmp_path / "s.toml"
     # Many small chunks of the complete model: long enough to be interrupted twice.
@@ -301,7 +303,7 @@ def test_cli_prints_a_summary_and_json(tmp_path: Path, capsys: pytest.CaptureFix
 def test_example_sweep_files_are_valid(name: str) -> None:
     from ballscrew.sweep.spec import load_sweep
 
-    path = Path(__file__).resolve().parents[1] / "examples" / name
+    path = ROOT / "examples" / name
     plan = plan_sweep(load_sweep(path))  # every grid point is checked here
     assert plan.points > 0 and plan.dims[-3:] == ("speed", "temperature", "axial_load")
 

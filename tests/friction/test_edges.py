@@ -14,9 +14,10 @@ import pytest
 import ballscrew
 from ballscrew import BallScrewInputError, Lubricant, friction_torque, lubricants, reference_screw
 from ballscrew.contact import ellipticity_exact
+from shared import ALL_MODELS, PAO
 
-MODELS = ["catalog", "complete", "olaru", "viscoelastic", "harris-simplified", "harris-full"]
-OIL = lubricants.get("PAO ISO VG 68")
+MODELS = ALL_MODELS
+OIL = PAO
 
 
 def _ok(r: object) -> None:

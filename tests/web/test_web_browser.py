@@ -26,10 +26,9 @@ import pytest
 from ballscrew.chain import friction_torque
 from ballscrew.io.case import parse_case
 from cli_runner import run
+from shared import DATA, ROOT
 from web_server import running_server
 
-ROOT = Path(__file__).resolve().parents[1]
-DATA = Path(__file__).parent / "data"
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
 SHOTS = Path(os.environ.get("BALLSCREW_SCREENSHOTS", ROOT / "test-output" / "screenshots"))
 

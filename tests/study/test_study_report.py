@@ -11,6 +11,8 @@ import pytest
 from ballscrew.io.case import load_case
 from ballscrew.study.run import StudyResult, run_study
 
+pytestmark = pytest.mark.slow  # every test reads one whole study run
+
 
 @pytest.fixture(scope="module")
 def study() -> StudyResult:

@@ -5,12 +5,13 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from ballscrew import BallScrewInputError, lubricants, reference_screw
+from ballscrew import BallScrewInputError, reference_screw
 from ballscrew.contact import hertz
 from ballscrew.ehl import hamrock_dowson_1977_minimum
 from ballscrew.state import operating_state
+from shared import PAO
 
-OIL = lubricants.get("PAO ISO VG 68")
+OIL = PAO
 
 
 def test_grid_broadcasting_and_finite_values() -> None:

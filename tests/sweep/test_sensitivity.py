@@ -16,8 +16,9 @@ from ballscrew.sweep.run import run_sweep
 from ballscrew.sweep.sensitivity import sample, sobol_indices
 from ballscrew.sweep.spec import Distribution, parse_sweep
 from cli_runner import run
+from shared import SMALL_CASE
 
-CASE = Path(__file__).parent / "data" / "small_case.toml"
+CASE = SMALL_CASE
 
 
 def test_sobol_indices_of_the_ishigami_function() -> None:

@@ -9,11 +9,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from ballscrew import friction_torque, lubricants, reference_screw
+from ballscrew import friction_torque, reference_screw
 from ballscrew.axis.energy import STANDARD_GRAVITY, Axis, weight_back_driving
 from ballscrew.axis.setup import axis_setup, shaft_inertia
+from shared import PAO
 
-OIL = lubricants.get("PAO ISO VG 68")
+OIL = PAO
 
 
 def test_shaft_inertia_is_the_integral_of_r_squared_dm() -> None:
@@ -101,6 +102,7 @@ def test_no_weight_along_the_axis_means_no_verdict() -> None:
     assert weight_back_driving(s, OIL, Axis(moving_mass=0.05, incline=math.pi / 2)) < -10.0
 
 
+@pytest.mark.slow
 def test_energy_command_states_the_gaps_and_the_weight(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -13,8 +12,9 @@ from ballscrew.friction.catalog import preload_from_drag_torque, preload_torque
 from ballscrew.io.case import default_case_path, load_case, parse_case
 from ballscrew.io.measured import error_metrics, parse_measured
 from ballscrew.units import parse_range, to_si
+from shared import SMALL_CASE
 
-SMALL = Path(__file__).parent / "data" / "small_case.toml"
+SMALL = SMALL_CASE
 
 
 @pytest.mark.parametrize(

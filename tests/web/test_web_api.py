@@ -26,8 +26,7 @@ from ballscrew.units import parse_range
 from ballscrew.web import create_app, service
 from ballscrew.web.service import LIMITS
 from cli_runner import run
-
-DATA = Path(__file__).parent / "data"
+from shared import DATA
 
 # The reference double nut of the README, written as a case file would be.
 CASE_TOML = """\

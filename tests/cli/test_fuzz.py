@@ -14,6 +14,7 @@ from ballscrew.cli import main
 from ballscrew.io.case import load_case, parse_case
 from ballscrew.io.measured import read_measured
 from fuzz_inputs import campaign, mutate_case
+from shared import SMALL_CASE
 
 
 def test_loaders_only_succeed_or_raise_the_input_error() -> None:
@@ -80,7 +81,7 @@ def test_binary_and_empty_files(tmp_path: Path, payload: bytes) -> None:
 
 
 def test_huge_and_tiny_values_are_refused_or_finite() -> None:
-    base = (Path(__file__).parent / "data" / "small_case.toml").read_text()
+    base = (SMALL_CASE).read_text()
     for value in ("1e300 m", "1e-300 m", "1e-9 mm"):
         text = base.replace('"3.969 mm"', f'"{value}"')
         try:

@@ -10,13 +10,14 @@ import numpy as np
 import pytest
 from scipy import integrate
 
-from ballscrew import friction_torque, lubricants, reference_screw
+from ballscrew import friction_torque, reference_screw
 from ballscrew import rolling_losses as rl
 from ballscrew.helix import SlipContact, ball_slip_balance, transverse_slip_loss
 from ballscrew.kinematics import differential_sliding, kinematics
 from ballscrew.state import operating_state
+from shared import MINERAL
 
-OIL = lubricants.get("mineral ISO VG 68")
+OIL = MINERAL
 RPM = 2.0 * math.pi / 60.0
 
 

@@ -4,12 +4,10 @@ from __future__ import annotations
 
 import importlib.util
 import sys
-from pathlib import Path
 from types import ModuleType
 
+from shared import ROOT
 from web_server import running_server
-
-ROOT = Path(__file__).resolve().parents[1]
 
 
 def _load_web() -> ModuleType:

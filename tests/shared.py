@@ -1,0 +1,29 @@
+"""Paths and inputs that many test modules share (imported as ``from shared import ...``)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from ballscrew import lubricants, models
+
+#: The project's root (the folder holding ``pyproject.toml``).
+ROOT = Path(__file__).resolve().parents[1]
+#: The tests' own input files.
+DATA = Path(__file__).resolve().parent / "data"
+#: A small case file: one screw, a few speeds, quick to run.
+SMALL_CASE = DATA / "small_case.toml"
+#: The lubricant of Kamalzadeh's measurements.
+PAO = lubricants.get("PAO ISO VG 68")
+#: The lubricant of the study's reference case.
+MINERAL = lubricants.get("mineral ISO VG 68")
+#: The six models the package ships (the registry may hold more: see conftest.py).
+BUILT_IN_MODELS = (
+    "catalog",
+    "complete",
+    "harris-full",
+    "harris-simplified",
+    "olaru",
+    "viscoelastic",
+)
+#: Every registered model, the built-in ones and any a test run added.
+ALL_MODELS = sorted(m.name for m in models())
