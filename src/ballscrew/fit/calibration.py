@@ -238,10 +238,67 @@ def fit_parameters(
     if not names:
         raise BallScrewInputError("--free", "(none)", f"one or more of {sorted(FITTABLE)}")
     specs = [_spec(n, model) for n in names]
+    starts = _start_values(specs, screw, oil, model, fixed, start)
+    speed, torque, temp, load = _columns(measured, temperature, axial_load)
+    n = speed.size
+    if n <= len(names):
+        raise BallScrewInputError(
+            "measured", f"{n} points", f"more points than free parameters ({len(names)})"
+        )
+
+    def predict(values: dict[str, float], rows: Index) -> FloatArray:
+        s, kwargs = _apply(screw, fixed, values)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            out = friction_torque(
+                s, oil, speed=speed[rows], temperature=temp[rows], axial_load=load[rows],
+                model=model, **kwargs,
+            ).total  # fmt: skip
+        return np.asarray(out, dtype=float)
+
+    everything = np.arange(n)
+    fit = _fit_identifiable(specs, starts, predict, torque, everything)
+    estimates, values = _estimates(fit, starts)
+    fit.notes.extend(_correlation_notes(fit.active, fit.corr))
+    fit.notes.extend(_data_notes(fit.outliers, fit.resid.size - len(fit.active)))
+    fitted_screw, model_values = _apply(screw, fixed, values)
+    fitted = predict(values, everything)
+    inliers = np.setdiff1d(everything, np.asarray(fit.outliers, dtype=int))
+    rms = float(np.sqrt(np.mean((fitted[inliers] - torque[inliers]) ** 2)))
+    return FitResult(
+        model=model,
+        estimates={n: estimates[n] for n in names},
+        correlation=fit.corr,
+        correlation_names=tuple(s.name for s in fit.active),
+        screw=fitted_screw,
+        model_parameters=model_values,
+        speed=speed,
+        temperature=temp,
+        axial_load=load,
+        measured=torque,
+        fitted=fitted,
+        outliers=fit.outliers,
+        rms_residual=rms,
+        warnings=tuple(fit.notes),
+    )
+
+
+def _start_values(
+    specs: list[FreeParameter], screw: BallScrew, oil: Lubricant, model: str,
+    fixed: dict[str, Any], start: dict[str, float] | None,
+) -> dict[str, float]:  # fmt: skip
+    """Start values by name: the screw's or the model's, replaced by ``start``'s."""
     starts = {s.name: _start(s, screw, oil, model, fixed) for s in specs}
     for key, value in (start or {}).items():
         spec = _spec(key, model)
         starts[key] = min(max(float(value), spec.low), spec.high)
+    return starts
+
+
+def _columns(
+    measured: MeasuredCurve, temperature: float, axial_load: float
+) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
+    """Speed, torque, temperature and axial load at every measured point."""
     speed = np.asarray(measured.speed, dtype=float)
     torque = np.asarray(measured.torque, dtype=float)
     n = speed.size
@@ -255,33 +312,49 @@ def fit_parameters(
         if measured.axial_load is None
         else np.asarray(measured.axial_load, dtype=float)
     )
-    if n <= len(names):
-        raise BallScrewInputError(
-            "measured", f"{n} points", f"more points than free parameters ({len(names)})"
-        )
+    return speed, torque, temp, load
 
-    def predict(values: dict[str, float], rows: Index) -> FloatArray:
-        s = screw
-        kwargs = dict(fixed)
-        for name, value in values.items():
-            if FITTABLE[name].where == "screw":
-                s = s.replace(**{name: value})
-            else:
-                kwargs[name] = value
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            out = friction_torque(
-                s, oil, speed=speed[rows], temperature=temp[rows], axial_load=load[rows],
-                model=model, **kwargs,
-            ).total  # fmt: skip
-        return np.asarray(out, dtype=float)
 
+def _apply(
+    screw: BallScrew, fixed: dict[str, Any], values: dict[str, float]
+) -> tuple[BallScrew, dict[str, Any]]:
+    """The screw and the model parameters with ``values`` written in."""
+    out = screw
+    kwargs = dict(fixed)
+    for name, value in values.items():
+        if FITTABLE[name].where == "screw":
+            out = out.replace(**{name: value})
+        else:
+            kwargs[name] = value
+    return out, kwargs
+
+
+@dataclass
+class _Fit:
+    """The last solve: the parameters still free, those held, and what the fit gave."""
+
+    active: list[FreeParameter]
+    held: dict[str, float]
+    theta: FloatArray
+    sigma: FloatArray
+    corr: FloatArray
+    resid: FloatArray
+    rows: Index
+    outliers: tuple[int, ...]
+    notes: list[str]
+
+
+def _fit_identifiable(
+    specs: list[FreeParameter],
+    starts: dict[str, float],
+    predict: Any,
+    torque: FloatArray,
+    everything: Index,
+) -> _Fit:
+    """Solve, holding unidentifiable parameters at their starts one at a time."""
     notes: list[str] = []
     active = list(specs)
     held: dict[str, float] = {}
-    everything = np.arange(n)
-    rows = everything
-    outliers: tuple[int, ...] = ()
     theta = np.array([_to_theta(s, starts[s.name]) for s in active])
     for _ in range(len(specs) + 1):
         theta, jac, resid, rows, outliers = _solve(active, theta, held, predict, torque, everything)
@@ -289,48 +362,70 @@ def fit_parameters(
         loose = [s for s, sd in zip(active, sigma, strict=True) if _unidentified(s, sd, resid.size)]
         if not loose:
             break
-        # One at a time, the worst first: a direction the data cannot see often
-        # leans on a parameter they can, which is identified once the other is held.
-        # Ties (several unseen) go to the parameter the torque is least sensitive to.
-        norms = np.linalg.norm(jac, axis=0)
-        width = {
-            s.name: (sd / _allowed_sd(s), -norm)
-            for s, sd, norm in zip(active, sigma, norms, strict=True)
-        }
-        loose = [max(loose, key=lambda s: width[s.name])]
-        for s in loose:
-            held[s.name] = starts[s.name]
-            notes.append(
-                f"{s.name} cannot be identified from these data (its 95 % interval spans more "
-                f"than {'a factor 100' if s.log else 'its allowed range'}): held at its start "
-                f"value {starts[s.name]:.4g} {s.unit}; measure where it matters, or leave it "
-                "out of --free"
-            )
-        keep = [i for i, s in enumerate(active) if s not in loose]
+        worst = _least_identified(loose, active, sigma, jac)
+        held[worst.name] = starts[worst.name]
+        notes.append(
+            f"{worst.name} cannot be identified from these data (its 95 % interval spans more "
+            f"than {'a factor 100' if worst.log else 'its allowed range'}): held at its start "
+            f"value {starts[worst.name]:.4g} {worst.unit}; measure where it matters, or leave it "
+            "out of --free"
+        )
+        keep = [i for i, s in enumerate(active) if s != worst]
         active = [active[i] for i in keep]
         theta = theta[keep]
         if not active:
             sigma, corr = np.zeros(0), np.zeros((0, 0))
             resid = predict(held, rows) - torque[rows]
             break
-    t_q = _t_quantile(resid.size - len(active))
+    return _Fit(active, held, theta, sigma, corr, resid, rows, outliers, notes)
+
+
+def _least_identified(
+    loose: list[FreeParameter], active: list[FreeParameter], sigma: FloatArray, jac: FloatArray
+) -> FreeParameter:
+    """The parameter to hold: the widest interval relative to the allowed one.
+
+    One at a time, the worst first: a direction the data cannot see often
+    leans on a parameter they can, which is identified once the other is held.
+    Ties (several unseen) go to the parameter the torque is least sensitive to.
+    """
+    norms = np.linalg.norm(jac, axis=0)
+    width = {
+        s.name: (sd / _allowed_sd(s), -norm)
+        for s, sd, norm in zip(active, sigma, norms, strict=True)
+    }
+    return max(loose, key=lambda s: width[s.name])
+
+
+def _estimates(fit: _Fit, starts: dict[str, float]) -> tuple[dict[str, Estimate], dict[str, float]]:
+    """Estimates with their 95 % intervals, and the values of all parameters.
+
+    Appends a note to ``fit.notes`` for every estimate on its bound.
+    """
+    t_q = _t_quantile(fit.resid.size - len(fit.active))
     estimates: dict[str, Estimate] = {}
-    values = dict(held)
-    for s, th, sd in zip(active, theta, sigma, strict=True):
+    values = dict(fit.held)
+    for s, th, sd in zip(fit.active, fit.theta, fit.sigma, strict=True):
         value = _from_theta(s, float(th))
         values[s.name] = value
         low = _from_theta(s, float(th - t_q * sd)) if math.isfinite(sd) else None
         high = _from_theta(s, float(th + t_q * sd)) if math.isfinite(sd) else None
         estimates[s.name] = Estimate(s.name, value, low, high, starts[s.name], s.unit)
         if value in (s.low, s.high) or math.isclose(value, s.low) or math.isclose(value, s.high):
-            notes.append(
+            fit.notes.append(
                 f"{s.name} = {value:.4g} {s.unit} sits on its bound [{s.low:g}, {s.high:g}]: "
                 "the model cannot reach the data with it; check the case or free another "
                 "parameter"
             )
-    for name, value in held.items():
+    for name, value in fit.held.items():
         spec = FITTABLE[name]
         estimates[name] = Estimate(name, value, None, None, value, spec.unit, identified=False)
+    return estimates, values
+
+
+def _correlation_notes(active: list[FreeParameter], corr: FloatArray) -> list[str]:
+    """A warning for every pair of parameters the data barely separate."""
+    notes = []
     for i in range(len(active)):
         for j in range(i + 1, len(active)):
             if abs(corr[i, j]) > CORRELATION_LIMIT:
@@ -340,42 +435,22 @@ def fit_parameters(
                     "well than their combination; measurements at other loads or "
                     "temperatures would separate them"
                 )
+    return notes
+
+
+def _data_notes(outliers: tuple[int, ...], dof: int) -> list[str]:
+    """Warnings about the data: outliers left out, few degrees of freedom."""
+    notes = []
     if outliers:
         notes.append(
             f"{len(outliers)} point(s) more than {OUTLIER_SCALE:g} robust standard deviations "
             f"from the fit left out: rows {', '.join(str(i + 1) for i in outliers)}"
         )
-    dof = resid.size - len(active)
     if 0 < dof < 3:
         notes.append(
             f"only {dof} degree(s) of freedom: the intervals are wide and rest on few points"
         )
-    fitted_screw = screw
-    model_values = dict(fixed)
-    for name, value in values.items():
-        if FITTABLE[name].where == "screw":
-            fitted_screw = fitted_screw.replace(**{name: value})
-        else:
-            model_values[name] = value
-    fitted = predict(values, everything)
-    inliers = np.setdiff1d(everything, np.asarray(outliers, dtype=int))
-    rms = float(np.sqrt(np.mean((fitted[inliers] - torque[inliers]) ** 2)))
-    return FitResult(
-        model=model,
-        estimates={n: estimates[n] for n in names},
-        correlation=corr,
-        correlation_names=tuple(s.name for s in active),
-        screw=fitted_screw,
-        model_parameters=model_values,
-        speed=speed,
-        temperature=temp,
-        axial_load=load,
-        measured=torque,
-        fitted=fitted,
-        outliers=outliers,
-        rms_residual=rms,
-        warnings=tuple(notes),
-    )
+    return notes
 
 
 def _solve(

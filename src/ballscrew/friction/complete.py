@@ -83,6 +83,7 @@ sliding speeds keep the lead angle.
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 
@@ -389,28 +390,80 @@ def complete(
         screw, lubricant, speed, temperature, axial_load, hertz_method=hertz_method,
         asperity_b=asperity_b, asperity_c=asperity_c, state=state,
     )  # fmt: skip
-    kin = state.kinematics
-    shape = state.shape
-    unit = kinematics(screw, 1.0)
-    rolling_lever = float(unit.entrainment_speed)  # u / |omega| [m]
-    if thermal_correction:
-        rpm = rad_s_to_rpm(np.abs(kin.screw_speed))
-        nu = lubricant.kinematic_viscosity(state.temperature) * 1e6  # mm²/s
-        dm_mm = screw.pitch_diameter * 1e3
-        section = 3.4 * screw.ball_diameter * 1e3  # D - d of a 72-series bearing, ~3.4 D_w
-        reduction = rl.inlet_shear_heating_factor(rpm, dm_mm, nu) * rl.replenishment_factor(
-            rpm, nu, dm_mm - 0.5 * section, dm_mm + 0.5 * section, k_rs=_K_RS[lubrication]
-        )
-    else:
-        reduction = np.ones(shape)
-    c_s, c_n = differential_sliding(screw, 1.0)
-    curvature = {"screw": float(c_s), "nut": float(c_n)}
-    spin = {"screw": float(unit.spin_screw), "nut": float(unit.spin_nut)}
-    s4, n4 = four_point_spin(screw, 1.0)
-    spin4 = {"screw": float(abs(s4)), "nut": float(abs(n4))}
+    reduction = _thermal_reduction(screw, lubricant, state, lubrication, thermal_correction)
+    per_speed = _per_speed(screw)
     four = screw.nut == "single-4point"
+    parts, mu = _groove_losses(
+        screw, state, per_speed, four, reduction, mu_bl, tau0, gamma_l, alpha_h
+    )
+    spin = per_speed.spin4 if four else per_speed.spin
+    parts["helix_slip"] = _helix_slip(state, mu, spin)
+    parts["ball_ball"], parts["recirculation"] = _ball_train(
+        state, c_b, mu_bl, tau0, gamma_l, theta, asperity_b, asperity_c
+    )
+    parts["seals"] = np.full(state.shape, seal)
+    order = ("rolling", "sliding", "helix_slip", "hysteresis", "ball_ball", "recirculation",
+             "four_point", "seals")  # fmt: skip
+    return {name: parts[name] for name in order}
 
-    parts = {k: np.zeros(shape) for k in ("rolling", "sliding", "hysteresis", "four_point")}
+
+def _thermal_reduction(
+    screw: BallScrew, lubricant: Lubricant, state: OperatingState, lubrication: str,
+    thermal_correction: bool,
+) -> FloatArray:  # fmt: skip
+    """SKF's inlet shear heating times replenishment factor (ones without the correction)."""
+    if not thermal_correction:
+        return np.ones(state.shape)
+    rpm = rad_s_to_rpm(np.abs(state.kinematics.screw_speed))
+    nu = lubricant.kinematic_viscosity(state.temperature) * 1e6  # mm²/s
+    dm_mm = screw.pitch_diameter * 1e3
+    section = 3.4 * screw.ball_diameter * 1e3  # D - d of a 72-series bearing, ~3.4 D_w
+    reduction: FloatArray = rl.inlet_shear_heating_factor(rpm, dm_mm, nu) * rl.replenishment_factor(
+        rpm, nu, dm_mm - 0.5 * section, dm_mm + 0.5 * section, k_rs=_K_RS[lubrication]
+    )
+    return reduction
+
+
+class _PerSpeed(NamedTuple):
+    """Kinematics per unit screw speed, by side where it differs."""
+
+    rolling_lever: float  # u / |omega| [m]
+    curvature: dict[str, float]  # Heathcote's C / omega
+    spin: dict[str, float]  # omega_s / omega, 2-point contact
+    spin4: dict[str, float]  # |omega_s| / |omega|, 4-point contact
+
+
+def _per_speed(screw: BallScrew) -> _PerSpeed:
+    """The screw's rolling lever, sliding curvature and spins per unit screw speed."""
+    unit = kinematics(screw, 1.0)
+    c_s, c_n = differential_sliding(screw, 1.0)
+    s4, n4 = four_point_spin(screw, 1.0)
+    return _PerSpeed(
+        rolling_lever=float(unit.entrainment_speed),
+        curvature={"screw": float(c_s), "nut": float(c_n)},
+        spin={"screw": float(unit.spin_screw), "nut": float(unit.spin_nut)},
+        spin4={"screw": float(abs(s4)), "nut": float(abs(n4))},
+    )
+
+
+def _groove_losses(
+    screw: BallScrew,
+    state: OperatingState,
+    per_speed: _PerSpeed,
+    four: bool,
+    reduction: FloatArray,
+    mu_bl: float,
+    tau0: float,
+    gamma_l: float,
+    alpha_h: float,
+) -> tuple[dict[str, FloatArray], dict[str, FloatArray]]:
+    """Rolling, sliding, hysteresis and 4-point torques of the ball-groove contacts.
+
+    Also returns each contact's mixed friction coefficient, by contact name.
+    """
+    rolling_lever = per_speed.rolling_lever
+    curvature, spin, spin4 = per_speed.curvature, per_speed.spin, per_speed.spin4
+    parts = {k: np.zeros(state.shape) for k in ("rolling", "sliding", "hysteresis", "four_point")}
     mu: dict[str, FloatArray] = {}
     for c in state.contacts:
         if not c.balls:
@@ -438,14 +491,7 @@ def complete(
         parts["hysteresis"] += (
             z * rl.hysteresis_rolling_force(c.load, c.hertz.b, c.rx, alpha_h) * rolling_lever
         )
-    parts["helix_slip"] = _helix_slip(state, mu, spin4 if four else spin)
-    parts["ball_ball"], parts["recirculation"] = _ball_train(
-        state, c_b, mu_bl, tau0, gamma_l, theta, asperity_b, asperity_c
-    )
-    parts["seals"] = np.full(shape, seal)
-    order = ("rolling", "sliding", "helix_slip", "hysteresis", "ball_ball", "recirculation",
-             "four_point", "seals")  # fmt: skip
-    return {name: parts[name] for name in order}
+    return parts, mu
 
 
 def _ball_train(

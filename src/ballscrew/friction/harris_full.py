@@ -60,6 +60,7 @@ References
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -70,7 +71,7 @@ from ..geometry import BallScrew
 from ..kinematics import differential_sliding, kinematics
 from ..lubricant import Lubricant
 from ..numerics import illinois
-from ..state import OperatingState
+from ..state import ContactState, OperatingState
 from ..validity import film_checks
 from ._common import (
     RHEOLOGY_MODELS,
@@ -140,21 +141,10 @@ def full_contact_power(
     slip : numpy.ndarray
         The uniform slip per unit screw speed :math:`s/|\omega|` [m/rad].
     """
-    n_s, n_phi = nodes
-    sig, w_sig = np.polynomial.legendre.leggauss(n_s)
-    sig = 0.5 * (sig + 1.0)
-    w_sig = 0.5 * w_sig
-    phi = (np.arange(n_phi) + 0.5) * (np.pi / n_phi) - np.pi / 2  # x >= 0 half; x -> -x symmetric
-    w_phi = 2.0 * np.pi / n_phi  # doubled for the mirrored half
-    r = np.sqrt(1.0 - sig**2)
     omega = np.abs(screw_speed)
     c_hat = abs(curvature)  # sliding speeds per unit |omega|
     w_hat = abs(spin)
-    y = a[:, None, None] * (r[:, None] * np.sin(phi)[None, :])
-    base_x = -c_hat * y**2 - w_hat * y  # v_x / |omega| without slip
-    # v_y^2 > 0 at every node (r > 0, |phi| < pi/2, spin > 0); the floor keeps
-    # unloaded contacts (b = 0, no area) away from 0/0.
-    vy2 = (w_hat * b[:, None, None] * (r[:, None] * np.cos(phi)[None, :])) ** 2 + 1e-300
+    sig, weight, base_x, vy2 = _ellipse_nodes(a, b, c_hat, w_hat, nodes)
     # Unloaded contacts: dummy pressure (their area a*b is zero, so is their power).
     p = np.where(p_max > 0.0, p_max, 1.0)[:, None] * sig[None, :]
     eta = local_viscosity(viscosity, pressure_viscosity, p, "roelands")
@@ -165,44 +155,10 @@ def full_contact_power(
     fluid_share = (1.0 - asperity_share)[:, None, None]
     # Harmonic law: fluid stress / |v| = eta_rate * tau_lim / (eta_rate |v| + tau_lim).
     fluid_numerator = fluid_share * eta_rate * tau_lim
-    weight = (w_sig * sig)[:, None] * w_phi  # (n_s, n_phi)
-    harmonic = rheology_model == "harmonic"
-
-    def rows(arr: FloatArray, idx: slice | npt.NDArray[np.intp]) -> FloatArray:
-        return arr[idx]
-
-    def stresses(s_hat: FloatArray, idx: slice | npt.NDArray[np.intp]) -> tuple[FloatArray, ...]:
-        vx = rows(base_x, idx) + s_hat[:, None, None]
-        speed = np.sqrt(vx * vx + rows(vy2, idx))
-        tau_n = rows(eta_rate, idx) * speed
-        lim = rows(tau_lim, idx)
-        if harmonic:
-            lub = tau_n * lim / (tau_n + lim)
-        else:
-            lub = np.abs(
-                shear_stress(rheology_model, tau_n, 1.0, lim, rheology_exponent, eyring_stress)
-            )
-        return vx, speed, lub
-
-    def traction(s_hat: FloatArray, idx: slice | npt.NDArray[np.intp]) -> FloatArray:
-        if harmonic:
-            vx = rows(base_x, idx) + s_hat[:, None, None]
-            speed = vx * vx
-            speed += rows(vy2, idx)
-            np.sqrt(speed, out=speed)
-            vx /= speed  # direction cosine
-            den = rows(eta_rate, idx) * speed
-            den += rows(tau_lim, idx)
-            integrand = rows(fluid_numerator, idx) / den
-            integrand *= speed
-            integrand += rows(asp_stress, idx)
-            integrand *= vx
-            out: FloatArray = np.einsum("ijk,jk->i", integrand, weight)
-            return out
-        vx, speed, lub = stresses(s_hat, idx)
-        total = rows(asp_stress, idx) + rows(fluid_share, idx) * lub
-        result: FloatArray = np.einsum("ijk,jk->i", total * (vx / speed), weight)
-        return result
+    f = _Integrand(
+        base_x, vy2, eta_rate, tau_lim, asp_stress, fluid_share, fluid_numerator, weight,
+        rheology_model, rheology_exponent, eyring_stress,
+    )  # fmt: skip
 
     # Zero net traction fixes the slip: bracket it between all-backward and
     # all-forward sliding, then Illinois regula falsi on the points not yet
@@ -213,13 +169,101 @@ def full_contact_power(
     lo, hi = -span.copy(), span.copy()
     everything = slice(None)
     s_hat = illinois(
-        traction, lo, hi, traction(lo, everything), traction(hi, everything), xtol=tolerance * span
-    )
-    _, speed, lub = stresses(s_hat, everything)
+        f.traction, lo, hi, f.traction(lo, everything), f.traction(hi, everything),
+        xtol=tolerance * span,
+    )  # fmt: skip
+    _, speed, lub = f.stresses(s_hat, everything)
     area = a * b
     asperity = np.einsum("ijk,jk->i", asp_stress * speed, weight) * area
     lubricant = np.einsum("ijk,jk->i", fluid_share * lub * speed, weight) * area
     return asperity, lubricant, s_hat
+
+
+def _ellipse_nodes(
+    a: FloatArray, b: FloatArray, c_hat: float, w_hat: float, nodes: tuple[int, int]
+) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
+    r"""The quadrature over the ellipses and the sliding at its nodes.
+
+    Returns :math:`\sigma` (the pressure fraction of each radial node), the
+    weights (n_s, n_phi), and :math:`v_x` without slip and :math:`v_y^2`,
+    both per unit :math:`|\omega|`, at every point and node.
+    """
+    n_s, n_phi = nodes
+    sig, w_sig = np.polynomial.legendre.leggauss(n_s)
+    sig = 0.5 * (sig + 1.0)
+    w_sig = 0.5 * w_sig
+    phi = (np.arange(n_phi) + 0.5) * (np.pi / n_phi) - np.pi / 2  # x >= 0 half; x -> -x symmetric
+    w_phi = 2.0 * np.pi / n_phi  # doubled for the mirrored half
+    r = np.sqrt(1.0 - sig**2)
+    y = a[:, None, None] * (r[:, None] * np.sin(phi)[None, :])
+    base_x = -c_hat * y**2 - w_hat * y  # v_x / |omega| without slip
+    # v_y^2 > 0 at every node (r > 0, |phi| < pi/2, spin > 0); the floor keeps
+    # unloaded contacts (b = 0, no area) away from 0/0.
+    vy2 = (w_hat * b[:, None, None] * (r[:, None] * np.cos(phi)[None, :])) ** 2 + 1e-300
+    weight = (w_sig * sig)[:, None] * w_phi  # (n_s, n_phi)
+    return sig, weight, base_x, vy2
+
+
+_Rows = slice | npt.NDArray[np.intp]
+
+
+@dataclass(frozen=True)
+class _Integrand:
+    r"""The shear stresses over the ellipses' nodes, as functions of the slip.
+
+    Arrays are (points, n_s, n_phi) or broadcast to it; speeds and stresses
+    per unit :math:`|\omega|` where they scale with it.
+    """
+
+    base_x: FloatArray
+    vy2: FloatArray
+    eta_rate: FloatArray
+    tau_lim: FloatArray
+    asp_stress: FloatArray
+    fluid_share: FloatArray
+    fluid_numerator: FloatArray
+    weight: FloatArray
+    rheology_model: str
+    rheology_exponent: float
+    eyring_stress: float | None
+
+    def stresses(self, s_hat: FloatArray, idx: _Rows) -> tuple[FloatArray, ...]:
+        """Sliding :math:`v_x`, :math:`|v|` and the lubricant's stress at slip ``s_hat``."""
+        vx = self.base_x[idx] + s_hat[:, None, None]
+        speed = np.sqrt(vx * vx + self.vy2[idx])
+        tau_n = self.eta_rate[idx] * speed
+        lim = self.tau_lim[idx]
+        if self.rheology_model == "harmonic":
+            lub = tau_n * lim / (tau_n + lim)
+        else:
+            lub = np.abs(
+                shear_stress(
+                    self.rheology_model, tau_n, 1.0, lim, self.rheology_exponent,
+                    self.eyring_stress,
+                )
+            )  # fmt: skip
+        return vx, speed, lub
+
+    def traction(self, s_hat: FloatArray, idx: _Rows) -> FloatArray:
+        """Net rolling-direction traction of the points ``idx`` at slip ``s_hat``."""
+        if self.rheology_model == "harmonic":
+            vx = self.base_x[idx] + s_hat[:, None, None]
+            speed = vx * vx
+            speed += self.vy2[idx]
+            np.sqrt(speed, out=speed)
+            vx /= speed  # direction cosine
+            den = self.eta_rate[idx] * speed
+            den += self.tau_lim[idx]
+            integrand = self.fluid_numerator[idx] / den
+            integrand *= speed
+            integrand += self.asp_stress[idx]
+            integrand *= vx
+            out: FloatArray = np.einsum("ijk,jk->i", integrand, self.weight)
+            return out
+        vx, speed, lub = self.stresses(s_hat, idx)
+        total = self.asp_stress[idx] + self.fluid_share[idx] * lub
+        result: FloatArray = np.einsum("ijk,jk->i", total * (vx / speed), self.weight)
+        return result
 
 
 @register(
@@ -286,12 +330,7 @@ def harris_full(
     check_choice("film", film, ("central", "minimum"))
     tau0, gamma_l = limiting_shear(lubricant, limiting_shear_stress, limiting_shear_coefficient)
     mu = float(check_nonnegative("mu0", mu0))
-    try:
-        n_nodes = (int(nodes[0]), int(nodes[1]))
-    except (TypeError, ValueError, IndexError):
-        raise BallScrewInputError("nodes", nodes, "two whole numbers >= 2") from None
-    if min(n_nodes) < 2:
-        raise BallScrewInputError("nodes", nodes, "two whole numbers >= 2")
+    n_nodes = _node_counts(nodes)
     state = model_state(
         screw, lubricant, speed, temperature, axial_load, hertz_method=hertz_method,
         asperity_b=asperity_b, asperity_c=asperity_c, state=state,
@@ -306,19 +345,7 @@ def harris_full(
             continue
         curvature = c_s if contact.side == "screw" else c_n
         spin = float(unit.spin_screw if contact.side == "screw" else unit.spin_nut)
-        h = contact.film_central if film == "central" else contact.film_minimum
-        flat = [
-            np.ravel(np.broadcast_to(v, shape))
-            for v in (
-                contact.hertz.a,
-                contact.hertz.b,
-                contact.hertz.p_max,
-                contact.asperity_share,
-                contact.viscosity,
-                h,
-                kin.screw_speed,
-            )
-        ]
+        flat = _flat_contact(contact, kin.screw_speed, film, shape)
         asp, lub, _ = full_contact_power(
             a=flat[0],
             b=flat[1],
@@ -342,3 +369,33 @@ def harris_full(
         out["asperity"] = out["asperity"] + balls * asp.reshape(shape)
         out["lubricant"] = out["lubricant"] + balls * lub.reshape(shape)
     return out
+
+
+def _node_counts(nodes: tuple[int, int]) -> tuple[int, int]:
+    """The quadrature's node counts, checked: two whole numbers >= 2."""
+    try:
+        n_nodes = (int(nodes[0]), int(nodes[1]))
+    except (TypeError, ValueError, IndexError):
+        raise BallScrewInputError("nodes", nodes, "two whole numbers >= 2") from None
+    if min(n_nodes) < 2:
+        raise BallScrewInputError("nodes", nodes, "two whole numbers >= 2")
+    return n_nodes
+
+
+def _flat_contact(
+    contact: ContactState, screw_speed: FloatArray, film: str, shape: tuple[int, ...]
+) -> list[FloatArray]:
+    """A contact's a, b, p_max, asperity share, viscosity, film and the screw speed, flat."""
+    h = contact.film_central if film == "central" else contact.film_minimum
+    return [
+        np.ravel(np.broadcast_to(v, shape))
+        for v in (
+            contact.hertz.a,
+            contact.hertz.b,
+            contact.hertz.p_max,
+            contact.asperity_share,
+            contact.viscosity,
+            h,
+            screw_speed,
+        )
+    ]

@@ -82,7 +82,7 @@ References
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import Any, Literal
 
 import numpy as np
 import numpy.typing as npt
@@ -94,7 +94,7 @@ from ..kinematics import rad_s_to_rpm
 from ..loads import ball_loads
 from ..lubricant import Lubricant
 from ..rolling_losses import rolling_force_houpert
-from ..state import OperatingState
+from ..state import ContactState, OperatingState
 from ..validity import ValidityIssue, ValidityRange, film_checks, outside
 from ._common import model_state
 from ._registry import register
@@ -269,12 +269,7 @@ def olaru(
     lever = screw.contact_radius_screw * math.cos(screw.lead_angle)
     omega = np.abs(state.kinematics.screw_speed)
     rpm = rad_s_to_rpm(omega)
-    # |omega_s| / |omega| at each contact: the bearing kinematics of Olaru's paper, which
-    # neglects the helix (ballscrew.kinematics keeps it; the spin differs by cos(lambda)).
-    spin_per_speed = {
-        "screw": 0.5 * (1.0 + gamma) * math.sin(screw.contact_angle),
-        "nut": 0.5 * (1.0 - gamma) * math.sin(screw.contact_angle),
-    }
+    spin_per_speed = _spin_per_speed(screw)
 
     zeros = np.zeros(state.shape)
     parts = {
@@ -287,32 +282,10 @@ def olaru(
         if balls == 0:
             continue
         q = screw_c.load
-        if sliding_friction == "asperity":
-            mus = {side: mu0 * c.asperity_share for side, c in pair.items()}
-        else:
-            mu_fit = np.exp(-2.643 - 0.002 * rpm - 4.983e-7 * rpm**2)
-            mus = {"screw": mu_fit, "nut": mu_fit}
-        f_r: FloatArray = np.zeros(state.shape)
-        m_c: FloatArray = np.zeros(state.shape)
-        m_er: FloatArray = np.zeros(state.shape)
-        pivot_power_per_speed: FloatArray = np.zeros(state.shape)
-        for side, c in pair.items():
-            ratio = c.ry / c.rx
-            f_r = f_r + rolling_force_houpert(
-                screw.reduced_modulus,
-                c.rx,
-                ratio,
-                c.materials_parameter,
-                c.speed_parameter,
-                c.load_parameter,
-            )
-            a = c.hertz.a
-            with np.errstate(divide="ignore"):
-                e = np.where(a > 0.0, 2.0 * ra / np.where(a > 0, a, 1.0) * spin_ratio, 0.0)
-            m_c = m_c + 0.0806 * mus[side] * q * a**2 / ra * curvature_fit(e)
-            m_er = m_er + elastic_hysteresis_moment(dw, q, ratio, hysteresis_units)
-            m_p = 0.375 * mus[side] * q * a * pivoting_fit(e)
-            pivot_power_per_speed = pivot_power_per_speed + m_p * spin_per_speed[side]
+        mus = _friction_coefficients(pair, sliding_friction, mu0, rpm)
+        f_r, m_c, m_er, pivot_power_per_speed = _ball_forces(
+            screw, pair, mus, ra, spin_ratio, spin_per_speed, hysteresis_units, state.shape
+        )
         loaded = q > 0.0
         m_b = ball_ball_friction * 0.5 * dw * ball_ball_force
         parts["rolling"] += balls * lever * f_r * (1.0 + gamma)
@@ -324,3 +297,72 @@ def olaru(
         if include_pivoting:
             parts["pivoting"] += balls * pivot_power_per_speed
     return parts
+
+
+_Side = Literal["screw", "nut"]
+
+
+def _friction_coefficients(
+    pair: dict[_Side, ContactState], sliding_friction: str, mu0: float, rpm: FloatArray
+) -> dict[str, FloatArray]:
+    r"""The sliding friction coefficient :math:`\mu` of each contact of a ball, by side."""
+    if sliding_friction == "asperity":
+        return {side: mu0 * c.asperity_share for side, c in pair.items()}
+    mu_fit = np.exp(-2.643 - 0.002 * rpm - 4.983e-7 * rpm**2)
+    return {"screw": mu_fit, "nut": mu_fit}
+
+
+def _ball_forces(
+    screw: BallScrew,
+    pair: dict[_Side, ContactState],
+    mus: dict[str, FloatArray],
+    ra: float,
+    spin_ratio: float,
+    spin_per_speed: dict[str, float],
+    hysteresis_units: str,
+    shape: tuple[int, ...],
+) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
+    r"""One ball's rolling force, curvature and hysteresis moments, and pivoting power.
+
+    Sums over the ball's two contacts: :math:`F_R` [N], :math:`M_C` and
+    :math:`M_{ER}` [N·m], and the pivoting power per unit screw speed
+    :math:`M_P \omega_s/|\omega|` [N·m].
+    """
+    dw = screw.ball_diameter
+    q = pair["screw"].load
+    f_r: FloatArray = np.zeros(shape)
+    m_c: FloatArray = np.zeros(shape)
+    m_er: FloatArray = np.zeros(shape)
+    pivot_power_per_speed: FloatArray = np.zeros(shape)
+    for side, c in pair.items():
+        ratio = c.ry / c.rx
+        f_r = f_r + rolling_force_houpert(
+            screw.reduced_modulus,
+            c.rx,
+            ratio,
+            c.materials_parameter,
+            c.speed_parameter,
+            c.load_parameter,
+        )
+        a = c.hertz.a
+        with np.errstate(divide="ignore"):
+            e = np.where(a > 0.0, 2.0 * ra / np.where(a > 0, a, 1.0) * spin_ratio, 0.0)
+        m_c = m_c + 0.0806 * mus[side] * q * a**2 / ra * curvature_fit(e)
+        m_er = m_er + elastic_hysteresis_moment(dw, q, ratio, hysteresis_units)
+        m_p = 0.375 * mus[side] * q * a * pivoting_fit(e)
+        pivot_power_per_speed = pivot_power_per_speed + m_p * spin_per_speed[side]
+    return f_r, m_c, m_er, pivot_power_per_speed
+
+
+def _spin_per_speed(screw: BallScrew) -> dict[str, float]:
+    r""":math:`|\omega_s|/|\omega|` at each contact, by side.
+
+    The bearing kinematics of Olaru's paper, which neglects the helix
+    (:mod:`ballscrew.kinematics` keeps it; the spin differs by
+    :math:`\cos\lambda`).
+    """
+    gamma = screw.gamma
+    return {
+        "screw": 0.5 * (1.0 + gamma) * math.sin(screw.contact_angle),
+        "nut": 0.5 * (1.0 - gamma) * math.sin(screw.contact_angle),
+    }

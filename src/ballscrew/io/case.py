@@ -157,14 +157,7 @@ def _validation_error(exc: ValidationError) -> BallScrewInputError:
 
 def parse_case(text: str, *, source: str = "case") -> Case:
     """Validate a case given as TOML text; see the module docstring for the format."""
-    try:
-        raw = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise BallScrewInputError(source, "(file)", f"valid TOML ({exc})") from None
-    try:
-        data = CaseFile.model_validate(raw)
-    except ValidationError as exc:
-        raise _validation_error(exc) from None
+    data = _case_file(text, source)
     notes: list[Assumption] = []
     s = data.screw
 
@@ -174,14 +167,7 @@ def parse_case(text: str, *, source: str = "case") -> Case:
     screw, screw_source = _screw(s, si, notes)
 
     lub = _lubricant(data.lubricant, notes)
-    op = data.operation
-    speed = parse_range("operation.speed", _unwrap("operation.speed", op.speed, notes), "rad/s")
-    temperature = parse_range(
-        "operation.temperature", _unwrap("operation.temperature", op.temperature, notes), "degC"
-    )
-    axial = parse_range(
-        "operation.axial_load", _unwrap("operation.axial_load", op.axial_load, notes), "N"
-    )
+    speed, temperature, axial = _operation(data, notes)
     st = data.study
     drag = tuple(si("study", f"drag_torques[{i}]", v, "N*m") for i, v in enumerate(st.drag_torques))
     band = tuple(
@@ -194,6 +180,11 @@ def parse_case(text: str, *, source: str = "case") -> Case:
     for name in temps:
         if name != lub.name:
             lubricants.get(name)  # unknown names fail here, listing the bundled ones
+    study_temperature = (
+        float(temperature[0])
+        if st.temperature is None
+        else si("study", "temperature", st.temperature, "degC")
+    )
     return Case(
         title=data.title,
         description=data.description,
@@ -204,50 +195,87 @@ def parse_case(text: str, *, source: str = "case") -> Case:
         axial_load=np.asarray(axial),
         drag_torques=drag,
         measured_range=band,
-        study_temperature=(
-            float(temperature[0])
-            if st.temperature is None
-            else si("study", "temperature", st.temperature, "degC")
-        ),
+        study_temperature=study_temperature,
         lubricant_temperatures=temps,
         model_parameters={k: dict(v) for k, v in st.model_parameters.items()},
         assumptions=tuple(notes),
         text=text,
         screw_source=screw_source,
-        axis={
-            name: si("axis", name, getattr(data.axis, name), unit)
-            for name, unit in (
-                ("moving_mass", "kg"),
-                ("screw_inertia", "kg*m**2"),
-                ("coupling_inertia", "kg*m**2"),
-                ("motor_inertia", "kg*m**2"),
-                ("gear_ratio", ""),
-                ("incline", "rad"),
-                ("bearing_bore", "m"),
-                ("bearing_span", "m"),
-                ("bearing_outer_diameter", "m"),
-                ("bearing_static_rating", "N"),
-                ("root_diameter", "m"),
-                ("dn_limit", "mm*rpm"),
-            )
-            if getattr(data.axis, name) is not None
-        }
-        | {
-            "bearing_type": data.axis.bearing_type,
-            "bearing_lubrication": data.axis.bearing_lubrication,
-            "support": data.axis.support,
-        },
-        thermal={
-            name: si("axis", name, getattr(data.axis, name), unit)
-            for name, unit in (
-                ("screw_length", "m"),
-                ("nut_mass", "kg"),
-                ("machine_resistance", "K/W"),
-                ("ambient", "degC"),
-            )
-            if getattr(data.axis, name) is not None
-        },
+        axis=_axis(data, si),
+        thermal=_given_si(data, si, _THERMAL_UNITS),
     )
+
+
+def _case_file(text: str, source: str) -> CaseFile:
+    """The TOML text parsed and validated against the case file's schema."""
+    try:
+        raw = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise BallScrewInputError(source, "(file)", f"valid TOML ({exc})") from None
+    try:
+        return CaseFile.model_validate(raw)
+    except ValidationError as exc:
+        raise _validation_error(exc) from None
+
+
+def _operation(
+    data: CaseFile, notes: list[Assumption]
+) -> tuple[list[float], list[float], list[float]]:
+    """``[operation]``'s ranges: speeds [rad/s], temperatures [°C], axial loads [N]."""
+    op = data.operation
+    speed = parse_range("operation.speed", _unwrap("operation.speed", op.speed, notes), "rad/s")
+    temperature = parse_range(
+        "operation.temperature", _unwrap("operation.temperature", op.temperature, notes), "degC"
+    )
+    axial = parse_range(
+        "operation.axial_load", _unwrap("operation.axial_load", op.axial_load, notes), "N"
+    )
+    return speed, temperature, axial
+
+
+_AXIS_UNITS = (
+    ("moving_mass", "kg"),
+    ("screw_inertia", "kg*m**2"),
+    ("coupling_inertia", "kg*m**2"),
+    ("motor_inertia", "kg*m**2"),
+    ("gear_ratio", ""),
+    ("incline", "rad"),
+    ("bearing_bore", "m"),
+    ("bearing_span", "m"),
+    ("bearing_outer_diameter", "m"),
+    ("bearing_static_rating", "N"),
+    ("root_diameter", "m"),
+    ("dn_limit", "mm*rpm"),
+)
+"""The numeric ``[axis]`` keys of the axis and their SI units."""
+
+_THERMAL_UNITS = (
+    ("screw_length", "m"),
+    ("nut_mass", "kg"),
+    ("machine_resistance", "K/W"),
+    ("ambient", "degC"),
+)
+"""The thermal ``[axis]`` keys and their SI units."""
+
+
+def _given_si(
+    data: CaseFile, si: Callable[[str, str, Any, str], float], units: tuple[tuple[str, str], ...]
+) -> dict[str, float]:
+    """The ``[axis]`` keys of ``units`` the case gives, in SI."""
+    return {
+        name: si("axis", name, getattr(data.axis, name), unit)
+        for name, unit in units
+        if getattr(data.axis, name) is not None
+    }
+
+
+def _axis(data: CaseFile, si: Callable[[str, str, Any, str], float]) -> dict[str, Any]:
+    """``[axis]`` in SI and its choices: the keywords of the axis."""
+    return _given_si(data, si, _AXIS_UNITS) | {
+        "bearing_type": data.axis.bearing_type,
+        "bearing_lubrication": data.axis.bearing_lubrication,
+        "support": data.axis.support,
+    }
 
 
 SCREW_UNITS: dict[str, str] = {

@@ -89,6 +89,42 @@ def _dimension(unit: str) -> str:
 
 def parse_measured(text: str, screw: BallScrew, source: str = "measured data") -> MeasuredCurve:
     """Parse a measured curve from CSV text (see the module docstring)."""
+    rows, delimiter = _csv_rows(text, source)
+    header = rows[0]
+    columns = _header_columns(header, source)
+    if len(rows) < 2:
+        raise BallScrewInputError(source, "(no data rows)", "at least one data row")
+    values = _numbers(rows, columns, delimiter, source)
+    ureg = registry()
+    speed = _screw_speed(values["speed"], columns, header, screw, source)
+    torque = np.abs(
+        ureg.Quantity(np.asarray(values["torque"]), columns["torque"][1]).to("N*m").magnitude
+    )
+    temperature = None
+    if "temperature" in columns:
+        kelvin = ureg.Quantity(np.asarray(values["temperature"]), columns["temperature"][1])
+        temperature = np.asarray(kelvin.to("degC").magnitude, dtype=float)
+        if np.any(temperature <= -273.15):
+            raise BallScrewInputError(
+                f"{source}: column '{header[columns['temperature'][0]].strip()}'",
+                float(np.min(temperature)),
+                "temperatures above absolute zero (check the unit)",
+            )
+    load = None
+    if "force" in columns:
+        newton = ureg.Quantity(np.asarray(values["force"]), columns["force"][1])
+        load = np.asarray(newton.to("N").magnitude, dtype=float)
+    return MeasuredCurve(
+        speed=np.asarray(speed, dtype=float),
+        torque=np.asarray(torque, dtype=float),
+        source=source,
+        temperature=temperature,
+        axial_load=load,
+    )
+
+
+def _csv_rows(text: str, source: str) -> tuple[list[list[str]], str]:
+    """The non-blank rows of the CSV text (at least the header), and its separator."""
     text = text.lstrip("\ufeff")
     first = next((line for line in text.splitlines() if line.strip()), "")
     # The separator is the header's: a semicolon or a tab (spreadsheets in
@@ -107,7 +143,11 @@ def parse_measured(text: str, screw: BallScrew, source: str = "measured data") -
             )
     if not rows:
         raise BallScrewInputError(source, "(empty)", "a CSV file with a header and data rows")
-    header = rows[0]
+    return rows, delimiter
+
+
+def _header_columns(header: list[str], source: str) -> dict[str, tuple[int, str]]:
+    """Index and unit of each known column; ``speed_kind`` holds angular or linear."""
     columns: dict[str, tuple[int, str]] = {}
     for i, cell in enumerate(header):
         match = _HEADER.match(cell)
@@ -132,9 +172,14 @@ def parse_measured(text: str, screw: BallScrew, source: str = "measured data") -
             ",".join(header),
             "a torque column with its unit, e.g. 'torque [N*m]'",
         )
-    if len(rows) < 2:
-        raise BallScrewInputError(source, "(no data rows)", "at least one data row")
-    ureg = registry()
+    return columns
+
+
+def _numbers(
+    rows: list[list[str]], columns: dict[str, tuple[int, str]], delimiter: str, source: str
+) -> dict[str, list[float]]:
+    """The data rows' numbers, by column key, in the file's units."""
+    header = rows[0]
     keys = [k for k in ("speed", "torque", "temperature", "force") if k in columns]
     values: dict[str, list[float]] = {k: [] for k in keys}
     for line, row in enumerate(rows[1:], start=2):
@@ -156,43 +201,29 @@ def parse_measured(text: str, screw: BallScrew, source: str = "measured data") -
                     "a finite number",
                 )
             values[key].append(number)
+    return values
+
+
+def _screw_speed(
+    numbers: list[float], columns: dict[str, tuple[int, str]], header: list[str],
+    screw: BallScrew, source: str,
+) -> FloatArray:  # fmt: skip
+    """The speed column as screw speed [rad/s] (a table speed through the lead)."""
+    ureg = registry()
     speed_unit = columns["speed"][1]
-    speed = np.asarray(values["speed"])
+    speed = np.asarray(numbers)
     if columns["speed_kind"][1] == "linear":
         table = ureg.Quantity(speed, speed_unit).to("m/s").magnitude
         speed = np.asarray(table) * (2.0 * math.pi / screw.lead)
     else:
         speed = np.asarray(ureg.Quantity(speed, speed_unit).to("rad/s").magnitude)
-    torque = np.abs(
-        ureg.Quantity(np.asarray(values["torque"]), columns["torque"][1]).to("N*m").magnitude
-    )
     if np.any(np.abs(speed) > 1e5):
         raise BallScrewInputError(
             f"{source}: column '{header[columns['speed'][0]].strip()}'",
             float(np.max(np.abs(speed))),
             "speeds below 1e5 rad/s (about 1e6 rpm)",
         )
-    temperature = None
-    if "temperature" in columns:
-        kelvin = ureg.Quantity(np.asarray(values["temperature"]), columns["temperature"][1])
-        temperature = np.asarray(kelvin.to("degC").magnitude, dtype=float)
-        if np.any(temperature <= -273.15):
-            raise BallScrewInputError(
-                f"{source}: column '{header[columns['temperature'][0]].strip()}'",
-                float(np.min(temperature)),
-                "temperatures above absolute zero (check the unit)",
-            )
-    load = None
-    if "force" in columns:
-        newton = ureg.Quantity(np.asarray(values["force"]), columns["force"][1])
-        load = np.asarray(newton.to("N").magnitude, dtype=float)
-    return MeasuredCurve(
-        speed=np.asarray(speed, dtype=float),
-        torque=np.asarray(torque, dtype=float),
-        source=source,
-        temperature=temperature,
-        axial_load=load,
-    )
+    return speed
 
 
 def read_measured(path: str | Path, screw: BallScrew) -> MeasuredCurve:
