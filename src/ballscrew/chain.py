@@ -28,6 +28,7 @@ from .friction import MODELS, ModelSpec, get_model
 from .geometry import BallScrew
 from .lubricant import Lubricant
 from .state import OperatingState, operating_points, operating_state
+from .validity import ValidityIssue
 
 __all__ = ["FrictionResult", "friction_torque", "models"]
 
@@ -155,6 +156,43 @@ def friction_torque(
     >>> [round(float(t), 4) for t in r.total]
     [0.5642, 0.5642]
     """
+    lubricant, spec = _checked(screw, lubricant, model, parameters)
+    chunk = spec.chunk if chunk_size is None else chunk_size
+    if isinstance(chunk, bool) or not isinstance(chunk, int) or chunk < 1:
+        raise BallScrewInputError("chunk_size", chunk_size, "a whole number >= 1")
+    w0, t0, fa0 = operating_points(speed, temperature, axial_load, broadcast=False)
+    w, t, fa = np.broadcast_arrays(w0, t0, fa0)
+    used = dict(spec.parameters)
+    used.update(parameters)
+    components, state = _evaluate(spec, screw, lubricant, (w0, t0, fa0), chunk, used, parameters)
+    total = np.zeros(w.shape)
+    for value in components.values():
+        total = total + value
+    useful = np.abs(fa) * (screw.lead / (2.0 * math.pi))
+    # useful / (useful + T): 0 where there is no load (and no division by 0 when T = 0 too).
+    efficiency = useful / np.maximum(useful + total, np.finfo(float).tiny)
+    issues = validity.check(screw, lubricant, w, t, fa, spec.name, used, spec.checks)
+    if warn:
+        _warn(issues)
+    return FrictionResult(
+        model=spec.name,
+        total=total,
+        components=components,
+        power_loss=total * np.abs(w),
+        efficiency=efficiency,
+        speed=w,
+        temperature=t,
+        axial_load=fa,
+        parameters=used,
+        warnings=tuple(issues),
+        state=state,
+    )
+
+
+def _checked(
+    screw: BallScrew, lubricant: Lubricant | str, model: str, parameters: dict[str, Any]
+) -> tuple[Lubricant, ModelSpec]:
+    """The lubricant (a bundled one by name) and the model, after checking both and the screw."""
     if isinstance(lubricant, str):
         from . import lubricants
 
@@ -169,18 +207,25 @@ def friction_torque(
         raise BallScrewInputError("screw", screw, "a ballscrew.BallScrew")
     spec = get_model(model)
     spec.check_parameters(parameters)
-    chunk = spec.chunk if chunk_size is None else chunk_size
-    if isinstance(chunk, bool) or not isinstance(chunk, int) or chunk < 1:
-        raise BallScrewInputError("chunk_size", chunk_size, "a whole number >= 1")
-    w0, t0, fa0 = operating_points(speed, temperature, axial_load, broadcast=False)
-    w, t, fa = np.broadcast_arrays(w0, t0, fa0)
-    shape = w.shape
-    n = w.size
-    used = dict(spec.parameters)
-    used.update(parameters)
+    return lubricant, spec
+
+
+def _evaluate(
+    spec: ModelSpec,
+    screw: BallScrew,
+    lubricant: Lubricant,
+    points: tuple[FloatArray, FloatArray, FloatArray],
+    chunk: int,
+    used: dict[str, Any],
+    parameters: dict[str, Any],
+) -> tuple[dict[str, FloatArray], OperatingState | None]:
+    """The model's components over the broadcast points, in chunks of at most ``chunk``.
+
+    The contact state is built once per chunk for the models that use one and
+    returned when there is a single chunk.
+    """
 
     def state_of(sw: FloatArray, st: FloatArray, sf: FloatArray) -> OperatingState | None:
-        """The contact state, built once per chunk, for the models that use one."""
         if not spec.uses_state:
             return None
         return operating_state(
@@ -189,32 +234,29 @@ def friction_torque(
             asperity_c=used["asperity_c"], broadcast=False,
         )  # fmt: skip
 
-    state = None
+    w0, t0, fa0 = points
+    shape = np.broadcast_shapes(w0.shape, t0.shape, fa0.shape)
+    n = math.prod(shape)
     if n <= chunk:
         # The unexpanded inputs: a grid given as an outer product is only
         # expanded where a quantity depends on all three.
         state = state_of(w0, t0, fa0)
-        components = {
-            key: np.array(np.broadcast_to(value, shape), dtype=float)
-            for key, value in spec(screw, lubricant, w0, t0, fa0, state, **parameters).items()
-        }
-    else:
-        flat = [np.ascontiguousarray(x).reshape(-1) for x in (w, t, fa)]
-        pieces: dict[str, list[FloatArray]] = {}
-        for start in range(0, n, chunk):
-            sw, st, sf = (x[start : min(start + chunk, n)] for x in flat)
-            out = spec(screw, lubricant, sw, st, sf, state_of(sw, st, sf), **parameters)
-            for key, value in out.items():
-                pieces.setdefault(key, []).append(value)
-        components = {key: np.concatenate(parts).reshape(shape) for key, parts in pieces.items()}
-    total = np.zeros(shape)
-    for value in components.values():
-        total = total + value
-    useful = np.abs(fa) * (screw.lead / (2.0 * math.pi))
-    # useful / (useful + T): 0 where there is no load (and no division by 0 when T = 0 too).
-    efficiency = useful / np.maximum(useful + total, np.finfo(float).tiny)
-    issues = validity.check(screw, lubricant, w, t, fa, spec.name, used, spec.checks)
-    for issue in issues if warn else ():
+        out = spec(screw, lubricant, w0, t0, fa0, state, **parameters)
+        return {k: np.array(np.broadcast_to(v, shape), dtype=float) for k, v in out.items()}, state
+    flat = [np.ascontiguousarray(x).reshape(-1) for x in np.broadcast_arrays(w0, t0, fa0)]
+    pieces: dict[str, list[FloatArray]] = {}
+    for start in range(0, n, chunk):
+        sw, st, sf = (x[start : min(start + chunk, n)] for x in flat)
+        for key, value in spec(
+            screw, lubricant, sw, st, sf, state_of(sw, st, sf), **parameters
+        ).items():
+            pieces.setdefault(key, []).append(value)
+    return {key: np.concatenate(parts).reshape(shape) for key, parts in pieces.items()}, None
+
+
+def _warn(issues: list[ValidityIssue]) -> None:
+    """Warn of each validity issue; a routine one once per quantity and model in a session."""
+    for issue in issues:
         if issue.routine:
             # Left by every ordinary ball screw: told once per quantity and model
             # in a session (as a note with the reason), recorded in every result.
@@ -222,17 +264,5 @@ def friction_torque(
             if told in _NOTED:
                 continue
             _NOTED.add(told)
-        warnings.warn(BallScrewValidityWarning(issue), stacklevel=2)
-    return FrictionResult(
-        model=spec.name,
-        total=total,
-        components=components,
-        power_loss=total * np.abs(w),
-        efficiency=efficiency,
-        speed=w,
-        temperature=t,
-        axial_load=fa,
-        parameters=used,
-        warnings=tuple(issues),
-        state=state,
-    )
+        # stacklevel 3: the caller of friction_torque, past this helper.
+        warnings.warn(BallScrewValidityWarning(issue), stacklevel=3)

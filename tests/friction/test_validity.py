@@ -69,6 +69,13 @@ def test_one_warning_per_quantity_however_many_points() -> None:
     assert "3.438e+05" in found[0]
 
 
+def test_the_warning_points_at_the_line_that_called_friction_torque() -> None:
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        friction_torque(reference_screw(), OIL, speed=900.0, temperature=40.0, model="catalog")
+    assert caught and {w.filename for w in caught} == {__file__}
+
+
 def test_ellipticity_range_of_the_film_formulas() -> None:
     tight = reference_screw().replace(conformity_screw=0.505, conformity_nut=0.505)
     with warnings.catch_warnings(record=True) as caught:
