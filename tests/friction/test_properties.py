@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 import pytest
@@ -14,7 +15,7 @@ from ballscrew import BallScrew, lubricants
 from ballscrew.contact import HERTZ_METHODS, hertz
 from ballscrew.loads import ball_loads, preload_split
 from ballscrew.state import operating_state
-from shared import ALL_MODELS
+from shared import ALL_MODELS, MINERAL
 
 E_STEEL = 2.1e11 / 0.91
 finite = {"allow_nan": False, "allow_infinity": False}
@@ -104,6 +105,13 @@ def _screw(dm: float, ratio: float, lead_ratio: float, f: float, preload: float)
     )
 
 
+def _screw_and_point(c: dict[str, Any]) -> tuple[BallScrew, dict[str, Any]]:
+    """The screw and the keyword arguments of friction_torque of one drawn case."""
+    screw = _screw(c["dm"], c["ratio"], c["lead_ratio"], c["f"], c["preload"])
+    point = {"speed": c["speed"], "temperature": c["temperature"], "axial_load": c["axial"]}
+    return screw, {**point, "model": c["model"]}
+
+
 operating = st.fixed_dictionaries(
     {
         "dm": st.floats(0.016, 0.08),
@@ -126,14 +134,8 @@ def test_every_model_finite_positive_and_monotonic_in_preload(
     model: str, case: dict[str, object]
 ) -> None:
     c = dict(case, model=model)
-    oil = lubricants.get("mineral ISO VG 68")
-    screw = _screw(c["dm"], c["ratio"], c["lead_ratio"], c["f"], c["preload"])  # type: ignore[arg-type]
-    kw = {
-        "speed": c["speed"],
-        "temperature": c["temperature"],
-        "axial_load": c["axial"],
-        "model": c["model"],
-    }
+    oil = MINERAL
+    screw, kw = _screw_and_point(c)
     r = ballscrew.friction_torque(screw, oil, **kw)  # type: ignore[arg-type]
     assert math.isfinite(float(r.total)) and float(r.total) >= 0.0
     more = ballscrew.friction_torque(screw.replace(preload=1.5 * screw.preload), oil, **kw)  # type: ignore[arg-type]
@@ -166,15 +168,9 @@ def test_fluid_part_rises_with_viscosity(model: str, case: dict[str, object]) ->
     reference-case temperature trend is tested in test_chain.py).
     """
     c = dict(case, model=model)
-    oil = lubricants.get("mineral ISO VG 68")
+    oil = MINERAL
     thicker = oil.replace(nu40=oil.nu40 * 1.5, nu100=oil.nu100 * 1.5)
-    screw = _screw(c["dm"], c["ratio"], c["lead_ratio"], c["f"], c["preload"])  # type: ignore[arg-type]
-    kw = {
-        "speed": c["speed"],
-        "temperature": c["temperature"],
-        "axial_load": c["axial"],
-        "model": c["model"],
-    }
+    screw, kw = _screw_and_point(c)
     part = FLUID_PART[str(c["model"])]
     if model == "complete":
         # Isothermal, flooded: with SKF's shear-heating and starvation factors the rolling

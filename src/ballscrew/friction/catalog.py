@@ -14,15 +14,9 @@ friction part of the driving torque :math:`F_a l/(2\pi\eta)`:
     \eta = \frac{\tan\beta}{\tan(\beta + \rho)},\quad \rho = \arctan\mu
 
 (forward efficiency, rotation to translation). This is the engineers'
-reference against which the physical models are held. The formulas themselves
-are in :mod:`ballscrew.catalog_formulas` (named here too).
-
-References
-----------
-.. [1] THK Co., Ltd., *Ball Screw General Catalog*, section "Preload torque"
-   and "Driving torque" (formula and K coefficient).
-.. [2] NSK Ltd., *Precision Machine Components* catalogue, "Ball screw
-   technical description: preload torque".
+reference against which the physical models are held. The formulas themselves,
+and the catalogues they come from, are in :mod:`ballscrew.catalog_formulas`
+(named here too).
 """
 
 from __future__ import annotations
