@@ -3,12 +3,18 @@
 from __future__ import annotations
 
 import math
-import os
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 import click
 from rich.console import Console
 from rich.table import Table
+
+from .common import stdout, write_json
+
+if TYPE_CHECKING:
+    from ..axis.run import EnergyRun
+    from ..axis.thermal import SteadyAtSpeed
 
 __all__ = ["energy_command"]
 
@@ -64,10 +70,8 @@ def energy_command(
     from .._version import __version__
     from ..axis.run import energy_run, profile_from_file, profile_from_move
     from ..io.case import load_case
-    from ..kinematics import rad_s_to_rpm
     from ..report.outputs import json_document
     from ..units import parse_range, to_si
-    from .common import write_json
 
     case = load_case(case_file)
     if (move_text is None) == (profile_file is None):
@@ -87,12 +91,29 @@ def energy_command(
     run = energy_run(case, profile, model_names, cycles=cycles, temperature=temp,
                      run_time=to_si("--run-time", run_time, "s"), steady_speeds=speeds,
                      move=m)  # fmt: skip
-    temp, axis, results = run.temperature, run.axis, run.results
     for line in run.speed_warnings:
         click.echo(f"warning: {line}", err=True)
     for line in run.assumptions:
         click.echo(f"note: {line}", err=True)
-    table = Table(title=f"{case.title}: {cycles} cycle(s), {profile.duration:.4g} s, {temp:g} °C")
+    title = f"{case.title}: {cycles} cycle(s), {profile.duration:.4g} s, {run.temperature:g} °C"
+    out = stdout(json_file)
+    out.print(_results_table(title, run.results, run_time))
+    _print_weight_verdicts(out, run)
+    for name, at in run.steady.items():
+        out.print(_steady_table(f"{name}: continuous running at {m.get('force', 0.0):g} N", at))
+    if out_dir:
+        from ..report.energy import write_energy_report
+
+        files = write_energy_report(out_dir, case.title, profile, run.cycles_by_model,
+                                    run.results, run.histories or None)  # fmt: skip
+        click.echo(f"report: {Path(out_dir) / 'report.html'} ({len(files)} files)", err=True)
+    if json_file:
+        write_json(json_file, json_document(run.as_dict(__version__)))
+
+
+def _results_table(title: str, results: dict[str, dict[str, Any]], run_time: str) -> Table:
+    """The results of each model over the cycles: energies, efficiencies, motor torques."""
+    table = Table(title=title)
     for column in ("model", "friction energy [J]", "per cycle [J]", "catalogue rule [J]",
                    "bearings [J]", "efficiency fwd / back", "peak motor torque [N*m]",
                    "RMS motor torque [N*m]",
@@ -110,11 +131,12 @@ def energy_command(
             f"{v['rms_motor_torque_Nm']:.4g}",
             f"{v['final_temperature_C']:.3g}",
         )
-    probe = Console()
-    wide = probe.is_terminal or "COLUMNS" in os.environ
-    out = Console(stderr=json_file == "-", markup=False, width=None if wide else 200)
-    out.print(table)
-    for name, v in results.items():
+    return table
+
+
+def _print_weight_verdicts(out: Console, run: EnergyRun) -> None:
+    """Per model, whether the weight along an inclined axis back-drives the screw."""
+    for name, v in run.results.items():
         eta = v["weight_reverse_efficiency"]
         if not math.isnan(eta):
             # The catalogue's test: a load back-drives the screw when the reverse
@@ -125,21 +147,18 @@ def energy_command(
                 else "the screw holds it (self-locking)"
             )
             out.print(
-                f"{name}: the weight along the axis ({math.degrees(axis.incline):g} deg), motor "
-                f"off: reverse efficiency {eta:.3f}; {verdict}"
+                f"{name}: the weight along the axis ({math.degrees(run.axis.incline):g} deg), "
+                f"motor off: reverse efficiency {eta:.3f}; {verdict}"
             )
-    for name, at in run.steady.items():
-        st = Table(title=f"{name}: continuous running at {m.get('force', 0.0):g} N")
-        for column in ("speed [rpm]", "steady temperature [degC]", "torque [N*m]", "power [W]"):
-            st.add_column(column, justify="right")
-        for w, tc, tq, pw in zip(at.speed, at.temperature, at.torque, at.power, strict=True):
-            st.add_row(f"{rad_s_to_rpm(w):.4g}", f"{tc:.3g}", f"{tq:.4g}", f"{pw:.4g}")
-        out.print(st)
-    if out_dir:
-        from ..report.energy import write_energy_report
 
-        files = write_energy_report(out_dir, case.title, profile, run.cycles_by_model, results,
-                                    run.histories or None)  # fmt: skip
-        click.echo(f"report: {Path(out_dir) / 'report.html'} ({len(files)} files)", err=True)
-    if json_file:
-        write_json(json_file, json_document(run.as_dict(__version__)))
+
+def _steady_table(title: str, at: SteadyAtSpeed) -> Table:
+    """Steady temperature, torque and power of continuous running, one row per speed."""
+    from ..kinematics import rad_s_to_rpm
+
+    table = Table(title=title)
+    for column in ("speed [rpm]", "steady temperature [degC]", "torque [N*m]", "power [W]"):
+        table.add_column(column, justify="right")
+    for w, tc, tq, pw in zip(at.speed, at.temperature, at.torque, at.power, strict=True):
+        table.add_row(f"{rad_s_to_rpm(w):.4g}", f"{tc:.3g}", f"{tq:.4g}", f"{pw:.4g}")
+    return table

@@ -105,18 +105,12 @@ def _csv(header: list[str], rows: Sequence[Sequence[object]]) -> bytes:
     return buffer.getvalue().encode("utf-8")
 
 
-def write_energy_report(
-    out: str | Path,
-    title: str,
+def _figures(
     profile: Profile,
     results: Mapping[str, CycleResult],
-    summary: Mapping[str, Mapping[str, object]],
-    history: Mapping[str, tuple[FloatArray, FloatArray]] | None = None,
-) -> list[Path]:
-    """Write the report files into ``out``; returns the paths written."""
-    folder = Path(out)
-    (folder / "figures").mkdir(parents=True, exist_ok=True)
-    (folder / "data").mkdir(parents=True, exist_ok=True)
+    history: Mapping[str, tuple[FloatArray, FloatArray]] | None,
+) -> dict[str, tuple[MplFigure, str]]:
+    """The report's figures by key, each with its caption."""
     figures = {
         "motion": (_motion_figure(profile, results), "Table speed and motor torque"),
         "power": (_power_figure(results), "Friction power of the screw"),
@@ -124,7 +118,11 @@ def write_energy_report(
     }
     if history:
         figures["temperature"] = (_temperature_figure(history), "Temperature over time")
-    written, images = write_figures(folder, {k: fig for k, (fig, _) in figures.items()})
+    return figures
+
+
+def _time_series_csv(profile: Profile, results: Mapping[str, CycleResult]) -> bytes:
+    """The motion and, per model, friction torque, motor torque and friction power over time."""
     header = ["time [s]", "position [mm]", "table speed [m/s]", "axial force [N]"]
     columns: list[FloatArray] = [profile.time, profile.position * 1e3, profile.speed]
     first = next(iter(results.values()))
@@ -134,9 +132,17 @@ def write_energy_report(
                    f"friction power {name} [W]"]  # fmt: skip
         columns += [r.friction_torque, r.motor_torque, r.friction_power]
     rows = [[f"{float(v):.7g}" for v in values] for values in zip(*columns, strict=True)]
-    data = {"time_series": _csv(header, rows)}
-    # One CSV per figure, as the report links them.
+    return _csv(header, rows)
+
+
+def _figure_csvs(
+    profile: Profile,
+    results: Mapping[str, CycleResult],
+    history: Mapping[str, tuple[FloatArray, FloatArray]] | None,
+) -> dict[str, bytes]:
+    """One CSV per figure, as the report links them."""
     names = list(results)
+    data: dict[str, bytes] = {}
     data["motion"] = _csv(
         ["time [s]", "table speed [m/min]", *(f"motor torque {n} [N*m]" for n in names)],
         [[f"{float(t):.7g}", f"{float(v) * 60:.7g}",
@@ -161,26 +167,39 @@ def write_energy_report(
             [[n, f"{float(t):.7g}", f"{float(v):.7g}"]
              for n, (ts, vs) in history.items() for t, v in zip(ts, vs, strict=True)],
         )  # fmt: skip
+    return data
+
+
+def _steady_csv(summary: Mapping[str, Mapping[str, object]]) -> bytes | None:
+    """The steady running of each model that has it, by speed; None when none has."""
     steady: dict[str, Any] = {
         n: v["steady_at_speed"] for n, v in summary.items() if "steady_at_speed" in v
     }
-    if steady:
-        data["steady"] = _csv(
-            ["model", "speed [rpm]", "steady temperature [degC]", "torque [N*m]", "power [W]"],
-            [[n, *(f"{float(x):.7g}" for x in row)]
-             for n, st in steady.items()
-             for row in zip(st["speed_rpm"], st["temperature_C"], st["torque_Nm"],
-                            st["power_W"], strict=True)],
-        )  # fmt: skip
-    # Scalars only in the summary table; the tables of each model have their own CSV.
-    keys = sorted({k for v in summary.values() for k in v
+    if not steady:
+        return None
+    return _csv(
+        ["model", "speed [rpm]", "steady temperature [degC]", "torque [N*m]", "power [W]"],
+        [[n, *(f"{float(x):.7g}" for x in row)]
+         for n, st in steady.items()
+         for row in zip(st["speed_rpm"], st["temperature_C"], st["torque_Nm"],
+                        st["power_W"], strict=True)],
+    )  # fmt: skip
+
+
+def _scalar_keys(summary: Mapping[str, Mapping[str, object]]) -> list[str]:
+    """The summary's scalar keys, sorted: the tables of each model have their own CSV."""
+    return sorted({k for v in summary.values() for k in v
                    if not isinstance(v[k], dict | list | tuple)})  # fmt: skip
-    data["summary"] = _csv(["model", *keys], [[n, *(v.get(k, "") for k in keys)]
-                                               for n, v in summary.items()])  # fmt: skip
-    for key, content in data.items():
-        path = folder / "data" / f"{key}.csv"
-        atomic_write(path, content)
-        written.append(path)
+
+
+def _blocks(
+    title: str,
+    profile: Profile,
+    summary: Mapping[str, Mapping[str, object]],
+    captions: Mapping[str, str],
+) -> list[Block]:
+    """The report's document: the summary table, the figures and the validity warnings."""
+    keys = _scalar_keys(summary)
     blocks = [
         Block("h1", f"Feed axis energy: {title}"),
         Block("p", f"Computed by ballscrew {__version__}; {profile.duration:.4g} s of motion."),
@@ -192,10 +211,40 @@ def write_energy_report(
             ),
         ),
     ]
-    for key, (_, caption) in figures.items():
+    for key, caption in captions.items():
         blocks.append(Block("img", (key, caption)))
     warnings = sorted({w for v in summary.values() for w in v.get("warnings", [])})  # type: ignore[attr-defined]
     blocks += [Block("h2", "Validity"), Block("ul", warnings or ["none"])]
+    return blocks
+
+
+def write_energy_report(
+    out: str | Path,
+    title: str,
+    profile: Profile,
+    results: Mapping[str, CycleResult],
+    summary: Mapping[str, Mapping[str, object]],
+    history: Mapping[str, tuple[FloatArray, FloatArray]] | None = None,
+) -> list[Path]:
+    """Write the report files into ``out``; returns the paths written."""
+    folder = Path(out)
+    (folder / "figures").mkdir(parents=True, exist_ok=True)
+    (folder / "data").mkdir(parents=True, exist_ok=True)
+    figures = _figures(profile, results, history)
+    written, images = write_figures(folder, {k: fig for k, (fig, _) in figures.items()})
+    data = {"time_series": _time_series_csv(profile, results)}
+    data.update(_figure_csvs(profile, results, history))
+    steady = _steady_csv(summary)
+    if steady is not None:
+        data["steady"] = steady
+    keys = _scalar_keys(summary)
+    data["summary"] = _csv(["model", *keys], [[n, *(v.get(k, "") for k in keys)]
+                                               for n, v in summary.items()])  # fmt: skip
+    for key, content in data.items():
+        path = folder / "data" / f"{key}.csv"
+        atomic_write(path, content)
+        written.append(path)
+    blocks = _blocks(title, profile, summary, {k: caption for k, (_, caption) in figures.items()})
     for name, text in (
         ("report.md", markdown(blocks)),
         ("report.html", html_page(blocks, f"Feed axis energy: {title}", images)),

@@ -47,11 +47,15 @@ def _fmt(x: float, digits: int = 4) -> str:
     return "n/a" if not math.isfinite(x) else f"{x:.{digits}g}"
 
 
-def _document(result: StudyResult) -> list[Block]:
+def _title(result: StudyResult) -> str:
+    return f"Ball screw friction study: {result.case.title}"
+
+
+def _opening(result: StudyResult) -> list[Block]:
+    """The title and the paragraph that says what was computed, by which version."""
     case = result.case
-    s = case.screw
-    blocks = [
-        Block("h1", f"Ball screw friction study: {case.title}"),
+    return [
+        Block("h1", _title(result)),
         Block(
             "p",
             (
@@ -62,12 +66,18 @@ def _document(result: StudyResult) -> list[Block]:
             )
             + f"computed by ballscrew {__version__}. {' '.join(case.description.split())}".strip(),
         ),
-        Block("h2", "Findings"),
-        Block("ul", list(result.findings)),
-        Block("h2", "Inputs"),
     ]
-    assumed = {a.field: a.reason for a in case.assumptions}
-    rows = [
+
+
+def _findings(result: StudyResult) -> list[Block]:
+    return [Block("ul", list(result.findings))]
+
+
+def _input_rows(result: StudyResult) -> list[tuple[str, str, str]]:
+    """The inputs table's rows: quantity, value and the case field it comes from."""
+    case = result.case
+    s = case.screw
+    return [
         ("pitch diameter", f"{s.pitch_diameter * 1e3:g} mm", "screw.pitch_diameter"),
         ("lead", f"{s.lead * 1e3:g} mm", "screw.lead"),
         ("ball diameter", f"{s.ball_diameter * 1e3:g} mm", "screw.ball_diameter"),
@@ -95,30 +105,35 @@ def _document(result: StudyResult) -> list[Block]:
         ("temperature (Figs. 3-7)", f"{case.study_temperature:g} °C", "study.temperature"),
         ("axial load", f"{result.axial_load:g} N", "operation.axial_load"),
     ]
-    blocks.append(
-        Block(
-            "table",
-            (
-                ["quantity", "value", "status"],
-                [(q, v, "assumed: " + assumed[f] if f in assumed else "given") for q, v, f in rows],
-            ),
-        )
-    )
-    oil = case.lubricant
-    blocks.append(
+
+
+def _inputs(result: StudyResult) -> list[Block]:
+    """The inputs, each given or assumed (with the reason), and the lubricant's data."""
+    assumed = {a.field: a.reason for a in result.case.assumptions}
+    rows = [
+        (q, v, "assumed: " + assumed[f] if f in assumed else "given")
+        for q, v, f in _input_rows(result)
+    ]
+    oil = result.case.lubricant
+    return [
+        Block("table", (["quantity", "value", "status"], rows)),
         Block(
             "p",
             f"Lubricant {oil.name}: ν40 = {oil.nu40 * 1e6:g} mm²/s, "
             f"ν100 = {oil.nu100 * 1e6:g} mm²/s, ρ15 = {oil.density15:g} kg/m³, "
             f"α = {oil.pressure_viscosity * 1e9:g} 1/GPa; source: {oil.source}.",
-        )
-    )
-    blocks.append(Block("h2", "Derived quantities"))
-    pre_rows = []
+        ),
+    ]
+
+
+def _preload_rows(result: StudyResult) -> list[tuple[str, ...]]:
+    """Per preload: drag torque, preload, ball load and the Hertz contact at the screw."""
+    s = result.case.screw
+    rows: list[tuple[str, ...]] = []
     for torque, force in result.preloads.items():
         q = float(ball_loads(s.replace(preload=force)).normal_load_1)
         c = hertz(q, s.rx_screw, s.ry_screw, s.reduced_modulus, method="exact")
-        pre_rows.append(
+        rows.append(
             (
                 f"{torque:g}",
                 f"{force:.0f}",
@@ -128,124 +143,133 @@ def _document(result: StudyResult) -> list[Block]:
                 f"{float(c.p_max) / 1e9:.3f}",
             )
         )
-    blocks.append(
+    return rows
+
+
+def _derived(result: StudyResult) -> list[Block]:
+    """Lead angle and loaded balls, the preloads' contacts, and Table 1's viscosities."""
+    s = result.case.screw
+    preload_header = ["drag torque [N·m]", "preload [N]", "ball load [N]", "a [mm]", "b [mm]",
+                      "p_max [GPa]"]  # fmt: skip
+    return [
         Block(
             "p",
             f"Lead angle {math.degrees(s.lead_angle):.2f}°, "
             f"{s.balls_per_nut} loaded balls per half-nut. Preloads from the "
             "catalogue drag torque formula, as in the study; Hertz values at "
             "the ball-screw contact (exact method).",
-        )
-    )
-    blocks.append(
-        Block(
-            "table",
-            (
-                [
-                    "drag torque [N·m]",
-                    "preload [N]",
-                    "ball load [N]",
-                    "a [mm]",
-                    "b [mm]",
-                    "p_max [GPa]",
-                ],
-                pre_rows,
-            ),
-        )
-    )
-    blocks.append(
+        ),
+        Block("table", (preload_header, _preload_rows(result))),
         Block(
             "p",
             "Table 1 of the study: temperatures of Fig. 8 and the kinematic "
             "viscosity there (ASTM D341).",
-        )
-    )
-    blocks.append(
+        ),
         Block(
             "table",
             (
                 ["lubricant", "temperature [°C]", "viscosity [mm²/s]"],
                 [(n, f"{t:g}", f"{v * 1e6:.1f}") for n, t, v in result.viscosity_table],
             ),
-        )
-    )
-    blocks.append(Block("h2", "Figures"))
+        ),
+    ]
+
+
+def _figures(result: StudyResult) -> list[Block]:
+    """Each figure with a table of its series at a few speeds."""
+    blocks = []
     for fig in result.figures:
         blocks.append(Block("img", (fig.key, f"{fig.title}. {fig.caption}")))
         picks = _pick_speeds(fig.series[0].speed_rpm)
         header = ["series"] + [f"{fig.series[0].speed_rpm[i]:.0f} rpm [N·m]" for i in picks]
-        rows_t = [[se.label] + [_fmt(float(se.torque[i])) for i in picks] for se in fig.series]
-        blocks.append(Block("table", (header, rows_t)))
-    if result.sensitivity is not None:
-        blocks += _sensitivity_blocks(result.sensitivity)
-    if result.measured is not None:
-        blocks.append(Block("h2", "Against the measured curve"))
-        blocks.append(
-            Block(
-                "p",
-                f"Measured curve: {result.measured.source} "
-                f"({result.measured.speed.size} points); models at the "
-                "reference preload and study temperature.",
-            )
-        )
-        blocks.append(
-            Block(
-                "table",
-                (
-                    ["model", "RMSE [N·m]", "mean |rel. error|", "max |rel. error|"],
-                    [
-                        (
-                            m,
-                            _fmt(v["rmse"]),
-                            _fmt(v["mean_relative"], 3),
-                            _fmt(v["max_relative"], 3),
-                        )
-                        for m, v in result.metrics.items()
-                    ],
-                ),
-            )
-        )
-    blocks.append(Block("h2", "Validity warnings"))
-    blocks.append(
-        Block("ul", list(result.validity) or ["none: every input within the stated ranges"])
-    )
-    blocks.append(Block("h2", "Assumptions"))
-    blocks.append(
+        rows = [[se.label] + [_fmt(float(se.torque[i])) for i in picks] for se in fig.series]
+        blocks.append(Block("table", (header, rows)))
+    return blocks
+
+
+def _sensitivity(result: StudyResult) -> list[Block] | None:
+    return None if result.sensitivity is None else _sensitivity_blocks(result.sensitivity)
+
+
+def _against_measured(result: StudyResult) -> list[Block] | None:
+    """The models' errors against the measured curve; none without one."""
+    if result.measured is None:
+        return None
+    rows = [
+        (m, _fmt(v["rmse"]), _fmt(v["mean_relative"], 3), _fmt(v["max_relative"], 3))
+        for m, v in result.metrics.items()
+    ]
+    return [
         Block(
-            "ul",
-            [f"{a.field} = {a.value}: {a.reason}" for a in case.assumptions]
-            + (
-                [
-                    "Kamalzadeh's measured curve is not public as numbers; the report "
-                    "shows the range the study states (grey band) and overlays a "
-                    "measured curve only when one is given (--measured)."
-                ]
-                if result.reproduction
-                else []
-            ),
+            "p",
+            f"Measured curve: {result.measured.source} "
+            f"({result.measured.speed.size} points); models at the "
+            "reference preload and study temperature.",
+        ),
+        Block("table", (["model", "RMSE [N·m]", "mean |rel. error|", "max |rel. error|"], rows)),
+    ]
+
+
+def _validity(result: StudyResult) -> list[Block]:
+    return [Block("ul", list(result.validity) or ["none: every input within the stated ranges"])]
+
+
+def _assumptions(result: StudyResult) -> list[Block]:
+    """The case's assumptions and, in the reproduction, the note on the measured curve."""
+    notes = [f"{a.field} = {a.value}: {a.reason}" for a in result.case.assumptions]
+    if result.reproduction:
+        notes.append(
+            "Kamalzadeh's measured curve is not public as numbers; the report "
+            "shows the range the study states (grey band) and overlays a "
+            "measured curve only when one is given (--measured)."
         )
-    )
-    blocks.append(Block("h2", "Model parameters"))
-    blocks.append(
-        Block(
-            "table",
-            (
-                ["model", "parameters"],
-                [
-                    (m, ", ".join(f"{k}={v}" for k, v in sorted(p.items())))
-                    for m, p in sorted(case.model_parameters.items())
-                ],
-            ),
-        )
-    )
-    blocks.append(
+    return [Block("ul", notes)]
+
+
+def _model_parameters(result: StudyResult) -> list[Block]:
+    rows = [
+        (m, ", ".join(f"{k}={v}" for k, v in sorted(p.items())))
+        for m, p in sorted(result.case.model_parameters.items())
+    ]
+    return [
+        Block("table", (["model", "parameters"], rows)),
         Block(
             "p",
             "Every other parameter has the model's documented default; see "
             "each model's docstring (ballscrew.friction) for its equations, "
             "references and the readings taken where the sources are unclear.",
-        )
-    )
+        ),
+    ]
+
+
+_Section = tuple[str | None, Callable[[StudyResult], list[Block] | None]]
+
+_TEMPLATE: tuple[_Section, ...] = (
+    (None, _opening),
+    ("Findings", _findings),
+    ("Inputs", _inputs),
+    ("Derived quantities", _derived),
+    ("Figures", _figures),
+    ("Uncertainty: which input dominates the complete model's torque?", _sensitivity),
+    ("Against the measured curve", _against_measured),
+    ("Validity warnings", _validity),
+    ("Assumptions", _assumptions),
+    ("Model parameters", _model_parameters),
+)
+"""The study report's template: each section's heading (h2; None: none) and the function
+that renders its blocks from the study's result (None: the section is left out)."""
+
+
+def _document(result: StudyResult) -> list[Block]:
+    """The report as blocks: the template's sections in order, each under its heading."""
+    blocks: list[Block] = []
+    for heading, section in _TEMPLATE:
+        body = section(result)
+        if body is None:
+            continue
+        if heading is not None:
+            blocks.append(Block("h2", heading))
+        blocks += body
     return blocks
 
 
@@ -264,7 +288,6 @@ def _sensitivity_blocks(s: StudySensitivity) -> list[Block]:
         for i in idx.ranking()
     ]
     return [
-        Block("h2", "Uncertainty: which input dominates the complete model's torque?"),
         Block(
             "p",
             f"Global sensitivity of the complete model's torque, averaged over {s.n_speeds} "
@@ -372,7 +395,7 @@ def write_report(
         )
     step("writing the report")
     blocks = _document(result)
-    title = f"Ball screw friction study: {result.case.title}"  # same as the h1
+    title = _title(result)  # same as the h1
     for path, text in (
         (folder / "report.md", markdown(blocks)),
         (folder / "report.html", html_page(blocks, title, images)),

@@ -135,42 +135,62 @@ def _page_context() -> dict[str, Any]:
     }
 
 
-def create_app(limits: Limits = LIMITS, allowed_hosts: list[str] | None = None) -> Starlette:
-    """The application; ``allowed_hosts``: Host names it answers (default: loopback names)."""
+def _page() -> bytes:
+    """The page, rendered once from its template."""
     templates = jinja2.Environment(
         loader=jinja2.PackageLoader("ballscrew.web", "templates"),
         autoescape=True,
         undefined=jinja2.StrictUndefined,
     )
-    page = templates.get_template("index.html").render(**_page_context()).encode("utf-8")
-    static = _static()
-    lock = threading.Lock()
+    return templates.get_template("index.html").render(**_page_context()).encode("utf-8")
 
-    async def compute(function: Callable[..., dict[str, Any]], *args: Any) -> dict[str, Any]:
-        """Run ``function`` in a worker thread, one request at a time, within the budget."""
 
-        def work() -> dict[str, Any]:
-            # Half the budget to wait for the worker, so that "busy" is told in time.
-            if not lock.acquire(timeout=limits.seconds / 2):
-                raise ApiError(503, "the calculator is busy; try again in a moment")
-            try:
-                # One at a time, so the warning filters (process-wide) are ours alone;
-                # the results keep every validity issue, returned as text.
-                with warnings.catch_warnings():
-                    warnings.simplefilter("ignore", BallScrewValidityWarning)
-                    warnings.simplefilter("ignore", BallScrewSpeedWarning)
-                    return function(*args)
-            finally:
-                lock.release()
+class _Worker:
+    """Runs a computation in a worker thread, one request at a time, within the time budget."""
 
+    def __init__(self, limits: Limits) -> None:
+        self.limits = limits
+        self.lock = threading.Lock()
+
+    def _run(self, function: Callable[..., dict[str, Any]], *args: Any) -> dict[str, Any]:
+        # Half the budget to wait for the worker, so that "busy" is told in time.
+        if not self.lock.acquire(timeout=self.limits.seconds / 2):
+            raise ApiError(503, "the calculator is busy; try again in a moment")
         try:
-            with anyio.fail_after(limits.seconds):
-                return await anyio.to_thread.run_sync(work, abandon_on_cancel=True)
+            # One at a time, so the warning filters (process-wide) are ours alone;
+            # the results keep every validity issue, returned as text.
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore", BallScrewValidityWarning)
+                warnings.simplefilter("ignore", BallScrewSpeedWarning)
+                return function(*args)
+        finally:
+            self.lock.release()
+
+    async def __call__(self, function: Callable[..., dict[str, Any]], *args: Any) -> dict[str, Any]:
+        """Run ``function`` in a worker thread, one request at a time, within the budget."""
+        try:
+            with anyio.fail_after(self.limits.seconds):
+                return await anyio.to_thread.run_sync(
+                    self._run, function, *args, abandon_on_cancel=True
+                )
         except TimeoutError:
-            raise ApiError(503, f"the request took over {limits.seconds:g} s") from None
+            raise ApiError(503, f"the request took over {self.limits.seconds:g} s") from None
+
+
+_Endpoint = Callable[[Request], Awaitable[Response]]
+
+
+def _index(page: bytes) -> _Endpoint:
+    """``GET /``: the page."""
 
     async def index(request: Request) -> Response:
         return HTMLResponse(page, headers={"cache-control": "no-cache"})
+
+    return index
+
+
+def _static_file(static: dict[str, bytes]) -> _Endpoint:
+    """``GET /static/{name}``: the page's script or style, from memory; 404 for any other name."""
 
     async def static_file(request: Request) -> Response:
         name = request.path_params["name"]
@@ -180,37 +200,57 @@ def create_app(limits: Limits = LIMITS, allowed_hosts: list[str] | None = None) 
             static[name], media_type=_STATIC_TYPES[name], headers={"cache-control": "no-cache"}
         )
 
-    def json_route(
-        function: Callable[[dict[str, Any], Limits], dict[str, Any]],
-    ) -> Callable[[Request], Awaitable[Response]]:
-        async def endpoint(request: Request) -> Response:
-            payload = service.read_json(await _body(request, limits))
-            return _json(await compute(function, payload, limits))
+    return static_file
 
-        return endpoint
+
+def _json_route(
+    function: Callable[[dict[str, Any], Limits], dict[str, Any]], limits: Limits, compute: _Worker
+) -> _Endpoint:
+    """An API route: the JSON body to ``function`` (in the worker), its result as JSON."""
+
+    async def endpoint(request: Request) -> Response:
+        payload = service.read_json(await _body(request, limits))
+        return _json(await compute(function, payload, limits))
+
+    return endpoint
+
+
+def _case_file(limits: Limits) -> _Endpoint:
+    """``POST /api/case``: an uploaded case file read as TOML data."""
 
     async def case_file(request: Request) -> Response:
         return _json(service.read_case_file(await _body(request, limits)))
 
-    async def api_error(request: Request, exc: Exception) -> Response:
-        assert isinstance(exc, ApiError)
-        return JSONResponse(exc.payload(), status_code=exc.status)
+    return case_file
 
-    async def http_error(request: Request, exc: Exception) -> Response:
-        assert isinstance(exc, HTTPException)
-        text = {404: "not found", 405: "method not allowed"}.get(exc.status_code, "refused")
-        if request.url.path.startswith("/api/"):
-            return JSONResponse({"error": text}, status_code=exc.status_code)
-        return HTMLResponse(_message_page(text), status_code=exc.status_code)
 
-    async def internal_error(request: Request, exc: Exception) -> Response:
-        # The traceback goes to the server's log (uvicorn logs the exception too);
-        # the browser is told only that something failed on the server.
-        LOG.error("internal error on %s %s", request.method, request.url.path, exc_info=exc)
-        text = "internal error: the server could not compute this (see the server's log)"
-        if request.url.path.startswith("/api/"):
-            return JSONResponse({"error": text}, status_code=500)
-        return HTMLResponse(_message_page(text), status_code=500)
+async def _api_error(request: Request, exc: Exception) -> Response:
+    assert isinstance(exc, ApiError)
+    return JSONResponse(exc.payload(), status_code=exc.status)
+
+
+async def _http_error(request: Request, exc: Exception) -> Response:
+    assert isinstance(exc, HTTPException)
+    text = {404: "not found", 405: "method not allowed"}.get(exc.status_code, "refused")
+    if request.url.path.startswith("/api/"):
+        return JSONResponse({"error": text}, status_code=exc.status_code)
+    return HTMLResponse(_message_page(text), status_code=exc.status_code)
+
+
+async def _internal_error(request: Request, exc: Exception) -> Response:
+    # The traceback goes to the server's log (uvicorn logs the exception too);
+    # the browser is told only that something failed on the server.
+    LOG.error("internal error on %s %s", request.method, request.url.path, exc_info=exc)
+    text = "internal error: the server could not compute this (see the server's log)"
+    if request.url.path.startswith("/api/"):
+        return JSONResponse({"error": text}, status_code=500)
+    return HTMLResponse(_message_page(text), status_code=500)
+
+
+def _lifespan(
+    compute: _Worker, limits: Limits
+) -> Callable[[Starlette], contextlib.AbstractAsyncContextManager[None]]:
+    """The application's lifespan: a warm-up computation before the first request."""
 
     @contextlib.asynccontextmanager
     async def lifespan(app: Starlette) -> AsyncIterator[None]:
@@ -222,25 +262,33 @@ def create_app(limits: Limits = LIMITS, allowed_hosts: list[str] | None = None) 
             LOG.exception("warm-up computation failed")
         yield
 
+    return lifespan
+
+
+def create_app(limits: Limits = LIMITS, allowed_hosts: list[str] | None = None) -> Starlette:
+    """The application; ``allowed_hosts``: Host names it answers (default: loopback names)."""
+    compute = _Worker(limits)
     hosts = list(allowed_hosts) if allowed_hosts is not None else list(LOOPBACK_HOSTS)
     return Starlette(
         debug=False,
-        lifespan=lifespan,
+        lifespan=_lifespan(compute, limits),
         routes=[
-            Route("/", index, methods=["GET"]),
-            Route("/static/{name}", static_file, methods=["GET"]),
-            Route("/api/torque", json_route(service.torque), methods=["POST"]),
-            Route("/api/evaluate", json_route(service.evaluate), methods=["POST"]),
-            Route("/api/case", case_file, methods=["POST"]),
+            Route("/", _index(_page()), methods=["GET"]),
+            Route("/static/{name}", _static_file(_static()), methods=["GET"]),
+            Route("/api/torque", _json_route(service.torque, limits, compute), methods=["POST"]),
+            Route(
+                "/api/evaluate", _json_route(service.evaluate, limits, compute), methods=["POST"]
+            ),
+            Route("/api/case", _case_file(limits), methods=["POST"]),
         ],
         middleware=[
             Middleware(_Guard, limit=limits.body_bytes),
             Middleware(TrustedHostMiddleware, allowed_hosts=hosts),
         ],
         exception_handlers={
-            ApiError: api_error,
-            HTTPException: http_error,
-            Exception: internal_error,
+            ApiError: _api_error,
+            HTTPException: _http_error,
+            Exception: _internal_error,
         },
     )
 
