@@ -14,7 +14,9 @@ name                      module
 Every module of this package whose name does not start with an underscore is
 imported here, and registers its model with :func:`register` as it loads: a new
 model is a new module, nothing else. Modules starting with an underscore hold
-what the models share (the registry, the shear laws).
+what the models share (the registry, the shear laws). The shipped models load
+first, in the order listings have always shown them; any other module follows,
+by name.
 """
 
 from __future__ import annotations
@@ -26,6 +28,8 @@ from ._registry import MODELS, ModelSpec, get_model, register
 
 __all__ = ["MODELS", "ModelSpec", "get_model", "register"]
 
-for _module in sorted(pkgutil.iter_modules(__path__), key=lambda m: m.name):
-    if not _module.name.startswith("_"):
-        importlib.import_module(f"{__name__}.{_module.name}")
+_SHIPPED = ("catalog", "complete", "harris_simplified", "harris_full", "olaru", "viscoelastic")
+_OTHERS = sorted(m.name for m in pkgutil.iter_modules(__path__) if m.name not in _SHIPPED)
+for _name in (*_SHIPPED, *_OTHERS):
+    if not _name.startswith("_"):
+        importlib.import_module(f"{__name__}.{_name}")
