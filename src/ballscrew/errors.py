@@ -15,6 +15,7 @@ import numpy.typing as npt
 
 __all__ = [
     "BallScrewInputError",
+    "BallScrewReadingWarning",
     "BallScrewValidityWarning",
     "broadcast_inputs",
     "check_choice",
@@ -64,6 +65,15 @@ class BallScrewSpeedWarning(UserWarning):
     """A motion drives the screw above its critical speed or its nut's d·n limit.
 
     See :mod:`ballscrew.limits`.
+    """
+
+
+class BallScrewReadingWarning(UserWarning):
+    """A quantity's text could be meant two ways; the message says which reading was taken.
+
+    A speed in ``Hz`` or ``1/s`` is read as revolutions per second (see
+    :mod:`ballscrew.units`); the message gives the other reading and how to
+    write it.
     """
 
 

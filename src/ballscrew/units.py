@@ -1,8 +1,46 @@
-"""Units at the boundary: quantities typed by people ("25 mm", "2 kN") to SI floats.
+r"""Units at the boundary: quantities typed by people ("25 mm", "2 kN") to SI floats.
 
-All conversions of the configuration files and the command line go through
-:func:`to_si`, which uses pint. Inside the package everything is SI
-(m, N, Pa, Pa·s, m²/s, rad/s, N·m) and temperatures are in °C.
+All conversions of the case files, the command line, the web page and the
+headers of measured curves go through this module. Inside the package
+everything is SI (m, N, Pa, Pa·s, m²/s, rad/s, N·m) and temperatures are in °C.
+
+Reading a quantity takes two steps. The text is first held against a strict
+grammar (:func:`split_quantity`): a number, written the way engineers write
+numbers, then a unit made of unit names joined by ``*``, ``/``, ``·`` or a
+space, each with an optional small integer power. Nothing else reaches the unit
+library (pint), so an expression such as ``10**10**8`` or a 20 kB unit name is
+refused at once. Pint then converts the unit.
+
+**Numbers.**
+
+* The point is always a decimal point: ``1.5``, ``0.125``.
+* In a single value a comma is a decimal comma: ``1,2 kN`` is 1.2 kN. After one
+  to three digits, a comma followed by exactly three digits (``1,200``) may be a
+  thousands separator or a decimal comma; it is refused, with both readings.
+  In a list (``"10, 100, 1000 rpm"``) commas separate the values, so a comma
+  between two digits is refused there, with both readings.
+* Digits may be grouped by threes with a space (a no-break or thin space too)
+  or an apostrophe: ``1 200 N``, ``1'200 N``. Any other grouping is refused: a
+  space is never read as a multiplication.
+* With both a point and a comma, the last one is the decimal separator and the
+  other groups thousands: ``1.200,5`` and ``1,200.5`` are both 1200.5.
+* An exponent follows the digits: ``2.5e3``. The minus sign may be typed as ``−``.
+
+**Speeds.** Catalogues write the speed of a screw as a frequency: ``n = 3000
+1/min``. A speed given as a frequency without an angle (``1/min``, ``min^-1``,
+``min⁻¹``, ``Hz``, ``1/s``) is therefore read as revolutions per unit time:
+``3000 1/min`` is 3000 rpm, and ``50 Hz`` is 50 revolutions per second, 3000
+rpm. Per second, some people mean radians (``ω = 100 1/s``): a speed in ``Hz``
+or ``1/s`` is read as revolutions and the reading is noted, with the other one
+and how to write it. ``rpm``, ``rev/min``, ``r/min``, ``U/min``, ``rps``,
+``rad/s`` and ``deg/s`` say what they mean and are read without a note.
+
+**Leads.** A lead is the advance per revolution: ``10 mm/rev`` and ``10 mm``
+are the same lead.
+
+**Other spellings.** ``Nm``, ``Ncm``, ``Nmm``, ``kNm`` are newton metres,
+centimetres and millimetres (not pint's reading of ``Nm``); ``U`` is a
+revolution (``U/min``), not an enzyme unit; ``RPM`` is ``rpm``.
 """
 
 from __future__ import annotations
@@ -10,32 +48,335 @@ from __future__ import annotations
 import functools
 import math
 import re
-import tokenize
+import warnings
+from dataclasses import dataclass
 from typing import Any
 
 import pint
 
-from .errors import BallScrewInputError
+from .errors import BallScrewInputError, BallScrewReadingWarning
 
-__all__ = ["parse_range", "range_size", "registry", "to_si"]
+__all__ = [
+    "MAX_TEXT",
+    "Reading",
+    "parse_range",
+    "parse_unit",
+    "range_size",
+    "registry",
+    "split_quantity",
+    "to_si",
+    "to_si_array",
+]
+
+MAX_TEXT = 100
+"""Characters a quantity, a list or a range may have (a unit name far fewer)."""
+
+_MAX_WORD = 24  # characters of one unit name (pint's longest common ones: ~20)
+_MAX_POWER = 4  # |power| of one unit name (m**3, s**-2; nothing needs more)
 
 
 @functools.cache
 def registry() -> pint.UnitRegistry:  # type: ignore[type-arg]
     """The package's pint unit registry.
 
-    Pint's parsed unit definitions are cached on disk (its ``:auto:`` user
-    cache folder), which cuts building the registry from about 0.5 s to
-    0.04 s; where no cache folder can be written, the registry is built
-    without one.
+    ``rev`` and ``r`` are added as names of the revolution (``rev/min``,
+    ``r/min``). Pint's parsed unit definitions are cached on disk (its
+    ``:auto:`` user cache folder), which cuts building the registry from about
+    0.5 s to 0.04 s; where no cache folder can be written, the registry is
+    built without one.
     """
+    ureg: pint.UnitRegistry  # type: ignore[type-arg]
     try:
-        return pint.UnitRegistry(autoconvert_offset_to_baseunit=True, cache_folder=":auto:")
+        ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True, cache_folder=":auto:")
     except OSError:  # read-only home, no cache directory: parse the definitions
-        return pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+        ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+    ureg.define("@alias turn = rev = r")
+    return ureg
 
 
-def to_si(field: str, value: Any, unit: str | None) -> float:
+# --- numbers ---------------------------------------------------------------------------------
+_GROUPING = " \u00a0\u2009\u202f'\u2019"  # space, no-break, thin, narrow no-break; apostrophes
+_DASHES = str.maketrans({"\u2212": "-", "\u2012": "-", "\u2013": "-", "\ufe63": "-"})
+_NUMBER = re.compile(
+    r"(?P<sign>[-+]?)\s*"
+    r"(?P<digits>\d(?:[\d.," + _GROUPING + r"]*\d)?|[.,]\d+)"
+    r"(?P<exponent>[eE][-+]?\d{1,3})?"
+)
+
+
+class _NotOneNumberError(Exception):
+    """The digits cannot be read as one number, or could be read two ways."""
+
+    def __init__(self, why: str, readings: tuple[str, ...] = ()) -> None:
+        super().__init__(why)
+        self.why = why
+        self.readings = readings
+
+
+def _grouped(parts: list[str]) -> bool:
+    """Digits grouped by threes: 1 to 3 digits, then groups of exactly 3."""
+    return (
+        all(p.isdigit() for p in parts)
+        and 1 <= len(parts[0]) <= 3
+        and all(len(p) == 3 for p in parts[1:])
+    )
+
+
+def _digits_value(digits: str) -> str:
+    """Plain decimal text of the digits as written (grouping and decimal comma resolved)."""
+    parts = re.split("[" + _GROUPING + "]", digits)
+    if len(parts) > 1:
+        *head, last = parts
+        tail = re.fullmatch(r"(\d+)(?:([.,])(\d+))?", last)
+        if not tail or not _grouped([*head, tail.group(1)]):
+            raise _NotOneNumberError(
+                "a space inside a number is read only as a thousands separator, between "
+                "groups of three digits (e.g. '1 200'); write the number without spaces"
+            )
+        fraction = "." + tail.group(3) if tail.group(2) else ""
+        return "".join(head) + tail.group(1) + fraction
+    points, commas = digits.count("."), digits.count(",")
+    if points + commas == 0:
+        return digits
+    if points and commas:
+        decimal = "." if digits.rfind(".") > digits.rfind(",") else ","
+        thousands = "," if decimal == "." else "."
+        whole, fraction = digits.rsplit(decimal, 1)
+        if decimal in whole or not _grouped(whole.split(thousands)):
+            raise _NotOneNumberError("a point and a comma that do not make one number")
+        return whole.replace(thousands, "") + "." + fraction
+    mark = "." if points else ","
+    groups = digits.split(mark)
+    if len(groups) > 2:  # several marks: only thousands separators can repeat
+        if not _grouped(groups):
+            raise _NotOneNumberError(f"several '{mark}' that do not group the digits by threes")
+        return "".join(groups)
+    whole, fraction = groups
+    if mark == "," and len(fraction) == 3 and 1 <= len(whole) <= 3 and whole[0] != "0":
+        raise _NotOneNumberError(
+            "a comma before three digits may group thousands or be a decimal comma",
+            (whole + fraction, whole + "." + fraction),
+        )
+    return (whole or "0") + "." + fraction
+
+
+def split_quantity(field: str, text: str) -> tuple[float, str]:
+    """The number and the unit text of one quantity, after the grammar's checks.
+
+    Parameters
+    ----------
+    field : str
+        Name of the input, for error messages.
+    text : str
+        One quantity: ``"1 200 N"``, ``"1,2 kN"``, ``"3000 1/min"``, ``"-5e3 N*m"``.
+
+    Returns
+    -------
+    tuple of (float, str)
+        The number and the unit text, canonical for pint ("" for none).
+
+    Raises
+    ------
+    BallScrewInputError
+        Text that is not a number followed by a unit of the grammar (module
+        docstring), or a number that could be read two ways (both are shown).
+
+    Examples
+    --------
+    >>> split_quantity("preload", "1 200 N")
+    (1200.0, 'N')
+    >>> split_quantity("preload", "1,2 kN")
+    (1.2, 'kN')
+    >>> split_quantity("speed", "3000 min⁻¹")
+    (3000.0, 'min**-1')
+    >>> split_quantity("torque", "0,25 Nm")
+    (0.25, '(N*m)')
+    """
+    raw = _clean(field, text)
+    match = _NUMBER.match(raw)
+    if not match:
+        raise BallScrewInputError(field, text, "a number followed by its unit, e.g. '1.5 kN'")
+    digits, rest = match.group("digits"), raw[match.end() :]
+    one = re.match(r"^(.*\d)\s+1$", digits)  # "3000 1/min": the 1 belongs to the unit
+    if one and re.match(r"\s*/", rest) and not match.group("exponent"):
+        digits, rest = one.group(1), "1" + rest
+    try:
+        plain = _digits_value(digits)
+    except _NotOneNumberError as exc:
+        shown = ""
+        if exc.readings:
+            shown = " (" + " or ".join(f"'{r}{(' ' + rest.strip()) if rest.strip() else ''}'"
+                                       for r in exc.readings) + "?)"  # fmt: skip
+        raise BallScrewInputError(field, text, f"one number: {exc.why}{shown}") from None
+    number = float(match.group("sign") + plain + (match.group("exponent") or ""))
+    return number, _unit_text(field, text, rest)
+
+
+def _clean(field: str, text: str) -> str:
+    raw = str(text).translate(_DASHES).strip()
+    if len(raw) > MAX_TEXT:
+        raise BallScrewInputError(
+            field, f"{raw[:20]}... ({len(raw)} characters)", f"at most {MAX_TEXT} characters"
+        )
+    return raw
+
+
+# --- units -----------------------------------------------------------------------------------
+_SUPERSCRIPTS = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹⁻⁺", "0123456789-+")
+_WORD = r"[^\W\d_](?:[^\W\d]*[^\W\d_])?|°[CF]?|%"
+_UNIT_TOKEN = re.compile(
+    r"\s*(?:(?P<one>1)(?=\s*/)|(?P<word>" + _WORD + r")"
+    r"(?:\s*(?:\*\*|\^)\s*(?P<power>[-+]?\d+)|(?P<attached>[-+]?\d+)(?![\d.]))?"
+    r"|(?P<op>[*/·⋅×])|(?P<paren>[()]))"
+)
+_ALIASES = {
+    "U": "turn",  # Umdrehungen: U/min
+    "RPM": "rpm",
+    "Nm": "(N*m)",
+    "Ncm": "(N*cm)",
+    "Nmm": "(N*mm)",
+    "kNm": "(kN*m)",
+    "mNm": "(mN*m)",
+}
+_UNIT_HELP = (
+    "a unit made of unit names joined by '*', '/' or '·' with small integer powers, "
+    "e.g. 'mm', 'kN', 'rpm', 'N*m', 'mm**2/s'"
+)
+
+
+def _unit_text(field: str, text: str, rest: str) -> str:
+    """The unit part checked against the grammar and rewritten for pint ("" for none)."""
+    rest = rest.translate(_SUPERSCRIPTS).strip()
+    out: list[str] = []
+    depth, position, expect_unit = 0, 0, True
+    while position < len(rest):
+        token = _UNIT_TOKEN.match(rest, position)
+        if not token or token.end() == position:
+            raise BallScrewInputError(field, text, _UNIT_HELP)
+        position = token.end()
+        if token.group("word") or token.group("one"):
+            if not expect_unit:
+                out.append("*")  # "N m": a space between two units multiplies them
+            word = token.group("word") or "1"
+            power = token.group("power") or token.group("attached")
+            if len(word) > _MAX_WORD or (power and abs(int(power)) > _MAX_POWER):
+                raise BallScrewInputError(field, text, _UNIT_HELP)
+            out.append(_ALIASES.get(word, word) + (f"**{int(power)}" if power else ""))
+            expect_unit = False
+        elif token.group("op"):
+            if expect_unit:
+                raise BallScrewInputError(field, text, _UNIT_HELP)
+            out.append("/" if token.group("op") == "/" else "*")
+            expect_unit = True
+        elif token.group("paren") == "(":
+            if not expect_unit or depth >= 2:
+                raise BallScrewInputError(field, text, _UNIT_HELP)
+            depth += 1
+            out.append("(")
+        else:
+            if expect_unit or depth == 0:
+                raise BallScrewInputError(field, text, _UNIT_HELP)
+            depth -= 1
+            out.append(")")
+    if depth or (out and expect_unit):
+        raise BallScrewInputError(field, text, _UNIT_HELP)
+    return "".join(out)
+
+
+def parse_unit(field: str, text: str) -> Any:
+    """A pint unit from unit text alone (a column header's ``[unit]``), through the grammar.
+
+    Examples
+    --------
+    >>> str(parse_unit("speed", "1/min"))
+    '1 / minute'
+    >>> str(parse_unit("torque", "Nmm"))
+    'millimeter * newton'
+    """
+    raw = _clean(field, text)
+    return _pint_unit(field, text, _unit_text(field, text, raw))
+
+
+def _pint_unit(field: str, text: str, unit: str) -> Any:
+    try:
+        return registry().parse_units(unit) if unit else registry().dimensionless
+    except (pint.errors.PintError, ValueError, TypeError, AttributeError, AssertionError,
+            ArithmeticError, LookupError, SyntaxError):  # fmt: skip
+        raise BallScrewInputError(field, text, _UNIT_HELP + " (not a known unit)") from None
+
+
+# --- conversion ------------------------------------------------------------------------------
+def _angle_power(unit: Any) -> int:
+    """The power of the radian in a unit's root units (pint keeps the radian as a base unit)."""
+    _, root = registry().get_root_units(unit)
+    power: Any = root._units.get("radian", 0)  # a UnitsContainer: {name: power}
+    return int(power)
+
+
+@functools.cache
+def _target(unit: str) -> tuple[Any, int]:
+    parsed = registry().parse_units(unit)
+    return parsed, _angle_power(parsed)
+
+
+def _per_turn(field: str, text: str, unit: Any, target: str) -> Any:
+    """The factor that reads a frequency as revolutions, or a length as one per revolution.
+
+    Pint counts the radian as 1, so without this "10 mm/rev" would become a lead
+    of 1.6 mm and "3000 1/min" a speed of 477 rpm. The promotion applies only
+    where the target has one power of the angle and a dimension besides it (a
+    speed, a lead); a value with another power of the angle is refused.
+    """
+    ureg = registry()
+    wanted, angle = _target(target)
+    have = _angle_power(unit)
+    if have == angle:
+        return ureg.dimensionless
+    factor = ureg.turn**angle
+    if (
+        have != 0
+        or abs(angle) != 1
+        or wanted.dimensionless
+        or not (unit * factor).is_compatible_with(wanted)
+    ):
+        raise BallScrewInputError(
+            field, text, f"a quantity convertible to {target} (incompatible unit), "
+            f"e.g. '1 {_example(target)}'",
+        )  # fmt: skip
+    return factor
+
+
+@dataclass(frozen=True)
+class Reading:
+    """How a text that could be meant two ways was read: the field, the text, the reading."""
+
+    field: str
+    text: str
+    reading: str
+
+    def __str__(self) -> str:
+        given = f" = {self.text!r}" if self.text else ""
+        return f"{self.field}{given} is read as {self.reading}"
+
+
+def _frequency_note(field: str, text: str, number: Any, unit: Any) -> Reading | None:
+    """How a speed in Hz or 1/s was read (per minute, nobody means radians)."""
+    ureg = registry()
+    if _angle_power(unit) or not unit.is_compatible_with(ureg.hertz):
+        return None
+    if "minute" in str(unit):
+        return None
+    per_second = ureg.Quantity(1.0, unit).to("1/s").magnitude
+    if getattr(number, "ndim", 0) == 0:
+        rps = float(number) * per_second
+        shown = f"{rps:g} revolutions per second, {rps * 60.0:g} rpm"
+    else:
+        shown = f"revolutions per second (1 {unit:~} = {per_second * 60.0:g} rpm)"
+        text = ""  # a column: its unit is in the field's name
+    return Reading(field, text, f"{shown}; for radians per second write the unit rad/s")
+
+
+def to_si(field: str, value: Any, unit: str | None, notes: list[Reading] | None = None) -> float:
     """Convert ``value`` to the SI unit ``unit`` and return the magnitude.
 
     Parameters
@@ -43,16 +384,20 @@ def to_si(field: str, value: Any, unit: str | None) -> float:
     field : str
         Name of the input, for error messages.
     value : str or number
-        A quantity with its unit ("32 mm", "1.5 kN", "45 deg", "3000 rpm",
-        "40 degC"). A bare number is accepted only for a dimensionless
-        quantity (``unit=""``): anywhere else it is an error that shows how
-        to write it, since a number without a unit ("100" for a speed) is
-        the commonest silent slip (rad/s or rpm? m or mm?).
+        A quantity with its unit ("32 mm", "1,5 kN", "45 deg", "3000 rpm",
+        "3000 1/min", "40 degC"), read by the grammar of the module docstring.
+        A bare number is accepted only for a dimensionless quantity
+        (``unit=""``): anywhere else it is an error that shows how to write it,
+        since a number without a unit ("100" for a speed) is the commonest
+        silent slip (rad/s or rpm? m or mm?).
     unit : str or None
-        Target unit, in pint's notation ("m", "N", "rad", "rad/s", "degC"),
-        or "" for a dimensionless number. None: whatever the value's unit is,
-        converted to SI base units, and a bare number taken as SI (the
+        Target unit, in pint's notation ("m", "N", "rad", "rad/s", "m/turn",
+        "degC"), or "" for a dimensionless number. None: whatever the value's
+        unit is, converted to SI base units, and a bare number taken as SI (the
         convention of model parameters, whose units the models document).
+    notes : list of Reading, optional
+        Where to add how an ambiguous unit was read (a speed in Hz or 1/s);
+        without it, a :class:`~ballscrew.errors.BallScrewReadingWarning`.
 
     Examples
     --------
@@ -60,6 +405,12 @@ def to_si(field: str, value: Any, unit: str | None) -> float:
     0.032
     >>> round(to_si("speed", "3000 rpm", "rad/s"), 4)
     314.1593
+    >>> round(to_si("speed", "3000 1/min", "rad/s"), 4)  # revolutions, as catalogues mean
+    314.1593
+    >>> to_si("preload", "1 200 N", "N"), to_si("preload", "1,2 kN", "N")
+    (1200.0, 1200.0)
+    >>> round(to_si("lead", "10 mm/rev", "m/turn"), 6), round(to_si("lead", "10 mm", "m/turn"), 6)
+    (0.01, 0.01)
     >>> to_si("temperature", "313.15 K", "degC")
     40.0
     >>> to_si("speed", "100", "rad/s")  # doctest: +ELLIPSIS
@@ -67,58 +418,89 @@ def to_si(field: str, value: Any, unit: str | None) -> float:
     ...
     ballscrew.errors.BallScrewInputError: speed = '100' is not allowed: ...e.g. '100 rpm'...
     """
-    ureg = registry()
     if isinstance(value, bool):
         wanted = "a number" if unit is None else f"a quantity in units of {unit}, e.g. '1 {unit}'"
         raise BallScrewInputError(field, value, wanted)
-    try:
-        if isinstance(value, int | float):
-            if unit:
-                raise _bare(field, value, unit)
-            magnitude = float(value)
-        else:
-            quantity: Any = ureg.Quantity(str(value).strip())
-            if quantity.units == ureg.dimensionless:  # a bare number written as text
-                if unit:
-                    raise _bare(field, value, unit)
-                magnitude = float(quantity.magnitude)
-            elif unit is None:
-                magnitude = float(quantity.to_base_units().magnitude)
-            else:
-                magnitude = float(quantity.to(unit).magnitude)
-    except BallScrewInputError:
-        raise
-    except (
-        pint.errors.PintError,
-        ValueError,
-        TypeError,
-        AttributeError,
-        AssertionError,
-        ArithmeticError,
-        RecursionError,
-        LookupError,
-        SyntaxError,
-        tokenize.TokenError,  # the unit library's tokenizer on unbalanced brackets
-    ) as exc:
-        reason = (
-            "incompatible unit"
-            if isinstance(exc, pint.errors.DimensionalityError)
-            else ("not a quantity")
-        )
-        wanted = (
-            "a number or a quantity with its unit"
-            if unit is None
-            else f"a quantity convertible to {unit} ({reason}), e.g. '1 {unit}'"
-        )
-        raise BallScrewInputError(field, value, wanted) from None
+    if isinstance(value, int | float):
+        if unit:
+            raise _bare(field, value, unit)
+        magnitude = float(value)
+    else:
+        number, unit_text = split_quantity(field, str(value))
+        magnitude = _value_si(field, str(value).strip(), number, unit_text, unit, notes)
     if not math.isfinite(magnitude):
         raise BallScrewInputError(field, value, "a finite quantity")
     return magnitude
 
 
+def _value_si(
+    field: str,
+    text: str,
+    number: float,
+    unit_text: str,
+    unit: str | None,
+    notes: list[Reading] | None,
+) -> float:
+    """One number in ``unit_text`` to ``unit``: a bare number only where no unit is wanted."""
+    if not unit_text and unit:
+        raise _bare(field, text, unit)
+    magnitude = float(_convert(field, text, number, unit_text, unit, notes))
+    if not math.isfinite(magnitude):
+        raise BallScrewInputError(field, text, "a finite quantity")
+    return magnitude
+
+
+def _convert(
+    field: str,
+    text: str,
+    number: Any,
+    unit_text: str,
+    unit: str | None,
+    notes: list[Reading] | None,
+) -> Any:
+    """``number`` in ``unit_text`` converted to ``unit`` (a scalar or an array)."""
+    ureg = registry()
+    have = _pint_unit(field, text, unit_text)
+    try:
+        if unit is None:
+            return ureg.Quantity(number, have).to_base_units().magnitude
+        if unit == "":
+            return ureg.Quantity(number, have).to("").magnitude
+        factor = _per_turn(field, text, have, unit)
+        if unit == "rad/s" and (note := _frequency_note(field, text, number, have)):
+            _tell([note], notes)
+        return (ureg.Quantity(number, have) * factor).to(unit).magnitude
+    except BallScrewInputError:
+        raise
+    except pint.errors.DimensionalityError:
+        example = _example(unit or "")
+        wanted = f"a quantity convertible to {unit} (incompatible unit), e.g. '1 {example}'"
+        raise BallScrewInputError(field, text, wanted) from None
+    except (pint.errors.PintError, ValueError, TypeError, ArithmeticError):
+        raise BallScrewInputError(field, text, _UNIT_HELP) from None
+
+
+def to_si_array(
+    field: str, values: Any, unit_text: str, unit: str, notes: list[Reading] | None = None
+) -> Any:
+    """Numbers in ``unit_text`` (a column's unit) converted to ``unit``, by the same rules.
+
+    Examples
+    --------
+    >>> [round(float(v), 4) for v in to_si_array("speed", [60.0, 3000.0], "1/min", "rad/s")]
+    [6.2832, 314.1593]
+    """
+    import numpy as np
+
+    text = f"[{unit_text}]"
+    rewritten = _unit_text(field, text, _clean(field, unit_text))
+    return np.asarray(_convert(field, text, np.asarray(values, float), rewritten, unit, notes))
+
+
 EXAMPLE_UNITS: dict[str, str] = {
     "rad/s": "rpm",
     "m": "mm",
+    "m/turn": "mm",
     "N": "kN",
     "degC": "degC",
     "N*m": "N*m",
@@ -131,20 +513,43 @@ EXAMPLE_UNITS: dict[str, str] = {
 """The unit shown in the example of an error for each target unit."""
 
 
+def _example(unit: str) -> str:
+    return EXAMPLE_UNITS.get(unit, unit)
+
+
 def _bare(field: str, value: Any, unit: str) -> BallScrewInputError:
-    example = EXAMPLE_UNITS.get(unit, unit)
     return BallScrewInputError(
         field,
         value,
-        f"a quantity with its unit, e.g. '{str(value).strip()} {example}' "
+        f"a quantity with its unit, e.g. '{str(value).strip()} {_example(unit)}' "
         "(a bare number has no unit)",
     )
 
 
-_RANGE = re.compile(
-    r"^\s*(?P<lo>[-+]?[0-9.]+(?:[eE][-+]?\d+)?)\s*\.\.\s*(?P<hi>[-+]?[0-9.]+(?:[eE][-+]?\d+)?)"
-    r"\s*(?::\s*(?P<n>\d+))?\s*(?P<unit>[^:]*?)\s*(?::\s*(?P<n2>\d+))?\s*$"
-)
+def _tell(readings: list[Reading], notes: list[Reading] | None) -> None:
+    """Add the readings to ``notes``, or warn of each when there is no list to add them to."""
+    if notes is not None:
+        notes.extend(readings)
+        return
+    for reading in readings:
+        warnings.warn(BallScrewReadingWarning(str(reading)), stacklevel=4)
+
+
+# --- lists and ranges ------------------------------------------------------------------------
+_COUNT = re.compile(r":\s*(\d+)")
+
+
+def _range_parts(field: str, raw: str) -> tuple[str, str, int | None]:
+    """``a..b:n unit`` split into the text of a, of 'b unit' and the count (None: default)."""
+    low, high = raw.split("..", 1)
+    counts = _COUNT.findall(high)
+    if ".." in high or len(counts) > 1 or high.count(":") != len(counts):
+        raise BallScrewInputError(field, raw, _LIST_HELP)
+    high = _COUNT.sub(" ", high, count=1)
+    return low.strip(), " ".join(high.split()), int(counts[0]) if counts else None
+
+
+_LIST_HELP = "a value, a list 'a, b, c unit' or a range 'a..b unit' (optionally 'a..b:n unit')"
 
 
 def range_size(text: str, default_points: int = 50) -> int:
@@ -159,20 +564,27 @@ def range_size(text: str, default_points: int = 50) -> int:
     (31, 50, 2)
     """
     raw = str(text).strip()
-    match = _RANGE.match(raw)
-    if match:
-        count = match.group("n") or match.group("n2")
-        return int(count) if count else default_points
-    return raw.count(",") + 1
+    if ".." in raw:
+        counts = _COUNT.findall(raw)
+        return int(counts[0]) if counts else default_points
+    return len(re.split("[,;]", raw))
 
 
-def parse_range(field: str, text: str, unit: str | None, default_points: int = 50) -> list[float]:
+def parse_range(
+    field: str,
+    text: str,
+    unit: str | None,
+    default_points: int = 50,
+    notes: list[Reading] | None = None,
+) -> list[float]:
     """Parse ``"0..3000 rpm"``, ``"10..3000:31 rpm"`` or a list ``"20, 30, 45 degC"`` to SI values.
 
     ``a..b`` gives ``default_points`` evenly spaced values (``a..b:n`` gives
-    ``n``; the count may also follow the unit); a comma-separated list gives
-    those values. The unit is written once, at the end. ``unit`` is the SI
-    target unit, as for :func:`to_si`.
+    ``n``; the count may also follow the unit); a list separated by commas (or
+    semicolons) gives those values. The unit is written once, at the end, or
+    with each value. ``unit`` is the SI target unit, as for :func:`to_si`.
+    In a list a comma between two digits (``1,2 kN``) is refused: a list of
+    two values or a decimal comma?
 
     Examples
     --------
@@ -180,29 +592,48 @@ def parse_range(field: str, text: str, unit: str | None, default_points: int = 5
     [0.0, 3.142, 6.283]
     >>> parse_range("temperature", "20, 30 degC", "degC")
     [20.0, 30.0]
+    >>> parse_range("axial_load", "1 000; 2 500 N", "N")
+    [1000.0, 2500.0]
     """
-    raw = str(text).strip()
-    allowed = "a value, a list 'a, b, c unit' or a range 'a..b unit' (optionally 'a..b:n unit')"
+    read: list[Reading] = []  # one reading of the unit is enough: the last value's
+    values = _range_values(field, text, unit, default_points, read)
+    _tell(read[-1:], notes)
+    return values
+
+
+def _range_values(
+    field: str, text: str, unit: str | None, default_points: int, notes: list[Reading]
+) -> list[float]:
+    raw = _clean(field, text)
     if not raw:
-        raise BallScrewInputError(field, text, allowed)
-    match = _RANGE.match(raw)
-    if match:
-        count = match.group("n") or match.group("n2")
-        n = int(count) if count else default_points
+        raise BallScrewInputError(field, text, _LIST_HELP)
+    if ".." in raw:
+        low, high, count = _range_parts(field, raw)
+        n = default_points if count is None else count
         if n < 1 or n > 1_000_000:
             raise BallScrewInputError(field, text, "between 1 and 1e6 points")
-        suffix = f" {match.group('unit')}" if match.group("unit") else ""
-        lo = to_si(field, match.group("lo") + suffix, unit)
-        hi = to_si(field, match.group("hi") + suffix, unit)
+        hi_number, hi_unit = split_quantity(field, high)
+        lo_number, lo_unit = split_quantity(field, low)
+        lo = _value_si(field, text, lo_number, lo_unit or hi_unit, unit, notes)
+        hi = _value_si(field, text, hi_number, hi_unit, unit, notes)
         if n == 1:
             return [lo]
         return [lo + (hi - lo) * i / (n - 1) for i in range(n)]
-    if ".." in raw:
-        raise BallScrewInputError(field, text, allowed)
-    parts = [p.strip() for p in raw.split(",")]
-    if any(not p for p in parts):
-        raise BallScrewInputError(field, text, allowed)
-    last = parts[-1].split(None, 1)
-    suffix = f" {last[1]}" if len(last) == 2 else ""
-    parts[-1] = last[0]
-    return [to_si(field, p if " " in p else p + suffix, unit) for p in parts]
+    if ";" in raw:  # semicolons separate the values: a comma is a decimal comma
+        items = raw.split(";")
+    else:
+        mixed = re.search(r"(\d+),(\d+)", raw)
+        if mixed:
+            a, b = mixed.groups()
+            raise BallScrewInputError(
+                field, text,
+                f"'{a},{b}' is ambiguous in a list: two values ('{a}, {b}') or a decimal "
+                f"comma ('{a}.{b}')? Write one of them (or separate the values with ';')",
+            )  # fmt: skip
+        items = raw.split(",")
+    items = [p.strip() for p in items]
+    if any(not p for p in items):
+        raise BallScrewInputError(field, text, _LIST_HELP)
+    split = [split_quantity(field, p) for p in items]
+    suffix = split[-1][1]
+    return [_value_si(field, text, number, own or suffix, unit, notes) for number, own in split]

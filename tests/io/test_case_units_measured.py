@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 from ballscrew import BallScrewInputError, reference_screw
+from ballscrew.errors import BallScrewReadingWarning
 from ballscrew.friction.catalog import preload_from_drag_torque, preload_torque
 from ballscrew.io.case import default_case_path, load_case, parse_case
 from ballscrew.io.measured import error_metrics, parse_measured
@@ -146,6 +147,15 @@ def test_measured_units(header: str, rows: str, speed: float) -> None:
     assert float(curve.torque[0]) == pytest.approx(0.3)
 
 
+def test_measured_speeds_as_frequencies_are_revolutions() -> None:
+    # 60 1/min and 1 Hz are one revolution per second: 2 pi rad/s (by hand).
+    per_minute = parse_measured("speed [1/min],torque [N*m]\n60,0.3\n", reference_screw())
+    assert float(per_minute.speed[0]) == pytest.approx(2 * math.pi, rel=1e-12)
+    with pytest.warns(BallScrewReadingWarning, match=r"column 'speed \[Hz\]' is read as rev"):
+        hertz = parse_measured("speed [Hz],torque [N*m]\n1,0.3\n", reference_screw())
+    assert float(hertz.speed[0]) == pytest.approx(2 * math.pi, rel=1e-12)
+
+
 @pytest.mark.parametrize(
     ("text", "fragment"),
     [
@@ -155,7 +165,7 @@ def test_measured_units(header: str, rows: str, speed: float) -> None:
         ("speed [rpm],torque [N*m]\n", "data row"),
         ("speed [rpm],torque [N*m]\n1,abc\n", "line 2"),
         ("speed [rpm],torque [N*m]\nnan,1\n", "finite"),
-        ("speed [Hz],torque [N*m]\n1,2\n", "speed column"),
+        ("speed [kN],torque [N*m]\n1,2\n", "speed column"),
         ("speed [rpm],torque [N*m]\n1e12,1\n", "below 1e5"),
     ],
 )

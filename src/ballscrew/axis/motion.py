@@ -256,7 +256,7 @@ def read_trajectory(text: str, source: str = "trajectory") -> Profile:
     import io
     import re
 
-    from ..units import registry
+    from ..units import parse_unit, to_si_array
 
     first = next((line for line in text.splitlines() if line.strip()), "")
     delimiter = ";" if ";" in first else ("\t" if "\t" in first else ",")
@@ -264,15 +264,15 @@ def read_trajectory(text: str, source: str = "trajectory") -> Profile:
     if len(rows) < 3:
         raise BallScrewInputError(source, "(too short)", "a header and at least 2 data rows")
     header = re.compile(r"^\s*(\w[\w ]*?)\s*\[([^\]]+)\]\s*$")
-    ureg = registry()
     columns: dict[str, tuple[int, str]] = {}
     for i, cell in enumerate(rows[0]):
         m = header.match(cell)
         if not m:
             raise BallScrewInputError(f"{source}: header", cell, "'name [unit]', e.g. 'time [s]'")
         unit = m.group(2).strip()
+        parsed = parse_unit(f"{source}: header '{cell.strip()}'", unit)
         for kind, si in (("time", "s"), ("position", "m"), ("speed", "m/s"), ("force", "N")):
-            if ureg.Quantity(1.0, unit).is_compatible_with(si) and kind not in columns:
+            if parsed.is_compatible_with(si) and kind not in columns:
                 columns[kind] = (i, unit)
                 break
     if "time" not in columns or not ({"position", "speed"} & set(columns)):
@@ -287,7 +287,7 @@ def read_trajectory(text: str, source: str = "trajectory") -> Profile:
             raw = [float(r[i].replace(",", ".") if delimiter != "," else r[i]) for r in rows[1:]]
         except (ValueError, IndexError):
             raise BallScrewInputError(f"{source}: column {kind}", "(data)", "numbers") from None
-        return np.asarray(ureg.Quantity(np.asarray(raw), unit).to(si).magnitude, dtype=float)
+        return np.asarray(to_si_array(f"{source}: column {kind}", raw, unit, si), dtype=float)
 
     t = column("time", "s")
     if not np.all(np.diff(t) > 0.0):
@@ -333,7 +333,7 @@ def parse_move(text: str) -> dict[str, float]:
             raise BallScrewInputError(
                 "--move", part, f"key=value with a unit; keys: {', '.join(MOVE_KEYS)}"
             )
-        out[key] = to_si(f"--move {key}", value.strip().replace("^", "**"), MOVE_KEYS[key][0])
+        out[key] = to_si(f"--move {key}", value.strip(), MOVE_KEYS[key][0])
     missing = [k for k, (_, needed) in MOVE_KEYS.items() if needed and k not in out]
     if missing:
         raise BallScrewInputError("--move", text, f"also {', '.join(missing)} (with units)")

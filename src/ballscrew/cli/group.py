@@ -9,6 +9,7 @@ from __future__ import annotations
 import os
 import signal
 import sys
+import warnings
 
 import click
 
@@ -70,13 +71,35 @@ def _terminate(signum: int, frame: object) -> None:
     raise KeyboardInterrupt
 
 
+def _show_warning(
+    message: Warning | str,
+    category: type[Warning],
+    filename: str,
+    lineno: int,
+    file: object = None,
+    line: str | None = None,
+) -> None:
+    """A warning of the package as one plain ``warning:`` line on stderr, each text once."""
+    text = str(message)
+    if text not in _TOLD:
+        _TOLD.add(text)
+        click.echo(f"warning: {text}", err=True)
+
+
+_TOLD: set[str] = set()
+
+
 def main(argv: list[str] | None = None) -> None:
     """Entry point of the ``ballscrew`` command.
 
     Exit status: 0 on success, 2 on bad input (one line on stderr naming the
     field and the problem), 1 on an internal error, 130 when interrupted.
+    Warnings that reach the command line (a unit read one of two ways, a
+    validity range left) are printed as plain ``warning:`` lines, once each.
     """
     record_signal(None)
+    _TOLD.clear()
+    warnings.showwarning = _show_warning
     previous = signal.signal(signal.SIGTERM, _terminate)
     previous_int = signal.signal(signal.SIGINT, _terminate)
     try:

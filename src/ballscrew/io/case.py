@@ -35,7 +35,7 @@ from .. import lubricants
 from ..errors import BallScrewInputError, FloatArray
 from ..geometry import BallScrew
 from ..lubricant import Lubricant
-from ..units import parse_range, to_si
+from ..units import Reading, parse_range, to_si
 from .designation import resolve
 from .schema import SECTIONS, Assumed, CaseFile, LubricantSection, ScrewSection
 
@@ -159,15 +159,17 @@ def parse_case(text: str, *, source: str = "case") -> Case:
     """Validate a case given as TOML text; see the module docstring for the format."""
     data = _case_file(text, source)
     notes: list[Assumption] = []
+    read: list[Reading] = []  # how texts that could be meant two ways were read
     s = data.screw
 
     def si(section: str, name: str, value: Any, unit: str) -> float:
-        return to_si(f"{section}.{name}", _unwrap(f"{section}.{name}", value, notes), unit)
+        field = f"{section}.{name}"
+        return to_si(field, _unwrap(field, value, notes), unit, notes=read)
 
     screw, screw_source = _screw(s, si, notes)
 
     lub = _lubricant(data.lubricant, notes)
-    speed, temperature, axial = _operation(data, notes)
+    speed, temperature, axial = _operation(data, notes, read)
     st = data.study
     drag = tuple(si("study", f"drag_torques[{i}]", v, "N*m") for i, v in enumerate(st.drag_torques))
     band = tuple(
@@ -185,6 +187,8 @@ def parse_case(text: str, *, source: str = "case") -> Case:
         if st.temperature is None
         else si("study", "temperature", st.temperature, "degC")
     )
+    axis, thermal = _axis(data, si), _given_si(data, si, _THERMAL_UNITS)
+    notes.extend(Assumption(r.field, r.text, f"read as {r.reading}") for r in read)
     return Case(
         title=data.title,
         description=data.description,
@@ -201,8 +205,8 @@ def parse_case(text: str, *, source: str = "case") -> Case:
         assumptions=tuple(notes),
         text=text,
         screw_source=screw_source,
-        axis=_axis(data, si),
-        thermal=_given_si(data, si, _THERMAL_UNITS),
+        axis=axis,
+        thermal=thermal,
     )
 
 
@@ -219,11 +223,13 @@ def _case_file(text: str, source: str) -> CaseFile:
 
 
 def _operation(
-    data: CaseFile, notes: list[Assumption]
+    data: CaseFile, notes: list[Assumption], read: list[Reading]
 ) -> tuple[list[float], list[float], list[float]]:
     """``[operation]``'s ranges: speeds [rad/s], temperatures [°C], axial loads [N]."""
     op = data.operation
-    speed = parse_range("operation.speed", _unwrap("operation.speed", op.speed, notes), "rad/s")
+    speed = parse_range(
+        "operation.speed", _unwrap("operation.speed", op.speed, notes), "rad/s", notes=read
+    )
     temperature = parse_range(
         "operation.temperature", _unwrap("operation.temperature", op.temperature, notes), "degC"
     )
@@ -280,7 +286,7 @@ def _axis(data: CaseFile, si: Callable[[str, str, Any, str], float]) -> dict[str
 
 SCREW_UNITS: dict[str, str] = {
     "pitch_diameter": "m",
-    "lead": "m",
+    "lead": "m/turn",
     "ball_diameter": "m",
     "contact_angle": "rad",
     "conformity_screw": "",

@@ -29,11 +29,10 @@ from pathlib import Path
 
 import numpy as np
 import numpy.typing as npt
-import pint
 
 from ..errors import BallScrewInputError, FloatArray
 from ..geometry import BallScrew
-from ..units import registry
+from ..units import parse_unit, to_si_array
 
 __all__ = ["MeasuredCurve", "error_metrics", "parse_measured", "read_measured"]
 
@@ -67,22 +66,15 @@ class MeasuredCurve:
 
 
 def _dimension(unit: str) -> str:
-    ureg = registry()
+    """What a column's unit measures; a frequency (1/min, Hz) is a screw speed in revolutions."""
     try:
-        q = ureg.Quantity(1.0, unit)
-    except (pint.errors.PintError, ValueError, TypeError, AttributeError, AssertionError):
+        parsed = parse_unit("unit", unit)
+    except BallScrewInputError:
         return "unknown"
-    if q.is_compatible_with("K"):
+    if parsed.is_compatible_with("K"):
         return "temperature"
     for kind, ref in (("angular", "rad/s"), ("linear", "m/s"), ("torque", "N*m"), ("force", "N")):
-        if q.is_compatible_with(ref):
-            if (
-                kind == "angular"
-                and q.is_compatible_with("1/s")
-                and "rad" not in unit
-                and ("rpm" not in unit and "rev" not in unit and "deg" not in unit)
-            ):
-                return "frequency"
+        if parsed.is_compatible_with(ref):
             return kind
     return "other"
 
@@ -95,25 +87,24 @@ def parse_measured(text: str, screw: BallScrew, source: str = "measured data") -
     if len(rows) < 2:
         raise BallScrewInputError(source, "(no data rows)", "at least one data row")
     values = _numbers(rows, columns, delimiter, source)
-    ureg = registry()
+
+    def si(key: str, unit: str) -> FloatArray:
+        i, given = columns[key]
+        field = f"{source}: column '{header[i].strip()}'"
+        return np.asarray(to_si_array(field, values[key], given, unit), dtype=float)
+
     speed = _screw_speed(values["speed"], columns, header, screw, source)
-    torque = np.abs(
-        ureg.Quantity(np.asarray(values["torque"]), columns["torque"][1]).to("N*m").magnitude
-    )
+    torque = np.abs(si("torque", "N*m"))
     temperature = None
     if "temperature" in columns:
-        kelvin = ureg.Quantity(np.asarray(values["temperature"]), columns["temperature"][1])
-        temperature = np.asarray(kelvin.to("degC").magnitude, dtype=float)
+        temperature = si("temperature", "degC")
         if np.any(temperature <= -273.15):
             raise BallScrewInputError(
                 f"{source}: column '{header[columns['temperature'][0]].strip()}'",
                 float(np.min(temperature)),
                 "temperatures above absolute zero (check the unit)",
             )
-    load = None
-    if "force" in columns:
-        newton = ureg.Quantity(np.asarray(values["force"]), columns["force"][1])
-        load = np.asarray(newton.to("N").magnitude, dtype=float)
+    load = si("force", "N") if "force" in columns else None
     return MeasuredCurve(
         speed=np.asarray(speed, dtype=float),
         torque=np.asarray(torque, dtype=float),
@@ -209,14 +200,13 @@ def _screw_speed(
     screw: BallScrew, source: str,
 ) -> FloatArray:  # fmt: skip
     """The speed column as screw speed [rad/s] (a table speed through the lead)."""
-    ureg = registry()
-    speed_unit = columns["speed"][1]
-    speed = np.asarray(numbers)
+    i, speed_unit = columns["speed"]
+    field = f"{source}: column '{header[i].strip()}'"
     if columns["speed_kind"][1] == "linear":
-        table = ureg.Quantity(speed, speed_unit).to("m/s").magnitude
+        table = to_si_array(field, numbers, speed_unit, "m/s")
         speed = np.asarray(table) * (2.0 * math.pi / screw.lead)
     else:
-        speed = np.asarray(ureg.Quantity(speed, speed_unit).to("rad/s").magnitude)
+        speed = np.asarray(to_si_array(field, numbers, speed_unit, "rad/s"))
     if np.any(np.abs(speed) > 1e5):
         raise BallScrewInputError(
             f"{source}: column '{header[columns['speed'][0]].strip()}'",

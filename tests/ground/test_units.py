@@ -1,0 +1,264 @@
+"""Quantities as engineers type them: each read as meant or refused, never silently changed.
+
+SLIPS is the list of plausible inputs of issue 27 (number formats, speeds in the
+notation of catalogues, leads per revolution, unit spellings, expression bombs).
+Each expected value is worked out by hand here, not by the code under test: a
+revolution is 2 pi rad, a minute 60 s, 1 kN 1000 N, 1 cSt 1e-6 m^2/s.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+import warnings
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from ballscrew.errors import BallScrewInputError, BallScrewReadingWarning
+from ballscrew.units import parse_range, to_si
+
+RPM = 2.0 * math.pi / 60.0  # rad/s per rev/min
+RPS = 2.0 * math.pi  # rad/s per rev/s
+REFUSED = None
+
+# (target SI unit, text, the value meant in SI, or REFUSED)
+SLIPS: list[tuple[str, str, float | None]] = [
+    # speeds as European catalogues and drives write them: revolutions
+    ("rad/s", "3000 rpm", 3000 * RPM),
+    ("rad/s", "3000 RPM", 3000 * RPM),
+    ("rad/s", "3000 1/min", 3000 * RPM),
+    ("rad/s", "3000 min^-1", 3000 * RPM),
+    ("rad/s", "3000 min**-1", 3000 * RPM),
+    ("rad/s", "3000 min⁻¹", 3000 * RPM),
+    ("rad/s", "3000 min-1", 3000 * RPM),
+    ("rad/s", "3000 rev/min", 3000 * RPM),
+    ("rad/s", "3000 r/min", 3000 * RPM),
+    ("rad/s", "3000 U/min", 3000 * RPM),
+    ("rad/s", "50 rps", 50 * RPS),
+    ("rad/s", "50 rev/s", 50 * RPS),
+    ("rad/s", "50 Hz", 50 * RPS),  # with a note: Hz read as revolutions per second
+    ("rad/s", "314.159 rad/s", 314.159),
+    ("rad/s", "18000 deg/s", 18000 * math.pi / 180.0),
+    ("rad/s", "3 000 rpm", 3000 * RPM),
+    ("rad/s", "1,5 rps", 1.5 * RPS),
+    ("rad/s", "3000", REFUSED),  # no unit
+    ("rad/s", "10 m/min", REFUSED),  # a table speed is not a screw speed
+    ("rad/s", "10**10**8 rpm", REFUSED),  # an expression, not a number
+    ("rad/s", "1e400 rpm", REFUSED),  # not finite
+    ("rad/s", "3000 rpm" + " " * 5 + "x" * 200, REFUSED),  # too long
+    ("rad/s", "3000 " + "a" * 30, REFUSED),  # a unit name no unit has
+    # leads: per revolution
+    ("m/turn", "10 mm", 0.010),
+    ("m/turn", "10 mm/rev", 0.010),
+    ("m/turn", "10 mm/revolution", 0.010),
+    ("m/turn", "10 mm/turn", 0.010),
+    ("m/turn", "1 cm/rev", 0.010),
+    ("m/turn", "10 mm/s", REFUSED),
+    ("m", "6.35 mm/rev", REFUSED),  # a ball diameter is not per revolution
+    # forces: spaces and commas
+    ("N", "1 200 N", 1200.0),
+    ("N", "1\u00a0200 N", 1200.0),  # no-break space
+    ("N", "1\u202f200 N", 1200.0),  # narrow no-break space
+    ("N", "1'200 N", 1200.0),
+    ("N", "1 000 N", 1000.0),
+    ("N", "1 200 000 N", 1.2e6),
+    ("N", "1,2 kN", 1200.0),
+    ("N", "2,5 kN", 2500.0),
+    ("N", "0,5 kN", 500.0),
+    ("N", "1.200,5 N", 1200.5),
+    ("N", "1,200.5 N", 1200.5),
+    ("N", "1.2 kN", 1200.0),
+    ("N", "1,200 N", REFUSED),  # 1200 or 1.2? both are shown
+    ("N", "1 20 N", REFUSED),  # not groups of three
+    ("N", "12 00 N", REFUSED),
+    ("N", "1,2,3 N", REFUSED),
+    ("N", "−2 kN", -2000.0),  # unicode minus
+    ("N", "-2 kN", -2000.0),
+    ("N", "2e3 N", 2000.0),
+    ("N", "2,5e3 N", 2500.0),
+    ("N", "2 kN*m", REFUSED),  # a torque for a force
+    ("N", "2 kgf", 2 * 9.80665),
+    ("N", "1/2 kN", REFUSED),
+    ("N", "½ kN", REFUSED),
+    ("N", "2 k N", REFUSED),  # k alone is no unit... of force
+    # torques
+    ("N*m", "0,5 Nm", 0.5),
+    ("N*m", "0.5 N*m", 0.5),
+    ("N*m", "0.5 N·m", 0.5),
+    ("N*m", "0.5 N m", 0.5),
+    ("N*m", "500 Nmm", 0.5),
+    ("N*m", "50 Ncm", 0.5),
+    ("N*m", "0.5 kNm", 500.0),
+    ("N*m", "500 N*mm", 0.5),
+    # temperatures, viscosities, angles, lengths, inertia
+    ("degC", "40 °C", 40.0),
+    ("degC", "40 degC", 40.0),
+    ("degC", "313,15 K", 40.0),
+    ("degC", "104 degF", 40.0),
+    ("degC", "40 C", REFUSED),  # coulomb
+    ("m**2/s", "68 cSt", 68e-6),
+    ("m**2/s", "68 mm²/s", 68e-6),
+    ("m**2/s", "68 mm2/s", 68e-6),
+    ("m**2/s", "68 mm^2/s", 68e-6),
+    ("rad", "45 deg", math.pi / 4),
+    ("rad", "45°", math.pi / 4),
+    ("rad", "45 %", REFUSED),
+    ("rad", "45", REFUSED),
+    ("m", "32 mm", 0.032),
+    ("m", "3,2 cm", 0.032),
+    ("m", ".5 mm", 0.0005),
+    ("m", "1.26 in", 1.26 * 0.0254),
+    ("m", "5. mm", REFUSED),
+    ("m", "mm", REFUSED),
+    ("kg*m**2", "1.9e-3 kg·m²", 1.9e-3),
+    ("kg*m**2", "1,9 kg*cm^2", 1.9e-4),
+]
+
+
+def test_the_list_holds_at_least_sixty_slips() -> None:
+    assert len(SLIPS) >= 60
+
+
+@pytest.mark.parametrize(("unit", "text", "meant"), SLIPS)
+def test_each_slip_is_read_as_meant_or_refused(unit: str, text: str, meant: float | None) -> None:
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", BallScrewReadingWarning)
+        if meant is None:
+            with pytest.raises(BallScrewInputError, match=r"^field = "):
+                to_si("field", text, unit)
+        else:
+            # 1e-12: the conversion factors are exact or pint's defined constants.
+            assert to_si("field", text, unit) == pytest.approx(meant, rel=1e-12, abs=1e-15)
+
+
+def test_a_number_read_two_ways_shows_both_readings() -> None:
+    with pytest.raises(BallScrewInputError, match=r"'1200 N' or '1\.200 N'"):
+        to_si("screw.preload", "1,200 N", "N")
+
+
+@pytest.mark.parametrize("text", ["50 Hz", "100 1/s", "2 kHz"])
+def test_a_speed_in_hertz_is_read_as_revolutions_and_says_so(text: str) -> None:
+    with pytest.warns(BallScrewReadingWarning, match="rpm; for radians per second") as caught:
+        to_si("speed", text, "rad/s")
+    assert "revolutions per second" in str(caught[0].message)
+
+
+@pytest.mark.parametrize("text", ["3000 1/min", "3000 min^-1", "3000 rpm", "300 rad/s"])
+def test_speeds_that_say_what_they_mean_need_no_note(text: str) -> None:
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        to_si("speed", text, "rad/s")
+
+
+@pytest.mark.parametrize(
+    ("text", "values"),
+    [
+        ("10, 100, 1000 rpm", [10 * RPM, 100 * RPM, 1000 * RPM]),
+        ("1 000, 2 000 N", [1000.0, 2000.0]),
+        ("1,2; 2,5 kN", [1200.0, 2500.0]),  # semicolons: commas are decimal
+        ("0,5..2,5:3 kN", [500.0, 1500.0, 2500.0]),
+        ("0..3000 1/min:3", [0.0, 1500 * RPM, 3000 * RPM]),
+        ("10 rpm..100 rpm:2", [10 * RPM, 100 * RPM]),
+    ],
+)
+def test_lists_and_ranges(text: str, values: list[float]) -> None:
+    unit = "N" if text.endswith("N") else "rad/s"
+    assert parse_range("x", text, unit) == pytest.approx(values, rel=1e-12)
+
+
+@pytest.mark.parametrize("text", ["1,2 kN", "10,100,1000 rpm", "2,5"])
+def test_a_comma_between_digits_in_a_list_is_refused_with_both_readings(text: str) -> None:
+    with pytest.raises(BallScrewInputError, match=r"ambiguous in a list: two values .* decimal"):
+        parse_range("--axial-load", text, "N")
+
+
+@pytest.mark.parametrize(
+    "text", ["10**10**8 rpm", "1 " + "m" * 20_000, "9" * 5000 + " rpm", "(((((rpm)))))"]
+)
+def test_bombs_are_refused_at_once(text: str) -> None:
+    start = time.process_time()
+    with pytest.raises(BallScrewInputError):
+        to_si("speed", text, "rad/s")
+    # The grammar refuses before the unit library parses: far under a second of CPU.
+    assert time.process_time() - start < 0.5
+
+
+# --- the fuzzer: numbers written every way, units with known factors ------------------------
+UNITS = {  # unit text: (target, factor to the target's SI unit)
+    "N": ("N", 1.0),
+    "kN": ("N", 1e3),
+    "mm": ("m", 1e-3),
+    "µm": ("m", 1e-6),
+    "rpm": ("rad/s", RPM),
+    "1/min": ("rad/s", RPM),
+    "min⁻¹": ("rad/s", RPM),
+    "rad/s": ("rad/s", 1.0),
+    "N·m": ("N*m", 1.0),
+    "Nmm": ("N*m", 1e-3),
+    "cSt": ("m**2/s", 1e-6),
+}
+SPACES = [" ", "\u00a0", "\u2009", "\u202f", "'"]
+
+
+def _grouped(whole: str, sep: str) -> str:
+    head = len(whole) % 3 or 3
+    return sep.join([whole[:head]] + [whole[i : i + 3] for i in range(head, len(whole), 3)])
+
+
+@st.composite
+def written(draw: st.DrawFn) -> tuple[str, float, str, float]:
+    """A quantity written one of the ways people write it, and the value it means."""
+    whole = draw(st.integers(0, 9_999_999))
+    fraction = draw(st.text("0123456789", min_size=0, max_size=4))
+    unit = draw(st.sampled_from(sorted(UNITS)))
+    negative = draw(st.booleans())
+    style = draw(st.sampled_from(["plain", "comma", "grouped", "grouped-comma", "exponent"]))
+    digits = str(whole)
+    if style in ("grouped", "grouped-comma"):
+        digits = _grouped(digits, draw(st.sampled_from(SPACES)))
+    mark = "," if style in ("comma", "grouped-comma") else "."
+    number = digits + (mark + fraction if fraction else "")
+    exponent = draw(st.integers(-6, 6)) if style == "exponent" else 0
+    text = number + (f"e{exponent}" if style == "exponent" else "")
+    sign = draw(st.sampled_from(["-", "\u2212"])) if negative else ""
+    value = float(f"{whole}.{fraction or 0}e{exponent}") * (-1 if negative else 1)
+    target, factor = UNITS[unit]
+    return f"{sign}{text} {unit}", value * factor, target, factor
+
+
+@settings(max_examples=400, deadline=None)
+@given(case=written())
+def test_a_number_in_any_format_is_read_right_or_refused(
+    case: tuple[str, float, str, float],
+) -> None:
+    text, meant, target, _ = case
+    try:
+        got = to_si("x", text, target)
+    except BallScrewInputError as exc:
+        # Refused only where the text could mean two numbers: a comma then three digits.
+        assert "thousands or be a decimal comma" in str(exc), text
+        return
+    # Each format is exact decimal text; the conversion adds one rounding: 1e-12.
+    assert got == pytest.approx(meant, rel=1e-12, abs=1e-300), text
+
+
+@settings(max_examples=200, deadline=None)
+@given(
+    number=st.floats(0.001, 1e6),
+    junk=st.text(st.characters(codec="utf-8", exclude_categories=("Cs",)), min_size=1, max_size=12),
+)
+def test_a_unit_of_any_text_is_a_known_unit_or_refused(number: float, junk: str) -> None:
+    text = f"{number!r} {junk}"
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", BallScrewReadingWarning)
+            got = to_si("x", text, "N")
+    except BallScrewInputError:
+        return
+    # Accepted: then it is a force unit pint knows, and the number scaled by its factor.
+    from ballscrew.units import parse_unit, registry
+
+    factor = registry().Quantity(1.0, parse_unit("x", junk.strip())).to("N").magnitude
+    assert got == pytest.approx(number * factor, rel=1e-12), text

@@ -1,0 +1,122 @@
+"""The web form, the case file and the command line read the same text the same way.
+
+Each text goes through all three faces: ``ballscrew torque --axial-load TEXT``, a case
+file's ``[operation] axial_load = TEXT`` and the web API's ``axial_load``; for a single
+value, a case file's and the web form's ``[screw] preload``. Either all three read the
+same numbers, or all three refuse it naming the field.
+"""
+
+from __future__ import annotations
+
+import json
+import tomllib
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+from starlette.testclient import TestClient
+
+from ballscrew import BallScrewInputError
+from ballscrew.io.case import parse_case
+from ballscrew.web import create_app
+from cli_runner import run
+from shared import SMALL_CASE
+
+BASE = """\
+title = "same text"
+[screw]
+designation = "40x10 double 2.5x2 6.35"
+preload = "2 kN"
+[lubricant]
+name = "PAO ISO VG 68"
+[operation]
+speed = "100 rpm"
+temperature = "40 degC"
+axial_load = "0 N"
+"""
+
+LOADS = [  # texts for a list field (axial load), with the loads meant [N] or None: refused
+    ("1 200 N", [1200.0]),
+    ("1 000, 2 000 N", [1000.0, 2000.0]),
+    ("1,2; 2,5 kN", [1200.0, 2500.0]),
+    ("0,5..1,5:3 kN", [500.0, 1000.0, 1500.0]),
+    ("−1 kN", [-1000.0]),
+    ("1,2 kN", None),  # a list of two or a decimal comma?
+    ("1 20 N", None),
+    ("10**10**8 N", None),
+    ("2 kN*m", None),
+]
+PRELOADS = [  # a single value: a comma is a decimal comma
+    ("1,2 kN", 1200.0),
+    ("2,5 kN", 2500.0),
+    ("1 200 N", 1200.0),
+    ("1.200,5 N", 1200.5),
+    ("1,200 N", None),
+    ("2", None),
+]
+
+
+@pytest.fixture(scope="module")
+def client() -> Iterator[TestClient]:
+    with TestClient(create_app(allowed_hosts=["testserver"])) as c:
+        yield c
+
+
+def _case_file(key: str, value: str) -> str:
+    old = 'axial_load = "0 N"' if key == "axial_load" else 'preload = "2 kN"'
+    return BASE.replace(old, f"{key} = {json.dumps(value, ensure_ascii=False)}")
+
+
+@pytest.mark.parametrize(("text", "meant"), LOADS)
+def test_an_axial_load_reads_the_same_in_all_three(
+    text: str,
+    meant: list[float] | None,
+    client: TestClient,
+    tmp_path: Path,
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    out = tmp_path / "t.json"
+    code, _, err = run(
+        ["torque", "--case", str(SMALL_CASE), "--model", "catalog", "--speed", "100 rpm",
+         "--axial-load", text, "--json", str(out)],
+        capsys,
+    )  # fmt: skip
+    response = client.post(
+        "/api/torque", json={**tomllib.loads(BASE), "model": "catalog", "axial_load": text}
+    )
+    if meant is None:
+        assert code == 2 and "--axial-load = " in err, err
+        assert response.status_code == 422 and "axial_load = " in response.json()["error"]
+        with pytest.raises(BallScrewInputError, match=r"operation\.axial_load"):
+            parse_case(_case_file("axial_load", text))
+        return
+    assert code == 0, err
+    cli = [row["axial load [N]"] for row in json.loads(out.read_text())["rows"]]
+    case = parse_case(_case_file("axial_load", text)).axial_load.tolist()
+    assert response.status_code == 200, response.text
+    web = response.json()["axial_load_N"]
+    assert cli == pytest.approx(meant, rel=1e-12)
+    assert case == pytest.approx(meant, rel=1e-12) and web == pytest.approx(meant, rel=1e-12)
+
+
+@pytest.mark.parametrize(("text", "meant"), PRELOADS)
+def test_a_preload_reads_the_same_in_the_case_file_and_the_web_form(
+    text: str, meant: float | None, client: TestClient
+) -> None:
+    fields = tomllib.loads(BASE)
+    fields["screw"]["preload"] = text
+    response = client.post("/api/torque", json={**fields, "model": "catalog"})
+    if meant is None:
+        assert response.status_code == 422 and "screw.preload = " in response.json()["error"]
+        with pytest.raises(BallScrewInputError, match=r"screw\.preload"):
+            parse_case(_case_file("preload", text))
+        return
+    assert response.status_code == 200, response.text
+    assert parse_case(_case_file("preload", text)).screw.preload == pytest.approx(meant)
+    # The page gets the catalogue torque of that preload: the same as the case file's.
+    expected = parse_case(_case_file("preload", text))
+    from ballscrew import friction_torque
+
+    torque = friction_torque(expected.screw, expected.lubricant, speed=10.47, temperature=40.0,
+                             model="catalog")  # fmt: skip
+    assert response.json()["torque_Nm"][0] == pytest.approx(float(torque.total), rel=1e-3)
