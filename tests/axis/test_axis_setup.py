@@ -137,3 +137,88 @@ def test_energy_command_states_the_gaps_and_the_weight(
 
     flat = json.loads(out, parse_constant=refuse)
     assert flat["weight_reverse_efficiency"] is None
+
+
+def test_a_light_weight_is_held_but_the_screw_is_not_self_locking(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # Issue 27: 5 kg on a vertical 32 x 5 axis was called "self-locking". The preload's
+    # drag holds it (the reverse efficiency is negative), but the lead angle (2.8 deg)
+    # is far above a ball screw's friction angle: a heavier load turns the screw.
+    from ballscrew.cli import main
+
+    case = tmp_path / "v.toml"
+    case.write_text(
+        '[screw]\npitch_diameter = "32 mm"\nlead = "5 mm"\nball_diameter = "3.175 mm"\n'
+        'preload = "1,2 kN"\n[lubricant]\nname = "mineral ISO VG 68"\n'
+        '[axis]\nmoving_mass = "5 kg"\nincline = "90 deg"\nscrew_length = "800 mm"\n',
+        "utf-8",
+    )
+    with pytest.raises(SystemExit) as info:
+        main(["energy", "--case", str(case), "--move",
+              "stroke=200 mm, feed=10 m/min, acceleration=2 m/s^2", "--json", "-"])  # fmt: skip
+    assert info.value.code == 0
+    captured = capsys.readouterr()
+    payload = json.loads(captured.out)
+    assert payload["weight_reverse_efficiency"] < 0.0 and payload["self_locking"] is False
+    assert "holds at this load" in captured.err and "keep a brake" in captured.err
+    assert "Not self-locking" in captured.err and "; self-locking" not in captured.err
+
+
+@pytest.mark.parametrize(("lead_mm", "mu"), [(10.0, 0.003), (5.0, 0.1), (20.0, 0.1), (2.0, 0.05)])
+def test_self_locking_is_the_friction_angle_against_the_lead_angle(
+    lead_mm: float, mu: float
+) -> None:
+    # The catalogue model's load term is F l/2pi (1/eta - 1) with THK's eta: self-locking
+    # exactly when rho = atan(mu) reaches the lead angle beta, whatever the preload.
+    from ballscrew.axis.energy import self_locking
+
+    screw = reference_screw().replace(lead=lead_mm * 1e-3)
+    beta, rho = screw.lead_angle, math.atan(mu)
+    got = self_locking(screw, "PAO ISO VG 68", model="catalog", friction_coefficient=mu)
+    assert got == (rho >= beta)
+
+
+def test_a_reversed_or_too_long_force_window_is_refused(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # Issue 27: force_from=250 mm, force_to=50 mm silently dropped the process force.
+    from ballscrew.cli import main
+
+    case = tmp_path / "h.toml"
+    case.write_text(
+        '[screw]\npitch_diameter = "40 mm"\nlead = "10 mm"\nball_diameter = "6.35 mm"\n'
+        'preload = "2 kN"\n[lubricant]\nname = "mineral ISO VG 68"\n'
+        '[axis]\nmoving_mass = "200 kg"\n',
+        "utf-8",
+    )
+    move = "stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2, force=2 kN"
+    for window, words in (
+        ("force_from=250 mm, force_to=50 mm", "force never acts"),
+        ("force_from=50 mm, force_to=350 mm", "inside the stroke, 300 mm"),
+    ):
+        with pytest.raises(SystemExit) as info:
+            main(["energy", "--case", str(case), "--move", f"{move}, {window}"])
+        err = capsys.readouterr().err
+        assert info.value.code == 2 and "--move force_from, force_to" in err and words in err
+
+
+def test_energy_prints_the_half_nut_lift_off(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # Issue 27: the lift-off during acceleration was only in --json and the report.
+    from ballscrew.cli import main
+
+    case = tmp_path / "l.toml"
+    case.write_text(
+        '[screw]\npitch_diameter = "32 mm"\nlead = "5 mm"\nball_diameter = "3.175 mm"\n'
+        'preload = "1 kN"\n[lubricant]\nname = "mineral ISO VG 68"\n'
+        '[axis]\nmoving_mass = "200 kg"\nscrew_length = "800 mm"\n',
+        "utf-8",
+    )
+    with pytest.raises(SystemExit) as info:
+        main(["energy", "--case", str(case), "--model", "catalog", "--move",
+              "stroke=200 mm, feed=10 m/min, acceleration=20 m/s^2"])  # fmt: skip
+    err = capsys.readouterr().err
+    # 200 kg at 20 m/s^2 is 4 kN against 2^1.5 x 1 kN = 2.83 kN: lift-off, said once.
+    assert info.value.code == 0 and err.count("lifts off") == 1

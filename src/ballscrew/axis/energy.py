@@ -67,6 +67,7 @@ __all__ = [
     "axis_cycle",
     "reverse_efficiency",
     "screw_motion",
+    "self_locking",
     "weight_back_driving",
 ]
 
@@ -245,8 +246,9 @@ def weight_back_driving(
     :math:`F = m g \sin\theta`, and the screw turns at ``creep_speed``
     [rad/s] (the friction of breaking away, without the film of a fast
     move): :math:`\eta' = 1 - 2\pi T_f/(F l)`. Positive: the weight turns
-    the screw, and a vertical axis needs a brake; zero or negative: the screw
-    holds it (self-locking). NaN for a horizontal axis or no moving mass.
+    the screw, and a vertical axis needs a brake; zero or negative: the screw's
+    drag holds this weight (which is not self-locking: see
+    :func:`self_locking`). NaN for a horizontal axis or no moving mass.
     The support bearings' friction, which also holds, is left out (the
     conservative side).
     """
@@ -260,6 +262,43 @@ def weight_back_driving(
             model=model, **parameters,
         )  # fmt: skip
     return float(np.ravel(reverse_efficiency(fr, screw.lead))[0])
+
+
+def self_locking(
+    screw: BallScrew,
+    lubricant: Lubricant | str,
+    *,
+    temperature: float = 40.0,
+    creep_speed: float = 0.1,
+    model: str = "complete",
+    **parameters: Any,
+) -> bool:
+    r"""Whether no axial load, however large, can turn the screw [-].
+
+    A screw is self-locking when its friction angle exceeds its lead angle,
+    :math:`\rho \ge \beta`: the friction that a load adds then outweighs the
+    torque it exerts. With the catalogue's :math:`T = F l/(2\pi)(1/\eta - 1)`
+    that is the reverse efficiency :math:`2 - 1/\eta \le 0`, THK's
+    :math:`\tan(\beta - \rho) \le 0`. For any model the test is the load's
+    share of the friction: the reverse efficiency of the friction *a load adds*,
+
+    .. math:: \eta'_\infty = 1 - \frac{2\pi}{l}\,\frac{T(F_2) - T(F_1)}{F_2 - F_1},
+
+    at two loads past the preload's lift-off (:math:`F_1 = 4\cdot 2^{1.5}F_{pr}
+    + 1` kN, :math:`F_2 = 2F_1`), where the preload no longer adds to the drag.
+    Ball screws, with :math:`\mu \approx 0.003` against :math:`\tan\beta \ge
+    0.03`, are never self-locking: a light load that does not back-drive is held
+    by the preload's drag, which wear lowers.
+    """
+    f1 = 4.0 * 2.0**1.5 * screw.preload + 1000.0
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        fr = friction_torque(
+            screw, lubricant, speed=creep_speed, temperature=temperature,
+            axial_load=[f1, 2.0 * f1], model=model, **parameters,
+        )  # fmt: skip
+    added = float(fr.total[1] - fr.total[0]) / f1
+    return bool(1.0 - 2.0 * math.pi * added / screw.lead <= 0.0)
 
 
 def screw_motion(

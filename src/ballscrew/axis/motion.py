@@ -33,6 +33,7 @@ __all__ = [
     "Profile",
     "back_and_forth",
     "chain",
+    "check_force_window",
     "dwell",
     "move",
     "parse_move",
@@ -183,10 +184,30 @@ def move(
     a_arr = sign * np.asarray(acc)
     a_arr[-1] = 0.0
     v_arr[-1] = 0.0
-    lo, hi = (0.0, s) if force_window is None else force_window
+    lo, hi = (0.0, s) if force_window is None else check_force_window(force_window, s)
     inside = (np.abs(x_arr) >= lo) & (np.abs(x_arr) <= hi)
     force = np.where(inside, float(process_force), 0.0)
     return Profile(t, x_arr, v_arr, a_arr, force)
+
+
+def check_force_window(
+    window: tuple[float, float], stroke: float, field: str = "force_window"
+) -> tuple[float, float]:
+    """The force window [m], checked: its start before its end, both inside the stroke.
+
+    A reversed window would make the process force act nowhere, silently; it is
+    refused, naming ``field``.
+    """
+    lo, hi = (float(v) for v in window)
+    shown = f"{lo * 1e3:g} mm to {hi * 1e3:g} mm"
+    if not 0.0 <= lo < hi:
+        raise BallScrewInputError(
+            field, shown, "a start before the end, both distances from the start of the "
+            "move (e.g. force_from=50 mm, force_to=250 mm); reversed, the force never acts",
+        )  # fmt: skip
+    if hi > stroke * (1.0 + 1e-9):
+        raise BallScrewInputError(field, shown, f"inside the stroke, {stroke * 1e3:g} mm")
+    return lo, hi
 
 
 def dwell(duration: float, *, position: float = 0.0, sample_time: float = 1e-3) -> Profile:

@@ -25,8 +25,8 @@ import numpy.typing as npt
 from ..errors import FloatArray
 from ..io.case import Case
 from ..kinematics import rad_s_to_rpm
-from .energy import Axis, CycleResult, axis_cycle, weight_back_driving
-from .motion import Profile, back_and_forth, chain, read_trajectory
+from .energy import Axis, CycleResult, axis_cycle, self_locking, weight_back_driving
+from .motion import Profile, back_and_forth, chain, check_force_window, read_trajectory
 from .setup import axis_setup
 from .thermal import (
     SteadyAtSpeed,
@@ -47,6 +47,7 @@ def profile_from_move(move: dict[str, float], cycles: int) -> Profile:
     window = None
     if "force_from" in move or "force_to" in move:
         window = (move.get("force_from", 0.0), move.get("force_to", abs(move["stroke"])))
+        check_force_window(window, abs(move["stroke"]), "--move force_from, force_to")
     return back_and_forth(
         move["stroke"], move["feed"], move["acceleration"], jerk=move.get("jerk"),
         dwell_time=move.get("dwell", 0.0), cycles=cycles, process_force=move.get("force", 0.0),
@@ -112,7 +113,7 @@ def _cycle_numbers(r: CycleResult, cycles: int) -> dict[str, Any]:
         "rms_motor_torque_Nm": r.rms_motor_torque,
         "forward_efficiency": r.forward_efficiency,
         "reverse_efficiency": r.reverse_efficiency,
-        "self_locking": r.reverse_efficiency <= 0.0,
+        "back_drives_at_working_point": r.reverse_efficiency > 0.0,
     }
 
 
@@ -178,6 +179,9 @@ def _one_model(
     numbers = _cycle_numbers(r, run.cycles)
     numbers["weight_reverse_efficiency"] = weight_back_driving(
         case.screw, case.lubricant, axis, temperature=run.temperature, model=name, **params
+    )
+    numbers["self_locking"] = self_locking(
+        case.screw, case.lubricant, temperature=run.temperature, model=name, **params
     )
     numbers["duration_s"] = profile.duration
     numbers["warnings"] = [str(issue) for issue in r.friction.warnings] + list(r.speed_warnings)

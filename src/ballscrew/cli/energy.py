@@ -71,6 +71,7 @@ def energy_command(
     from ..axis.run import energy_run, profile_from_file, profile_from_move
     from ..io.case import load_case
     from ..report.outputs import json_document
+    from ..report.torque import warning_lines
     from ..units import parse_range, to_si
 
     case = load_case(case_file)
@@ -93,6 +94,8 @@ def energy_command(
                      move=m)  # fmt: skip
     for line in run.speed_warnings:
         click.echo(f"warning: {line}", err=True)
+    for line in warning_lines({n: c.friction for n, c in run.cycles_by_model.items()}):
+        click.echo(line, err=True)  # the models' validity issues: lift-off, film, temperature
     for line in run.assumptions:
         click.echo(f"note: {line}", err=True)
     title = f"{case.title}: {cycles} cycle(s), {profile.duration:.4g} s, {run.temperature:g} °C"
@@ -138,17 +141,21 @@ def _print_weight_verdicts(out: Console, run: EnergyRun) -> None:
     """Per model, whether the weight along an inclined axis back-drives the screw."""
     for name, v in run.results.items():
         eta = v["weight_reverse_efficiency"]
-        if not math.isnan(eta):
-            # The catalogue's test: a load back-drives the screw when the reverse
-            # efficiency is positive.
-            verdict = (
-                "it turns the screw: hold the axis with a brake"
-                if eta > 0.0
-                else "the screw holds it (self-locking)"
-            )
+        if math.isnan(eta):
+            continue
+        # The catalogue's test: a load back-drives the screw when the reverse efficiency
+        # is positive. The drag is (1 - eta) times the weight's torque F l / 2 pi.
+        where = (f"{name}: the weight along the axis ({math.degrees(run.axis.incline):g} deg), "
+                 f"motor off: reverse efficiency {eta:.3f}; ")  # fmt: skip
+        if eta > 0.0:
+            out.print(where + "it turns the screw: hold the axis with a brake")
+        elif v["self_locking"]:
+            out.print(where + "self-locking (the friction angle exceeds the lead angle)")
+        else:
             out.print(
-                f"{name}: the weight along the axis ({math.degrees(run.axis.incline):g} deg), "
-                f"motor off: reverse efficiency {eta:.3f}; {verdict}"
+                where + f"holds at this load: the drag is {1.0 - eta:.3g} x the weight's "
+                "torque. Not self-locking (the lead angle exceeds the friction angle): a "
+                "heavier load, or less drag as the preload wears, turns the screw; keep a brake"
             )
 
 
