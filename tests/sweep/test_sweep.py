@@ -350,3 +350,21 @@ def test_chunk_report_time_and_memory() -> None:
         hwm = int(line.split()[1]) * 1024
         # Both are the same high-water mark; memory touched between the two reads moves it.
         assert report.peak_rss == pytest.approx(hwm, rel=0.05)
+
+
+def test_a_huge_sweep_is_refused_with_its_size_before_it_starts(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # Issue 27: a sweep of 1e13 points started and grew to 3.2 GB in 60 s with no word.
+    sweep = tmp_path / "big.toml"
+    sweep.write_text(
+        f'case = "{DATA / "small_case.toml"}"\nmodels = ["complete", "catalog"]\n[axes]\n'
+        'speed = "1..3000:100000 rpm"\ntemperature = "10..60:1000 degC"\n'
+        'axial_load = "0..5 kN:1000"\n',
+        "utf-8",
+    )
+    code, _, err = run(["sweep", str(sweep), "--out", str(tmp_path / "s.zarr")], capsys)
+    # 2 models x 1e5 x 1e3 x 1e3 = 2e11 points; torque, efficiency and power loss by
+    # default, 8 bytes each: 4.8e12 bytes.
+    assert code == 2 and "200,000,000,000 points" in err and "4.8 TB" in err
+    assert not (tmp_path / "s.zarr").exists()

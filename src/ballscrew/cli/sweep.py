@@ -150,6 +150,13 @@ def _json(report: Any) -> str:
 @click.option(
     "--restart", is_flag=True, help="Discard the chunks an interrupted run left, start again."
 )
+@click.option(
+    "--max-points",
+    type=click.IntRange(min=1),
+    default=None,
+    help="Run a sweep of more points than the default limit (100,000,000); the size, store "
+    "and time are estimated and printed before it starts.",
+)
 @file_option("--json", "json_file", "Write the summary as JSON to FILE ('-' for standard output).")
 def sweep_command(
     sweep_file: str,
@@ -157,6 +164,7 @@ def sweep_command(
     workers: int | None,
     scheduler: str | None,
     restart: bool,
+    max_points: int | None,
     json_file: str | None,
 ) -> None:
     """Sweep a design space or propagate uncertainty; the result is a Zarr store.
@@ -172,13 +180,17 @@ def sweep_command(
       ballscrew sweep big.toml --out big.zarr --scheduler tcp://127.0.0.1:8786
     """  # noqa: D301 - click needs the literal \b to keep the example lines
     from ..files import signal_received
+    from ..sweep.plan import DEFAULT_MAX_POINTS, check_size, sweep_size
     from ..sweep.run import run_sweep
     from ..sweep.spec import load_sweep
     from ..sweep.store import partial_path
 
     spec = load_sweep(sweep_file)
+    size = sweep_size(spec)
+    check_size(size, max_points or DEFAULT_MAX_POINTS)
     target = Path(out)
     console = Console(stderr=True)
+    console.print(f"sweep: {size.describe()}", highlight=False)
     counts = [0, 0]
     with progress(console) as bar:
         task = bar.add_task("chunks", total=None)

@@ -12,7 +12,11 @@ import numpy as np
 from rich.console import Console
 from rich.table import Table
 
+from ..errors import BallScrewInputError
 from .common import case_option, file_option, progress, stdout, write_json
+
+MAX_POINTS = 2_000_000
+"""The most operating points ``ballscrew torque`` computes without ``--max-points``."""
 
 if TYPE_CHECKING:
     pass
@@ -65,10 +69,18 @@ __all__ = ["torque"]
 @click.option(
     "--table",
     "table_kind",
-    type=click.Choice(["auto", "full", "pivot"]),
+    type=click.Choice(["auto", "full", "pivot", "summary", "none"]),
     default="auto",
     show_default=True,
-    help="Terminal table: every row, or torque as speeds x models (auto: pivot above 40 rows).",
+    help="Terminal table: every row (full), torque as speeds x models (pivot), the range of "
+    "each model (summary) or none. auto: full up to 40 rows, pivot up to 400, else summary.",
+)
+@click.option(
+    "--max-points",
+    type=click.IntRange(min=1),
+    default=MAX_POINTS,
+    show_default=True,
+    help="The most operating points (speeds x temperatures x loads x models) computed.",
 )
 def torque(
     case_file: str | None,
@@ -81,6 +93,7 @@ def torque(
     csv_dialect: str,
     json_file: str | None,
     table_kind: str,
+    max_points: int,
 ) -> None:
     """Friction torque, power loss and efficiency of one case over speeds, temperatures, loads.
 
@@ -105,6 +118,16 @@ def torque(
     w = np.asarray(parse_range("--speed", speed, "rad/s")) if speed else None
     t = np.asarray(parse_range("--temperature", temperature, "degC")) if temperature else None
     f = np.asarray(parse_range("--axial-load", axial_load, "N")) if axial_load else None
+    sizes = [len(a) for a in (w, t, f) if a is not None]
+    sizes += [case_size for case_size, given in ((case.speed.size, w), (case.temperature.size, t),
+              (case.axial_load.size, f)) if given is None]  # fmt: skip
+    points = math.prod(sizes) * len(model_names)
+    if points > max_points:
+        raise BallScrewInputError(
+            "operating points", f"{points:,}",
+            f"at most {max_points:,} (speeds x temperatures x loads x models); take fewer, or "
+            "raise the limit with --max-points",
+        )  # fmt: skip
     console = Console(stderr=True)
     with progress(console) as bar:
         task = bar.add_task("models", total=len(model_names))
@@ -116,16 +139,7 @@ def torque(
         run = torque_run(case, model_names, w, t, f, on_model=advance)
     for line in run.warning_lines():
         click.echo(line, err=True)
-    rows = run.rows
-    pivot = table_kind == "pivot" or (table_kind == "auto" and len(rows) > 40)
-    stdout(json_file).print(
-        _pivot_table(case.title, rows) if pivot else _full_table(case.title, rows)
-    )
-    if pivot and table_kind == "auto":
-        click.echo(
-            f"({len(rows)} rows: torque shown as speeds x models; --table full for all)",
-            err=json_file == "-",
-        )
+    _print_table(run, table_kind, json_file)
     command = ["ballscrew", *sys.argv[1:]]
     if csv_file:
         atomic_write(Path(csv_file), run.csv(layout=csv_layout, dialect=csv_dialect).encode())
@@ -133,6 +147,44 @@ def torque(
         atomic_write(Path(csv_file + ".meta.json"), meta.encode("utf-8"))
     if json_file:
         write_json(json_file, run.json(command))
+
+
+def _print_table(run: Any, kind: str, json_file: str | None) -> None:
+    """The terminal table ``kind`` asks for (auto: by the number of rows)."""
+    rows = run.rows
+    if kind == "none":
+        return
+    pivot_rows = len({(r["temperature [degC]"], r["axial load [N]"], r["speed [rpm]"])
+                      for r in rows})  # fmt: skip
+    if kind == "auto":
+        kind = "full" if len(rows) <= 40 else ("pivot" if pivot_rows <= 400 else "summary")
+        if kind != "full":
+            shown = "speeds x models" if kind == "pivot" else "a summary"
+            click.echo(
+                f"({len(rows):,} rows: shown as {shown}; --table full for all, --csv or --json "
+                "to keep them)",
+                err=json_file == "-",
+            )
+    table = {"full": _full_table, "pivot": _pivot_table, "summary": _summary_table}[kind]
+    stdout(json_file).print(table(run.case.title, rows))
+
+
+def _summary_table(title: str, rows: list[dict[str, Any]]) -> Table:
+    """Per model: the number of points and the range of torque, power loss and efficiency."""
+    table = Table(title=f"{title}: friction torque, summary")
+    for column in ("model", "points", "torque min [N*m]", "torque max [N*m]",
+                   "at speed [rpm]", "power loss max [W]", "efficiency min [-]"):  # fmt: skip
+        table.add_column(column, justify="right")
+    for model in dict.fromkeys(str(r["model"]) for r in rows):
+        mine = [r for r in rows if r["model"] == model]
+        top = max(mine, key=lambda r: r["torque [N*m]"])
+        table.add_row(
+            model, f"{len(mine):,}",
+            _show(min(r["torque [N*m]"] for r in mine)), _show(top["torque [N*m]"]),
+            _show(top["speed [rpm]"]), _show(max(r["power loss [W]"] for r in mine)),
+            _show(min(r["efficiency [-]"] for r in mine)),
+        )  # fmt: skip
+    return table
 
 
 def _full_table(title: str, rows: list[dict[str, Any]]) -> Table:

@@ -37,7 +37,17 @@ from ..errors import BallScrewInputError, FloatArray
 from ..files import atomic_write, deferred_signals
 from .spec import OPERATING, OUTPUTS, SCALAR_OUTPUTS, SweepSpec, resolve
 
-__all__ = ["ChunkReport", "Plan", "compute_chunk", "plan_sweep", "run_chunk"]
+__all__ = [
+    "DEFAULT_MAX_POINTS",
+    "ChunkReport",
+    "Plan",
+    "SweepSize",
+    "check_size",
+    "compute_chunk",
+    "plan_sweep",
+    "run_chunk",
+    "sweep_size",
+]
 
 
 @dataclass(frozen=True)
@@ -127,6 +137,81 @@ def _chunks(shape: Sequence[int], target: int, n_outer: int) -> tuple[int, ...]:
         chunks[d] = max(1, min(shape[d], budget))
         budget = max(1, budget // chunks[d])
     return tuple(chunks)
+
+
+@dataclass(frozen=True)
+class SweepSize:
+    """What a sweep asks for, known before any of it is done.
+
+    Attributes
+    ----------
+    points : int
+        Points, models included.
+    store_bytes : int
+        Size of the stored arrays (8 bytes per value; each model's components
+        count once per component, taken as eight).
+    seconds : float
+        Time in one process at :data:`NOMINAL_RATE` points per second (the
+        complete model's rate on scattered points on a 2-core machine; the
+        simpler models are faster).
+    """
+
+    points: int
+    store_bytes: int
+    seconds: float
+
+    def describe(self) -> str:
+        """One line: points, store size and time, rounded."""
+        return (
+            f"{self.points:,} points, a store of about {_bytes(self.store_bytes)}, about "
+            f"{_duration(self.seconds)} in one process"
+        )
+
+
+NOMINAL_RATE = 2e5
+"""Points per second in one process, for estimates (measured: 2.4e5 for the complete model)."""
+
+DEFAULT_MAX_POINTS = 100_000_000
+"""The most points a sweep runs without ``--max-points`` (a store of a few GB)."""
+
+
+def sweep_size(spec: SweepSpec) -> SweepSize:
+    """The size of a sweep from its file alone: nothing is sampled, planned or computed."""
+    sizes = [len(a.values) for a in spec.axes]
+    u = spec.uncertainty
+    if u is not None:
+        sizes.append(u.samples * (len(u.inputs) + 2) if u.sensitivity == "sobol" else u.samples)
+    points = (
+        len(spec.models) * math.prod(sizes) * math.prod(spec.operating[k].size for k in OPERATING)
+    )
+    per_point = sum(8 if name == "components" else 1 for name in spec.outputs)
+    return SweepSize(points, 8 * points * per_point, points / NOMINAL_RATE)
+
+
+def check_size(size: SweepSize, max_points: int = DEFAULT_MAX_POINTS) -> None:
+    """Refuse a sweep larger than ``max_points``, with its size and how to allow it."""
+    if size.points > max_points:
+        raise BallScrewInputError(
+            "sweep size", f"{size.points:,} points",
+            f"at most {max_points:,} points (this one needs a store of about "
+            f"{_bytes(size.store_bytes)} and about {_duration(size.seconds)} in one process); "
+            "take fewer values per axis, or raise the limit with --max-points if it is meant",
+        )  # fmt: skip
+
+
+def _bytes(n: float) -> str:
+    for unit in ("B", "kB", "MB", "GB", "TB", "PB"):
+        if n < 1000.0:
+            return f"{n:.3g} {unit}"
+        n /= 1000.0
+    return f"{n:.3g} EB"
+
+
+def _duration(seconds: float) -> str:
+    for unit, size in (("days", 86400.0), ("h", 3600.0), ("min", 60.0)):
+        if seconds >= size:
+            return f"{seconds / size:.3g} {unit}"
+    return f"{seconds:.2g} s"
 
 
 def plan_sweep(spec: SweepSpec) -> Plan:
