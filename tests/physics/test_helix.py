@@ -116,6 +116,10 @@ def test_vectorised_share_agrees_with_the_one_ball_reference(lead: float) -> Non
         g.append(float(rl.spin_slip_integrals(c.curvature * float(c.semi_axis), c.aspect,  # type: ignore[arg-type]
                                               sigma)[1]))  # fmt: skip
     assert mu_q[0] * g[0] == pytest.approx(mu_q[1] * g[1], rel=2e-3)
+    # Each contact's normal force tilts by asin(F/Q), with F = mu Q G its traction, G from
+    # the integrals computed above (not the reference's rule): F/Q = mu G, to 2e-3.
+    for tilt, c, gj in zip(ref.tilt, contacts, g, strict=True):
+        assert math.sin(tilt) == pytest.approx(float(c.friction) * gj, rel=2e-3)  # type: ignore[arg-type]
 
 
 def test_without_spin_the_weaker_contact_takes_all_the_slip() -> None:
