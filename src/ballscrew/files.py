@@ -25,7 +25,14 @@ from pathlib import Path
 from types import FrameType
 from typing import Any
 
-__all__ = ["atomic_write", "deferred_signals", "sweep_temporaries"]
+__all__ = [
+    "OutputInUseError",
+    "atomic_folder",
+    "atomic_write",
+    "deferred_signals",
+    "exclusive_lock",
+    "sweep_temporaries",
+]
 
 _HELD = (signal.SIGINT, signal.SIGTERM)
 _TEMP_NAME = re.compile(r"^\..+\.[0-9a-f]{12}\.tmp$")
@@ -138,3 +145,80 @@ def sweep_temporaries(folder: Path) -> int:
             entry.unlink(missing_ok=True)
             removed += 1
     return removed
+
+
+@contextlib.contextmanager
+def atomic_folder(folder: Path) -> Iterator[Path]:
+    """A report folder written whole: files go to a sibling, swapped in when all are written.
+
+    Yields the temporary folder (``.<name>.<hex>.new`` beside ``folder``). When
+    the block ends normally, ``folder`` (if any) is moved aside and the new one
+    renamed into its place, under :func:`deferred_signals`, so the folder is
+    always either the earlier run's, whole, or this run's, whole: never a mix.
+    When the block raises (Ctrl-C included) the temporary folder is removed and
+    ``folder`` is left as it was.
+    """
+    folder = Path(folder)
+    folder.parent.mkdir(parents=True, exist_ok=True)
+    tmp = folder.parent / f".{folder.name}.{secrets.token_hex(6)}.new"
+    tmp.mkdir()
+    try:
+        yield tmp
+        with deferred_signals():
+            old = None
+            if folder.exists():
+                old = folder.parent / f".{folder.name}.{secrets.token_hex(6)}.old"
+                folder.rename(old)
+            tmp.rename(folder)
+        if old is not None:
+            _remove_tree(old)
+    except BaseException:
+        _remove_tree(tmp)
+        raise
+
+
+def _remove_tree(path: Path) -> None:
+    import shutil
+
+    shutil.rmtree(path, ignore_errors=True)
+
+
+class OutputInUseError(OSError):
+    """Another run holds the lock of an output (its message says which process)."""
+
+
+@contextlib.contextmanager
+def exclusive_lock(path: Path) -> Iterator[None]:
+    """Hold an exclusive lock on ``path`` (a lock file, created) while the block runs.
+
+    The operating system releases the lock when the process ends, however it
+    ends, so a killed run never leaves a stale lock. The file names the holder
+    (process id and start time) for the message another run gets, and is
+    removed when the block ends. Raises :class:`OutputInUseError` at once when
+    another process holds it.
+    """
+    import fcntl
+    import time
+
+    path = Path(path)
+    while True:
+        fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o644)
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            holder = os.pread(fd, 200, 0).decode("utf-8", "replace").strip()
+            os.close(fd)
+            raise OutputInUseError(holder or "another process") from None
+        # The previous holder removes the file when done: lock the file that is there now.
+        with contextlib.suppress(OSError):
+            if os.stat(path).st_ino == os.fstat(fd).st_ino:
+                break
+        os.close(fd)
+    os.ftruncate(fd, 0)
+    os.write(fd, f"process {os.getpid()}, since {time.strftime('%H:%M:%S')}".encode())
+    try:
+        yield
+    finally:
+        with contextlib.suppress(OSError):
+            os.unlink(path)
+        os.close(fd)

@@ -368,3 +368,34 @@ def test_a_huge_sweep_is_refused_with_its_size_before_it_starts(
     # default, 8 bytes each: 4.8e12 bytes.
     assert code == 2 and "200,000,000,000 points" in err and "4.8 TB" in err
     assert not (tmp_path / "s.zarr").exists()
+
+
+@pytest.mark.slow
+def test_two_sweeps_into_one_store_one_runs_the_other_is_refused(tmp_path: Path) -> None:
+    # Issue 28: two sweeps into one --out corrupted it (all-NaN torques, or one sweep's data
+    # under the other's temperatures) while exiting 0. Now the second is refused at once.
+    import subprocess
+    import sys
+
+    sweep = tmp_path / "s.toml"
+    sweep.write_text(
+        f'case = "{DATA / "small_case.toml"}"\nmodels = ["complete"]\n[axes]\n'
+        'speed = "10..3000:4000 rpm"\ntemperature = "20..60:40 degC"\n',
+        "utf-8",
+    )
+    out = tmp_path / "one.zarr"
+    command = [sys.executable, "-m", "ballscrew", "sweep", str(sweep), "--out", str(out)]
+    runs = [subprocess.Popen(command, stderr=subprocess.PIPE, text=True) for _ in range(2)]
+    results = [(p.wait(timeout=600), p.communicate()[1]) for p in runs]
+    codes = sorted(code for code, _ in results)
+    assert codes == [0, 2], results
+    refused = next(err for code, err in results if code == 2)
+    assert "--out" in refused and "no other sweep is writing" in refused
+    assert "internal error" not in "".join(err for _, err in results)
+    import xarray as xr
+
+    with xr.open_zarr(out) as ds:
+        assert ds["torque"].shape[-3:] == (4000, 40, 1)
+        assert bool(np.isfinite(ds["torque"].values).all())
+        assert ds["temperature"].values[-1] == pytest.approx(60.0)
+    assert not list(tmp_path.glob(".one.zarr*"))  # no lock, no partial folder left

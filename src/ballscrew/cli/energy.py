@@ -10,6 +10,7 @@ import click
 from rich.console import Console
 from rich.table import Table
 
+from ..files import atomic_folder
 from .common import stdout, write_json
 
 if TYPE_CHECKING:
@@ -107,7 +108,8 @@ def energy_command(
     if out_dir:
         from ..report.energy import write_energy_report
 
-        files = write_energy_report(out_dir, case.title, profile, run.cycles_by_model,
+        with atomic_folder(Path(out_dir)) as folder:
+            files = write_energy_report(folder, case.title, profile, run.cycles_by_model,
                                     run.results, run.histories or None)  # fmt: skip
         click.echo(f"report: {Path(out_dir) / 'report.html'} ({len(files)} files)", err=True)
     if json_file:

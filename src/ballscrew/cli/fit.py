@@ -8,6 +8,7 @@ import click
 from rich.table import Table
 
 from .._version import __version__
+from ..files import atomic_folder
 from .common import case_option, stdout, write_json
 
 __all__ = ["fit_command"]
@@ -106,7 +107,8 @@ def fit_command(
     if out_dir:
         from ..report.fit import write_fit_report
 
-        files = write_fit_report(out_dir, case, result, payload)
+        with atomic_folder(Path(out_dir)) as folder:
+            files = write_fit_report(folder, case, result, payload)
         click.echo(f"fit: {Path(out_dir) / 'report.html'} and {Path(out_dir) / 'fitted-case.toml'}"
                    f" ({len(files)} files)", err=True)  # fmt: skip
     if json_file:

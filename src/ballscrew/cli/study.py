@@ -7,6 +7,7 @@ from pathlib import Path
 import click
 from rich.console import Console
 
+from ..files import atomic_folder
 from .common import case_option, file_option, progress
 
 __all__ = ["study"]
@@ -71,13 +72,13 @@ def study(
             bar.update(task2, description=text, advance=1)
 
         files: list[Path] = []
-        expected = 3 * (len(result.figures) + extra) + 3
         try:
-            write_report(result, out_dir, measured_text, progress=tick2, written=files)
+            with atomic_folder(Path(out_dir)) as folder:
+                write_report(result, folder, measured_text, progress=tick2, written=files)
         except KeyboardInterrupt:
             click.echo(
-                f"interrupted: {len(files)} of {expected} files of {out_dir}/ were written "
-                "(each complete); the others were not written or keep their previous content",
+                f"interrupted: {out_dir}/ was not changed (a report is written beside it and "
+                "takes its place only when every file is written)",
                 err=True,
             )
             raise

@@ -8,6 +8,7 @@ import click
 from rich.console import Console
 from rich.table import Table
 
+from ..files import atomic_folder
 from .common import progress, stdout
 
 __all__ = ["validate"]
@@ -50,7 +51,8 @@ def validate(out_dir: str, model_names: tuple[str, ...]) -> None:
         total = len(names) if names else len(MODELS)
         task = bar.add_task("scoring", total=total)
         rows = score(names, progress=lambda name: bar.update(task, description=name, advance=1))
-    files = write_scorecard(rows, out_dir)
+    with atomic_folder(Path(out_dir)) as folder:
+        files = write_scorecard(rows, folder)
     header, table_rows = summary_table(summarise(rows))
     # One column per model, one row per group: narrow enough for an 80-column terminal.
     table = Table(title="Validation scorecard (cases inside their band)")

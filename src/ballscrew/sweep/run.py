@@ -27,6 +27,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import BallScrewInputError
+from ..files import OutputInUseError, exclusive_lock
 from .plan import ChunkReport, Plan, plan_sweep, run_chunk
 from .spec import OPERATING, SweepSpec
 
@@ -159,6 +160,31 @@ def run_sweep(
         raise BallScrewInputError("--workers", workers, "a whole number >= 1")
     target = Path(out).absolute()
     store.check_target(target)
+    target.parent.mkdir(parents=True, exist_ok=True)
+    try:
+        with exclusive_lock(target.parent / f".{target.name}.lock"):
+            return _run(spec, target, workers, scheduler, restart, progress, notify)
+    except OutputInUseError as exc:
+        raise BallScrewInputError(
+            "--out",
+            str(target),
+            f"a store no other sweep is writing ({exc} is writing this "
+            "one): wait for it to finish, or choose another --out",
+        ) from None
+
+
+def _run(
+    spec: SweepSpec,
+    target: Path,
+    workers: int | None,
+    scheduler: str | None,
+    restart: bool,
+    progress: Callable[[int, int], None] | None,
+    notify: Callable[[str], None] | None,
+) -> SweepReport:
+    """The sweep, with the lock on its output held."""
+    from . import store
+
     plan = plan_sweep(spec)
     key = plan.fingerprint()
     partial = store.partial_path(target)
@@ -205,6 +231,8 @@ def run_sweep(
         store.add_variables(partial, variables)
     summary = _summary(plan, reports.values())
     issues = _issues(reports.values())
+    if store.markers(partial, key) is None:  # the lock makes this impossible, but check
+        raise BallScrewInputError("--out", str(target), "a store this run alone wrote")
     store.finalize(partial, target, {"summary": summary, "validity": list(issues)})
     peak: dict[int, int] = {}
     for r in reports.values():
