@@ -52,6 +52,7 @@ class Tally:
 
     latencies: list[float] = field(default_factory=list)
     errors: list[str] = field(default_factory=list)
+    busy: int = 0  # 503 answers: the server refused for load, not for an error
     lock: threading.Lock = field(default_factory=threading.Lock)
 
 
@@ -84,7 +85,9 @@ def _client(host: str, port: int, body: bytes, deadline: float, tally: Tally) ->
         elapsed = time.perf_counter() - start
         with tally.lock:
             tally.latencies.append(elapsed)
-            if problem:
+            if problem.startswith("status 503"):
+                tally.busy += 1
+            elif problem:
                 tally.errors.append(problem)
     conn.close()
 
@@ -183,7 +186,7 @@ def main() -> None:
         n = len(lat)
         print(f"{min(args.clients, MAX_CLIENTS)} clients for {min(args.seconds, MAX_SECONDS):g} s "
               f"against {url}/api/torque (complete model, 50 speeds)")  # fmt: skip
-        print(f"requests: {n}, errors: {len(tally.errors)}, "
+        print(f"requests: {n}, errors: {len(tally.errors)}, 503 (busy): {tally.busy}, "
               f"throughput: {n / min(args.seconds, MAX_SECONDS):.1f} requests/s")  # fmt: skip
         if n:
             p95 = lat[min(n - 1, int(0.95 * n))]

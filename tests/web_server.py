@@ -11,6 +11,7 @@ from collections.abc import Iterator
 import uvicorn
 
 from ballscrew.web import create_app
+from ballscrew.web.server import server_config
 from ballscrew.web.service import LIMITS, Limits
 
 
@@ -21,7 +22,7 @@ def running_server(limits: Limits = LIMITS) -> Iterator[str]:
     sock.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
     sock.bind(("127.0.0.1", 0))  # a free port, held from the start: no race for it
     port = sock.getsockname()[1]
-    config = uvicorn.Config(create_app(limits), log_level="warning", access_log=False)
+    config = server_config(create_app(limits), log_level="warning")
     server = uvicorn.Server(config)
     thread = threading.Thread(target=server.run, kwargs={"sockets": [sock]}, daemon=True)
     thread.start()

@@ -254,3 +254,17 @@ def test_a_large_torque_grid_prints_a_summary_and_a_huge_one_is_refused(
     code, _, err = run(["torque", "--speed", "1..3000:1000000 rpm",
                         "--temperature", "20..40:1000 degC"], capsys)  # fmt: skip
     assert code == 2 and "operating points = '1,000,000,000'" in err and "--max-points" in err
+
+
+@pytest.mark.parametrize("speed", ["10**10**8 rpm", "100 " + "r" * 20_000])
+def test_an_expression_or_a_huge_unit_name_is_refused_at_once(
+    speed: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # Issue 28: the unit library evaluated '**' (this text froze the command and the
+    # server) and parsed unit names in quadratic time (a 60 kB name: 75 s).
+    import time
+
+    start = time.process_time()
+    code, _, err = run(["torque", "--model", "catalog", "--speed", speed], capsys)
+    assert code == 2 and "--speed = " in err
+    assert time.process_time() - start < 1.0  # CPU seconds: the grammar refuses first

@@ -48,6 +48,8 @@ axial_load = "1 kN"
 moving_mass = "200 kg"
 """
 CASE = tomllib.loads(CASE_TOML)
+TOML = {"content-type": "application/toml"}  # how the page uploads a case file
+JSON = {"content-type": "application/json"}
 
 
 @pytest.fixture(scope="module")
@@ -216,7 +218,7 @@ def test_the_page_budget_adds_up_to_the_torque(client: TestClient) -> None:
 
 def test_an_uploaded_case_file_is_read_as_data(client: TestClient) -> None:
     text = (DATA / "small_case.toml").read_text(encoding="utf-8")
-    response = client.post("/api/case", content=text.encode("utf-8"))
+    response = client.post("/api/case", content=text.encode("utf-8"), headers=TOML)
     assert response.status_code == 200
     assert response.json()["fields"] == tomllib.loads(text)
 
@@ -225,12 +227,12 @@ def test_an_upload_that_is_not_toml_gets_the_command_lines_message(
     client: TestClient, tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     bad = '[screw]\nlead = "10 mm\n'
-    response = client.post("/api/case", content=bad.encode())
+    response = client.post("/api/case", content=bad.encode(), headers=TOML)
     assert response.status_code == 422
     cli = cli_error(tmp_path, capsys, bad)
     # The command line names the file by its path; the page calls it "case".
     assert response.json()["error"].split(" = ", 1)[1] == cli.split(" = ", 1)[1]
-    response = client.post("/api/case", content=b"\xff\xfe")
+    response = client.post("/api/case", content=b"\xff\xfe", headers=TOML)
     assert response.status_code == 422 and "UTF-8" in response.json()["error"]
 
 
@@ -251,7 +253,7 @@ def test_an_oversized_body_without_a_length_is_cut_off_while_it_streams(
         for _ in range(100):
             yield b" " * 4096
 
-    response = client.post("/api/torque", content=chunks())
+    response = client.post("/api/torque", content=chunks(), headers=JSON)
     assert response.status_code == 413
 
 
@@ -285,7 +287,7 @@ def test_nesting_and_malformed_bodies_are_refused(client: TestClient) -> None:
     assert response.status_code == 422 and "levels" in response.json()["error"]
     nested = ("[" * 100_000 + "]" * 100_000)[: LIMITS.body_bytes]
     for body in (b"{not json", b"[1, 2]", nested.encode()):
-        response = client.post("/api/torque", content=body)
+        response = client.post("/api/torque", content=body, headers=JSON)
         assert response.status_code == 400, body[:20]
 
 
@@ -342,7 +344,7 @@ def test_any_json_is_answered_without_an_internal_error(
 
 
 def test_an_uploaded_file_with_inf_comes_back_as_text(client: TestClient) -> None:
-    response = client.post("/api/case", content=b"[screw]\nconformity_nut = inf\n")
+    response = client.post("/api/case", content=b"[screw]\nconformity_nut = inf\n", headers=TOML)
     assert response.json()["fields"] == {"screw": {"conformity_nut": "inf"}}
 
 
@@ -380,7 +382,9 @@ def test_an_internal_error_shows_no_traceback(monkeypatch: pytest.MonkeyPatch) -
         raise RuntimeError("secret internals at /home/someone/ballscrew/chain.py line 42")
 
     monkeypatch.setattr(service, "run_models", broken)
-    with TestClient(create_app(allowed_hosts=["testserver"]), raise_server_exceptions=False) as c:
+    # Computing in this process (processes=0), so that the broken function is the one run.
+    app = create_app(allowed_hosts=["testserver"], processes=0)
+    with TestClient(app, raise_server_exceptions=False) as c:
         for url, body in (("/api/torque", CASE), ("/api/evaluate", {"case": CASE})):
             response = c.post(url, json=body)
             assert response.status_code == 500
@@ -391,24 +395,61 @@ def test_an_internal_error_shows_no_traceback(monkeypatch: pytest.MonkeyPatch) -
         assert page.status_code == 404 and "Traceback" not in page.text
 
 
-def test_a_request_over_the_time_budget_is_answered_503(monkeypatch: pytest.MonkeyPatch) -> None:
-    def slow(*args: Any, **kwargs: Any) -> Any:
-        time.sleep(1.0)
-        raise RuntimeError("too late to matter")
-
-    limits = dataclasses.replace(LIMITS, seconds=0.2)
-    with TestClient(create_app(limits, allowed_hosts=["testserver"])) as c:
-        monkeypatch.setattr(service, "run_models", slow)
+def test_a_request_over_the_time_budget_is_answered_503_and_its_worker_replaced() -> None:
+    # A grid harris-full needs about 2 s for, with a budget of 0.5 s: the answer
+    # comes on time and the worker process is killed (a thread could not be stopped); a
+    # fresh one warms up and answers again.
+    limits = dataclasses.replace(LIMITS, seconds=0.5, points=40_000)
+    with TestClient(create_app(limits, allowed_hosts=["testserver"], processes=1)) as c:
+        slow = {**CASE, "model": "harris-full", "speed": "10..3000:4000 rpm",
+                "temperature": "20..60:10 degC"}  # fmt: skip
         start = time.perf_counter()
-        first = c.post("/api/torque", json=CASE)
-        assert first.status_code == 503 and "took over 0.2 s" in first.json()["error"]
-        # The late computation still holds the worker: the next request is told so
-        # after half the budget.
-        second = c.post("/api/torque", json=CASE)
-        assert second.status_code == 503 and "busy" in second.json()["error"]
-        # Both answered within their budgets (0.2 + 0.1 s) plus slack for a loaded
-        # machine, not after the 1 s the computation takes.
-        assert time.perf_counter() - start < 0.9
+        first = c.post("/api/torque", json=slow)
+        assert first.status_code == 503 and "took over 0.5 s" in first.json()["error"]
+        assert time.perf_counter() - start < 1.5  # the budget, plus slack for a loaded machine
+        quick = {**CASE, "model": "catalog", "speed": "100 rpm"}
+        for _ in range(300):  # the replacement imports the package and warms up: seconds
+            second = c.post("/api/torque", json=quick)
+            if second.status_code == 200:
+                break
+            assert second.status_code == 503 and "starting" in second.json()["error"]
+            time.sleep(0.1)
+        assert second.status_code == 200, second.text
+
+
+def test_the_api_takes_its_own_media_type_from_this_server_only(client: TestClient) -> None:
+    # Issue 28: text/plain and a foreign Origin were computed: any page the user visits
+    # could send them to the local server without the browser asking first.
+    body = json.dumps(CASE)
+    plain = client.post("/api/torque", content=body, headers={"content-type": "text/plain"})
+    assert plain.status_code == 415 and "application/json" in plain.json()["error"]
+    foreign = client.post("/api/torque", json=CASE, headers={"origin": "http://evil.example"})
+    assert foreign.status_code == 403
+    same = client.post("/api/torque", json=CASE, headers={"origin": "http://testserver"})
+    assert same.status_code == 200
+    upload = client.post("/api/case", content=b"[screw]\n", headers={"content-type": "text/plain"})
+    assert upload.status_code == 415
+    # Every answer carries the page's security headers, a refusal too.
+    for response in (
+        plain,
+        foreign,
+        client.post(
+            "/api/torque", content=b"x" * 70_000, headers={"content-type": "application/json"}
+        ),
+    ):
+        assert "default-src 'self'" in response.headers["content-security-policy"]
+
+
+def test_a_lone_surrogate_or_a_feed_of_zero_is_refused_not_an_internal_error(
+    client: TestClient,
+) -> None:
+    body = json.dumps({"case": {**CASE, "title": "\ud800"}})  # escaped: valid JSON
+    response = client.post("/api/evaluate", content=body,
+                           headers={"content-type": "application/json"})  # fmt: skip
+    assert response.status_code == 400 and "surrogate" in response.json()["error"]
+    move = {"stroke": "300 mm", "feed": "0 m/min", "acceleration": "2 m/s**2"}
+    response = client.post("/api/evaluate", json={"case": CASE, "move": move})
+    assert response.status_code == 422 and "--move feed" in response.json()["error"]
 
 
 def test_the_page_is_served_with_its_script_and_a_strict_policy(client: TestClient) -> None:

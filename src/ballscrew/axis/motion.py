@@ -358,4 +358,11 @@ def parse_move(text: str) -> dict[str, float]:
     missing = [k for k, (_, needed) in MOVE_KEYS.items() if needed and k not in out]
     if missing:
         raise BallScrewInputError("--move", text, f"also {', '.join(missing)} (with units)")
+    for key in ("feed", "acceleration", "jerk"):
+        if key in out and not out[key] > 0.0:
+            raise BallScrewInputError(f"--move {key}", out[key], "more than 0")
+    if out["stroke"] == 0.0:
+        raise BallScrewInputError("--move stroke", 0.0, "a stroke, not 0")
+    if out.get("dwell", 0.0) < 0.0:
+        raise BallScrewInputError("--move dwell", out["dwell"], "0 s or more")
     return out

@@ -39,6 +39,7 @@ def serve_command(host: str, port: int) -> None:
 
     from ..web import create_app
     from ..web.app import LOOPBACK_HOSTS
+    from ..web.server import server_config
 
     hosts = list(LOOPBACK_HOSTS)
     if not _is_loopback(host):
@@ -50,15 +51,7 @@ def serve_command(host: str, port: int) -> None:
     if port:
         shown = f"[{host}]" if ":" in host else host
         click.echo(f"ballscrew calculator on http://{shown}:{port}/ (Ctrl-C to stop)", err=True)
-    uvicorn.run(
-        create_app(allowed_hosts=hosts),
-        host=host,
-        port=port,
-        log_level="info",  # says where it listens (the port, when 0 was asked for)
-        access_log=False,
-        # Bounded: connections at once (503 beyond), idle keep-alive, header size.
-        limit_concurrency=64,
-        timeout_keep_alive=5,
-        h11_max_incomplete_event_size=16 * 1024,
-        server_header=False,
-    )
+    # log_level info: uvicorn says where it listens (the port, when 0 was asked for).
+    config = server_config(create_app(allowed_hosts=hosts), host=host, port=port,
+                           log_level="info")  # fmt: skip
+    uvicorn.Server(config).run()

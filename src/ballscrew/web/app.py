@@ -17,11 +17,14 @@ Built on Starlette (an ASGI toolkit) and served by uvicorn
 
 Safe to leave running: request bodies are capped (413 before the body is
 read when ``Content-Length`` says so, and while it streams otherwise), the
-work of a request is bounded (:class:`service.Limits`) and runs one request
-at a time in a worker thread within a time budget (503 past it), the Host
-header must name this server (no DNS rebinding from a web page), and an
-internal error answers a generic message while the traceback goes to the
-server's log only.
+work of a request is bounded (:class:`service.Limits`) and runs in a worker
+process within a time budget that is enforced (:mod:`.worker`: 503 past it,
+the process killed and replaced), the API takes only its own media type
+(JSON; TOML for an uploaded case) and refuses requests a page of another
+origin sends, the Host header must name this server (no DNS rebinding from a
+web page), every answer carries the page's security headers, and an internal
+error answers a generic message while the traceback goes to the server's log
+only.
 """
 
 from __future__ import annotations
@@ -29,8 +32,6 @@ from __future__ import annotations
 import contextlib
 import json
 import logging
-import threading
-import warnings
 from collections.abc import AsyncIterator, Awaitable, Callable
 from importlib import resources
 from typing import Any
@@ -48,10 +49,10 @@ from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
 from .. import lubricants
 from .._version import __version__
-from ..errors import BallScrewSpeedWarning, BallScrewValidityWarning
 from ..io.designation import catalog_screws
 from . import service
 from .service import LIMITS, ApiError, Limits
+from .worker import WorkerPool
 
 __all__ = ["LOOPBACK_HOSTS", "create_app"]
 
@@ -88,35 +89,41 @@ class _Guard:
             await self.app(scope, receive, send)
             return
         length = dict(scope["headers"]).get(b"content-length")
+        too_big = False
         if length is not None:
             try:
                 too_big = int(length) > self.limit
             except ValueError:
                 too_big = True
-            if too_big:
-                response = JSONResponse(
-                    {"error": f"the request body is over {self.limit} bytes"}, status_code=413
-                )
-                await response(scope, receive, send)
-                return
 
         async def send_with_headers(message: Message) -> None:
             if message["type"] == "http.response.start":
                 message["headers"] = [*message.get("headers", []), *_SECURITY_HEADERS]
             await send(message)
 
+        if length is not None and too_big:
+            response = JSONResponse(
+                {"error": f"the request body is over {self.limit} bytes"}, status_code=413
+            )
+            await response(scope, receive, send_with_headers)
+            return
+
         await self.app(scope, receive, send_with_headers)
 
 
 async def _body(request: Request, limits: Limits) -> bytes:
-    """The request body, refused (413) as soon as it passes the limit."""
+    """The request body: 413 as soon as it passes the limit, 408 if it comes too slowly."""
     chunks: list[bytes] = []
     size = 0
-    async for chunk in request.stream():
-        size += len(chunk)
-        if size > limits.body_bytes:
-            raise ApiError(413, f"the request body is over {limits.body_bytes} bytes")
-        chunks.append(chunk)
+    try:
+        with anyio.fail_after(limits.seconds):
+            async for chunk in request.stream():
+                size += len(chunk)
+                if size > limits.body_bytes:
+                    raise ApiError(413, f"the request body is over {limits.body_bytes} bytes")
+                chunks.append(chunk)
+    except TimeoutError:
+        raise ApiError(408, f"the request body took over {limits.seconds:g} s") from None
     return b"".join(chunks)
 
 
@@ -145,38 +152,6 @@ def _page() -> bytes:
     return templates.get_template("index.html").render(**_page_context()).encode("utf-8")
 
 
-class _Worker:
-    """Runs a computation in a worker thread, one request at a time, within the time budget."""
-
-    def __init__(self, limits: Limits) -> None:
-        self.limits = limits
-        self.lock = threading.Lock()
-
-    def _run(self, function: Callable[..., dict[str, Any]], *args: Any) -> dict[str, Any]:
-        # Half the budget to wait for the worker, so that "busy" is told in time.
-        if not self.lock.acquire(timeout=self.limits.seconds / 2):
-            raise ApiError(503, "the calculator is busy; try again in a moment")
-        try:
-            # One at a time, so the warning filters (process-wide) are ours alone;
-            # the results keep every validity issue, returned as text.
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore", BallScrewValidityWarning)
-                warnings.simplefilter("ignore", BallScrewSpeedWarning)
-                return function(*args)
-        finally:
-            self.lock.release()
-
-    async def __call__(self, function: Callable[..., dict[str, Any]], *args: Any) -> dict[str, Any]:
-        """Run ``function`` in a worker thread, one request at a time, within the budget."""
-        try:
-            with anyio.fail_after(self.limits.seconds):
-                return await anyio.to_thread.run_sync(
-                    self._run, function, *args, abandon_on_cancel=True
-                )
-        except TimeoutError:
-            raise ApiError(503, f"the request took over {self.limits.seconds:g} s") from None
-
-
 _Endpoint = Callable[[Request], Awaitable[Response]]
 
 
@@ -203,22 +178,40 @@ def _static_file(static: dict[str, bytes]) -> _Endpoint:
     return static_file
 
 
-def _json_route(
-    function: Callable[[dict[str, Any], Limits], dict[str, Any]], limits: Limits, compute: _Worker
-) -> _Endpoint:
-    """An API route: the JSON body to ``function`` (in the worker), its result as JSON."""
+def _same_origin(request: Request, media: str) -> None:
+    """Refuse a body of another type, and a request a page of another origin sent.
+
+    A page elsewhere can send a cross-origin "simple" request (text/plain, a
+    form) to this server without the browser asking first; requiring the API's
+    own media type, and an Origin that names this server when there is one,
+    closes that door.
+    """
+    kind = request.headers.get("content-type", "").split(";")[0].strip().lower()
+    if kind != media:
+        raise ApiError(415, f"the request body must be sent as {media}")
+    origin = request.headers.get("origin")
+    if origin is not None:
+        host = request.headers.get("host", "")
+        if origin.split("://", 1)[-1].rstrip("/") != host:
+            raise ApiError(403, "a request from another web page is refused")
+
+
+def _json_route(name: str, limits: Limits, compute: WorkerPool) -> _Endpoint:
+    """An API route: the JSON body to the worker's function ``name``, its result as JSON."""
 
     async def endpoint(request: Request) -> Response:
+        _same_origin(request, "application/json")
         payload = service.read_json(await _body(request, limits))
-        return _json(await compute(function, payload, limits))
+        return _json(await compute(name, payload))
 
     return endpoint
 
 
 def _case_file(limits: Limits) -> _Endpoint:
-    """``POST /api/case``: an uploaded case file read as TOML data."""
+    """``POST /api/case``: an uploaded case file (sent as application/toml) read as TOML data."""
 
     async def case_file(request: Request) -> Response:
+        _same_origin(request, "application/toml")
         return _json(service.read_case_file(await _body(request, limits)))
 
     return case_file
@@ -248,37 +241,48 @@ async def _internal_error(request: Request, exc: Exception) -> Response:
 
 
 def _lifespan(
-    compute: _Worker, limits: Limits
+    compute: WorkerPool,
 ) -> Callable[[Starlette], contextlib.AbstractAsyncContextManager[None]]:
-    """The application's lifespan: a warm-up computation before the first request."""
+    """The application's lifespan: the workers started and warmed up; stopped at the end."""
 
     @contextlib.asynccontextmanager
     async def lifespan(app: Starlette) -> AsyncIterator[None]:
-        # The first computation loads and compiles what the models need (about
-        # 0.7 s); done here, before the first visitor, the page opens at full speed.
+        # The workers import the package and warm up (the first computation loads and
+        # compiles what the models need) before the first visitor: the page opens at
+        # full speed. Computing in this process, the warm-up is one request.
+        await anyio.to_thread.run_sync(compute.start, 120.0)
+        if not compute.size:
+            try:
+                await compute("evaluate", service.WARM_UP)
+            except Exception:  # the server still starts, and answers what it can
+                LOG.exception("warm-up computation failed")
         try:
-            await compute(service.evaluate, service.WARM_UP, limits)
-        except Exception:  # the server still starts, and answers what it can
-            LOG.exception("warm-up computation failed")
-        yield
+            yield
+        finally:
+            compute.close()
 
     return lifespan
 
 
-def create_app(limits: Limits = LIMITS, allowed_hosts: list[str] | None = None) -> Starlette:
-    """The application; ``allowed_hosts``: Host names it answers (default: loopback names)."""
-    compute = _Worker(limits)
+def create_app(
+    limits: Limits = LIMITS, allowed_hosts: list[str] | None = None, processes: int = 2
+) -> Starlette:
+    """The application; ``allowed_hosts``: Host names it answers (default: loopback names).
+
+    ``processes``: worker processes that compute (:class:`~.worker.WorkerPool`; 0 runs
+    the computations in a thread of this process, as tests that replace a function of
+    the service need).
+    """
+    compute = WorkerPool(limits, processes)
     hosts = list(allowed_hosts) if allowed_hosts is not None else list(LOOPBACK_HOSTS)
     return Starlette(
         debug=False,
-        lifespan=_lifespan(compute, limits),
+        lifespan=_lifespan(compute),
         routes=[
             Route("/", _index(_page()), methods=["GET"]),
             Route("/static/{name}", _static_file(_static()), methods=["GET"]),
-            Route("/api/torque", _json_route(service.torque, limits, compute), methods=["POST"]),
-            Route(
-                "/api/evaluate", _json_route(service.evaluate, limits, compute), methods=["POST"]
-            ),
+            Route("/api/torque", _json_route("torque", limits, compute), methods=["POST"]),
+            Route("/api/evaluate", _json_route("evaluate", limits, compute), methods=["POST"]),
             Route("/api/case", _case_file(limits), methods=["POST"]),
         ],
         middleware=[

@@ -105,6 +105,10 @@ def read_json(body: bytes) -> dict[str, Any]:
         raise ApiError(400, "the request body is not JSON (UTF-8)") from None
     if not isinstance(data, dict):
         raise ApiError(400, "the request body must be a JSON object")
+    try:  # JSON may escape a lone surrogate (\\ud800), which is no text at all
+        json.dumps(data, ensure_ascii=False).encode("utf-8")
+    except UnicodeEncodeError:
+        raise ApiError(400, "the request body holds a lone surrogate: not text") from None
     return data
 
 

@@ -495,7 +495,7 @@
     }
     const body = await file.text();
     const response = await fetch("/api/case", {
-      method: "POST", headers: { "content-type": "text/plain; charset=utf-8" }, body,
+      method: "POST", headers: { "content-type": "application/toml" }, body,
     });
     const data = await response.json();
     $("upload").value = "";
