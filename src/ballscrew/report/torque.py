@@ -8,9 +8,10 @@ CSV and JSON are those the command writes (:mod:`ballscrew.report.outputs`).
 
 from __future__ import annotations
 
+import math
 import warnings
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -124,7 +125,9 @@ def warning_lines(results: Mapping[str, FrictionResult]) -> list[str]:
 
     One ``warning:`` line per issue; issues every ordinary ball screw has
     (``ValidityIssue.routine``) become one ``note:`` per quantity, naming the
-    models, after the warnings.
+    models, after the warnings; a routine statement (an issue with no range,
+    such as a grease's note, :func:`ballscrew.validity.grease_note`) is told
+    as it reads.
     """
     lines: list[str] = []
     routine: dict[str, list[Any]] = {}
@@ -137,6 +140,10 @@ def warning_lines(results: Mapping[str, FrictionResult]) -> list[str]:
     for quantity, found in routine.items():
         worst = max(found, key=lambda i: i.excess)
         names = ", ".join(i.model for i in found)
+        if math.isnan(worst.low) and math.isnan(worst.high):  # a statement (no range)
+            text = str(replace(worst, model=""))
+            lines.append(f"note: {text} (for {names}; {worst.routine})")
+            continue
         lines.append(
             f"note: {quantity} up to {worst.value:.3g}, outside {worst.low:.3g} to "
             f"{worst.high:.3g} ({worst.applies_to}) for {names}: usual for ball screws, "
