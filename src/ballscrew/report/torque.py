@@ -18,7 +18,8 @@ import numpy as np
 
 from ..chain import FrictionResult, friction_torque
 from ..errors import BallScrewValidityWarning, FloatArray
-from ..io.case import Case
+from ..io.case import WIPER_PARAMETERS, Case
+from ..validity import statement
 from .outputs import csv_text, json_text, provenance, result_rows
 
 __all__ = ["TorqueRun", "operating_grid", "run_models", "torque_run", "warning_lines"]
@@ -98,7 +99,9 @@ def run_models(
     """Each model over the grid of the operating points, with the case's model parameters.
 
     The validity issues are kept in each result (:func:`warning_lines` tells
-    them); ``on_model(name)`` is called after each model.
+    them); a model without a wiper term, run on a case with ``[screw]
+    wiper_drag``, has a note added that it leaves the drag out.
+    ``on_model(name)`` is called after each model.
     """
     grid_w, grid_t, grid_f = operating_grid(speed, temperature, axial_load)
     results: dict[str, FrictionResult] = {}
@@ -115,9 +118,24 @@ def run_models(
                 model=name,
                 **params,
             )
+        if case.wiper_drag and name not in WIPER_PARAMETERS:
+            results[name] = _wiper_left_out(results[name], case.wiper_drag)
         if on_model is not None:
             on_model(name)
     return results
+
+
+def _wiper_left_out(result: FrictionResult, drag: float) -> FrictionResult:
+    """The result with a note that its model has no term for the case's wiper drag."""
+    note = statement(
+        "wiper drag [N*m]",
+        "left out, as the model has no wiper or seal term (the complete model adds it as its "
+        "'seals' component)",
+        "[screw] wiper_drag or --wiper-drag",
+        value=drag,
+        routine="a case's wiper drag reaches only the models with a seal term",
+    )
+    return replace(result, warnings=(*result.warnings, replace(note, model=result.model)))
 
 
 def warning_lines(results: Mapping[str, FrictionResult]) -> list[str]:
