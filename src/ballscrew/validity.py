@@ -102,7 +102,7 @@ def _scale(low: float, high: float) -> float:
 
 @dataclass(frozen=True)
 class ValidityIssue:
-    """One quantity of a call outside its validity range (``str()`` is the warning text)."""
+    """One quantity of a call outside its validity range, or a statement (``str()``: the text)."""
 
     quantity: str
     value: float
@@ -115,7 +115,10 @@ class ValidityIssue:
 
     @property
     def excess(self) -> float:
-        """How far the value lies outside the range, relative to the range's upper end."""
+        """How far the value lies outside the range, relative to its upper end (else its lower).
+
+        Infinite for a statement (no range) and for a non-finite value.
+        """
         if not math.isfinite(self.value) or math.isnan(self.low) or math.isnan(self.high):
             return math.inf
         return max(self.low - self.value, self.value - self.high) / _scale(self.low, self.high)
@@ -262,8 +265,8 @@ def lubricant_limits(lubricant: Lubricant) -> list[ValidityRange]:
 
 
 GREASE_SOURCE = (
-    "Lugt, Tribol. Trans. 52 (2009) 470, doi:10.1080/10402000802687940; fully flooded, grease and "
-    "bled oil form alike films at moderate to high speed: Lubricants 3 (2015) 197, "
+    "Lugt, Tribol. Trans. 52 (2009) 470, doi:10.1080/10402000802687940; fully flooded, a grease "
+    "and its bled oil form similar films at moderate to high speed: Lubricants 3 (2015) 197, "
     "doi:10.3390/lubricants3020197"
 )
 """Where the base-oil description of a grease comes from (the grease note's source)."""
@@ -365,9 +368,9 @@ def film_checks(
     """Ranges of the EHL film formulas and of the Hertz fits, for models built on them.
 
     Includes :func:`lubricant_checks` (the viscosity fit's range, a grease's
-    note). The checks depend on the operating
-    range only through its extremes, so their result is cached on those
-    (a loop over single points repeats the same extremes).
+    note). The checks depend on the operating range only through its extremes,
+    so their result is cached on those (a loop over single points repeats the
+    same extremes).
     """
     w_abs = np.abs(speed)
     moving = w_abs[w_abs > 0.0]
