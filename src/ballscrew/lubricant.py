@@ -25,6 +25,7 @@ References
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, fields, replace
 from typing import Any, Literal, get_args
 
@@ -41,6 +42,8 @@ from .errors import (
 )
 
 __all__ = [
+    "LUBRICANT_KINDS",
+    "NLGI_GRADES",
     "PRESSURE_VISCOSITY_MODELS",
     "VISCOSITY_MODELS",
     "Lubricant",
@@ -58,6 +61,13 @@ __all__ = [
 ArrayLike = npt.ArrayLike
 KELVIN = 273.15
 """Offset from °C to K."""
+
+LubricantKind = Literal["oil", "grease"]
+LUBRICANT_KINDS: tuple[str, ...] = get_args(LubricantKind)
+NLGI_GRADES: tuple[str, ...] = ("000", "00", "0", "1", "2", "3", "4", "5", "6")
+"""The NLGI consistency grades (NLGI, ASTM D217 worked penetration classes), softest first."""
+_NLGI = r"(?:000|00|[0-6](?:\.5)?)"
+_NLGI_GRADE = re.compile(rf"{_NLGI}(?:-{_NLGI})?")
 
 ViscosityModel = Literal["astm_d341", "vogel"]
 VISCOSITY_MODELS: tuple[str, ...] = get_args(ViscosityModel)
@@ -414,10 +424,15 @@ def pressure_viscosity_jungnickel(kinematic_viscosity: ArrayLike) -> FloatArray:
 
 @dataclass(frozen=True)
 class Lubricant:
-    r"""A lubricating oil and the correlations that give its properties.
+    r"""A lubricating oil, or a grease's base oil, and the correlations that give its properties.
 
     Build one with :meth:`from_viscosities` or take a bundled one from
-    :func:`ballscrew.lubricants.get`.
+    :func:`ballscrew.lubricants.get`. A grease (``kind="grease"``) is
+    described by its base oil: the viscosities, density and pressure-viscosity
+    coefficient are the base oil's, which is what elastohydrodynamic film
+    theory uses for a fully flooded grease-lubricated contact at steady state
+    (see :mod:`ballscrew.validity`, which states what that leaves out); its
+    thickener and consistency are recorded, not modelled.
 
     Parameters
     ----------
@@ -441,6 +456,23 @@ class Lubricant:
         Viscosity-temperature law fitted through ``nu40`` and ``nu100``.
     source : str
         Where the numbers come from.
+    kind : {"oil", "grease"}
+        An oil, or a grease described by its base oil (default ``"oil"``).
+    thickener : str
+        A grease's thickener ("lithium", "lithium complex", "calcium
+        sulfonate", "polyurea", ...); empty for an oil or when unknown.
+    nlgi_grade : str
+        A grease's NLGI consistency grade as its data sheet writes it: one of
+        :data:`NLGI_GRADES`, a half grade ("1.5") or a span ("2-3"); empty
+        for an oil or when unknown.
+    base_oil : str
+        The (base) oil's type ("mineral", "PAO", "ester", ...); empty when
+        unknown.
+    pour_point, flash_point : float or None
+        Pour point and flash point of the (base) oil [°C], where its data
+        sheet gives them; None otherwise. The friction chain warns when a
+        temperature lies below the pour point or above the flash point
+        (:func:`ballscrew.validity.lubricant_limits`).
 
     Examples
     --------
@@ -461,6 +493,12 @@ class Lubricant:
     thermal_expansion: float = 6.5e-4
     viscosity_model: ViscosityModel = "astm_d341"
     source: str = ""
+    kind: LubricantKind = "oil"
+    thickener: str = ""
+    nlgi_grade: str = ""
+    base_oil: str = ""
+    pour_point: float | None = None
+    flash_point: float | None = None
 
     def __post_init__(self) -> None:
         if not isinstance(self.name, str) or not self.name.strip():
@@ -486,6 +524,48 @@ class Lubricant:
         if self.density(100.0) <= 0.0:
             raise BallScrewInputError(
                 "thermal_expansion", self.thermal_expansion, "a value giving a positive density"
+            )
+        self._grease_fields()
+        self._limits()
+
+    def _grease_fields(self) -> None:
+        """Check kind, thickener, NLGI grade and base oil (the grease-only ones need a grease)."""
+        if self.kind not in LUBRICANT_KINDS:
+            raise BallScrewInputError("kind", self.kind, f"one of {list(LUBRICANT_KINDS)}")
+        for name in ("thickener", "nlgi_grade", "base_oil"):
+            value = getattr(self, name)
+            if not isinstance(value, str):
+                raise BallScrewInputError(name, value, "a text (empty when unknown)")
+            object.__setattr__(self, name, " ".join(value.split()))
+        for name in ("thickener", "nlgi_grade"):
+            if getattr(self, name) and self.kind != "grease":
+                raise BallScrewInputError(
+                    name, getattr(self, name), 'empty for an oil (give kind="grease")'
+                )
+        if self.nlgi_grade and not _NLGI_GRADE.fullmatch(self.nlgi_grade):
+            raise BallScrewInputError(
+                "nlgi_grade",
+                self.nlgi_grade,
+                f"an NLGI grade {list(NLGI_GRADES)}, a half grade ('1.5') or a span ('2-3')",
+            )
+
+    def _limits(self) -> None:
+        """Check the pour point and flash point [°C]: None, or finite with pour < flash."""
+        for name in ("pour_point", "flash_point"):
+            if getattr(self, name) is not None:
+                self._scalar(
+                    name,
+                    lambda f, v: check_in_range(f, v, -KELVIN, np.inf, unit="°C"),
+                )
+        if (
+            self.pour_point is not None
+            and self.flash_point is not None
+            and self.pour_point >= self.flash_point
+        ):
+            raise BallScrewInputError(
+                "flash_point",
+                self.flash_point,
+                f"a value above pour_point ({self.pour_point!r} °C)",
             )
 
     def _scalar(self, name: str, check: Any) -> None:

@@ -14,6 +14,12 @@ The checks cost O(n) for the operating points (minimum and maximum) plus a
 handful of scalar evaluations: the dimensionless speed is largest at the
 highest speed and lowest temperature, the load at the largest axial load, and
 so on, so the extremes are evaluated at those corners only.
+
+A range may be one-sided (an infinite bound: a lubricant's pour point and
+flash point, :func:`lubricant_limits`, checked for every model) or a
+*statement*, a range with no bounds (NaN): a limitation the results carry
+whatever the inputs, told as a note, such as what the models leave out of a
+grease (:func:`grease_note`).
 """
 
 from __future__ import annotations
@@ -35,6 +41,7 @@ from .loads import LIFT_OFF_RATIO, ball_loads
 from .lubricant import Lubricant
 
 __all__ = [
+    "GREASE_SOURCE",
     "RANGES",
     "BallScrewValidityWarning",
     "Check",
@@ -42,7 +49,11 @@ __all__ = [
     "ValidityRange",
     "check",
     "film_checks",
+    "grease_note",
+    "lubricant_checks",
+    "lubricant_limits",
     "outside",
+    "statement",
 ]
 
 
@@ -59,17 +70,39 @@ class ValidityRange:
     """Why ordinary ball screws leave this range, if they do: such issues are
     told once, as a note, rather than warned about on every call."""
 
+    @property
+    def is_statement(self) -> bool:
+        """A range with no bounds (both NaN): a limitation stated whatever the inputs."""
+        return math.isnan(self.low) and math.isnan(self.high)
+
     def message(self, value: float) -> str:
-        """Warning text for ``value`` outside the range."""
+        """Warning text for ``value`` outside the range (a statement: the statement)."""
+        if self.is_statement:
+            told = f"{self.quantity} = {value:.4g}" if math.isfinite(value) else self.quantity
+            return f"{told}: {self.applies_to} ({self.source})"
+        # A one-sided range is a physical limit: beyond it the results do not hold at all.
+        ending = "results there do not hold"
+        if math.isinf(self.high) and not math.isinf(self.low):
+            where = f"below {self.low:.4g}, the lower limit of"
+        elif math.isinf(self.low) and not math.isinf(self.high):
+            where = f"above {self.high:.4g}, the upper limit of"
+        else:
+            where = f"outside {self.low:.4g} to {self.high:.4g}, the range of"
+            ending = "results there are extrapolated"
         return (
-            f"{self.quantity} = {value:.4g} is outside {self.low:.4g} to {self.high:.4g}, the "
-            f"range of {self.applies_to} ({self.source}); results there are extrapolated"
+            f"{self.quantity} = {value:.4g} is {where} {self.applies_to} ({self.source}); {ending}"
         )
+
+
+def _scale(low: float, high: float) -> float:
+    """The size a distance outside ``[low, high]`` is measured against (the finite bound)."""
+    bound = high if math.isfinite(high) else low if math.isfinite(low) else 1.0
+    return max(abs(bound), 1e-300)
 
 
 @dataclass(frozen=True)
 class ValidityIssue:
-    """One quantity of a call outside its validity range (``str()`` is the warning text)."""
+    """One quantity of a call outside its validity range, or a statement (``str()``: the text)."""
 
     quantity: str
     value: float
@@ -82,10 +115,13 @@ class ValidityIssue:
 
     @property
     def excess(self) -> float:
-        """How far the value lies outside the range, relative to the range's upper end."""
-        if not math.isfinite(self.value):
+        """How far the value lies outside the range, relative to its upper end (else its lower).
+
+        Infinite for a statement (no range) and for a non-finite value.
+        """
+        if not math.isfinite(self.value) or math.isnan(self.low) or math.isnan(self.high):
             return math.inf
-        return max(self.low - self.value, self.value - self.high) / max(abs(self.high), 1e-300)
+        return max(self.low - self.value, self.value - self.high) / _scale(self.low, self.high)
 
     def __str__(self) -> str:
         rng = ValidityRange(self.quantity, self.low, self.high, self.applies_to, self.source)
@@ -172,11 +208,97 @@ def outside(r: ValidityRange | str, values: Iterable[float]) -> list[ValidityIss
     if isinstance(r, str):
         r = RANGES[r]
     vals = [v for v in values if math.isfinite(v)]
-    worst = [v for v in vals if v < r.low * (1 - 1e-12) or v > r.high * (1 + 1e-12)]
+    # A relative tolerance on each bound (of either sign; an infinite bound stays infinite).
+    low, high = r.low - 1e-12 * abs(r.low), r.high + 1e-12 * abs(r.high)
+    worst = [v for v in vals if v < low or v > high]
     if not worst:
         return []
-    value = max(worst, key=lambda v: max(r.low - v, v - r.high) / max(abs(r.high), 1e-300))
+    value = max(worst, key=lambda v: max(r.low - v, v - r.high) / _scale(r.low, r.high))
     return [ValidityIssue(r.quantity, value, r.low, r.high, r.applies_to, r.source, "", r.routine)]
+
+
+def statement(
+    quantity: str, text: str, source: str, *, value: float = math.nan, routine: str = ""
+) -> ValidityIssue:
+    """A limitation of the results told as an issue with no range (see the module docstring).
+
+    ``str()`` of the issue is ``"quantity[ = value]: text (source)"``; with
+    ``routine`` it is told once per session as a note, like the routine ranges.
+    """
+    return ValidityIssue(quantity, value, math.nan, math.nan, text, source, "", routine)
+
+
+def lubricant_limits(lubricant: Lubricant) -> list[ValidityRange]:
+    """The temperatures the lubricant stays a lubricant in, from its pour and flash points.
+
+    Below the (base) oil's pour point the oil no longer flows to the contacts;
+    above its flash point it gives off flammable vapour and is no lubricant
+    at all. Each given point is a one-sided range naming the lubricant's
+    field, its value and where the lubricant's data come from; none when the
+    data sheet gives neither.
+    """
+    source = lubricant.source or "source not given"
+    limits: list[ValidityRange] = []
+    if lubricant.pour_point is not None:
+        limits.append(
+            ValidityRange(
+                "temperature [degC] (pour point)",
+                lubricant.pour_point,
+                math.inf,
+                f"{lubricant.name}: pour_point = {lubricant.pour_point:g} degC, below which the "
+                "oil does not flow to the contacts",
+                source,
+            )
+        )
+    if lubricant.flash_point is not None:
+        limits.append(
+            ValidityRange(
+                "temperature [degC] (flash point)",
+                -math.inf,
+                lubricant.flash_point,
+                f"{lubricant.name}: flash_point = {lubricant.flash_point:g} degC, above which the "
+                "oil gives off flammable vapour and is no longer a lubricant",
+                source,
+            )
+        )
+    return limits
+
+
+GREASE_SOURCE = (
+    "Lugt, Tribol. Trans. 52 (2009) 470, doi:10.1080/10402000802687940; fully flooded, a grease "
+    "and its bled oil form similar films at moderate to high speed: Lubricants 3 (2015) 197, "
+    "doi:10.3390/lubricants3020197"
+)
+"""Where the base-oil description of a grease comes from (the grease note's source)."""
+
+
+def grease_note(lubricant: Lubricant) -> list[ValidityIssue]:
+    """The note of a grease: the models use its base oil, its thickener is left out.
+
+    Elastohydrodynamic film theory describes a grease-lubricated rolling
+    contact that is fully flooded and at steady state by the base (bled) oil's
+    film (Lugt's review, :data:`GREASE_SOURCE`), which is what the models
+    compute from the lubricant's data. What the thickener adds is not modelled:
+    thicker films at low speed, the drag of churning grease, and starvation
+    (thinner films) at high speed once the grease has been pushed aside. Empty
+    for an oil.
+    """
+    if lubricant.kind != "grease":
+        return []
+    made = [lubricant.thickener] if lubricant.thickener else []
+    made += [f"NLGI {lubricant.nlgi_grade}"] if lubricant.nlgi_grade else []
+    what = f" ({', '.join(made)})" if made else ""
+    text = (
+        f"{lubricant.name} is a grease{what}: the models take its base "
+        "oil's viscosity, as elastohydrodynamic film theory does for a fully flooded grease "
+        "contact at steady state; the thickener's share of the film and of the drag (grease "
+        "churning, starvation at high speed) is not modelled"
+    )
+    return [
+        statement(
+            "grease (base oil only)", text, GREASE_SOURCE, routine="many ball screws run on grease"
+        )
+    ]
 
 
 def check(
@@ -201,7 +323,9 @@ def check(
         The model's parameters as used.
     checks : iterable of callables
         The model's own checks (its ``ModelSpec.checks``), run after the
-        common ones (speed factor, preload lift-off).
+        common ones (speed factor, preload lift-off, and the lubricant's pour
+        and flash points, :func:`lubricant_limits`, which bound every model:
+        beyond them there is no lubricant, whatever the model makes of it).
     """
     issues: list[ValidityIssue] = []
     if speed.size == 0:
@@ -212,6 +336,9 @@ def check(
         issues += outside(
             "axial load / preload", [float(np.max(np.abs(axial_load))) / screw.preload]
         )
+    t_extremes = [float(np.min(temperature)), float(np.max(temperature))]
+    for limit in lubricant_limits(lubricant):
+        issues += outside(limit, t_extremes)
     for model_check in checks:
         issues += model_check(screw, lubricant, speed, temperature, axial_load, parameters)
     return [replace(issue, model=model) for issue in issues]
@@ -225,8 +352,9 @@ def lubricant_checks(
     axial_load: FloatArray,
     parameters: dict[str, Any],
 ) -> list[ValidityIssue]:
-    """The viscosity-temperature fit's range, for models that use the lubricant."""
-    return outside("temperature [degC]", [float(np.min(temperature)), float(np.max(temperature))])
+    """The viscosity-temperature fit's range and a grease's note (models that use the oil)."""
+    t_range = [float(np.min(temperature)), float(np.max(temperature))]
+    return outside("temperature [degC]", t_range) + grease_note(lubricant)
 
 
 def film_checks(
@@ -239,9 +367,10 @@ def film_checks(
 ) -> list[ValidityIssue]:
     """Ranges of the EHL film formulas and of the Hertz fits, for models built on them.
 
-    Includes :func:`lubricant_checks`. The checks depend on the operating
-    range only through its extremes, so their result is cached on those
-    (a loop over single points repeats the same extremes).
+    Includes :func:`lubricant_checks` (the viscosity fit's range, a grease's
+    note). The checks depend on the operating range only through its extremes,
+    so their result is cached on those (a loop over single points repeats the
+    same extremes).
     """
     w_abs = np.abs(speed)
     moving = w_abs[w_abs > 0.0]
@@ -275,7 +404,7 @@ def _film_issues(
     ``w_min``, ``w_max``: smallest and largest non-zero speed magnitude
     [rad/s] (0 when nothing moves); ``fa_max``: largest |axial load| [N].
     """
-    issues = outside("temperature [degC]", [t_lo, t_hi])
+    issues = outside("temperature [degC]", [t_lo, t_hi]) + grease_note(lubricant)
     ratios = [screw.ry_screw / screw.rx_screw, screw.ry_nut / screw.rx_nut]
     ratios = [max(r, 1.0 / r) for r in ratios]
     issues += outside(

@@ -85,7 +85,9 @@ def _print_resolved(path: str) -> None:
             f"{s.roughness_ball * 1e6:.3g} / {s.roughness_screw * 1e6:.3g} / "
             f"{s.roughness_nut * 1e6:.3g} um",
         ),
+        *([("screw", "wiper drag", f"{case.wiper_drag:.4g} N*m")] if case.wiper_drag else []),
         ("lubricant", "name", oil.name),
+        *([("lubricant", "grease", _grease(oil))] if oil.kind == "grease" else []),
         (
             "lubricant",
             "viscosity at 40 / 100 degC",
@@ -159,6 +161,12 @@ def _axis_rows(case: Any) -> list[tuple[str, str, str]]:
          f"{th['ambient']:g} degC, "
          + given(th.get("machine_resistance"), 1.0, "K/W", "none (convection only)")),
     ]  # fmt: skip
+
+
+def _grease(oil: Any) -> str:
+    """A grease's thickener, NLGI grade and base oil, those its data give."""
+    made = [oil.thickener, f"NLGI {oil.nlgi_grade}" if oil.nlgi_grade else "", oil.base_oil]
+    return ", ".join(p for p in made if p) + " (viscosities: the base oil's)"
 
 
 def _span(values: object, unit: str) -> str:

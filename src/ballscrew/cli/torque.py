@@ -42,6 +42,12 @@ __all__ = ["torque"]
 )
 @click.option("--temperature", default=None, help="Temperature(s), e.g. '20, 40 degC'.")
 @click.option("--axial-load", default=None, help="Axial load(s), e.g. '0, 2 kN'.")
+@click.option(
+    "--wiper-drag",
+    default=None,
+    help="Drag torque of the nut's wipers, e.g. '0.05 N*m' (default: the case's [screw] "
+    "wiper_drag); the complete model adds it, the others leave it out with a note.",
+)
 @file_option(
     "--csv",
     "csv_file",
@@ -88,6 +94,7 @@ def torque(
     speed: str | None,
     temperature: str | None,
     axial_load: str | None,
+    wiper_drag: str | None,
     csv_file: str | None,
     csv_layout: str,
     csv_dialect: str,
@@ -113,6 +120,8 @@ def torque(
     from ..units import parse_range
 
     case = load_case(case_file)
+    if wiper_drag is not None:
+        case = case.with_wiper_drag(wiper_drag, field="--wiper-drag")
     for name in model_names:
         get_model(name)
     w = np.asarray(parse_range("--speed", speed, "rad/s")) if speed else None

@@ -21,9 +21,10 @@ the study did.
 from __future__ import annotations
 
 import difflib
+import math
 import tomllib
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from importlib import resources
 from pathlib import Path
 from typing import Any
@@ -42,6 +43,7 @@ from .schema import SECTIONS, Assumed, CaseFile, LubricantSection, ScrewSection
 __all__ = [
     "LUBRICANT_UNITS",
     "SCREW_UNITS",
+    "WIPER_PARAMETERS",
     "Assumption",
     "Case",
     "default_case_path",
@@ -107,6 +109,10 @@ class Case:
     thermal : dict
         ``[axis]``'s thermal keys in SI (m, kg, K/W, °C), those given: the
         keywords of :class:`ballscrew.axis.thermal.ThermalNode`.
+    wiper_drag : float
+        ``[screw] wiper_drag``: drag torque of the nut's wipers or seals [N·m],
+        0 when not given; :meth:`parameters_for` hands it to the models of
+        :data:`WIPER_PARAMETERS`.
     """
 
     title: str
@@ -126,10 +132,46 @@ class Case:
     screw_source: str = ""
     axis: dict[str, Any] = field(default_factory=dict)
     thermal: dict[str, float] = field(default_factory=dict)
+    wiper_drag: float = 0.0
 
     def parameters_for(self, model: str) -> dict[str, Any]:
-        """The case's parameters of ``model`` (a fresh dict; empty when it gives none)."""
-        return dict(self.model_parameters.get(model, {}))
+        """The case's parameters of ``model`` (a fresh dict; empty when it gives none).
+
+        A model with a wiper or seal term (:data:`WIPER_PARAMETERS`) gets the
+        case's ``wiper_drag`` as that parameter, when the case gives one.
+        """
+        params = dict(self.model_parameters.get(model, {}))
+        if self.wiper_drag and model in WIPER_PARAMETERS:
+            params[WIPER_PARAMETERS[model]] = self.wiper_drag
+        return params
+
+    def with_wiper_drag(self, value: Any, *, field: str = "screw.wiper_drag") -> Case:
+        """The case with another wiper drag (a torque with its unit, e.g. ``"0.05 N*m"``)."""
+        return replace(self, wiper_drag=_wiper_drag(field, value, self.model_parameters))
+
+
+WIPER_PARAMETERS: dict[str, str] = {"complete": "seal_torque"}
+"""The models with a wiper or seal drag term, and the parameter that takes ``[screw] wiper_drag``.
+
+Reading a case reaches no model, so the list is kept here; a test checks it
+against the registered models' parameters. Other models leave the drag out,
+and :func:`ballscrew.report.torque.run_models` says so with each result.
+"""
+
+
+def _wiper_drag(field: str, raw: Any, model_parameters: dict[str, dict[str, Any]]) -> float:
+    """The wiper drag [N·m] from its text with unit: >= 0, not given twice for one model."""
+    value = to_si(field, raw, "N*m")
+    if not (math.isfinite(value) and value >= 0.0):
+        raise BallScrewInputError(field, raw, "a torque >= 0 with its unit, e.g. '0.05 N*m'")
+    for model, parameter in WIPER_PARAMETERS.items():
+        if value and parameter in model_parameters.get(model, {}):
+            raise BallScrewInputError(
+                field,
+                raw,
+                f"only one wiper drag: study.model_parameters.{model}.{parameter} gives it too",
+            )
+    return value
 
 
 def _validation_error(exc: ValidationError) -> BallScrewInputError:
@@ -171,6 +213,10 @@ def parse_case(text: str, *, source: str = "case") -> Case:
     lub = _lubricant(data.lubricant, notes)
     speed, temperature, axial = _operation(data, notes, read)
     st = data.study
+    wiper = 0.0
+    if s.wiper_drag is not None:
+        raw = _unwrap("screw.wiper_drag", s.wiper_drag, notes)
+        wiper = _wiper_drag("screw.wiper_drag", raw, st.model_parameters)
     drag = tuple(si("study", f"drag_torques[{i}]", v, "N*m") for i, v in enumerate(st.drag_torques))
     band = tuple(
         si("study", f"measured_range[{i}]", v, "N*m") for i, v in enumerate(st.measured_range)
@@ -207,6 +253,7 @@ def parse_case(text: str, *, source: str = "case") -> Case:
         screw_source=screw_source,
         axis=axis,
         thermal=thermal,
+        wiper_drag=wiper,
     )
 
 

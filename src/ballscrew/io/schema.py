@@ -136,6 +136,14 @@ class ScrewSection(BaseModel):
     roughness_ball: Value | None = _f(None, "length", "RMS roughness, default 0.08 um", "0.08 um")
     roughness_screw: Value | None = _f(None, "length", "RMS roughness, default 0.3 um", "0.3 um")
     roughness_nut: Value | None = _f(None, "length", "RMS roughness, default 0.3 um", "0.3 um")
+    wiper_drag: Value | None = _f(
+        None,
+        "torque",
+        "drag torque of the nut's wipers or seals, added by the models with a seal term (complete: "
+        "its 'seals' component); the others leave it out with a note (none: no wipers, as "
+        "catalogue drag torques are measured)",
+        "0.05 N*m",
+    )
 
 
 class LubricantSection(BaseModel):

@@ -153,6 +153,12 @@ def provenance(
             "density15": oil.density15,
             "pressure_viscosity": oil.pressure_viscosity,
             "source": oil.source,
+            "kind": oil.kind,
+            "thickener": oil.thickener,
+            "nlgi_grade": oil.nlgi_grade,
+            "base_oil": oil.base_oil,
+            "pour_point": oil.pour_point,
+            "flash_point": oil.flash_point,
         },
         "models": {
             name: {

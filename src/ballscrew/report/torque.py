@@ -8,16 +8,18 @@ CSV and JSON are those the command writes (:mod:`ballscrew.report.outputs`).
 
 from __future__ import annotations
 
+import math
 import warnings
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
 
 from ..chain import FrictionResult, friction_torque
 from ..errors import BallScrewValidityWarning, FloatArray
-from ..io.case import Case
+from ..io.case import WIPER_PARAMETERS, Case
+from ..validity import statement
 from .outputs import csv_text, json_text, provenance, result_rows
 
 __all__ = ["TorqueRun", "operating_grid", "run_models", "torque_run", "warning_lines"]
@@ -97,7 +99,9 @@ def run_models(
     """Each model over the grid of the operating points, with the case's model parameters.
 
     The validity issues are kept in each result (:func:`warning_lines` tells
-    them); ``on_model(name)`` is called after each model.
+    them); a model without a wiper term, run on a case with ``[screw]
+    wiper_drag``, has a note added that it leaves the drag out.
+    ``on_model(name)`` is called after each model.
     """
     grid_w, grid_t, grid_f = operating_grid(speed, temperature, axial_load)
     results: dict[str, FrictionResult] = {}
@@ -114,9 +118,24 @@ def run_models(
                 model=name,
                 **params,
             )
+        if case.wiper_drag and name not in WIPER_PARAMETERS:
+            results[name] = _wiper_left_out(results[name], case.wiper_drag)
         if on_model is not None:
             on_model(name)
     return results
+
+
+def _wiper_left_out(result: FrictionResult, drag: float) -> FrictionResult:
+    """The result with a note that its model has no term for the case's wiper drag."""
+    note = statement(
+        "wiper drag [N*m]",
+        "left out, as the model has no wiper or seal term (the complete model adds it as its "
+        "'seals' component)",
+        "[screw] wiper_drag or --wiper-drag",
+        value=drag,
+        routine="a case's wiper drag reaches only the models with a seal term",
+    )
+    return replace(result, warnings=(*result.warnings, replace(note, model=result.model)))
 
 
 def warning_lines(results: Mapping[str, FrictionResult]) -> list[str]:
@@ -124,7 +143,9 @@ def warning_lines(results: Mapping[str, FrictionResult]) -> list[str]:
 
     One ``warning:`` line per issue; issues every ordinary ball screw has
     (``ValidityIssue.routine``) become one ``note:`` per quantity, naming the
-    models, after the warnings.
+    models, after the warnings; a routine statement (an issue with no range,
+    such as a grease's note, :func:`ballscrew.validity.grease_note`) is told
+    as it reads.
     """
     lines: list[str] = []
     routine: dict[str, list[Any]] = {}
@@ -137,6 +158,10 @@ def warning_lines(results: Mapping[str, FrictionResult]) -> list[str]:
     for quantity, found in routine.items():
         worst = max(found, key=lambda i: i.excess)
         names = ", ".join(i.model for i in found)
+        if math.isnan(worst.low) and math.isnan(worst.high):  # a statement (no range)
+            text = str(replace(worst, model=""))
+            lines.append(f"note: {text} (for {names}; {worst.routine})")
+            continue
         lines.append(
             f"note: {quantity} up to {worst.value:.3g}, outside {worst.low:.3g} to "
             f"{worst.high:.3g} ({worst.applies_to}) for {names}: usual for ball screws, "
