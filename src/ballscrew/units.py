@@ -195,6 +195,8 @@ def split_quantity(field: str, text: str) -> tuple[float, str]:
     raw = _clean(field, text)
     match = _NUMBER.match(raw)
     if not match:
+        if re.match(r"[-+]?(nan|inf)", raw, re.IGNORECASE):
+            raise BallScrewInputError(field, text, "a finite number with its unit, e.g. '1.5 kN'")
         raise BallScrewInputError(field, text, "a number followed by its unit, e.g. '1.5 kN'")
     digits, rest = match.group("digits"), raw[match.end() :]
     one = re.match(r"^(.*\d)\s+1$", digits)  # "3000 1/min": the 1 belongs to the unit
