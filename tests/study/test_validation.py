@@ -291,3 +291,56 @@ def test_trend_slopes_with_one_degree_of_freedom_and_a_zero_prediction() -> None
     ]
     (s,) = summarise(rows)
     assert s.median_abs_log10 == 0.0 and s.within == 1 and s.cases == 2
+
+
+@pytest.mark.parametrize(
+    ("nut", "k", "c"), [("double", 0.512, 0.516), ("single-4point", 0.4936, 0.5)]
+)
+def test_jungnickel_law_has_its_published_exponents(nut: str, k: float, c: float) -> None:
+    # The law grows as omega^k and as F_pr^(1 - c) (Q and W are both proportional to the
+    # preload): k, c = 0.512, 0.516 for two-point contact and 0.4936, 0.5 for 4-point nuts
+    # (Jungnickel 2010, eq. 9.49). Exact ratios: 1e-12.
+    oil = lubricants.get("mineral ISO VG 68")
+    screw = reference_screw().replace(nut=nut)
+    t = [float(jungnickel_loss_torque(screw, oil, w, 40.0)) for w in (50.0, 100.0)]
+    assert t[1] / t[0] == pytest.approx(2.0**k, rel=1e-12)
+    heavy = float(jungnickel_loss_torque(screw.replace(preload=3 * screw.preload), oil, 50.0, 40.0))
+    assert heavy / t[0] == pytest.approx(3.0 ** (1.0 - c), rel=1e-12)
+
+
+def test_trend_slopes_and_intervals_by_frisch_waugh_lovell() -> None:
+    # An independent route to each partial slope and its 95 % half-width: regress both ln r
+    # and the variable on the other variables, then scipy's linregress of residual on
+    # residual gives the same slope; its standard error, rescaled from n - 2 to the n - 4
+    # degrees of freedom of the full fit, times Student's t, the same half-width.
+    from scipy import stats
+
+    from ballscrew.study.validation import SLOPE_VARIABLES, ScoreRow, _slope_rows
+
+    rng = np.random.default_rng(7)
+    screws = [reference_screw().replace(lead=le, pitch_diameter=d, preload=p) for le, d, p in
+              zip(rng.uniform(4e-3, 4e-2, 12), rng.uniform(0.02, 0.06, 12),
+                  rng.uniform(500, 5000, 12), strict=True)]  # fmt: skip
+    ratios = (
+        np.exp(rng.normal(0.0, 0.1, 12)) * np.array([math.tan(s.lead_angle) for s in screws]) ** 0.2
+    )
+    slopes, half = trend_slopes(screws, ratios)
+    columns = np.array([[f(s) for s in screws] for _, f in SLOPE_VARIABLES]).T
+    n, y = len(screws), np.log(ratios)
+    for j in range(columns.shape[1]):
+        others = np.column_stack([np.ones(n), np.delete(columns, j, axis=1)])
+        xr = columns[:, j] - others @ np.linalg.lstsq(others, columns[:, j], rcond=None)[0]
+        yr = y - others @ np.linalg.lstsq(others, y, rcond=None)[0]
+        fit = stats.linregress(xr, yr)
+        dof = n - 4
+        stderr = fit.stderr * math.sqrt((n - 2) / dof)
+        assert slopes[j] == pytest.approx(fit.slope, rel=1e-9)
+        assert half[j] == pytest.approx(stats.t.ppf(0.975, dof) * stderr, rel=1e-9)
+    # The scorecard's rows carry each slope with its interval, slope -/+ half-width.
+    cases = [c for c in CASES if c.kind == "catalog" and c.screw.nut == "double"]
+    torque = [c.reference * (1.0 + 0.01 * i) for i, c in enumerate(cases)]
+    rows: list[ScoreRow] = _slope_rows("m", cases, torque)
+    measured = [t / c.reference for c, t in zip(cases, torque, strict=True)]
+    slopes, half = trend_slopes([c.screw for c in cases], measured)
+    for row, s, h in zip(rows, slopes, half, strict=True):
+        assert row.predicted == pytest.approx(s) and row.interval == pytest.approx((s - h, s + h))
