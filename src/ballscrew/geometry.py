@@ -50,10 +50,12 @@ from .materials import (
 
 __all__ = [
     "BALL_SEPARATIONS",
+    "MAX_PRELOAD",
     "NUT_ARRANGEMENTS",
     "BallScrew",
     "BallSeparation",
     "NutArrangement",
+    "check_buildable",
 ]
 
 NutArrangement = Literal["double", "single", "single-4point"]
@@ -102,6 +104,29 @@ PLAUSIBLE_SIZES: tuple[tuple[str, float, float, str], ...] = (
 """Sizes [m] outside which a :class:`BallScrew` is refused as implausible
 (name, low, high, why): generous bounds around every made screw, so that a
 value given in the wrong unit (40 for 40 mm) is caught with a hint."""
+
+
+MAX_PRELOAD = 1e8
+"""The largest preload a :class:`BallScrew` takes [N] (100 MN: far past any ball screw)."""
+
+
+def check_buildable(screw: BallScrew, field: str = "") -> None:
+    """Refuse a screw that cannot be built: a ball as large as the lead.
+
+    A ball of a single-start thread sits between neighbouring turns of the
+    groove, so it must be smaller than the lead (a multi-start thread's pitch
+    is smaller still). :class:`BallScrew` itself allows it, so that the
+    kinematics can be taken to the limit of a vanishing lead angle; the inputs
+    of case files, sweeps and the web page are held to it. ``field`` prefixes
+    the field named in the error (``"screw."``).
+    """
+    if screw.ball_diameter >= screw.lead:
+        raise BallScrewInputError(
+            f"{field}ball_diameter",
+            f"{screw.ball_diameter * 1e3:g} mm",
+            f"a ball smaller than the lead ({screw.lead * 1e3:g} mm): a larger ball does "
+            "not fit between neighbouring turns of the groove",
+        )
 
 
 @dataclass(frozen=True)
@@ -198,6 +223,10 @@ class BallScrew:
         for name in ("roughness_ball", "roughness_screw", "roughness_nut"):
             self._scalar(name, check_positive)
         self._scalar("preload", check_nonnegative)
+        if self.preload > MAX_PRELOAD:
+            raise BallScrewInputError(
+                "preload", self.preload, "at most 1e8 N (100 MN): no ball screw carries more"
+            )
         self._scalar(
             "contact_angle",
             lambda f, v: check_in_range(f, v, 0.0, math.pi / 2, unit="rad (0° to 90°)"),

@@ -30,7 +30,7 @@ import numpy.typing as npt
 
 from . import ehl
 from .contact import HertzContact, hertz
-from .errors import FloatArray, broadcast_inputs, check_finite, check_in_range
+from .errors import FloatArray, broadcast_inputs, check_in_range
 from .geometry import BallScrew
 from .kinematics import Kinematics, kinematics
 from .loads import BallLoads, ball_loads
@@ -137,6 +137,14 @@ class OperatingState:
     shape: tuple[int, ...] = ()
 
 
+MAX_SPEED = 1e5
+"""The largest screw speed any model is asked for [rad/s] (about 955 000 rpm)."""
+MAX_TEMPERATURE = 500.0
+"""The highest lubricant temperature [°C]."""
+MAX_FORCE = 1e8
+"""The largest axial load or preload [N]."""
+
+
 def operating_points(
     speed: npt.ArrayLike,
     temperature: npt.ArrayLike,
@@ -152,13 +160,20 @@ def operating_points(
     axial loads), and a grid given as an outer product is not expanded
     before the quantities that need every combination.
     """
+    # Bounds far past any ball screw, so that nothing absurd reaches the models: a
+    # million rpm, 500 °C (no lubricant survives it), 100 MN.
     arrays = {
-        "speed": check_finite("speed", speed),
-        "temperature": check_in_range(
-            "temperature", temperature, -273.15, np.inf, unit="°C (above absolute zero)"
+        "speed": check_in_range(
+            "speed", speed, -MAX_SPEED, MAX_SPEED, unit="rad/s (about a million rpm at most)"
         ),
-        "axial_load": check_finite("axial_load", axial_load),
-    }
+        "temperature": check_in_range(
+            "temperature", temperature, -273.15, MAX_TEMPERATURE,
+            unit="°C (above absolute zero, at most 500 °C: no lubricant survives more)",
+        ),
+        "axial_load": check_in_range(
+            "axial_load", axial_load, -MAX_FORCE, MAX_FORCE, unit="N (at most 100 MN)"
+        ),
+    }  # fmt: skip
     if broadcast:
         w, t, fa = broadcast_inputs(**arrays)
         return w, t, fa

@@ -206,9 +206,14 @@ def test_the_downloaded_csv_is_the_librarys_result(page: sync_api.Page) -> None:
     assert {r["temperature [degC]"] for r in rows} == {"40.0"}
     assert {r["axial load [N]"] for r in rows} == {"1000.0"}
     assert {r["model"] for r in rows} == {"complete", "catalog"}
-    # The README's reference: about 0.6 N*m at 100 rpm (0.61 with no axial load).
+    # The level a maker accepts: at 100 rpm within THK's tolerance of the catalogue drag
+    # torque (grade C3, +-35 % at 0.4-0.6 N*m), the catalogue rule taken at no axial load.
+    rule = friction_torque(
+        case.screw, case.lubricant, speed=10.472, temperature=40.0, axial_load=0.0,
+        model="catalog",
+    ).total  # fmt: skip
     at_100 = np.interp(100.0, np.linspace(10, 3000, 50), expected.total)
-    assert 0.55 < at_100 < 0.7
+    assert abs(at_100 / rule - 1.0) < 0.35
 
 
 def test_open_a_case_file(

@@ -34,7 +34,7 @@ from pydantic import ValidationError
 
 from .. import lubricants
 from ..errors import BallScrewInputError, FloatArray
-from ..geometry import BallScrew
+from ..geometry import BallScrew, check_buildable
 from ..lubricant import Lubricant
 from ..units import Reading, parse_range, to_si
 from .designation import resolve
@@ -418,6 +418,7 @@ def _screw(
         screw = BallScrew(preload=0.0, **geometry)
     except BallScrewInputError as exc:
         raise BallScrewInputError(f"screw.{exc.field}", exc.value, exc.allowed) from None
+    check_buildable(screw, "screw.")
     if s.preload is not None:
         preload = si("screw", "preload", s.preload, "N")
     elif s.preload_drag_torque is not None:
