@@ -149,3 +149,40 @@ def test_the_web_refuses_the_same_load_with_the_same_words(
     assert body["error"].split(" is not allowed: ")[1] == cli.split(" is not allowed: ")[1]
     near = client.post("/api/torque", json={**fields, "axial_load": "50 kN"}).json()
     assert any("half the static rating" in w for w in near["warnings"])
+
+
+AXIS_LIMITS = (
+    '[axis]\nmoving_mass = "50 kg"\nmax_feed = "0.4 m/s"\nmax_acceleration = "1.5 m/s**2"\n'
+)
+
+
+@pytest.mark.parametrize(
+    ("move", "expected"),
+    [
+        ("stroke=0.3 m, feed=0.5 m/s, acceleration=1 m/s^2",
+         "--move feed = '0.5 m/s' is not allowed: at most axis.max_feed = 0.4 m/s"),
+        ("stroke=0.3 m, feed=24 m/min, acceleration=2 m/s^2",
+         "--move acceleration = '2 m/s^2' is not allowed: at most axis.max_acceleration = 1.5"),
+        ("stroke=0.3 m, feed=0.4 m/s, acceleration=1.5 m/s^2", ""),
+    ],
+)  # fmt: skip
+def test_a_move_beyond_the_axis_limits_is_named(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], move: str, expected: str
+) -> None:
+    case = _case(tmp_path, SCREW_32 + AXIS_LIMITS)
+    code, _, err = run(["energy", "--case", case, "--move", move], capsys)
+    assert (code == 2) == bool(expected), err
+    assert expected in err
+
+
+def test_a_trajectory_beyond_the_axis_speed_is_named(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # 0 -> 0.3 m in 0.5 s at constant speed: 0.6 m/s, above the axis' 0.4 m/s.
+    profile = tmp_path / "p.csv"
+    rows = "".join(f"{i * 0.05:.2f},{i * 30.0:.1f}\n" for i in range(11))
+    profile.write_text("time [s],position [mm]\n" + rows)
+    case = _case(tmp_path, SCREW_32 + AXIS_LIMITS.replace('"1.5 m/s**2"', '"100 m/s**2"'))
+    code, _, err = run(["energy", "--case", case, "--profile", str(profile)], capsys)
+    assert code == 2
+    assert "--profile speed = '0.6 m/s' is not allowed: at most axis.max_feed = 0.4 m/s" in err

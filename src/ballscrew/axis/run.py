@@ -166,7 +166,9 @@ def energy_run(
         largest axial force of the cycle (weight, inertia and process force)
         against the screw's ratings and contact pressure
         (:func:`ballscrew.ratings.plausibility`), the travel against the
-        screw's length where ``[axis]`` gives it (bearing span, else screw length).
+        screw's length where ``[axis]`` gives it (bearing span, else screw length),
+        the largest speed and acceleration against ``[axis]`` ``max_feed`` and
+        ``max_acceleration`` where given.
     """
     m = dict(move or {})
     temp = float(case.temperature.flat[0]) if temperature is None else float(temperature)
@@ -196,8 +198,26 @@ def motion_plausibility(
             found += stroke_findings(float(np.ptp(profile.position)), float(where[key]),
                                      nut_length(case.screw), field=f"{motion_field} stroke",
                                      length_field=f"axis.{key}")  # fmt: skip
+    found += _axis_limits(profile, axis, motion_field)
     found.sort(key=lambda f: not f.error)
     return raise_errors(found)
+
+
+def _axis_limits(profile: Profile, axis: Axis, motion_field: str) -> list[Finding]:
+    """The motion's largest speed and acceleration against the axis' limits, where given."""
+    found = []
+    speed = "feed" if motion_field == "--move" else "speed"
+    for name, key, values, unit in (
+        (speed, "max_feed", profile.speed, "m/s"),
+        ("acceleration", "max_acceleration", profile.acceleration, "m/s^2"),
+    ):
+        limit = getattr(axis, key)
+        peak = float(np.max(np.abs(values))) if np.size(values) else 0.0
+        if limit is not None and peak > limit * (1.0 + 1e-9):
+            found.append(Finding(f"{motion_field} {name}", f"{peak:.4g} {unit}",
+                                 f"axis.{key} = {limit:.4g} {unit}", "the case's [axis]",
+                                 True))  # fmt: skip
+    return found
 
 
 def _one_model(

@@ -171,6 +171,9 @@ def _axis_rows(case: Any) -> list[tuple[str, str, str]]:
                                          "none (critical speed not checked)")
          + f", {a['support']}"),
         ("axis", "d*n limit", f"{a['dn_limit']:,.0f} mm*rpm"),
+        ("axis", "feed, acceleration limits",
+         given(a.get("max_feed"), 1.0, "m/s", "none") + ", "
+         + given(a.get("max_acceleration"), 1.0, "m/s^2", "none")),
         ("axis", "screw length in the air",
          given(th.get("screw_length"), 1e3, "mm",
                "the bearing span" if a.get("bearing_span") is not None else later)),

@@ -312,6 +312,8 @@ _AXIS_UNITS = (
     ("bearing_static_rating", "N"),
     ("root_diameter", "m"),
     ("dn_limit", "mm*rpm"),
+    ("max_feed", "m/s"),
+    ("max_acceleration", "m/s**2"),
 )
 """The numeric ``[axis]`` keys of the axis and their SI units."""
 

@@ -269,6 +269,18 @@ class AxisSection(BaseModel):
         "length * angular speed",
         "the nut's d·n limit from its catalogue (pitch diameter times speed)",
     )
+    max_feed: Value | None = _f(
+        None,
+        "speed",
+        "the axis' speed limit (drive, guideways); a motion faster than it is refused",
+        "0.5 m/s",
+    )
+    max_acceleration: Value | None = _f(
+        None,
+        "acceleration",
+        "the axis' acceleration limit; a motion that accelerates harder is refused",
+        "5 m/s**2",
+    )
     screw_length: Value | None = _f(
         None,
         "length",
