@@ -41,7 +41,7 @@ from ..report.outputs import (
     round_significant,
 )
 from ..report.torque import run_models, warning_lines
-from ..units import parse_range
+from ..units import Reading, parse_range
 from .inputs import (
     LIMITS,
     ApiError,
@@ -84,9 +84,13 @@ _OVERRIDES = {"speed": "rad/s", "temperature": "degC", "axial_load": "N"}
 
 
 def _operating_points(
-    case: Case, given: Mapping[str, Any], limits: Limits
+    case: Case, given: Mapping[str, Any], limits: Limits, read: list[Reading] | None = None
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Speeds, temperatures and loads: those given as text with units, else the case's."""
+    """Speeds, temperatures and loads: those given as text with units, else the case's.
+
+    How a text that could be meant two ways was read (a speed in Hz) is added to
+    ``read``, for the answer's warnings, as the command line prints it.
+    """
     arrays = {"speed": case.speed, "temperature": case.temperature, "axial_load": case.axial_load}
     for key, unit in _OVERRIDES.items():
         value = given.get(key)
@@ -95,7 +99,7 @@ def _operating_points(
         if not isinstance(value, str):
             raise BallScrewInputError(key, value, "text with a unit, e.g. '100, 1000 rpm'")
         check_points(key, value, limits)
-        arrays[key] = np.asarray(parse_range(key, value, unit))
+        arrays[key] = np.asarray(parse_range(key, value, unit, notes=read))
     sizes = {key: a.size for key, a in arrays.items()}
     total = math.prod(sizes.values())
     if total > limits.points:
@@ -152,7 +156,8 @@ def torque(payload: Mapping[str, Any], limits: Limits = LIMITS) -> dict[str, Any
             raise BallScrewInputError("model", model, "the name of one model")
         get_model(model)
         case = load_case(fields, limits)
-        w, t, f = _operating_points(case, payload, limits)
+        read: list[Reading] = []
+        w, t, f = _operating_points(case, payload, limits, read)
         field = "axial_load" if "axial_load" in payload else "operation.axial_load"
         results, plausible = _quiet_run(case, [model], w, t, f, field)
     except BallScrewInputError as exc:
@@ -167,7 +172,7 @@ def torque(payload: Mapping[str, Any], limits: Limits = LIMITS) -> dict[str, Any
         "power_loss_W": _floats(r.power_loss),
         "efficiency": _floats(r.efficiency),
         "components": {k: _floats(v) for k, v in r.components.items()},
-        "warnings": plausible + warning_lines(results),
+        "warnings": [f"warning: {r}" for r in read] + plausible + warning_lines(results),
     }
 
 
