@@ -117,3 +117,22 @@ def test_the_fit_command_marks_the_intervals_unreliable(
     assert "intervals are unreliable" in captured.err
     assert json.loads((tmp_path / "f.json").read_text())["intervals_reliable"] is False
     assert "intervals are unreliable" in (tmp_path / "fit" / "report.md").read_text()
+
+
+def test_a_model_validity_issue_at_the_fitted_values_is_told() -> None:
+    # Item 5 for fit: 10 kN on a 1.5 kN preload lifts the relieved half-nut off; the
+    # fit says so, as ballscrew torque does (routine film notes are left out).
+    w, t, _ = _truth()
+    loads = np.full(w.size, 10e3)
+    screw = reference_screw().replace(preload=1500.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        torque = friction_torque(screw, OIL, speed=w, temperature=t, axial_load=loads,
+                                 ball_train_constant=0.03).total  # fmt: skip
+    curve = MeasuredCurve(w, np.asarray(torque), "loaded", temperature=t, axial_load=loads)
+    r = fit_parameters(screw, OIL, curve, ["ball_train_constant"])
+    told = [x for x in r.warnings if x.startswith("model validity")]
+    assert len(told) == 1 and "axial load / preload = 6.667" in told[0]
+    assert "lifts off" in told[0]
+    assert not any("dimensionless" in x for x in r.warnings)
+    assert r.reliable

@@ -328,6 +328,7 @@ def fit_parameters(
     fitted = predict(values, everything)
     inliers = np.setdiff1d(everything, np.asarray(fit.outliers, dtype=int))
     rms = float(np.sqrt(np.mean((fitted[inliers] - torque[inliers]) ** 2)))
+    validity = _validity_notes(screw, oil, fixed, values, speed, temp, load, model)
     absurd, structure = absurdity_notes(
         fitted_screw, ratings, values, speed[inliers], load[inliers], torque[inliers],
         fitted[inliers], predict(starts, inliers),
@@ -346,10 +347,28 @@ def fit_parameters(
         fitted=fitted,
         outliers=fit.outliers,
         rms_residual=rms,
-        warnings=(*fit.notes, *absurd),
+        warnings=(*fit.notes, *validity, *absurd),
         reliable=not absurd,
         structure=structure,
     )
+
+
+def _validity_notes(
+    screw: BallScrew, oil: Lubricant, fixed: dict[str, Any], values: dict[str, float],
+    speed: FloatArray, temp: FloatArray, load: FloatArray, model: str,
+) -> list[str]:  # fmt: skip
+    """The model's validity issues at the fitted values that change a result's meaning.
+
+    Those every ball screw has (``routine``: the film formulas' ranges) are left
+    out; a half-nut lifting off, a temperature outside the viscosity fit or the
+    lubricant's pour and flash points are told, as ``ballscrew torque`` tells them.
+    """
+    s, kwargs = _apply(screw, fixed, values)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        issues = friction_torque(s, oil, speed=speed, temperature=temp, axial_load=load,
+                                 model=model, **kwargs).warnings  # fmt: skip
+    return [f"model validity at the fitted values: {i}" for i in issues if not i.routine]
 
 
 @dataclass(frozen=True)
