@@ -9,7 +9,9 @@ same numbers, or all three refuse it naming the field.
 from __future__ import annotations
 
 import json
+import math
 import tomllib
+import warnings
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -17,6 +19,7 @@ import pytest
 from starlette.testclient import TestClient
 
 from ballscrew import BallScrewInputError
+from ballscrew.errors import BallScrewReadingWarning
 from ballscrew.io.case import parse_case
 from ballscrew.web import create_app
 from cli_runner import run
@@ -120,3 +123,56 @@ def test_a_preload_reads_the_same_in_the_case_file_and_the_web_form(
     torque = friction_torque(expected.screw, expected.lubricant, speed=10.47, temperature=40.0,
                              model="catalog")  # fmt: skip
     assert response.json()["torque_Nm"][0] == pytest.approx(float(torque.total), rel=1e-3)
+
+
+SPEEDS = [  # speeds as catalogues write them [rpm meant], or None: refused
+    ("3000 1/min", [3000.0]),
+    ("3000 min^-1", [3000.0]),
+    ("3000 rev/min", [3000.0]),
+    ("3000 U/min", [3000.0]),
+    ("50 Hz", [3000.0]),  # revolutions per second, with a note
+    ("1 000, 2 000 rpm", [1000.0, 2000.0]),
+    ("3000", None),
+    ("10 m/min", None),
+]
+
+
+@pytest.mark.parametrize(("text", "meant"), SPEEDS)
+def test_a_speed_reads_the_same_in_all_three(
+    text: str,
+    meant: list[float] | None,
+    client: TestClient,
+    tmp_path: Path,
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    out = tmp_path / "t.json"
+    with warnings.catch_warnings():
+        # How a speed in Hz was read: a 'warning:' line on the command line (the tests
+        # otherwise turn warnings into errors).
+        warnings.simplefilter("always", BallScrewReadingWarning)
+        code, _, err = run(
+            ["torque", "--case", str(SMALL_CASE), "--model", "catalog", "--speed", text,
+             "--json", str(out)],
+            capsys,
+        )  # fmt: skip
+        response = client.post(
+            "/api/torque", json={**tomllib.loads(BASE), "model": "catalog", "speed": text}
+        )
+    if meant is None:
+        assert code == 2 and "--speed = " in err, err
+        assert response.status_code == 422 and "speed = " in response.json()["error"]
+        with pytest.raises(BallScrewInputError, match=r"operation\.speed"):
+            parse_case(BASE.replace('speed = "100 rpm"', f"speed = {json.dumps(text)}"))
+        return
+    assert code == 0, err
+    cli = [row["speed [rpm]"] for row in json.loads(out.read_text())["rows"]]
+    case = parse_case(BASE.replace('speed = "100 rpm"', f"speed = {json.dumps(text)}"))
+    assert response.status_code == 200, response.text
+    assert cli == pytest.approx(meant, rel=1e-12)
+    assert response.json()["speed_rpm"] == pytest.approx(meant, rel=1e-12)
+    assert (case.speed * 30.0 / math.pi).tolist() == pytest.approx(meant, rel=1e-12)
+    # A speed in Hz says how it was read, in all three.
+    hertz = "Hz" in text
+    assert ("read as 50 revolutions per second" in err) == hertz
+    assert any("revolutions per second" in w for w in response.json()["warnings"]) == hertz
+    assert any("revolutions per second" in a.reason for a in case.assumptions) == hertz

@@ -119,6 +119,9 @@ class Axis:
         (:func:`ballscrew.limits.root_diameter`).
     dn_limit : float
         The nut's d·n limit [mm·rpm] (catalogue value).
+    max_feed, max_acceleration : float, optional
+        The axis' speed [m/s] and acceleration [m/s²] limits; a motion beyond
+        them is refused (:func:`ballscrew.axis.run.motion_plausibility`).
     """
 
     moving_mass: float
@@ -136,6 +139,8 @@ class Axis:
     bearing_span: float | None = None
     root_diameter: float | None = None
     dn_limit: float = DEFAULT_DN_LIMIT
+    max_feed: float | None = None
+    max_acceleration: float | None = None
 
     def __post_init__(self) -> None:
         for name in ("moving_mass", "screw_inertia", "coupling_inertia", "motor_inertia"):
@@ -173,6 +178,9 @@ class Axis:
                 "bearing_lubrication", self.bearing_lubrication, "'grease' or 'oil'"
             )
         check_positive("dn_limit", self.dn_limit, "mm*rpm")
+        for name, unit in (("max_feed", "m/s"), ("max_acceleration", "m/s^2")):
+            if getattr(self, name) is not None:
+                check_positive(name, getattr(self, name), unit)
 
 
 @dataclass(frozen=True)

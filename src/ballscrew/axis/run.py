@@ -25,18 +25,26 @@ import numpy.typing as npt
 from ..errors import FloatArray
 from ..io.case import Case
 from ..kinematics import rad_s_to_rpm
-from .energy import Axis, CycleResult, axis_cycle, self_locking, weight_back_driving
+from ..ratings import Finding, plausibility, raise_errors, stroke_findings
+from .energy import Axis, CycleResult, axis_cycle, screw_motion, self_locking, weight_back_driving
 from .motion import Profile, back_and_forth, chain, check_force_window, read_trajectory
 from .setup import axis_setup
 from .thermal import (
     SteadyAtSpeed,
     ThermalNode,
+    nut_length,
     steady_at_speeds,
     steady_temperature,
     temperature_history,
 )
 
-__all__ = ["EnergyRun", "energy_run", "profile_from_file", "profile_from_move"]
+__all__ = [
+    "EnergyRun",
+    "energy_run",
+    "motion_plausibility",
+    "profile_from_file",
+    "profile_from_move",
+]
 
 
 def profile_from_move(move: dict[str, float], cycles: int) -> Profile:
@@ -79,6 +87,8 @@ class EnergyRun:
     histories: dict[str, tuple[FloatArray, FloatArray]] = field(default_factory=dict)
     steady: dict[str, SteadyAtSpeed] = field(default_factory=dict)
     speed_warnings: list[str] = field(default_factory=list)
+    findings: list[Finding] = field(default_factory=list)
+    """Plausibility warnings: the motion's loads and stroke against the screw (errors raise)."""
 
     def as_dict(self, version: str) -> dict[str, Any]:
         """The JSON document of ``ballscrew energy --json``: the first model at the top."""
@@ -95,6 +105,7 @@ class EnergyRun:
             "axis": {k: getattr(self.axis, k) for k in self.axis.__dataclass_fields__},
             "thermal": self.thermal,
             "assumptions": self.assumptions,
+            "plausibility": [str(f) for f in self.findings],
             "models": self.results,
         }
 
@@ -127,6 +138,7 @@ def energy_run(
     run_time: float = 3600.0,
     steady_speeds: npt.ArrayLike | None = None,
     move: dict[str, float] | None = None,
+    motion_field: str = "--move",
 ) -> EnergyRun:
     """Each model's energy, torques and temperatures over ``profile`` (module docstring).
 
@@ -149,20 +161,63 @@ def energy_run(
     move : dict, optional
         The move's keys (SI), kept in the result; its ``force`` is the load of
         continuous running.
+    motion_field : str
+        What the motion was given as, named by the plausibility errors: the
+        largest axial force of the cycle (weight, inertia and process force)
+        against the screw's ratings and contact pressure
+        (:func:`ballscrew.ratings.plausibility`), the travel against the
+        screw's length where ``[axis]`` gives it (bearing span, else screw length),
+        the largest speed and acceleration against ``[axis]`` ``max_feed`` and
+        ``max_acceleration`` where given.
     """
     m = dict(move or {})
     temp = float(case.temperature.flat[0]) if temperature is None else float(temperature)
     setup = axis_setup(case.screw, case.axis, case.thermal, float(np.ptp(profile.position)))
     node = setup.node
+    found = motion_plausibility(case, profile, setup.axis, motion_field)
     run = EnergyRun(
         case, profile, cycles, temp, setup.axis, node,
         {k: getattr(node, k) for k in ("screw_length", "ambient", "machine_resistance",
                                        "nut_mass")},
-        list(setup.notes), m,
+        list(setup.notes), m, findings=found,
     )  # fmt: skip
     for name in model_names:
         _one_model(run, name, run_time, steady_speeds)
     return run
+
+
+def motion_plausibility(
+    case: Case, profile: Profile, axis: Axis, motion_field: str
+) -> list[Finding]:
+    """The motion's largest axial force and its travel against the screw; raises on an error."""
+    force = screw_motion(profile, case.screw, axis)[2]
+    found = plausibility(case.screw, case.load_ratings(), force,
+                         load_field=f"{motion_field} (axial force of the cycle)")  # fmt: skip
+    for key, where in (("bearing_span", case.axis), ("screw_length", case.thermal)):
+        if where.get(key) is not None:
+            found += stroke_findings(float(np.ptp(profile.position)), float(where[key]),
+                                     nut_length(case.screw), field=f"{motion_field} stroke",
+                                     length_field=f"axis.{key}")  # fmt: skip
+    found += _axis_limits(profile, axis, motion_field)
+    found.sort(key=lambda f: not f.error)
+    return raise_errors(found)
+
+
+def _axis_limits(profile: Profile, axis: Axis, motion_field: str) -> list[Finding]:
+    """The motion's largest speed and acceleration against the axis' limits, where given."""
+    found = []
+    speed = "feed" if motion_field == "--move" else "speed"
+    for name, key, values, unit in (
+        (speed, "max_feed", profile.speed, "m/s"),
+        ("acceleration", "max_acceleration", profile.acceleration, "m/s^2"),
+    ):
+        limit = getattr(axis, key)
+        peak = float(np.max(np.abs(values))) if np.size(values) else 0.0
+        if limit is not None and peak > limit * (1.0 + 1e-9):
+            found.append(Finding(f"{motion_field} {name}", f"{peak:.4g} {unit}",
+                                 f"axis.{key} = {limit:.4g} {unit}", "the case's [axis]",
+                                 True))  # fmt: skip
+    return found
 
 
 def _one_model(

@@ -105,9 +105,22 @@ def estimated_screw_length(screw: BallScrew, travel: float) -> float:
     >>> round(estimated_screw_length(reference_screw(), 0.3), 3)
     0.6
     """
+    return abs(travel) + nut_length(screw) + 4.0 * screw.pitch_diameter
+
+
+def nut_length(screw: BallScrew) -> float:
+    """Threaded length of the nut [m]: its loaded turns plus a return turn per circuit.
+
+    Twice that for a double nut.
+
+    Examples
+    --------
+    >>> from ballscrew import reference_screw
+    >>> round(nut_length(reference_screw()), 3)  # (2.5 + 1) x 2 circuits x 10 mm, twice
+    0.14
+    """
     s = screw
-    nut = (s.loaded_turns + 1.0) * s.circuits * s.lead * (2.0 if s.nut == "double" else 1.0)
-    return abs(travel) + nut + 4.0 * s.pitch_diameter
+    return (s.loaded_turns + 1.0) * s.circuits * s.lead * (2.0 if s.nut == "double" else 1.0)
 
 
 def convection_coefficient(

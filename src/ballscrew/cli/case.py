@@ -62,9 +62,12 @@ def case_command(
 def _print_resolved(path: str) -> None:
     from ..io.case import load_case
     from ..kinematics import rad_s_to_rpm
+    from ..ratings import plausibility, raise_errors
 
     case = load_case(path)
     s, oil = case.screw, case.lubricant
+    ratings = case.load_ratings()
+    found = raise_errors(plausibility(s, ratings, case.axial_load))
     rows = [
         *([("screw", "designation", case.screw_source)] if case.screw_source else []),
         ("screw", "pitch diameter", f"{s.pitch_diameter * 1e3:.4g} mm"),
@@ -76,6 +79,18 @@ def _print_resolved(path: str) -> None:
         ("screw", "nut", s.nut),
         ("screw", "balls kept apart by", s.ball_separation),
         ("screw", "preload", f"{s.preload:.4g} N"),
+        (
+            "screw",
+            "dynamic load rating C_a",
+            "not known (preload not checked against it)"
+            if ratings.dynamic is None
+            else f"{ratings.dynamic / 1e3:.4g} kN ({ratings.dynamic_source})",
+        ),
+        (
+            "screw",
+            "static load rating C_0a",
+            f"{ratings.static / 1e3:.4g} kN ({ratings.static_source})",
+        ),
         ("screw", "lead angle", f"{math.degrees(s.lead_angle):.4g} deg"),
         ("screw", "loaded balls per nut", f"{s.balls_per_nut}"),
         ("screw", "gamma = D_w cos(alpha) / d_m", f"{s.gamma:.4g}"),
@@ -110,6 +125,8 @@ def _print_resolved(path: str) -> None:
         console.print(f"{len(case.assumptions)} value(s) marked as assumed:")
         for a in case.assumptions:
             console.print(f"  {a.field} = {a.value}: {a.reason}", highlight=False)
+    for finding in found:
+        click.echo(f"warning: {finding}", err=True)
     console.print("case file OK", style="bold green")
 
 
@@ -154,6 +171,9 @@ def _axis_rows(case: Any) -> list[tuple[str, str, str]]:
                                          "none (critical speed not checked)")
          + f", {a['support']}"),
         ("axis", "d*n limit", f"{a['dn_limit']:,.0f} mm*rpm"),
+        ("axis", "feed, acceleration limits",
+         given(a.get("max_feed"), 1.0, "m/s", "none") + ", "
+         + given(a.get("max_acceleration"), 1.0, "m/s^2", "none")),
         ("axis", "screw length in the air",
          given(th.get("screw_length"), 1e3, "mm",
                "the bearing span" if a.get("bearing_span") is not None else later)),

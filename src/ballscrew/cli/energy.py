@@ -92,7 +92,9 @@ def energy_command(
     temp = to_si("--temperature", temperature, "degC") if temperature else None
     run = energy_run(case, profile, model_names, cycles=cycles, temperature=temp,
                      run_time=to_si("--run-time", run_time, "s"), steady_speeds=speeds,
-                     move=m)  # fmt: skip
+                     move=m, motion_field="--move" if move_text else "--profile")  # fmt: skip
+    for finding in run.findings:
+        click.echo(f"warning: {finding}", err=True)
     for line in run.speed_warnings:
         click.echo(f"warning: {line}", err=True)
     for line in warning_lines({n: c.friction for n, c in run.cycles_by_model.items()}):

@@ -89,6 +89,7 @@ def fit_command(
         result = fit_parameters(
             case.screw, case.lubricant, measured, free, model=model, temperature=temp,
             axial_load=load, parameters=case.parameters_for(model), start=start,
+            ratings=case.load_ratings(),
         )  # fmt: skip
     table = Table(title=f"{case.title}: {model} fitted to {measured.source} "
                   f"({measured.speed.size} points)")  # fmt: skip
@@ -96,12 +97,15 @@ def fit_command(
         table.add_column(column, justify="right")
     for name, e in result.estimates.items():
         span = f"{e.low:.4g} .. {e.high:.4g}" if e.low is not None else "not identified"
+        span += "" if result.reliable or e.low is None else " (unreliable)"
         table.add_row(name, f"{e.start:.4g}", f"{e.value:.4g}", span, e.unit)
     console = stdout(json_file)
     console.print(table)
     console.print(f"RMS residual: {result.rms_residual:.4g} N*m")
     for note in result.warnings:
         click.echo(f"warning: {note}", err=True)
+    if not result.reliable:
+        click.echo("warning: the fit is absurd (above): its intervals are unreliable", err=True)
     payload = {"ballscrew": __version__, "case": case.title, "measured": measured.source,
                **result.as_dict()}  # fmt: skip
     if out_dir:

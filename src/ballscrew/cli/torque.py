@@ -145,7 +145,8 @@ def torque(
             bar.update(task, description=name)
             bar.advance(task)
 
-        run = torque_run(case, model_names, w, t, f, on_model=advance)
+        loads = "operation.axial_load" if f is None else "--axial-load"
+        run = torque_run(case, model_names, w, t, f, on_model=advance, load_field=loads)
     for line in run.warning_lines():
         click.echo(line, err=True)
     _print_table(run, table_kind, json_file)

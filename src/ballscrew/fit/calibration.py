@@ -26,6 +26,22 @@ Robustness:
   refitted, and a warning says so. Pairs with :math:`|\rho| > 0.95` get a
   warning that the data cannot separate them;
 * too few points (:math:`n \le p`) is an error.
+
+Absurd fits (:func:`absurdity_notes`): each of these gives a warning and marks
+the intervals unreliable (``FitResult.reliable``), since the linearised
+interval assumes a model that fits and residuals that are noise:
+
+* a fitted screw the plausibility rules refuse, such as a preload above the
+  static rating (:func:`ballscrew.ratings.plausibility`);
+* a constant more than :data:`SCATTER_SIGMAS` log-standard deviations from the
+  scatter of its training cases (:data:`TRAINING_SCATTER`);
+* residuals with structure: ordered by speed, their signs form fewer runs
+  than chance gives (Wald and Wolfowitz's runs test, :func:`runs_test`, one-sided
+  p below :data:`RUNS_P_LIMIT`), reported with their lag-1 autocorrelation
+  (:func:`lag1_autocorrelation`);
+* measured torques more than :data:`MAGNITUDE_LIMIT` times larger or smaller
+  than the model gives at the start values: a unit slip (N·mm under an N·m
+  header is a factor 1000) is the likely cause.
 """
 
 from __future__ import annotations
@@ -42,14 +58,27 @@ import numpy.typing as npt
 from ..chain import friction_torque
 from ..errors import BallScrewInputError, FloatArray
 from ..friction import get_model
+from ..friction.complete import BALL_TRAIN_SCATTER
 from ..geometry import BallScrew
 from ..io.measured import MeasuredCurve
 from ..lubricant import Lubricant
 from ..lubricants import get as get_lubricant
+from ..ratings import Ratings, plausibility, static_rating_estimate
 
 Index = npt.NDArray[np.intp]
 
-__all__ = ["FITTABLE", "Estimate", "FitResult", "FreeParameter", "fit_parameters"]
+__all__ = [
+    "FITTABLE",
+    "TRAINING_SCATTER",
+    "Estimate",
+    "FitResult",
+    "FreeParameter",
+    "RunsTest",
+    "absurdity_notes",
+    "fit_parameters",
+    "lag1_autocorrelation",
+    "runs_test",
+]
 
 
 @dataclass(frozen=True)
@@ -98,6 +127,30 @@ OUTLIER_SCALE = 4.0
 MAX_OUTLIER_SHARE = 0.2
 """Largest share of the points that may be left out as outliers."""
 
+TRAINING_SCATTER: dict[str, tuple[float, float, str]] = {
+    "ball_train_constant": (
+        *BALL_TRAIN_SCATTER,
+        "the complete model's training cases (ballscrew.friction.complete.BALL_TRAIN_SCATTER)",
+    ),
+}
+"""16th and 84th percentiles of a constant over its training cases, and their source."""
+
+SCATTER_SIGMAS = 3.0
+"""Log-standard deviations from the training scatter's centre beyond which a constant is absurd.
+
+The 16th and 84th percentiles are one standard deviation either side of the
+centre of a log-normal scatter; three of them leave 0.3 % of such cases out.
+"""
+
+RUNS_P_LIMIT = 0.01
+"""One-sided p-value of the runs test below which the residuals have structure."""
+
+MAGNITUDE_LIMIT = 30.0
+"""Ratio of measured to start-value torques beyond which a unit slip is suspected."""
+
+STRUCTURE_FLOOR = 1e-3
+"""Relative RMS residual below which the residuals' pattern is not tested (a near-exact fit)."""
+
 
 @dataclass(frozen=True)
 class Estimate:
@@ -141,6 +194,10 @@ class FitResult:
     outliers: tuple[int, ...]
     rms_residual: float
     warnings: tuple[str, ...] = field(default=())
+    reliable: bool = True
+    """False when :func:`absurdity_notes` found the fit absurd: the intervals do not hold."""
+    structure: dict[str, float] = field(default_factory=dict)
+    """The runs test of the residual signs ordered by speed and their lag-1 autocorrelation."""
 
     @property
     def residuals(self) -> FloatArray:
@@ -162,6 +219,8 @@ class FitResult:
                 "matrix": self.correlation.tolist(),
             },
             "warnings": list(self.warnings),
+            "intervals_reliable": self.reliable,
+            "residual_structure": dict(self.structure),
         }
 
 
@@ -211,6 +270,7 @@ def fit_parameters(
     axial_load: float = 0.0,
     parameters: dict[str, Any] | None = None,
     start: dict[str, float] | None = None,
+    ratings: Ratings | None = None,
 ) -> FitResult:
     """Fit ``free`` parameters of ``model`` to a measured torque curve.
 
@@ -227,6 +287,9 @@ def fit_parameters(
         The model's other parameters (held fixed).
     start : dict, optional
         Start values by name (SI), instead of the screw's or the model's.
+    ratings : Ratings, optional
+        The screw's load ratings; the fitted screw is checked against them
+        (:func:`absurdity_notes`; without them, C_0a estimated from the geometry).
 
     Returns
     -------
@@ -265,6 +328,11 @@ def fit_parameters(
     fitted = predict(values, everything)
     inliers = np.setdiff1d(everything, np.asarray(fit.outliers, dtype=int))
     rms = float(np.sqrt(np.mean((fitted[inliers] - torque[inliers]) ** 2)))
+    validity = _validity_notes(screw, oil, fixed, values, speed, temp, load, model)
+    absurd, structure = absurdity_notes(
+        fitted_screw, ratings, values, speed[inliers], load[inliers], torque[inliers],
+        fitted[inliers], predict(starts, inliers),
+    )  # fmt: skip
     return FitResult(
         model=model,
         estimates={n: estimates[n] for n in names},
@@ -279,8 +347,165 @@ def fit_parameters(
         fitted=fitted,
         outliers=fit.outliers,
         rms_residual=rms,
-        warnings=tuple(fit.notes),
+        warnings=(*fit.notes, *validity, *absurd),
+        reliable=not absurd,
+        structure=structure,
     )
+
+
+def _validity_notes(
+    screw: BallScrew, oil: Lubricant, fixed: dict[str, Any], values: dict[str, float],
+    speed: FloatArray, temp: FloatArray, load: FloatArray, model: str,
+) -> list[str]:  # fmt: skip
+    """The model's validity issues at the fitted values that change a result's meaning.
+
+    Those every ball screw has (``routine``: the film formulas' ranges) are left
+    out; a half-nut lifting off, a temperature outside the viscosity fit or the
+    lubricant's pour and flash points are told, as ``ballscrew torque`` tells them.
+    """
+    s, kwargs = _apply(screw, fixed, values)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        issues = friction_torque(s, oil, speed=speed, temperature=temp, axial_load=load,
+                                 model=model, **kwargs).warnings  # fmt: skip
+    return [f"model validity at the fitted values: {i}" for i in issues if not i.routine]
+
+
+@dataclass(frozen=True)
+class RunsTest:
+    """Wald and Wolfowitz's runs test of a sequence of signs."""
+
+    runs: int
+    expected: float
+    z: float
+    p_fewer: float
+    """One-sided p-value of so few runs or fewer (normal approximation)."""
+
+
+def runs_test(values: npt.ArrayLike) -> RunsTest:
+    r"""Runs of the signs of ``values`` (zeros dropped) against their number by chance.
+
+    With :math:`n_1` positive and :math:`n_2` negative values, :math:`n =
+    n_1 + n_2`, the number of runs :math:`R` has mean :math:`\mu = 2n_1n_2/n +
+    1` and variance :math:`\sigma^2 = 2n_1n_2(2n_1n_2 - n)/(n^2(n-1))` when the
+    order is random; :math:`z = (R - \mu)/\sigma` is about normal, and few
+    runs (residuals that stay on one side over stretches of speed) mean a
+    model that misses the curve's shape. Wald and Wolfowitz, Ann. Math.
+    Statist. 11 (1940) 147-162; NIST/SEMATECH e-Handbook, 1.3.5.13.
+
+    Examples
+    --------
+    Eight above then eight below in blocks of four: 4 runs where 9 are expected.
+
+    >>> r = runs_test([1, 1, 1, 1, -1, -1, -1, -1] * 2)
+    >>> r.runs, r.expected, round(r.z, 3)
+    (4, 9.0, -2.588)
+    """
+    from scipy.stats import norm
+
+    x = np.asarray(values, dtype=float).ravel()
+    signs = np.sign(x[x != 0.0])
+    n1, n2 = int(np.count_nonzero(signs > 0)), int(np.count_nonzero(signs < 0))
+    n = n1 + n2
+    runs = 1 + int(np.count_nonzero(signs[1:] != signs[:-1])) if n else 0
+    if n1 == 0 or n2 == 0 or n < 3:
+        return RunsTest(runs, float(runs), 0.0, 1.0)
+    mean = 2.0 * n1 * n2 / n + 1.0
+    var = 2.0 * n1 * n2 * (2.0 * n1 * n2 - n) / (n * n * (n - 1.0))
+    z = (runs - mean) / math.sqrt(var) if var > 0.0 else 0.0
+    return RunsTest(runs, mean, z, float(norm.cdf(z)))
+
+
+def lag1_autocorrelation(values: npt.ArrayLike) -> float:
+    r"""Lag-1 autocorrelation of a sequence (residuals ordered by speed).
+
+    :math:`r_1 = \sum (x_i - \bar x)(x_{i+1} - \bar x)/\sum (x_i - \bar x)^2`.
+
+    Near 0 for noise, near 1 for residuals that drift with the order (Box and
+    Jenkins, *Time Series Analysis*, 1976, eq. 2.1.12). NaN for fewer than 3 values or
+    no variation.
+
+    Examples
+    --------
+    >>> round(lag1_autocorrelation([1.0, 2.0, 3.0, 4.0]), 3)
+    0.25
+    """
+    x = np.asarray(values, dtype=float).ravel()
+    d = x - x.mean()
+    den = float(d @ d)
+    if x.size < 3 or den == 0.0:
+        return math.nan
+    return float(d[1:] @ d[:-1]) / den
+
+
+def absurdity_notes(
+    screw: BallScrew,
+    ratings: Ratings | None,
+    values: dict[str, float],
+    speed: FloatArray,
+    axial_load: FloatArray,
+    measured: FloatArray,
+    fitted: FloatArray,
+    at_start: FloatArray,
+) -> tuple[list[str], dict[str, float]]:
+    """Warnings that a fit is absurd (module docstring), and the residuals' structure.
+
+    ``screw`` and ``values`` are the fitted screw and parameters; ``measured``,
+    ``fitted`` and ``at_start`` the torques of the points fitted [N·m]
+    (``at_start``: the model at the start values).
+    """
+    notes: list[str] = []
+    if ratings is None:
+        ratings = Ratings(None, "", static_rating_estimate(screw), "estimated from the geometry")
+    for f in plausibility(screw, ratings, axial_load, load_field="measured axial load"):
+        if f.error:
+            notes.append(f"the fitted {f}: no such screw carries it, so the fit is absurd")
+    for name, (p16, p84, source) in TRAINING_SCATTER.items():
+        if name not in values:
+            continue
+        centre, sd = math.sqrt(p16 * p84), math.log(p84 / p16) / 2.0
+        z = math.log(values[name] / centre) / sd
+        if abs(z) > SCATTER_SIGMAS:
+            notes.append(
+                f"{name} = {values[name]:.4g} is {abs(z):.1f} log-standard deviations from the "
+                f"scatter of its training cases (16th to 84th percentile {p16:g} to {p84:g}, "
+                f"{source}); more than {SCATTER_SIGMAS:g} means the model misses something "
+                "the constant is made to absorb"
+            )
+    structure: dict[str, float] = {}
+    resid = fitted - measured
+    scale = float(np.median(np.abs(measured))) or 1.0
+    if resid.size >= 8 and math.sqrt(float(np.mean(resid**2))) > STRUCTURE_FLOOR * scale:
+        ordered = resid[np.argsort(speed, kind="stable")]
+        runs = runs_test(ordered)
+        r1 = lag1_autocorrelation(ordered)
+        structure = {"runs": runs.runs, "expected_runs": runs.expected, "z": runs.z,
+                     "p_fewer_runs": runs.p_fewer, "lag1_autocorrelation": r1}  # fmt: skip
+        if runs.p_fewer < RUNS_P_LIMIT:
+            notes.append(
+                f"the residuals have structure: ordered by speed their signs form {runs.runs} "
+                f"runs where chance gives {runs.expected:.3g} (runs test, p = {runs.p_fewer:.2g} "
+                f"< {RUNS_P_LIMIT:g}; lag-1 autocorrelation {r1:.2f}): the model misses the "
+                "curve's shape (e.g. a low-speed friction drop), so the intervals understate "
+                "the error"
+            )
+    ratio = float(np.median(np.abs(measured))) / max(float(np.median(np.abs(at_start))), 1e-300)
+    if ratio > MAGNITUDE_LIMIT or ratio < 1.0 / MAGNITUDE_LIMIT:
+        power = round(math.log10(ratio))
+        hint = (
+            "; a torque in N*mm under an N*m header is 1000 times too large: check the torque "
+            "column's unit"
+            if power == 3
+            else "; a torque in N*m under an N*mm header is 1000 times too small"
+            if power == -3
+            else "; check the torque column's unit and the case"
+        )
+        notes.append(
+            f"the measured torques (median {np.median(np.abs(measured)):.4g} N*m) are "
+            f"{ratio:.3g} times what the model gives for this screw at the start values "
+            f"(median {np.median(np.abs(at_start)):.4g} N*m), about 10^{power}{hint}"
+        )
+    return notes, structure
 
 
 def _start_values(

@@ -36,6 +36,7 @@ from .. import lubricants
 from ..errors import BallScrewInputError, FloatArray
 from ..geometry import BallScrew, check_buildable
 from ..lubricant import Lubricant
+from ..ratings import Ratings, static_rating_estimate
 from ..units import Reading, parse_range, to_si
 from .designation import resolve
 from .schema import SECTIONS, Assumed, CaseFile, LubricantSection, ScrewSection
@@ -113,6 +114,10 @@ class Case:
         ``[screw] wiper_drag``: drag torque of the nut's wipers or seals [N·m],
         0 when not given; :meth:`parameters_for` hands it to the models of
         :data:`WIPER_PARAMETERS`.
+    ratings : Ratings or None
+        The screw's load ratings C_a and C_0a [N] with their sources (given,
+        from the designation's catalogue row, or C_0a estimated from the
+        geometry); :meth:`load_ratings` estimates them when None.
     """
 
     title: str
@@ -133,6 +138,13 @@ class Case:
     axis: dict[str, Any] = field(default_factory=dict)
     thermal: dict[str, float] = field(default_factory=dict)
     wiper_drag: float = 0.0
+    ratings: Ratings | None = None
+
+    def load_ratings(self) -> Ratings:
+        """The screw's load ratings: the case's, else C_0a estimated from the geometry."""
+        if self.ratings is not None:
+            return self.ratings
+        return _estimated(self.screw, None, "")
 
     def parameters_for(self, model: str) -> dict[str, Any]:
         """The case's parameters of ``model`` (a fresh dict; empty when it gives none).
@@ -208,7 +220,7 @@ def parse_case(text: str, *, source: str = "case") -> Case:
         field = f"{section}.{name}"
         return to_si(field, _unwrap(field, value, notes), unit, notes=read)
 
-    screw, screw_source = _screw(s, si, notes)
+    screw, screw_source, ratings = _screw(s, si, notes)
 
     lub = _lubricant(data.lubricant, notes)
     speed, temperature, axial = _operation(data, notes, read)
@@ -254,6 +266,7 @@ def parse_case(text: str, *, source: str = "case") -> Case:
         axis=axis,
         thermal=thermal,
         wiper_drag=wiper,
+        ratings=ratings,
     )
 
 
@@ -299,6 +312,8 @@ _AXIS_UNITS = (
     ("bearing_static_rating", "N"),
     ("root_diameter", "m"),
     ("dn_limit", "mm*rpm"),
+    ("max_feed", "m/s"),
+    ("max_acceleration", "m/s**2"),
 )
 """The numeric ``[axis]`` keys of the axis and their SI units."""
 
@@ -366,16 +381,19 @@ _LENGTHS = ("pitch_diameter", "lead", "ball_diameter")
 
 def _screw(
     s: ScrewSection, si: Callable[[str, str, Any, str], float], notes: list[Assumption]
-) -> tuple[BallScrew, str]:
+) -> tuple[BallScrew, str, Ratings]:
     """The screw of a case: designation first, keys given in the file override it."""
     given = s.model_fields_set
     base: dict[str, Any] = {}
     rating: float | None = None
-    origin = ""
+    static: float | None = None
+    origin = rating_source = ""
     if s.designation is not None:
         name = str(_unwrap("screw.designation", s.designation, notes))
         resolved = resolve(name)
         base, rating, origin = resolved.geometry, resolved.dynamic_load_rating, resolved.source
+        static = resolved.static_load_rating
+        rating_source = f"the {name} catalogue row"
         for key, why in resolved.notes.items():
             if key not in given:
                 shown = f"{base[key] * 1e3:g} mm" if key in _LENGTHS else f"{base[key]:g}"
@@ -402,8 +420,16 @@ def _screw(
     if circuits != int(circuits):
         raise BallScrewInputError("screw.circuits", circuits, "a whole number >= 1")
     geometry["circuits"] = int(circuits)
+    dynamic_source = static_source = rating_source
     if s.dynamic_load_rating is not None:
         rating = si("screw", "dynamic_load_rating", s.dynamic_load_rating, "N")
+        dynamic_source = "screw.dynamic_load_rating"
+    if s.static_load_rating is not None:
+        static = si("screw", "static_load_rating", s.static_load_rating, "N")
+        static_source = "screw.static_load_rating"
+    for name, value in (("dynamic_load_rating", rating), ("static_load_rating", static)):
+        if value is not None and not (math.isfinite(value) and value > 0.0):
+            raise BallScrewInputError(f"screw.{name}", getattr(s, name), "a force > 0")
     ways = [
         k for k in ("preload", "preload_drag_torque", "preload_share") if getattr(s, k) is not None
     ]
@@ -443,7 +469,24 @@ def _screw(
         screw = screw.replace(preload=preload)
     except BallScrewInputError as exc:
         raise BallScrewInputError(f"screw.{exc.field}", exc.value, exc.allowed) from None
-    return screw, origin
+    ratings = (
+        _estimated(screw, rating, dynamic_source)
+        if static is None
+        else Ratings(rating, dynamic_source if rating else "", static, static_source)
+    )
+    return screw, origin, ratings
+
+
+def _estimated(screw: BallScrew, dynamic: float | None, dynamic_source: str) -> Ratings:
+    """Ratings with C_0a estimated from the geometry (ISO 3408-5's definition)."""
+    return Ratings(
+        dynamic,
+        dynamic_source if dynamic else "",
+        static_rating_estimate(screw),
+        "estimated from the geometry: 4200 MPa at equally loaded balls; give "
+        "screw.static_load_rating",
+        static_estimated=True,
+    )
 
 
 def _lubricant(section: LubricantSection, notes: list[Assumption]) -> Lubricant:

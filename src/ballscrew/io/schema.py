@@ -126,8 +126,16 @@ class ScrewSection(BaseModel):
     dynamic_load_rating: Value | None = _f(
         None,
         "force",
-        "dynamic load rating C_a, for preload_share (default: the designation's catalogue value)",
+        "dynamic load rating C_a, for preload_share and the plausibility rules (default: the "
+        "designation's catalogue value)",
         "63.4 kN",
+    )
+    static_load_rating: Value | None = _f(
+        None,
+        "force",
+        "static load rating C_0a, which loads are checked against (default: the designation's "
+        "catalogue value, else estimated from the geometry by ISO 3408-5's 4200 MPa)",
+        "184 kN",
     )
     youngs_modulus_ball: Value | None = _f(None, "pressure", "default 210 GPa", "210 GPa")
     youngs_modulus_races: Value | None = _f(None, "pressure", "default 210 GPa", "210 GPa")
@@ -260,6 +268,18 @@ class AxisSection(BaseModel):
         "70000 mm*rpm",
         "length * angular speed",
         "the nut's d·n limit from its catalogue (pitch diameter times speed)",
+    )
+    max_feed: Value | None = _f(
+        None,
+        "speed",
+        "the axis' speed limit (drive, guideways); a motion faster than it is refused",
+        "0.5 m/s",
+    )
+    max_acceleration: Value | None = _f(
+        None,
+        "acceleration",
+        "the axis' acceleration limit; a motion that accelerates harder is refused",
+        "5 m/s**2",
     )
     screw_length: Value | None = _f(
         None,

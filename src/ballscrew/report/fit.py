@@ -86,7 +86,8 @@ def write_fit_report(
     header = ["parameter", "start", "fitted", "95 % interval", "unit"]
     table = [
         [name, f"{e.start:.4g}", f"{e.value:.4g}",
-         f"{e.low:.4g} to {e.high:.4g}" if e.low is not None else "not identified", e.unit]
+         (f"{e.low:.4g} to {e.high:.4g}" + ("" if result.reliable else " (unreliable)"))
+         if e.low is not None else "not identified", e.unit]
         for name, e in result.estimates.items()
     ]  # fmt: skip
     names = list(result.correlation_names)
@@ -96,7 +97,12 @@ def write_fit_report(
             "p",
             f"{result.measured.size} measured points; RMS residual "
             f"{result.rms_residual:.4g} N·m. Intervals are the linearised 95 % "
-            "intervals of the least-squares estimate.",
+            "intervals of the least-squares estimate."
+            + (
+                ""
+                if result.reliable
+                else " The fit is absurd (see the warnings): its intervals are unreliable."
+            ),
         ),
         Block("table", (header, table)),
         Block("h2", "Correlation of the estimates"),

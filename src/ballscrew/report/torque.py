@@ -19,10 +19,18 @@ import numpy as np
 from ..chain import FrictionResult, friction_torque
 from ..errors import BallScrewValidityWarning, FloatArray
 from ..io.case import WIPER_PARAMETERS, Case
+from ..ratings import Finding, plausibility, raise_errors
 from ..validity import statement
 from .outputs import csv_text, json_text, provenance, result_rows
 
-__all__ = ["TorqueRun", "operating_grid", "run_models", "torque_run", "warning_lines"]
+__all__ = [
+    "TorqueRun",
+    "operating_grid",
+    "plausibility_record",
+    "run_models",
+    "torque_run",
+    "warning_lines",
+]
 
 
 @dataclass(frozen=True)
@@ -31,6 +39,8 @@ class TorqueRun:
 
     case: Case
     results: dict[str, FrictionResult]
+    findings: tuple[Finding, ...] = ()
+    """The plausibility warnings (:func:`ballscrew.ratings.plausibility`); errors were raised."""
 
     @property
     def rows(self) -> list[dict[str, Any]]:
@@ -39,7 +49,9 @@ class TorqueRun:
 
     def provenance(self, command: Sequence[str] = ()) -> dict[str, Any]:
         """What the results were computed from (package, case, screw, lubricant, models)."""
-        return provenance(self.case, self.results, command)
+        out = provenance(self.case, self.results, command)
+        out["plausibility"] = plausibility_record(self.case, self.findings)
+        return out
 
     def as_dict(self, command: Sequence[str] = ()) -> dict[str, Any]:
         """The rows and their provenance, as ``ballscrew torque --json`` writes them."""
@@ -54,8 +66,8 @@ class TorqueRun:
         return csv_text(self.rows, layout=layout, dialect=dialect)
 
     def warning_lines(self) -> list[str]:
-        """The validity issues as the lines ``ballscrew torque`` prints."""
-        return warning_lines(self.results)
+        """The plausibility warnings and the validity issues as ``ballscrew torque`` prints them."""
+        return [f"warning: {f}" for f in self.findings] + warning_lines(self.results)
 
 
 def torque_run(
@@ -65,15 +77,40 @@ def torque_run(
     temperature: FloatArray | None = None,
     axial_load: FloatArray | None = None,
     on_model: Callable[[str], None] | None = None,
+    *,
+    load_field: str = "operation.axial_load",
 ) -> TorqueRun:
-    """Every model of ``model_names`` over the grid; the case's own points where not given."""
+    """Every model of ``model_names`` over the grid; the case's own points where not given.
+
+    The case is first checked against the screw's ratings and the contact
+    pressure limit (:func:`ballscrew.ratings.plausibility`, the loads named
+    ``load_field``): an error is raised before anything is computed, the
+    warnings are kept in the run.
+    """
+    loads = case.axial_load if axial_load is None else axial_load
+    found = raise_errors(
+        plausibility(case.screw, case.load_ratings(), loads, load_field=load_field)
+    )
     return TorqueRun(case, run_models(
         case, model_names,
         case.speed if speed is None else speed,
         case.temperature if temperature is None else temperature,
-        case.axial_load if axial_load is None else axial_load,
+        loads,
         on_model=on_model,
-    ))  # fmt: skip
+    ), tuple(found))  # fmt: skip
+
+
+def plausibility_record(case: Case, findings: Sequence[Finding]) -> dict[str, Any]:
+    """The ratings a run was checked against and its plausibility warnings, for JSON."""
+    r = case.load_ratings()
+    return {
+        "dynamic_load_rating_N": r.dynamic,
+        "dynamic_load_rating_source": r.dynamic_source,
+        "static_load_rating_N": r.static,
+        "static_load_rating_source": r.static_source,
+        "static_load_rating_estimated": r.static_estimated,
+        "warnings": [str(f) for f in findings],
+    }
 
 
 def operating_grid(

@@ -30,6 +30,7 @@ from ..errors import BallScrewInputError, BallScrewSpeedWarning, BallScrewValidi
 from ..friction import MODELS, get_model
 from ..io.case import Case
 from ..kinematics import rad_s_to_rpm
+from ..ratings import plausibility, raise_errors
 from ..report.outputs import (
     INPUT_DIGITS,
     csv_text,
@@ -40,7 +41,7 @@ from ..report.outputs import (
     round_significant,
 )
 from ..report.torque import run_models, warning_lines
-from ..units import parse_range
+from ..units import Reading, parse_range
 from .inputs import (
     LIMITS,
     ApiError,
@@ -83,9 +84,13 @@ _OVERRIDES = {"speed": "rad/s", "temperature": "degC", "axial_load": "N"}
 
 
 def _operating_points(
-    case: Case, given: Mapping[str, Any], limits: Limits
+    case: Case, given: Mapping[str, Any], limits: Limits, read: list[Reading] | None = None
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Speeds, temperatures and loads: those given as text with units, else the case's."""
+    """Speeds, temperatures and loads: those given as text with units, else the case's.
+
+    How a text that could be meant two ways was read (a speed in Hz) is added to
+    ``read``, for the answer's warnings, as the command line prints it.
+    """
     arrays = {"speed": case.speed, "temperature": case.temperature, "axial_load": case.axial_load}
     for key, unit in _OVERRIDES.items():
         value = given.get(key)
@@ -94,7 +99,7 @@ def _operating_points(
         if not isinstance(value, str):
             raise BallScrewInputError(key, value, "text with a unit, e.g. '100, 1000 rpm'")
         check_points(key, value, limits)
-        arrays[key] = np.asarray(parse_range(key, value, unit))
+        arrays[key] = np.asarray(parse_range(key, value, unit, notes=read))
     sizes = {key: a.size for key, a in arrays.items()}
     total = math.prod(sizes.values())
     if total > limits.points:
@@ -119,12 +124,19 @@ def _inputs(values: Any) -> list[float | None]:
 
 
 def _quiet_run(
-    case: Case, names: Sequence[str], w: np.ndarray, t: np.ndarray, f: np.ndarray
-) -> dict[str, FrictionResult]:
+    case: Case,
+    names: Sequence[str],
+    w: np.ndarray,
+    t: np.ndarray,
+    f: np.ndarray,
+    load_field: str = "operation.axial_load",
+) -> tuple[dict[str, FrictionResult], list[str]]:
+    """The models' results and the plausibility warnings; a plausibility error raises."""
+    found = raise_errors(plausibility(case.screw, case.load_ratings(), f, load_field=load_field))
     with warnings.catch_warnings():
         # The issues are kept in each result and returned as text.
         warnings.simplefilter("ignore", BallScrewValidityWarning)
-        return run_models(case, names, w, t, f)
+        return run_models(case, names, w, t, f), [f"warning: {x}" for x in found]
 
 
 def torque(payload: Mapping[str, Any], limits: Limits = LIMITS) -> dict[str, Any]:
@@ -144,8 +156,10 @@ def torque(payload: Mapping[str, Any], limits: Limits = LIMITS) -> dict[str, Any
             raise BallScrewInputError("model", model, "the name of one model")
         get_model(model)
         case = load_case(fields, limits)
-        w, t, f = _operating_points(case, payload, limits)
-        results = _quiet_run(case, [model], w, t, f)
+        read: list[Reading] = []
+        w, t, f = _operating_points(case, payload, limits, read)
+        field = "axial_load" if "axial_load" in payload else "operation.axial_load"
+        results, plausible = _quiet_run(case, [model], w, t, f, field)
     except BallScrewInputError as exc:
         raise ApiError.from_input(exc) from None
     r = results[model]
@@ -158,7 +172,7 @@ def torque(payload: Mapping[str, Any], limits: Limits = LIMITS) -> dict[str, Any
         "power_loss_W": _floats(r.power_loss),
         "efficiency": _floats(r.efficiency),
         "components": {k: _floats(v) for k, v in r.components.items()},
-        "warnings": warning_lines(results),
+        "warnings": [f"warning: {r}" for r in read] + plausible + warning_lines(results),
     }
 
 
@@ -181,6 +195,7 @@ def _energy(case: Case, move: Any, limits: Limits) -> dict[str, Any]:
     """The energy of one back-and-forth move (``ballscrew energy --move``), complete model."""
     from ..axis.energy import axis_cycle
     from ..axis.motion import back_and_forth
+    from ..axis.run import motion_plausibility
     from ..axis.setup import axis_setup
 
     if not isinstance(move, Mapping) or not all(isinstance(move.get(k), str) for k in _MOVE_KEYS):
@@ -199,6 +214,7 @@ def _energy(case: Case, move: Any, limits: Limits) -> dict[str, Any]:
     temperature = float(case.temperature.flat[0])
     params = case.parameters_for("complete")
     setup = axis_setup(case.screw, case.axis, case.thermal, abs(m["stroke"]))
+    found = motion_plausibility(case, profile, setup.axis, "--move")
     with warnings.catch_warnings():
         # The speed limits are returned in the result, as the command line reports them.
         warnings.simplefilter("ignore", BallScrewSpeedWarning)
@@ -222,7 +238,7 @@ def _energy(case: Case, move: Any, limits: Limits) -> dict[str, Any]:
             "rms_motor_torque_Nm": r.rms_motor_torque,
             "forward_efficiency": r.forward_efficiency,
             "reverse_efficiency": r.reverse_efficiency,
-            "warnings": list(r.speed_warnings),
+            "warnings": [str(x) for x in found] + list(r.speed_warnings),
             # The page shows no temperature: the heat balance's notes do not apply.
             "notes": [n for n in setup.notes if "machine_resistance" not in n],
             "command": f'ballscrew energy --case case.toml --move "{text}"',
@@ -298,7 +314,7 @@ def evaluate(payload: Mapping[str, Any], limits: Limits = LIMITS) -> dict[str, A
         names = _models(payload.get("models"), limits)
         case = load_case(fields, limits)
         w, t, f = _operating_points(case, {}, limits)
-        results = _quiet_run(case, names, w, t, f)
+        results, plausible = _quiet_run(case, names, w, t, f)
         move = payload.get("move")
         energy = None if move is None else _energy(case, move, limits)
     except BallScrewInputError as exc:
@@ -314,7 +330,7 @@ def evaluate(payload: Mapping[str, Any], limits: Limits = LIMITS) -> dict[str, A
         "models": names,
         "curves": _curves(results),
         "budget": _budget(results[chosen]) if chosen != "catalog" else None,
-        "warnings": warning_lines(results),
+        "warnings": plausible + warning_lines(results),
         "energy": energy,
         "case_toml": case.text,
         "csv": csv_text(rows),

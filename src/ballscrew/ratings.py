@@ -1,0 +1,302 @@
+r"""What a ball screw can carry: its load ratings, its contact pressure and the rules a case obeys.
+
+Every case is checked against the screw before anything is computed
+(:func:`plausibility`), each rule with its limit and its source; beyond a
+limit the finding is an error, near it a warning:
+
+=====================  ===================================  =============================
+quantity               error beyond                         warning beyond
+=====================  ===================================  =============================
+preload                20 % of C_a                          10 % of C_a (catalogues)
+axial load             C_0a (on the loaded half-nut)        C_0a / 2, and C_a
+contact pressure       4200 MPa                             4200 MPa / 2^(1/3) = 3334 MPa
+stroke (``energy``)    the screw length                     the screw length less the nut
+=====================  ===================================  =============================
+
+**Static rating and contact pressure.** ISO 3408-5:2006 (section 5.1), as
+ISO 76:2006 for ball bearings, defines the basic static axial load rating
+:math:`C_{0a}` as the axial load that produces 4200 MPa at the centre of the
+most heavily loaded ball contact, a permanent dent of about 1/10 000 of the
+ball diameter. The pressure of a contact is Hertz's,
+:math:`p_{max} = 3Q/(2\pi a b)` (:func:`ballscrew.contact.hertz`), and the
+ball load :math:`Q` is the loaded family's axial force shared equally by its
+:math:`z` balls, :math:`Q = F/(z\sin\alpha\cos\varphi)`
+(:func:`ballscrew.loads.ball_loads`). Since :math:`p_{max}\propto Q^{1/3}`,
+the load that reaches the limit is :math:`Q_0 = (4200\,\mathrm{MPa}/p_1)^3`
+with :math:`p_1` the pressure under 1 N, and
+
+.. math:: C_{0a} = Q_0\,z\,\sin\alpha\,\cos\varphi
+
+is the rating that definition gives from the geometry
+(:func:`static_rating_estimate`), used when neither the case nor the
+designation's catalogue row gives one, and then stated as estimated. Against
+the bundled catalogue rows (conformity 0.55, 45°) it lies within 0.6 to 1.1
+times the printed values: the makers' tighter grooves carry more.
+
+**Dynamic rating.** :math:`C_a` gives a rating life of :math:`10^6`
+revolutions, :math:`L_{10} = (C_a/F)^3\cdot 10^6` (ISO 3408-5, section 7.2):
+an axial load above it is warned about (a life below a million turns). No
+estimate of :math:`C_a` is made from the geometry (the standard's factor
+:math:`f_c` is tabulated); without a rating from the case or the catalogue the
+preload rule is not applied, and the contact pressure rule still is.
+
+**Preload.** Ball screw catalogues keep the preload within 10 % of
+:math:`C_a` (THK, *General Catalog*, ball screws, "Preload"; HIWIN,
+*Ballscrews*, "Preload"): above it a warning; above twice that, the bound
+``preload_share`` also has, an error.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+
+from .contact import hertz
+from .errors import BallScrewInputError, FloatArray, check_finite
+from .geometry import BallScrew
+from .loads import ball_loads
+
+__all__ = [
+    "PRELOAD_SHARE_LIMIT",
+    "PRELOAD_SHARE_SOURCE",
+    "STATIC_PRESSURE",
+    "STATIC_RATING_SOURCE",
+    "Finding",
+    "Ratings",
+    "max_contact_pressure",
+    "plausibility",
+    "raise_errors",
+    "static_rating_estimate",
+    "stroke_findings",
+]
+
+STATIC_PRESSURE = 4200e6
+"""The contact pressure that defines the static load rating [Pa] (ISO 3408-5, ISO 76)."""
+
+STATIC_RATING_SOURCE = (
+    "ISO 3408-5:2006 5.1, as ISO 76: C_0a is the axial load giving 4200 MPa at the most loaded "
+    "ball contact, a permanent dent of 1/10 000 of the ball's diameter"
+)
+"""Where the static rating and the pressure limit come from."""
+
+NEAR_STATIC = 0.5
+"""Share of the static rating above which a load is warned about: a static safety factor below 2.
+
+Ball screw catalogues (THK, HIWIN) ask for a static safety factor
+:math:`C_{0a}/F_{max}` of 1 to 3 by duty.
+"""
+
+PRELOAD_SHARE_LIMIT = 0.10
+"""Share of C_a above which a preload is warned about [-] (twice it is refused)."""
+
+PRELOAD_SHARE_SOURCE = (
+    "ball screw catalogues keep the preload within 10 % of C_a (THK General Catalog and HIWIN "
+    "Ballscrews, 'Preload'); twice that is refused, as for preload_share"
+)
+"""Where the preload rule comes from."""
+
+LIFE_SOURCE = (
+    "ISO 3408-5:2006, 7.2: rating life L10 = (C_a/F)^3 million revolutions, so a load above C_a "
+    "gives less than a million turns"
+)
+"""Where the dynamic rating rule comes from."""
+
+
+@dataclass(frozen=True)
+class Ratings:
+    """The load ratings a case is checked against [N], each with where it comes from.
+
+    ``dynamic`` (:math:`C_a`) may be None (not given, not in the catalogue);
+    ``static`` (:math:`C_{0a}`) is always known: given, from the catalogue, or
+    estimated (:func:`static_rating_estimate`, ``static_estimated`` True).
+    """
+
+    dynamic: float | None
+    dynamic_source: str
+    static: float
+    static_source: str
+    static_estimated: bool = False
+
+
+@dataclass(frozen=True)
+class Finding:
+    """One rule a case breaks or comes near: the field, its value, the limit and its source."""
+
+    field: str
+    value: str
+    limit: str
+    source: str
+    error: bool
+
+    def __str__(self) -> str:
+        return f"{self.field} = {self.value} is above {self.limit} ({self.source})"
+
+    def as_error(self) -> BallScrewInputError:
+        """The finding as the input error it raises."""
+        return BallScrewInputError(self.field, self.value, f"at most {self.limit} ({self.source})")
+
+
+def _unit_pressure(screw: BallScrew) -> float:
+    """Largest Hertz pressure of a ball's screw and nut contacts under a normal load of 1 N [Pa]."""
+    return max(
+        float(hertz(1.0, rx, ry, screw.reduced_modulus).p_max)
+        for rx, ry in ((screw.rx_screw, screw.ry_screw), (screw.rx_nut, screw.ry_nut))
+    )
+
+
+def max_contact_pressure(screw: BallScrew, axial_load: npt.ArrayLike) -> FloatArray:
+    r"""Hertz pressure at the centre of the most loaded ball contact [Pa], per axial load.
+
+    :math:`p_{max} = p_1 Q^{1/3}` with :math:`Q` the normal load of a ball of
+    the loaded family (preload and external load shared by
+    :func:`ballscrew.loads.ball_loads`, the balls equally) and :math:`p_1` the
+    larger pressure of the screw and nut contacts under 1 N (exact Hertz,
+    :math:`p_{max} = 3Q/2\pi ab`, scaling as :math:`Q^{1/3}`).
+
+    Examples
+    --------
+    The reference screw with its 2 kN preload and no load, 29 N per ball:
+
+    >>> from ballscrew import reference_screw
+    >>> print(f"{float(max_contact_pressure(reference_screw(), 0.0)) / 1e6:.0f} MPa")
+    1061 MPa
+    """
+    fa = check_finite("axial_load", axial_load)
+    q = ball_loads(screw, fa).normal_load_1
+    result: FloatArray = _unit_pressure(screw) * np.cbrt(q)
+    return result
+
+
+def static_rating_estimate(screw: BallScrew) -> float:
+    r"""The static axial rating :math:`C_{0a}` the standard's definition gives [N]: an estimate.
+
+    :math:`C_{0a} = (4200\,\mathrm{MPa}/p_1)^3 z \sin\alpha\cos\varphi`, the
+    axial load on one flank whose equal share per ball reaches 4200 MPa at the
+    more curved of the screw and nut contacts (module docstring; ISO 3408-5,
+    5.1). An estimate: the makers' grooves and load distributions differ.
+
+    Examples
+    --------
+    HIWIN R40-10K5 (40 mm, 6.35 mm balls, 5 circuits of one turn, 95 balls),
+    catalogue 184 kN; conformity 0.55 gives about 120 kN:
+
+    >>> import math
+    >>> s = BallScrew(0.04, 0.01, 0.00635, math.radians(45), 0.55, 0.55, 1.0, 5, "single")
+    >>> round(static_rating_estimate(s) / 1e3)
+    120
+    """
+    q0 = (STATIC_PRESSURE / _unit_pressure(screw)) ** 3
+    return q0 * screw.balls_per_nut * math.sin(screw.contact_angle) * math.cos(screw.lead_angle)
+
+
+def _kn(value: float) -> str:
+    return f"{value / 1e3:.4g} kN"
+
+
+def _force(value: float) -> str:
+    """A force as typed: N below 10 kN, kN above."""
+    return f"{value:.4g} N" if abs(value) < 1e4 else _kn(value)
+
+
+def plausibility(
+    screw: BallScrew,
+    ratings: Ratings,
+    axial_load: npt.ArrayLike,
+    *,
+    load_field: str = "operation.axial_load",
+    preload_field: str = "screw.preload",
+) -> list[Finding]:
+    """The preload and the largest axial load against the ratings and the pressure limit.
+
+    Returns the findings (errors first); :func:`raise_errors` raises the first
+    error. See the module docstring for the rules.
+
+    Examples
+    --------
+    500 kN on a 32 mm screw with 6.35 mm balls (static rating estimated at 91 kN):
+
+    >>> import math
+    >>> s = BallScrew(0.032, 0.01, 0.00635, math.radians(45), 0.55, 0.55, 1.0, 5, "single")
+    >>> r = Ratings(None, "", static_rating_estimate(s), "estimated")
+    >>> [f.field for f in plausibility(s, r, [0.0, 500e3]) if f.error]
+    ['operation.axial_load', 'operation.axial_load']
+    """
+    fa = np.abs(np.ravel(check_finite("axial_load", axial_load)))
+    f_max = float(fa.max()) if fa.size else 0.0
+    found: list[Finding] = []
+    if ratings.dynamic is not None and screw.preload > 0.0:
+        share = screw.preload / ratings.dynamic
+        refused = share > 2.0 * PRELOAD_SHARE_LIMIT
+        bound = (2.0 if refused else 1.0) * PRELOAD_SHARE_LIMIT
+        limit = f"{bound:.0%} of C_a = {_kn(ratings.dynamic)} ({ratings.dynamic_source})"
+        if share > PRELOAD_SHARE_LIMIT:
+            found.append(Finding(preload_field, f"{_force(screw.preload)} ({share:.1%} of C_a)",
+                                 limit, PRELOAD_SHARE_SOURCE, refused))  # fmt: skip
+    loaded = float(ball_loads(screw, f_max).axial_force_1)
+    field = load_field if f_max > 0.0 else preload_field
+    shown = _force(f_max if f_max > 0.0 else screw.preload)
+    if loaded != f_max and f_max > 0.0:
+        shown += f" ({_force(loaded)} on the loaded half-nut with the preload)"
+    c0 = ratings.static
+    c0_text = f"C_0a = {_kn(c0)} ({ratings.static_source})"
+    if loaded > c0:
+        found.append(Finding(field, shown, f"the static rating {c0_text}", STATIC_RATING_SOURCE,
+                             True))  # fmt: skip
+    elif loaded > NEAR_STATIC * c0:
+        limit = f"half the static rating {c0_text}, a static safety factor of 2"
+        found.append(Finding(field, shown, limit, "catalogues ask 1 to 3 by duty", False))
+    if ratings.dynamic is not None and f_max > ratings.dynamic:
+        life = (ratings.dynamic / f_max) ** 3 * 1e6
+        found.append(Finding(load_field, f"{_force(f_max)} (rating life {life:.3g} revolutions)",
+                             f"the dynamic rating C_a = {_kn(ratings.dynamic)} "
+                             f"({ratings.dynamic_source})", LIFE_SOURCE, False))  # fmt: skip
+    p = float(max_contact_pressure(screw, f_max))
+    near = STATIC_PRESSURE / 2.0 ** (1.0 / 3.0)
+    if p > STATIC_PRESSURE:
+        found.append(Finding(field, f"{shown}: contact pressure {p / 1e6:.4g} MPa",
+                             f"{STATIC_PRESSURE / 1e6:.0f} MPa for bearing steel",
+                             STATIC_RATING_SOURCE, True))  # fmt: skip
+    elif p > near:
+        found.append(Finding(field, f"{shown}: contact pressure {p / 1e6:.4g} MPa",
+                             f"{near / 1e6:.0f} MPa, the pressure of half the static load "
+                             f"(4200 MPa / 2^(1/3))", STATIC_RATING_SOURCE, False))  # fmt: skip
+    return sorted(found, key=lambda f: not f.error)
+
+
+def stroke_findings(
+    travel: float, length: float, nut_length: float, *, field: str, length_field: str
+) -> list[Finding]:
+    """The nut's travel [m] against the screw's length [m] (an error) and less the nut (a warning).
+
+    The nut runs on the thread: its travel cannot exceed the screw's length,
+    and with the nut's own length it should fit between the ends.
+
+    Examples
+    --------
+    >>> [f.error for f in stroke_findings(5.0, 1.3, 0.1, field="--move stroke",
+    ...                                   length_field="axis.screw_length")]
+    [True]
+    >>> stroke_findings(0.3, 1.3, 0.1, field="--move stroke", length_field="axis.screw_length")
+    []
+    """
+    source = "the nut runs on the screw's thread"
+    if travel > length:
+        return [Finding(field, f"{travel * 1e3:.4g} mm",
+                        f"{length_field} = {length * 1e3:.4g} mm", source, True)]  # fmt: skip
+    if travel + nut_length > length:
+        return [Finding(field, f"{travel * 1e3:.4g} mm",
+                        f"{length_field} = {length * 1e3:.4g} mm less the nut's "
+                        f"{nut_length * 1e3:.3g} mm", source, False)]  # fmt: skip
+    return []
+
+
+def raise_errors(findings: Sequence[Finding]) -> list[Finding]:
+    """Raise the first error among ``findings``; return the warnings."""
+    for f in findings:
+        if f.error:
+            raise f.as_error()
+    return [f for f in findings if not f.error]
