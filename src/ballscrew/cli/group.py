@@ -16,6 +16,7 @@ import click
 from .._version import __version__
 from ..errors import BallScrewInputError
 from ..files import record_signal, signal_received
+from .acceptance import acceptance_command
 from .case import case_command
 from .demo import demo
 from .energy import energy_command
@@ -57,8 +58,8 @@ def cli() -> None:
 
 for command in (demo, study, validate, models_command, lubricants_command, torque,
                 case_command, screws_command, energy_command, fit_command,
-                export_friction_command, monitor_command, serve_command,
-                sweep_command):  # fmt: skip
+                export_friction_command, monitor_command, acceptance_command,
+                serve_command, sweep_command):  # fmt: skip
     cli.add_command(command)
 
 
