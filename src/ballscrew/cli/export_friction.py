@@ -34,6 +34,9 @@ __all__ = ["export_friction_command"]
 @click.option("--axial-load", default=None,
               help="Axial load (default: the case's first); with load-map signed loads, e.g. "
               "'-4..4:9 kN' (default: the case's loads, mirrored, and 0).")  # fmt: skip
+@click.option("--measured", "measured_file", default=None, type=click.Path(dir_okay=False),
+              help="Fit the form to this measured torque-speed CSV (units in the header) "
+              "instead of the model's curve, with 95 % intervals.")  # fmt: skip
 @click.option("--inertia", default=None,
               help="Axis inertia at the screw for LuGre's damping rule, e.g. '5e-3 kg*m**2' "
               "(default: from the case's [axis]).")  # fmt: skip
@@ -60,6 +63,7 @@ def export_friction_command(
     temperature: str | None,
     speed: str,
     axial_load: str | None,
+    measured_file: str | None,
     inertia: str | None,
     bristle_stiffness: str | None,
     bristle_damping: str | None,
@@ -82,6 +86,7 @@ def export_friction_command(
     from ..fit.controller import TABLE_SIDE, UNITS
     from ..fit.export import export_friction, log_speeds
     from ..io.case import load_case
+    from ..io.measured import read_measured
     from ..kinematics import rad_s_to_rpm
     from ..report.outputs import csv_text, json_document
     from ..units import parse_range, to_si
@@ -89,8 +94,10 @@ def export_friction_command(
     def si(flag: str, text: str | None, unit: str) -> float | None:
         return to_si(flag, text, unit) if text else None
 
+    case = load_case(case_file)
+    measured = read_measured(measured_file, case.screw) if measured_file else None
     result = export_friction(
-        load_case(case_file), model_name, form,
+        case, model_name, form, measured=measured,
         temperatures=parse_range("--temperature", temperature, "degC") if temperature else None,
         speeds=log_speeds(speed), axial_load=si("--axial-load", axial_load, "N"),
         inertia=si("--inertia", inertia, "kg*m**2"),
@@ -100,21 +107,38 @@ def export_friction_command(
     console = stdout(json_file)
     lo, hi = rad_s_to_rpm(result.speeds[0]), rad_s_to_rpm(result.speeds[-1])
     for temp, fitted in result.fitted:
-        table = Table(title=f"{result.case.title}: {form} fit of {result.model} at {temp:g} degC, "
-                      f"{result.axial_load:g} N")  # fmt: skip
-        for column in ("parameter", "screw side", "unit", "table side", "unit "):
+        source = (f"the measured curve {Path(result.measured).name}" if result.measured
+                  else f"{result.model} at {temp:g} degC, {result.axial_load:g} N")  # fmt: skip
+        table = Table(title=f"{result.case.title}: {form} fit of {source}")
+        columns = ["parameter", "screw side", "unit", "table side", "unit "]
+        intervals = fitted.intervals or {}
+        if fitted.intervals is not None:
+            columns.insert(2, "95 % interval")
+        if result.gear_ratio != 1.0:
+            columns.append(f"motor side (gear {result.gear_ratio:g})")
+        for column in columns:
             table.add_column(column, justify="right")
-        side = fitted.as_dict(result.lead)["table_side"]
+        doc = fitted.as_dict(result.lead, result.gear_ratio)
+        side = doc["table_side"]
         for name, value in fitted.parameters.items():
             t_name = TABLE_SIDE.get(name, (None,))[0]
             t_val = side.get(t_name) if t_name else None
-            shown = (f"{t_val['value']:.5g}", t_val["unit"]) if t_val else ("", "")
-            table.add_row(name, f"{value:.5g}", UNITS[name], *shown)
+            shown = [f"{t_val['value']:.5g}", t_val["unit"]] if t_val else ["", ""]
+            cells = [name, f"{value:.5g}", UNITS[name], *shown]
+            if fitted.intervals is not None:
+                lo_hi = intervals.get(name)
+                cells.insert(2, f"{lo_hi[0]:.4g} to {lo_hi[1]:.4g}" if lo_hi else "")
+            if result.gear_ratio != 1.0:
+                cells.append(f"{doc['motor_side'][name]['value']:.5g}")
+            table.add_row(*cells)
         console.print(table)
+        what = "of the measured curve" if result.measured else "both ways"
         console.print(f"fit error: RMS {fitted.rms_error:.3g} N*m, max {fitted.max_error:.3g} N*m "
-                      f"over {lo:.3g} to {hi:.4g} rpm both ways")  # fmt: skip
+                      f"over {lo:.3g} to {hi:.4g} rpm {what}")  # fmt: skip
         for note in fitted.notes:
             click.echo(f"note: {note}", err=True)
+    for note in result.notes:
+        click.echo(f"note: {note}", err=True)
     if form == "table":
         click.echo(f"lookup table: {len(result.rows)} rows over {len(result.temperatures)} "
                    "temperature(s)", err=json_file == "-")  # fmt: skip
