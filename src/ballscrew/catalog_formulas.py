@@ -37,7 +37,9 @@ from .errors import (
 from .geometry import BallScrew
 
 __all__ = [
+    "DRAG_TORQUE_TOLERANCE",
     "catalog_efficiency",
+    "drag_torque_tolerance",
     "preload_from_drag_torque",
     "preload_torque",
     "preload_torque_coefficient",
@@ -156,3 +158,40 @@ def catalog_efficiency(
         )
     result: FloatArray = np.tan(beta) / np.tan(beta + rho)
     return result
+
+
+DRAG_TORQUE_TOLERANCE: dict[str, tuple[tuple[float, float, float], ...]] = {
+    "C3": ((0.2, 0.4, 0.45), (0.4, 0.6, 0.35), (0.6, 1.0, 0.30), (1.0, 2.5, 0.25),
+           (2.5, 6.3, 0.20)),
+}  # fmt: skip
+"""Permitted deviation of a measured dynamic preload drag torque from its reference.
+
+By accuracy grade: rows of (lowest reference torque [N·m], highest [N·m],
+tolerance [-]). THK General Catalog, ball screw section, A-688, Table 13
+("tolerance on the preload torque"; JIS B 1192 / ISO 3408-3 give the permitted
+variation of the dynamic preload torque by grade and torque level), grade C3,
+thread length up to 40 times the diameter. Only grade C3's row is held here,
+the row that could be checked against the catalogue's worked example
+(BNFN4010-5, 3 kN preload, reference 865 N·mm, ±30 %).
+"""
+
+
+def drag_torque_tolerance(reference_torque: float, grade: str = "C3") -> tuple[float, float, float]:
+    """The row of :data:`DRAG_TORQUE_TOLERANCE` for a reference torque [N·m].
+
+    Returns (lowest, highest reference torque of the row [N·m], tolerance [-]).
+    A row's upper edge belongs to it (0.4 N·m is the 0.2-0.4 row).
+
+    >>> drag_torque_tolerance(0.865)
+    (0.6, 1.0, 0.3)
+    """
+    rows = DRAG_TORQUE_TOLERANCE.get(grade.strip().upper())
+    if rows is None:
+        raise BallScrewInputError("grade", grade, "one of " + ", ".join(DRAG_TORQUE_TOLERANCE)
+                                  + " (the grades whose rows this version holds)")  # fmt: skip
+    for row in rows:
+        if row[0] <= reference_torque <= row[1]:
+            return row
+    raise BallScrewInputError(
+        "reference torque", f"{reference_torque:.4g} N*m",
+        f"{rows[0][0]:g} to {rows[-1][1]:g} N*m (the table's range for grade {grade})")  # fmt: skip

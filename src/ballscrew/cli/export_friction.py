@@ -17,8 +17,12 @@ __all__ = ["export_friction_command"]
 @click.command("export-friction")
 @case_option
 @click.option("--model", "model_name", default="complete", show_default=True)
-@click.option("--form", type=click.Choice(["coulomb-viscous", "stribeck", "lugre", "table"]),
-              default="stribeck", show_default=True, help="Form the controller takes.")  # fmt: skip
+@click.option("--form", type=click.Choice(["coulomb-viscous", "stribeck", "lugre", "table",
+                                           "load-map"]),
+              default="stribeck", show_default=True,
+              help="Form the controller takes; load-map: the friction over speed, signed axial "
+              "load and temperature with a compact load- and direction-dependent form, written "
+              "by --out as .csv, .mat, .mo (Modelica) or .h (C).")  # fmt: skip
 @click.option(
     "--temperature",
     default=None,
@@ -27,7 +31,12 @@ __all__ = ["export_friction_command"]
 @click.option("--speed", default="0.1..3000:60 rpm", show_default=True,
               help="Screw speeds of the curve (both directions are fitted); for a range the "
               "points are spaced logarithmically.")  # fmt: skip
-@click.option("--axial-load", default=None, help="Axial load (default: the case's first).")
+@click.option("--axial-load", default=None,
+              help="Axial load (default: the case's first); with load-map signed loads, e.g. "
+              "'-4..4:9 kN' (default: the case's loads, mirrored, and 0).")  # fmt: skip
+@click.option("--measured", "measured_file", default=None, type=click.Path(dir_okay=False),
+              help="Fit the form to this measured torque-speed CSV (units in the header) "
+              "instead of the model's curve, with 95 % intervals.")  # fmt: skip
 @click.option("--inertia", default=None,
               help="Axis inertia at the screw for LuGre's damping rule, e.g. '5e-3 kg*m**2' "
               "(default: from the case's [axis]).")  # fmt: skip
@@ -38,7 +47,8 @@ __all__ = ["export_friction_command"]
     "out_file",
     type=click.Path(dir_okay=False),
     default=None,
-    help="CSV: the lookup table (form table) or the model and fitted curves.",
+    help="CSV: the lookup table (form table) or the model and fitted curves; with load-map "
+    "the suffix chooses .csv, .mat, .mo or .h.",
 )
 @click.option(
     "--json",
@@ -53,6 +63,7 @@ def export_friction_command(
     temperature: str | None,
     speed: str,
     axial_load: str | None,
+    measured_file: str | None,
     inertia: str | None,
     bristle_stiffness: str | None,
     bristle_damping: str | None,
@@ -65,11 +76,17 @@ def export_friction_command(
     Examples:
       ballscrew export-friction --case my_screw.toml --form stribeck --temperature "20, 40 degC"
       ballscrew export-friction --case my_screw.toml --form table --out friction_table.csv
+      ballscrew export-friction --form load-map --axial-load "-4..4:9 kN" \\
+          --temperature "20, 30, 40 degC" --out friction.mat
     """  # noqa: D301 - click needs the literal \b to keep the example lines
+    if form == "load-map":
+        _load_map(case_file, model_name, temperature, speed, axial_load, out_file, json_file)
+        return
     from ..files import atomic_write
     from ..fit.controller import TABLE_SIDE, UNITS
     from ..fit.export import export_friction, log_speeds
     from ..io.case import load_case
+    from ..io.measured import read_measured
     from ..kinematics import rad_s_to_rpm
     from ..report.outputs import csv_text, json_document
     from ..units import parse_range, to_si
@@ -77,8 +94,10 @@ def export_friction_command(
     def si(flag: str, text: str | None, unit: str) -> float | None:
         return to_si(flag, text, unit) if text else None
 
+    case = load_case(case_file)
+    measured = read_measured(measured_file, case.screw) if measured_file else None
     result = export_friction(
-        load_case(case_file), model_name, form,
+        case, model_name, form, measured=measured,
         temperatures=parse_range("--temperature", temperature, "degC") if temperature else None,
         speeds=log_speeds(speed), axial_load=si("--axial-load", axial_load, "N"),
         inertia=si("--inertia", inertia, "kg*m**2"),
@@ -88,21 +107,38 @@ def export_friction_command(
     console = stdout(json_file)
     lo, hi = rad_s_to_rpm(result.speeds[0]), rad_s_to_rpm(result.speeds[-1])
     for temp, fitted in result.fitted:
-        table = Table(title=f"{result.case.title}: {form} fit of {result.model} at {temp:g} degC, "
-                      f"{result.axial_load:g} N")  # fmt: skip
-        for column in ("parameter", "screw side", "unit", "table side", "unit "):
+        source = (f"the measured curve {Path(result.measured).name}" if result.measured
+                  else f"{result.model} at {temp:g} degC, {result.axial_load:g} N")  # fmt: skip
+        table = Table(title=f"{result.case.title}: {form} fit of {source}")
+        columns = ["parameter", "screw side", "unit", "table side", "unit "]
+        intervals = fitted.intervals or {}
+        if fitted.intervals is not None:
+            columns.insert(2, "95 % interval")
+        if result.gear_ratio != 1.0:
+            columns.append(f"motor side (gear {result.gear_ratio:g})")
+        for column in columns:
             table.add_column(column, justify="right")
-        side = fitted.as_dict(result.lead)["table_side"]
+        doc = fitted.as_dict(result.lead, result.gear_ratio)
+        side = doc["table_side"]
         for name, value in fitted.parameters.items():
             t_name = TABLE_SIDE.get(name, (None,))[0]
             t_val = side.get(t_name) if t_name else None
-            shown = (f"{t_val['value']:.5g}", t_val["unit"]) if t_val else ("", "")
-            table.add_row(name, f"{value:.5g}", UNITS[name], *shown)
+            shown = [f"{t_val['value']:.5g}", t_val["unit"]] if t_val else ["", ""]
+            cells = [name, f"{value:.5g}", UNITS[name], *shown]
+            if fitted.intervals is not None:
+                lo_hi = intervals.get(name)
+                cells.insert(2, f"{lo_hi[0]:.4g} to {lo_hi[1]:.4g}" if lo_hi else "")
+            if result.gear_ratio != 1.0:
+                cells.append(f"{doc['motor_side'][name]['value']:.5g}")
+            table.add_row(*cells)
         console.print(table)
+        what = "of the measured curve" if result.measured else "both ways"
         console.print(f"fit error: RMS {fitted.rms_error:.3g} N*m, max {fitted.max_error:.3g} N*m "
-                      f"over {lo:.3g} to {hi:.4g} rpm both ways")  # fmt: skip
+                      f"over {lo:.3g} to {hi:.4g} rpm {what}")  # fmt: skip
         for note in fitted.notes:
             click.echo(f"note: {note}", err=True)
+    for note in result.notes:
+        click.echo(f"note: {note}", err=True)
     if form == "table":
         click.echo(f"lookup table: {len(result.rows)} rows over {len(result.temperatures)} "
                    "temperature(s)", err=json_file == "-")  # fmt: skip
@@ -110,4 +146,54 @@ def export_friction_command(
         atomic_write(Path(out_file), csv_text(result.rows).encode("utf-8"))
     if json_file:
         write_json(json_file, json_document(result.as_dict(__version__)))
+    sys.stdout.flush()
+
+
+def _load_map(
+    case_file: str | None, model_name: str, temperature: str | None, speed: str,
+    axial_load: str | None, out_file: str | None, json_file: str | None,
+) -> None:  # fmt: skip
+    """``export-friction --form load-map``: the map, its compact form, and the file."""
+    import numpy as np
+
+    from ..fit.export import log_speeds
+    from ..fit.friction_map import friction_map
+    from ..io.case import load_case
+    from ..report.friction_files import write_map
+    from ..report.outputs import json_document
+    from ..units import parse_range
+
+    case = load_case(case_file)
+    if axial_load:
+        loads = np.asarray(parse_range("--axial-load", axial_load, "N"), dtype=float)
+    else:
+        given = np.abs(np.ravel(case.axial_load))
+        loads = np.unique(np.concatenate([-given, [0.0], given]))
+    temps = (parse_range("--temperature", temperature, "degC") if temperature
+             else np.ravel(case.temperature)[:1])  # fmt: skip
+    m = friction_map(case, model_name, speeds=log_speeds(speed), loads=loads, temperatures=temps)
+    console = stdout(json_file)
+    fit = m.form.as_dict(m.lead, m.gear_ratio)
+    table = Table(title=f"{m.case_title}: load map of {m.model}, {m.speeds.size} speeds x "
+                  f"{m.loads.size} loads x {m.temperatures.size} temperatures")  # fmt: skip
+    for column in ("parameter", "screw side", "table side", "motor side"):
+        table.add_column(column, justify="right")
+    for key in ("c0", "c1", "c2", "b"):
+        table.add_row(key, *(f"{fit[side][key]['value']:.5g} {fit[side][key]['unit']}"
+                             for side in ("screw_side", "table_side", "motor_side")))  # fmt: skip
+    for key in ("k_c", "k_b"):
+        table.add_row(key, f"{fit[key]['value']:.4g} {fit[key]['unit']}", "", "")
+    console.print(table)
+    console.print(f"compact form: {fit['formula']}")
+    console.print(f"fit error over the grid: RMS {m.form.rms_error:.3g} N*m, "
+                  f"max {m.form.max_error:.3g} N*m (screw side)")  # fmt: skip
+    if not np.any(m.loads):
+        click.echo("note: no axial load on the grid: c1 and c2 are not identified "
+                   "(give --axial-load, e.g. '-4..4:9 kN')", err=True)  # fmt: skip
+    for note in m.notes:
+        click.echo(f"note: {note}", err=True)
+    if out_file:
+        write_map(m, Path(out_file), __version__)
+    if json_file:
+        write_json(json_file, json_document(m.as_dict(__version__)))
     sys.stdout.flush()

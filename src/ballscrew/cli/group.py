@@ -16,6 +16,7 @@ import click
 from .._version import __version__
 from ..errors import BallScrewInputError
 from ..files import record_signal, signal_received
+from .acceptance import acceptance_command
 from .case import case_command
 from .demo import demo
 from .energy import energy_command
@@ -23,6 +24,7 @@ from .export_friction import export_friction_command
 from .fit import fit_command
 from .lubricants import lubricants_command
 from .models import models_command
+from .monitor import monitor_command
 from .screws import screws_command
 from .serve import serve_command
 from .study import study
@@ -46,6 +48,7 @@ def cli() -> None:
       ballscrew energy --case my_axis.toml --move "stroke=0.3 m, feed=0.5 m/s, acceleration=2 m/s^2"
       ballscrew fit --case my_screw.toml --measured run.csv --free preload,ball_train_constant
       ballscrew export-friction --case my_screw.toml --form stribeck --temperature "20, 40 degC"
+      ballscrew monitor --case my_screw.toml --measured drag_torque.csv --threshold "50 %"
       ballscrew sweep examples/sweep_preload.toml --out preload.zarr --workers 2
       ballscrew models
       ballscrew lubricants
@@ -55,7 +58,8 @@ def cli() -> None:
 
 for command in (demo, study, validate, models_command, lubricants_command, torque,
                 case_command, screws_command, energy_command, fit_command,
-                export_friction_command, serve_command, sweep_command):  # fmt: skip
+                export_friction_command, monitor_command, acceptance_command,
+                serve_command, sweep_command):  # fmt: skip
     cli.add_command(command)
 
 

@@ -48,13 +48,16 @@ from ..loads import ball_loads
 
 __all__ = [
     "FORMS",
+    "MOTOR_SIDE",
     "FrictionForm",
     "coulomb_viscous",
     "fit_form",
+    "form_curve",
     "lugre_rate",
     "nut_axial_stiffness",
     "stribeck",
     "stribeck_torque",
+    "with_intervals",
 ]
 
 FORMS = ("coulomb-viscous", "stribeck", "lugre", "table")
@@ -89,6 +92,19 @@ TABLE_SIDE = {
     "bristle_damping": ("bristle_table_damping", "N*s/m", 2),
 }
 """Table-side name, unit and power of 2π/l that converts each screw-side parameter."""
+
+MOTOR_SIDE = {
+    "coulomb_torque": -1,
+    "static_torque": -1,
+    "stribeck_speed": 1,
+    "stribeck_exponent": 0,
+    "viscous_coefficient": -2,
+    "bristle_stiffness": -2,
+    "bristle_damping": -2,
+}
+"""Power of the gear ratio :math:`i` (motor turns per screw turn) that takes each
+screw-side parameter to the motor: torques over :math:`i`, speeds times :math:`i`,
+torque per speed or per angle over :math:`i^2` (gear losses left out)."""
 
 
 def stribeck_torque(
@@ -142,9 +158,14 @@ class FrictionForm:
     rms_error: float
     max_error: float
     notes: tuple[str, ...] = ()
+    intervals: dict[str, tuple[float, float]] | None = None
 
-    def as_dict(self, lead: float | None = None) -> dict[str, Any]:
-        """JSON-ready: screw-side values with units, and table-side ones when ``lead`` is given."""
+    def as_dict(self, lead: float | None = None, gear_ratio: float | None = None) -> dict[str, Any]:
+        """JSON-ready parameters: screw-side values with their units.
+
+        With 95 % intervals where fitted to a measurement; table-side values
+        when ``lead`` is given, motor-side ones when ``gear_ratio`` is.
+        """
         out: dict[str, Any] = {
             "form": self.form,
             "parameters": {k: {"value": v, "unit": UNITS[k]} for k, v in self.parameters.items()},
@@ -152,6 +173,15 @@ class FrictionForm:
             "max_error_Nm": self.max_error,
             "notes": list(self.notes),
         }
+        if self.intervals is not None:
+            for name, (lo, hi) in self.intervals.items():
+                out["parameters"][name]["interval_95"] = [lo, hi]
+        if gear_ratio is not None:
+            out["motor_side"] = {
+                name: {"value": v * gear_ratio ** MOTOR_SIDE[name], "unit": UNITS[name]}
+                for name, v in self.parameters.items()
+            }
+            out["gear_ratio"] = gear_ratio
         if lead is not None:
             k = 2.0 * math.pi / lead
             out["table_side"] = {
@@ -274,6 +304,68 @@ def nut_axial_stiffness(screw: BallScrew, axial_load: float = 0.0) -> float:
             "axial_load", axial_load, "a load on a single nut without preload (no stiffness at 0)"
         )
     return float((loads[1] - loads[0]) / (x[1] - x[0]))
+
+
+def form_curve(form: str, w: FloatArray, p: dict[str, float]) -> FloatArray:
+    """The torque [N·m] of a fitted coulomb-viscous or Stribeck form at signed speeds [rad/s]."""
+    if form == "coulomb-viscous":
+        result: FloatArray = p["coulomb_torque"] * np.sign(w) + p["viscous_coefficient"] * w
+        return result
+    keys = ("coulomb_torque", "static_torque", "stribeck_speed", "stribeck_exponent",
+            "viscous_coefficient")  # fmt: skip
+    return stribeck_torque(w, *(p[k] for k in keys))
+
+
+def with_intervals(
+    fitted: FrictionForm, speed: npt.ArrayLike, torque: npt.ArrayLike
+) -> FrictionForm:
+    r"""The fit with Student-t 95 % intervals of its curve parameters, from the data.
+
+    The covariance is :math:`s^2(J^TJ)^{-1}` with :math:`J` the Jacobian of the
+    form's torque over its curve parameters (central differences) and
+    :math:`s^2` the residual variance over :math:`n - p` degrees of freedom,
+    as :func:`ballscrew.fit.calibration.fit_parameters` gives them. A
+    parameter at its bound (a viscous term of 0) or one the data do not
+    determine (a singular :math:`J^TJ`) gets no interval, with a note.
+    LuGre's bristle parameters are not fitted to the curve: no interval.
+    """
+    from scipy.stats import t as student_t
+
+    w = np.asarray(speed, dtype=float)
+    t = np.asarray(torque, dtype=float)
+    p = dict(fitted.parameters)
+    names = [k for k in p if k in ("coulomb_torque", "static_torque", "stribeck_speed",
+                                   "stribeck_exponent", "viscous_coefficient")]  # fmt: skip
+    form = "coulomb-viscous" if fitted.form == "coulomb-viscous" else "stribeck"
+    dof = w.size - len(names)
+    notes = list(fitted.notes)
+    if dof < 1:
+        notes.append(f"{w.size} points for {len(names)} parameters: no intervals")
+        return FrictionForm(fitted.form, p, fitted.rms_error, fitted.max_error, tuple(notes), {})
+    jac = np.empty((w.size, len(names)))
+    for j, name in enumerate(names):
+        h = 1e-6 * max(abs(p[name]), 1e-9)
+        up, down = dict(p), dict(p)
+        up[name] += h
+        down[name] -= h
+        jac[:, j] = (form_curve(form, w, up) - form_curve(form, w, down)) / (2.0 * h)
+    resid = form_curve(form, w, p) - t
+    s2 = float(resid @ resid) / dof
+    q = float(student_t.ppf(0.975, dof))
+    intervals: dict[str, tuple[float, float]] = {}
+    try:
+        cov = s2 * np.linalg.inv(jac.T @ jac)
+    except np.linalg.LinAlgError:
+        notes.append("the data do not determine every parameter: no intervals")
+        return FrictionForm(fitted.form, p, fitted.rms_error, fitted.max_error, tuple(notes), {})
+    for j, name in enumerate(names):
+        if p[name] == 0.0 or not cov[j, j] >= 0.0:
+            notes.append(f"{name} sits at its bound 0: no interval")
+            continue
+        half = q * math.sqrt(float(cov[j, j]))
+        intervals[name] = (p[name] - half, p[name] + half)
+    return FrictionForm(fitted.form, p, fitted.rms_error, fitted.max_error, tuple(notes),
+                        intervals)  # fmt: skip
 
 
 def fit_form(

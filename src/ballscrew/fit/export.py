@@ -19,15 +19,16 @@ from typing import Any
 
 import numpy as np
 
-from ..axis.energy import Axis
+from ..axis.energy import STANDARD_GRAVITY, Axis
 from ..axis.setup import axis_setup
 from ..chain import friction_torque
 from ..errors import BallScrewInputError, FloatArray
 from ..friction import get_model
 from ..io.case import Case
+from ..io.measured import MeasuredCurve
 from ..kinematics import rad_s_to_rpm
 from ..units import parse_range
-from .controller import FrictionForm, fit_form, stribeck_torque
+from .controller import FrictionForm, fit_form, form_curve, with_intervals
 
 __all__ = ["FrictionExport", "axis_inertia", "export_friction", "log_speeds"]
 
@@ -63,6 +64,9 @@ class FrictionExport:
     axial_load: float
     fitted: list[tuple[float, FrictionForm]] = field(default_factory=list)
     rows: list[dict[str, Any]] = field(default_factory=list)
+    gear_ratio: float = 1.0
+    notes: list[str] = field(default_factory=list)
+    measured: str | None = None
 
     @property
     def lead(self) -> float:
@@ -73,24 +77,18 @@ class FrictionExport:
         """The JSON document of ``ballscrew export-friction --json``."""
         payload: dict[str, Any] = {"ballscrew": version, "case": self.case.title,
                                    "model": self.model, "form": self.form,
-                                   "lead_m": self.lead}  # fmt: skip
+                                   "lead_m": self.lead, "notes": list(self.notes)}  # fmt: skip
+        if self.measured is not None:
+            payload["fitted_to"] = self.measured
         if self.form == "table":
             payload["table"] = self.rows
             return payload
-        fits = [{"temperature_C": t, "axial_load_N": self.axial_load, **f.as_dict(self.lead)}
+        fits = [{"temperature_C": t, "axial_load_N": self.axial_load,
+                 **f.as_dict(self.lead, self.gear_ratio)}
                 for t, f in self.fitted]  # fmt: skip
         payload["fits"] = fits
         payload |= {k: v for k, v in fits[0].items() if k in ("parameters", "rms_error_Nm")}
         return payload
-
-
-def _form_curve(form: str, p: dict[str, float], w: FloatArray) -> FloatArray:
-    if form == "coulomb-viscous":
-        result: FloatArray = p["coulomb_torque"] * np.sign(w) + p["viscous_coefficient"] * w
-        return result
-    keys = ("coulomb_torque", "static_torque", "stribeck_speed", "stribeck_exponent",
-            "viscous_coefficient")  # fmt: skip
-    return stribeck_torque(w, *(p[k] for k in keys))
 
 
 def export_friction(
@@ -104,8 +102,16 @@ def export_friction(
     inertia: float | None = None,
     bristle_stiffness: float | None = None,
     bristle_damping: float | None = None,
+    measured: MeasuredCurve | None = None,
 ) -> FrictionExport:
     """A model's curve over ``speeds`` both ways at each temperature, fitted to ``form``.
+
+    With ``measured``, the form is fitted to the measured curve instead (its
+    points, each direction as measured; torque signed like the speed), with
+    95 % intervals of the curve parameters (:func:`with_intervals`).
+    Motor-side parameters follow the case's ``[axis] gear_ratio``; on an
+    inclined axis the weight's component along the screw is added to the
+    axial load, and a note says so.
 
     Parameters
     ----------
@@ -123,16 +129,30 @@ def export_friction(
         [N]; default the case's first.
     inertia, bristle_stiffness, bristle_damping : float, optional
         LuGre's inputs (default: from the case's axis and the nut's stiffness).
+    measured : MeasuredCurve, optional
+        A measured curve to fit instead of the model's.
     """
     name = get_model(model).name
     temps = list(temperatures) if temperatures is not None else [float(case.temperature.flat[0])]
     load = float(case.axial_load.flat[0]) if axial_load is None else axial_load
     lead = case.screw.lead
-    j = inertia if inertia else axis_inertia(
-        axis_setup(case.screw, case.axis, case.thermal, 0.0).axis, lead)  # fmt: skip
+    axis = axis_setup(case.screw, case.axis, case.thermal, 0.0).axis
+    j = inertia if inertia else axis_inertia(axis, lead)
+    notes = []
+    weight = axis.moving_mass * STANDARD_GRAVITY * math.sin(axis.incline)
+    if weight and measured is None:
+        load += weight
+        notes.append(f"the axis is inclined: the weight's component along the screw, "
+                     f"{weight:.4g} N, is added to the axial load ({load:.4g} N)")  # fmt: skip
     w = np.concatenate([-speeds[::-1], speeds])
     params = case.parameters_for(name)
-    out = FrictionExport(case, name, form, temps, speeds, load)
+    out = FrictionExport(case, name, form, temps, speeds, load, gear_ratio=axis.gear_ratio,
+                         notes=notes)  # fmt: skip
+    lugre: dict[str, Any] = {"screw": case.screw, "inertia": j or None,
+                             "bristle_stiffness": bristle_stiffness,
+                             "bristle_damping": bristle_damping}  # fmt: skip
+    if measured is not None:
+        return _fit_measured(out, measured, lugre)
     for temp in temps:
         with warnings.catch_warnings():  # validity warnings are the torque command's business
             warnings.simplefilter("ignore")
@@ -148,14 +168,38 @@ def export_friction(
                 for v, tq in zip(w, signed, strict=True)
             ]  # fmt: skip
             continue
-        fitted = fit_form(form, w, signed, screw=case.screw, inertia=j or None,
-                          bristle_stiffness=bristle_stiffness,
-                          bristle_damping=bristle_damping)  # fmt: skip
+        fitted = fit_form(form, w, signed, **lugre)
         out.fitted.append((temp, fitted))
-        curve = _form_curve(form, fitted.parameters, w)
+        curve = form_curve("stribeck" if form == "lugre" else form, w, fitted.parameters)
         out.rows += [
             {"speed [rpm]": float(rad_s_to_rpm(v)), "temperature [degC]": temp,
              f"torque {name} [N*m]": float(a), f"torque {form} [N*m]": float(b)}
             for v, a, b in zip(w, signed, curve, strict=True)
         ]  # fmt: skip
+    return out
+
+
+def _fit_measured(
+    out: FrictionExport, measured: MeasuredCurve, lugre: dict[str, Any]
+) -> FrictionExport:
+    """Fit ``out.form`` to a measured curve, with intervals; rows of measured and fitted torque."""
+    if out.form == "table":
+        raise BallScrewInputError("--form", "table", "a fitted form with --measured (the "
+                                  "measured curve is its own table)")  # fmt: skip
+    w = np.asarray(measured.speed, dtype=float)
+    signed = np.sign(w) * measured.torque
+    fitted = with_intervals(fit_form(out.form, w, signed, **lugre), w, signed)
+    temp = (float(np.mean(measured.temperature)) if measured.temperature is not None
+            else out.temperatures[0])  # fmt: skip
+    out.temperatures, out.speeds, out.measured = [temp], np.unique(np.abs(w)), measured.source
+    out.fitted.append((temp, fitted))
+    curve = form_curve("stribeck" if out.form == "lugre" else out.form, w, fitted.parameters)
+    out.rows += [
+        {"speed [rpm]": float(rad_s_to_rpm(v)), "temperature [degC]": temp,
+         "torque measured [N*m]": float(a), f"torque {out.form} [N*m]": float(b)}
+        for v, a, b in zip(w, signed, curve, strict=True)
+    ]  # fmt: skip
+    if np.all(w > 0.0) or np.all(w < 0.0):
+        out.notes.append("the measured curve turns one way: the form is taken as odd in the "
+                         "speed (the same friction both ways)")  # fmt: skip
     return out

@@ -171,7 +171,7 @@ def _numbers(
 ) -> dict[str, list[float]]:
     """The data rows' numbers, by column key, in the file's units."""
     header = rows[0]
-    keys = [k for k in ("speed", "torque", "temperature", "force") if k in columns]
+    keys = [k for k in ("time", "speed", "torque", "temperature", "force") if k in columns]
     values: dict[str, list[float]] = {k: [] for k in keys}
     for line, row in enumerate(rows[1:], start=2):
         for key in keys:

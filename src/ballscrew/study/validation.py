@@ -62,6 +62,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
+from ..catalog_formulas import DRAG_TORQUE_TOLERANCE
 from ..chain import friction_torque, models
 from ..errors import BallScrewValidityWarning, FloatArray
 from ..examples import reference_screw
@@ -86,12 +87,8 @@ __all__ = [
 CASES_FILE = "validation_cases.csv"
 SUMMARY_FILE = "scorecard_summary.csv"
 
-ACCEPTANCE_BANDS: tuple[tuple[float, float], ...] = (
-    (0.4, 0.45),
-    (0.6, 0.35),
-    (1.0, 0.30),
-    (2.5, 0.25),
-    (6.3, 0.20),
+ACCEPTANCE_BANDS: tuple[tuple[float, float], ...] = tuple(
+    (upper, tolerance) for _, upper, tolerance in DRAG_TORQUE_TOLERANCE["C3"]
 )
 """(upper reference torque [N·m], tolerance [-]) of each row of the makers' table.
 

@@ -1,0 +1,73 @@
+"""Acceptance of a measured drag torque against the makers' band (THK A-688 Table 13)."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pytest
+
+from ballscrew.catalog_formulas import drag_torque_tolerance, preload_torque
+from ballscrew.errors import BallScrewInputError
+from ballscrew.fit.acceptance import accept_drag_torque
+from cli_runner import run
+
+BNFN4010 = """title = "THK BNFN4010-5"
+[screw]
+designation = "40x10 double 2.5x2 6.35"
+pitch_diameter = "41.75 mm"
+preload = "3 kN"
+[lubricant]
+name = "mineral ISO VG 68"
+"""
+
+
+def test_thk_worked_example() -> None:
+    # THK's selection example: BNFN4010-5 (ball centre diameter 41.75 mm, lead 10 mm),
+    # preload 3000 N, reference torque 865 N*mm, grade C3 +-30 %.
+    reference = float(preload_torque(3000.0, 0.010, math.atan(0.010 / (math.pi * 0.04175))))
+    assert reference == pytest.approx(0.865, abs=5e-4)  # the catalogue prints whole N*mm
+    a = accept_drag_torque(0.865, 0.865)
+    assert a.row == (0.6, 1.0, 0.30)
+    assert (a.low, a.high) == pytest.approx((0.6055, 1.1245))
+    assert a.accepted and any("fluctuation is unknown" in n for n in a.notes)
+
+
+@pytest.mark.parametrize(
+    ("torque", "tolerance"),
+    [(0.2, 0.45), (0.4, 0.45), (0.40001, 0.35), (0.6, 0.35), (0.60001, 0.30), (1.0, 0.30),
+     (1.00001, 0.25), (2.5, 0.25), (2.50001, 0.20), (6.3, 0.20)],
+)  # fmt: skip
+def test_each_row_at_its_edges(torque: float, tolerance: float) -> None:
+    assert drag_torque_tolerance(torque)[2] == tolerance
+
+
+def test_edges_of_the_band_and_the_table() -> None:
+    assert accept_drag_torque([0.6056, 0.6056], 0.865).accepted
+    assert not accept_drag_torque(0.6050, 0.865).accepted
+    assert (
+        accept_drag_torque(1.1244, 0.865).accepted and not accept_drag_torque(1.125, 0.865).accepted
+    )
+    for ref in (0.19, 6.4):
+        with pytest.raises(BallScrewInputError, match="reference torque"):
+            accept_drag_torque(0.5, ref)
+    with pytest.raises(BallScrewInputError, match="grade"):
+        accept_drag_torque(0.5, 0.5, grade="C5")
+    # A trace: the mean is judged, the fluctuation reported; N*mm read as N*m is named.
+    a = accept_drag_torque([0.8, 0.92, 0.86], 0.865)
+    assert a.mean == pytest.approx(0.86) and a.fluctuation == pytest.approx(0.12)
+    assert any("check the torque unit" in n for n in accept_drag_torque(865.0, 0.865).notes)
+
+
+def test_cli(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    case = tmp_path / "bnfn.toml"
+    case.write_text(BNFN4010, encoding="utf-8")
+    code, out, err = run(["acceptance", "--case", str(case), "--torque", "0.80, 0.92, 0.86 N*m"],
+                         capsys)  # fmt: skip
+    assert code == 0, err
+    assert "reference 0.8646 N*m" in out and "verdict: ACCEPTED" in out
+    code, out, _ = run(["acceptance", "--case", str(case), "--torque", "1 200 N*mm",
+                        "--reference", "865 N*mm"], capsys)  # fmt: skip
+    assert code == 0 and "NOT ACCEPTED (+38.7% from the reference)" in out
+    code, _, err = run(["acceptance", "--case", str(case)], capsys)
+    assert code == 2 and "--torque" in err
