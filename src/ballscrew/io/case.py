@@ -35,6 +35,7 @@ from pydantic import ValidationError
 from .. import lubricants
 from ..errors import BallScrewInputError, FloatArray
 from ..geometry import BallScrew, check_buildable
+from ..limits import check_operating_bounds
 from ..lubricant import Lubricant
 from ..units import Reading, parse_range, to_si
 from .designation import resolve
@@ -212,6 +213,9 @@ def parse_case(text: str, *, source: str = "case") -> Case:
 
     lub = _lubricant(data.lubricant, notes)
     speed, temperature, axial = _operation(data, notes, read)
+    # What every run checks before it computes, named as the file names it.
+    check_operating_bounds(speed, temperature, axial, "operation.")
+    lub.check_temperature("operation.temperature", temperature)
     st = data.study
     wiper = 0.0
     if s.wiper_drag is not None:
