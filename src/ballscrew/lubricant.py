@@ -604,6 +604,8 @@ class Lubricant:
             Other fields of :class:`Lubricant`.
         """
         if pressure_viscosity is None:
+            # nu40 checked here, by its own name: the estimate would refuse it as its input.
+            check_positive("nu40", nu40, "m²/s")
             pressure_viscosity = float(pressure_viscosity_jungnickel(nu40))
             kwargs.setdefault("source", "pressure-viscosity estimated (Jungnickel)")
         return cls(

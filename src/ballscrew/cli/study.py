@@ -8,7 +8,7 @@ import click
 from rich.console import Console
 
 from ..files import atomic_folder
-from .common import case_option, file_option, progress
+from .common import case_option, file_option, progress, writing
 
 __all__ = ["study"]
 
@@ -73,7 +73,7 @@ def study(
 
         files: list[Path] = []
         try:
-            with atomic_folder(Path(out_dir)) as folder:
+            with writing("--out", out_dir), atomic_folder(Path(out_dir)) as folder:
                 write_report(result, folder, measured_text, progress=tick2, written=files)
         except KeyboardInterrupt:
             click.echo(
