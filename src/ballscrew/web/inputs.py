@@ -67,9 +67,6 @@ class Limits:
 LIMITS = Limits()
 
 
-LIMITS = Limits()
-
-
 class ApiError(Exception):
     """A request refused: HTTP status and a one-line message (and the field, when one is at fault).
 
