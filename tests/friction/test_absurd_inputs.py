@@ -236,3 +236,27 @@ def test_the_command_line_refuses_absurd_operating_points(
         code, _, err = run(["torque", "--case", str(SMALL_CASE), option, value], capsys)
     assert code == 2 and f"error: {field} = " in err, err
     assert "warning" not in err and "internal error" not in err
+
+
+@pytest.mark.parametrize(
+    ("axis", "field"),
+    [('speed = "2e6 rpm"', "axes.speed"), ('temperature = "40 K"', "axes.temperature"),
+     ('axial_load = "0, 2e8 N"', "axes.axial_load")],
+)  # fmt: skip
+def test_a_sweep_names_its_operating_axis(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], axis: str, field: str
+) -> None:
+    sweep = tmp_path / "s.toml"
+    sweep.write_text(f'case = "{SMALL_CASE.as_posix()}"\n[axes]\n{axis}\n', "utf-8")
+    code, _, err = run(["sweep", str(sweep), "--out", str(tmp_path / "s.zarr")], capsys)
+    assert code == 2 and f"error: {field} = " in err, err
+
+
+def test_an_input_error_crosses_to_a_worker_process_and_back_whole() -> None:
+    # Sweeps on a Dask cluster and the web page's workers pickle what a computation raised.
+    import pickle
+
+    err = BallScrewInputError("operating point", "speed 1 rpm", "a point the model can solve")
+    back = pickle.loads(pickle.dumps(err))
+    assert type(back) is BallScrewInputError and str(back) == str(err)
+    assert (back.field, back.value, back.allowed) == (err.field, err.value, err.allowed)

@@ -40,6 +40,7 @@ from ..chain import FrictionResult
 from ..errors import BallScrewInputError, FloatArray
 from ..friction import MODELS, get_model
 from ..io.case import Case, load_case, parse_case, parse_toml
+from ..limits import check_operating_bounds
 from ..units import parse_range, to_si
 from .fields import (
     OPERATING,
@@ -248,6 +249,10 @@ def parse_sweep(text: str, *, folder: str | Path = ".", source: str = "sweep") -
         where = f"axes.{name}"
         if name in OPERATING:
             operating[name] = np.asarray(_values(where, value, OPERATING[name]), dtype=float)
+            bounds = {k: operating[k] if k == name else 0.0 for k in OPERATING}
+            check_operating_bounds(**bounds, prefix="axes.")  # named as the file names it
+            if name == "temperature":
+                case.lubricant.check_temperature(where, operating[name])
             continue
         owner, unit = field_unit(name, models, where)
         default = MODELS[owner].parameters[name.partition(".")[2]] if owner in MODELS else None
