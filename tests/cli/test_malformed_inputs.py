@@ -209,3 +209,26 @@ def test_many_cycles_of_a_short_move_are_refused_too(
         capsys, ["energy", "--case", str(axis_case), "--move", MOVE, "--cycles", "100000"]
     )
     assert line.startswith("error: --move, --cycles = '100000 cycle(s) of ")
+
+
+@pytest.mark.parametrize(
+    ("key", "field"),
+    [
+        ('moving_mass = "-5 kg"', "axis.moving_mass"),
+        ("gear_ratio = 0", "axis.gear_ratio"),
+        ('screw_length = "0 m"', "axis.screw_length"),
+        ('machine_resistance = "-1 K/W"', "axis.machine_resistance"),
+        ('ambient = "900 degC"', "axis.ambient"),
+    ],
+)
+def test_case_check_refuses_the_axis_energy_refuses_naming_the_key(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], key: str, field: str
+) -> None:
+    # Before, case --check said OK for a negative moving mass that energy then refused
+    # as 'moving_mass' (and took a screw length of 0).
+    file = tmp_path / "axis.toml"
+    file.write_text(template().replace("[axis]", f"[axis]\n{key}", 1), "utf-8")
+    for args in (["case", "--check", str(file)],
+                 ["energy", "--case", str(file), "--move", MOVE]):  # fmt: skip
+        line = _error(capsys, args)
+        assert line.startswith(f"error: {field} = "), line

@@ -120,6 +120,9 @@ def _axis_rows(case: Any) -> list[tuple[str, str, str]]:
 
     if "axis" not in tomllib.loads(case.text):
         return []
+    from ..axis.setup import axis_setup
+
+    axis_setup(case.screw, case.axis, case.thermal, 0.0)  # what energy checks, before it runs
     a, th = case.axis, case.thermal
     later = "(estimated by ballscrew energy)"
 
