@@ -110,6 +110,7 @@ def in_the_way(tmp_path: Path) -> Path:
         (["case", "--template", "--out", "{x}/c.toml"], "--out"),
         (["sweep", "{sweep}", "--out", "{x}/s.zarr"], "--out"),
         (["validate", "--model", "catalog", "--out", "{x}/v"], "--out"),
+        (["study", "--case", "{small}", "--out", "{x}/r"], "--out"),  # before it computes
         (["fit", "--measured", "{measured}", "--free", "preload", "--json", "{x}/f.json"],
          "--json"),
         (["fit", "--measured", "{measured}", "--free", "preload", "--out", "{x}/f"], "--out"),
@@ -129,7 +130,8 @@ def test_an_output_that_cannot_be_written_names_its_option_and_path(
     measured = tmp_path / "m.csv"
     rows = "\n".join(f"{s},{0.3 + s * 1e-5}" for s in range(100, 3000, 300))
     measured.write_text(f"speed [rpm],torque [N*m]\n{rows}\n", "utf-8")
-    names = {"x": in_the_way, "axis": axis, "sweep": sweep, "measured": measured}
+    names = {"x": in_the_way, "axis": axis, "sweep": sweep, "measured": measured,
+             "small": SMALL_CASE}  # fmt: skip
     line = _error(capsys, [a.format(**names) for a in args])
     assert line.startswith(f"error: {option} = '{in_the_way}/") and "(File exists)" in line
     assert in_the_way.read_text("utf-8") == "mine"

@@ -58,6 +58,8 @@ def study(
         if measured_file is not None:
             measured = read_measured(measured_file, case.screw)
             measured_text = Path(measured_file).read_text("utf-8")
+    with writing("--out", out_dir):  # a folder that cannot be made: said now, not in minutes
+        Path(out_dir).absolute().parent.mkdir(parents=True, exist_ok=True)
     with progress(console) as bar:
         task = bar.add_task("computing", total=9 + (measured is not None))
 
