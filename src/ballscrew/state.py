@@ -30,9 +30,10 @@ import numpy.typing as npt
 
 from . import ehl
 from .contact import HertzContact, hertz
-from .errors import FloatArray, broadcast_inputs, check_in_range
+from .errors import FloatArray, broadcast_inputs
 from .geometry import BallScrew
 from .kinematics import Kinematics, kinematics
+from .limits import check_operating_bounds
 from .loads import BallLoads, ball_loads
 from .lubricant import Lubricant
 
@@ -137,14 +138,6 @@ class OperatingState:
     shape: tuple[int, ...] = ()
 
 
-MAX_SPEED = 1e5
-"""The largest screw speed any model is asked for [rad/s] (about 955 000 rpm)."""
-MAX_TEMPERATURE = 500.0
-"""The highest lubricant temperature [°C]."""
-MAX_FORCE = 1e8
-"""The largest axial load or preload [N]."""
-
-
 def operating_points(
     speed: npt.ArrayLike,
     temperature: npt.ArrayLike,
@@ -160,20 +153,8 @@ def operating_points(
     axial loads), and a grid given as an outer product is not expanded
     before the quantities that need every combination.
     """
-    # Bounds far past any ball screw, so that nothing absurd reaches the models: a
-    # million rpm, 500 °C (no lubricant survives it), 100 MN.
-    arrays = {
-        "speed": check_in_range(
-            "speed", speed, -MAX_SPEED, MAX_SPEED, unit="rad/s (about a million rpm at most)"
-        ),
-        "temperature": check_in_range(
-            "temperature", temperature, -273.15, MAX_TEMPERATURE,
-            unit="°C (above absolute zero, at most 500 °C: no lubricant survives more)",
-        ),
-        "axial_load": check_in_range(
-            "axial_load", axial_load, -MAX_FORCE, MAX_FORCE, unit="N (at most 100 MN)"
-        ),
-    }  # fmt: skip
+    w, t, fa = check_operating_bounds(speed, temperature, axial_load)
+    arrays = {"speed": w, "temperature": t, "axial_load": fa}
     if broadcast:
         w, t, fa = broadcast_inputs(**arrays)
         return w, t, fa

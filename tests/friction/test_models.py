@@ -484,11 +484,12 @@ def test_every_shear_law_is_newtonian_at_a_tiny_shear_rate(law: str) -> None:
 
 
 def test_simplified_model_input_bounds() -> None:
-    # c_v is allowed on [-1, 1] (both ends), at least 2 quadrature nodes.
+    # c_v is allowed on [0, 1] (both ends; below 0 the torque was negative, issue 28), at
+    # least 2 quadrature nodes.
     kw = {"speed": 10.0, "temperature": 40.0, "model": "harris-simplified"}
-    for cv in (-1.0, 1.0):
+    for cv in (0.0, 1.0):
         friction_torque(reference_screw(), OIL, sliding_coefficient=cv, **kw)  # type: ignore[arg-type]
-    for cv in (-1.01, 1.01):
+    for cv in (-1.0, -0.01, 1.01):
         with pytest.raises(BallScrewInputError, match="sliding_coefficient"):
             friction_torque(reference_screw(), OIL, sliding_coefficient=cv, **kw)  # type: ignore[arg-type]
     two = friction_torque(reference_screw(), OIL, nodes=2, **kw)  # type: ignore[arg-type]

@@ -460,3 +460,26 @@ def test_the_page_is_served_with_its_script_and_a_strict_policy(client: TestClie
     script = client.get("/static/app.js")
     assert script.status_code == 200
     assert script.headers["content-type"].startswith("text/javascript")
+
+
+def test_uploads_the_toml_parser_cannot_take_and_points_no_model_solves_are_refused(
+    client: TestClient,
+) -> None:
+    # Issue 28: a deeply nested upload was a RecursionError; a key of 20 000 dotted parts
+    # kept the parser busy for seconds; a point where a model's torque turns negative was
+    # given out (the viscoelastic model far past any real speed: -33 N·m).
+    for text, words in (
+        ("a = " + "[" * 20_000 + "]" * 20_000, "nested at most 32 deep"),
+        (".".join(["a"] * 20_000) + " = 1", "fewer than 32 dotted parts"),
+    ):
+        start = time.perf_counter()
+        response = client.post("/api/case", content=text.encode(), headers=TOML)
+        assert response.status_code == 422 and words in response.json()["error"]
+        assert time.perf_counter() - start < 1.0
+    body = {**CASE, "model": "viscoelastic", "speed": "1e4..9.5e5:40 rpm", "axial_load": "0 N"}
+    response = client.post("/api/torque", json=body)
+    assert response.status_code == 422
+    assert response.json()["error"].startswith("operating point = 'speed ")
+    response = client.post("/api/torque", json={**CASE, "model": "viscoelastic",
+                                                 "speed": "1.7e6 rpm"})  # fmt: skip
+    assert response.status_code == 422 and response.json()["error"].startswith("speed = ")

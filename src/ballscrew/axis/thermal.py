@@ -34,7 +34,14 @@ import numpy as np
 import numpy.typing as npt
 
 from ..chain import friction_torque
-from ..errors import BallScrewInputError, BallScrewValidityWarning, FloatArray, check_positive
+from ..errors import (
+    BallScrewInputError,
+    BallScrewValidityWarning,
+    FloatArray,
+    check_in_range,
+    check_nonnegative,
+    check_positive,
+)
 from ..geometry import BallScrew
 from ..lubricant import Lubricant
 from ..materials import STEEL_DENSITY, STEEL_SPECIFIC_HEAT
@@ -84,6 +91,13 @@ class ThermalNode:
     ambient: float = 20.0
     machine_resistance: float | None = None
     nut_mass: float = 0.0
+
+    def __post_init__(self) -> None:
+        check_positive("screw_length", self.screw_length, "m")
+        check_in_range("ambient", self.ambient, -273.15, 500.0, unit="°C")
+        if self.machine_resistance is not None:
+            check_positive("machine_resistance", self.machine_resistance, "K/W")
+        check_nonnegative("nut_mass", self.nut_mass, "kg")
 
     def heat_capacity(self, screw: BallScrew) -> float:
         """Heat capacity of screw and nut [J/K] (steel)."""

@@ -9,7 +9,7 @@ from typing import Any
 import click
 from rich.table import Table
 
-from .common import stdout
+from .common import stdout, writing
 
 __all__ = ["case_command"]
 
@@ -50,7 +50,8 @@ def case_command(
     if want_template or want_reference:
         text = template() if want_template else reference_markdown()
         if out_file:
-            atomic_write(Path(out_file), text.encode("utf-8"))
+            with writing("--out", out_file):
+                atomic_write(Path(out_file), text.encode("utf-8"))
             click.echo(f"wrote {out_file}", err=True)
         else:
             click.echo(text, nl=False)
@@ -136,6 +137,9 @@ def _axis_rows(case: Any) -> list[tuple[str, str, str]]:
 
     if "axis" not in tomllib.loads(case.text):
         return []
+    from ..axis.setup import axis_setup
+
+    axis_setup(case.screw, case.axis, case.thermal, 0.0)  # what energy checks, before it runs
     a, th = case.axis, case.thermal
     later = "(estimated by ballscrew energy)"
 

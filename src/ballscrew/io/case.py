@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import difflib
 import math
+import re
 import tomllib
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
@@ -35,6 +36,7 @@ from pydantic import ValidationError
 from .. import lubricants
 from ..errors import BallScrewInputError, FloatArray
 from ..geometry import BallScrew, check_buildable
+from ..limits import check_operating_bounds
 from ..lubricant import Lubricant
 from ..ratings import Ratings, static_rating_estimate
 from ..units import Reading, parse_range, to_si
@@ -50,7 +52,58 @@ __all__ = [
     "default_case_path",
     "load_case",
     "parse_case",
+    "parse_toml",
 ]
+
+MAX_TOML_CHARS = 1_000_000
+"""The longest TOML text read (a case or sweep file is a few kB)."""
+MAX_TOML_DEPTH = 32
+"""The deepest nesting of tables and arrays, and the most parts of a dotted key."""
+_STRINGS_AND_COMMENTS = re.compile(
+    r""""{3}[\s\S]*?"{3}|'{3}[\s\S]*?'{3}|"(?:[^"\\\n]|\\.)*"|'[^'\n]*'|#[^\n]*"""
+)
+_DOTTED_KEY = re.compile(rf"(?:[A-Za-z0-9_-]+[ \t]*\.[ \t]*){{{MAX_TOML_DEPTH},}}")
+
+
+def _quoted(match: re.Match[str]) -> str:
+    """A string as one bare word (a quoted key's part stays a part), a comment as nothing."""
+    return "" if match.group().startswith("#") else "s"
+
+
+def parse_toml(text: str, source: str) -> dict[str, Any]:
+    """TOML text parsed, within the limits that keep the parser quick; ``source`` names it.
+
+    The standard library's parser recurses once per level of nesting (a file of
+    100 000 ``[`` ran out of stack) and slows with the square of a dotted
+    key's parts (one key of 50 000 parts took a minute): the text is refused,
+    naming ``source``, when it is over :data:`MAX_TOML_CHARS` characters, has a
+    key of :data:`MAX_TOML_DEPTH` dotted parts or more, or nests deeper.
+    """
+    if len(text) > MAX_TOML_CHARS:
+        raise BallScrewInputError(
+            source, f"{len(text):,} characters", f"at most {MAX_TOML_CHARS:,} characters"
+        )
+    if _DOTTED_KEY.search(_STRINGS_AND_COMMENTS.sub(_quoted, text)):
+        raise BallScrewInputError(
+            source, "(file)", f"keys of fewer than {MAX_TOML_DEPTH} dotted parts"
+        )
+    deep = f"tables and arrays nested at most {MAX_TOML_DEPTH} deep"
+    try:
+        raw = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise BallScrewInputError(source, "(file)", f"valid TOML ({exc})") from None
+    except RecursionError:
+        raise BallScrewInputError(source, "(file)", deep) from None
+    level: list[tuple[Any, int]] = [(raw, 0)]
+    while level:  # iteratively: a deep structure must not overflow the check either
+        value, depth = level.pop()
+        if depth > MAX_TOML_DEPTH:
+            raise BallScrewInputError(source, "(file)", deep)
+        if isinstance(value, dict):
+            level.extend((v, depth + 1) for v in value.values())
+        elif isinstance(value, list):
+            level.extend((v, depth + 1) for v in value)
+    return raw
 
 
 @dataclass(frozen=True)
@@ -224,6 +277,9 @@ def parse_case(text: str, *, source: str = "case") -> Case:
 
     lub = _lubricant(data.lubricant, notes)
     speed, temperature, axial = _operation(data, notes, read)
+    # What every run checks before it computes, named as the file names it.
+    check_operating_bounds(speed, temperature, axial, "operation.")
+    lub.check_temperature("operation.temperature", temperature)
     st = data.study
     wiper = 0.0
     if s.wiper_drag is not None:
@@ -272,10 +328,7 @@ def parse_case(text: str, *, source: str = "case") -> Case:
 
 def _case_file(text: str, source: str) -> CaseFile:
     """The TOML text parsed and validated against the case file's schema."""
-    try:
-        raw = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise BallScrewInputError(source, "(file)", f"valid TOML ({exc})") from None
+    raw = parse_toml(text, source)
     try:
         return CaseFile.model_validate(raw)
     except ValidationError as exc:
