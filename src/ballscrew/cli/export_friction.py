@@ -194,7 +194,8 @@ def _load_map(
     for note in m.notes:
         click.echo(f"note: {note}", err=True)
     if out_file:
-        write_map(m, Path(out_file), __version__)
+        with writing("--out", out_file):
+            write_map(m, Path(out_file), __version__)
     if json_file:
         write_json(json_file, json_document(m.as_dict(__version__)))
     sys.stdout.flush()
