@@ -369,17 +369,7 @@ def _screw(
 ) -> tuple[BallScrew, str]:
     """The screw of a case: designation first, keys given in the file override it."""
     given = s.model_fields_set
-    base: dict[str, Any] = {}
-    rating: float | None = None
-    origin = ""
-    if s.designation is not None:
-        name = str(_unwrap("screw.designation", s.designation, notes))
-        resolved = resolve(name)
-        base, rating, origin = resolved.geometry, resolved.dynamic_load_rating, resolved.source
-        for key, why in resolved.notes.items():
-            if key not in given:
-                shown = f"{base[key] * 1e3:g} mm" if key in _LENGTHS else f"{base[key]:g}"
-                notes.append(Assumption(f"screw.{key}", shown, why))
+    base, rating, origin = _designated(s, notes)
     geometry: dict[str, Any] = {}
     for name, unit in SCREW_UNITS.items():
         value = getattr(s, name)
@@ -419,31 +409,59 @@ def _screw(
     except BallScrewInputError as exc:
         raise BallScrewInputError(f"screw.{exc.field}", exc.value, exc.allowed) from None
     check_buildable(screw, "screw.")
-    if s.preload is not None:
-        preload = si("screw", "preload", s.preload, "N")
-    elif s.preload_drag_torque is not None:
-        from ..catalog_formulas import preload_from_drag_torque
-
-        torque = si("screw", "preload_drag_torque", s.preload_drag_torque, "N*m")
-        preload = float(preload_from_drag_torque(torque, screw))
-    else:
-        share = si("screw", "preload_share", s.preload_share, "")
-        if not 0.0 <= share <= 0.2:
-            raise BallScrewInputError(
-                "screw.preload_share", s.preload_share, "0 to 20 % (catalogues: 2 to 10 %)"
-            )
-        if rating is None:
-            raise BallScrewInputError(
-                "screw.dynamic_load_rating",
-                "(missing)",
-                "a force, needed by preload_share (or a designation whose catalogue row gives it)",
-            )
-        preload = share * rating
+    preload = _preload(s, si, screw, rating)
     try:
         screw = screw.replace(preload=preload)
     except BallScrewInputError as exc:
         raise BallScrewInputError(f"screw.{exc.field}", exc.value, exc.allowed) from None
     return screw, origin
+
+
+def _designated(
+    s: ScrewSection, notes: list[Assumption]
+) -> tuple[dict[str, Any], float | None, str]:
+    """The geometry, load rating and source a designation gives (none without one).
+
+    What the designation assumed is noted for each key the file does not give.
+    """
+    if s.designation is None:
+        return {}, None, ""
+    name = str(_unwrap("screw.designation", s.designation, notes))
+    resolved = resolve(name)
+    base = resolved.geometry
+    for key, why in resolved.notes.items():
+        if key not in s.model_fields_set:
+            shown = f"{base[key] * 1e3:g} mm" if key in _LENGTHS else f"{base[key]:g}"
+            notes.append(Assumption(f"screw.{key}", shown, why))
+    return base, resolved.dynamic_load_rating, resolved.source
+
+
+def _preload(
+    s: ScrewSection,
+    si: Callable[[str, str, Any, str], float],
+    screw: BallScrew,
+    rating: float | None,
+) -> float:
+    """The preload [N] from the one way the file gives it: a force, a drag torque or a share."""
+    if s.preload is not None:
+        return si("screw", "preload", s.preload, "N")
+    if s.preload_drag_torque is not None:
+        from ..catalog_formulas import preload_from_drag_torque
+
+        torque = si("screw", "preload_drag_torque", s.preload_drag_torque, "N*m")
+        return float(preload_from_drag_torque(torque, screw))
+    share = si("screw", "preload_share", s.preload_share, "")
+    if not 0.0 <= share <= 0.2:
+        raise BallScrewInputError(
+            "screw.preload_share", s.preload_share, "0 to 20 % (catalogues: 2 to 10 %)"
+        )
+    if rating is None:
+        raise BallScrewInputError(
+            "screw.dynamic_load_rating",
+            "(missing)",
+            "a force, needed by preload_share (or a designation whose catalogue row gives it)",
+        )
+    return share * rating
 
 
 def _lubricant(section: LubricantSection, notes: list[Assumption]) -> Lubricant:
