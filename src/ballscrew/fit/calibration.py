@@ -32,7 +32,7 @@ from __future__ import annotations
 
 import math
 import warnings
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -245,17 +245,7 @@ def fit_parameters(
         raise BallScrewInputError(
             "measured", f"{n} points", f"more points than free parameters ({len(names)})"
         )
-
-    def predict(values: dict[str, float], rows: Index) -> FloatArray:
-        s, kwargs = _apply(screw, fixed, values)
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            out = friction_torque(
-                s, oil, speed=speed[rows], temperature=temp[rows], axial_load=load[rows],
-                model=model, **kwargs,
-            ).total  # fmt: skip
-        return np.asarray(out, dtype=float)
-
+    predict = _predictor(screw, oil, model, fixed, (speed, temp, load))
     everything = np.arange(n)
     fit = _fit_identifiable(specs, starts, predict, torque, everything)
     estimates, values = _estimates(fit, starts)
@@ -281,6 +271,32 @@ def fit_parameters(
         rms_residual=rms,
         warnings=tuple(fit.notes),
     )
+
+
+def _predictor(
+    screw: BallScrew,
+    oil: Lubricant,
+    model: str,
+    fixed: dict[str, Any],
+    points: tuple[FloatArray, FloatArray, FloatArray],
+) -> Callable[[dict[str, float], Index], FloatArray]:
+    """The model's torque at the measured ``rows`` for the free parameters' ``values``.
+
+    ``points`` are the measured speeds [rad/s], temperatures [°C] and axial loads [N].
+    """
+    speed, temp, load = points
+
+    def predict(values: dict[str, float], rows: Index) -> FloatArray:
+        s, kwargs = _apply(screw, fixed, values)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            out = friction_torque(
+                s, oil, speed=speed[rows], temperature=temp[rows], axial_load=load[rows],
+                model=model, **kwargs,
+            ).total  # fmt: skip
+        return np.asarray(out, dtype=float)
+
+    return predict
 
 
 def _start_values(
