@@ -14,7 +14,7 @@ naming the field by its dotted path (``screw.lead``).
 
 The preload is given either directly (``preload``) or as the catalogue drag
 torque it produces (``preload_drag_torque``), which the case turns into a
-preload with :func:`ballscrew.friction.catalog.preload_from_drag_torque`, as
+preload with :func:`ballscrew.catalog_formulas.preload_from_drag_torque`, as
 the study did.
 """
 
