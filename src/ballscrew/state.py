@@ -211,7 +211,27 @@ def operating_state(
     eta = lubricant.dynamic_viscosity(t)
     ep = screw.reduced_modulus
     g = ehl.dimensionless_materials(lubricant.pressure_viscosity, ep)
-    sides: dict[str, tuple[float, float, float, float]] = {
+    contacts: list[ContactState] = []
+    for family, q, balls in ((1, bl.normal_load_1, bl.balls_1), (2, bl.normal_load_2, bl.balls_2)):
+        for side, curvature in _sides(screw).items():
+            contacts.append(
+                _contact_state(side, family, q, balls, curvature, kin, eta, g, ep, hertz_method,
+                               (asperity_b, asperity_c))
+            )  # fmt: skip
+    return OperatingState(
+        screw=screw,
+        lubricant=lubricant,
+        temperature=t,
+        kinematics=kin,
+        loads=bl,
+        contacts=tuple(contacts),
+        shape=np.broadcast_shapes(w.shape, t.shape, fa.shape),
+    )
+
+
+def _sides(screw: BallScrew) -> dict[str, tuple[float, float, float, float]]:
+    """Each side's radii of curvature, contact radius and composite roughness [m]."""
+    return {
         "screw": (
             screw.rx_screw,
             screw.ry_screw,
@@ -225,49 +245,52 @@ def operating_state(
             screw.composite_roughness_nut,
         ),
     }
-    contacts: list[ContactState] = []
-    for family, q, balls in ((1, bl.normal_load_1, bl.balls_1), (2, bl.normal_load_2, bl.balls_2)):
-        for side, (rx, ry, radius, sigma) in sides.items():
-            hz = hertz(q, rx, ry, ep, method=hertz_method)
-            u_par = ehl.dimensionless_speed(eta, kin.entrainment_speed, ep, rx)
-            w_par = ehl.dimensionless_load(q, ep, rx)
-            # An unloaded contact (single-nut family 2, lift-off) has no film:
-            # film, film parameter and asperity share are reported as 0 there
-            # (the fits would otherwise diverge as W**-0.07 at W -> 0).
-            loaded = w_par > 0.0
-            w_safe = np.where(loaded, w_par, 1.0)
-            h_min = np.where(
-                loaded, ehl.hamrock_dowson_1977_minimum(rx, u_par, g, w_safe, hz.ellipticity), 0.0
-            )
-            lam = ehl.lambda_ratio(h_min, sigma)
-            share = np.where(loaded, ehl.asperity_share(lam, asperity_b, asperity_c), 0.0)
-            contacts.append(
-                ContactState(
-                    side=side,  # type: ignore[arg-type]
-                    family=family,
-                    balls=balls,
-                    load=q,
-                    rx=rx,
-                    ry=ry,
-                    radius=radius,
-                    hertz=hz,
-                    entrainment_speed=kin.entrainment_speed,
-                    viscosity=eta,
-                    speed_parameter=u_par,
-                    materials_parameter=np.broadcast_to(g, q.shape),
-                    load_parameter=w_par,
-                    film_minimum=h_min,
-                    roughness=sigma,
-                    film_parameter=lam,
-                    asperity_share=share,
-                )
-            )
-    return OperatingState(
-        screw=screw,
-        lubricant=lubricant,
-        temperature=t,
-        kinematics=kin,
-        loads=bl,
-        contacts=tuple(contacts),
-        shape=np.broadcast_shapes(w.shape, t.shape, fa.shape),
+
+
+def _contact_state(
+    side: str,
+    family: int,
+    q: FloatArray,
+    balls: int,
+    curvature: tuple[float, float, float, float],
+    kin: Kinematics,
+    eta: FloatArray,
+    g: FloatArray,
+    ep: float,
+    hertz_method: str,
+    asperity: tuple[float, float],
+) -> ContactState:
+    """One ball contact of a family on one side: Hertz, the film and the asperity share."""
+    rx, ry, radius, sigma = curvature
+    hz = hertz(q, rx, ry, ep, method=hertz_method)
+    u_par = ehl.dimensionless_speed(eta, kin.entrainment_speed, ep, rx)
+    w_par = ehl.dimensionless_load(q, ep, rx)
+    # An unloaded contact (single-nut family 2, lift-off) has no film:
+    # film, film parameter and asperity share are reported as 0 there
+    # (the fits would otherwise diverge as W**-0.07 at W -> 0).
+    loaded = w_par > 0.0
+    w_safe = np.where(loaded, w_par, 1.0)
+    h_min = np.where(
+        loaded, ehl.hamrock_dowson_1977_minimum(rx, u_par, g, w_safe, hz.ellipticity), 0.0
+    )
+    lam = ehl.lambda_ratio(h_min, sigma)
+    share = np.where(loaded, ehl.asperity_share(lam, *asperity), 0.0)
+    return ContactState(
+        side=side,  # type: ignore[arg-type]
+        family=family,
+        balls=balls,
+        load=q,
+        rx=rx,
+        ry=ry,
+        radius=radius,
+        hertz=hz,
+        entrainment_speed=kin.entrainment_speed,
+        viscosity=eta,
+        speed_parameter=u_par,
+        materials_parameter=np.broadcast_to(g, q.shape),
+        load_parameter=w_par,
+        film_minimum=h_min,
+        roughness=sigma,
+        film_parameter=lam,
+        asperity_share=share,
     )

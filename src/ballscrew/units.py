@@ -426,13 +426,9 @@ def to_si(field: str, value: Any, unit: str | None, notes: list[Reading] | None 
     if isinstance(value, int | float):
         if unit:
             raise _bare(field, value, unit)
-        magnitude = float(value)
-    else:
-        number, unit_text = split_quantity(field, str(value))
-        magnitude = _value_si(field, str(value).strip(), number, unit_text, unit, notes)
-    if not math.isfinite(magnitude):
-        raise BallScrewInputError(field, value, "a finite quantity")
-    return magnitude
+        return _finite(field, value, float(value))
+    number, unit_text = split_quantity(field, str(value))
+    return _value_si(field, str(value).strip(), number, unit_text, unit, notes)
 
 
 def _value_si(
@@ -446,9 +442,13 @@ def _value_si(
     """One number in ``unit_text`` to ``unit``: a bare number only where no unit is wanted."""
     if not unit_text and unit:
         raise _bare(field, text, unit)
-    magnitude = float(_convert(field, text, number, unit_text, unit, notes))
+    return _finite(field, text, float(_convert(field, text, number, unit_text, unit, notes)))
+
+
+def _finite(field: str, given: object, magnitude: float) -> float:
+    """``magnitude`` if it is finite; else the error naming the value as ``given``."""
     if not math.isfinite(magnitude):
-        raise BallScrewInputError(field, text, "a finite quantity")
+        raise BallScrewInputError(field, given, "a finite quantity")
     return magnitude
 
 

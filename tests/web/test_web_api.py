@@ -26,27 +26,12 @@ from ballscrew.units import parse_range
 from ballscrew.web import create_app, service
 from ballscrew.web.service import LIMITS
 from cli_runner import run
-from shared import DATA
+from shared import DATA, reference_case_toml
 
 # The reference double nut of the README, written as a case file would be.
-CASE_TOML = """\
-title = "web test"
-
-[screw]
-designation = "40x10 double 2.5x2 6.35"
-preload = "2 kN"
-
-[lubricant]
-name = "PAO ISO VG 68"
-
-[operation]
-speed = "10..3000:12 rpm"
-temperature = "40 degC"
-axial_load = "1 kN"
-
-[axis]
-moving_mass = "200 kg"
-"""
+CASE_TOML = reference_case_toml(
+    "web test", speed="10..3000:12 rpm", axial_load="1 kN", more='[axis]\nmoving_mass = "200 kg"\n'
+)
 CASE = tomllib.loads(CASE_TOML)
 TOML = {"content-type": "application/toml"}  # how the page uploads a case file
 JSON = {"content-type": "application/json"}

@@ -371,7 +371,6 @@ def axis_cycle(
     """
     lead = screw.lead
     omega, alpha, force = screw_motion(profile, screw, axis)
-    g_axial = STANDARD_GRAVITY * math.sin(axis.incline)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # recorded in the result's friction.warnings
         fr = friction_torque(
@@ -391,17 +390,10 @@ def axis_cycle(
     t_motor = t_screw / i + axis.motor_inertia * i * alpha
     power = t_f * np.abs(omega)
     time = profile.time
-    limits = speed_limit_issues(
-        screw, float(np.max(np.abs(omega))), span=axis.bearing_span, support=axis.support,
-        dn_limit=axis.dn_limit, root=axis.root_diameter,
-    )  # fmt: skip
+    limits = _speed_limits(screw, omega, axis)
     for message in limits:
         warnings.warn(message, BallScrewSpeedWarning, stacklevel=2)
-    # Efficiencies at the working point: the sample of largest |F v| (the
-    # process force at feed, or the peak of acceleration).
-    k = int(np.argmax(np.abs(force * profile.speed)))
-    forward = float(np.ravel(fr.efficiency)[k])
-    backward = float(np.ravel(reverse_efficiency(fr, lead))[k])
+    forward, backward = _working_point_efficiencies(fr, force * profile.speed, lead)
     out = np.where(omega > 0.0, power, 0.0)
     back = np.where(omega < 0.0, power, 0.0)
     return CycleResult(
@@ -421,20 +413,58 @@ def axis_cycle(
         bearing_torque=t_b,
         bearing_energy=_integral(t_b * np.abs(omega), time),
         constant_efficiency_energy=_integral(catalog.total * np.abs(omega), time),
-        # Work on the load: the change of kinetic and potential energy (exact,
-        # whatever the sampling of steps in acceleration) plus the process
-        # force's work.
-        load_work=0.5 * axis.moving_mass * float(profile.speed[-1] ** 2 - profile.speed[0] ** 2)
-        + axis.moving_mass * g_axial * float(profile.position[-1] - profile.position[0])
-        + _integral(profile.process_force * profile.speed, time),
+        load_work=_load_work(axis, profile),
         peak_motor_torque=float(np.max(np.abs(t_motor))),
         rms_motor_torque=math.sqrt(_integral(t_motor**2, time) / profile.duration),
         forward_efficiency=forward,
         reverse_efficiency=backward,
         friction=fr,
         speed_warnings=tuple(limits),
-        friction_energy_by_mechanism={
-            name: _integral(np.broadcast_to(part, t_f.shape) * np.abs(omega), time)
-            for name, part in fr.components.items()
-        },
+        friction_energy_by_mechanism=_energy_by_mechanism(fr, omega, time),
+    )
+
+
+def _energy_by_mechanism(
+    fr: FrictionResult, omega: FloatArray, time: FloatArray
+) -> dict[str, float]:
+    """The friction energy of each loss mechanism over the profile [J]."""
+    return {
+        name: _integral(np.broadcast_to(part, fr.total.shape) * np.abs(omega), time)
+        for name, part in fr.components.items()
+    }
+
+
+def _speed_limits(screw: BallScrew, omega: FloatArray, axis: Axis) -> list[str]:
+    """The speed limits the profile's fastest screw speed passes, in words."""
+    return speed_limit_issues(
+        screw, float(np.max(np.abs(omega))), span=axis.bearing_span, support=axis.support,
+        dn_limit=axis.dn_limit, root=axis.root_diameter,
+    )  # fmt: skip
+
+
+def _working_point_efficiencies(
+    fr: FrictionResult, load_power: FloatArray, lead: float
+) -> tuple[float, float]:
+    """Forward and reverse efficiency at the working point.
+
+    The working point is the sample of largest ``|F v|`` (the process force at
+    feed, or the peak of acceleration).
+    """
+    k = int(np.argmax(np.abs(load_power)))
+    forward = float(np.ravel(fr.efficiency)[k])
+    backward = float(np.ravel(reverse_efficiency(fr, lead))[k])
+    return forward, backward
+
+
+def _load_work(axis: Axis, profile: Profile) -> float:
+    """Work on the load over the profile [J].
+
+    The change of kinetic and potential energy (exact, whatever the sampling of
+    steps in acceleration) plus the process force's work.
+    """
+    g_axial = STANDARD_GRAVITY * math.sin(axis.incline)
+    return (
+        0.5 * axis.moving_mass * float(profile.speed[-1] ** 2 - profile.speed[0] ** 2)
+        + axis.moving_mass * g_axial * float(profile.position[-1] - profile.position[0])
+        + _integral(profile.process_force * profile.speed, profile.time)
     )
