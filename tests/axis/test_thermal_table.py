@@ -85,3 +85,23 @@ def test_steady_temperature_is_the_former_bisection(model: str, resistance: floa
     assert s.friction_power == pytest.approx(
         _former_mean_power(profile, model, s.temperature), rel=1e-12
     )
+
+
+@pytest.mark.parametrize("model", ["complete", "harris-full"])
+def test_cycle_friction_on_distinct_samples_is_the_sample_by_sample_call(model: str) -> None:
+    # axis_cycle runs the model once per distinct (speed, force) and spreads the result back;
+    # the reference is friction_torque over every sample (to a relative 1e-12).
+    from ballscrew import friction_torque
+    from ballscrew.axis.energy import screw_motion
+
+    profile, screw = _cycles(3), reference_screw()
+    r = axis_cycle(profile, screw, OIL, AXIS, temperature=35.0, model=model)
+    omega, _, force = screw_motion(profile, screw, AXIS)
+    direct = friction_torque(screw, OIL, speed=omega, temperature=35.0, axial_load=force,
+                             model=model, warn=False)  # fmt: skip
+    np.testing.assert_allclose(r.friction_torque, direct.total, rtol=1e-12, atol=0.0)
+    np.testing.assert_allclose(r.friction.efficiency, direct.efficiency, rtol=1e-12, atol=1e-15)
+    for name, part in direct.components.items():
+        np.testing.assert_allclose(r.friction.components[name], part, rtol=1e-12, atol=1e-18)
+    assert [str(w) for w in r.friction.warnings] == [str(w) for w in direct.warnings]
+    assert r.friction.speed.shape == omega.shape
