@@ -56,6 +56,7 @@ References
 from __future__ import annotations
 
 import functools
+import math
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Literal
@@ -167,6 +168,10 @@ def _carlson_rf(x: npt.ArrayLike, y: npt.ArrayLike, z: npt.ArrayLike) -> FloatAr
     does not depend on the others.
     """
     x, y, z = (np.array(v, dtype=float) for v in np.broadcast_arrays(x, y, z))
+    if x.size == 1:  # one geometry: the same steps on Python floats, 50 times faster
+        one: FloatArray = np.full(x.shape, _carlson_rf_one(float(x.flat[0]), float(y.flat[0]),
+                                                          float(z.flat[0])))  # fmt: skip
+        return one
     a0 = (x + y + z) / 3.0
     dx, dy = a0 - x, a0 - y
     q = (3.0 * _EPS) ** (-1.0 / 6.0) * np.maximum(
@@ -195,6 +200,64 @@ def _carlson_rf(x: npt.ArrayLike, y: npt.ArrayLike, z: npt.ArrayLike) -> FloatAr
     return result
 
 
+def _carlson_rf_one(x: float, y: float, z: float) -> float:
+    """:func:`_carlson_rf` at one point, operation for operation (the same bits)."""
+    a0 = (x + y + z) / 3.0
+    dx, dy = a0 - x, a0 - y
+    q = (3.0 * _EPS) ** (-1.0 / 6.0) * max(max(abs(dx), abs(dy)), abs(a0 - z))
+    a, scale = a0, 1.0
+    for _ in range(100):
+        if not q * scale >= abs(a):
+            break
+        sx, sy, sz = math.sqrt(x), math.sqrt(y), math.sqrt(z)
+        lam = sx * (sy + sz) + sy * sz
+        x, y, z, a = 0.25 * (x + lam), 0.25 * (y + lam), 0.25 * (z + lam), 0.25 * (a + lam)
+        scale = 0.25 * scale
+    else:  # pragma: no cover
+        raise RuntimeError("R_F did not converge")
+    big_x, big_y = dx * scale / a, dy * scale / a
+    big_z = -(big_x + big_y)
+    e2 = big_x * big_y - big_z * big_z
+    e3 = big_x * big_y * big_z
+    series = 1.0 - e2 / 10.0 + e3 / 14.0 + e2 * e2 / 24.0 - 3.0 * e2 * e3 / 44.0
+    return series / math.sqrt(a)
+
+
+def _carlson_rd_one(x: float, y: float, z: float) -> float:
+    """:func:`_carlson_rd` at one point, operation for operation (the same bits)."""
+    a0 = (x + y + 3.0 * z) / 5.0
+    dx, dy = a0 - x, a0 - y
+    q = (0.25 * _EPS) ** (-1.0 / 6.0) * max(max(abs(dx), abs(dy)), abs(a0 - z))
+    a, scale, total = a0, 1.0, 0.0
+    for _ in range(100):
+        if not q * scale >= abs(a):
+            break
+        sx, sy, sz = math.sqrt(x), math.sqrt(y), math.sqrt(z)
+        lam = sx * (sy + sz) + sy * sz
+        total = total + scale / (sz * (z + lam))
+        x, y, z, a = 0.25 * (x + lam), 0.25 * (y + lam), 0.25 * (z + lam), 0.25 * (a + lam)
+        scale = 0.25 * scale
+    else:  # pragma: no cover
+        raise RuntimeError("R_D did not converge")
+    big_x, big_y = dx * scale / a, dy * scale / a
+    big_z = -(big_x + big_y) / 3.0
+    xy, zz = big_x * big_y, big_z * big_z
+    e2 = xy - 6.0 * zz
+    e3 = (3.0 * xy - 8.0 * zz) * big_z
+    e4 = 3.0 * (xy - zz) * zz
+    e5 = xy * zz * big_z
+    series = (
+        1.0
+        - 3.0 * e2 / 14.0
+        + e3 / 6.0
+        + 9.0 * e2 * e2 / 88.0
+        - 3.0 * e4 / 22.0
+        - 9.0 * e2 * e3 / 52.0
+        + 3.0 * e5 / 26.0
+    )
+    return scale * series / (a * math.sqrt(a)) + 3.0 * total
+
+
 def _carlson_rd(x: npt.ArrayLike, y: npt.ArrayLike, z: npt.ArrayLike) -> FloatArray:
     r"""Carlson's symmetric elliptic integral of the second kind :math:`R_D(x, y, z)`, z > 0.
 
@@ -202,6 +265,10 @@ def _carlson_rd(x: npt.ArrayLike, y: npt.ArrayLike, z: npt.ArrayLike) -> FloatAr
     element stopping at its own step, as :func:`_carlson_rf`.
     """
     x, y, z = (np.array(v, dtype=float) for v in np.broadcast_arrays(x, y, z))
+    if x.size == 1:  # one geometry: the same steps on Python floats
+        one: FloatArray = np.full(x.shape, _carlson_rd_one(float(x.flat[0]), float(y.flat[0]),
+                                                          float(z.flat[0])))  # fmt: skip
+        return one
     a0 = (x + y + 3.0 * z) / 5.0
     dx, dy = a0 - x, a0 - y
     q = (0.25 * _EPS) ** (-1.0 / 6.0) * np.maximum(
