@@ -135,10 +135,22 @@ def _elliptic_integrals(k: FloatArray) -> tuple[FloatArray, FloatArray]:
     ``scipy.special``, whose import costs about 0.15 s of CPU in every command:
     the two agree to a few units of the last place (``tests/physics``).
     """
-    p = 1.0 / np.asarray(k, dtype=float) ** 2
+    k = np.asarray(k, dtype=float)
+    if k.size == 1:  # one geometry: once per process (a ball screw has two)
+        one_k, one_e = _elliptic_integrals_one(float(k.flat[0]))
+        return np.full(k.shape, one_k), np.full(k.shape, one_e)
+    p = 1.0 / k**2
     big_k: FloatArray = _carlson_rf(0.0, p, 1.0)
     big_e: FloatArray = p / 3.0 * (_carlson_rd(0.0, p, 1.0) + _carlson_rd(0.0, 1.0, p))
     return big_k, big_e
+
+
+@functools.lru_cache(maxsize=1024)
+def _elliptic_integrals_one(k: float) -> tuple[float, float]:
+    """:func:`_elliptic_integrals` at one axis ratio, operation for operation (the same bits)."""
+    p = 1.0 / (k * k)
+    big_e = p / 3.0 * (_carlson_rd_one(0.0, p, 1.0) + _carlson_rd_one(0.0, 1.0, p))
+    return _carlson_rf_one(0.0, p, 1.0), big_e
 
 
 def _radius_ratio_of_ellipticity(k: FloatArray) -> FloatArray:
