@@ -34,6 +34,7 @@ friction is in :math:`T_f` and is not counted again.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import warnings
 from dataclasses import dataclass, field
@@ -340,6 +341,47 @@ def _bearing_torque(
     )  # fmt: skip
 
 
+def _per_sample(
+    screw: BallScrew, lubricant: Lubricant | str, omega: FloatArray, force: FloatArray,
+    temperature: float, model: str, parameters: dict[str, Any],
+) -> FrictionResult:  # fmt: skip
+    """:func:`friction_torque` at every sample, the model run once per distinct (speed, force).
+
+    A profile repeats its samples (constant feed, dwells, every cycle after
+    the first); the result is spread back to the samples, so it is the
+    sample-by-sample call's, without the contact state (``state`` None).
+    """
+    keys = np.empty(omega.shape, dtype=complex)
+    keys.real, keys.imag = omega, force
+    pairs, inverse = np.unique(keys, return_inverse=True)
+    if pairs.size == omega.size:
+        return friction_torque(
+            screw, lubricant, speed=omega, temperature=temperature, axial_load=force,
+            model=model, **parameters,
+        )  # fmt: skip
+    fr = friction_torque(
+        screw, lubricant, speed=pairs.real.copy(), temperature=temperature,
+        axial_load=pairs.imag.copy(), model=model, **parameters,
+    )  # fmt: skip
+    index = inverse.reshape(omega.shape)
+
+    def spread(a: FloatArray) -> FloatArray:
+        result: FloatArray = np.broadcast_to(a, pairs.shape)[index]
+        return result
+
+    return dataclasses.replace(
+        fr,
+        total=spread(fr.total),
+        components={name: spread(part) for name, part in fr.components.items()},
+        power_loss=spread(fr.power_loss),
+        efficiency=spread(fr.efficiency),
+        speed=omega.copy(),
+        temperature=spread(fr.temperature),
+        axial_load=force.copy(),
+        state=None,
+    )
+
+
 def _integral(y: FloatArray, t: FloatArray) -> float:
     """Trapezoidal rule (exact for piecewise-linear samples)."""
     return float(np.sum(0.5 * (y[1:] + y[:-1]) * np.diff(t)))
@@ -373,14 +415,8 @@ def axis_cycle(
     omega, alpha, force = screw_motion(profile, screw, axis)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # recorded in the result's friction.warnings
-        fr = friction_torque(
-            screw, lubricant, speed=omega, temperature=temperature, axial_load=force,
-            model=model, **parameters,
-        )  # fmt: skip
-        catalog = friction_torque(
-            screw, lubricant, speed=omega, temperature=temperature, axial_load=force,
-            model="catalog",
-        )  # fmt: skip
+        fr = _per_sample(screw, lubricant, omega, force, temperature, model, parameters)
+        catalog = _per_sample(screw, lubricant, omega, force, temperature, "catalog", {})
     t_f = fr.total
     t_load = force * lead / (2.0 * math.pi)
     t_inertia = (axis.screw_inertia + axis.coupling_inertia) * alpha
