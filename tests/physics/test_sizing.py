@@ -84,7 +84,8 @@ def test_preloaded_loads_follow_the_exact_hertz_split() -> None:
     f1, f2 = preloaded_loads(fa, fpr)
     e1, _ = preload_split(fa, fpr)
     np.testing.assert_allclose(f1 - f2, fa, rtol=1e-12, atol=1e-9)
-    # ISO's closed form against the exact Hertz split: within 2.5 % of the loaded half (2.48 % at worst).
+    # ISO's closed form against the exact Hertz split: within 2.5 % of the loaded half
+    # (2.48 % at worst).
     np.testing.assert_allclose(f1, e1, rtol=0.025)
     assert f1[0] == pytest.approx(fpr) and f2[-1] == pytest.approx(0.0, abs=1e-9)
     big1, big2 = preloaded_loads(5000.0, fpr)

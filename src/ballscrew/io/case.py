@@ -113,6 +113,16 @@ class Case:
         ``[screw] wiper_drag``: drag torque of the nut's wipers or seals [N·m],
         0 when not given; :meth:`parameters_for` hands it to the models of
         :data:`WIPER_PARAMETERS`.
+    dynamic_load_rating, static_load_rating : float or None
+        :math:`C_a` and :math:`C_{0a}` [N] from the file or the designation's
+        catalogue row; None when neither gives them.
+    motor : dict
+        ``[motor]`` in SI (N·m, rad/s), the keys given.
+    check : dict
+        ``[check]`` in SI (s, -, N/m, K) and the accuracy grade, the keys given
+        or defaulted by the schema.
+    axis_given : frozenset of str
+        The ``[axis]`` keys the file wrote (a default is not a given value).
     """
 
     title: str
@@ -133,6 +143,11 @@ class Case:
     axis: dict[str, Any] = field(default_factory=dict)
     thermal: dict[str, float] = field(default_factory=dict)
     wiper_drag: float = 0.0
+    dynamic_load_rating: float | None = None
+    static_load_rating: float | None = None
+    motor: dict[str, float] = field(default_factory=dict)
+    check: dict[str, Any] = field(default_factory=dict)
+    axis_given: frozenset[str] = frozenset()
 
     def parameters_for(self, model: str) -> dict[str, Any]:
         """The case's parameters of ``model`` (a fresh dict; empty when it gives none).
@@ -208,7 +223,7 @@ def parse_case(text: str, *, source: str = "case") -> Case:
         field = f"{section}.{name}"
         return to_si(field, _unwrap(field, value, notes), unit, notes=read)
 
-    screw, screw_source = _screw(s, si, notes)
+    screw, screw_source, ratings = _screw(s, si, notes)
 
     lub = _lubricant(data.lubricant, notes)
     speed, temperature, axial = _operation(data, notes, read)
@@ -234,6 +249,12 @@ def parse_case(text: str, *, source: str = "case") -> Case:
         else si("study", "temperature", st.temperature, "degC")
     )
     axis, thermal = _axis(data, si), _given_si(data, si, _THERMAL_UNITS)
+    motor = {
+        name: si("motor", name, getattr(data.motor, name), unit)
+        for name, unit in _MOTOR_UNITS
+        if getattr(data.motor, name) is not None
+    }
+    check = _check(data, si)
     notes.extend(Assumption(r.field, r.text, f"read as {r.reading}") for r in read)
     return Case(
         title=data.title,
@@ -254,6 +275,11 @@ def parse_case(text: str, *, source: str = "case") -> Case:
         axis=axis,
         thermal=thermal,
         wiper_drag=wiper,
+        dynamic_load_rating=ratings[0],
+        static_load_rating=ratings[1],
+        motor=motor,
+        check=check,
+        axis_given=frozenset(data.axis.model_fields_set),
     )
 
 
@@ -311,6 +337,48 @@ _THERMAL_UNITS = (
 """The thermal ``[axis]`` keys and their SI units."""
 
 
+_MOTOR_UNITS = (("rated_torque", "N*m"), ("peak_torque", "N*m"), ("rated_speed", "rad/s"))
+"""The ``[motor]`` keys and their SI units."""
+
+_CHECK_UNITS = (
+    ("required_life", "s"),
+    ("reliability", ""),
+    ("static_safety", ""),
+    ("support_stiffness", "N/m"),
+    ("pretension_temperature", "K"),
+)
+"""The numeric ``[check]`` keys and their SI units."""
+
+
+def _check(data: CaseFile, si: Callable[[str, str, Any, str], float]) -> dict[str, Any]:
+    """``[check]`` in SI, each value checked for its range."""
+    c = data.check
+    out: dict[str, Any] = {
+        name: si("check", name, getattr(c, name), unit)
+        for name, unit in _CHECK_UNITS
+        if getattr(c, name) is not None
+    }
+    for name in ("required_life", "static_safety", "support_stiffness"):
+        if name in out and not (math.isfinite(out[name]) and out[name] > 0.0):
+            raise BallScrewInputError(f"check.{name}", getattr(c, name), "a value > 0")
+    if not 0.9 - 1e-9 <= out["reliability"] <= 0.99 + 1e-9:
+        raise BallScrewInputError("check.reliability", c.reliability, "90 % to 99 % (ISO 3408-5)")
+    if not (math.isfinite(out["pretension_temperature"]) and out["pretension_temperature"] >= 0):
+        raise BallScrewInputError(
+            "check.pretension_temperature", c.pretension_temperature, "a temperature rise >= 0 K"
+        )
+    if c.accuracy_grade is not None:
+        from ..sizing import TRAVEL_VARIATION_300
+
+        grade = c.accuracy_grade.strip().upper()
+        if grade not in TRAVEL_VARIATION_300:
+            raise BallScrewInputError(
+                "check.accuracy_grade", c.accuracy_grade, f"one of {list(TRAVEL_VARIATION_300)}"
+            )
+        out["accuracy_grade"] = grade
+    return out
+
+
 def _given_si(
     data: CaseFile, si: Callable[[str, str, Any, str], float], units: tuple[tuple[str, str], ...]
 ) -> dict[str, float]:
@@ -366,16 +434,21 @@ _LENGTHS = ("pitch_diameter", "lead", "ball_diameter")
 
 def _screw(
     s: ScrewSection, si: Callable[[str, str, Any, str], float], notes: list[Assumption]
-) -> tuple[BallScrew, str]:
-    """The screw of a case: designation first, keys given in the file override it."""
+) -> tuple[BallScrew, str, tuple[float | None, float | None]]:
+    """The screw of a case, its origin and its load ratings (C_a, C_0a) [N].
+
+    The designation first; keys given in the file override it.
+    """
     given = s.model_fields_set
     base: dict[str, Any] = {}
     rating: float | None = None
+    static: float | None = None
     origin = ""
     if s.designation is not None:
         name = str(_unwrap("screw.designation", s.designation, notes))
         resolved = resolve(name)
         base, rating, origin = resolved.geometry, resolved.dynamic_load_rating, resolved.source
+        static = resolved.static_load_rating
         for key, why in resolved.notes.items():
             if key not in given:
                 shown = f"{base[key] * 1e3:g} mm" if key in _LENGTHS else f"{base[key]:g}"
@@ -404,6 +477,11 @@ def _screw(
     geometry["circuits"] = int(circuits)
     if s.dynamic_load_rating is not None:
         rating = si("screw", "dynamic_load_rating", s.dynamic_load_rating, "N")
+    if s.static_load_rating is not None:
+        static = si("screw", "static_load_rating", s.static_load_rating, "N")
+    for name, value in (("dynamic_load_rating", rating), ("static_load_rating", static)):
+        if value is not None and not (math.isfinite(value) and 0.0 < value <= 1e8):
+            raise BallScrewInputError(f"screw.{name}", value, "a force > 0 and <= 100 MN")
     ways = [
         k for k in ("preload", "preload_drag_torque", "preload_share") if getattr(s, k) is not None
     ]
@@ -443,7 +521,7 @@ def _screw(
         screw = screw.replace(preload=preload)
     except BallScrewInputError as exc:
         raise BallScrewInputError(f"screw.{exc.field}", exc.value, exc.allowed) from None
-    return screw, origin
+    return screw, origin, (rating, static)
 
 
 def _lubricant(section: LubricantSection, notes: list[Assumption]) -> Lubricant:

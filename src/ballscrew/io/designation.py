@@ -169,12 +169,13 @@ def parse_size(text: str) -> dict[str, Any]:
 
 @dataclass(frozen=True)
 class ResolvedDesignation:
-    """What a designation gives: BallScrew keyword values (SI), rating and notes."""
+    """What a designation gives: BallScrew keyword values (SI), load ratings and notes."""
 
     geometry: dict[str, Any]
     dynamic_load_rating: float | None = None
     notes: dict[str, str] = field(default_factory=dict)
     source: str = ""
+    static_load_rating: float | None = None
 
 
 def resolve(designation: str) -> ResolvedDesignation:
@@ -211,4 +212,6 @@ def resolve(designation: str) -> ResolvedDesignation:
         if not screw.turns_status.startswith("read"):
             notes["loaded_turns"] = screw.turns_status
     source = f"{screw.source}, {screw.page}" + (f" ({screw.notes})" if screw.notes else "")
-    return ResolvedDesignation(geometry, screw.dynamic_load_rating, notes, source)
+    return ResolvedDesignation(
+        geometry, screw.dynamic_load_rating, notes, source, screw.static_load_rating
+    )
