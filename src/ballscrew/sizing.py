@@ -26,12 +26,12 @@ the nut's life as the two in series:
 :math:`L = (L_1^{-10/9} + L_2^{-10/9})^{-9/10}` (:func:`combined_life`).
 
 **Static safety.** :math:`f_s = C_{0a}/F_{max}` (ISO 3408-5, clause 6; the
-catalogues ask :math:`f_s` of 1 to 2 for machine tools without shocks, THK
-General Catalog A15, "Static safety factor").
+catalogues tabulate the :math:`f_s` to ask by machine and duty, THK General
+Catalog, "Static Safety Factor", A15-39).
 
 **Buckling.** Euler's load of the root-diameter section with the mounting's
-end-condition factor, times the catalogue's safety factor 0.5 (THK A15-31,
-equation 5; NSK and HSK print the same):
+end-condition factor, times the catalogue's safety factor 0.5 (THK General
+Catalog, "Permissible Axial Load", A15-30, equation 5; HSK prints the same):
 
 .. math:: P = s\,\eta\,\frac{\pi^2 E I}{L^2}, \qquad I = \frac{\pi d_r^4}{64},
 
@@ -108,7 +108,7 @@ BUCKLING_FACTORS: dict[str, float] = {
 r"""End-condition factor :math:`\eta` of Euler's buckling load (THK's :math:`\eta_1`) [-]."""
 
 BUCKLING_SAFETY = 0.5
-"""Safety factor the catalogues apply to Euler's load (THK A15-31, HSK, NSK) [-]."""
+"""Safety factor the catalogues apply to Euler's load (THK A15-30 eq. 5, HSK) [-]."""
 
 STEEL_EXPANSION = 11.5e-6
 """Linear thermal expansion of bearing steel [1/K] (THK and NSK take 11.8e-6 and 12e-6)."""
@@ -131,9 +131,13 @@ TRAVEL_VARIATION_300: dict[str, float] = {
 }
 r"""Permissible travel variation over 300 mm by accuracy grade [m].
 
-ISO 3408-3:2006 :math:`v_{300p}` for the P and T grades (Steinmeyer's tables
-print P3 = 12 µm) and JIS B 1192 as reprinted in THK's General Catalog
-(A15-12) for the C grades. Grades 2 and 4 are left out (not transcribed).
+ISO 3408-3:2006 :math:`v_{300p}` for the P and T grades and JIS B 1192 for
+the C grades, as the makers reprint them (THK General Catalog, "Lead Angle
+Accuracy", A15-11). Checked against public reprints: P3 = 12 µm (Steinmeyer,
+"Lead error over 300 mm"); grades 3, 5, 7 = 12, 23, 52 µm (pinsimotion.com's
+table, which labels them C3, C5, C7). The rest (P1 6 µm, T10 210 µm, C0 to
+C10) are transcribed from the catalogues' tables without a second source here:
+check them against your copy. Grades 2 and 4 are left out.
 """
 
 

@@ -24,7 +24,7 @@ from ballscrew.sizing import (
 )
 
 # The catalogues' buckling rule P = m d_r^4 / L^2 * 1e4 N (mm), safety 0.5 included:
-# HSK (b2b-linearbearing.com, "Screw Shaft Design") and THK A15-31 print
+# HSK (b2b-linearbearing.com, "Screw Shaft Design") and THK (A15-30, eq. 5) print
 # m = 1.3, 5.1, 10.2, 20.3 for N (our eta) = 1/4, 1, 2, 4.
 CATALOGUE_BUCKLING = {
     "fixed-free": 1.3,

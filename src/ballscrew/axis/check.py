@@ -80,7 +80,8 @@ INERTIA_RATIO_LIMIT = 10.0
 servo makers, e.g. Siemens and Yaskawa: 10 or less; not a standard)."""
 
 YIELD_STRESS = 147e6
-"""Permissible tensile/compressive stress of the screw shaft [Pa] (THK A15-31, equation 6)."""
+"""Permissible tensile/compressive stress of the screw shaft [Pa] (THK General Catalog,
+Permissible Axial Load, A15-30, equation 6)."""
 
 CREEP_SPEED = 0.1
 """Screw speed of a reversal's friction [rad/s] (the drag without a fast move's film)."""
@@ -255,7 +256,9 @@ def axis_check(run: EnergyRun, model: str | None = None) -> AxisCheck:
         "axial loads: inertia, gravity and the process force of the move; no guideway "
         "friction (not in the case)"
     )
-    return AxisCheck(case.title, name, rows, list(run.assumptions) + notes, life, stiffness, motor)
+    marked = [f"{a.field} = {a.value} ({a.reason})" for a in case.assumptions]
+    return AxisCheck(case.title, name, rows, marked + list(run.assumptions) + notes, life,
+                     stiffness, motor)  # fmt: skip
 
 
 def _life_rows(
@@ -325,14 +328,15 @@ def _load_rows(run: EnergyRun, force: FloatArray, d_r: float, span: float) -> li
     p_buckle = float(buckling_load(d_r, span, axis.support))
     rows.append(_at_most(
         "buckling load", f_max / 1e3, p_buckle / 1e3, "kN",
-        "Euler on the root diameter x 0.5, mounting factor (THK A15-31 eq. 5); span taken "
-        "as the buckling length, load taken as compressive",
+        "Euler on the root diameter x 0.5, mounting factor (THK General Catalog, Permissible "
+        "Axial Load, A15-30, eq. 5); span taken as the buckling length, load as compressive",
         "a larger diameter, a shorter span, or a fixed-fixed mounting",
     ))  # fmt: skip
     p_yield = YIELD_STRESS * math.pi * d_r**2 / 4.0
     rows.append(_at_most(
         "axial load, root section", f_max / 1e3, p_yield / 1e3, "kN",
-        "147 MPa on the root section (THK A15-31 eq. 6)", "a larger diameter",
+        "147 MPa on the root section (THK, Permissible Axial Load, A15-30, eq. 6)",
+        "a larger diameter",
     ))  # fmt: skip
     return rows
 
@@ -344,7 +348,8 @@ def _speed_rows(run: EnergyRun, omega: FloatArray, d_r: float, span: float) -> l
     dn_note = "" if "dn_limit" in run.case.axis_given else " (default: give axis.dn_limit)"
     return [
         _at_most("speed / critical speed", rpm, allowed, "rpm",
-                 f"0.8 x first bending speed, {axis.support} (THK A15-33 eq. 7; limits)",
+                 f"0.8 x first bending speed, {axis.support} (THK, Permissible Rotational Speed, "
+                 "A15-32, eq. 7)",
                  "a longer lead (fewer turns for the feed), a larger diameter, a shorter span "
                  "or a stiffer mounting"),
         _at_most("d*n", screw.pitch_diameter * 1e3 * rpm, axis.dn_limit, "mm*rpm",
@@ -399,7 +404,10 @@ def _stiffness_rows(
         "lost_motion_um": (play * 1e6).tolist(),
         "nut_length_mm": nut * 1e3,
     }
-    source = "ISO 3408-4; shaft EA/a or EAL/(a(L-a)) (THK A15), nut Hertz at the preload"
+    source = (
+        "ISO 3408-4; shaft EA/a or EAL/(a(L-a)) (THK, Axial Rigidity of the Feed Screw "
+        "System, A15-43), nut Hertz at the preload"
+    )
     rows = [
         _info("axis stiffness (least over the stroke)", float(np.min(k_axis)) / 1e6, "N/um",
               source + f"; nut {k_nut / 1e6:.4g} N/um"),
