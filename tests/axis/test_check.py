@@ -188,3 +188,20 @@ def test_a_designation_gives_both_ratings() -> None:
         '\n[lubricant]\nname = "PAO ISO VG 68"'
     )
     assert (case.dynamic_load_rating, case.static_load_rating) == (18_400.0, 59_600.0)
+
+
+def test_thermal_error_closes_the_heat_balance() -> None:
+    # Run long against the node's time constant: the rise is the steady one, where the
+    # cycle's mean friction power leaves through the conductance, dT = P / G (the energy
+    # balance of ballscrew.axis.thermal), and the error is alpha P / G 300 mm.
+    from ballscrew.axis.thermal import steady_temperature
+
+    case = _case(nut="double", preload="2 kN", sections='[check]\naccuracy_grade = "C5"')
+    run, result = _check(case, run_time=20 * 3600.0)
+    steady = steady_temperature(run.profile, case.screw, case.lubricant, run.axis, run.node,
+                                model="catalog")  # fmt: skip
+    balance = steady.friction_power / steady.conductance
+    assert steady.heat_out == pytest.approx(steady.friction_power, rel=1e-6)
+    row = _row(result, "thermal lead error")
+    assert row.value == pytest.approx(STEEL_EXPANSION * balance * 0.3 * 1e6, rel=2e-3)
+    assert row.limit == pytest.approx(18.0)
