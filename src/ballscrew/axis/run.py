@@ -188,7 +188,8 @@ def _one_model(
     steady = steady_temperature(profile, case.screw, case.lubricant, axis, node, model=name,
                                 **params)  # fmt: skip
     times, history = temperature_history(profile, case.screw, case.lubricant, axis, node,
-                                         run_time, model=name, points=50, **params)  # fmt: skip
+                                         run_time, model=name, points=50, steady=steady,
+                                         **params)  # fmt: skip
     run.histories[name] = (times, history)
     numbers["steady_temperature_C"] = steady.temperature
     numbers["final_temperature_C"] = float(history[-1])

@@ -59,6 +59,9 @@ AIR = {"conductivity": 0.0263, "kinematic_viscosity": 1.589e-5, "prandtl": 0.707
 STEEL_HEAT_CAPACITY = STEEL_SPECIFIC_HEAT
 """Specific heat of the screw and nut steel [J/(kg·K)] (:mod:`ballscrew.materials`)."""
 
+STEADY_TOLERANCE = 1e-9
+"""Width [K] to which the bisection of :func:`steady_temperature` brackets the temperature."""
+
 KREITH_REYNOLDS_LIMIT = 4.3e5
 """Largest rotational Reynolds number of Kreith's rotating-cylinder correlation [-]."""
 
@@ -219,7 +222,7 @@ def steady_temperature(
     r"""Temperature at which the cycle's mean friction power leaves as heat [°C].
 
     Solves :math:`\bar P(T) = G(T)(T - T_a)` by bisection between the
-    ambient temperature and 200 °C above it.
+    ambient temperature and 200 °C above it, to :data:`STEADY_TOLERANCE`.
     """
     check_positive("screw_length", node.screw_length, "m")
     speed = _rms_speed(profile, screw)
@@ -234,7 +237,7 @@ def steady_temperature(
             "thermal", "(steady state)", "a cycle whose friction the node can shed below "
             f"{hi:g} °C (give a machine_resistance or a longer screw_length)",
         )  # fmt: skip
-    for _ in range(60):
+    while hi - lo > STEADY_TOLERANCE:  # 38 halvings of the 200 K bracket, not 60
         mid = 0.5 * (lo + hi)
         lo, hi = (mid, hi) if imbalance(mid) > 0.0 else (lo, mid)
     t = 0.5 * (lo + hi)
@@ -315,19 +318,22 @@ def temperature_history(
     *,
     model: str = "complete",
     points: int = 200,
+    steady: SteadyState | None = None,
     **parameters: Any,
 ) -> tuple[FloatArray, FloatArray]:
     """Temperature over ``duration`` [s] of repeating the cycle from the ambient: (t, T).
 
     The mean power per cycle is tabulated over temperature (every 2 K up to
     the steady temperature) and the heat balance integrated with scipy's
-    ``solve_ivp``.
+    ``solve_ivp``. ``steady`` is :func:`steady_temperature` of the same inputs
+    when the caller has it already (it is computed otherwise).
     """
     from scipy.integrate import solve_ivp
 
     check_positive("duration", duration, "s")
-    steady = steady_temperature(profile, screw, lubricant, axis, node, model=model,
-                                **parameters)  # fmt: skip
+    if steady is None:
+        steady = steady_temperature(profile, screw, lubricant, axis, node, model=model,
+                                    **parameters)  # fmt: skip
     speed = _rms_speed(profile, screw)
     grid = np.linspace(
         node.ambient,
