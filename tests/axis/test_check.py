@@ -180,6 +180,11 @@ def test_missing_inputs_are_named() -> None:
         _check(_case(sections=motor))
     with pytest.raises(BallScrewInputError, match=r"check\.accuracy_grade"):
         _case(sections='[check]\naccuracy_grade = "P9"')
+    with pytest.raises(BallScrewInputError, match=r"check\.reliability"):
+        _case(sections='[check]\nreliability = "93 %"')
+    with pytest.raises(BallScrewInputError, match=r"motor\.rated_torque"):
+        _case(sections='[motor]\nrated_torque = "-2 N*m"')
+    assert _case(sections='[check]\nreliability = "0.95"').check["reliability"] == 0.95
 
 
 def test_a_designation_gives_both_ratings() -> None:

@@ -254,6 +254,9 @@ def parse_case(text: str, *, source: str = "case") -> Case:
         for name, unit in _MOTOR_UNITS
         if getattr(data.motor, name) is not None
     }
+    for name, value in motor.items():
+        if not (math.isfinite(value) and value > 0.0):
+            raise BallScrewInputError(f"motor.{name}", getattr(data.motor, name), "a value > 0")
     check = _check(data, si)
     notes.extend(Assumption(r.field, r.text, f"read as {r.reading}") for r in read)
     return Case(
@@ -361,15 +364,20 @@ def _check(data: CaseFile, si: Callable[[str, str, Any, str], float]) -> dict[st
     for name in ("required_life", "static_safety", "support_stiffness"):
         if name in out and not (math.isfinite(out[name]) and out[name] > 0.0):
             raise BallScrewInputError(f"check.{name}", getattr(c, name), "a value > 0")
-    if not 0.9 - 1e-9 <= out["reliability"] <= 0.99 + 1e-9:
-        raise BallScrewInputError("check.reliability", c.reliability, "90 % to 99 % (ISO 3408-5)")
+    from ..sizing import RELIABILITY_FACTORS, TRAVEL_VARIATION_300
+
+    levels = [k for k in RELIABILITY_FACTORS if abs(k - out["reliability"]) < 1e-9]
+    if not levels:
+        raise BallScrewInputError(
+            "check.reliability", c.reliability,
+            "one of 90, 95, 96, 97, 98 or 99 % (ISO 3408-5's a1)",
+        )  # fmt: skip
+    out["reliability"] = levels[0]
     if not (math.isfinite(out["pretension_temperature"]) and out["pretension_temperature"] >= 0):
         raise BallScrewInputError(
             "check.pretension_temperature", c.pretension_temperature, "a temperature rise >= 0 K"
         )
     if c.accuracy_grade is not None:
-        from ..sizing import TRAVEL_VARIATION_300
-
         grade = c.accuracy_grade.strip().upper()
         if grade not in TRAVEL_VARIATION_300:
             raise BallScrewInputError(
