@@ -51,3 +51,12 @@ def test_check_errors_name_the_field(capsys: pytest.CaptureFixture[str]) -> None
     assert code == 2 and "axis.bearing_span" in err
     code, _, err = run(["check", "--case", str(VERTICAL), *FAST], capsys)
     assert code == 2 and "--move" in err
+
+
+def test_case_check_shows_what_the_axis_check_will_use(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    code, out, err = run(["case", "--check", str(VERTICAL)], capsys)
+    assert code == 0, err
+    assert "18.4 kN" in out and "59.6 kN" in out  # HIWIN R32-05K4-FSC, from the designation
+    assert "3000 rpm" in out and "650 N/um" in out and "P5" in out
