@@ -132,6 +132,12 @@ def test_thermal_lead_error_and_pretension() -> None:
     row = _row(result, "thermal lead error")
     assert row.value == pytest.approx(STEEL_EXPANSION * max(rise - 1.0, 0.0) * 0.3 * 1e6)
     assert row.limit == pytest.approx(TRAVEL_VARIATION_300["P3"] * 1e6)
+    growth = _row(result, "thermal growth over the stroke")
+    assert growth.value == pytest.approx(STEEL_EXPANSION * max(rise - 1.0, 0.0) * 0.4 * 1e6)
+    t = result.thermal
+    assert t["temperature_C"][-1] == pytest.approx(rise + run.node.ambient)
+    assert t["error_per_300mm_over_time_um"][-1] == pytest.approx(row.value)
+    assert t["error_per_300mm_over_time_um"][0] == 0.0  # from the ambient
     with pytest.raises(BallScrewInputError, match="pretension_temperature"):
         _check(_case(sections='[check]\npretension_temperature = "2 K"'))
 

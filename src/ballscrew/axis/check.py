@@ -158,6 +158,7 @@ class AxisCheck:
     life: dict[str, Any] = field(default_factory=dict)
     stiffness: dict[str, Any] = field(default_factory=dict)
     motor: dict[str, Any] = field(default_factory=dict)
+    thermal: dict[str, Any] = field(default_factory=dict)
 
     @property
     def verdict(self) -> str:
@@ -183,6 +184,7 @@ class AxisCheck:
             "life": self.life,
             "stiffness": self.stiffness,
             "motor": self.motor,
+            "thermal": self.thermal,
             "assumptions": self.assumptions,
         }
 
@@ -249,7 +251,8 @@ def axis_check(run: EnergyRun, model: str | None = None) -> AxisCheck:
     rows += _speed_rows(run, omega, d_r, span)
     stiff_rows, stiffness = _stiffness_rows(run, name, force, d_r, span, stroke, nut, notes)
     rows += stiff_rows
-    rows.append(_thermal_row(run, numbers, notes))
+    thermal_rows, thermal = _thermal_rows(run, name, numbers, stroke, notes)
+    rows += thermal_rows
     motor_rows, motor = _motor_rows(run, cycle)
     rows += motor_rows
     notes.append(
@@ -258,7 +261,7 @@ def axis_check(run: EnergyRun, model: str | None = None) -> AxisCheck:
     )
     marked = [f"{a.field} = {a.value} ({a.reason})" for a in case.assumptions]
     return AxisCheck(case.title, name, rows, marked + list(run.assumptions) + notes, life,
-                     stiffness, motor)  # fmt: skip
+                     stiffness, motor, thermal)  # fmt: skip
 
 
 def _life_rows(
@@ -423,7 +426,10 @@ def _stiffness_rows(
     return rows, figures
 
 
-def _thermal_row(run: EnergyRun, numbers: dict[str, Any], notes: list[str]) -> Criterion:
+def _thermal_rows(
+    run: EnergyRun, model: str, numbers: dict[str, Any], stroke: float, notes: list[str]
+) -> tuple[list[Criterion], dict[str, Any]]:
+    """The thermal lead error per 300 mm against the grade, the growth over the stroke."""
     case, axis = run.case, run.axis
     rise = float(numbers["final_temperature_C"]) - float(run.node.ambient)
     pre = float(case.check.get("pretension_temperature", 0.0))
@@ -437,18 +443,32 @@ def _thermal_row(run: EnergyRun, numbers: dict[str, Any], notes: list[str]) -> C
     source = (f"alpha dT 300 mm, alpha = {STEEL_EXPANSION:g}/K, dT = {rise:.3g} K"
               + (f" less {pre:g} K of pre-tension" if pre else "")
               + " (heat balance after the run time)")  # fmt: skip
+    growth = _info("thermal growth over the stroke", float(thermal_elongation(effective, stroke))
+                   * 1e6, "um", "alpha dT x stroke: the position error at the stroke's far "
+                   "end against its near end")  # fmt: skip
+    figures: dict[str, Any] = {"temperature_rise_K": rise, "pretension_K": pre,
+                               "error_per_300mm_um": error}  # fmt: skip
+    if model in run.histories:
+        times, temps = run.histories[model]
+        rises = np.maximum(np.asarray(temps) - float(run.node.ambient) - pre, 0.0)
+        figures |= {
+            "time_s": np.asarray(times).tolist(),
+            "temperature_C": np.asarray(temps).tolist(),
+            "error_per_300mm_over_time_um": (thermal_elongation(rises, 0.3) * 1e6).tolist(),
+        }
     grade = case.check.get("accuracy_grade")
     if grade is None:
         notes.append("no accuracy grade: the thermal lead error is not set against a tolerance "
                      "(give check.accuracy_grade)")  # fmt: skip
-        return _info("thermal lead error per 300 mm", error, "um", source)
+        return [_info("thermal lead error per 300 mm", error, "um", source), growth], figures
     limit = TRAVEL_VARIATION_300[grade] * 1e6
-    return _at_most(
+    row = _at_most(
         f"thermal lead error per 300 mm ({grade})", error, limit, "um",
         source + "; v300p of ISO 3408-3 / JIS B 1192",
         "cool the screw or the nut, pre-tension a fixed-fixed screw, lower the preload or "
         "the duty, or compensate in the control",
     )  # fmt: skip
+    return [row, growth], figures
 
 
 def _motor_rows(run: EnergyRun, cycle: CycleResult) -> tuple[list[Criterion], dict[str, Any]]:
