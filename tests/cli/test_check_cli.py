@@ -60,3 +60,24 @@ def test_case_check_shows_what_the_axis_check_will_use(
     assert code == 0, err
     assert "18.4 kN" in out and "59.6 kN" in out  # HIWIN R32-05K4-FSC, from the designation
     assert "3000 rpm" in out and "650 N/um" in out and "P5" in out
+
+
+def test_check_takes_a_trajectory(tmp_path, capsys: pytest.CaptureFixture[str]) -> None:  # type: ignore[no-untyped-def]
+    # A smooth out-and-back of 200 mm in 2 s (a cosine), written as a CSV with units.
+    import math
+
+    lines = ["time [s],position [mm],force [N]"]
+    for i in range(401):
+        t = i * 0.005
+        lines.append(f"{t:.3f},{100 * (1 - math.cos(math.pi * t)):.6f},500")
+    path = tmp_path / "cosine.csv"
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    code, out, err = run(["check", "--case", str(VERTICAL), "--profile", str(path), *FAST,
+                          "--json", "-"], capsys)  # fmt: skip
+    assert code == 0, err
+    doc = json.loads(out)
+    positions = doc["stiffness"]["position_mm"]
+    assert positions[-1] - positions[0] == pytest.approx(200.0, rel=1e-3)  # the stroke
+    speed = next(c for c in doc["criteria"] if c["name"] == "speed / critical speed")
+    # Top speed 100 pi mm/s = 18.85 m/min on a 5 mm lead: 3770 rpm.
+    assert speed["value"] == pytest.approx(100 * math.pi / 5 * 60, rel=1e-3)
