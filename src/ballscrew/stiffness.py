@@ -43,10 +43,14 @@ __all__ = [
     "nut_axial_stiffness",
     "series_stiffness",
     "shaft_axial_stiffness",
+    "torsional_axial_stiffness",
 ]
 
 SHAFT_MODULUS = 206e9
 """Young's modulus of the screw shaft [Pa], as the catalogues take it."""
+
+SHAFT_SHEAR_MODULUS = 79.3e9
+r"""Shear modulus of the screw shaft [Pa]: :math:`E/2(1+\nu)` with :math:`\nu` = 0.3."""
 
 ONE_END_THRUST = ("fixed-free", "fixed-supported", "supported-supported")
 
@@ -90,6 +94,31 @@ def shaft_axial_stiffness(
     if support in ONE_END_THRUST:
         return np.asarray(ea / a, dtype=float)
     raise BallScrewInputError("support", support, f"one of {[*ONE_END_THRUST, 'fixed-fixed']}")
+
+
+def torsional_axial_stiffness(
+    root_diameter: npt.ArrayLike,
+    length: npt.ArrayLike,
+    lead: float,
+    *,
+    shear_modulus: float = SHAFT_SHEAR_MODULUS,
+) -> FloatArray:
+    r"""The shaft's torsion between the drive and the nut, as an axial stiffness [N/m].
+
+    A torque :math:`T` twists a length :math:`a` of the root section by
+    :math:`T a/(G J_p)`, :math:`J_p = \pi d_r^4/32`; the nut, held by the
+    screw's lead :math:`l`, sees :math:`x = (l/2\pi)\,\theta` under the axial
+    force :math:`F = 2\pi T/l`, so
+
+    .. math:: k_t = \frac{G J_p}{a}\Bigl(\frac{2\pi}{l}\Bigr)^2 .
+
+    >>> round(float(torsional_axial_stiffness(0.0266, 0.5, 0.01)) / 1e6)  # N/um
+    3077
+    """
+    d = check_positive("root_diameter", root_diameter, "m")
+    a = check_positive("length", length, "m")
+    polar = math.pi * d**4 / 32.0
+    return np.asarray(shear_modulus * polar / a * (2.0 * math.pi / lead) ** 2, dtype=float)
 
 
 def nut_axial_stiffness(screw: BallScrew, axial_load: float = 0.0) -> float:

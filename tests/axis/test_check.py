@@ -122,6 +122,12 @@ def test_stiffness_over_the_stroke_is_the_closed_form() -> None:
     assert _row(result, "axis stiffness").value == pytest.approx(least / 1e6, rel=1e-9)
     np.testing.assert_allclose(s["eigenfrequency_Hz"], np.sqrt(k / 200.0) / (2 * math.pi))
     np.testing.assert_allclose(s["lost_motion_um"], 2 * s["friction_force_N"] / k * 1e6)
+    # Torsion from the drive end to the nut: 2 T_f a / (G J_p) * l / 2 pi.
+    t_f = s["friction_force_N"] * 0.01 / (2 * math.pi)
+    gj = 79.3e9 * math.pi * 0.026**4 / 32
+    np.testing.assert_allclose(
+        s["lost_motion_torsion_um"], 2 * t_f * a / gj * 0.01 / (2 * math.pi) * 1e6
+    )
 
 
 def test_thermal_lead_error_and_pretension() -> None:

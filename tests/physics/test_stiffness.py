@@ -16,6 +16,7 @@ from ballscrew.stiffness import (
     nut_axial_stiffness,
     series_stiffness,
     shaft_axial_stiffness,
+    torsional_axial_stiffness,
 )
 
 
@@ -57,3 +58,16 @@ def test_nut_stiffness_moved_here_is_the_one_fit_uses() -> None:
 
     assert controller.nut_axial_stiffness is nut_axial_stiffness
     assert nut_axial_stiffness(reference_screw()) > 0.0
+
+
+def test_torsion_as_an_axial_stiffness_by_hand() -> None:
+    # d_r = 26.6 mm over 0.5 m, lead 10 mm: G J_p / a = 79.3e9 * 4.915e-8 / 0.5 = 7795 N m/rad;
+    # times (2 pi / l)^2 = 3.948e5 1/m^2: 3.08e9 N/m. A drag of 0.2 N m twists the shaft by
+    # 0.2 / 7795 = 2.57e-5 rad, which moves the nut 2.57e-5 * 0.01 / 2 pi = 0.041 um; the
+    # axial force 2 pi 0.2 / 0.01 = 125.7 N over k gives the same.
+    k = float(torsional_axial_stiffness(0.0266, 0.5, 0.01))
+    gj = 79.3e9 * math.pi * 0.0266**4 / 32
+    assert k == pytest.approx(gj / 0.5 * (2 * math.pi / 0.01) ** 2, rel=1e-12)
+    twist = 0.2 * 0.5 / gj * 0.01 / (2 * math.pi)
+    assert float(lost_motion(2 * math.pi * 0.2 / 0.01, k)) == pytest.approx(2 * twist)
+    assert twist == pytest.approx(0.0409e-6, rel=2e-3)

@@ -63,6 +63,7 @@ from ..stiffness import (
     nut_axial_stiffness,
     series_stiffness,
     shaft_axial_stiffness,
+    torsional_axial_stiffness,
 )
 from .energy import CycleResult
 from .run import EnergyRun
@@ -396,6 +397,8 @@ def _stiffness_rows(
     mass = axis.moving_mass
     freq = axial_eigenfrequency(k_axis, mass) if mass > 0.0 else None
     play = lost_motion(f_f, k_axis)
+    # The drag torque also twists the shaft between the drive (at the thrust end) and the nut.
+    twist = lost_motion(f_f, torsional_axial_stiffness(d_r, position, screw.lead))
     figures: dict[str, Any] = {
         "position_mm": (position * 1e3).tolist(),
         "shaft_N_per_um": (k_shaft / 1e6).tolist(),
@@ -405,6 +408,7 @@ def _stiffness_rows(
         "eigenfrequency_Hz": None if freq is None else freq.tolist(),
         "friction_force_N": f_f,
         "lost_motion_um": (play * 1e6).tolist(),
+        "lost_motion_torsion_um": (twist * 1e6).tolist(),
         "nut_length_mm": nut * 1e3,
     }
     source = (
@@ -415,7 +419,8 @@ def _stiffness_rows(
         _info("axis stiffness (least over the stroke)", float(np.min(k_axis)) / 1e6, "N/um",
               source + f"; nut {k_nut / 1e6:.4g} N/um"),
         _info("lost motion at reversal (most)", float(np.max(play)) * 1e6, "um",
-              f"2 F_f / k, F_f = 2 pi T_f / l = {f_f:.3g} N (drag at creep speed)"),
+              f"2 F_f / k, F_f = 2 pi T_f / l = {f_f:.3g} N (drag at creep speed); the "
+              f"shaft's torsion adds up to {float(np.max(twist)) * 1e6:.2g} um"),
     ]  # fmt: skip
     if freq is None:
         rows.append(_missing("axial eigenfrequency", "Hz", "sqrt(k/m) / 2 pi",
