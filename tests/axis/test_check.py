@@ -64,6 +64,7 @@ def test_verdict_bands() -> None:
     assert verdict(0.5) == "OK"
     assert verdict(CHECK_FROM) == "CHECK" and verdict(1.0) == "CHECK"
     assert verdict(1.01) == "NOT OK" and verdict(math.inf) == "NOT OK"
+    assert verdict(math.nan) == "NOT OK"  # never a silent pass
 
 
 def test_life_of_a_single_nut_by_hand() -> None:

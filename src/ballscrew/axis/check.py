@@ -89,10 +89,8 @@ CREEP_SPEED = 0.1
 
 
 def verdict(utilisation: float) -> str:
-    """OK, CHECK or NOT OK for a utilisation (value over limit, above 1 fails)."""
-    if not math.isfinite(utilisation) and utilisation > 0:
-        return "NOT OK"
-    if utilisation > 1.0:
+    """OK, CHECK or NOT OK for a utilisation (value over limit, above 1 fails; NaN fails)."""
+    if math.isnan(utilisation) or utilisation > 1.0:
         return "NOT OK"
     return "CHECK" if utilisation >= CHECK_FROM else "OK"
 
