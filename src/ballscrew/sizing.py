@@ -71,6 +71,8 @@ __all__ = [
     "buckling_load",
     "combined_life",
     "cubic_mean_load",
+    "life_distance",
+    "life_hours",
     "nominal_life",
     "preloaded_loads",
     "reflected_inertia",
@@ -221,6 +223,31 @@ def nominal_life(
     with np.errstate(divide="ignore"):
         ratio = np.where(f > 0.0, c / np.where(f > 0.0, f, 1.0), np.inf)
     return np.asarray(reliability_factor(reliability) * ratio**3 * 1e6, dtype=float)
+
+
+def life_hours(revolutions: npt.ArrayLike, mean_speed: npt.ArrayLike) -> FloatArray:
+    r"""A life in revolutions as hours at a mean speed [h]: :math:`L_h = L/(60\,n_m)`.
+
+    ``mean_speed`` :math:`n_m` in rpm: the revolutions of a duty cycle over its
+    duration, dwells included (ISO 3408-5's mean speed).
+
+    >>> round(float(life_hours(9.439e9, 1500.0)))
+    104878
+    """
+    n = check_positive("mean_speed", mean_speed, "rpm")
+    return np.asarray(np.asarray(revolutions, dtype=float) / (60.0 * n), dtype=float)
+
+
+def life_distance(revolutions: npt.ArrayLike, lead: float) -> FloatArray:
+    r"""A life in revolutions as travel [m]: :math:`L_s = L\,l`.
+
+    >>> float(life_distance(1e9, 0.01)) / 1e3  # km
+    10000.0
+    """
+    return np.asarray(
+        np.asarray(revolutions, dtype=float) * float(check_positive("lead", lead, "m")),
+        dtype=float,
+    )
 
 
 def combined_life(*lives: npt.ArrayLike) -> FloatArray:

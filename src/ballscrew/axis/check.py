@@ -51,6 +51,8 @@ from ..sizing import (
     buckling_load,
     combined_life,
     cubic_mean_load,
+    life_distance,
+    life_hours,
     nominal_life,
     preloaded_loads,
     reflected_inertia,
@@ -301,8 +303,9 @@ def _life_rows(
                      "check.required_life)")  # fmt: skip
     revs = float(combined_life(nominal_life(ca, fm1, reliability),
                                nominal_life(ca, fm2, reliability)))  # fmt: skip
-    hours = revs / turns_per_second / 3600.0
-    life |= {"L10_revolutions": revs, "L10_hours": hours, "L10_km": revs * screw.lead / 1e3}
+    hours = float(life_hours(revs, turns_per_second * 60.0))
+    km = float(life_distance(revs, screw.lead)) / 1e3
+    life |= {"L10_revolutions": revs, "L10_hours": hours, "L10_km": km}
     return [
         _at_least(
             "fatigue life L10", hours, req / 3600.0, "h", source,
