@@ -118,3 +118,20 @@ def test_reflected_inertia_by_hand() -> None:
     j = reflected_inertia(150.0, 0.005, 2e-4, 1e-5)
     assert j == pytest.approx(2e-4 + 1e-5 + 150 * (0.005 / (2 * math.pi)) ** 2)
     assert reflected_inertia(150.0, 0.005, 2e-4, 1e-5, 2.0) == pytest.approx(j / 4)
+
+
+def test_misumi_worked_examples() -> None:
+    # MISUMI, Economy Series e-catalog 2025, "Selection of Ball Screws", technical data
+    # (th.c.misumi-ec.com/book/THA_EconomySeries_e-catalog2025, pages 1676 and 1678).
+    # Life: BSS1520 (C = 4400 N), mean axial load 250 N, work factor fw = 1.2, mean speed
+    # 2118 rpm: Lh = 1e6 / (60 * 2118) * (4400 / (250 * 1.2))^3 = 24824 h as printed.
+    from ballscrew.sizing import life_hours
+
+    hours = float(life_hours(nominal_life(4400.0, 250.0 * 1.2), 2118.0))
+    assert hours == pytest.approx(24_824, rel=2e-4)  # 24 826.6: the print rounds (4400/300)^3
+    # Allowable axial load: root 12.5 mm, fixed-support, 820 mm between the points of
+    # buckling: P = m d^4 / l^2 1e4 with m = 10, 3630 N as printed. Euler with E = 206 GPa
+    # and the safety 0.5 gives m = 9.98: 3623 N, 0.2 % below.
+    p = float(buckling_load(12.5e-3, 0.820, "fixed-supported"))
+    assert p == pytest.approx(3630.0, rel=3e-3)
+    assert p < 3630.0

@@ -320,7 +320,10 @@ def _load_rows(run: EnergyRun, force: FloatArray, d_r: float, span: float) -> li
     rows: list[Criterion] = []
     f_max = float(np.max(np.abs(force)))
     half_max = float(preloaded_loads(f_max, 0.0 if screw.nut == "single" else screw.preload)[0])
-    source = "ISO 3408-5:2006 cl. 6: f_s = C0a / F_max (most loaded half, preload included)"
+    source = (
+        "ISO 3408-5:2006 cl. 6: f_s = C0a / F_max (most loaded half, preload included); "
+        "least f_s: THK, Static Safety Factor, Table 21 (2, or 5 with vibration or impact)"
+    )
     if case.static_load_rating is None:
         rows.append(_missing("static safety C0a/F_max", "-", source,
                              "give screw.static_load_rating (C_0a from the catalogue) or a "

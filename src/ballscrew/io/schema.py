@@ -319,8 +319,8 @@ class CheckSection(BaseModel):
     static_safety: Value = _f(
         2.0,
         "-",
-        "least static safety factor C_0a/F_max (catalogues: 1 to 2 for machine tools, 2 to 3 "
-        "with shocks)",
+        "least static safety factor C_0a/F_max (THK's guideline: 2 without vibration or "
+        "impact, 5 with)",
     )
     accuracy_grade: str | None = _f(
         None,
