@@ -171,6 +171,13 @@ class Case:
         The screw's load ratings C_a and C_0a [N] with their sources (given,
         from the designation's catalogue row, or C_0a estimated from the
         geometry); :meth:`load_ratings` estimates them when None.
+    motor : dict
+        ``[motor]`` in SI (N·m, rad/s), the keys given.
+    check : dict
+        ``[check]`` in SI (s, -, N/m, K) and the accuracy grade, the keys given
+        or defaulted by the schema.
+    axis_given : frozenset of str
+        The ``[axis]`` keys the file wrote (a default is not a given value).
     """
 
     title: str
@@ -192,12 +199,26 @@ class Case:
     thermal: dict[str, float] = field(default_factory=dict)
     wiper_drag: float = 0.0
     ratings: Ratings | None = None
+    motor: dict[str, float] = field(default_factory=dict)
+    check: dict[str, Any] = field(default_factory=dict)
+    axis_given: frozenset[str] = frozenset()
 
     def load_ratings(self) -> Ratings:
         """The screw's load ratings: the case's, else C_0a estimated from the geometry."""
         if self.ratings is not None:
             return self.ratings
         return _estimated(self.screw, None, "")
+
+    @property
+    def dynamic_load_rating(self) -> float | None:
+        """:math:`C_a` [N] from the file or the designation's catalogue row, else None."""
+        return self.ratings.dynamic if self.ratings is not None else None
+
+    @property
+    def static_load_rating(self) -> float | None:
+        """:math:`C_{0a}` [N] from the file or the catalogue row; None when only estimated."""
+        r = self.ratings
+        return r.static if r is not None and not r.static_estimated else None
 
     def parameters_for(self, model: str) -> dict[str, Any]:
         """The case's parameters of ``model`` (a fresh dict; empty when it gives none).
@@ -302,6 +323,15 @@ def parse_case(text: str, *, source: str = "case") -> Case:
         else si("study", "temperature", st.temperature, "degC")
     )
     axis, thermal = _axis(data, si), _given_si(data, si, _THERMAL_UNITS)
+    motor = {
+        name: si("motor", name, getattr(data.motor, name), unit)
+        for name, unit in _MOTOR_UNITS
+        if getattr(data.motor, name) is not None
+    }
+    for name, value in motor.items():
+        if not (math.isfinite(value) and value > 0.0):
+            raise BallScrewInputError(f"motor.{name}", getattr(data.motor, name), "a value > 0")
+    check = _check(data, si)
     notes.extend(Assumption(r.field, r.text, f"read as {r.reading}") for r in read)
     return Case(
         title=data.title,
@@ -323,6 +353,9 @@ def parse_case(text: str, *, source: str = "case") -> Case:
         thermal=thermal,
         wiper_drag=wiper,
         ratings=ratings,
+        motor=motor,
+        check=check,
+        axis_given=frozenset(data.axis.model_fields_set),
     )
 
 
@@ -377,6 +410,53 @@ _THERMAL_UNITS = (
     ("ambient", "degC"),
 )
 """The thermal ``[axis]`` keys and their SI units."""
+
+
+_MOTOR_UNITS = (("rated_torque", "N*m"), ("peak_torque", "N*m"), ("rated_speed", "rad/s"))
+"""The ``[motor]`` keys and their SI units."""
+
+_CHECK_UNITS = (
+    ("required_life", "s"),
+    ("reliability", ""),
+    ("static_safety", ""),
+    ("support_stiffness", "N/m"),
+    ("pretension_temperature", "K"),
+)
+"""The numeric ``[check]`` keys and their SI units."""
+
+
+def _check(data: CaseFile, si: Callable[[str, str, Any, str], float]) -> dict[str, Any]:
+    """``[check]`` in SI, each value checked for its range."""
+    c = data.check
+    out: dict[str, Any] = {
+        name: si("check", name, getattr(c, name), unit)
+        for name, unit in _CHECK_UNITS
+        if getattr(c, name) is not None
+    }
+    for name in ("required_life", "static_safety", "support_stiffness"):
+        if name in out and not (math.isfinite(out[name]) and out[name] > 0.0):
+            raise BallScrewInputError(f"check.{name}", getattr(c, name), "a value > 0")
+    from ..sizing import RELIABILITY_FACTORS, TRAVEL_VARIATION_300
+
+    levels = [k for k in RELIABILITY_FACTORS if abs(k - out["reliability"]) < 1e-9]
+    if not levels:
+        raise BallScrewInputError(
+            "check.reliability", c.reliability,
+            "one of 90, 95, 96, 97, 98 or 99 % (ISO 3408-5's a1)",
+        )  # fmt: skip
+    out["reliability"] = levels[0]
+    if not (math.isfinite(out["pretension_temperature"]) and out["pretension_temperature"] >= 0):
+        raise BallScrewInputError(
+            "check.pretension_temperature", c.pretension_temperature, "a temperature rise >= 0 K"
+        )
+    if c.accuracy_grade is not None:
+        grade = c.accuracy_grade.strip().upper()
+        if grade not in TRAVEL_VARIATION_300:
+            raise BallScrewInputError(
+                "check.accuracy_grade", c.accuracy_grade, f"one of {list(TRAVEL_VARIATION_300)}"
+            )
+        out["accuracy_grade"] = grade
+    return out
 
 
 def _given_si(
@@ -481,8 +561,10 @@ def _screw(
         static = si("screw", "static_load_rating", s.static_load_rating, "N")
         static_source = "screw.static_load_rating"
     for name, value in (("dynamic_load_rating", rating), ("static_load_rating", static)):
-        if value is not None and not (math.isfinite(value) and value > 0.0):
-            raise BallScrewInputError(f"screw.{name}", getattr(s, name), "a force > 0")
+        if value is not None and not (math.isfinite(value) and 0.0 < value <= 1e8):
+            raise BallScrewInputError(
+                f"screw.{name}", getattr(s, name), "a force > 0 and <= 100 MN"
+            )
     ways = [
         k for k in ("preload", "preload_drag_torque", "preload_share") if getattr(s, k) is not None
     ]
