@@ -27,3 +27,22 @@ BUILT_IN_MODELS = (
 )
 #: Every registered model, the built-in ones and any a test run added.
 ALL_MODELS = sorted(m.name for m in models())
+
+
+def reference_case_toml(title: str, speed: str, axial_load: str, more: str = "") -> str:
+    """A case file of the README's reference double nut in PAO ISO VG 68 at 40 degC.
+
+    ``more`` is appended: further tables, e.g. ``[axis]``.
+    """
+    return f"""\
+title = "{title}"
+[screw]
+designation = "40x10 double 2.5x2 6.35"
+preload = "2 kN"
+[lubricant]
+name = "PAO ISO VG 68"
+[operation]
+speed = "{speed}"
+temperature = "40 degC"
+axial_load = "{axial_load}"
+{more}"""

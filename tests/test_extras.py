@@ -19,6 +19,7 @@ from ballscrew.extras import EXTRAS, MissingExtraError, MissingExtraWarning, mis
 from cli_runner import run
 
 ROOT = Path(__file__).resolve().parents[1]
+CHECK_MOVE = "stroke=300 mm, feed=12 m/min, acceleration=3 m/s^2"
 OPTIONAL = sorted({m for modules in EXTRAS.values() for m in modules})
 
 
@@ -122,7 +123,13 @@ main({args!r})
 
 @pytest.mark.parametrize(
     "args",
-    [["torque", "--speed", "100 rpm"], ["case", "--template"], ["models"], ["screws"]],
+    [
+        ["torque", "--speed", "100 rpm"],
+        ["case", "--template"],
+        ["models"],
+        ["screws"],
+        ["check", "--case", str(ROOT / "examples" / "vertical_32x5.toml"), "--move", CHECK_MOVE],
+    ],
     ids=lambda a: a[0],
 )
 def test_core_commands_run_without_any_extra(args: list[str], tmp_path: Path) -> None:

@@ -83,6 +83,11 @@ _NOTED: set[tuple[str, str]] = set()
 """(quantity, model) of the routine range issues already told in this session."""
 
 
+_UNSOLVED = (ArithmeticError, RuntimeError, np.linalg.LinAlgError)
+"""What a model's numerics raise where it cannot solve a point (an overflow, a root
+bracket that fails, a singular system): reported as an input error naming the points."""
+
+
 def models() -> list[ModelSpec]:
     """The registered friction models, with title, reference, validity and parameters.
 
@@ -161,10 +166,12 @@ def friction_torque(
     if isinstance(chunk, bool) or not isinstance(chunk, int) or chunk < 1:
         raise BallScrewInputError("chunk_size", chunk_size, "a whole number >= 1")
     w0, t0, fa0 = operating_points(speed, temperature, axial_load, broadcast=False)
+    lubricant.check_temperature("temperature", t0)
     w, t, fa = np.broadcast_arrays(w0, t0, fa0)
     used = dict(spec.parameters)
     used.update(parameters)
     components, state = _evaluate(spec, screw, lubricant, (w0, t0, fa0), chunk, used, parameters)
+    _check_solved(spec.name, components, w, t, fa)
     total = np.zeros(w.shape)
     for value in components.values():
         total = total + value
@@ -240,18 +247,75 @@ def _evaluate(
     if n <= chunk:
         # The unexpanded inputs: a grid given as an outer product is only
         # expanded where a quantity depends on all three.
-        state = state_of(w0, t0, fa0)
-        out = spec(screw, lubricant, w0, t0, fa0, state, **parameters)
+        try:
+            state = state_of(w0, t0, fa0)
+            out = spec(screw, lubricant, w0, t0, fa0, state, **parameters)
+        except _UNSOLVED as exc:
+            raise _unsolved(spec.name, exc, w0, t0, fa0) from exc
         return {k: np.array(np.broadcast_to(v, shape), dtype=float) for k, v in out.items()}, state
     flat = [np.ascontiguousarray(x).reshape(-1) for x in np.broadcast_arrays(w0, t0, fa0)]
     pieces: dict[str, list[FloatArray]] = {}
     for start in range(0, n, chunk):
         sw, st, sf = (x[start : min(start + chunk, n)] for x in flat)
-        for key, value in spec(
-            screw, lubricant, sw, st, sf, state_of(sw, st, sf), **parameters
-        ).items():
+        try:
+            out = spec(screw, lubricant, sw, st, sf, state_of(sw, st, sf), **parameters)
+        except _UNSOLVED as exc:
+            raise _unsolved(spec.name, exc, sw, st, sf) from exc
+        for key, value in out.items():
             pieces.setdefault(key, []).append(value)
     return {key: np.concatenate(parts).reshape(shape) for key, parts in pieces.items()}, None
+
+
+def _point(w: Any, t: Any, fa: Any) -> str:
+    """An operating point (or the span of several) as the user would name it."""
+    w, t, fa = (np.asarray(x, dtype=float) for x in (w, t, fa))
+
+    def span(x: FloatArray, unit: str) -> str:
+        lo, hi = float(np.min(x)), float(np.max(x))
+        return f"{lo:g} {unit}" if lo == hi else f"{lo:g} to {hi:g} {unit}"
+
+    rpm = w * (30.0 / math.pi)
+    return f"speed {span(rpm, 'rpm')}, temperature {span(t, 'degC')}, axial_load {span(fa, 'N')}"
+
+
+def _unsolved(model: str, exc: BaseException, w: Any, t: Any, fa: Any) -> BallScrewInputError:
+    """The input error for points whose numerics failed in the model (``exc``)."""
+    return BallScrewInputError(
+        "operating point",
+        _point(w, t, fa),
+        f"points model {model!r} can solve: its numerics failed there "
+        f"({type(exc).__name__}: {exc})",
+    )
+
+
+def _check_solved(
+    model: str,
+    components: Mapping[str, FloatArray],
+    w: FloatArray,
+    t: FloatArray,
+    fa: FloatArray,
+) -> None:
+    """Refuse the points where a component is not a finite torque >= 0, naming the first.
+
+    Friction opposes the motion: a negative or non-finite contribution means the
+    model was taken where its equations no longer hold (the viscoelastic model
+    far past any real speed, say), and a plausible-looking total must not be
+    given out there.
+    """
+    for name, value in components.items():
+        ok = np.isfinite(value) & (value >= 0.0)
+        if ok.all():
+            continue
+        first = np.unravel_index(int(np.argmin(ok)), ok.shape) if ok.ndim else ()
+        bad = float(np.asarray(value)[first])
+        count = int(ok.size - np.count_nonzero(ok))
+        raise BallScrewInputError(
+            "operating point",
+            _point(w[first], t[first], fa[first]),
+            f"a point model {model!r} can solve: its {name!r} torque there is {bad:g} N*m, "
+            f"not a finite torque >= 0 ({count} of {ok.size} points), so the model is "
+            "taken past where its equations hold",
+        )
 
 
 def _warn(issues: list[ValidityIssue]) -> None:

@@ -47,6 +47,10 @@ class BallScrewInputError(ValueError):
         self.allowed = allowed
         super().__init__(f"{field} = {_show(value)} is not allowed: {allowed}")
 
+    def __reduce__(self) -> tuple[Any, ...]:
+        """Pickled with its three parts (to a worker process and back), not its message."""
+        return (type(self), (self.field, self.value, self.allowed))
+
 
 class BallScrewValidityWarning(UserWarning):
     """An input lies outside the published validity range of a model or correlation.

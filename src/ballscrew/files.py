@@ -31,6 +31,7 @@ __all__ = [
     "atomic_write",
     "deferred_signals",
     "exclusive_lock",
+    "swap_in",
     "sweep_temporaries",
 ]
 
@@ -164,17 +165,27 @@ def atomic_folder(folder: Path) -> Iterator[Path]:
     tmp.mkdir()
     try:
         yield tmp
-        with deferred_signals():
-            old = None
-            if folder.exists():
-                old = folder.parent / f".{folder.name}.{secrets.token_hex(6)}.old"
-                folder.rename(old)
-            tmp.rename(folder)
-        if old is not None:
+        old = folder.parent / f".{folder.name}.{secrets.token_hex(6)}.old"
+        if swap_in(tmp, folder, aside=old):
             _remove_tree(old)
     except BaseException:
         _remove_tree(tmp)
         raise
+
+
+def swap_in(new: Path, target: Path, *, aside: Path) -> bool:
+    """Rename ``new`` to ``target``, moving an existing ``target`` to ``aside`` first.
+
+    Both renames happen under :func:`deferred_signals`, so an interrupt leaves
+    ``target`` whole: the earlier one or the new one. Returns whether an earlier
+    ``target`` was moved aside (the caller removes ``aside`` then).
+    """
+    with deferred_signals():
+        moved = target.exists()
+        if moved:
+            target.rename(aside)
+        new.rename(target)
+    return moved
 
 
 def _remove_tree(path: Path) -> None:

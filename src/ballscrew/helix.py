@@ -167,13 +167,18 @@ def _tables(aspect: float) -> tuple[FloatArray, FloatArray, FloatArray]:
     return t, j_scaled, np.append(g, 1.0)
 
 
-def _lookup(aspect: float, sigma: FloatArray) -> tuple[FloatArray, FloatArray]:
-    """J and G at finite slip ratios ``sigma`` >= 0, by linear interpolation."""
-    t_nodes, j_nodes, g_nodes = _tables(aspect)
-    t = sigma / (1.0 + sigma)
-    j: FloatArray = np.interp(t, t_nodes, j_nodes) * (1.0 + sigma)
-    g: FloatArray = np.interp(t, t_nodes, g_nodes)
-    return j, g
+def _lookup_j(aspect: float, sigma: FloatArray) -> FloatArray:
+    """J at finite slip ratios ``sigma`` >= 0, by linear interpolation in the table."""
+    t_nodes, j_nodes, _ = _tables(aspect)
+    j: FloatArray = np.interp(sigma / (1.0 + sigma), t_nodes, j_nodes) * (1.0 + sigma)
+    return j
+
+
+def _lookup_g(aspect: float, sigma: FloatArray) -> FloatArray:
+    """G at slip ratios ``sigma`` >= 0, as :func:`_lookup_j` (the root finder needs only G)."""
+    t_nodes, _, g_nodes = _tables(aspect)
+    g: FloatArray = np.interp(sigma / (1.0 + sigma), t_nodes, g_nodes)
+    return g
 
 
 def _check_contacts(contacts: Sequence[SlipContact]) -> None:
@@ -240,7 +245,7 @@ def transverse_slip_loss(contacts: Sequence[SlipContact], slip: float) -> SlipSh
         total: FloatArray = np.zeros(np.shape(x))
         for k, c in enumerate(contacts):
             if c.side == side:
-                g = _lookup(c.aspect, ratio(share * s, k, index))[1]
+                g = _lookup_g(c.aspect, ratio(share * s, k, index))
                 total = total + capacity[k][index] * g
         return total
 
@@ -266,8 +271,8 @@ def transverse_slip_loss(contacts: Sequence[SlipContact], slip: float) -> SlipSh
     power = np.zeros(n)
     for k, c in enumerate(contacts):
         share = x if c.side == "screw" else 1.0 - x
-        j_slip = _lookup(c.aspect, ratio(share * s, k, everything))[0]
-        j_spin = _lookup(c.aspect, np.zeros(n))[0]
+        j_slip = _lookup_j(c.aspect, ratio(share * s, k, everything))
+        j_spin = _lookup_j(c.aspect, np.zeros(n))
         power += capacity[k] * 1.5 / math.pi * scale[k] * (j_slip - j_spin)
     force = side_force(x, "screw", everything)
     return SlipShare(

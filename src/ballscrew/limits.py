@@ -1,5 +1,11 @@
 r"""Speed limits of a ball screw: the shaft's critical speed and the nut's d·n value.
 
+**Bounds of any operating point.** Far past any ball screw, so that nothing
+absurd reaches the models (:func:`check_operating_bounds`): a speed below
+:data:`MAX_SPEED` (about a million rpm), a temperature from absolute zero to
+:data:`MAX_TEMPERATURE` (no lubricant survives more) and an axial load below
+:data:`MAX_FORCE` (100 MN) in either direction.
+
 **Critical speed.** A rotating shaft whips when its speed reaches the first
 bending natural frequency. For a uniform Euler-Bernoulli beam of span
 :math:`L` with the section of the thread's root, :math:`d_r`:
@@ -38,18 +44,58 @@ from typing import Literal
 
 import numpy.typing as npt
 
-from .errors import BallScrewInputError, FloatArray, check_positive
+from .errors import BallScrewInputError, FloatArray, check_in_range, check_positive
 from .geometry import BallScrew
 from .kinematics import rad_s_to_rpm
 
 __all__ = [
     "DEFAULT_DN_LIMIT",
+    "MAX_FORCE",
+    "MAX_SPEED",
+    "MAX_TEMPERATURE",
     "SUPPORT_EIGENVALUES",
     "Support",
+    "check_operating_bounds",
     "critical_speed",
     "root_diameter",
     "speed_limit_issues",
 ]
+
+MAX_SPEED = 1e5
+"""The largest screw speed any model is asked for [rad/s] (about 955 000 rpm)."""
+MAX_TEMPERATURE = 500.0
+"""The highest lubricant temperature [°C]."""
+MAX_FORCE = 1e8
+"""The largest axial load [N] (the preload's bound is :data:`ballscrew.geometry.MAX_PRELOAD`)."""
+
+
+def check_operating_bounds(
+    speed: npt.ArrayLike, temperature: npt.ArrayLike, axial_load: npt.ArrayLike, prefix: str = ""
+) -> tuple[FloatArray, FloatArray, FloatArray]:
+    """Speed [rad/s], temperature [°C] and axial load [N] as float arrays, each within its bound.
+
+    ``prefix`` goes before the field named in an error (``"operation."`` for a
+    case file's keys).
+
+    Examples
+    --------
+    >>> check_operating_bounds(2e5, 20.0, 0.0)
+    Traceback (most recent call last):
+    ...
+    ballscrew.errors.BallScrewInputError: speed = 200000.0 is not allowed: a value in (-100000, 100000) rad/s (about a million rpm at most)
+    """  # noqa: E501
+    w = check_in_range(
+        f"{prefix}speed", speed, -MAX_SPEED, MAX_SPEED, unit="rad/s (about a million rpm at most)"
+    )
+    t = check_in_range(
+        f"{prefix}temperature", temperature, -273.15, MAX_TEMPERATURE,
+        unit="°C (above absolute zero, at most 500 °C: no lubricant survives more)",
+    )  # fmt: skip
+    fa = check_in_range(
+        f"{prefix}axial_load", axial_load, -MAX_FORCE, MAX_FORCE, unit="N (at most 100 MN)"
+    )
+    return w, t, fa
+
 
 Support = Literal["fixed-free", "supported-supported", "fixed-supported", "fixed-fixed"]
 

@@ -174,7 +174,10 @@ def astm_d341_viscosity(temperature: ArrayLike, a: ArrayLike, b: ArrayLike) -> F
     with np.errstate(over="ignore"):
         z = 10.0 ** (10.0 ** (np.asarray(a) - np.asarray(b) * np.log10(t)))
     zm = z - 0.7
-    correction = np.exp(-0.7487 - 3.295 * zm + 0.6119 * zm**2 - 0.3193 * zm**3)
+    # The correction vanishes above a few mm²/s (exp(-292) at 10): capping its
+    # argument keeps an overflowed Z an infinite viscosity instead of inf - inf.
+    zc = np.minimum(zm, 10.0)
+    correction = np.exp(-0.7487 - 3.295 * zc + 0.6119 * zc**2 - 0.3193 * zc**3)
     result: FloatArray = (zm - correction) * _CST
     return result
 
@@ -601,6 +604,8 @@ class Lubricant:
             Other fields of :class:`Lubricant`.
         """
         if pressure_viscosity is None:
+            # nu40 checked here, by its own name: the estimate would refuse it as its input.
+            check_positive("nu40", nu40, "m²/s")
             pressure_viscosity = float(pressure_viscosity_jungnickel(nu40))
             kwargs.setdefault("source", "pressure-viscosity estimated (Jungnickel)")
         return cls(
@@ -629,6 +634,31 @@ class Lubricant:
             return vogel_viscosity(temperature, a, b)
         a, b = astm_d341_constants(self.nu40, 40.0, self.nu100, 100.0)
         return astm_d341_viscosity(temperature, a, b)
+
+    def check_temperature(self, field: str, temperature: ArrayLike) -> FloatArray:
+        """Return ``temperature`` [°C], refused (as ``field``) where this oil has no viscosity.
+
+        Far below its pour point the viscosity-temperature fit of an oil
+        overflows (the ASTM D341 fit of a VG 68 oil near -230 °C) or passes the
+        pole of Vogel's equation: no friction can be computed there, and the
+        error names the temperature the user gave, not a viscosity.
+        """
+        t = check_in_range(field, temperature, -KELVIN, np.inf, unit="°C (above absolute zero)")
+        with np.errstate(over="ignore", invalid="ignore"):
+            if self.viscosity_model == "vogel":
+                ok = t + 95.0 > 0.0
+            else:
+                ok = np.isfinite(self.kinematic_viscosity(t))
+        if not np.all(ok):
+            cold = float(np.min(np.asarray(t)[~np.asarray(ok)]))
+            raise BallScrewInputError(
+                field,
+                cold,
+                f"a temperature at which {self.name}'s viscosity-temperature fit gives a "
+                f"viscosity ({self.viscosity_model} fit through 40 and 100 °C; it has none "
+                "this far below the pour point, where the oil is a solid)",
+            )
+        return t
 
     def density(self, temperature: ArrayLike) -> FloatArray:
         """Density [kg/m³] at ``temperature`` [°C], see :func:`density_linear`."""

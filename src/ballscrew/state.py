@@ -30,9 +30,10 @@ import numpy.typing as npt
 
 from . import ehl
 from .contact import HertzContact, hertz
-from .errors import FloatArray, broadcast_inputs, check_in_range
+from .errors import FloatArray, broadcast_inputs
 from .geometry import BallScrew
 from .kinematics import Kinematics, kinematics
+from .limits import check_operating_bounds
 from .loads import BallLoads, ball_loads
 from .lubricant import Lubricant
 
@@ -137,14 +138,6 @@ class OperatingState:
     shape: tuple[int, ...] = ()
 
 
-MAX_SPEED = 1e5
-"""The largest screw speed any model is asked for [rad/s] (about 955 000 rpm)."""
-MAX_TEMPERATURE = 500.0
-"""The highest lubricant temperature [°C]."""
-MAX_FORCE = 1e8
-"""The largest axial load or preload [N]."""
-
-
 def operating_points(
     speed: npt.ArrayLike,
     temperature: npt.ArrayLike,
@@ -160,20 +153,8 @@ def operating_points(
     axial loads), and a grid given as an outer product is not expanded
     before the quantities that need every combination.
     """
-    # Bounds far past any ball screw, so that nothing absurd reaches the models: a
-    # million rpm, 500 °C (no lubricant survives it), 100 MN.
-    arrays = {
-        "speed": check_in_range(
-            "speed", speed, -MAX_SPEED, MAX_SPEED, unit="rad/s (about a million rpm at most)"
-        ),
-        "temperature": check_in_range(
-            "temperature", temperature, -273.15, MAX_TEMPERATURE,
-            unit="°C (above absolute zero, at most 500 °C: no lubricant survives more)",
-        ),
-        "axial_load": check_in_range(
-            "axial_load", axial_load, -MAX_FORCE, MAX_FORCE, unit="N (at most 100 MN)"
-        ),
-    }  # fmt: skip
+    w, t, fa = check_operating_bounds(speed, temperature, axial_load)
+    arrays = {"speed": w, "temperature": t, "axial_load": fa}
     if broadcast:
         w, t, fa = broadcast_inputs(**arrays)
         return w, t, fa
@@ -230,7 +211,27 @@ def operating_state(
     eta = lubricant.dynamic_viscosity(t)
     ep = screw.reduced_modulus
     g = ehl.dimensionless_materials(lubricant.pressure_viscosity, ep)
-    sides: dict[str, tuple[float, float, float, float]] = {
+    contacts: list[ContactState] = []
+    for family, q, balls in ((1, bl.normal_load_1, bl.balls_1), (2, bl.normal_load_2, bl.balls_2)):
+        for side, curvature in _sides(screw).items():
+            contacts.append(
+                _contact_state(side, family, q, balls, curvature, kin, eta, g, ep, hertz_method,
+                               (asperity_b, asperity_c))
+            )  # fmt: skip
+    return OperatingState(
+        screw=screw,
+        lubricant=lubricant,
+        temperature=t,
+        kinematics=kin,
+        loads=bl,
+        contacts=tuple(contacts),
+        shape=np.broadcast_shapes(w.shape, t.shape, fa.shape),
+    )
+
+
+def _sides(screw: BallScrew) -> dict[str, tuple[float, float, float, float]]:
+    """Each side's radii of curvature, contact radius and composite roughness [m]."""
+    return {
         "screw": (
             screw.rx_screw,
             screw.ry_screw,
@@ -244,49 +245,52 @@ def operating_state(
             screw.composite_roughness_nut,
         ),
     }
-    contacts: list[ContactState] = []
-    for family, q, balls in ((1, bl.normal_load_1, bl.balls_1), (2, bl.normal_load_2, bl.balls_2)):
-        for side, (rx, ry, radius, sigma) in sides.items():
-            hz = hertz(q, rx, ry, ep, method=hertz_method)
-            u_par = ehl.dimensionless_speed(eta, kin.entrainment_speed, ep, rx)
-            w_par = ehl.dimensionless_load(q, ep, rx)
-            # An unloaded contact (single-nut family 2, lift-off) has no film:
-            # film, film parameter and asperity share are reported as 0 there
-            # (the fits would otherwise diverge as W**-0.07 at W -> 0).
-            loaded = w_par > 0.0
-            w_safe = np.where(loaded, w_par, 1.0)
-            h_min = np.where(
-                loaded, ehl.hamrock_dowson_1977_minimum(rx, u_par, g, w_safe, hz.ellipticity), 0.0
-            )
-            lam = ehl.lambda_ratio(h_min, sigma)
-            share = np.where(loaded, ehl.asperity_share(lam, asperity_b, asperity_c), 0.0)
-            contacts.append(
-                ContactState(
-                    side=side,  # type: ignore[arg-type]
-                    family=family,
-                    balls=balls,
-                    load=q,
-                    rx=rx,
-                    ry=ry,
-                    radius=radius,
-                    hertz=hz,
-                    entrainment_speed=kin.entrainment_speed,
-                    viscosity=eta,
-                    speed_parameter=u_par,
-                    materials_parameter=np.broadcast_to(g, q.shape),
-                    load_parameter=w_par,
-                    film_minimum=h_min,
-                    roughness=sigma,
-                    film_parameter=lam,
-                    asperity_share=share,
-                )
-            )
-    return OperatingState(
-        screw=screw,
-        lubricant=lubricant,
-        temperature=t,
-        kinematics=kin,
-        loads=bl,
-        contacts=tuple(contacts),
-        shape=np.broadcast_shapes(w.shape, t.shape, fa.shape),
+
+
+def _contact_state(
+    side: str,
+    family: int,
+    q: FloatArray,
+    balls: int,
+    curvature: tuple[float, float, float, float],
+    kin: Kinematics,
+    eta: FloatArray,
+    g: FloatArray,
+    ep: float,
+    hertz_method: str,
+    asperity: tuple[float, float],
+) -> ContactState:
+    """One ball contact of a family on one side: Hertz, the film and the asperity share."""
+    rx, ry, radius, sigma = curvature
+    hz = hertz(q, rx, ry, ep, method=hertz_method)
+    u_par = ehl.dimensionless_speed(eta, kin.entrainment_speed, ep, rx)
+    w_par = ehl.dimensionless_load(q, ep, rx)
+    # An unloaded contact (single-nut family 2, lift-off) has no film:
+    # film, film parameter and asperity share are reported as 0 there
+    # (the fits would otherwise diverge as W**-0.07 at W -> 0).
+    loaded = w_par > 0.0
+    w_safe = np.where(loaded, w_par, 1.0)
+    h_min = np.where(
+        loaded, ehl.hamrock_dowson_1977_minimum(rx, u_par, g, w_safe, hz.ellipticity), 0.0
+    )
+    lam = ehl.lambda_ratio(h_min, sigma)
+    share = np.where(loaded, ehl.asperity_share(lam, *asperity), 0.0)
+    return ContactState(
+        side=side,  # type: ignore[arg-type]
+        family=family,
+        balls=balls,
+        load=q,
+        rx=rx,
+        ry=ry,
+        radius=radius,
+        hertz=hz,
+        entrainment_speed=kin.entrainment_speed,
+        viscosity=eta,
+        speed_parameter=u_par,
+        materials_parameter=np.broadcast_to(g, q.shape),
+        load_parameter=w_par,
+        film_minimum=h_min,
+        roughness=sigma,
+        film_parameter=lam,
+        asperity_share=share,
     )

@@ -46,15 +46,44 @@ revolution (``U/min``), not an enzyme unit; ``RPM`` is ``rpm``.
 from __future__ import annotations
 
 import functools
+import importlib
 import math
 import re
+import sys
 import warnings
 from dataclasses import dataclass
-from typing import Any
-
-import pint
+from types import ModuleType
+from typing import TYPE_CHECKING, Any
 
 from .errors import BallScrewInputError, BallScrewReadingWarning
+
+
+def _import_pint_without_dask() -> ModuleType:
+    """Pint, imported without its support for dask arrays.
+
+    Pint looks for dask when it is imported (``importlib.util.find_spec``) and,
+    finding it, imports ``dask.base`` to let quantities wrap dask arrays: about
+    0.2 s of CPU in every command, though this package hands pint only strings
+    and floats (units are converted to SI at the boundary). While pint is
+    imported, a ``None`` entry for dask in ``sys.modules`` makes ``find_spec``
+    answer that dask is absent; the entry is removed at once, so dask imports
+    as usual afterwards (sweeps). Nothing changes if either is already imported.
+    """
+    if "pint" in sys.modules or "dask" in sys.modules:
+        return importlib.import_module("pint")
+    sys.modules["dask"] = None  # type: ignore[assignment]
+    try:
+        return importlib.import_module("pint")
+    finally:
+        real = sys.modules.pop("dask", None)
+        if real is not None:  # a real dask module, not the entry set above: keep it
+            sys.modules["dask"] = real
+
+
+if TYPE_CHECKING:
+    import pint
+else:
+    pint = _import_pint_without_dask()
 
 __all__ = [
     "MAX_TEXT",
@@ -426,13 +455,9 @@ def to_si(field: str, value: Any, unit: str | None, notes: list[Reading] | None 
     if isinstance(value, int | float):
         if unit:
             raise _bare(field, value, unit)
-        magnitude = float(value)
-    else:
-        number, unit_text = split_quantity(field, str(value))
-        magnitude = _value_si(field, str(value).strip(), number, unit_text, unit, notes)
-    if not math.isfinite(magnitude):
-        raise BallScrewInputError(field, value, "a finite quantity")
-    return magnitude
+        return _finite(field, value, float(value))
+    number, unit_text = split_quantity(field, str(value))
+    return _value_si(field, str(value).strip(), number, unit_text, unit, notes)
 
 
 def _value_si(
@@ -446,9 +471,13 @@ def _value_si(
     """One number in ``unit_text`` to ``unit``: a bare number only where no unit is wanted."""
     if not unit_text and unit:
         raise _bare(field, text, unit)
-    magnitude = float(_convert(field, text, number, unit_text, unit, notes))
+    return _finite(field, text, float(_convert(field, text, number, unit_text, unit, notes)))
+
+
+def _finite(field: str, given: object, magnitude: float) -> float:
+    """``magnitude`` if it is finite; else the error naming the value as ``given``."""
     if not math.isfinite(magnitude):
-        raise BallScrewInputError(field, text, "a finite quantity")
+        raise BallScrewInputError(field, given, "a finite quantity")
     return magnitude
 
 

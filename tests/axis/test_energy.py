@@ -18,12 +18,27 @@ OIL = PAO
 FAST = 150_000.0  # d·n limit of a high-speed nut [mm·rpm]: 0.5 m/s on a 10 mm lead is 3000 rpm
 
 
-def test_constant_speed_energy_is_torque_times_speed_times_time() -> None:
-    # 2 s at 0.25 m/s (1500 rpm on a 10 mm lead) and 1.5 kN: E = T omega t.
+def _axis_case(folder: object, more: str) -> Path:
+    """The 40 x 10 mm screw in mineral oil as a case file in ``folder``, with ``more`` tables."""
+    case = Path(str(folder)) / "axis.toml"
+    case.write_text(
+        '[screw]\npitch_diameter = "40 mm"\nlead = "10 mm"\nball_diameter = "6.35 mm"\n'
+        'preload = "2 kN"\n[lubricant]\nname = "mineral ISO VG 68"\n' + more
+    )
+    return case
+
+
+def _steady_run() -> Profile:
+    """2 s at a constant 0.25 m/s against 1.5 kN (1500 rpm on a 10 mm lead)."""
     t = np.linspace(0.0, 2.0, 11)
     v = np.full_like(t, 0.25)
     zero = np.zeros_like(t)
-    p = Profile(t, v * t, v, zero, zero + 1500.0)
+    return Profile(t, v * t, v, zero, zero + 1500.0)
+
+
+def test_constant_speed_energy_is_torque_times_speed_times_time() -> None:
+    # 2 s at 0.25 m/s (1500 rpm on a 10 mm lead) and 1.5 kN: E = T omega t.
+    p = _steady_run()
     s = reference_screw()
     r = axis_cycle(p, s, OIL, Axis(moving_mass=0.0))
     omega = 2 * math.pi * 0.25 / s.lead
@@ -87,12 +102,10 @@ def test_energy_command_json_and_errors(
 
     from ballscrew.cli import main
 
-    case = tmp_path / "axis.toml"  # type: ignore[operator]
-    case.write_text(
-        '[screw]\npitch_diameter = "40 mm"\nlead = "10 mm"\nball_diameter = "6.35 mm"\n'
-        'preload = "2 kN"\n[lubricant]\nname = "mineral ISO VG 68"\n'
+    case = _axis_case(
+        tmp_path,
         '[operation]\ntemperature = "40 degC"\n[axis]\nmoving_mass = "200 kg"\n'
-        'dn_limit = "150000 mm*rpm"\n'
+        'dn_limit = "150000 mm*rpm"\n',
     )
     move_text = "stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2, force=2 kN"
     with pytest.raises(SystemExit) as info:
@@ -142,11 +155,8 @@ def test_energy_command_reports_the_temperature_and_takes_a_profile(
     from ballscrew.axis.thermal import ThermalNode, steady_temperature
     from ballscrew.cli import main
 
-    case = tmp_path / "axis.toml"  # type: ignore[operator]
-    case.write_text(
-        '[screw]\npitch_diameter = "40 mm"\nlead = "10 mm"\nball_diameter = "6.35 mm"\n'
-        'preload = "2 kN"\n[lubricant]\nname = "mineral ISO VG 68"\n'
-        '[axis]\nmoving_mass = "200 kg"\nscrew_length = "1 m"\nnut_mass = "3 kg"\n'
+    case = _axis_case(
+        tmp_path, '[axis]\nmoving_mass = "200 kg"\nscrew_length = "1 m"\nnut_mass = "3 kg"\n'
     )
     profile = tmp_path / "p.csv"  # type: ignore[operator]
     profile.write_text("time [s],speed [m/min]\n0,0\n0.25,30\n0.85,30\n1.1,0\n")
@@ -174,10 +184,7 @@ def test_support_bearing_friction_is_reported_and_driven() -> None:
     # SKF's simplified estimate, M = mu P d / 2 (angular-contact single row:
     # mu = 0.002): at 0.25 m/s and 1.5 kN for 2 s on a 25 mm bore,
     # E = 0.5 * 0.002 * 1500 * 0.025 * omega * 2 s, and the motor supplies it.
-    t = np.linspace(0.0, 2.0, 11)
-    v = np.full_like(t, 0.25)
-    zero = np.zeros_like(t)
-    p = Profile(t, v * t, v, zero, zero + 1500.0)
+    p = _steady_run()
     s = reference_screw()
     without = axis_cycle(p, s, OIL, Axis(moving_mass=0.0))
     with_b = axis_cycle(p, s, OIL, Axis(moving_mass=0.0, bearing_bore=0.025))
@@ -195,12 +202,7 @@ def test_energy_report_files_are_complete_and_reproducible(
 ) -> None:
     from ballscrew.cli import main
 
-    case = tmp_path / "axis.toml"  # type: ignore[operator]
-    case.write_text(
-        '[screw]\npitch_diameter = "40 mm"\nlead = "10 mm"\nball_diameter = "6.35 mm"\n'
-        'preload = "2 kN"\n[lubricant]\nname = "mineral ISO VG 68"\n'
-        '[axis]\nmoving_mass = "200 kg"\nbearing_bore = "30 mm"\n'
-    )
+    case = _axis_case(tmp_path, '[axis]\nmoving_mass = "200 kg"\nbearing_bore = "30 mm"\n')
     outputs = []
     for k in range(2):
         out = tmp_path / f"r{k}"  # type: ignore[operator]
@@ -236,12 +238,7 @@ def _energy_json(
 
     from ballscrew.cli import main
 
-    case = tmp_path / "axis.toml"
-    case.write_text(
-        '[screw]\npitch_diameter = "40 mm"\nlead = "10 mm"\nball_diameter = "6.35 mm"\n'
-        'preload = "2 kN"\n[lubricant]\nname = "mineral ISO VG 68"\n'
-        f'[axis]\nmoving_mass = "200 kg"\n{axis_line}\n'
-    )
+    case = _axis_case(tmp_path, f'[axis]\nmoving_mass = "200 kg"\n{axis_line}\n')
     with pytest.raises(SystemExit) as info:
         main(["energy", "--case", str(case), *args, "--json", "-"])
     assert info.value.code == 0

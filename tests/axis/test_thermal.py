@@ -36,7 +36,7 @@ def test_steady_state_heat_in_equals_heat_out() -> None:
     s = steady_temperature(CYCLE, reference_screw(), "mineral ISO VG 68", Axis(moving_mass=200.0),
                            node)  # fmt: skip
     assert s.temperature > 20.0
-    # Bisection to 200 K / 2^60: the balance holds to rounding.
+    # The root is found to 1e-11 K on the balance itself: it holds to rounding.
     assert s.heat_out == pytest.approx(s.friction_power, rel=1e-9)
 
 

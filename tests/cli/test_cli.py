@@ -22,7 +22,7 @@ def test_version_and_help(capsys: pytest.CaptureFixture[str]) -> None:
     code, out, _ = run(["--version"], capsys)
     assert code == 0 and __version__ in out
     for command in ("study", "torque", "models", "lubricants", "demo", "case", "screws", "energy",
-                    "serve"):  # fmt: skip
+                    "check", "serve"):  # fmt: skip
         code, out, _ = run([command, "--help"], capsys)
         assert code == 0 and "Example" in out, command
 

@@ -71,3 +71,29 @@ def test_cli(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     assert code == 0 and "NOT ACCEPTED (+38.7% from the reference)" in out
     code, _, err = run(["acceptance", "--case", str(case)], capsys)
     assert code == 2 and "--torque" in err
+
+
+def test_unit_slip_note_at_its_edges() -> None:
+    # The note fires past a factor of 100 either way (N*mm read as N*m is 1000).
+    def slip(mean: float, reference: float) -> bool:
+        return any("check the torque unit" in n for n in accept_drag_torque(mean, reference).notes)
+
+    assert slip(60.0, 0.5) and not slip(45.0, 0.5)  # 120 and 90 times
+    assert not slip(50.0, 0.5) and slip(52.5, 0.5)  # exactly 100 is not past it; 105 is
+    assert not slip(0.005, 0.5) and not slip(0.0105, 1.0)  # exactly 1/100, and just above it
+    assert slip(0.004, 0.5)
+
+
+def test_band_edges_belong_to_the_band_and_the_json() -> None:
+    edge = accept_drag_torque(0.7, 1.0)  # row 0.6-1.0: +-30 %, so 0.7 is the lower edge
+    assert edge.accepted and accept_drag_torque(1.3, 1.0).accepted
+    one = accept_drag_torque(0.9, 1.0)
+    assert one.fluctuation == 0.0 and one.points == 1
+    doc = accept_drag_torque([0.8, 0.9], 1.0).as_dict("test")
+    assert doc["row"] == {"from_Nm": 0.6, "to_Nm": 1.0, "tolerance": 0.3}
+    assert doc["accepted_from_Nm"] == pytest.approx(0.7) and doc["accepted_to_Nm"] == 1.3
+    assert doc["mean_torque_Nm"] == pytest.approx(0.85) and doc["fluctuation_Nm"] == pytest.approx(
+        0.1
+    )
+    with pytest.raises(BallScrewInputError, match="a positive reference torque"):
+        accept_drag_torque(0.5, 0.0)

@@ -79,6 +79,16 @@ def test_an_exact_series_gives_its_decay_rate(truth: tuple[np.ndarray, np.ndarra
     assert r.crossing == pytest.approx(TAU * math.log(2.0), rel=1e-2)
 
 
+def test_a_threshold_above_the_initial_preload_is_said_to_be_passed_already(
+    truth: tuple[np.ndarray, np.ndarray],
+) -> None:
+    _, torque = truth
+    r = monitor_preload(CASE, series(torque), limit=f"{1.2 * CASE.screw.preload} N")
+    assert r.crossing < 0.0 and any("from the first measurement on" in n for n in r.notes)
+    late = monitor_preload(CASE, series(torque), limit="10 %")
+    assert late.crossing > TIME[-1] and any("extrapolated beyond" in n for n in late.notes)
+
+
 def test_thresholds() -> None:
     assert threshold("50 %", 1800.0).value == pytest.approx(900.0)
     assert threshold("1,2 kN", 1800.0).value == pytest.approx(1200.0)

@@ -76,3 +76,53 @@ def test_written_file_follows_the_umask(tmp_path: Path) -> None:
         os.umask(old)
     # A colleague can read it (issue 10: every file used to be 0600).
     assert stat.S_IMODE((tmp_path / "a.csv").stat().st_mode) == 0o644
+
+
+def test_a_report_folder_is_swapped_in_whole_or_left_as_it_was(tmp_path: Path) -> None:
+    # Issue 28: an interrupted rerun with other inputs left old text beside new figures.
+    from ballscrew.files import atomic_folder
+
+    out = tmp_path / "report"
+    with atomic_folder(out) as folder:
+        (folder / "report.md").write_text("first", "utf-8")
+        (folder / "old-only.png").write_text("first", "utf-8")
+    assert {p.name for p in out.iterdir()} == {"report.md", "old-only.png"}
+    with pytest.raises(RuntimeError), atomic_folder(out) as folder:
+        (folder / "report.md").write_text("second", "utf-8")
+        raise RuntimeError("interrupted half-way")
+    assert (out / "report.md").read_text("utf-8") == "first"  # the earlier report, whole
+    with atomic_folder(out) as folder:
+        (folder / "report.md").write_text("third", "utf-8")
+    assert {p.name for p in out.iterdir()} == {"report.md"}  # nothing of the first run
+    assert [p.name for p in tmp_path.iterdir()] == ["report"]  # no sibling left
+
+
+def test_a_second_holder_of_an_output_lock_is_refused_naming_the_first(tmp_path: Path) -> None:
+    from ballscrew.files import OutputInUseError, exclusive_lock
+
+    lock = tmp_path / ".store.lock"
+    with exclusive_lock(lock):
+        with pytest.raises(OutputInUseError) as info, exclusive_lock(lock):
+            pass
+        assert f"process {os.getpid()}" in str(info.value)
+    assert not lock.exists()
+    with exclusive_lock(lock):  # free again once released
+        pass
+
+
+def test_a_full_disk_names_the_option_and_the_path(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    import errno
+
+    from cli_runner import run
+
+    def full(fd: int) -> None:
+        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+
+    monkeypatch.setattr("ballscrew.files.os.fsync", full)
+    out = tmp_path / "t.csv"
+    code, _, err = run(["torque", "--speed", "100 rpm", "--csv", str(out)], capsys)
+    assert code == 2 and "internal error" not in err
+    assert f"error: --csv = '{out}' is not allowed:" in err and "No space left on device" in err
+    assert list(tmp_path.iterdir()) == []  # no temporary left behind

@@ -23,20 +23,9 @@ from ballscrew.errors import BallScrewReadingWarning
 from ballscrew.io.case import parse_case
 from ballscrew.web import create_app
 from cli_runner import run
-from shared import SMALL_CASE
+from shared import SMALL_CASE, reference_case_toml
 
-BASE = """\
-title = "same text"
-[screw]
-designation = "40x10 double 2.5x2 6.35"
-preload = "2 kN"
-[lubricant]
-name = "PAO ISO VG 68"
-[operation]
-speed = "100 rpm"
-temperature = "40 degC"
-axial_load = "0 N"
-"""
+BASE = reference_case_toml("same text", speed="100 rpm", axial_load="0 N")
 
 LOADS = [  # texts for a list field (axial load), with the loads meant [N] or None: refused
     ("1 200 N", [1200.0]),

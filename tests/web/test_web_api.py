@@ -26,27 +26,12 @@ from ballscrew.units import parse_range
 from ballscrew.web import create_app, service
 from ballscrew.web.service import LIMITS
 from cli_runner import run
-from shared import DATA
+from shared import DATA, reference_case_toml
 
 # The reference double nut of the README, written as a case file would be.
-CASE_TOML = """\
-title = "web test"
-
-[screw]
-designation = "40x10 double 2.5x2 6.35"
-preload = "2 kN"
-
-[lubricant]
-name = "PAO ISO VG 68"
-
-[operation]
-speed = "10..3000:12 rpm"
-temperature = "40 degC"
-axial_load = "1 kN"
-
-[axis]
-moving_mass = "200 kg"
-"""
+CASE_TOML = reference_case_toml(
+    "web test", speed="10..3000:12 rpm", axial_load="1 kN", more='[axis]\nmoving_mass = "200 kg"\n'
+)
 CASE = tomllib.loads(CASE_TOML)
 TOML = {"content-type": "application/toml"}  # how the page uploads a case file
 JSON = {"content-type": "application/json"}
@@ -460,3 +445,26 @@ def test_the_page_is_served_with_its_script_and_a_strict_policy(client: TestClie
     script = client.get("/static/app.js")
     assert script.status_code == 200
     assert script.headers["content-type"].startswith("text/javascript")
+
+
+def test_uploads_the_toml_parser_cannot_take_and_points_no_model_solves_are_refused(
+    client: TestClient,
+) -> None:
+    # Issue 28: a deeply nested upload was a RecursionError; a key of 20 000 dotted parts
+    # kept the parser busy for seconds; a point where a model's torque turns negative was
+    # given out (the viscoelastic model far past any real speed: -33 N·m).
+    for text, words in (
+        ("a = " + "[" * 20_000 + "]" * 20_000, "nested at most 32 deep"),
+        (".".join(["a"] * 20_000) + " = 1", "fewer than 32 dotted parts"),
+    ):
+        start = time.perf_counter()
+        response = client.post("/api/case", content=text.encode(), headers=TOML)
+        assert response.status_code == 422 and words in response.json()["error"]
+        assert time.perf_counter() - start < 1.0
+    body = {**CASE, "model": "viscoelastic", "speed": "1e4..9.5e5:40 rpm", "axial_load": "0 N"}
+    response = client.post("/api/torque", json=body)
+    assert response.status_code == 422
+    assert response.json()["error"].startswith("operating point = 'speed ")
+    response = client.post("/api/torque", json={**CASE, "model": "viscoelastic",
+                                                 "speed": "1.7e6 rpm"})  # fmt: skip
+    assert response.status_code == 422 and response.json()["error"].startswith("speed = ")

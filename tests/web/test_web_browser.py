@@ -26,7 +26,7 @@ import pytest
 from ballscrew.chain import friction_torque
 from ballscrew.io.case import parse_case
 from cli_runner import run
-from shared import DATA, ROOT
+from shared import DATA, ROOT, reference_case_toml
 from web_server import running_server
 
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
@@ -54,18 +54,7 @@ CHROMIUM_ARGS = [
 ]
 
 # The page's defaults (templates/index.html), written as a case file.
-DEFAULT_CASE = """\
-title = "ball screw case"
-[screw]
-designation = "40x10 double 2.5x2 6.35"
-preload = "2 kN"
-[lubricant]
-name = "PAO ISO VG 68"
-[operation]
-speed = "10..3000:50 rpm"
-temperature = "40 degC"
-axial_load = "1 kN"
-"""
+DEFAULT_CASE = reference_case_toml("ball screw case", speed="10..3000:50 rpm", axial_load="1 kN")
 
 
 @pytest.fixture(scope="module")

@@ -49,3 +49,60 @@ def test_a_connection_too_slow_with_its_head_is_closed(monkeypatch: pytest.Monke
         # A whole request on a fresh connection is answered as ever.
         with urllib.request.urlopen(url + "/", timeout=10) as page:
             assert page.status == 200
+
+
+def test_the_page_answers_while_an_expression_bomb_is_sent() -> None:
+    # Issue 28: '10**10**8 rpm' was evaluated by the unit library and stopped every answer,
+    # GET / included; SIGTERM was ignored. Now it is refused by the quantity grammar at
+    # once, and the page answers beside it, with idle connections open too.
+    import json
+    import threading
+    import urllib.error
+
+    body = json.dumps({"speed": "10**10**8 rpm", "model": "complete"}).encode()
+    answers: dict[str, tuple[int, float]] = {}
+
+    def bomb(url: str) -> None:
+        start = time.perf_counter()
+        request = urllib.request.Request(
+            url + "/api/torque", data=body, headers={"content-type": "application/json"}
+        )
+        try:
+            with urllib.request.urlopen(request, timeout=10) as response:
+                status = response.status
+        except urllib.error.HTTPError as exc:
+            status = exc.code
+        answers["bomb"] = (status, time.perf_counter() - start)
+
+    with running_server() as url:
+        idle = [_connect(url) for _ in range(20)]
+        try:
+            sender = threading.Thread(target=bomb, args=(url,))
+            start = time.perf_counter()
+            sender.start()
+            with urllib.request.urlopen(url + "/", timeout=10) as page:
+                assert page.status == 200
+            assert time.perf_counter() - start < 2.0
+            sender.join(timeout=10)
+        finally:
+            for s in idle:
+                s.close()
+    status, seconds = answers["bomb"]
+    assert status == 422 and seconds < 1.0
+
+
+def test_a_body_sent_too_slowly_is_answered_408() -> None:
+    from ballscrew.web.service import Limits
+
+    with running_server(Limits(seconds=1.0)) as url:
+        slow = _connect(url)
+        slow.sendall(
+            b"POST /api/torque HTTP/1.1\r\nHost: 127.0.0.1\r\n"
+            b"Content-Type: application/json\r\nContent-Length: 100\r\n\r\n{"
+        )  # the head is whole; the body never is
+        start = time.perf_counter()
+        slow.settimeout(5.0)
+        answer = slow.recv(4096)
+        assert answer.startswith(b"HTTP/1.1 408") and b"took over 1 s" in answer
+        assert time.perf_counter() - start < 3.0
+        slow.close()

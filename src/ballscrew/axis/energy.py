@@ -34,6 +34,7 @@ friction is in :math:`T_f` and is not counted again.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import warnings
 from dataclasses import dataclass, field
@@ -340,6 +341,47 @@ def _bearing_torque(
     )  # fmt: skip
 
 
+def _per_sample(
+    screw: BallScrew, lubricant: Lubricant | str, omega: FloatArray, force: FloatArray,
+    temperature: float, model: str, parameters: dict[str, Any],
+) -> FrictionResult:  # fmt: skip
+    """:func:`friction_torque` at every sample, the model run once per distinct (speed, force).
+
+    A profile repeats its samples (constant feed, dwells, every cycle after
+    the first); the result is spread back to the samples, so it is the
+    sample-by-sample call's, without the contact state (``state`` None).
+    """
+    keys = np.empty(omega.shape, dtype=complex)
+    keys.real, keys.imag = omega, force
+    pairs, inverse = np.unique(keys, return_inverse=True)
+    if pairs.size == omega.size:
+        return friction_torque(
+            screw, lubricant, speed=omega, temperature=temperature, axial_load=force,
+            model=model, **parameters,
+        )  # fmt: skip
+    fr = friction_torque(
+        screw, lubricant, speed=pairs.real.copy(), temperature=temperature,
+        axial_load=pairs.imag.copy(), model=model, **parameters,
+    )  # fmt: skip
+    index = inverse.reshape(omega.shape)
+
+    def spread(a: FloatArray) -> FloatArray:
+        result: FloatArray = np.broadcast_to(a, pairs.shape)[index]
+        return result
+
+    return dataclasses.replace(
+        fr,
+        total=spread(fr.total),
+        components={name: spread(part) for name, part in fr.components.items()},
+        power_loss=spread(fr.power_loss),
+        efficiency=spread(fr.efficiency),
+        speed=omega.copy(),
+        temperature=spread(fr.temperature),
+        axial_load=force.copy(),
+        state=None,
+    )
+
+
 def _integral(y: FloatArray, t: FloatArray) -> float:
     """Trapezoidal rule (exact for piecewise-linear samples)."""
     return float(np.sum(0.5 * (y[1:] + y[:-1]) * np.diff(t)))
@@ -371,17 +413,10 @@ def axis_cycle(
     """
     lead = screw.lead
     omega, alpha, force = screw_motion(profile, screw, axis)
-    g_axial = STANDARD_GRAVITY * math.sin(axis.incline)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # recorded in the result's friction.warnings
-        fr = friction_torque(
-            screw, lubricant, speed=omega, temperature=temperature, axial_load=force,
-            model=model, **parameters,
-        )  # fmt: skip
-        catalog = friction_torque(
-            screw, lubricant, speed=omega, temperature=temperature, axial_load=force,
-            model="catalog",
-        )  # fmt: skip
+        fr = _per_sample(screw, lubricant, omega, force, temperature, model, parameters)
+        catalog = _per_sample(screw, lubricant, omega, force, temperature, "catalog", {})
     t_f = fr.total
     t_load = force * lead / (2.0 * math.pi)
     t_inertia = (axis.screw_inertia + axis.coupling_inertia) * alpha
@@ -391,17 +426,10 @@ def axis_cycle(
     t_motor = t_screw / i + axis.motor_inertia * i * alpha
     power = t_f * np.abs(omega)
     time = profile.time
-    limits = speed_limit_issues(
-        screw, float(np.max(np.abs(omega))), span=axis.bearing_span, support=axis.support,
-        dn_limit=axis.dn_limit, root=axis.root_diameter,
-    )  # fmt: skip
+    limits = _speed_limits(screw, omega, axis)
     for message in limits:
         warnings.warn(message, BallScrewSpeedWarning, stacklevel=2)
-    # Efficiencies at the working point: the sample of largest |F v| (the
-    # process force at feed, or the peak of acceleration).
-    k = int(np.argmax(np.abs(force * profile.speed)))
-    forward = float(np.ravel(fr.efficiency)[k])
-    backward = float(np.ravel(reverse_efficiency(fr, lead))[k])
+    forward, backward = _working_point_efficiencies(fr, force * profile.speed, lead)
     out = np.where(omega > 0.0, power, 0.0)
     back = np.where(omega < 0.0, power, 0.0)
     return CycleResult(
@@ -421,20 +449,58 @@ def axis_cycle(
         bearing_torque=t_b,
         bearing_energy=_integral(t_b * np.abs(omega), time),
         constant_efficiency_energy=_integral(catalog.total * np.abs(omega), time),
-        # Work on the load: the change of kinetic and potential energy (exact,
-        # whatever the sampling of steps in acceleration) plus the process
-        # force's work.
-        load_work=0.5 * axis.moving_mass * float(profile.speed[-1] ** 2 - profile.speed[0] ** 2)
-        + axis.moving_mass * g_axial * float(profile.position[-1] - profile.position[0])
-        + _integral(profile.process_force * profile.speed, time),
+        load_work=_load_work(axis, profile),
         peak_motor_torque=float(np.max(np.abs(t_motor))),
         rms_motor_torque=math.sqrt(_integral(t_motor**2, time) / profile.duration),
         forward_efficiency=forward,
         reverse_efficiency=backward,
         friction=fr,
         speed_warnings=tuple(limits),
-        friction_energy_by_mechanism={
-            name: _integral(np.broadcast_to(part, t_f.shape) * np.abs(omega), time)
-            for name, part in fr.components.items()
-        },
+        friction_energy_by_mechanism=_energy_by_mechanism(fr, omega, time),
+    )
+
+
+def _energy_by_mechanism(
+    fr: FrictionResult, omega: FloatArray, time: FloatArray
+) -> dict[str, float]:
+    """The friction energy of each loss mechanism over the profile [J]."""
+    return {
+        name: _integral(np.broadcast_to(part, fr.total.shape) * np.abs(omega), time)
+        for name, part in fr.components.items()
+    }
+
+
+def _speed_limits(screw: BallScrew, omega: FloatArray, axis: Axis) -> list[str]:
+    """The speed limits the profile's fastest screw speed passes, in words."""
+    return speed_limit_issues(
+        screw, float(np.max(np.abs(omega))), span=axis.bearing_span, support=axis.support,
+        dn_limit=axis.dn_limit, root=axis.root_diameter,
+    )  # fmt: skip
+
+
+def _working_point_efficiencies(
+    fr: FrictionResult, load_power: FloatArray, lead: float
+) -> tuple[float, float]:
+    """Forward and reverse efficiency at the working point.
+
+    The working point is the sample of largest ``|F v|`` (the process force at
+    feed, or the peak of acceleration).
+    """
+    k = int(np.argmax(np.abs(load_power)))
+    forward = float(np.ravel(fr.efficiency)[k])
+    backward = float(np.ravel(reverse_efficiency(fr, lead))[k])
+    return forward, backward
+
+
+def _load_work(axis: Axis, profile: Profile) -> float:
+    """Work on the load over the profile [J].
+
+    The change of kinetic and potential energy (exact, whatever the sampling of
+    steps in acceleration) plus the process force's work.
+    """
+    g_axial = STANDARD_GRAVITY * math.sin(axis.incline)
+    return (
+        0.5 * axis.moving_mass * float(profile.speed[-1] ** 2 - profile.speed[0] ** 2)
+        + axis.moving_mass * g_axial * float(profile.position[-1] - profile.position[0])
+        + _integral(profile.process_force * profile.speed, profile.time)
     )

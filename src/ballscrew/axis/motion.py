@@ -41,6 +41,10 @@ __all__ = [
 ]
 
 
+MAX_SAMPLES = 5_000_000
+"""The most samples :func:`back_and_forth` makes (5000 s of motion at 1 ms)."""
+
+
 @dataclass(frozen=True)
 class Profile:
     """A sampled motion of the table (arrays of equal length, times increasing).
@@ -255,6 +259,17 @@ def back_and_forth(
     """
     if isinstance(cycles, bool) or not isinstance(cycles, int) or cycles < 1:
         raise BallScrewInputError("cycles", cycles, "a whole number >= 1")
+    if feed > 0.0 and acceleration > 0.0 and sample_time > 0.0:
+        # Refused before any array is made: a stroke of 1e30 m asked for more memory than
+        # there is. s/v + v/a is the duration of a move without jerk limit, the shortest.
+        seconds = 2.0 * cycles * (abs(stroke) / feed + feed / acceleration + max(dwell_time, 0.0))
+        if not seconds / sample_time <= MAX_SAMPLES:
+            raise BallScrewInputError(
+                "move",
+                f"{cycles} cycle(s) of {seconds / cycles:.3g} s",
+                f"at most {MAX_SAMPLES:,} samples of {sample_time:g} s in all "
+                f"({MAX_SAMPLES * sample_time:g} s of motion): fewer cycles or a shorter move",
+            )
     out = move(stroke, feed, acceleration, jerk=jerk, process_force=process_force,
                force_window=force_window, sample_time=sample_time)  # fmt: skip
     back = move(-stroke, feed, acceleration, jerk=jerk, sample_time=sample_time)
@@ -282,8 +297,8 @@ def read_trajectory(text: str, source: str = "trajectory") -> Profile:
     first = next((line for line in text.splitlines() if line.strip()), "")
     delimiter = ";" if ";" in first else ("\t" if "\t" in first else ",")
     rows = [r for r in csv.reader(io.StringIO(text.lstrip("\ufeff")), delimiter=delimiter) if r]
-    if len(rows) < 3:
-        raise BallScrewInputError(source, "(too short)", "a header and at least 2 data rows")
+    if not rows:
+        raise BallScrewInputError(source, "(empty)", "a header and at least 3 data rows")
     header = re.compile(r"^\s*(\w[\w ]*?)\s*\[([^\]]+)\]\s*$")
     columns: dict[str, tuple[int, str]] = {}
     for i, cell in enumerate(rows[0]):
@@ -301,6 +316,9 @@ def read_trajectory(text: str, source: str = "trajectory") -> Profile:
             f"{source}: header", ",".join(rows[0]),
             "a time column and a position or speed column, each with its unit",
         )  # fmt: skip
+    if len(rows) < 4:
+        # Speeds and accelerations are second-order differences: three samples at least.
+        raise BallScrewInputError(source, "(too short)", "a header and at least 3 data rows")
 
     def column(kind: str, si: str) -> FloatArray:
         i, unit = columns[kind]
@@ -308,6 +326,12 @@ def read_trajectory(text: str, source: str = "trajectory") -> Profile:
             raw = [float(r[i].replace(",", ".") if delimiter != "," else r[i]) for r in rows[1:]]
         except (ValueError, IndexError):
             raise BallScrewInputError(f"{source}: column {kind}", "(data)", "numbers") from None
+        bad = [k for k, value in enumerate(raw) if not math.isfinite(value)]
+        if bad:
+            line = bad[0] + 2  # the header is line 1
+            raise BallScrewInputError(
+                f"{source}: line {line}, column {kind}", raw[bad[0]], "a finite number"
+            )
         return np.asarray(to_si_array(f"{source}: column {kind}", raw, unit, si), dtype=float)
 
     t = column("time", "s")

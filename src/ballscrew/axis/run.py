@@ -22,7 +22,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from ..errors import FloatArray
+from ..errors import BallScrewInputError, FloatArray
 from ..io.case import Case
 from ..kinematics import rad_s_to_rpm
 from ..ratings import Finding, plausibility, raise_errors, stroke_findings
@@ -56,16 +56,29 @@ def profile_from_move(move: dict[str, float], cycles: int) -> Profile:
     if "force_from" in move or "force_to" in move:
         window = (move.get("force_from", 0.0), move.get("force_to", abs(move["stroke"])))
         check_force_window(window, abs(move["stroke"]), "--move force_from, force_to")
-    return back_and_forth(
-        move["stroke"], move["feed"], move["acceleration"], jerk=move.get("jerk"),
-        dwell_time=move.get("dwell", 0.0), cycles=cycles, process_force=move.get("force", 0.0),
-        force_window=window,
-    )  # fmt: skip
+    try:
+        return back_and_forth(
+            move["stroke"], move["feed"], move["acceleration"], jerk=move.get("jerk"),
+            dwell_time=move.get("dwell", 0.0), cycles=cycles,
+            process_force=move.get("force", 0.0), force_window=window,
+        )  # fmt: skip
+    except BallScrewInputError as exc:
+        if exc.field != "move":
+            raise
+        raise BallScrewInputError("--move, --cycles", exc.value, exc.allowed) from None
 
 
 def profile_from_file(path: str, cycles: int) -> Profile:
     """A trajectory CSV (units in the header) repeated ``cycles`` times."""
-    one = read_trajectory(Path(path).read_text(encoding="utf-8"), path)
+    try:
+        data = Path(path).read_bytes()
+    except OSError as exc:
+        raise BallScrewInputError("--profile", path, f"a readable file ({exc.strerror})") from None
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError:
+        raise BallScrewInputError("--profile", path, "a UTF-8 text file") from None
+    one = read_trajectory(text, path)
     return chain(*([one] * cycles))
 
 
@@ -243,7 +256,8 @@ def _one_model(
     steady = steady_temperature(profile, case.screw, case.lubricant, axis, node, model=name,
                                 **params)  # fmt: skip
     times, history = temperature_history(profile, case.screw, case.lubricant, axis, node,
-                                         run_time, model=name, points=50, **params)  # fmt: skip
+                                         run_time, model=name, points=50, steady=steady,
+                                         **params)  # fmt: skip
     run.histories[name] = (times, history)
     numbers["steady_temperature_C"] = steady.temperature
     numbers["final_temperature_C"] = float(history[-1])

@@ -27,7 +27,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from ..errors import FloatArray
+from ..errors import BallScrewInputError, FloatArray
 from ..geometry import BallScrew
 from ..materials import STEEL_DENSITY
 from .energy import Axis
@@ -125,4 +125,9 @@ def axis_setup(
         )
     if "machine_resistance" not in thermal:
         notes.append("axis.machine_resistance: none (convection only, the warmest case)")
-    return AxisSetup(Axis(**values), ThermalNode(**thermal), tuple(notes))
+    try:
+        return AxisSetup(Axis(**values), ThermalNode(**thermal), tuple(notes))
+    except BallScrewInputError as exc:
+        # Named as the case file names it: every key of both comes from [axis].
+        field = exc.field if exc.field.startswith("axis.") else f"axis.{exc.field}"
+        raise BallScrewInputError(field, exc.value, exc.allowed) from None

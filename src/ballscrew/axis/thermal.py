@@ -34,10 +34,18 @@ import numpy as np
 import numpy.typing as npt
 
 from ..chain import friction_torque
-from ..errors import BallScrewInputError, BallScrewValidityWarning, FloatArray, check_positive
+from ..errors import (
+    BallScrewInputError,
+    BallScrewValidityWarning,
+    FloatArray,
+    check_in_range,
+    check_nonnegative,
+    check_positive,
+)
 from ..geometry import BallScrew
 from ..lubricant import Lubricant
 from ..materials import STEEL_DENSITY, STEEL_SPECIFIC_HEAT
+from ..numerics import illinois
 from .energy import Axis, screw_motion
 from .motion import Profile
 
@@ -84,6 +92,13 @@ class ThermalNode:
     ambient: float = 20.0
     machine_resistance: float | None = None
     nut_mass: float = 0.0
+
+    def __post_init__(self) -> None:
+        check_positive("screw_length", self.screw_length, "m")
+        check_in_range("ambient", self.ambient, -273.15, 500.0, unit="°C")
+        if self.machine_resistance is not None:
+            check_positive("machine_resistance", self.machine_resistance, "K/W")
+        check_nonnegative("nut_mass", self.nut_mass, "kg")
 
     def heat_capacity(self, screw: BallScrew) -> float:
         """Heat capacity of screw and nut [J/K] (steel)."""
@@ -172,34 +187,68 @@ def mean_powers(
 ) -> FloatArray:
     """Mean friction power of the screw over the cycle at each lubricant temperature [W].
 
-    One friction call: the temperatures against the cycle's samples.
+    One friction call: the temperatures against the cycle's distinct samples
+    (:class:`_CyclePowers`).
     """
-    temps = np.atleast_1d(np.asarray(temperatures, dtype=float))
-    omega, _, force = screw_motion(profile, screw, axis)
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        torque = friction_torque(
-            screw, lubricant, speed=omega[None, :], temperature=temps[:, None],
-            axial_load=force[None, :], model=model, **parameters,
-        ).total  # fmt: skip
-    power = torque * np.abs(omega)[None, :]
-    t = profile.time
-    energy = np.sum(0.5 * (power[:, 1:] + power[:, :-1]) * np.diff(t)[None, :], axis=1)
-    result: FloatArray = energy / profile.duration
-    return result
+    return _CyclePowers(profile, screw, lubricant, axis, model, parameters)(temperatures)
 
 
-def _mean_power(
-    profile: Profile, screw: BallScrew, lubricant: Lubricant | str, axis: Axis,
-    temperature: float, model: str, parameters: dict[str, Any],
-) -> float:  # fmt: skip
-    return float(mean_powers(profile, screw, lubricant, axis, temperature, model, **parameters)[0])
+class _CyclePowers:
+    """The cycle's mean friction power as a function of temperature, on its distinct samples.
+
+    The friction of a sample depends on its screw speed and axial force (and
+    the temperature); a profile repeats them (constant feed, dwells, and every
+    cycle after the first), so the trapezoidal rule's weights are summed over
+    the samples of each distinct (speed, force) pair and the friction model
+    runs on the distinct pairs only: ``n`` cycles cost what one does. The
+    mean power equals the sample-by-sample trapezoidal rule up to the order
+    of the summation (a relative 1e-15).
+    """
+
+    def __init__(
+        self, profile: Profile, screw: BallScrew, lubricant: Lubricant | str, axis: Axis,
+        model: str, parameters: dict[str, Any],
+    ) -> None:  # fmt: skip
+        omega, _, force = screw_motion(profile, screw, axis)
+        keys = np.empty(omega.shape, dtype=complex)
+        keys.real, keys.imag = omega, force
+        pairs, inverse = np.unique(keys, return_inverse=True)
+        dt = np.diff(profile.time)
+        share = np.zeros(omega.shape)
+        share[:-1] += 0.5 * dt
+        share[1:] += 0.5 * dt
+        summed = np.bincount(inverse.reshape(-1), weights=share, minlength=pairs.size)
+        self.weight: FloatArray = summed.astype(float) / profile.duration
+        self.omega, self.force = pairs.real.copy(), pairs.imag.copy()
+        self.args = (screw, lubricant, model, parameters)
+
+    def __call__(self, temperatures: npt.ArrayLike) -> FloatArray:
+        """Mean power [W] at each temperature [°C]: one friction call."""
+        temps = np.atleast_1d(np.asarray(temperatures, dtype=float))
+        screw, lubricant, model, parameters = self.args
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            torque = friction_torque(
+                screw, lubricant, speed=self.omega[None, :], temperature=temps[:, None],
+                axial_load=self.force[None, :], model=model, **parameters,
+            ).total  # fmt: skip
+        power = np.broadcast_to(torque, (temps.size, self.omega.size)) * np.abs(self.omega)
+        result: FloatArray = power @ self.weight
+        return result
 
 
 def _conductance(node: ThermalNode, screw: BallScrew, speed: float, temperature: float) -> float:
+    return float(_conductances(node, screw, speed, np.array([temperature]))[0])
+
+
+def _conductances(
+    node: ThermalNode, screw: BallScrew, speed: float, temperatures: FloatArray
+) -> FloatArray:
     area = math.pi * screw.pitch_diameter * node.screw_length
-    h = float(convection_coefficient(screw.pitch_diameter, speed, temperature, node.ambient))
-    return h * area + (0.0 if node.machine_resistance is None else 1.0 / node.machine_resistance)
+    h = convection_coefficient(screw.pitch_diameter, speed, temperatures, node.ambient)
+    machine = 0.0 if node.machine_resistance is None else 1.0 / node.machine_resistance
+    result: FloatArray = h * area + machine
+    return result
 
 
 def _rms_speed(profile: Profile, screw: BallScrew) -> float:
@@ -219,6 +268,10 @@ class SteadyState:
     conductance: float
 
 
+TABLE_STEP = 5.0
+"""Spacing of the temperatures at which :func:`steady_temperature` tabulates the balance [K]."""
+
+
 def steady_temperature(
     profile: Profile,
     screw: BallScrew,
@@ -231,28 +284,42 @@ def steady_temperature(
 ) -> SteadyState:
     r"""Temperature at which the cycle's mean friction power leaves as heat [°C].
 
-    Solves :math:`\bar P(T) = G(T)(T - T_a)` by bisection between the
-    ambient temperature and 200 °C above it.
+    Solves :math:`\bar P(T) = G(T)(T - T_a)` between the ambient temperature
+    and 200 °C above it. The balance is first tabulated every
+    :data:`TABLE_STEP` kelvin in one friction call over the cycle's distinct
+    samples; the first step over which it changes sign brackets the root,
+    which is then found on the balance itself by the Illinois method (to
+    1e-11 K, a few more evaluations of the cycle), not on the table.
     """
     check_positive("screw_length", node.screw_length, "m")
     speed = _rms_speed(profile, screw)
+    mean_power = _CyclePowers(profile, screw, lubricant, axis, model, parameters)
 
-    def imbalance(t: float) -> float:
-        power = _mean_power(profile, screw, lubricant, axis, t, model, parameters)
-        return power - _conductance(node, screw, speed, t) * (t - node.ambient)
+    def imbalance(t: FloatArray) -> FloatArray:
+        heat_out = _conductances(node, screw, speed, t) * (t - node.ambient)
+        result: FloatArray = mean_power(t) - heat_out
+        return result
 
     lo, hi = node.ambient, node.ambient + 200.0
-    if imbalance(hi) > 0.0:
+    nodes = np.linspace(lo, hi, round((hi - lo) / TABLE_STEP) + 1)
+    table = imbalance(nodes)
+    if table[-1] > 0.0:
         raise BallScrewInputError(
             "thermal", "(steady state)", "a cycle whose friction the node can shed below "
             f"{hi:g} °C (give a machine_resistance or a longer screw_length)",
         )  # fmt: skip
-    for _ in range(60):
-        mid = 0.5 * (lo + hi)
-        lo, hi = (mid, hi) if imbalance(mid) > 0.0 else (lo, mid)
-    t = 0.5 * (lo + hi)
+    j = int(np.argmax(table <= 0.0))  # the first node at or past the balance
+    if j == 0 or table[j] == 0.0:
+        t = float(nodes[j])
+    else:  # -imbalance rises through 0 in (nodes[j-1], nodes[j]]
+        t = float(
+            illinois(
+                lambda x, _i: -imbalance(x), nodes[j - 1 : j], nodes[j : j + 1],
+                -table[j - 1 : j], -table[j : j + 1], xtol=1e-11,
+            )[0]
+        )  # fmt: skip
     g = _conductance(node, screw, speed, t)
-    power = _mean_power(profile, screw, lubricant, axis, t, model, parameters)
+    power = float(mean_power(t)[0])
     return SteadyState(t, power, g * (t - node.ambient), g)
 
 
@@ -328,19 +395,22 @@ def temperature_history(
     *,
     model: str = "complete",
     points: int = 200,
+    steady: SteadyState | None = None,
     **parameters: Any,
 ) -> tuple[FloatArray, FloatArray]:
     """Temperature over ``duration`` [s] of repeating the cycle from the ambient: (t, T).
 
     The mean power per cycle is tabulated over temperature (every 2 K up to
     the steady temperature) and the heat balance integrated with scipy's
-    ``solve_ivp``.
+    ``solve_ivp``. ``steady`` is the cycle's :func:`steady_temperature`, if
+    already solved.
     """
     from scipy.integrate import solve_ivp
 
     check_positive("duration", duration, "s")
-    steady = steady_temperature(profile, screw, lubricant, axis, node, model=model,
-                                **parameters)  # fmt: skip
+    if steady is None:
+        steady = steady_temperature(profile, screw, lubricant, axis, node, model=model,
+                                    **parameters)  # fmt: skip
     speed = _rms_speed(profile, screw)
     grid = np.linspace(
         node.ambient,

@@ -9,7 +9,7 @@ from typing import Any
 import click
 from rich.table import Table
 
-from .common import stdout
+from .common import stdout, writing
 
 __all__ = ["case_command"]
 
@@ -50,7 +50,8 @@ def case_command(
     if want_template or want_reference:
         text = template() if want_template else reference_markdown()
         if out_file:
-            atomic_write(Path(out_file), text.encode("utf-8"))
+            with writing("--out", out_file):
+                atomic_write(Path(out_file), text.encode("utf-8"))
             click.echo(f"wrote {out_file}", err=True)
         else:
             click.echo(text, nl=False)
@@ -114,6 +115,7 @@ def _print_resolved(path: str) -> None:
         ("operation", "axial loads", _span(case.axial_load, "N")),
     ]
     rows += _axis_rows(case)
+    rows += _check_rows(case)
     table = Table(title=f"{case.title}: resolved from {path}")
     for column in ("section", "quantity", "value"):
         table.add_column(column)
@@ -136,6 +138,9 @@ def _axis_rows(case: Any) -> list[tuple[str, str, str]]:
 
     if "axis" not in tomllib.loads(case.text):
         return []
+    from ..axis.setup import axis_setup
+
+    axis_setup(case.screw, case.axis, case.thermal, 0.0)  # what energy checks, before it runs
     a, th = case.axis, case.thermal
     later = "(estimated by ballscrew energy)"
 
@@ -181,6 +186,37 @@ def _axis_rows(case: Any) -> list[tuple[str, str, str]]:
          f"{th['ambient']:g} degC, "
          + given(th.get("machine_resistance"), 1.0, "K/W", "none (convection only)")),
     ]  # fmt: skip
+
+
+def _check_rows(case: Any) -> list[tuple[str, str, str]]:
+    """Load ratings, ``[motor]`` and ``[check]`` as ``ballscrew check`` will use them."""
+
+    def kn(value: float | None, key: str) -> str:
+        return f"give screw.{key} for ballscrew check" if value is None else f"{value / 1e3:.4g} kN"
+
+    c = case.check
+    rows = [
+        ("screw", "dynamic load rating C_a", kn(case.dynamic_load_rating, "dynamic_load_rating")),
+        ("screw", "static load rating C_0a", kn(case.static_load_rating, "static_load_rating")),
+    ]
+    units = {"rated_torque": (1.0, "N*m"), "peak_torque": (1.0, "N*m"),
+             "rated_speed": (30.0 / math.pi, "rpm")}  # fmt: skip
+    for key, value in case.motor.items():
+        scale, unit = units[key]
+        rows.append(("motor", key.replace("_", " "), f"{value * scale:.4g} {unit}"))
+    life = c.get("required_life")
+    rows += [
+        ("check", "required life",
+         "20000 h (default)" if life is None else f"{life / 3600:.6g} h"),
+        ("check", "reliability, least static safety",
+         f"{c['reliability']:.0%}, {c['static_safety']:g}"),
+        ("check", "accuracy grade", c.get("accuracy_grade", "none (thermal error not judged)")),
+        ("check", "thrust bearing stiffness",
+         "rigid (not given)" if c.get("support_stiffness") is None
+         else f"{c['support_stiffness'] / 1e6:.4g} N/um"),
+        ("check", "pre-tension absorbs", f"{c['pretension_temperature']:g} K"),
+    ]  # fmt: skip
+    return rows
 
 
 def _grease(oil: Any) -> str:

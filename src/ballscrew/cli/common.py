@@ -2,15 +2,17 @@
 
 from __future__ import annotations
 
+import contextlib
 import os
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
+from pathlib import Path
 from typing import Any, TypeVar
 
 import click
 from rich.console import Console
 from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 
-__all__ = ["case_option", "file_option", "progress", "stdout", "write_json"]
+__all__ = ["case_option", "file_option", "progress", "stdout", "write_json", "writing"]
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -27,17 +29,40 @@ def stdout(json_file: str | None = None) -> Console:
     return Console(markup=False, width=None if fixed else 200, stderr=json_file == "-")
 
 
-def write_json(json_file: str, text: str) -> None:
+@contextlib.contextmanager
+def writing(option: str, path: str | Path) -> Iterator[None]:
+    """A file-system error while the block writes ``path``: an input error naming ``option``.
+
+    A folder that cannot be made (a file is in the way), a place that takes no
+    files, a full disk, no permission: the user gets the option and the path,
+    with the system's reason, and exit status 2, not an internal error naming a
+    temporary file. Another run holding the output keeps its own message.
+    """
+    from ..errors import BallScrewInputError
+    from ..files import OutputInUseError
+
+    try:
+        yield
+    except OutputInUseError:
+        raise
+    except OSError as exc:
+        reason = exc.strerror or type(exc).__name__
+        raise BallScrewInputError(
+            option, str(path), f"a path where the output can be written ({reason})"
+        ) from None
+
+
+def write_json(json_file: str, text: str, option: str = "--json") -> None:
     """Write JSON text to ``json_file`` atomically, or to standard output for ``-``."""
     import sys
-    from pathlib import Path
 
     from ..files import atomic_write
 
     if json_file == "-":
         sys.stdout.write(text)
     else:
-        atomic_write(Path(json_file), text.encode("utf-8"))
+        with writing(option, json_file):
+            atomic_write(Path(json_file), text.encode("utf-8"))
 
 
 def progress(console: Console) -> Progress:

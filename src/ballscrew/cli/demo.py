@@ -3,10 +3,15 @@
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 import click
 from rich.console import Console
 from rich.table import Table
+
+if TYPE_CHECKING:
+    from ..geometry import BallScrew
+    from ..lubricant import Lubricant
 
 __all__ = ["demo"]
 
@@ -34,18 +39,20 @@ def demo(lubricant_name: str, temperature: float) -> None:
       ballscrew demo
       ballscrew demo --lubricant "SAE 20" --temperature 30
     """  # noqa: D301 - click needs the literal \b to keep the example lines
-    import numpy as np
-
     from .. import lubricants
-    from ..contact import HERTZ_METHODS, hertz
     from ..examples import reference_screw
-    from ..kinematics import rpm_to_rad_s
-    from ..state import operating_state
 
     console = Console(width=110, markup=False)
     screw = reference_screw()
     oil = lubricants.get(lubricant_name)
+    console.print(_geometry_table(screw))
+    console.print(_hertz_table(screw, oil, temperature))
+    console.print(_viscosity_table())
+    console.print(_film_table(screw, oil, temperature))
 
+
+def _geometry_table(screw: BallScrew) -> Table:
+    """The screw's dimensions, preload, loaded balls and reduced modulus."""
     geo = Table(title="Reference ball screw (bundled example)", show_header=False)
     rows = [
         ("pitch diameter", f"{screw.pitch_diameter * 1e3:.2f} mm"),
@@ -59,7 +66,13 @@ def demo(lubricant_name: str, temperature: float) -> None:
     ]
     for key, value in rows:
         geo.add_row(key, value)
-    console.print(geo)
+    return geo
+
+
+def _hertz_table(screw: BallScrew, oil: Lubricant, temperature: float) -> Table:
+    """Each contact by every Hertz method at the preload's ball load."""
+    from ..contact import HERTZ_METHODS, hertz
+    from ..state import operating_state
 
     state0 = operating_state(screw, oil, speed=0.0, temperature=temperature)
     q = float(state0.loads.normal_load_1)
@@ -81,7 +94,14 @@ def demo(lubricant_name: str, temperature: float) -> None:
                 f"{float(c.p_max) / 1e9:.3f}",
                 f"{float(c.approach) * 1e6:.3f}",
             )
-    console.print(ht)
+    return ht
+
+
+def _viscosity_table() -> Table:
+    """Every bundled lubricant's kinematic viscosity at six temperatures and its α."""
+    import numpy as np
+
+    from .. import lubricants
 
     temps = np.array([20.0, 30.0, 40.0, 45.0, 60.0, 100.0])
     vt = Table(title="Bundled lubricants: kinematic viscosity [mm²/s] (ASTM D341)")
@@ -92,7 +112,15 @@ def demo(lubricant_name: str, temperature: float) -> None:
     for lub in lubricants.all_lubricants():
         nu = lub.kinematic_viscosity(temps) * 1e6
         vt.add_row(lub.name, *(f"{v:.1f}" for v in nu), f"{lub.pressure_viscosity * 1e9:.1f}")
-    console.print(vt)
+    return vt
+
+
+def _film_table(screw: BallScrew, oil: Lubricant, temperature: float) -> Table:
+    """The EHL film of the screw's and the nut's contacts at four speeds."""
+    import numpy as np
+
+    from ..kinematics import rpm_to_rad_s
+    from ..state import operating_state
 
     speeds_rpm = np.array([10.0, 100.0, 1000.0, 3000.0])
     st = operating_state(screw, oil, speed=rpm_to_rad_s(speeds_rpm), temperature=temperature)
@@ -110,4 +138,4 @@ def demo(lubricant_name: str, temperature: float) -> None:
                 f"{contact.film_parameter[i]:.3f}",
                 f"{contact.asperity_share[i]:.3f}",
             )
-    console.print(ft)
+    return ft

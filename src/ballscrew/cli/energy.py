@@ -11,7 +11,7 @@ from rich.console import Console
 from rich.table import Table
 
 from ..files import atomic_folder
-from .common import stdout, write_json
+from .common import stdout, write_json, writing
 
 if TYPE_CHECKING:
     from ..axis.run import EnergyRun
@@ -110,7 +110,7 @@ def energy_command(
     if out_dir:
         from ..report.energy import write_energy_report
 
-        with atomic_folder(Path(out_dir)) as folder:
+        with writing("--out", out_dir), atomic_folder(Path(out_dir)) as folder:
             files = write_energy_report(folder, case.title, profile, run.cycles_by_model,
                                     run.results, run.histories or None)  # fmt: skip
         click.echo(f"report: {Path(out_dir) / 'report.html'} ({len(files)} files)", err=True)

@@ -9,7 +9,7 @@ import click
 from rich.table import Table
 
 from .._version import __version__
-from .common import case_option, stdout, write_json
+from .common import case_option, stdout, write_json, writing
 
 __all__ = ["export_friction_command"]
 
@@ -143,7 +143,8 @@ def export_friction_command(
         click.echo(f"lookup table: {len(result.rows)} rows over {len(result.temperatures)} "
                    "temperature(s)", err=json_file == "-")  # fmt: skip
     if out_file:
-        atomic_write(Path(out_file), csv_text(result.rows).encode("utf-8"))
+        with writing("--out", out_file):
+            atomic_write(Path(out_file), csv_text(result.rows).encode("utf-8"))
     if json_file:
         write_json(json_file, json_document(result.as_dict(__version__)))
     sys.stdout.flush()
@@ -193,7 +194,8 @@ def _load_map(
     for note in m.notes:
         click.echo(f"note: {note}", err=True)
     if out_file:
-        write_map(m, Path(out_file), __version__)
+        with writing("--out", out_file):
+            write_map(m, Path(out_file), __version__)
     if json_file:
         write_json(json_file, json_document(m.as_dict(__version__)))
     sys.stdout.flush()

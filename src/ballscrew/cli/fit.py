@@ -9,7 +9,7 @@ from rich.table import Table
 
 from .._version import __version__
 from ..files import atomic_folder
-from .common import case_option, stdout, write_json
+from .common import case_option, stdout, write_json, writing
 
 __all__ = ["fit_command"]
 
@@ -111,7 +111,7 @@ def fit_command(
     if out_dir:
         from ..report.fit import write_fit_report
 
-        with atomic_folder(Path(out_dir)) as folder:
+        with writing("--out", out_dir), atomic_folder(Path(out_dir)) as folder:
             files = write_fit_report(folder, case, result, payload)
         click.echo(f"fit: {Path(out_dir) / 'report.html'} and {Path(out_dir) / 'fitted-case.toml'}"
                    f" ({len(files)} files)", err=True)  # fmt: skip

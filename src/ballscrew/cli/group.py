@@ -19,6 +19,7 @@ from ..extras import MissingExtraError
 from ..files import record_signal, signal_received
 from .acceptance import acceptance_command
 from .case import case_command
+from .check import check_command
 from .demo import demo
 from .energy import energy_command
 from .export_friction import export_friction_command
@@ -47,6 +48,7 @@ def cli() -> None:
       ballscrew case --template --out my_screw.toml
       ballscrew torque --case my_screw.toml --speed "0..3000 rpm" --model complete --model catalog
       ballscrew energy --case my_axis.toml --move "stroke=0.3 m, feed=0.5 m/s, acceleration=2 m/s^2"
+      ballscrew check --case my_axis.toml --move "stroke=0.3 m, feed=0.5 m/s, acceleration=2 m/s^2"
       ballscrew fit --case my_screw.toml --measured run.csv --free preload,ball_train_constant
       ballscrew export-friction --case my_screw.toml --form stribeck --temperature "20, 40 degC"
       ballscrew monitor --case my_screw.toml --measured drag_torque.csv --threshold "50 %"
@@ -58,7 +60,7 @@ def cli() -> None:
 
 
 for command in (demo, study, validate, models_command, lubricants_command, torque,
-                case_command, screws_command, energy_command, fit_command,
+                case_command, screws_command, energy_command, check_command, fit_command,
                 export_friction_command, monitor_command, acceptance_command,
                 serve_command, sweep_command):  # fmt: skip
     cli.add_command(command)

@@ -10,7 +10,7 @@ import click
 from rich.table import Table
 
 from .._version import __version__
-from .common import case_option, stdout, write_json
+from .common import case_option, stdout, write_json, writing
 
 __all__ = ["monitor_command"]
 
@@ -83,7 +83,8 @@ def monitor_command(
         from ..report.monitor import monitor_figure
 
         path = Path(plot_file)
-        atomic_write(path, figure_bytes(monitor_figure(r), path.suffix.lower()[1:]))
+        with writing("--plot", plot_file):
+            atomic_write(path, figure_bytes(monitor_figure(r), path.suffix.lower()[1:]))
     if json_file:
         write_json(json_file, json_document(r.as_dict(__version__)))
     sys.stdout.flush()

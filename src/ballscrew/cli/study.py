@@ -8,7 +8,7 @@ import click
 from rich.console import Console
 
 from ..files import atomic_folder
-from .common import case_option, file_option, progress
+from .common import case_option, file_option, progress, writing
 
 __all__ = ["study"]
 
@@ -58,6 +58,8 @@ def study(
         if measured_file is not None:
             measured = read_measured(measured_file, case.screw)
             measured_text = Path(measured_file).read_text("utf-8")
+    with writing("--out", out_dir):  # a folder that cannot be made: said now, not in minutes
+        Path(out_dir).absolute().parent.mkdir(parents=True, exist_ok=True)
     with progress(console) as bar:
         task = bar.add_task("computing", total=9 + (measured is not None))
 
@@ -73,7 +75,7 @@ def study(
 
         files: list[Path] = []
         try:
-            with atomic_folder(Path(out_dir)) as folder:
+            with writing("--out", out_dir), atomic_folder(Path(out_dir)) as folder:
                 write_report(result, folder, measured_text, progress=tick2, written=files)
         except KeyboardInterrupt:
             click.echo(

@@ -12,7 +12,7 @@ from rich.console import Console
 from rich.table import Table
 
 from ..extras import require
-from .common import file_option, progress, stdout, write_json
+from .common import file_option, progress, stdout, write_json, writing
 
 __all__ = ["sweep_command"]
 
@@ -202,10 +202,11 @@ def sweep_command(
             bar.update(task, completed=done, total=total, description=f"chunks {done}/{total}")
 
         try:
-            report = run_sweep(
-                spec, target, workers=workers, scheduler=scheduler, restart=restart,
-                progress=step, notify=lambda text: console.print(text, highlight=False),
-            )  # fmt: skip
+            with writing("--out", out):
+                report = run_sweep(
+                    spec, target, workers=workers, scheduler=scheduler, restart=restart,
+                    progress=step, notify=lambda text: console.print(text, highlight=False),
+                )  # fmt: skip
         except (KeyboardInterrupt, Exception) as exc:
             if not isinstance(exc, KeyboardInterrupt) and not signal_received():
                 raise
@@ -223,7 +224,8 @@ def sweep_command(
         console_out.print(percentiles)
     for model, s in report.sobol.items():
         console_out.print(_sobol_table(model, s))
-    figures = _figures(target, report)
+    with writing("--out", out):
+        figures = _figures(target, report)
     for line in report.issues:  # "warning: ..." or, for routine ranges, "note: ..."
         click.echo(line, err=True)
     rate = report.points_per_second

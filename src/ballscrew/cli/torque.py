@@ -13,7 +13,7 @@ from rich.console import Console
 from rich.table import Table
 
 from ..errors import BallScrewInputError
-from .common import case_option, file_option, progress, stdout, write_json
+from .common import case_option, file_option, progress, stdout, write_json, writing
 
 MAX_POINTS = 2_000_000
 """The most operating points ``ballscrew torque`` computes without ``--max-points``."""
@@ -152,9 +152,10 @@ def torque(
     _print_table(run, table_kind, json_file)
     command = ["ballscrew", *sys.argv[1:]]
     if csv_file:
-        atomic_write(Path(csv_file), run.csv(layout=csv_layout, dialect=csv_dialect).encode())
-        meta = json_text([], run.provenance(command))
-        atomic_write(Path(csv_file + ".meta.json"), meta.encode("utf-8"))
+        with writing("--csv", csv_file):
+            atomic_write(Path(csv_file), run.csv(layout=csv_layout, dialect=csv_dialect).encode())
+            meta = json_text([], run.provenance(command))
+            atomic_write(Path(csv_file + ".meta.json"), meta.encode("utf-8"))
     if json_file:
         write_json(json_file, run.json(command))
 

@@ -9,7 +9,7 @@ from rich.console import Console
 from rich.table import Table
 
 from ..files import atomic_folder
-from .common import progress, stdout
+from .common import progress, stdout, writing
 
 __all__ = ["validate"]
 
@@ -51,7 +51,7 @@ def validate(out_dir: str, model_names: tuple[str, ...]) -> None:
         total = len(names) if names else len(MODELS)
         task = bar.add_task("scoring", total=total)
         rows = score(names, progress=lambda name: bar.update(task, description=name, advance=1))
-    with atomic_folder(Path(out_dir)) as folder:
+    with writing("--out", out_dir), atomic_folder(Path(out_dir)) as folder:
         files = write_scorecard(rows, folder)
     header, table_rows = summary_table(summarise(rows))
     # One column per model, one row per group: narrow enough for an 80-column terminal.

@@ -41,10 +41,9 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from ..contact import hertz
 from ..errors import BallScrewInputError, FloatArray, check_nonnegative, check_positive
 from ..geometry import BallScrew
-from ..loads import ball_loads
+from ..stiffness import nut_axial_stiffness
 
 __all__ = [
     "FORMS",
@@ -271,39 +270,6 @@ def stribeck(speed: npt.ArrayLike, torque: npt.ArrayLike) -> FrictionForm:
             "and exponent are then arbitrary"
         )
     return FrictionForm("stribeck", params, rms, mx, tuple(notes))
-
-
-def nut_axial_stiffness(screw: BallScrew, axial_load: float = 0.0) -> float:
-    r"""Axial stiffness of the nut's ball contacts [N/m] at ``axial_load`` [N].
-
-    The contact approach :math:`\delta(Q)` of screw and nut contacts (Hertz)
-    maps to an axial displacement :math:`\delta/(\sin\alpha\cos\lambda)`; the
-    stiffness is the difference quotient of the external load over the nut's
-    displacement (both half-nuts of a double nut or both contact-line
-    families of a 4-point nut act as springs in parallel while neither lifts
-    off). Only the contacts: the screw shaft, nut body and supports add
-    compliance.
-    """
-    sa = math.sin(screw.contact_angle) * math.cos(screw.lead_angle)
-    scale = max(abs(axial_load), screw.preload, 1.0)
-    step = 1e-4 * scale
-    # ball_loads puts |F| on family 1: difference forward from |F|.
-    loads = np.array([abs(axial_load), abs(axial_load) + step])
-    bl = ball_loads(screw, loads)
-    e = screw.reduced_modulus
-
-    def approach(q: FloatArray) -> FloatArray:
-        s = hertz(q, screw.rx_screw, screw.ry_screw, e).approach
-        n = hertz(q, screw.rx_nut, screw.ry_nut, e).approach
-        return np.asarray(s + n, dtype=float)
-
-    # Displacement of the nut along +F: family 1 (loaded by +F) closes.
-    x = approach(bl.normal_load_1) / sa
-    if screw.nut == "single" and axial_load == 0.0:
-        raise BallScrewInputError(
-            "axial_load", axial_load, "a load on a single nut without preload (no stiffness at 0)"
-        )
-    return float((loads[1] - loads[0]) / (x[1] - x[0]))
 
 
 def form_curve(form: str, w: FloatArray, p: dict[str, float]) -> FloatArray:

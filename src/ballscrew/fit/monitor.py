@@ -318,8 +318,11 @@ def _crossing(r: MonitorResult) -> None:
     y_th = math.log(r.limit.value) if r.trend_kind == "exponential" else r.limit.value
     if r.slope < 0.0:
         r.crossing = (y_th - r.intercept) / r.slope
-        if not r.series.time[0] <= r.crossing <= r.series.time[-1]:
-            r.notes.append(f"the crossing at {r.crossing:.4g} h is extrapolated beyond the series")
+        if r.crossing < r.series.time[0]:
+            r.notes.append(f"the trend is below the threshold from the first measurement on "
+                           f"(extrapolated back, it crossed at {r.crossing:.0f} h)")  # fmt: skip
+        elif r.crossing > r.series.time[-1]:
+            r.notes.append(f"the crossing at {r.crossing:.0f} h is extrapolated beyond the series")
     if r.limit.share is not None and r.trend_kind == "exponential":
         # A share of the initial preload is reached at ln(share)/b whatever F_0 is: the
         # interval is the slope's (its 95 % t interval), not the band's.

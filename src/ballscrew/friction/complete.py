@@ -154,15 +154,57 @@ evaluated directly; above, it is interpolated (:func:`_interpolated_integral`)."
 
 
 def _unique_integral(kappa: FloatArray, aspect: FloatArray) -> FloatArray:
-    """:func:`spin_sliding_integral` evaluated once per distinct (kappa, aspect) pair."""
+    """:func:`spin_sliding_integral` evaluated once per distinct (kappa, aspect) pair.
+
+    Up to :data:`DIRECT_INTEGRALS` distinct pairs it is evaluated directly,
+    above through :func:`_interpolated_integral` over the points' range. The
+    distinct pairs are counted on 1-D keys (a row-wise ``np.unique`` costs
+    about 1 µs a row): more distinct values of either coordinate than the
+    threshold mean more distinct pairs, so scattered points go straight to
+    the interpolation (pointwise, as if it had been evaluated on the distinct
+    pairs); otherwise each pair gets the integer key of its two ranks.
+    """
     kappa, aspect = np.broadcast_arrays(kappa, aspect)
-    pairs = np.stack([kappa, aspect], axis=-1).reshape(-1, 2)
-    unique, inverse = np.unique(pairs, axis=0, return_inverse=True)
-    if len(unique) <= DIRECT_INTEGRALS:
-        values = rl.spin_sliding_integral(unique[:, 0], unique[:, 1])
+    k, b = kappa.reshape(-1), aspect.reshape(-1)
+    k_unique = _distinct_or_none(k)
+    b_unique = None if k_unique is None else _distinct_or_none(b)
+    if k_unique is None or b_unique is None:
+        spline: FloatArray = _interpolated_integral(k, b).reshape(kappa.shape)
+        return spline
+    k_rank = np.searchsorted(k_unique, k)
+    b_rank = np.searchsorted(b_unique, b)
+    keys, inverse = np.unique(k_rank * len(b_unique) + b_rank, return_inverse=True)
+    k_pair, b_pair = k_unique[keys // len(b_unique)], b_unique[keys % len(b_unique)]
+    if len(keys) <= DIRECT_INTEGRALS:
+        values = rl.spin_sliding_integral(k_pair, b_pair)
     else:
-        values = _interpolated_integral(unique[:, 0], unique[:, 1])
+        values = _interpolated_integral(k_pair, b_pair)
     result: FloatArray = values[inverse.reshape(-1)].reshape(kappa.shape)
+    return result
+
+
+def _distinct_or_none(x: FloatArray) -> FloatArray | None:
+    """The sorted distinct values of ``x``, or None if there are more than :data:`DIRECT_INTEGRALS`.
+
+    A prefix of the values is looked at first, so that scattered points are
+    told apart without sorting them all.
+    """
+    if (
+        x.size > 4 * DIRECT_INTEGRALS
+        and len(_sorted_distinct(x[: 4 * DIRECT_INTEGRALS])) > DIRECT_INTEGRALS
+    ):
+        return None
+    distinct = _sorted_distinct(x)
+    return None if len(distinct) > DIRECT_INTEGRALS else distinct
+
+
+def _sorted_distinct(x: FloatArray) -> FloatArray:
+    """``np.unique(x)`` of a 1-D float array, without its import of ``numpy.ma`` (20 ms)."""
+    ordered = np.sort(x)
+    keep = np.empty(ordered.shape, dtype=bool)
+    keep[:1] = True
+    np.not_equal(ordered[1:], ordered[:-1], out=keep[1:])
+    result: FloatArray = ordered[keep]
     return result
 
 

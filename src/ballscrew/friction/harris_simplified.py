@@ -352,7 +352,12 @@ def harris_simplified(
     check_choice("rheology_model", rheology_model, RHEOLOGY_MODELS)
     check_choice("pressure_viscosity_model", pressure_viscosity_model, ("roelands", "barus"))
     check_nonnegative("mu0", mu0)
-    check_in_range("sliding_coefficient", sliding_coefficient, -1.0, 1.0, inclusive=(True, True))
+    # c_v < 0 (more of the ellipse slipping with the rolling than against it) would make
+    # the sliding friction drive the screw: a negative friction torque.
+    check_in_range(
+        "sliding_coefficient", sliding_coefficient, 0.0, 1.0, inclusive=(True, True),
+        unit="(0 to 1: below 0 the sliding friction would drive the screw)",
+    )  # fmt: skip
     tau0, gamma_l = limiting_shear(lubricant, limiting_shear_stress, limiting_shear_coefficient)
     if isinstance(nodes, bool) or not isinstance(nodes, int) or nodes < 2:
         raise BallScrewInputError("nodes", nodes, "a whole number >= 2")

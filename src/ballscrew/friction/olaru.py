@@ -150,6 +150,15 @@ def elastic_hysteresis_moment(
     """
     q = np.asarray(load, dtype=float)
     bracket = 1.0 - 3.519e-3 * max(radius_ratio - 1.0, 0.0) ** 0.806
+    if bracket < 0.0:
+        # Past a radius ratio of about 1109 (a conformity within about 1e-4 of 0.5) the
+        # fit gives a negative hysteresis: outside what it was fitted to.
+        raise BallScrewInputError(
+            "radius_ratio",
+            radius_ratio,
+            "at most about 1109 for the hysteresis fit (its bracket turns negative beyond): "
+            "a groove conformity this close to 0.5 is outside Olaru's model",
+        )
     if units == "SI":
         result: FloatArray = 7.48e-7 * (ball_diameter / 2.0) ** 0.33 * q**1.33 * bracket
         return result

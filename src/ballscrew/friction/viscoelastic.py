@@ -270,26 +270,7 @@ def viscoelastic_contact(
     # Solving for Q = 0 itself fails: the bed's inertia makes the support negative at
     # small penetrations, so the root would sit at an unphysical positive penetration.
     q_solve = np.where(q > 0.0, q, 1.0)
-
-    def residual(tau: FloatArray) -> FloatArray:
-        total: FloatArray = _balance(tau, v, radius, k, m, gamma, leading_edge)[0] - q_solve
-        return total
-
-    # Bracket: N(0) - Q = -Q <= 0; grow the upper end from the static solution.
-    lo = np.zeros_like(q)
-    hi = np.sqrt(q_solve / (np.pi * k * radius)) * 1.5
-    f_lo = -q_solve
-    f_hi = residual(hi)
-    for _ in range(200):
-        low = f_hi < 0.0
-        if not low.any():
-            break
-        lo = np.where(low, hi, lo)
-        f_lo = np.where(low, f_hi, f_lo)
-        hi = np.where(low, hi * 2.0, hi)
-        f_hi = residual(hi)
-    else:  # pragma: no cover - the support grows at least like tau**2
-        raise RuntimeError("viscoelastic_contact: could not bracket the penetration")
+    lo, hi, f_lo, f_hi = _bracket(q_solve, v, radius, k, m, gamma, leading_edge)
     # Illinois regula falsi on all points at once.
     flat_v = v.reshape(-1)
     flat_q = q_solve.reshape(-1)
@@ -303,6 +284,63 @@ def viscoelastic_contact(
     tau = illinois(residual_at, lo, hi, f_lo, f_hi, xtol=1e-300, rtol=1e-13, ftol=1e-12 * q_solve)
     tau = np.where(q > 0.0, tau, 0.0)
     _, edge, theta0, mom = _balance(tau, v, radius, k, m, gamma, leading_edge)
+    friction = _rolling_friction(tau, v, radius, k, m, gamma, theta0, mom, leading_edge, edge_power)
+    return ViscoelasticContact(
+        penetration=tau,
+        friction=np.where(q > 0.0, friction, 0.0),
+        edge_force=np.where(q > 0.0, edge, 0.0),
+        leading_edge_angle=theta0,
+    )
+
+
+def _bracket(
+    q_solve: FloatArray,
+    v: FloatArray,
+    radius: float,
+    k: float,
+    m: float,
+    gamma: float,
+    leading_edge: bool,
+) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
+    """A bracket of the penetration at every point and the residuals at its ends.
+
+    ``N(0) - Q = -Q <= 0``; the upper end grows from the static solution.
+    """
+
+    def residual(tau: FloatArray) -> FloatArray:
+        total: FloatArray = _balance(tau, v, radius, k, m, gamma, leading_edge)[0] - q_solve
+        return total
+
+    lo = np.zeros_like(q_solve)
+    hi = np.sqrt(q_solve / (np.pi * k * radius)) * 1.5
+    f_lo = -q_solve
+    f_hi = residual(hi)
+    for _ in range(200):
+        low = f_hi < 0.0
+        if not low.any():
+            break
+        lo = np.where(low, hi, lo)
+        f_lo = np.where(low, f_hi, f_lo)
+        hi = np.where(low, hi * 2.0, hi)
+        f_hi = residual(hi)
+    else:  # pragma: no cover - the support grows at least like tau**2
+        raise RuntimeError("viscoelastic_contact: could not bracket the penetration")
+    return lo, hi, f_lo, f_hi
+
+
+def _rolling_friction(
+    tau: FloatArray,
+    v: FloatArray,
+    radius: float,
+    k: float,
+    m: float,
+    gamma: float,
+    theta0: FloatArray,
+    mom: tuple[FloatArray, ...],
+    leading_edge: bool,
+    edge_power: str,
+) -> FloatArray:
+    """The bed's rolling friction force at the penetration ``tau``: bulk plus leading edge."""
     _, i1, i2, i3, _, ixy2 = mom
     a0 = k * tau - m * v**2 / radius
     a1 = gamma * v / radius
@@ -314,12 +352,8 @@ def viscoelastic_contact(
         edge_friction = 0.0 * edge_friction
     elif edge_power == "work":
         edge_friction = 2.0 * edge_friction
-    return ViscoelasticContact(
-        penetration=tau,
-        friction=np.where(q > 0.0, bulk + edge_friction, 0.0),
-        edge_force=np.where(q > 0.0, edge, 0.0),
-        leading_edge_angle=theta0,
-    )
+    total: FloatArray = bulk + edge_friction
+    return total
 
 
 @register(

@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import difflib
 import math
+import re
 import tomllib
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
@@ -35,6 +36,7 @@ from pydantic import ValidationError
 from .. import lubricants
 from ..errors import BallScrewInputError, FloatArray
 from ..geometry import BallScrew, check_buildable
+from ..limits import check_operating_bounds
 from ..lubricant import Lubricant
 from ..ratings import Ratings, static_rating_estimate
 from ..units import Reading, parse_range, to_si
@@ -50,7 +52,58 @@ __all__ = [
     "default_case_path",
     "load_case",
     "parse_case",
+    "parse_toml",
 ]
+
+MAX_TOML_CHARS = 1_000_000
+"""The longest TOML text read (a case or sweep file is a few kB)."""
+MAX_TOML_DEPTH = 32
+"""The deepest nesting of tables and arrays, and the most parts of a dotted key."""
+_STRINGS_AND_COMMENTS = re.compile(
+    r""""{3}[\s\S]*?"{3}|'{3}[\s\S]*?'{3}|"(?:[^"\\\n]|\\.)*"|'[^'\n]*'|#[^\n]*"""
+)
+_DOTTED_KEY = re.compile(rf"(?:[A-Za-z0-9_-]+[ \t]*\.[ \t]*){{{MAX_TOML_DEPTH},}}")
+
+
+def _quoted(match: re.Match[str]) -> str:
+    """A string as one bare word (a quoted key's part stays a part), a comment as nothing."""
+    return "" if match.group().startswith("#") else "s"
+
+
+def parse_toml(text: str, source: str) -> dict[str, Any]:
+    """TOML text parsed, within the limits that keep the parser quick; ``source`` names it.
+
+    The standard library's parser recurses once per level of nesting (a file of
+    100 000 ``[`` ran out of stack) and slows with the square of a dotted
+    key's parts (one key of 50 000 parts took a minute): the text is refused,
+    naming ``source``, when it is over :data:`MAX_TOML_CHARS` characters, has a
+    key of :data:`MAX_TOML_DEPTH` dotted parts or more, or nests deeper.
+    """
+    if len(text) > MAX_TOML_CHARS:
+        raise BallScrewInputError(
+            source, f"{len(text):,} characters", f"at most {MAX_TOML_CHARS:,} characters"
+        )
+    if _DOTTED_KEY.search(_STRINGS_AND_COMMENTS.sub(_quoted, text)):
+        raise BallScrewInputError(
+            source, "(file)", f"keys of fewer than {MAX_TOML_DEPTH} dotted parts"
+        )
+    deep = f"tables and arrays nested at most {MAX_TOML_DEPTH} deep"
+    try:
+        raw = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise BallScrewInputError(source, "(file)", f"valid TOML ({exc})") from None
+    except RecursionError:
+        raise BallScrewInputError(source, "(file)", deep) from None
+    level: list[tuple[Any, int]] = [(raw, 0)]
+    while level:  # iteratively: a deep structure must not overflow the check either
+        value, depth = level.pop()
+        if depth > MAX_TOML_DEPTH:
+            raise BallScrewInputError(source, "(file)", deep)
+        if isinstance(value, dict):
+            level.extend((v, depth + 1) for v in value.values())
+        elif isinstance(value, list):
+            level.extend((v, depth + 1) for v in value)
+    return raw
 
 
 @dataclass(frozen=True)
@@ -118,6 +171,13 @@ class Case:
         The screw's load ratings C_a and C_0a [N] with their sources (given,
         from the designation's catalogue row, or C_0a estimated from the
         geometry); :meth:`load_ratings` estimates them when None.
+    motor : dict
+        ``[motor]`` in SI (N·m, rad/s), the keys given.
+    check : dict
+        ``[check]`` in SI (s, -, N/m, K) and the accuracy grade, the keys given
+        or defaulted by the schema.
+    axis_given : frozenset of str
+        The ``[axis]`` keys the file wrote (a default is not a given value).
     """
 
     title: str
@@ -139,12 +199,26 @@ class Case:
     thermal: dict[str, float] = field(default_factory=dict)
     wiper_drag: float = 0.0
     ratings: Ratings | None = None
+    motor: dict[str, float] = field(default_factory=dict)
+    check: dict[str, Any] = field(default_factory=dict)
+    axis_given: frozenset[str] = frozenset()
 
     def load_ratings(self) -> Ratings:
         """The screw's load ratings: the case's, else C_0a estimated from the geometry."""
         if self.ratings is not None:
             return self.ratings
         return _estimated(self.screw, None, "")
+
+    @property
+    def dynamic_load_rating(self) -> float | None:
+        """:math:`C_a` [N] from the file or the designation's catalogue row, else None."""
+        return self.ratings.dynamic if self.ratings is not None else None
+
+    @property
+    def static_load_rating(self) -> float | None:
+        """:math:`C_{0a}` [N] from the file or the catalogue row; None when only estimated."""
+        r = self.ratings
+        return r.static if r is not None and not r.static_estimated else None
 
     def parameters_for(self, model: str) -> dict[str, Any]:
         """The case's parameters of ``model`` (a fresh dict; empty when it gives none).
@@ -224,6 +298,9 @@ def parse_case(text: str, *, source: str = "case") -> Case:
 
     lub = _lubricant(data.lubricant, notes)
     speed, temperature, axial = _operation(data, notes, read)
+    # What every run checks before it computes, named as the file names it.
+    check_operating_bounds(speed, temperature, axial, "operation.")
+    lub.check_temperature("operation.temperature", temperature)
     st = data.study
     wiper = 0.0
     if s.wiper_drag is not None:
@@ -246,6 +323,15 @@ def parse_case(text: str, *, source: str = "case") -> Case:
         else si("study", "temperature", st.temperature, "degC")
     )
     axis, thermal = _axis(data, si), _given_si(data, si, _THERMAL_UNITS)
+    motor = {
+        name: si("motor", name, getattr(data.motor, name), unit)
+        for name, unit in _MOTOR_UNITS
+        if getattr(data.motor, name) is not None
+    }
+    for name, value in motor.items():
+        if not (math.isfinite(value) and value > 0.0):
+            raise BallScrewInputError(f"motor.{name}", getattr(data.motor, name), "a value > 0")
+    check = _check(data, si)
     notes.extend(Assumption(r.field, r.text, f"read as {r.reading}") for r in read)
     return Case(
         title=data.title,
@@ -267,15 +353,15 @@ def parse_case(text: str, *, source: str = "case") -> Case:
         thermal=thermal,
         wiper_drag=wiper,
         ratings=ratings,
+        motor=motor,
+        check=check,
+        axis_given=frozenset(data.axis.model_fields_set),
     )
 
 
 def _case_file(text: str, source: str) -> CaseFile:
     """The TOML text parsed and validated against the case file's schema."""
-    try:
-        raw = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise BallScrewInputError(source, "(file)", f"valid TOML ({exc})") from None
+    raw = parse_toml(text, source)
     try:
         return CaseFile.model_validate(raw)
     except ValidationError as exc:
@@ -324,6 +410,53 @@ _THERMAL_UNITS = (
     ("ambient", "degC"),
 )
 """The thermal ``[axis]`` keys and their SI units."""
+
+
+_MOTOR_UNITS = (("rated_torque", "N*m"), ("peak_torque", "N*m"), ("rated_speed", "rad/s"))
+"""The ``[motor]`` keys and their SI units."""
+
+_CHECK_UNITS = (
+    ("required_life", "s"),
+    ("reliability", ""),
+    ("static_safety", ""),
+    ("support_stiffness", "N/m"),
+    ("pretension_temperature", "K"),
+)
+"""The numeric ``[check]`` keys and their SI units."""
+
+
+def _check(data: CaseFile, si: Callable[[str, str, Any, str], float]) -> dict[str, Any]:
+    """``[check]`` in SI, each value checked for its range."""
+    c = data.check
+    out: dict[str, Any] = {
+        name: si("check", name, getattr(c, name), unit)
+        for name, unit in _CHECK_UNITS
+        if getattr(c, name) is not None
+    }
+    for name in ("required_life", "static_safety", "support_stiffness"):
+        if name in out and not (math.isfinite(out[name]) and out[name] > 0.0):
+            raise BallScrewInputError(f"check.{name}", getattr(c, name), "a value > 0")
+    from ..sizing import RELIABILITY_FACTORS, TRAVEL_VARIATION_300
+
+    levels = [k for k in RELIABILITY_FACTORS if abs(k - out["reliability"]) < 1e-9]
+    if not levels:
+        raise BallScrewInputError(
+            "check.reliability", c.reliability,
+            "one of 90, 95, 96, 97, 98 or 99 % (ISO 3408-5's a1)",
+        )  # fmt: skip
+    out["reliability"] = levels[0]
+    if not (math.isfinite(out["pretension_temperature"]) and out["pretension_temperature"] >= 0):
+        raise BallScrewInputError(
+            "check.pretension_temperature", c.pretension_temperature, "a temperature rise >= 0 K"
+        )
+    if c.accuracy_grade is not None:
+        grade = c.accuracy_grade.strip().upper()
+        if grade not in TRAVEL_VARIATION_300:
+            raise BallScrewInputError(
+                "check.accuracy_grade", c.accuracy_grade, f"one of {list(TRAVEL_VARIATION_300)}"
+            )
+        out["accuracy_grade"] = grade
+    return out
 
 
 def _given_si(
@@ -428,8 +561,10 @@ def _screw(
         static = si("screw", "static_load_rating", s.static_load_rating, "N")
         static_source = "screw.static_load_rating"
     for name, value in (("dynamic_load_rating", rating), ("static_load_rating", static)):
-        if value is not None and not (math.isfinite(value) and value > 0.0):
-            raise BallScrewInputError(f"screw.{name}", getattr(s, name), "a force > 0")
+        if value is not None and not (math.isfinite(value) and 0.0 < value <= 1e8):
+            raise BallScrewInputError(
+                f"screw.{name}", getattr(s, name), "a force > 0 and <= 100 MN"
+            )
     ways = [
         k for k in ("preload", "preload_drag_torque", "preload_share") if getattr(s, k) is not None
     ]

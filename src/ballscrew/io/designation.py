@@ -169,7 +169,7 @@ def parse_size(text: str) -> dict[str, Any]:
 
 @dataclass(frozen=True)
 class ResolvedDesignation:
-    """What a designation gives: BallScrew keyword values (SI), rating and notes."""
+    """What a designation gives: BallScrew keyword values (SI), load ratings and notes."""
 
     geometry: dict[str, Any]
     dynamic_load_rating: float | None = None

@@ -126,15 +126,16 @@ class ScrewSection(BaseModel):
     dynamic_load_rating: Value | None = _f(
         None,
         "force",
-        "dynamic load rating C_a, for preload_share and the plausibility rules (default: the "
-        "designation's catalogue value)",
+        "dynamic load rating C_a, for preload_share, the plausibility rules and the life of "
+        "ballscrew check (default: the designation's catalogue value)",
         "63.4 kN",
     )
     static_load_rating: Value | None = _f(
         None,
         "force",
-        "static load rating C_0a, which loads are checked against (default: the designation's "
-        "catalogue value, else estimated from the geometry by ISO 3408-5's 4200 MPa)",
+        "static load rating C_0a, which loads are checked against and the static safety of "
+        "ballscrew check (default: the designation's catalogue value, else estimated from the "
+        "geometry by ISO 3408-5's 4200 MPa)",
         "184 kN",
     )
     youngs_modulus_ball: Value | None = _f(None, "pressure", "default 210 GPa", "210 GPa")
@@ -298,6 +299,64 @@ class AxisSection(BaseModel):
     ambient: Value = _f("20 degC", "temperature", "of the air and the machine")
 
 
+class MotorSection(BaseModel):
+    """``[motor]``: the servo motor's ratings, for ``ballscrew check``.
+
+    Its rotor inertia and the gear are ``[axis]`` motor_inertia and gear_ratio.
+    """
+
+    model_config = ConfigDict(extra="forbid")
+    rated_torque: Value | None = _f(
+        None, "torque", "continuous (rated) torque, against the cycle's RMS torque", "2.4 N*m"
+    )
+    peak_torque: Value | None = _f(
+        None, "torque", "peak torque of motor and drive, against the cycle's peak", "7.2 N*m"
+    )
+    rated_speed: Value | None = _f(
+        None, "angular speed", "speed up to which the motor gives its torque", "3000 rpm"
+    )
+
+
+class CheckSection(BaseModel):
+    """``[check]``: what ``ballscrew check`` asks of the axis."""
+
+    model_config = ConfigDict(extra="forbid")
+    required_life: Value | None = _f(
+        None,
+        "time",
+        "nominal life the screw must reach (none: 20000 h, THK's and NSK's figure for "
+        "machine tools)",
+        "20000 h",
+    )
+    reliability: Value = _f("90 %", "-", "reliability of the life (90 to 99 %, ISO 3408-5 a1)")
+    static_safety: Value = _f(
+        2.0,
+        "-",
+        "least static safety factor C_0a/F_max (THK's guideline: 2 without vibration or "
+        "impact, 5 with)",
+    )
+    accuracy_grade: str | None = _f(
+        None,
+        "-",
+        "accuracy grade of the screw for the thermal lead error: P1, P3, P5, T5, T7, T10 (ISO "
+        "3408-3) or C0, C1, C3, C5, C7, C10 (JIS B 1192)",
+        "P3",
+    )
+    support_stiffness: Value | None = _f(
+        None,
+        "force / length",
+        "axial stiffness of the thrust bearings, from their catalogue (none: taken as rigid, "
+        "and said so)",
+        "750 N/um",
+    )
+    pretension_temperature: Value = _f(
+        "0 K",
+        "temperature difference",
+        "temperature rise that the screw's pre-tension absorbs (fixed-fixed mounting; 0: none)",
+        "3 K",
+    )
+
+
 class StudySection(BaseModel):
     """``[study]``: settings of ``ballscrew study`` (the study's own values by default)."""
 
@@ -346,6 +405,8 @@ class CaseFile(BaseModel):
     lubricant: LubricantSection
     operation: OperationSection = Field(default_factory=OperationSection)
     axis: AxisSection = Field(default_factory=AxisSection)
+    motor: MotorSection = Field(default_factory=MotorSection)
+    check: CheckSection = Field(default_factory=CheckSection)
     study: StudySection = Field(default_factory=StudySection)
 
 
@@ -354,6 +415,8 @@ SECTIONS: dict[str, type[BaseModel]] = {
     "lubricant": LubricantSection,
     "operation": OperationSection,
     "axis": AxisSection,
+    "motor": MotorSection,
+    "check": CheckSection,
     "study": StudySection,
 }
 

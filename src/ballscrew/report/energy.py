@@ -13,9 +13,7 @@
 
 from __future__ import annotations
 
-import csv
-import io
-from collections.abc import Mapping, Sequence
+from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
@@ -29,6 +27,7 @@ from ..axis.motion import Profile
 from ..errors import FloatArray
 from ..files import atomic_write
 from .document import Block, html_page, markdown
+from .outputs import csv_bytes
 from .plotting import write_figures
 
 __all__ = ["write_energy_report"]
@@ -97,14 +96,6 @@ def _temperature_figure(history: Mapping[str, tuple[FloatArray, FloatArray]]) ->
     return fig
 
 
-def _csv(header: list[str], rows: Sequence[Sequence[object]]) -> bytes:
-    buffer = io.StringIO()
-    writer = csv.writer(buffer, lineterminator="\n")
-    writer.writerow(header)
-    writer.writerows(rows)
-    return buffer.getvalue().encode("utf-8")
-
-
 def _figures(
     profile: Profile,
     results: Mapping[str, CycleResult],
@@ -132,7 +123,7 @@ def _time_series_csv(profile: Profile, results: Mapping[str, CycleResult]) -> by
                    f"friction power {name} [W]"]  # fmt: skip
         columns += [r.friction_torque, r.motor_torque, r.friction_power]
     rows = [[f"{float(v):.7g}" for v in values] for values in zip(*columns, strict=True)]
-    return _csv(header, rows)
+    return csv_bytes(header, rows)
 
 
 def _figure_csvs(
@@ -143,18 +134,18 @@ def _figure_csvs(
     """One CSV per figure, as the report links them."""
     names = list(results)
     data: dict[str, bytes] = {}
-    data["motion"] = _csv(
+    data["motion"] = csv_bytes(
         ["time [s]", "table speed [m/min]", *(f"motor torque {n} [N*m]" for n in names)],
         [[f"{float(t):.7g}", f"{float(v) * 60:.7g}",
           *(f"{float(results[n].motor_torque[i]):.7g}" for n in names)]
          for i, (t, v) in enumerate(zip(profile.time, profile.speed, strict=True))],
     )  # fmt: skip
-    data["power"] = _csv(
+    data["power"] = csv_bytes(
         ["time [s]", *(f"friction power {n} [W]" for n in names)],
         [[f"{float(t):.7g}", *(f"{float(results[n].friction_power[i]):.7g}" for n in names)]
          for i, t in enumerate(profile.time)],
     )  # fmt: skip
-    data["energy"] = _csv(
+    data["energy"] = csv_bytes(
         ["model", "screw out [J]", "screw back [J]", "support bearings [J]",
          "catalogue rule [J]"],
         [[n, f"{r.friction_energy_out:.7g}", f"{r.friction_energy_back:.7g}",
@@ -162,7 +153,7 @@ def _figure_csvs(
          for n, r in results.items()],
     )  # fmt: skip
     if history:
-        data["temperature"] = _csv(
+        data["temperature"] = csv_bytes(
             ["model", "time [s]", "temperature [degC]"],
             [[n, f"{float(t):.7g}", f"{float(v):.7g}"]
              for n, (ts, vs) in history.items() for t, v in zip(ts, vs, strict=True)],
@@ -177,7 +168,7 @@ def _steady_csv(summary: Mapping[str, Mapping[str, object]]) -> bytes | None:
     }
     if not steady:
         return None
-    return _csv(
+    return csv_bytes(
         ["model", "speed [rpm]", "steady temperature [degC]", "torque [N*m]", "power [W]"],
         [[n, *(f"{float(x):.7g}" for x in row)]
          for n, st in steady.items()
@@ -238,7 +229,7 @@ def write_energy_report(
     if steady is not None:
         data["steady"] = steady
     keys = _scalar_keys(summary)
-    data["summary"] = _csv(["model", *keys], [[n, *(v.get(k, "") for k in keys)]
+    data["summary"] = csv_bytes(["model", *keys], [[n, *(v.get(k, "") for k in keys)]
                                                for n, v in summary.items()])  # fmt: skip
     for key, content in data.items():
         path = folder / "data" / f"{key}.csv"

@@ -35,6 +35,7 @@ from ..kinematics import rad_s_to_rpm
 
 __all__ = [
     "DIALECTS",
+    "csv_bytes",
     "csv_text",
     "json_text",
     "provenance",
@@ -100,6 +101,19 @@ def _wide(rows: Sequence[Mapping[str, Any]]) -> list[dict[str, Any]]:
         point[f"torque {r['model']} [N*m]"] = r["torque [N*m]"]
     columns = [*POINT_KEYS, *(f"torque {m} [N*m]" for m in models)]
     return [{c: p.get(c, "") for c in columns} for p in points.values()]
+
+
+def csv_bytes(header: Sequence[str], rows: Sequence[Sequence[object]]) -> bytes:
+    r"""A header and rows as CSV (comma, ``\n`` line ends), UTF-8 bytes for a report file.
+
+    >>> csv_bytes(["a", "b"], [[1, "x"]])
+    b'a,b\n1,x\n'
+    """
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow(header)
+    writer.writerows(rows)
+    return buffer.getvalue().encode("utf-8")
 
 
 def csv_text(

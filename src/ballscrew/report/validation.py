@@ -21,8 +21,6 @@
 
 from __future__ import annotations
 
-import csv
-import io
 import math
 from pathlib import Path
 
@@ -44,6 +42,7 @@ from ..study.validation import (
     summarise,
 )
 from .document import Block, html_page, markdown
+from .outputs import csv_bytes
 from .plotting import figure_bytes
 
 __all__ = ["summary_csv", "summary_table", "write_scorecard"]
@@ -56,20 +55,12 @@ def _g(x: float, digits: int = 4) -> str:
     return "nan" if not math.isfinite(x) else f"{x:.{digits}g}"
 
 
-def _csv(header: list[str], rows: list[list[str]]) -> bytes:
-    out = io.StringIO()
-    w = csv.writer(out, lineterminator="\n")
-    w.writerow(header)
-    w.writerows(rows)
-    return out.getvalue().encode("utf-8")
-
-
 def _rows_csv(rows: list[ScoreRow]) -> bytes:
     header = [
         "case", "kind", "nut", "source", "reference", "reference_low", "reference_high", "unit",
         "model", "predicted", "interval_low", "interval_high", "ratio", "within", "training",
     ]  # fmt: skip
-    return _csv(
+    return csv_bytes(
         header,
         [
             [
@@ -101,7 +92,7 @@ def summary_table(scores: list[ModelScore]) -> tuple[list[str], list[list[str]]]
 def summary_csv(scores: list[ModelScore]) -> bytes:
     """The per-model summary as CSV bytes."""
     header, rows = summary_table(scores)
-    return _csv(header, rows)
+    return csv_bytes(header, rows)
 
 
 def _models(rows: list[ScoreRow]) -> list[str]:
@@ -150,7 +141,7 @@ def _predicted_figure(rows: list[ScoreRow]) -> tuple[Figure, bytes]:
     ax.set_ylabel("predicted torque [N·m]")
     ax.set_title("Every model against every reference case")
     ax.legend(fontsize=7, loc="upper left")
-    data = _csv(
+    data = csv_bytes(
         ["model", "case", "kind", "reference [N*m]", "predicted [N*m]"],
         [[r.model, r.case, r.kind, _g(r.reference, 6), _g(r.predicted, 6)] for r in torque_rows],
     )
@@ -205,7 +196,7 @@ def _residual_figure(rows: list[ScoreRow]) -> tuple[Figure, bytes]:
     axes[0].set_ylabel("model / catalogue rule [-]")
     axes[-1].legend(fontsize=7, loc="best")
     fig.suptitle("Double nuts against the catalogue rule (lines: the partial slopes)")
-    data = _csv(["model", "variable", "value", "model/rule [-]"], table)
+    data = csv_bytes(["model", "variable", "value", "model/rule [-]"], table)
     return fig, data
 
 

@@ -65,6 +65,20 @@ def study_findings(
     )
     by_key = {f.key: f for f in figures}
     models = {s.model: s for s in by_key["fig9_all_models"].series}
+    return [
+        *_model_statements(models, lo, hi, reproduction),
+        _preload_statement(by_key["fig7_simplified_preload"].series, preloads, reproduction),
+        *_lubricant_statements(
+            by_key["fig8_lubricants"].series, lubricant_temperatures, reproduction
+        ),
+        _budget_statement(by_key["fig11_complete_budget"].series),
+    ]
+
+
+def _model_statements(
+    models: dict[str, Series], lo: float, hi: float, reproduction: bool
+) -> list[str]:
+    """Each model's span and place in the band; which comes closest (beside the study's)."""
     out = []
     banded = math.isfinite(lo) and math.isfinite(hi)
     for name in ("olaru", "viscoelastic", "harris-simplified", "complete"):
@@ -100,16 +114,30 @@ def study_findings(
             f"measurement; here it starts from {float(visco.torque[0]):.3g} N·m at the lowest "
             f"speed and is {_relation(visco, lo, hi)}."
         )
-    pre = by_key["fig7_simplified_preload"].series
+    return out
+
+
+def _preload_statement(
+    pre: tuple[Series, ...], preloads: dict[float, float], reproduction: bool
+) -> str:
+    """The drag torques' preloads and how much the simplified model's torque follows them."""
     ratio = float(np.mean(pre[-1].torque / pre[0].torque))
     forces = ", ".join(f"{f:.0f} N" for f in preloads.values())
-    out.append(
+    return (
         f"Preload: the drag torques {', '.join(f'{t:.3g}' for t in preloads)} N·m correspond to "
         f"preloads of {forces} (catalogue formula); between the lowest and highest the simplified "
         f"model's torque changes by a factor {ratio:.2f} on average."
         + (" The study found the preload to dominate the uncertainty." if reproduction else "")
     )
-    lub_series = by_key["fig8_lubricants"].series
+
+
+def _lubricant_statements(
+    lub_series: tuple[Series, ...],
+    lubricant_temperatures: dict[str, tuple[float, ...]],
+    reproduction: bool,
+) -> list[str]:
+    """How each lubricant's torque changes from its lowest to its highest temperature."""
+    out = []
     for name in lubricant_temperatures:
         mine = [s for s in lub_series if s.lubricant == name]
         if len(mine) >= 2:
@@ -125,8 +153,11 @@ def study_findings(
                     "friction slightly"
                 )
             out.append(text + ".")
-    budget = by_key["fig11_complete_budget"].series
+    return out
+
+
+def _budget_statement(budget: tuple[Series, ...]) -> str:
+    """The complete model's loss budget, averaged over the speeds."""
     total = sum(float(np.mean(b.torque)) for b in budget)
     shares = ", ".join(f"{b.label} {float(np.mean(b.torque)) / total:.0%}" for b in budget)
-    out.append(f"Loss budget of the complete model, averaged over the speeds: {shares}.")
-    return out
+    return f"Loss budget of the complete model, averaged over the speeds: {shares}."

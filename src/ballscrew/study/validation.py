@@ -293,10 +293,7 @@ def jungnickel_loss_torque(
     z = screw.loaded_turns * screw.circuits * math.pi * dm / (cos_l * dw)
     q = screw.preload / (z * math.sin(screw.contact_angle) * cos_l)
     w = q / (e * (dw / 2.0) ** 2)
-    nu20 = float(lubricant.kinematic_viscosity(20.0))
-    nu40 = float(lubricant.kinematic_viscosity(40.0))
-    b = math.log(nu20 / nu40) / (1.0 / 115.0 - 1.0 / 135.0)
-    a = nu40 / math.exp(b / 135.0)
+    a, b, nu40 = _vogel_cameron(lubricant)
     g = 1.29e-7 * nu40**0.204 * e
     k, c = (0.4936, 0.5) if screw.nut == "single-4point" else (0.512, 0.516)
     sets = 2.0 if screw.nut == "double" else 1.0
@@ -306,6 +303,18 @@ def jungnickel_loss_torque(
     group = rho * nu * omega * dm / (2.0 * e * dw * cos_l)
     result: FloatArray = sets * 9.16 * z * q * dm / (2.0 * cos_l) * g**-0.2 * w**-c * group**k
     return result
+
+
+def _vogel_cameron(lubricant: Lubricant) -> tuple[float, float, float]:
+    """Jungnickel's ``nu = A exp(B/(T + 95))`` through the oil's 20 and 40 °C viscosities.
+
+    Returns A [m²/s], B [°C] and the 40 °C viscosity [m²/s].
+    """
+    nu20 = float(lubricant.kinematic_viscosity(20.0))
+    nu40 = float(lubricant.kinematic_viscosity(40.0))
+    b = math.log(nu20 / nu40) / (1.0 / 115.0 - 1.0 / 135.0)
+    a = nu40 / math.exp(b / 135.0)
+    return a, b, nu40
 
 
 TREND_SOURCE = (

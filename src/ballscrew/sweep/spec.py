@@ -28,7 +28,6 @@ values of one point to the case's screw, lubricant and model parameters.
 
 from __future__ import annotations
 
-import tomllib
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -40,7 +39,8 @@ import tomlkit
 from ..chain import FrictionResult
 from ..errors import BallScrewInputError, FloatArray
 from ..friction import MODELS, get_model
-from ..io.case import Case, load_case, parse_case
+from ..io.case import Case, load_case, parse_case, parse_toml
+from ..limits import check_operating_bounds
 from ..units import parse_range, to_si
 from .fields import (
     OPERATING,
@@ -214,10 +214,7 @@ def _names(key: str, raw: Any, default: list[str], allowed: Sequence[str]) -> tu
 
 def parse_sweep(text: str, *, folder: str | Path = ".", source: str = "sweep") -> SweepSpec:
     """Check a sweep file given as text; relative case paths are read from ``folder``."""
-    try:
-        raw = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise BallScrewInputError(source, "(file)", f"valid TOML ({exc})") from None
+    raw = parse_toml(text, source)
     unknown_keys("", raw, TOP_KEYS)
     case = _case(raw, Path(folder))
     models = _names("models", raw.get("models"), ["complete"], sorted(MODELS))
@@ -252,6 +249,10 @@ def parse_sweep(text: str, *, folder: str | Path = ".", source: str = "sweep") -
         where = f"axes.{name}"
         if name in OPERATING:
             operating[name] = np.asarray(_values(where, value, OPERATING[name]), dtype=float)
+            bounds = {k: operating[k] if k == name else 0.0 for k in OPERATING}
+            check_operating_bounds(**bounds, prefix="axes.")  # named as the file names it
+            if name == "temperature":
+                case.lubricant.check_temperature(where, operating[name])
             continue
         owner, unit = field_unit(name, models, where)
         default = MODELS[owner].parameters[name.partition(".")[2]] if owner in MODELS else None

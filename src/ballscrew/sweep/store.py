@@ -21,7 +21,7 @@ import numpy as np
 
 from .._version import __version__
 from ..errors import BallScrewInputError
-from ..files import deferred_signals
+from ..files import swap_in
 from ..friction import get_model
 from .spec import OPERATING, OUTPUT_TABLE, OUTPUTS, SCALAR_OUTPUTS
 
@@ -204,14 +204,10 @@ def finalize(partial: Path, out: Path, extra_attrs: dict[str, Any]) -> None:
     group = zarr.open_group(path, mode="r+", zarr_format=FORMAT)
     group.attrs.update(_json_safe(extra_attrs))
     zarr.consolidate_metadata(str(path), zarr_format=FORMAT)
-    with deferred_signals():
-        old = None
-        if out.exists():
-            old = out.parent / f".{out.name}.old-{secrets.token_hex(4)}"
-            out.rename(old)
-        path.rename(out)
+    old = out.parent / f".{out.name}.old-{secrets.token_hex(4)}"
+    moved = swap_in(path, out, aside=old)
     shutil.rmtree(partial, ignore_errors=True)
-    if old is not None:
+    if moved:
         shutil.rmtree(old, ignore_errors=True)
 
 

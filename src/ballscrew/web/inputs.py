@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import json
 import math
-import tomllib
 from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
@@ -20,7 +19,7 @@ from typing import Any
 import tomlkit
 
 from ..errors import BallScrewInputError
-from ..io.case import Case, parse_case
+from ..io.case import Case, parse_case, parse_toml
 from ..units import range_size
 
 __all__ = [
@@ -63,9 +62,6 @@ class Limits:
     move_seconds: float = 60.0
     depth: int = 6
     seconds: float = 10.0
-
-
-LIMITS = Limits()
 
 
 LIMITS = Limits()
@@ -188,11 +184,9 @@ def read_case_file(body: bytes) -> dict[str, Any]:
             BallScrewInputError("case", "(file)", "a UTF-8 text file")
         ) from None
     try:
-        fields = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise ApiError.from_input(
-            BallScrewInputError("case", "(file)", f"valid TOML ({exc})")
-        ) from None
+        fields = parse_toml(text, "case")
+    except BallScrewInputError as exc:
+        raise ApiError.from_input(exc) from None
     # Dates and times (TOML has them, case files do not) and inf or nan become
     # text, which the form shows and the computation then refuses by name.
     return {"fields": _as_text_where_json_cannot(fields)}

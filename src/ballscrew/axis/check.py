@@ -1,0 +1,536 @@
+r"""The whole axis check: life, safety, speed, stiffness, thermal lead error and the motor.
+
+What ``ballscrew check`` computes. :func:`axis_check` takes an
+:class:`~ballscrew.axis.run.EnergyRun` (the case, the motion cycle, the torques
+and the temperature the cycle reaches, as ``ballscrew energy`` computes them)
+and sets every criterion of a feed-drive designer's sizing against its limit,
+with the formulas of :mod:`ballscrew.sizing`, :mod:`ballscrew.stiffness` and
+:mod:`ballscrew.limits`:
+
+* **fatigue life** (ISO 3408-5): the load spectrum is the nut's axial force at
+  every sample of the cycle (inertia, gravity, process force) weighted by the
+  screw turns made under it; a preloaded nut's halves carry the preload
+  changed by it, each half has its cubic mean load and its life, and the nut's
+  life is the two in series;
+* **static safety** :math:`C_{0a}/F_{max}` on the most loaded half;
+* **buckling**, the **yield** of the root section, the **critical speed** and
+  **d·n**;
+* **stiffness**: shaft, nut (Hertz at the preload) and thrust bearings in
+  series over the stroke, the **axial eigenfrequency** with the moving mass
+  and the **lost motion** at a reversal, :math:`2F_f/k`, with :math:`F_f` the
+  screw's drag torque at creep speed as an axial force, :math:`2\pi T_f/l`;
+* **thermal lead error**: :math:`\alpha\,\Delta T\cdot 300` mm, with
+  :math:`\Delta T` the rise the heat balance reaches over the run time (less
+  what a pre-tension absorbs), against the accuracy grade's :math:`v_{300p}`;
+* **the motor**: inertia ratio, peak and RMS torque, speed, and the
+  acceleration the peak torque allows.
+
+Each :class:`Criterion` has a value, a limit, their ratio (the utilisation,
+oriented so that above 1 fails), a verdict, the formula's source and what to
+change when it fails. Verdicts: ``OK`` below :data:`CHECK_FROM` of the limit,
+``CHECK`` up to the limit, ``NOT OK`` past it, ``INFO`` for a figure without
+a limit, ``NOT CHECKED`` where an input is missing (the row names it).
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from ..chain import friction_torque
+from ..errors import BallScrewInputError, FloatArray
+from ..kinematics import rad_s_to_rpm
+from ..limits import SAFETY_FACTOR, critical_speed, root_diameter
+from ..sizing import (
+    STEEL_EXPANSION,
+    TRAVEL_VARIATION_300,
+    buckling_load,
+    combined_life,
+    cubic_mean_load,
+    life_distance,
+    life_hours,
+    nominal_life,
+    preloaded_loads,
+    reflected_inertia,
+    static_safety,
+    thermal_elongation,
+)
+from ..stiffness import (
+    axial_eigenfrequency,
+    lost_motion,
+    nut_axial_stiffness,
+    series_stiffness,
+    shaft_axial_stiffness,
+    torsional_axial_stiffness,
+)
+from .energy import CycleResult
+from .run import EnergyRun
+
+__all__ = ["CHECK_FROM", "AxisCheck", "Criterion", "axis_check", "verdict"]
+
+CHECK_FROM = 0.9
+"""Utilisation from which a criterion is flagged CHECK rather than OK [-]."""
+
+DEFAULT_LIFE_HOURS = 20_000.0
+"""Nominal life asked when the case gives none [h]: THK's and NSK's figure for machine tools."""
+
+INERTIA_RATIO_LIMIT = 10.0
+"""Largest load-to-rotor inertia ratio of a responsive servo axis [-] (a sizing rule of the
+servo makers, e.g. Siemens and Yaskawa: 10 or less; not a standard)."""
+
+YIELD_STRESS = 147e6
+"""Permissible tensile/compressive stress of the screw shaft [Pa] (THK General Catalog,
+Permissible Axial Load, A15-30, equation 6)."""
+
+CREEP_SPEED = 0.1
+"""Screw speed of a reversal's friction [rad/s] (the drag without a fast move's film)."""
+
+
+def verdict(utilisation: float) -> str:
+    """OK, CHECK or NOT OK for a utilisation (value over limit, above 1 fails; NaN fails)."""
+    if math.isnan(utilisation) or utilisation > 1.0:
+        return "NOT OK"
+    return "CHECK" if utilisation >= CHECK_FROM else "OK"
+
+
+@dataclass(frozen=True)
+class Criterion:
+    """One row of the verdict table (values in the unit named, for display and JSON)."""
+
+    name: str
+    value: float | None
+    limit: float | None
+    unit: str
+    utilisation: float | None
+    verdict: str
+    source: str
+    advice: str = ""
+
+    def as_dict(self) -> dict[str, Any]:
+        """The row as JSON-ready values."""
+        return {
+            "name": self.name,
+            "value": self.value,
+            "limit": self.limit,
+            "unit": self.unit,
+            "utilisation": self.utilisation,
+            "verdict": self.verdict,
+            "source": self.source,
+            "advice": self.advice,
+        }
+
+
+def _at_most(
+    name: str, value: float, limit: float, unit: str, source: str, advice: str
+) -> Criterion:
+    u = value / limit
+    v = verdict(u)
+    return Criterion(name, value, limit, unit, u, v, source, advice if v != "OK" else "")
+
+
+def _at_least(
+    name: str, value: float, limit: float, unit: str, source: str, advice: str
+) -> Criterion:
+    u = limit / value if value > 0.0 else math.inf
+    v = verdict(u)
+    return Criterion(name, value, limit, unit, u, v, source, advice if v != "OK" else "")
+
+
+def _info(name: str, value: float, unit: str, source: str, advice: str = "") -> Criterion:
+    return Criterion(name, value, None, unit, None, "INFO", source, advice)
+
+
+def _missing(name: str, unit: str, source: str, needed: str) -> Criterion:
+    return Criterion(name, None, None, unit, None, "NOT CHECKED", source, needed)
+
+
+@dataclass
+class AxisCheck:
+    """The verdict table of an axis over a cycle, the figures behind it and the assumptions."""
+
+    title: str
+    model: str
+    criteria: list[Criterion]
+    assumptions: list[str]
+    life: dict[str, Any] = field(default_factory=dict)
+    stiffness: dict[str, Any] = field(default_factory=dict)
+    motor: dict[str, Any] = field(default_factory=dict)
+    thermal: dict[str, Any] = field(default_factory=dict)
+
+    @property
+    def verdict(self) -> str:
+        """The worst verdict of the rows that have a limit."""
+        order = ("NOT OK", "CHECK", "OK")
+        found = {c.verdict for c in self.criteria}
+        return next((v for v in order if v in found), "OK")
+
+    @property
+    def not_checked(self) -> list[str]:
+        """The criteria left out for a missing input."""
+        return [c.name for c in self.criteria if c.verdict == "NOT CHECKED"]
+
+    def as_dict(self, version: str) -> dict[str, Any]:
+        """The JSON document of ``ballscrew check --json``."""
+        return {
+            "ballscrew": version,
+            "case": self.title,
+            "model": self.model,
+            "verdict": self.verdict,
+            "not_checked": self.not_checked,
+            "criteria": [c.as_dict() for c in self.criteria],
+            "life": self.life,
+            "stiffness": self.stiffness,
+            "motor": self.motor,
+            "thermal": self.thermal,
+            "assumptions": self.assumptions,
+        }
+
+
+def _weights(time: FloatArray) -> FloatArray:
+    """Trapezoidal weights of the samples [s]: sum(w * y) is the integral of y."""
+    dt = np.diff(time)
+    w = np.zeros_like(time)
+    w[:-1] += 0.5 * dt
+    w[1:] += 0.5 * dt
+    return w
+
+
+def _span(run: EnergyRun, notes: list[str]) -> float:
+    """Distance between the supports [m]: the given span, else the screw length (stated)."""
+    if run.axis.bearing_span is not None:
+        return float(run.axis.bearing_span)
+    span = float(run.node.screw_length)
+    notes.append(
+        f"span between the supports taken as the screw length {span * 1e3:.0f} mm (give "
+        "axis.bearing_span for buckling, critical speed and shaft stiffness)"
+    )
+    return span
+
+
+def _nut_length(run: EnergyRun) -> float:
+    s = run.case.screw
+    return (s.loaded_turns + 1.0) * s.circuits * s.lead * (2.0 if s.nut == "double" else 1.0)
+
+
+def axis_check(run: EnergyRun, model: str | None = None) -> AxisCheck:
+    """Every criterion of the axis over ``run``'s cycle for ``model`` (module docstring).
+
+    ``model`` defaults to the run's first. Raises
+    :class:`~ballscrew.errors.BallScrewInputError` naming the field when the
+    stroke does not fit between the supports or a motor is given without its
+    rotor inertia.
+    """
+    name = model or next(iter(run.results))
+    cycle = run.cycles_by_model[name]
+    numbers = run.results[name]
+    case, axis, screw = run.case, run.axis, run.case.screw
+    notes: list[str] = []
+    rows: list[Criterion] = []
+    span = _span(run, notes)
+    stroke = float(np.ptp(run.profile.position))
+    nut = _nut_length(run)
+    if stroke + nut >= span:
+        raise BallScrewInputError(
+            "axis.bearing_span" if axis.bearing_span is not None else "axis.screw_length",
+            f"{span * 1e3:g} mm",
+            f"a span longer than the stroke {stroke * 1e3:g} mm plus the nut {nut * 1e3:.0f} mm",
+        )
+    d_r = root_diameter(screw) if axis.root_diameter is None else float(axis.root_diameter)
+    if axis.root_diameter is None:
+        notes.append(f"root diameter {d_r * 1e3:.2f} mm estimated from the groove "
+                     "(give axis.root_diameter from the catalogue)")  # fmt: skip
+    force = np.asarray(cycle.axial_force, dtype=float)
+    omega = np.asarray(cycle.screw_speed, dtype=float)
+    turns = np.abs(omega) / (2.0 * math.pi) * _weights(run.profile.time)
+    life_rows, life = _life_rows(run, force, turns, notes)
+    rows += life_rows
+    rows += _load_rows(run, force, d_r, span)
+    rows += _speed_rows(run, omega, d_r, span)
+    stiff_rows, stiffness = _stiffness_rows(run, name, force, d_r, span, stroke, nut, notes)
+    rows += stiff_rows
+    thermal_rows, thermal = _thermal_rows(run, name, numbers, stroke, notes)
+    rows += thermal_rows
+    motor_rows, motor = _motor_rows(run, cycle)
+    rows += motor_rows
+    notes.append(
+        "axial loads: inertia, gravity and the process force of the move; no guideway "
+        "friction (not in the case)"
+    )
+    marked = [f"{a.field} = {a.value} ({a.reason})" for a in case.assumptions]
+    return AxisCheck(case.title, name, rows, marked + list(run.assumptions) + notes, life,
+                     stiffness, motor, thermal)  # fmt: skip
+
+
+def _life_rows(
+    run: EnergyRun, force: FloatArray, turns: FloatArray, notes: list[str]
+) -> tuple[list[Criterion], dict[str, Any]]:
+    case, screw = run.case, run.case.screw
+    source = "ISO 3408-5:2006 cl. 7: L10 = a1 (Ca/Fm)^3 1e6, halves in series (10/9)"
+    reliability = float(case.check.get("reliability", 0.9))
+    if screw.nut == "single":
+        half_1, half_2 = np.maximum(force, 0.0), np.maximum(-force, 0.0)
+    else:
+        loaded, relieved = preloaded_loads(force, screw.preload)
+        half_1 = np.where(force >= 0.0, loaded, relieved)
+        half_2 = np.where(force >= 0.0, relieved, loaded)
+    total_turns = float(np.sum(turns))
+    if total_turns <= 0.0:
+        return [_missing("fatigue life", "h", source, "a move: the cycle makes no turn")], {}
+    fm1 = float(cubic_mean_load(half_1, turns))
+    fm2 = float(cubic_mean_load(half_2, turns))
+    turns_per_second = total_turns / run.profile.duration
+    ca = case.dynamic_load_rating
+    life: dict[str, Any] = {
+        "mean_load_N": [fm1, fm2],
+        "turns_per_cycle": total_turns / run.cycles,
+        "mean_speed_rpm": turns_per_second * 60.0,
+        "reliability": reliability,
+        "dynamic_load_rating_N": ca,
+        "static_load_rating_N": case.static_load_rating,
+    }
+    if ca is None:
+        return [_missing("fatigue life", "h", source,
+                         "give screw.dynamic_load_rating (C_a from the catalogue) or a "
+                         "catalogue designation")], life  # fmt: skip
+    req = case.check.get("required_life")
+    if req is None:
+        req = DEFAULT_LIFE_HOURS * 3600.0
+        notes.append("required life 20000 h (THK's and NSK's figure for machine tools; give "
+                     "check.required_life)")  # fmt: skip
+    revs = float(combined_life(nominal_life(ca, fm1, reliability),
+                               nominal_life(ca, fm2, reliability)))  # fmt: skip
+    hours = float(life_hours(revs, turns_per_second * 60.0))
+    km = float(life_distance(revs, screw.lead)) / 1e3
+    life |= {"L10_revolutions": revs, "L10_hours": hours, "L10_km": km}
+    return [
+        _at_least(
+            "fatigue life L10", hours, req / 3600.0, "h", source,
+            "a nut with a higher C_a (more circuits, larger balls or diameter), a lower "
+            "preload, lighter moves, or a longer lead (fewer turns per metre)",
+        )
+    ], life  # fmt: skip
+
+
+def _load_rows(run: EnergyRun, force: FloatArray, d_r: float, span: float) -> list[Criterion]:
+    case, axis, screw = run.case, run.axis, run.case.screw
+    rows: list[Criterion] = []
+    f_max = float(np.max(np.abs(force)))
+    half_max = float(preloaded_loads(f_max, 0.0 if screw.nut == "single" else screw.preload)[0])
+    source = (
+        "ISO 3408-5:2006 cl. 6: f_s = C0a / F_max (most loaded half, preload included); "
+        "least f_s: THK, Static Safety Factor, Table 21 (2, or 5 with vibration or impact)"
+    )
+    if case.static_load_rating is None:
+        rows.append(_missing("static safety C0a/F_max", "-", source,
+                             "give screw.static_load_rating (C_0a from the catalogue) or a "
+                             "catalogue designation"))  # fmt: skip
+    else:
+        fs = float(static_safety(case.static_load_rating, half_max))
+        rows.append(_at_least("static safety C0a/F_max", fs, float(case.check["static_safety"]),
+                              "-", source, "a nut with a higher C_0a, or lower peak loads "
+                              "(gentler accelerations)"))  # fmt: skip
+    p_buckle = float(buckling_load(d_r, span, axis.support))
+    rows.append(_at_most(
+        "buckling load", f_max / 1e3, p_buckle / 1e3, "kN",
+        "Euler on the root diameter x 0.5, mounting factor (THK General Catalog, Permissible "
+        "Axial Load, A15-30, eq. 5); span taken as the buckling length, load as compressive",
+        "a larger diameter, a shorter span, or a fixed-fixed mounting",
+    ))  # fmt: skip
+    p_yield = YIELD_STRESS * math.pi * d_r**2 / 4.0
+    rows.append(_at_most(
+        "axial load, root section", f_max / 1e3, p_yield / 1e3, "kN",
+        "147 MPa on the root section (THK, Permissible Axial Load, A15-30, eq. 6)",
+        "a larger diameter",
+    ))  # fmt: skip
+    return rows
+
+
+def _speed_rows(run: EnergyRun, omega: FloatArray, d_r: float, span: float) -> list[Criterion]:
+    axis, screw = run.axis, run.case.screw
+    rpm = float(rad_s_to_rpm(np.max(np.abs(omega))))
+    allowed = SAFETY_FACTOR * float(rad_s_to_rpm(critical_speed(d_r, span, axis.support)))
+    dn_note = "" if "dn_limit" in run.case.axis_given else " (default: give axis.dn_limit)"
+    return [
+        _at_most("speed / critical speed", rpm, allowed, "rpm",
+                 f"0.8 x first bending speed, {axis.support} (THK, Permissible Rotational Speed, "
+                 "A15-32, eq. 7)",
+                 "a longer lead (fewer turns for the feed), a larger diameter, a shorter span "
+                 "or a stiffer mounting"),
+        _at_most("d*n", screw.pitch_diameter * 1e3 * rpm, axis.dn_limit, "mm*rpm",
+                 f"the nut's catalogue d*n limit{dn_note}",
+                 "a longer lead, or a nut with a higher d*n rating"),
+    ]  # fmt: skip
+
+
+def _stiffness_rows(
+    run: EnergyRun, model: str, force: FloatArray, d_r: float, span: float, stroke: float,
+    nut: float, notes: list[str],
+) -> tuple[list[Criterion], dict[str, Any]]:  # fmt: skip
+    case, axis, screw = run.case, run.axis, run.case.screw
+    notes.append("the stroke lies in the middle of the span")
+    position = np.linspace(0.5 * (span - stroke), 0.5 * (span + stroke), 21)
+    k_shaft = shaft_axial_stiffness(d_r, span, position, axis.support)
+    if screw.nut == "single":
+        load = float(np.max(np.abs(force)))
+        if load <= 0.0:
+            raise BallScrewInputError(
+                "screw.nut", "single", "a load on the nut: a single nut without preload and "
+                "without load has no stiffness (give a move with a force or a preloaded nut)",
+            )  # fmt: skip
+        k_nut = nut_axial_stiffness(screw, load)
+        notes.append(f"single nut: contact stiffness at the cycle's peak load {load:.4g} N; "
+                     "its axial play is not counted")  # fmt: skip
+    else:
+        k_nut = nut_axial_stiffness(screw)
+    k_bearing = case.check.get("support_stiffness")
+    if k_bearing is None:
+        notes.append("thrust bearings taken as rigid (give check.support_stiffness from their "
+                     "catalogue; the axis is softer than shown)")  # fmt: skip
+    k_axis = series_stiffness(k_shaft, k_nut, k_bearing)
+    params = case.parameters_for(model)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        t_f = float(friction_torque(screw, case.lubricant, speed=CREEP_SPEED,
+                                    temperature=run.temperature, axial_load=0.0, model=model,
+                                    **params).total.flat[0])  # fmt: skip
+    f_f = 2.0 * math.pi * t_f / screw.lead
+    mass = axis.moving_mass
+    freq = axial_eigenfrequency(k_axis, mass) if mass > 0.0 else None
+    play = lost_motion(f_f, k_axis)
+    # The drag torque also twists the shaft between the drive (at the thrust end) and the nut.
+    twist = lost_motion(f_f, torsional_axial_stiffness(d_r, position, screw.lead))
+    figures: dict[str, Any] = {
+        "position_mm": (position * 1e3).tolist(),
+        "shaft_N_per_um": (k_shaft / 1e6).tolist(),
+        "nut_N_per_um": k_nut / 1e6,
+        "bearings_N_per_um": None if k_bearing is None else k_bearing / 1e6,
+        "axis_N_per_um": (k_axis / 1e6).tolist(),
+        "eigenfrequency_Hz": None if freq is None else freq.tolist(),
+        "friction_force_N": f_f,
+        "lost_motion_um": (play * 1e6).tolist(),
+        "lost_motion_torsion_um": (twist * 1e6).tolist(),
+        "nut_length_mm": nut * 1e3,
+    }
+    source = (
+        "ISO 3408-4; shaft EA/a or EAL/(a(L-a)) (THK, Axial Rigidity of the Feed Screw "
+        "System, A15-43), nut Hertz at the preload"
+    )
+    rows = [
+        _info("axis stiffness (least over the stroke)", float(np.min(k_axis)) / 1e6, "N/um",
+              source + f"; nut {k_nut / 1e6:.4g} N/um"),
+        _info("lost motion at reversal (most)", float(np.max(play)) * 1e6, "um",
+              f"2 F_f / k, F_f = 2 pi T_f / l = {f_f:.3g} N (drag at creep speed); the "
+              f"shaft's torsion adds up to {float(np.max(twist)) * 1e6:.2g} um"),
+    ]  # fmt: skip
+    if freq is None:
+        rows.append(_missing("axial eigenfrequency", "Hz", "sqrt(k/m) / 2 pi",
+                             "give axis.moving_mass"))  # fmt: skip
+    else:
+        rows.append(_info("axial eigenfrequency (least)", float(np.min(freq)), "Hz",
+                          "sqrt(k/m) / 2 pi with the moving mass"))  # fmt: skip
+    return rows, figures
+
+
+def _thermal_rows(
+    run: EnergyRun, model: str, numbers: dict[str, Any], stroke: float, notes: list[str]
+) -> tuple[list[Criterion], dict[str, Any]]:
+    """The thermal lead error per 300 mm against the grade, the growth over the stroke."""
+    case, axis = run.case, run.axis
+    rise = float(numbers["final_temperature_C"]) - float(run.node.ambient)
+    pre = float(case.check.get("pretension_temperature", 0.0))
+    if pre > 0.0 and axis.support != "fixed-fixed":
+        raise BallScrewInputError(
+            "check.pretension_temperature", f"{pre:g} K",
+            f"0 K for a {axis.support} mounting (a pre-tension needs fixed-fixed)",
+        )  # fmt: skip
+    effective = max(rise - pre, 0.0)
+    error = float(thermal_elongation(effective, 0.3)) * 1e6
+    source = (f"alpha dT 300 mm, alpha = {STEEL_EXPANSION:g}/K, dT = {rise:.3g} K"
+              + (f" less {pre:g} K of pre-tension" if pre else "")
+              + " (heat balance after the run time)")  # fmt: skip
+    growth = _info("thermal growth over the stroke", float(thermal_elongation(effective, stroke))
+                   * 1e6, "um", "alpha dT x stroke: the position error at the stroke's far "
+                   "end against its near end")  # fmt: skip
+    figures: dict[str, Any] = {"temperature_rise_K": rise, "pretension_K": pre,
+                               "error_per_300mm_um": error}  # fmt: skip
+    if model in run.histories:
+        times, temps = run.histories[model]
+        rises = np.maximum(np.asarray(temps) - float(run.node.ambient) - pre, 0.0)
+        figures |= {
+            "time_s": np.asarray(times).tolist(),
+            "temperature_C": np.asarray(temps).tolist(),
+            "error_per_300mm_over_time_um": (thermal_elongation(rises, 0.3) * 1e6).tolist(),
+        }
+    grade = case.check.get("accuracy_grade")
+    if grade is None:
+        notes.append("no accuracy grade: the thermal lead error is not set against a tolerance "
+                     "(give check.accuracy_grade)")  # fmt: skip
+        return [_info("thermal lead error per 300 mm", error, "um", source), growth], figures
+    limit = TRAVEL_VARIATION_300[grade] * 1e6
+    row = _at_most(
+        f"thermal lead error per 300 mm ({grade})", error, limit, "um",
+        source + "; v300p of ISO 3408-3 / JIS B 1192",
+        "cool the screw or the nut, pre-tension a fixed-fixed screw, lower the preload or "
+        "the duty, or compensate in the control",
+    )  # fmt: skip
+    return [row, growth], figures
+
+
+def _motor_rows(run: EnergyRun, cycle: CycleResult) -> tuple[list[Criterion], dict[str, Any]]:
+    case, axis, screw = run.case, run.axis, run.case.screw
+    motor = case.motor
+    if not motor:
+        return [_missing("motor", "-", "[motor]", "give [motor] rated_torque, peak_torque, "
+                         "rated_speed and axis.motor_inertia")], {}  # fmt: skip
+    if "motor_inertia" not in case.axis_given or axis.motor_inertia <= 0.0:
+        raise BallScrewInputError(
+            "axis.motor_inertia", "(missing)" if "motor_inertia" not in case.axis_given else 0,
+            "the rotor inertia from the motor's data sheet (> 0), needed by the motor check",
+        )  # fmt: skip
+    i = axis.gear_ratio
+    j_load = reflected_inertia(axis.moving_mass, screw.lead, axis.screw_inertia,
+                               axis.coupling_inertia, i)  # fmt: skip
+    ratio = j_load / axis.motor_inertia
+    torque = np.asarray(cycle.motor_torque, dtype=float)
+    peak, rms = cycle.peak_motor_torque, cycle.rms_motor_torque
+    top = float(rad_s_to_rpm(np.max(np.abs(cycle.motor_speed))))
+    rows = [
+        _at_most("inertia ratio J_load/J_motor", ratio, INERTIA_RATIO_LIMIT, "-",
+                 "J_load = [J_s + J_c + m (l/2 pi)^2] / i^2; limit 10, a servo sizing rule",
+                 "a motor with a larger rotor, a gear (i > 1), or a shorter lead"),
+    ]  # fmt: skip
+    figures: dict[str, Any] = {
+        "load_inertia_kgm2": j_load,
+        "inertia_ratio": ratio,
+        "peak_torque_Nm": peak,
+        "rms_torque_Nm": rms,
+        "top_speed_rpm": top,
+    }
+    for key, label, value, unit, scale, advice in (
+        ("peak_torque", "peak torque", peak, "N*m", 1.0,
+         "a larger motor, gentler accelerations, or a gear"),
+        ("rated_torque", "RMS torque / rated torque", rms, "N*m", 1.0,
+         "a larger motor, longer dwells, or less friction (lower preload)"),
+        ("rated_speed", "motor speed", top, "rpm", 30.0 / math.pi,
+         "a longer lead or a lower feed"),
+    ):  # fmt: skip
+        if key not in motor:
+            rows.append(_missing(label, unit, "[motor]", f"give motor.{key}"))
+            continue
+        rows.append(_at_most(label, value, motor[key] * scale, unit,
+                             "the cycle's torques (energy) against the motor's ratings",
+                             advice))  # fmt: skip
+    if "peak_torque" in motor:
+        # Torque per unit of table acceleration at the motor: (J_m + J_load) 2 pi i / l.
+        per_accel = (axis.motor_inertia + j_load) * 2.0 * math.pi * i / screw.lead
+        accel = np.asarray(run.profile.acceleration, dtype=float)
+        static = float(np.max(np.abs(torque - per_accel * accel)))
+        allowed = (motor["peak_torque"] - static) / per_accel
+        figures["allowed_acceleration_m_s2"] = allowed
+        rows.append(_info("acceleration the peak torque allows", allowed, "m/s^2",
+                          "(T_peak - T_no inertia) / ((J_m + J_load) 2 pi i / l)"))  # fmt: skip
+    return rows, figures

@@ -1,0 +1,111 @@
+"""``ballscrew check``: the whole axis check (life, safety, speed, stiffness, heat, motor)."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+import click
+from rich.table import Table
+
+from .common import stdout, write_json
+
+if TYPE_CHECKING:
+    from ..axis.check import AxisCheck
+
+__all__ = ["check_command"]
+
+
+@click.command("check")
+@click.option("--case", "case_file", type=click.Path(dir_okay=False), default=None,
+              help="Case file with [axis], and [motor] and [check] (default: the bundled "
+              "case).")  # fmt: skip
+@click.option(
+    "--move",
+    "move_text",
+    default=None,
+    help="e.g. 'stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2, force=2 kN' (as for energy).",
+)
+@click.option("--profile", "profile_file", type=click.Path(dir_okay=False), default=None,
+              help="A trajectory CSV instead of --move (as for energy).")  # fmt: skip
+@click.option("--cycles", default=1, show_default=True, type=click.IntRange(1, 100_000),
+              help="Back-and-forth cycles (out, dwell, back, dwell).")  # fmt: skip
+@click.option("--model", "model_name", default="complete", show_default=True,
+              help="Friction model of the torques, the heat and the lost motion.")  # fmt: skip
+@click.option("--temperature", default=None, help="Lubricant temperature, e.g. '40 degC' "
+              "(default: the case's first).")  # fmt: skip
+@click.option("--run-time", default="1 h", show_default=True,
+              help="How long the cycle repeats, for the temperature and the thermal "
+              "error.")  # fmt: skip
+@click.option("--json", "json_file", default=None,
+              help="Write the verdicts as JSON to FILE ('-' for standard output).")  # fmt: skip
+def check_command(
+    case_file: str | None,
+    move_text: str | None,
+    profile_file: str | None,
+    cycles: int,
+    model_name: str,
+    temperature: str | None,
+    run_time: str,
+    json_file: str | None,
+) -> None:
+    """Check the case's axis over a motion cycle: every criterion against its limit.
+
+    Fatigue life and static safety (ISO 3408-5), buckling, critical speed and
+    d*n, axial stiffness, eigenfrequency and lost motion, the thermal lead
+    error against the accuracy grade, and the motor ([motor] in the case).
+    Each row: value, limit, utilisation, OK / CHECK / NOT OK, the formula's
+    source and what to change; every assumption is listed below the table.
+
+    \b
+    Example:
+      ballscrew check --case my_axis.toml \\
+        --move "stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2, force=2 kN"
+    """  # noqa: D301 - click needs the literal \b to keep the example lines
+    from .._version import __version__
+    from ..axis.check import axis_check
+    from ..axis.run import energy_run, profile_from_file, profile_from_move
+    from ..io.case import load_case
+    from ..report.outputs import json_document
+    from ..units import to_si
+
+    case = load_case(case_file)
+    if (move_text is None) == (profile_file is None):
+        raise click.UsageError("give exactly one of --move and --profile")
+    m: dict[str, float] = {}
+    if move_text is not None:
+        from ..axis.motion import parse_move
+
+        m = parse_move(move_text)
+        profile = profile_from_move(m, cycles)
+    else:
+        assert profile_file is not None
+        profile = profile_from_file(profile_file, cycles)
+    temp = to_si("--temperature", temperature, "degC") if temperature else None
+    run = energy_run(case, profile, [model_name], cycles=cycles, temperature=temp,
+                     run_time=to_si("--run-time", run_time, "s"), move=m)  # fmt: skip
+    result = axis_check(run, model_name)
+    out = stdout(json_file)
+    out.print(_verdict_table(result))
+    for line in result.assumptions:
+        out.print(f"assumed: {line}")
+    if json_file:
+        write_json(json_file, json_document(result.as_dict(__version__)))
+
+
+def _number(value: float | None) -> str:
+    return "-" if value is None else f"{value:.4g}"
+
+
+def _verdict_table(result: AxisCheck) -> Table:
+    """One row per criterion: value, limit, utilisation, verdict, source, advice."""
+    missing = f", {len(result.not_checked)} not checked" if result.not_checked else ""
+    table = Table(title=f"{result.title}: axis check ({result.model}): {result.verdict}{missing}")
+    for column, justify in (("criterion", "left"), ("value", "right"), ("limit", "right"),
+                            ("unit", "left"), ("use", "right"), ("verdict", "left"),
+                            ("source", "left"), ("what to change", "left")):  # fmt: skip
+        table.add_column(column, justify=justify)  # type: ignore[arg-type]
+    for c in result.criteria:
+        use = "-" if c.utilisation is None else f"{c.utilisation:.0%}"
+        table.add_row(c.name, _number(c.value), _number(c.limit), c.unit, use, c.verdict,
+                      c.source, c.advice)  # fmt: skip
+    return table

@@ -1,0 +1,83 @@
+"""``ballscrew check``: the verdict table, the JSON and the errors that name the field."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from cli_runner import run
+from shared import ROOT
+
+VERTICAL = ROOT / "examples" / "vertical_32x5.toml"
+MOVE = ("stroke=500 mm, feed=12 m/min, acceleration=3 m/s^2, force=1.5 kN, force_from=100 mm, "
+        "force_to=400 mm, dwell=0.5 s")  # fmt: skip
+FAST = ["--model", "catalog", "--run-time", "10 min"]
+
+
+def test_check_prints_the_table_and_the_json(capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, err = run(["check", "--case", str(VERTICAL), "--move", MOVE, *FAST, "--json", "-"],
+                         capsys)  # fmt: skip
+    assert code == 0, err
+    doc = json.loads(out)
+    names = [c["name"] for c in doc["criteria"]]
+    for wanted in ("fatigue life L10", "static safety C0a/F_max", "buckling load",
+                   "speed / critical speed", "d*n", "inertia ratio J_load/J_motor",
+                   "peak torque", "RMS torque / rated torque", "motor speed"):  # fmt: skip
+        assert wanted in names
+    assert doc["not_checked"] == []
+    assert doc["verdict"] in ("OK", "CHECK", "NOT OK")
+    for c in doc["criteria"]:
+        assert c["source"], c["name"]
+        if c["verdict"] in ("CHECK", "NOT OK"):
+            assert c["advice"], c["name"]  # what to change
+    assert "the stroke lies in the middle of the span" in doc["assumptions"]
+    assert "axis check" in err and "fatigue life" in err  # the table on stderr with --json -
+
+
+def test_check_of_the_bundled_case_names_what_is_missing(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    code, out, err = run(["check", "--move", "stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2",
+                          *FAST], capsys)  # fmt: skip
+    assert code == 0, err
+    assert "NOT CHECKED" in out and "screw.dynamic_load_rating" in out
+    assert "assumed: span between the supports taken as the screw length" in out
+
+
+def test_check_errors_name_the_field(capsys: pytest.CaptureFixture[str]) -> None:
+    long_move = "stroke=1 m, feed=12 m/min, acceleration=3 m/s^2"
+    code, _, err = run(["check", "--case", str(VERTICAL), "--move", long_move, *FAST], capsys)
+    assert code == 2 and "axis.bearing_span" in err
+    code, _, err = run(["check", "--case", str(VERTICAL), *FAST], capsys)
+    assert code == 2 and "--move" in err
+
+
+def test_case_check_shows_what_the_axis_check_will_use(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    code, out, err = run(["case", "--check", str(VERTICAL)], capsys)
+    assert code == 0, err
+    assert "18.4 kN" in out and "59.6 kN" in out  # HIWIN R32-05K4-FSC, from the designation
+    assert "3000 rpm" in out and "650 N/um" in out and "P5" in out
+
+
+def test_check_takes_a_trajectory(tmp_path, capsys: pytest.CaptureFixture[str]) -> None:  # type: ignore[no-untyped-def]
+    # A smooth out-and-back of 200 mm in 2 s (a cosine), written as a CSV with units.
+    import math
+
+    lines = ["time [s],position [mm],force [N]"]
+    for i in range(401):
+        t = i * 0.005
+        lines.append(f"{t:.3f},{100 * (1 - math.cos(math.pi * t)):.6f},500")
+    path = tmp_path / "cosine.csv"
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    code, out, err = run(["check", "--case", str(VERTICAL), "--profile", str(path), *FAST,
+                          "--json", "-"], capsys)  # fmt: skip
+    assert code == 0, err
+    doc = json.loads(out)
+    positions = doc["stiffness"]["position_mm"]
+    assert positions[-1] - positions[0] == pytest.approx(200.0, rel=1e-3)  # the stroke
+    speed = next(c for c in doc["criteria"] if c["name"] == "speed / critical speed")
+    # Top speed 100 pi mm/s = 18.85 m/min on a 5 mm lead: 3770 rpm.
+    assert speed["value"] == pytest.approx(100 * math.pi / 5 * 60, rel=1e-3)

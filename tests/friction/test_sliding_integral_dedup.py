@@ -1,0 +1,107 @@
+"""The sliding integral's de-duplication (issue 25): the same values as the row-wise unique.
+
+``complete._unique_integral`` evaluates the spin-sliding integral once per distinct
+(kappa, aspect) pair and splines it above ``DIRECT_INTEGRALS`` pairs. It used to count
+the pairs with a row-wise ``np.unique(..., axis=0)``; it now counts them on 1-D keys.
+The references here are independent of the new code: the direct quadrature rule at
+every point, and the former row-wise algorithm written out below. Tolerances: the
+direct rule agrees to a relative 1e-13 (the rule's matrix product may round a row's
+last bit differently in a batch of another size); the spline path is the same spline
+evaluated at the same points (1e-13 too, 1e-7 against the direct rule as in
+``test_complete.py``); whole torques through ``friction_torque`` to 1e-13.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import ballscrew.friction.complete as module
+from ballscrew import friction_torque, reference_screw
+from ballscrew import rolling_losses as rl
+from ballscrew.errors import FloatArray
+from shared import MINERAL
+
+RTOL = 1e-13
+
+
+def _row_wise_unique_integral(kappa: FloatArray, aspect: FloatArray) -> FloatArray:
+    """The former implementation: distinct pairs by a row-wise ``np.unique``."""
+    kappa, aspect = np.broadcast_arrays(kappa, aspect)
+    pairs = np.stack([kappa, aspect], axis=-1).reshape(-1, 2)
+    unique, inverse = np.unique(pairs, axis=0, return_inverse=True)
+    if len(unique) <= module.DIRECT_INTEGRALS:
+        values = rl.spin_sliding_integral(unique[:, 0], unique[:, 1])
+    else:
+        values = module._interpolated_integral(unique[:, 0], unique[:, 1])
+    result: FloatArray = values[inverse.reshape(-1)].reshape(kappa.shape)
+    return result
+
+
+def test_a_grid_of_few_pairs_is_the_direct_rule_at_every_point() -> None:
+    # 40 contact sizes x 3 aspects, broadcast over a 2-D grid with repeats: 120 pairs.
+    kappa = np.repeat(np.linspace(0.1, 0.6, 40), 5)[:, None] * np.ones((1, 3))
+    aspect = np.array([0.15, 0.2, 0.25])[None, :] * np.ones((200, 1))
+    got = module._unique_integral(kappa, aspect)
+    assert got.shape == (200, 3)
+    np.testing.assert_allclose(got, rl.spin_sliding_integral(kappa, aspect), rtol=RTOL)
+    np.testing.assert_allclose(got, _row_wise_unique_integral(kappa, aspect), rtol=RTOL)
+
+
+def test_scattered_pairs_take_the_same_spline() -> None:
+    rng = np.random.default_rng(11)
+    kappa, aspect = rng.uniform(0.2, 0.5, 5000), rng.uniform(0.18, 0.22, 5000)
+    got = module._unique_integral(kappa, aspect)
+    np.testing.assert_allclose(got, _row_wise_unique_integral(kappa, aspect), rtol=RTOL)
+    np.testing.assert_allclose(got, rl.spin_sliding_integral(kappa, aspect), rtol=1e-7)
+
+
+def test_few_values_of_each_but_many_pairs_take_the_spline() -> None:
+    # 20 kappas x 20 aspects: each coordinate has few values, the pairs (400) are many.
+    kappa, aspect = np.meshgrid(np.linspace(0.2, 0.5, 20), np.linspace(0.18, 0.22, 20))
+    kappa, aspect = np.tile(kappa.ravel(), 3), np.tile(aspect.ravel(), 3)
+    got = module._unique_integral(kappa, aspect)
+    np.testing.assert_allclose(got, _row_wise_unique_integral(kappa, aspect), rtol=RTOL)
+    np.testing.assert_allclose(got, rl.spin_sliding_integral(kappa, aspect), rtol=1e-7)
+
+
+def test_many_points_with_few_values_after_a_varied_prefix() -> None:
+    # The first values are all distinct (the prefix test cannot decide), the rest repeat them.
+    kappa = np.concatenate([np.linspace(0.2, 0.5, 200), np.full(5000, 0.3)])
+    aspect = np.full_like(kappa, 0.2)
+    got = module._unique_integral(kappa, aspect)
+    np.testing.assert_allclose(got, rl.spin_sliding_integral(kappa, aspect), rtol=RTOL)
+
+
+@pytest.mark.parametrize(
+    "kind",
+    ["grid", "scattered", "chunked-grid", "chunked-scattered"],
+)
+def test_torques_equal_the_row_wise_algorithm(kind: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    # Whole torques (every component) on a grid, on scattered points, and on both cut into
+    # chunks whose boundaries fall inside the grid's rows and change the spline's range.
+    rng = np.random.default_rng(5)
+    if kind.endswith("grid"):
+        kwargs = {
+            "speed": np.linspace(1.0, 300.0, 7)[:, None, None],
+            "temperature": np.linspace(20.0, 45.0, 3)[None, :, None],
+            "axial_load": np.linspace(-4000.0, 4000.0, 150)[None, None, :],
+        }
+    else:
+        kwargs = {
+            "speed": rng.uniform(1.0, 300.0, 3000),
+            "temperature": rng.uniform(20.0, 45.0, 3000),
+            "axial_load": rng.uniform(-4000.0, 4000.0, 3000),
+        }
+    chunk = 1000 if kind.startswith("chunked") else None
+    screw = reference_screw()
+    new = friction_torque(screw, MINERAL, chunk_size=chunk, **kwargs)  # type: ignore[arg-type]
+    monkeypatch.setattr(module, "_unique_integral", _row_wise_unique_integral)
+    old = friction_torque(screw, MINERAL, chunk_size=chunk, **kwargs)  # type: ignore[arg-type]
+    assert new.total.shape == old.total.shape
+    np.testing.assert_allclose(new.total, old.total, rtol=RTOL)
+    for name, value in old.components.items():
+        np.testing.assert_allclose(new.components[name], value, rtol=RTOL, atol=0.0)
+    assert math.isfinite(float(np.max(new.total)))

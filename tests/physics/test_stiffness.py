@@ -1,0 +1,73 @@
+"""Axial stiffness of shaft, nut and axis; eigenfrequency and lost motion (closed forms)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from ballscrew import reference_screw
+from ballscrew.errors import BallScrewInputError
+from ballscrew.stiffness import (
+    SHAFT_MODULUS,
+    axial_eigenfrequency,
+    lost_motion,
+    nut_axial_stiffness,
+    series_stiffness,
+    shaft_axial_stiffness,
+    torsional_axial_stiffness,
+)
+
+
+def test_shaft_stiffness_closed_forms() -> None:
+    d, span = 0.0266, 0.9  # a 32 mm screw's root over 900 mm
+    ea = SHAFT_MODULUS * math.pi * d**2 / 4
+    a = np.linspace(0.05, 0.85, 17)
+    np.testing.assert_allclose(shaft_axial_stiffness(d, span, a, "fixed-free"), ea / a)
+    ff = shaft_axial_stiffness(d, span, a, "fixed-fixed")
+    np.testing.assert_allclose(ff, ea * span / (a * (span - a)))
+    # Fixed-fixed: two springs EA/a and EA/(L-a) in parallel, least at mid-span, 4EA/L.
+    np.testing.assert_allclose(ff, ea / a + ea / (span - a))
+    assert float(shaft_axial_stiffness(d, span, span / 2, "fixed-fixed")) == pytest.approx(
+        4 * ea / span
+    )
+    assert float(np.min(ff)) >= 4 * ea / span * (1 - 1e-12)
+    # Hand value: E A = 206e9 * 5.557e-4 = 1.1448e8 N; over 0.45 m 254 N/um.
+    assert float(shaft_axial_stiffness(d, span, 0.45, "fixed-supported")) == pytest.approx(
+        254.4e6, rel=1e-3
+    )
+    with pytest.raises(BallScrewInputError, match="position"):
+        shaft_axial_stiffness(d, span, 1.0)
+
+
+def test_series_eigenfrequency_and_lost_motion() -> None:
+    k = float(series_stiffness(300e6, 600e6, 1000e6))
+    assert k == pytest.approx(1 / (1 / 300e6 + 1 / 600e6 + 1 / 1000e6))
+    assert float(series_stiffness(300e6, None)) == pytest.approx(300e6)
+    # 166.7 N/um with 250 kg: sqrt(k/m)/2pi = 130 Hz.
+    f = float(axial_eigenfrequency(k, 250.0))
+    assert f == pytest.approx(math.sqrt(k / 250.0) / (2 * math.pi))
+    assert f == pytest.approx(129.95, abs=0.01)
+    # 40 N of friction: 2 * 40 / 166.7e6 = 0.48 um.
+    assert float(lost_motion(40.0, k)) == pytest.approx(0.48e-6, rel=1e-3)
+
+
+def test_nut_stiffness_moved_here_is_the_one_fit_uses() -> None:
+    from ballscrew.fit import controller
+
+    assert controller.nut_axial_stiffness is nut_axial_stiffness
+    assert nut_axial_stiffness(reference_screw()) > 0.0
+
+
+def test_torsion_as_an_axial_stiffness_by_hand() -> None:
+    # d_r = 26.6 mm over 0.5 m, lead 10 mm: G J_p / a = 79.3e9 * 4.915e-8 / 0.5 = 7795 N m/rad;
+    # times (2 pi / l)^2 = 3.948e5 1/m^2: 3.08e9 N/m. A drag of 0.2 N m twists the shaft by
+    # 0.2 / 7795 = 2.57e-5 rad, which moves the nut 2.57e-5 * 0.01 / 2 pi = 0.041 um; the
+    # axial force 2 pi 0.2 / 0.01 = 125.7 N over k gives the same.
+    k = float(torsional_axial_stiffness(0.0266, 0.5, 0.01))
+    gj = 79.3e9 * math.pi * 0.0266**4 / 32
+    assert k == pytest.approx(gj / 0.5 * (2 * math.pi / 0.01) ** 2, rel=1e-12)
+    twist = 0.2 * 0.5 / gj * 0.01 / (2 * math.pi)
+    assert float(lost_motion(2 * math.pi * 0.2 / 0.01, k)) == pytest.approx(2 * twist)
+    assert twist == pytest.approx(0.0409e-6, rel=2e-3)
