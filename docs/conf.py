@@ -63,5 +63,9 @@ sphinx_gallery_conf = {
 
 html_theme = "pydata_sphinx_theme"
 html_title = f"ballscrew {__version__}"
-html_theme_options = {"navigation_depth": 2, "show_toc_level": 2}
+html_theme_options = {
+    "navigation_depth": 2,
+    "show_toc_level": 2,
+    "header_links_before_dropdown": 3,
+}
 os.environ.setdefault("MPLBACKEND", "Agg")  # the gallery's scripts draw off screen
