@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING
 import click
 from rich.table import Table
 
-from .common import stdout, write_json
+from .common import motion, stdout, write_json
 
 if TYPE_CHECKING:
     from ..axis.check import AxisCheck
@@ -63,23 +63,13 @@ def check_command(
     """  # noqa: D301 - click needs the literal \b to keep the example lines
     from .._version import __version__
     from ..axis.check import axis_check
-    from ..axis.run import energy_run, profile_from_file, profile_from_move
+    from ..axis.run import energy_run
     from ..io.case import load_case
     from ..report.outputs import json_document
     from ..units import to_si
 
     case = load_case(case_file)
-    if (move_text is None) == (profile_file is None):
-        raise click.UsageError("give exactly one of --move and --profile")
-    m: dict[str, float] = {}
-    if move_text is not None:
-        from ..axis.motion import parse_move
-
-        m = parse_move(move_text)
-        profile = profile_from_move(m, cycles)
-    else:
-        assert profile_file is not None
-        profile = profile_from_file(profile_file, cycles)
+    profile, m = motion(move_text, profile_file, cycles)
     temp = to_si("--temperature", temperature, "degC") if temperature else None
     run = energy_run(case, profile, [model_name], cycles=cycles, temperature=temp,
                      run_time=to_si("--run-time", run_time, "s"), move=m)  # fmt: skip
