@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import csv
+import io
 import json
 import re
 from pathlib import Path
@@ -100,9 +101,10 @@ def test_check_out_writes_a_report_whose_files_match_the_json(
         assert (out / link).is_file(), link
     for key in ("utilisation", "stiffness", "thermal"):
         assert (out / "figures" / f"{key}.png").read_bytes()[:4] == b"\x89PNG"
-    rows = list(csv.DictReader((out / "data" / "utilisation.csv").open(encoding="utf-8")))
+    text_of = lambda name: (out / "data" / name).read_text(encoding="utf-8")  # noqa: E731
+    rows = list(csv.DictReader(io.StringIO(text_of("utilisation.csv"))))
     assert [r["verdict"] for r in rows] == [c["verdict"] for c in doc["criteria"]]
-    stiffness = list(csv.DictReader((out / "data" / "stiffness.csv").open(encoding="utf-8")))
+    stiffness = list(csv.DictReader(io.StringIO(text_of("stiffness.csv"))))
     assert [float(r["lost motion [um]"]) for r in stiffness] == pytest.approx(
         doc["stiffness"]["lost_motion_um"], rel=1e-6
     )  # the CSV's significant digits
