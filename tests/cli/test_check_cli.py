@@ -2,7 +2,11 @@
 
 from __future__ import annotations
 
+import csv
+import io
 import json
+import re
+from pathlib import Path
 
 import pytest
 
@@ -81,3 +85,30 @@ def test_check_takes_a_trajectory(tmp_path, capsys: pytest.CaptureFixture[str]) 
     speed = next(c for c in doc["criteria"] if c["name"] == "speed / critical speed")
     # Top speed 100 pi mm/s = 18.85 m/min on a 5 mm lead: 3770 rpm.
     assert speed["value"] == pytest.approx(100 * math.pi / 5 * 60, rel=1e-3)
+
+
+def test_check_out_writes_a_report_whose_files_match_the_json(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    out = tmp_path / "report"
+    code, text, err = run(["check", "--case", str(VERTICAL), "--move", MOVE, *FAST,
+                           "--json", "-", "--out", str(out)], capsys)  # fmt: skip
+    assert code == 0, err
+    doc = json.loads(text)
+    md = (out / "report.md").read_text(encoding="utf-8")
+    # Every figure and file the report links exists.
+    for link in re.findall(r"\]\(([^)]+)\)", md):
+        assert (out / link).is_file(), link
+    for key in ("utilisation", "stiffness", "thermal"):
+        assert (out / "figures" / f"{key}.png").read_bytes()[:4] == b"\x89PNG"
+    text_of = lambda name: (out / "data" / name).read_text(encoding="utf-8")  # noqa: E731
+    rows = list(csv.DictReader(io.StringIO(text_of("utilisation.csv"))))
+    assert [r["verdict"] for r in rows] == [c["verdict"] for c in doc["criteria"]]
+    stiffness = list(csv.DictReader(io.StringIO(text_of("stiffness.csv"))))
+    assert [float(r["lost motion [um]"]) for r in stiffness] == pytest.approx(
+        doc["stiffness"]["lost_motion_um"], rel=1e-6
+    )  # the CSV's significant digits
+    assert f"Verdict: {doc['verdict']}" in md and "report.html" in err
+    code, _, err = run(["check", "--case", str(VERTICAL), "--move", MOVE, *FAST,
+                        "--out", str(out / "report.md")], capsys)  # fmt: skip
+    assert code == 2 and "--out" in err

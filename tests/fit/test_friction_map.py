@@ -208,3 +208,45 @@ def test_cli_load_map(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> Non
     assert code == 2 and "--out" in err
     code, _, err = run(["export-friction", "--form", "load-map"], capsys)
     assert code == 0 and "c1 and c2 are not identified" in err
+
+
+def test_the_three_sides_of_the_compact_form(fmap) -> None:  # type: ignore[no-untyped-def]
+    # Independent conversions: F = 2 pi T / l; v = l w / 2 pi, so a viscous torque per
+    # rad/s b becomes b (2 pi / l)^2 N per m/s; the motor side through i = 2: T / i and,
+    # per motor rad/s, b / i^2.
+    doc = fmap.form.as_dict(CASE.screw.lead, 2.0)
+    k = 2 * math.pi / CASE.screw.lead
+    for name in ("c0", "c1", "c2", "b"):
+        screw = doc["screw_side"][name]["value"]
+        assert screw == getattr(fmap.form, name)
+        assert doc["table_side"][name]["value"] == pytest.approx(
+            screw * (k * k if name == "b" else k), rel=1e-12
+        )
+        assert doc["motor_side"][name]["value"] == pytest.approx(
+            screw / (4.0 if name == "b" else 2.0), rel=1e-12
+        )
+    assert doc["k_c"]["value"] == fmap.form.k_c and doc["k_b"]["value"] == fmap.form.k_b
+    assert doc["reference_temperature"]["value"] == 20.0
+    rows = fmap.rows()
+    t, f, w = np.meshgrid(TEMPS, LOADS, fmap.speeds, indexing="ij")
+    got = {key: np.array([r[key] for r in rows]).reshape(t.shape) for key in rows[0]}
+    np.testing.assert_array_equal(got["temperature [degC]"], t)
+    np.testing.assert_array_equal(got["axial load [N]"], f)
+    np.testing.assert_allclose(got["table speed [m/s]"], w / k, rtol=1e-14)
+    np.testing.assert_allclose(got["motor speed [rad/s]"], 2.0 * w, rtol=1e-14)
+    np.testing.assert_allclose(got["motor speed [rpm]"], 2.0 * w * 60 / (2 * math.pi), rtol=1e-12)
+    np.testing.assert_allclose(got["friction force [N]"], fmap.torque * k, rtol=1e-14)
+    np.testing.assert_array_equal(got["back-driving [-]"], np.sign(f * w))
+    np.testing.assert_allclose(fmap.table_speeds, fmap.speeds / k, rtol=1e-14)
+
+
+def test_an_inclined_axis_names_its_weight() -> None:
+    from ballscrew.io.case import parse_case
+
+    text = ('title = "z"\n[screw]\ndesignation = "40x10 double 2.5x2 6.35"\npreload = "2 kN"\n'
+            '[lubricant]\nname = "mineral ISO VG 68"\n[axis]\nmoving_mass = "100 kg"\n'
+            'incline = "30 deg"\n')  # fmt: skip
+    m = friction_map(parse_case(text), "catalog", speeds=SPEEDS[:3], loads=[0.0],
+                     temperatures=[40.0])  # fmt: skip
+    # 100 kg g sin 30 deg = 490.3 N.
+    assert any("its weight adds 490.3 N" in n for n in m.notes)

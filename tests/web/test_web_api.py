@@ -190,6 +190,16 @@ def test_the_page_results_reproduce_with_the_command_line(
     for key in ("friction_energy_J", "constant_efficiency_energy_J", "peak_motor_torque_Nm",
                 "rms_motor_torque_Nm", "forward_efficiency"):  # fmt: skip
         assert page["energy"][key] == energy[key], key
+    # The axis check of the move, as `ballscrew check` gives it for the same file and move.
+    check = page["energy"]["check"]
+    assert check["command"].split()[:2] == ["ballscrew", "check"]
+    code, text, err = run(
+        ["check", "--case", str(path), "--move", page["energy"]["move"], "--json", "-"], capsys
+    )
+    assert code == 0, err
+    command = json.loads(text)
+    assert check["verdict"] == command["verdict"] and check["not_checked"] == command["not_checked"]
+    assert check["criteria"] == command["criteria"]
 
 
 def test_the_page_budget_adds_up_to_the_torque(client: TestClient) -> None:

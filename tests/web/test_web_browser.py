@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import csv
 import io
+import json
 import os
 import shutil
 import statistics
@@ -203,6 +204,25 @@ def test_the_downloaded_csv_is_the_librarys_result(page: sync_api.Page) -> None:
     ).total  # fmt: skip
     at_100 = np.interp(100.0, np.linspace(10, 3000, 50), expected.total)
     assert abs(at_100 / rule - 1.0) < 0.35
+
+
+def test_the_axis_check_on_the_page_is_the_commands(
+    page: sync_api.Page, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # The page's defaults (the move is on): its verdict table against `ballscrew check`.
+    settle(page)
+    path = tmp_path / "case.toml"
+    path.write_text(download(page, "#download_toml"), encoding="utf-8")
+    move = "stroke=300 mm, feed=15 m/min, acceleration=2 m/s**2"
+    code, text, err = run(["check", "--case", str(path), "--move", move, "--json", "-"], capsys)
+    assert code == 0, err
+    criteria = json.loads(text)["criteria"]
+    rows = page.query_selector_all("#check_table tr.verdict")
+    assert [r.get_attribute("data-verdict") for r in rows] == [c["verdict"] for c in criteria]
+    assert [r.query_selector("th").text_content() for r in rows] == [c["name"] for c in criteria]
+    assert (page.text_content("#check_verdict") or "").startswith(
+        f"verdict: {json.loads(text)['verdict']}"
+    )
 
 
 def test_open_a_case_file(

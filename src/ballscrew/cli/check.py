@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING
 import click
 from rich.table import Table
 
-from .common import stdout, write_json
+from .common import motion, stdout, write_json, writing
 
 if TYPE_CHECKING:
     from ..axis.check import AxisCheck
@@ -38,6 +38,10 @@ __all__ = ["check_command"]
               "error.")  # fmt: skip
 @click.option("--json", "json_file", default=None,
               help="Write the verdicts as JSON to FILE ('-' for standard output).")  # fmt: skip
+@click.option("--out", "out_dir", type=click.Path(file_okay=False), default=None,
+              help="Write a report here: the verdicts, utilisation bars, stiffness and lost "
+              "motion over the stroke, temperature and lead error over time (figures, CSV, "
+              "Markdown, HTML).")  # fmt: skip
 def check_command(
     case_file: str | None,
     move_text: str | None,
@@ -47,6 +51,7 @@ def check_command(
     temperature: str | None,
     run_time: str,
     json_file: str | None,
+    out_dir: str | None,
 ) -> None:
     """Check the case's axis over a motion cycle: every criterion against its limit.
 
@@ -63,23 +68,13 @@ def check_command(
     """  # noqa: D301 - click needs the literal \b to keep the example lines
     from .._version import __version__
     from ..axis.check import axis_check
-    from ..axis.run import energy_run, profile_from_file, profile_from_move
+    from ..axis.run import energy_run
     from ..io.case import load_case
     from ..report.outputs import json_document
     from ..units import to_si
 
     case = load_case(case_file)
-    if (move_text is None) == (profile_file is None):
-        raise click.UsageError("give exactly one of --move and --profile")
-    m: dict[str, float] = {}
-    if move_text is not None:
-        from ..axis.motion import parse_move
-
-        m = parse_move(move_text)
-        profile = profile_from_move(m, cycles)
-    else:
-        assert profile_file is not None
-        profile = profile_from_file(profile_file, cycles)
+    profile, m = motion(move_text, profile_file, cycles)
     temp = to_si("--temperature", temperature, "degC") if temperature else None
     run = energy_run(case, profile, [model_name], cycles=cycles, temperature=temp,
                      run_time=to_si("--run-time", run_time, "s"), move=m)  # fmt: skip
@@ -90,6 +85,15 @@ def check_command(
         out.print(f"assumed: {line}")
     if json_file:
         write_json(json_file, json_document(result.as_dict(__version__)))
+    if out_dir:
+        from pathlib import Path
+
+        from ..files import atomic_folder
+        from ..report.check import write_check_report
+
+        with writing("--out", out_dir), atomic_folder(Path(out_dir)) as folder:
+            files = write_check_report(folder, result)
+        click.echo(f"report: {Path(out_dir) / 'report.html'} ({len(files)} files)", err=True)
 
 
 def _number(value: float | None) -> str:

@@ -12,7 +12,9 @@ import click
 from rich.console import Console
 from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 
-__all__ = ["case_option", "file_option", "progress", "stdout", "write_json", "writing"]
+__all__ = [
+    "case_option", "file_option", "motion", "progress", "stdout", "write_json", "writing",
+]  # fmt: skip
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -89,3 +91,20 @@ case_option = click.option(
 def file_option(flag: str, dest: str, text: str) -> Callable[[F], F]:
     """A ``--flag FILE`` option for an output or input file."""
     return click.option(flag, dest, type=click.Path(dir_okay=False), default=None, help=text)
+
+
+def motion(
+    move_text: str | None, profile_file: str | None, cycles: int
+) -> tuple[Any, dict[str, float]]:
+    """The motion profile of ``--move`` or ``--profile`` (exactly one), and the move's fields."""
+    from ..axis.run import profile_from_file, profile_from_move
+
+    if (move_text is None) == (profile_file is None):
+        raise click.UsageError("give exactly one of --move and --profile")
+    if move_text is None:
+        assert profile_file is not None
+        return profile_from_file(profile_file, cycles), {}
+    from ..axis.motion import parse_move
+
+    m = parse_move(move_text)
+    return profile_from_move(m, cycles), m

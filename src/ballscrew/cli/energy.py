@@ -11,7 +11,7 @@ from rich.console import Console
 from rich.table import Table
 
 from ..files import atomic_folder
-from .common import stdout, write_json, writing
+from .common import motion, stdout, write_json, writing
 
 if TYPE_CHECKING:
     from ..axis.run import EnergyRun
@@ -69,24 +69,14 @@ def energy_command(
                 force_from=50 mm, force_to=250 mm"
     """  # noqa: D301 - click needs the literal \b to keep the example lines
     from .._version import __version__
-    from ..axis.run import energy_run, profile_from_file, profile_from_move
+    from ..axis.run import energy_run
     from ..io.case import load_case
     from ..report.outputs import json_document
     from ..report.torque import warning_lines
     from ..units import parse_range, to_si
 
     case = load_case(case_file)
-    if (move_text is None) == (profile_file is None):
-        raise click.UsageError("give exactly one of --move and --profile")
-    m: dict[str, float] = {}
-    if move_text is not None:
-        from ..axis.motion import parse_move
-
-        m = parse_move(move_text)
-        profile = profile_from_move(m, cycles)
-    else:
-        assert profile_file is not None
-        profile = profile_from_file(profile_file, cycles)
+    profile, m = motion(move_text, profile_file, cycles)
     speeds = None if steady_speeds is None else parse_range("--steady-speeds", steady_speeds,
                                                               "rad/s")  # fmt: skip
     temp = to_si("--temperature", temperature, "degC") if temperature else None

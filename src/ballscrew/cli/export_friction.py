@@ -4,12 +4,18 @@ from __future__ import annotations
 
 import sys
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import click
+from rich.console import Console
 from rich.table import Table
 
 from .._version import __version__
 from .common import case_option, stdout, write_json, writing
+
+if TYPE_CHECKING:
+    from ..fit.controller import FrictionForm
+    from ..fit.export import FrictionExport
 
 __all__ = ["export_friction_command"]
 
@@ -83,11 +89,9 @@ def export_friction_command(
         _load_map(case_file, model_name, temperature, speed, axial_load, out_file, json_file)
         return
     from ..files import atomic_write
-    from ..fit.controller import TABLE_SIDE, UNITS
     from ..fit.export import export_friction, log_speeds
     from ..io.case import load_case
     from ..io.measured import read_measured
-    from ..kinematics import rad_s_to_rpm
     from ..report.outputs import csv_text, json_document
     from ..units import parse_range, to_si
 
@@ -105,38 +109,8 @@ def export_friction_command(
         bristle_damping=si("--bristle-damping", bristle_damping, "N*m*s/rad"),
     )  # fmt: skip
     console = stdout(json_file)
-    lo, hi = rad_s_to_rpm(result.speeds[0]), rad_s_to_rpm(result.speeds[-1])
     for temp, fitted in result.fitted:
-        source = (f"the measured curve {Path(result.measured).name}" if result.measured
-                  else f"{result.model} at {temp:g} degC, {result.axial_load:g} N")  # fmt: skip
-        table = Table(title=f"{result.case.title}: {form} fit of {source}")
-        columns = ["parameter", "screw side", "unit", "table side", "unit "]
-        intervals = fitted.intervals or {}
-        if fitted.intervals is not None:
-            columns.insert(2, "95 % interval")
-        if result.gear_ratio != 1.0:
-            columns.append(f"motor side (gear {result.gear_ratio:g})")
-        for column in columns:
-            table.add_column(column, justify="right")
-        doc = fitted.as_dict(result.lead, result.gear_ratio)
-        side = doc["table_side"]
-        for name, value in fitted.parameters.items():
-            t_name = TABLE_SIDE.get(name, (None,))[0]
-            t_val = side.get(t_name) if t_name else None
-            shown = [f"{t_val['value']:.5g}", t_val["unit"]] if t_val else ["", ""]
-            cells = [name, f"{value:.5g}", UNITS[name], *shown]
-            if fitted.intervals is not None:
-                lo_hi = intervals.get(name)
-                cells.insert(2, f"{lo_hi[0]:.4g} to {lo_hi[1]:.4g}" if lo_hi else "")
-            if result.gear_ratio != 1.0:
-                cells.append(f"{doc['motor_side'][name]['value']:.5g}")
-            table.add_row(*cells)
-        console.print(table)
-        what = "of the measured curve" if result.measured else "both ways"
-        console.print(f"fit error: RMS {fitted.rms_error:.3g} N*m, max {fitted.max_error:.3g} N*m "
-                      f"over {lo:.3g} to {hi:.4g} rpm {what}")  # fmt: skip
-        for note in fitted.notes:
-            click.echo(f"note: {note}", err=True)
+        _print_fit(console, result, temp, fitted)
     for note in result.notes:
         click.echo(f"note: {note}", err=True)
     if form == "table":
@@ -148,6 +122,44 @@ def export_friction_command(
     if json_file:
         write_json(json_file, json_document(result.as_dict(__version__)))
     sys.stdout.flush()
+
+
+def _print_fit(console: Console, result: FrictionExport, temp: float, fitted: FrictionForm) -> None:
+    """One fitted form's table (screw and table side, intervals, motor side) and its error."""
+    from ..fit.controller import TABLE_SIDE, UNITS
+    from ..kinematics import rad_s_to_rpm
+
+    lo, hi = rad_s_to_rpm(result.speeds[0]), rad_s_to_rpm(result.speeds[-1])
+    source = (f"the measured curve {Path(result.measured).name}" if result.measured
+              else f"{result.model} at {temp:g} degC, {result.axial_load:g} N")  # fmt: skip
+    table = Table(title=f"{result.case.title}: {result.form} fit of {source}")
+    columns = ["parameter", "screw side", "unit", "table side", "unit "]
+    intervals = fitted.intervals or {}
+    if fitted.intervals is not None:
+        columns.insert(2, "95 % interval")
+    if result.gear_ratio != 1.0:
+        columns.append(f"motor side (gear {result.gear_ratio:g})")
+    for column in columns:
+        table.add_column(column, justify="right")
+    doc = fitted.as_dict(result.lead, result.gear_ratio)
+    side = doc["table_side"]
+    for name, value in fitted.parameters.items():
+        t_name = TABLE_SIDE.get(name, (None,))[0]
+        t_val = side.get(t_name) if t_name else None
+        shown = [f"{t_val['value']:.5g}", t_val["unit"]] if t_val else ["", ""]
+        cells = [name, f"{value:.5g}", UNITS[name], *shown]
+        if fitted.intervals is not None:
+            lo_hi = intervals.get(name)
+            cells.insert(2, f"{lo_hi[0]:.4g} to {lo_hi[1]:.4g}" if lo_hi else "")
+        if result.gear_ratio != 1.0:
+            cells.append(f"{doc['motor_side'][name]['value']:.5g}")
+        table.add_row(*cells)
+    console.print(table)
+    what = "of the measured curve" if result.measured else "both ways"
+    console.print(f"fit error: RMS {fitted.rms_error:.3g} N*m, max {fitted.max_error:.3g} N*m "
+                  f"over {lo:.3g} to {hi:.4g} rpm {what}")  # fmt: skip
+    for note in fitted.notes:
+        click.echo(f"note: {note}", err=True)
 
 
 def _load_map(

@@ -228,6 +228,14 @@ def sweep_command(
         figures = _figures(target, report)
     for line in report.issues:  # "warning: ..." or, for routine ranges, "note: ..."
         click.echo(line, err=True)
+    shown = _store_line(report, figures)
+    click.echo(f"store: {target} {shown}", err=json_file == "-")
+    if json_file is not None:
+        write_json(json_file, _json(report))
+
+
+def _store_line(report: Any, figures: list[Path]) -> str:
+    """What the run did, its rate and the figures it drew, for the closing line."""
     rate = report.points_per_second
     parts = [f"{report.plan.points:,} points in {report.plan.n_chunks} chunks",
              f"{report.computed} computed {report.mode}"]  # fmt: skip
@@ -237,6 +245,4 @@ def sweep_command(
         parts.append(f"{rate:.3g} points/s")
     pngs = [str(p) for p in figures if p.suffix == ".png"]
     shown = f"; figures: {', '.join(pngs)}" if pngs else ""
-    click.echo(f"store: {target} ({'; '.join(parts)}){shown}", err=json_file == "-")
-    if json_file is not None:
-        write_json(json_file, _json(report))
+    return f"({'; '.join(parts)}){shown}"

@@ -48,7 +48,7 @@ from __future__ import annotations
 
 import math
 import warnings
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -279,8 +279,7 @@ def fit_parameters(
     screw, lubricant
         The screw and oil; the screw's fields in ``free`` are start values.
     measured : MeasuredCurve
-        Speeds [rad/s] and torques [N·m]; its temperature and axial load
-        columns, where given, replace ``temperature`` [°C] and ``axial_load`` [N].
+        Speeds [rad/s], torques [N·m]; its columns win over ``temperature``, ``axial_load``.
     free : sequence of str
         Names from :data:`FITTABLE`.
     parameters : dict, optional
@@ -288,8 +287,7 @@ def fit_parameters(
     start : dict, optional
         Start values by name (SI), instead of the screw's or the model's.
     ratings : Ratings, optional
-        The screw's load ratings; the fitted screw is checked against them
-        (:func:`absurdity_notes`; without them, C_0a estimated from the geometry).
+        Load ratings the fitted screw is checked against (:func:`absurdity_notes`).
 
     Returns
     -------
@@ -309,30 +307,19 @@ def fit_parameters(
             "measured", f"{n} points", f"more points than free parameters ({len(names)})"
         )
 
-    def predict(values: dict[str, float], rows: Index) -> FloatArray:
-        s, kwargs = _apply(screw, fixed, values)
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            out = friction_torque(
-                s, oil, speed=speed[rows], temperature=temp[rows], axial_load=load[rows],
-                model=model, **kwargs,
-            ).total  # fmt: skip
-        return np.asarray(out, dtype=float)
-
+    predict = _predictor(screw, oil, fixed, model, speed, temp, load)
     everything = np.arange(n)
     fit = _fit_identifiable(specs, starts, predict, torque, everything)
     estimates, values = _estimates(fit, starts)
-    fit.notes.extend(_correlation_notes(fit.active, fit.corr))
-    fit.notes.extend(_data_notes(fit.outliers, fit.resid.size - len(fit.active)))
+    fit.notes.extend([*_correlation_notes(fit.active, fit.corr),
+                      *_data_notes(fit.outliers, fit.resid.size - len(fit.active))])  # fmt: skip
     fitted_screw, model_values = _apply(screw, fixed, values)
     fitted = predict(values, everything)
     inliers = np.setdiff1d(everything, np.asarray(fit.outliers, dtype=int))
-    rms = float(np.sqrt(np.mean((fitted[inliers] - torque[inliers]) ** 2)))
     validity = _validity_notes(screw, oil, fixed, values, speed, temp, load, model)
-    absurd, structure = absurdity_notes(
-        fitted_screw, ratings, values, speed[inliers], load[inliers], torque[inliers],
-        fitted[inliers], predict(starts, inliers),
-    )  # fmt: skip
+    absurd, structure = absurdity_notes(fitted_screw, ratings, values, speed[inliers],
+                                        load[inliers], torque[inliers], fitted[inliers],
+                                        predict(starts, inliers))  # fmt: skip
     return FitResult(
         model=model,
         estimates={n: estimates[n] for n in names},
@@ -346,11 +333,30 @@ def fit_parameters(
         measured=torque,
         fitted=fitted,
         outliers=fit.outliers,
-        rms_residual=rms,
+        rms_residual=float(np.sqrt(np.mean((fitted[inliers] - torque[inliers]) ** 2))),
         warnings=(*fit.notes, *validity, *absurd),
         reliable=not absurd,
         structure=structure,
     )
+
+
+def _predictor(
+    screw: BallScrew, oil: Lubricant, fixed: dict[str, Any], model: str,
+    speed: FloatArray, temp: FloatArray, load: FloatArray,
+) -> Callable[[dict[str, float], Index], FloatArray]:  # fmt: skip
+    """The model's torque [N·m] at the measured rows for given values of the free parameters."""
+
+    def predict(values: dict[str, float], rows: Index) -> FloatArray:
+        s, kwargs = _apply(screw, fixed, values)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            out = friction_torque(
+                s, oil, speed=speed[rows], temperature=temp[rows], axial_load=load[rows],
+                model=model, **kwargs,
+            ).total  # fmt: skip
+        return np.asarray(out, dtype=float)
+
+    return predict
 
 
 def _validity_notes(

@@ -106,12 +106,9 @@ def export_friction(
 ) -> FrictionExport:
     """A model's curve over ``speeds`` both ways at each temperature, fitted to ``form``.
 
-    With ``measured``, the form is fitted to the measured curve instead (its
-    points, each direction as measured; torque signed like the speed), with
-    95 % intervals of the curve parameters (:func:`with_intervals`).
-    Motor-side parameters follow the case's ``[axis] gear_ratio``; on an
-    inclined axis the weight's component along the screw is added to the
-    axial load, and a note says so.
+    With ``measured``, the form is fitted to the measured curve instead, with
+    95 % intervals (:func:`with_intervals`). Motor-side parameters follow
+    ``[axis] gear_ratio``; an inclined axis' weight joins the axial load (noted).
 
     Parameters
     ----------
@@ -160,13 +157,7 @@ def export_friction(
                                      axial_load=load, model=name, **params).total  # fmt: skip
         signed = np.sign(w) * torque
         if form == "table":
-            out.rows += [
-                {"speed [rad/s]": float(v), "speed [rpm]": float(rad_s_to_rpm(v)),
-                 "temperature [degC]": temp, "torque [N*m]": float(tq),
-                 "table speed [m/s]": float(v * lead / (2 * math.pi)),
-                 "force [N]": float(tq * 2 * math.pi / lead)}
-                for v, tq in zip(w, signed, strict=True)
-            ]  # fmt: skip
+            out.rows += _table_rows(w, signed, temp, lead)
             continue
         fitted = fit_form(form, w, signed, **lugre)
         out.fitted.append((temp, fitted))
@@ -177,6 +168,19 @@ def export_friction(
             for v, a, b in zip(w, signed, curve, strict=True)
         ]  # fmt: skip
     return out
+
+
+def _table_rows(
+    w: FloatArray, signed: FloatArray, temp: float, lead: float
+) -> list[dict[str, Any]]:
+    """The lookup table's rows at one temperature: screw side and table side."""
+    return [
+        {"speed [rad/s]": float(v), "speed [rpm]": float(rad_s_to_rpm(v)),
+         "temperature [degC]": temp, "torque [N*m]": float(tq),
+         "table speed [m/s]": float(v * lead / (2 * math.pi)),
+         "force [N]": float(tq * 2 * math.pi / lead)}
+        for v, tq in zip(w, signed, strict=True)
+    ]  # fmt: skip
 
 
 def _fit_measured(

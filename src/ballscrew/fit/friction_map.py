@@ -51,6 +51,7 @@ import numpy as np
 import numpy.typing as npt
 from scipy.optimize import lsq_linear
 
+from ..axis.energy import STANDARD_GRAVITY
 from ..chain import friction_torque
 from ..errors import BallScrewInputError, FloatArray
 from ..friction import get_model
@@ -337,7 +338,7 @@ def friction_map(
     notes = []
     mass, incline = case.axis.get("moving_mass"), case.axis.get("incline", 0.0)
     if mass and incline:
-        weight = mass * 9.80665 * math.sin(incline)
+        weight = mass * STANDARD_GRAVITY * math.sin(incline)
         notes.append(f"the axis is inclined: its weight adds {weight:.4g} N along x to the "
                      "process force (give the total as the axial load)")  # fmt: skip
     mirrored = torque[:, ::-1, :]  # the same speeds at the opposite loads

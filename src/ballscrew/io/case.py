@@ -28,7 +28,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from importlib import resources
 from pathlib import Path
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 from pydantic import ValidationError
@@ -516,21 +516,66 @@ def _screw(
     s: ScrewSection, si: Callable[[str, str, Any, str], float], notes: list[Assumption]
 ) -> tuple[BallScrew, str, Ratings]:
     """The screw of a case: designation first, keys given in the file override it."""
+    base, origin, catalogue = _designated(s, notes)
+    geometry = _geometry(s, si, base, notes)
+    rating, ratings_of = _ratings(s, si, catalogue)
+    ways = [
+        k for k in ("preload", "preload_drag_torque", "preload_share") if getattr(s, k) is not None
+    ]
+    if len(ways) != 1:
+        raise BallScrewInputError(
+            "screw.preload",
+            ", ".join(ways) or "(missing)",
+            "exactly one of preload (a force), preload_drag_torque and preload_share "
+            "(of the dynamic load rating)",
+        )
+    try:
+        screw = BallScrew(preload=0.0, **geometry)
+    except BallScrewInputError as exc:
+        raise BallScrewInputError(f"screw.{exc.field}", exc.value, exc.allowed) from None
+    check_buildable(screw, "screw.")
+    preload = _preload(s, si, screw, rating)
+    try:
+        screw = screw.replace(preload=preload)
+    except BallScrewInputError as exc:
+        raise BallScrewInputError(f"screw.{exc.field}", exc.value, exc.allowed) from None
+    return screw, origin, ratings_of(screw)
+
+
+class _Catalogue(NamedTuple):
+    """The load ratings a designation's catalogue row gives [N], and where from."""
+
+    dynamic: float | None
+    static: float | None
+    source: str
+
+
+def _designated(s: ScrewSection, notes: list[Assumption]) -> tuple[dict[str, Any], str, _Catalogue]:
+    """The geometry a designation gives (with its assumptions noted), its origin, ratings."""
+    if s.designation is None:
+        return {}, "", _Catalogue(None, None, "")
+    name = str(_unwrap("screw.designation", s.designation, notes))
+    resolved = resolve(name)
+    base = resolved.geometry
+    for key, why in resolved.notes.items():
+        if key not in s.model_fields_set:
+            shown = f"{base[key] * 1e3:g} mm" if key in _LENGTHS else f"{base[key]:g}"
+            notes.append(Assumption(f"screw.{key}", shown, why))
+    return (
+        base,
+        resolved.source,
+        _Catalogue(
+            resolved.dynamic_load_rating, resolved.static_load_rating, f"the {name} catalogue row"
+        ),
+    )
+
+
+def _geometry(
+    s: ScrewSection, si: Callable[[str, str, Any, str], float], base: dict[str, Any],
+    notes: list[Assumption],
+) -> dict[str, Any]:  # fmt: skip
+    """The screw's keywords: given in the file, else the designation's, else the default."""
     given = s.model_fields_set
-    base: dict[str, Any] = {}
-    rating: float | None = None
-    static: float | None = None
-    origin = rating_source = ""
-    if s.designation is not None:
-        name = str(_unwrap("screw.designation", s.designation, notes))
-        resolved = resolve(name)
-        base, rating, origin = resolved.geometry, resolved.dynamic_load_rating, resolved.source
-        static = resolved.static_load_rating
-        rating_source = f"the {name} catalogue row"
-        for key, why in resolved.notes.items():
-            if key not in given:
-                shown = f"{base[key] * 1e3:g} mm" if key in _LENGTHS else f"{base[key]:g}"
-                notes.append(Assumption(f"screw.{key}", shown, why))
     geometry: dict[str, Any] = {}
     for name, unit in SCREW_UNITS.items():
         value = getattr(s, name)
@@ -553,7 +598,19 @@ def _screw(
     if circuits != int(circuits):
         raise BallScrewInputError("screw.circuits", circuits, "a whole number >= 1")
     geometry["circuits"] = int(circuits)
-    dynamic_source = static_source = rating_source
+    return geometry
+
+
+def _ratings(
+    s: ScrewSection, si: Callable[[str, str, Any, str], float], catalogue: _Catalogue
+) -> tuple[float | None, Callable[[BallScrew], Ratings]]:
+    """C_a [N] (or None), and how the screw's ratings are made once the screw is built.
+
+    A rating given in the file overrides the catalogue's; without a static
+    rating, C_0a is estimated from the geometry.
+    """
+    rating, static = catalogue.dynamic, catalogue.static
+    dynamic_source = static_source = catalogue.source
     if s.dynamic_load_rating is not None:
         rating = si("screw", "dynamic_load_rating", s.dynamic_load_rating, "N")
         dynamic_source = "screw.dynamic_load_rating"
@@ -565,51 +622,39 @@ def _screw(
             raise BallScrewInputError(
                 f"screw.{name}", getattr(s, name), "a force > 0 and <= 100 MN"
             )
-    ways = [
-        k for k in ("preload", "preload_drag_torque", "preload_share") if getattr(s, k) is not None
-    ]
-    if len(ways) != 1:
-        raise BallScrewInputError(
-            "screw.preload",
-            ", ".join(ways) or "(missing)",
-            "exactly one of preload (a force), preload_drag_torque and preload_share "
-            "(of the dynamic load rating)",
-        )
-    try:
-        screw = BallScrew(preload=0.0, **geometry)
-    except BallScrewInputError as exc:
-        raise BallScrewInputError(f"screw.{exc.field}", exc.value, exc.allowed) from None
-    check_buildable(screw, "screw.")
+
+    def ratings_of(screw: BallScrew) -> Ratings:
+        if static is None:
+            return _estimated(screw, rating, dynamic_source)
+        return Ratings(rating, dynamic_source if rating else "", static, static_source)
+
+    return rating, ratings_of
+
+
+def _preload(
+    s: ScrewSection, si: Callable[[str, str, Any, str], float], screw: BallScrew,
+    rating: float | None,
+) -> float:  # fmt: skip
+    """The preload [N]: given, from a catalogue drag torque, or a share of C_a."""
     if s.preload is not None:
-        preload = si("screw", "preload", s.preload, "N")
-    elif s.preload_drag_torque is not None:
+        return si("screw", "preload", s.preload, "N")
+    if s.preload_drag_torque is not None:
         from ..catalog_formulas import preload_from_drag_torque
 
         torque = si("screw", "preload_drag_torque", s.preload_drag_torque, "N*m")
-        preload = float(preload_from_drag_torque(torque, screw))
-    else:
-        share = si("screw", "preload_share", s.preload_share, "")
-        if not 0.0 <= share <= 0.2:
-            raise BallScrewInputError(
-                "screw.preload_share", s.preload_share, "0 to 20 % (catalogues: 2 to 10 %)"
-            )
-        if rating is None:
-            raise BallScrewInputError(
-                "screw.dynamic_load_rating",
-                "(missing)",
-                "a force, needed by preload_share (or a designation whose catalogue row gives it)",
-            )
-        preload = share * rating
-    try:
-        screw = screw.replace(preload=preload)
-    except BallScrewInputError as exc:
-        raise BallScrewInputError(f"screw.{exc.field}", exc.value, exc.allowed) from None
-    ratings = (
-        _estimated(screw, rating, dynamic_source)
-        if static is None
-        else Ratings(rating, dynamic_source if rating else "", static, static_source)
-    )
-    return screw, origin, ratings
+        return float(preload_from_drag_torque(torque, screw))
+    share = si("screw", "preload_share", s.preload_share, "")
+    if not 0.0 <= share <= 0.2:
+        raise BallScrewInputError(
+            "screw.preload_share", s.preload_share, "0 to 20 % (catalogues: 2 to 10 %)"
+        )
+    if rating is None:
+        raise BallScrewInputError(
+            "screw.dynamic_load_rating",
+            "(missing)",
+            "a force, needed by preload_share (or a designation whose catalogue row gives it)",
+        )
+    return share * rating
 
 
 def _estimated(screw: BallScrew, dynamic: float | None, dynamic_source: str) -> Ratings:

@@ -244,7 +244,36 @@ def _energy(case: Case, move: Any, limits: Limits) -> dict[str, Any]:
             "command": f'ballscrew energy --case case.toml --move "{text}"',
         }
     )
+    result["check"] = _check(case, profile, m, temperature, text)
     return result
+
+
+def _check(
+    case: Case, profile: Any, move: dict[str, float], temperature: float, text: str
+) -> dict[str, Any]:
+    """``ballscrew check`` of the same move (complete model): the verdict table's rows.
+
+    An input the check needs and the case lacks is not an error of the page: the
+    check says what it is, as its verdict, and the energy is still shown.
+    """
+    from ..axis.check import axis_check
+    from ..axis.run import energy_run
+
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", BallScrewSpeedWarning)
+            warnings.simplefilter("ignore", BallScrewValidityWarning)
+            run = energy_run(case, profile, ["complete"], temperature=temperature, move=move)
+            check = axis_check(run, "complete")
+    except BallScrewInputError as exc:
+        return {"error": str(exc), "command": f'ballscrew check --case case.toml --move "{text}"'}
+    doc = check.as_dict("")
+    rows: dict[str, Any] = finite_or_null({
+        "verdict": doc["verdict"], "not_checked": doc["not_checked"],
+        "criteria": doc["criteria"], "assumptions": list(check.assumptions),
+        "command": f'ballscrew check --case case.toml --move "{text}"',
+    })  # fmt: skip
+    return rows
 
 
 def _curves(results: Mapping[str, FrictionResult]) -> list[dict[str, Any]]:

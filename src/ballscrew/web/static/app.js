@@ -325,6 +325,7 @@
       "# save the case file (button above) as case.toml, then",
       data.command,
       ...(data.energy ? [data.energy.command] : []),
+      ...(data.energy && data.energy.check ? [data.energy.check.command] : []),
     ].join("\n");
     for (const id of ["download_csv", "download_toml", "download_meta"]) $(id).disabled = false;
   }
@@ -373,6 +374,28 @@
       ["efficiency at the working point", `${eff(e.forward_efficiency)} forward, ${eff(e.reverse_efficiency)} back-driving`],
     ];
     $("energy_table").innerHTML = rows.map(([k, v]) => `<tr><th>${esc(k)}</th><td>${esc(v)}</td></tr>`).join("");
+    renderCheck(e.check);
+  }
+
+  // The axis check of the same move: one row per criterion, as `ballscrew check` prints it.
+  function renderCheck(c) {
+    $("check_section").hidden = !c;
+    if (!c) return;
+    const num = (v) => (v === null || v === undefined ? "-" : fmt(v));
+    if (c.error) {
+      $("check_verdict").textContent = `not checked: ${c.error}`;
+      $("check_table").innerHTML = "";
+      return;
+    }
+    const missing = c.not_checked.length ? `, ${c.not_checked.length} not checked` : "";
+    $("check_verdict").textContent = `verdict: ${c.verdict}${missing}`;
+    const head = "<thead><tr><th>criterion</th><th>value</th><th>limit</th><th>unit</th><th>use</th><th>verdict</th><th>what to change</th></tr></thead>";
+    const rows = c.criteria.map((r) => {
+      const use = r.utilisation === null ? "-" : `${Math.round(100 * r.utilisation)} %`;
+      return `<tr class="verdict" data-verdict="${esc(r.verdict)}"><th title="${esc(r.source)}">${esc(r.name)}</th><td>${num(r.value)}</td><td>${num(r.limit)}</td><td>${esc(r.unit)}</td><td>${use}</td><td>${esc(r.verdict)}</td><td>${esc(r.advice)}</td></tr>`;
+    });
+    const assumed = c.assumptions.map((a) => `<tr><td colspan="7" class="assumed">assumed: ${esc(a)}</td></tr>`);
+    $("check_table").innerHTML = `${head}<tbody>${rows.join("")}${assumed.join("")}</tbody>`;
   }
 
   // ---------------------------------------------------------------- filling the form from a file
