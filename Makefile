@@ -1,7 +1,8 @@
 # Two commands do all set-up on a fresh machine with Python 3.11+ and pip:
 #   make run   - the main job: reproduce the study, report in study-report/
 #   make test  - the whole test suite: ruff, mypy on src/, the import contracts, pytest with
-#                doctests (make test-fast: the same without the tests marked slow)
+#                doctests, the documentation site built with warnings as errors (make docs)
+#                (make test-fast: the same without the tests marked slow and the docs)
 PYTHON ?= python3
 VENV   ?= .venv
 BIN    := $(VENV)/bin
@@ -11,13 +12,13 @@ STAMP  := $(VENV)/.installed
 # fetched everywhere); test installs it when it is missing, with sudo unless root.
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: run test test-fast clean chromium
+.PHONY: run test test-fast docs clean chromium
 
-$(STAMP): pyproject.toml
+$(STAMP): pyproject.toml src/ballscrew/_version.py
 	$(PYTHON) -c 'import sys; sys.exit("Python >= 3.11 is required, found " + sys.version.split()[0]) if sys.version_info < (3, 11) else None'
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --disable-pip-version-check --upgrade pip
-	$(BIN)/python -m pip install --quiet --disable-pip-version-check -e '.[test]'
+	$(BIN)/python -m pip install --quiet --disable-pip-version-check -e '.[test,docs]'
 	touch $(STAMP)
 
 run: $(STAMP)
@@ -29,6 +30,15 @@ test: $(STAMP) chromium
 	$(BIN)/mypy src
 	$(BIN)/lint-imports
 	$(BIN)/pytest -q
+	$(MAKE) docs
+
+# The documentation site in docs/_build/html: the API reference, the Markdown pages and
+# the gallery (examples/plot_*.py run); a warning fails the build.
+docs: $(STAMP)
+	rm -rf docs/_build docs/api docs/gallery docs/sg_execution_times.rst
+	$(BIN)/sphinx-build -W --keep-going -q -b html docs docs/_build/html
+	$(BIN)/python scripts/check_api_docs.py docs/_build/html
+	@echo "docs: docs/_build/html/index.html"
 
 test-fast: $(STAMP)
 	$(BIN)/ruff check src tests benchmarks examples scripts
@@ -48,3 +58,4 @@ chromium:
 
 clean:
 	rm -rf $(VENV) build *.egg-info src/*.egg-info .pytest_cache .mypy_cache .ruff_cache test-output
+	rm -rf docs/_build docs/api docs/gallery docs/sg_execution_times.rst

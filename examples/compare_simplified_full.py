@@ -1,4 +1,6 @@
-"""Compare the study's simplified model with the full Harris-type integral.
+"""
+The simplified model against the full Harris-type integral
+==========================================================
 
 Run with ``.venv/bin/python examples/compare_simplified_full.py``. Evaluates
 both models for the bundled reference screw over a grid of screw speed,

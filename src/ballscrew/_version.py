@@ -1,12 +1,12 @@
-"""The package's version, from its installed metadata (one source: ``pyproject.toml``)."""
+"""The package's version: the one place it is written.
+
+``pyproject.toml`` reads it from here (``[tool.setuptools.dynamic]``), so the installed
+metadata (``importlib.metadata.version("ballscrew")``), ``ballscrew.__version__`` and
+``ballscrew --version`` agree; CHANGELOG.md and CITATION.cff name it for each release.
+"""
 
 from __future__ import annotations
 
-from importlib.metadata import PackageNotFoundError, version
-
 __all__ = ["__version__"]
 
-try:
-    __version__ = version("ballscrew")
-except PackageNotFoundError:  # pragma: no cover - running from a source tree
-    __version__ = "0.0.0"
+__version__ = "0.1.0"

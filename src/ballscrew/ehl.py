@@ -218,7 +218,7 @@ def asperity_share(
 ) -> FloatArray:
     r"""Share of the contact carried by asperities, :math:`A_c/A_0 = \exp(-B\Lambda^C)`.
 
-    The form is Zhou and Hoeprich's (1991) [2]_; the study (its eq. 6) takes
+    The form is Zhou and Hoeprich's (1991) [2]; the study (its eq. 6) takes
     :math:`B = 1.42` from Olaru's model but does not give :math:`C`. The
     default :math:`C = 0.8` is the value of the public code of Olaru's model;
     neither constant was checked

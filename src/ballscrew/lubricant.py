@@ -271,7 +271,7 @@ def density_linear(
         Density at 15 °C [kg/m³].
     expansion : array_like
         :math:`\beta_\rho` [1/K]; default 6.5e-4 /K, typical of mineral oils
-        and PAOs between 0 and 150 °C (Hamrock et al. [6]_ ch. 4).
+        and PAOs between 0 and 150 °C (Hamrock et al. [6] ch. 4).
 
     Returns
     -------

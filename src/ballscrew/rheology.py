@@ -77,7 +77,7 @@ def limiting_shear_stress(
     tau0 : array_like
         Limiting shear stress at ambient pressure :math:`\tau_0` [Pa], >= 0.
     coefficient : array_like
-        Pressure coefficient :math:`\gamma_L` [-], >= 0; Bair and Winer [1]_
+        Pressure coefficient :math:`\gamma_L` [-], >= 0; Bair and Winer [1]
         measured 0.07 to 0.09 for mineral oils at high pressure.
 
     Returns
@@ -134,7 +134,7 @@ def general_non_newtonian(
     The study prints eq. (7) as :math:`\tau_s = \tau_{lim}[1 - (\dot\gamma
     \eta/\tau_L)^{-n}]^{1/n}`, which is negative under the root for every
     Newtonian (low) shear stress and so cannot be what was computed. The form
-    above is Elsharkawy and Hamrock's general model [2]_; it has the limits
+    above is Elsharkawy and Hamrock's general model [2]; it has the limits
     the study describes and reduces to the study's own eq. (5) at
     :math:`n = 1`, so it is taken as the intended reading.
 
@@ -190,7 +190,7 @@ def eyring_1936(
         [1/s].
     eyring_stress : array_like
         :math:`\tau_E` [Pa], > 0; 2 to 10 MPa is typical of mineral oils
-        (Harris & Kotzalas [4]_).
+        (Harris & Kotzalas [4]).
 
     Returns
     -------
@@ -216,7 +216,7 @@ def bair_winer_1979(
 
     .. math:: \tau = \tau_{lim}\left[1 - \exp\left(-\frac{\eta\dot\gamma}{\tau_{lim}}\right)\right]
 
-    Bair and Winer's model [1]_ adds an elastic term
+    Bair and Winer's model [1] adds an elastic term
     :math:`\dot\tau/G_\infty` for transient shear; at the steady shear of a
     friction calculation it vanishes and the law above remains.
 

@@ -15,6 +15,7 @@ import click
 
 from .._version import __version__
 from ..errors import BallScrewInputError
+from ..extras import MissingExtraError
 from ..files import record_signal, signal_received
 from .acceptance import acceptance_command
 from .case import case_command
@@ -99,7 +100,8 @@ def main(argv: list[str] | None = None) -> None:
     """Entry point of the ``ballscrew`` command.
 
     Exit status: 0 on success, 2 on bad input (one line on stderr naming the
-    field and the problem), 1 on an internal error, 130 when interrupted.
+    field and the problem) or a missing extra (one line naming it), 1 on an
+    internal error, 130 when interrupted.
     Warnings that reach the command line (a unit read one of two ways, a
     validity range left) are printed as plain ``warning:`` lines, once each.
     """
@@ -110,7 +112,7 @@ def main(argv: list[str] | None = None) -> None:
     previous_int = signal.signal(signal.SIGINT, _terminate)
     try:
         status = cli.main(args=argv, prog_name="ballscrew", standalone_mode=False)
-    except BallScrewInputError as exc:
+    except (BallScrewInputError, MissingExtraError) as exc:
         click.echo(f"error: {exc}", err=True)
         sys.exit(2)
     except click.exceptions.UsageError as exc:

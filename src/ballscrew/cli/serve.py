@@ -6,6 +6,8 @@ import ipaddress
 
 import click
 
+from ..extras import require
+
 __all__ = ["serve_command"]
 
 
@@ -35,6 +37,7 @@ def serve_command(host: str, port: int) -> None:
       ballscrew serve
       ballscrew serve --port 8080
     """  # noqa: D301 - click needs the literal \b to keep the example lines
+    require("web", "ballscrew serve")
     import uvicorn
 
     from ..web import create_app

@@ -11,6 +11,7 @@ import click
 from rich.console import Console
 from rich.table import Table
 
+from ..extras import require
 from .common import file_option, progress, stdout, write_json, writing
 
 __all__ = ["sweep_command"]
@@ -179,6 +180,7 @@ def sweep_command(
       ballscrew sweep examples/sweep_uncertainty.toml --out mc.zarr --workers 2
       ballscrew sweep big.toml --out big.zarr --scheduler tcp://127.0.0.1:8786
     """  # noqa: D301 - click needs the literal \b to keep the example lines
+    require("sweep", "ballscrew sweep")
     from ..files import signal_received
     from ..sweep.plan import DEFAULT_MAX_POINTS, check_size, sweep_size
     from ..sweep.run import run_sweep

@@ -8,7 +8,7 @@
   interval_low, interval_high, ratio, within, training;
 * ``summary.csv``: per model, the count inside its band of each group
   (:data:`ballscrew.study.validation.SCORE_GROUPS`) and the median
-  |log10(predicted/reference)|;
+  ``|log10(predicted/reference)|``;
 * ``figures/predicted_vs_reference.png`` and ``.svg``: predicted against
   reference torque on log axes, one marker per model, with the makers' band;
 * ``figures/residuals.png`` and ``.svg``: each model's ratio to the catalogue

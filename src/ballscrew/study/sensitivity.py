@@ -12,11 +12,13 @@ its simplified model.
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass, replace
 
 import numpy as np
 
 from ..chain import friction_torque as chain_friction_torque
+from ..extras import MissingExtraWarning, missing
 from ..io.case import Case
 from ..kinematics import rad_s_to_rpm
 from ..sweep.sensitivity import SobolIndices
@@ -156,7 +158,18 @@ def study_sensitivity(
     The inputs of :func:`uncertain_inputs` are sampled by Saltelli's scheme
     (:mod:`ballscrew.sweep.sensitivity`); each sample is one screw, lubricant and
     parameter set, evaluated over every speed in one friction call.
+
+    Without SALib (the ``sweep`` extra) the analysis is left out: a
+    :class:`~ballscrew.extras.MissingExtraWarning` says so and the result is ``None``.
     """
+    if missing("sweep", ("SALib",)) is not None:
+        warnings.warn(
+            "the study's uncertainty section (Sobol indices) needs the sweep extra (SALib is "
+            "not installed): pip install 'ballscrew[sweep]'; the report leaves it out",
+            MissingExtraWarning,
+            stacklevel=2,
+        )
+        return None
     from ..sweep.fields import resolve
     from ..sweep.sensitivity import sample, sobol_indices
 

@@ -532,7 +532,7 @@ class ModelScore:
 
 
 def summarise(rows: list[ScoreRow]) -> list[ModelScore]:
-    """Per model: the reference cases inside their band, median |log10 ratio|, each group."""
+    """Per model: the reference cases inside their band, median ``|log10 ratio|``, each group."""
     out = []
     for name in dict.fromkeys(r.model for r in rows):
         mine = [r for r in rows if r.model == name]

@@ -27,6 +27,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import BallScrewInputError
+from ..extras import require
 from ..files import OutputInUseError, exclusive_lock
 from .plan import ChunkReport, Plan, plan_sweep, run_chunk
 from .spec import OPERATING, SweepSpec
@@ -151,7 +152,13 @@ def run_sweep(
         Called with (chunks done, chunks in all) as chunks finish.
     notify : callable, optional
         Called with a sentence when a run is resumed or restarted.
+
+    Raises
+    ------
+    MissingExtraError
+        When the ``sweep`` extra is not installed.
     """
+    require("sweep", "ballscrew.sweep.run.run_sweep")
     from . import store
 
     if workers is not None and scheduler is not None:
