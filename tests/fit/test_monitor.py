@@ -11,7 +11,7 @@ import pytest
 
 from ballscrew import friction_torque
 from ballscrew.errors import BallScrewInputError
-from ballscrew.fit.monitor import invert, monitor_preload, preload_curves, threshold
+from ballscrew.fit.monitor import PreloadCurves, invert, monitor_preload, preload_curves, threshold
 from ballscrew.io.case import load_case
 from ballscrew.io.series import CATALOGUE_SPEED, TorqueSeries, parse_series
 from ballscrew.loads import LIFT_OFF_RATIO
@@ -129,3 +129,78 @@ def test_cli_monitor(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None
     code, _, err = run(["monitor", "--measured", str(data), "--plot", str(tmp_path / "p.gif")],
                        capsys)  # fmt: skip
     assert code == 2 and "--plot" in err
+
+
+def test_bands_and_crossings_against_an_independent_regression(
+    truth: tuple[np.ndarray, np.ndarray],
+) -> None:
+    from scipy.optimize import brentq
+    from scipy.stats import linregress
+    from scipy.stats import t as student_t
+
+    _, torque = truth
+    noisy = series(torque * (1.0 + 0.02 * np.random.default_rng(7).standard_normal(TIME.size)))
+    force = 0.5 * CASE.screw.preload
+    r = monitor_preload(CASE, noisy, limit=f"{force} N")
+    y = np.log(r.preload)
+    fit = linregress(TIME, y)
+    n = TIME.size
+    s = float(np.sqrt(np.sum((y - fit.intercept - fit.slope * TIME) ** 2) / (n - 2)))
+    q = float(student_t.ppf(0.975, n - 2))
+    assert r.slope == pytest.approx(fit.slope, rel=1e-10)
+    assert r.intercept == pytest.approx(fit.intercept, rel=1e-10)
+    assert r.residual_sd == pytest.approx(s, rel=1e-10)
+    # The mean's standard error: s^2/n + (t - mean t)^2 se_b^2 (se_b from linregress).
+    se = np.sqrt(s**2 / n + (TIME - TIME.mean()) ** 2 * fit.stderr**2)
+    centre = fit.intercept + fit.slope * TIME
+    np.testing.assert_allclose(r.trend, np.exp(centre), rtol=1e-10)
+    np.testing.assert_allclose(r.trend_low, np.exp(centre - q * se), rtol=1e-10)
+    np.testing.assert_allclose(r.trend_high, np.exp(centre + q * se), rtol=1e-10)
+    # One measurement's interval: its own value +- q s.
+    np.testing.assert_allclose(r.preload_low, np.exp(y - q * s), rtol=1e-10)
+    np.testing.assert_allclose(r.preload_high, np.exp(y + q * s), rtol=1e-10)
+    # The crossing of a force and its inverse-prediction interval, root by root.
+    y_th = np.log(force)
+    assert r.crossing == pytest.approx((y_th - fit.intercept) / fit.slope, rel=1e-10)
+
+    def edge(t: float) -> float:
+        mean_se = np.sqrt(s**2 / n + (t - TIME.mean()) ** 2 * fit.stderr**2)
+        return abs(fit.intercept + fit.slope * t - y_th) - q * mean_se
+
+    low = brentq(edge, TIME[0] - 1e4, r.crossing)
+    high = brentq(edge, r.crossing, TIME[-1] + 1e5)
+    # Both refined to Brent's tolerance (1e-9 h) from the same function: far below 1e-6 h.
+    assert r.crossing_low == pytest.approx(low, abs=1e-6)
+    assert r.crossing_high == pytest.approx(high, abs=1e-6)
+    # A share of the initial preload: ln(share) over the slope's 95 % interval.
+    g = monitor_preload(CASE, noisy, limit="50 %")
+    edges = sorted(np.log(0.5) / (fit.slope + np.array([-1.0, 1.0]) * q * fit.stderr))
+    assert (g.crossing_low, g.crossing_high) == pytest.approx(tuple(edges), rel=1e-10)
+    assert g.crossing == pytest.approx(np.log(0.5) / fit.slope, rel=1e-10)
+
+
+def test_grid_defaults_exact_nodes_and_notes(truth: tuple[np.ndarray, np.ndarray]) -> None:
+    _, torque = truth
+    curves = preload_curves(CASE, "complete", series(torque))
+    f = CASE.screw.preload
+    assert curves.preloads[0] == 0.0 and curves.preloads.size == 49
+    assert curves.preloads[1] == pytest.approx(0.01 * f) and curves.preloads[-1] == pytest.approx(
+        4 * f
+    )
+    # A torque on a grid node reads back the node exactly, the top node included.
+    nodes = curves.torque[[5, 20, -1], 0]
+    back, below = invert(PreloadCurves(curves.preloads, curves.torque[:, :3], "complete"), nodes)
+    np.testing.assert_allclose(back, curves.preloads[[5, 20, -1]], rtol=1e-12)
+    assert not below.any()
+    # A screw without preload: the grid is set from 1 kN.
+    bare = load_case(None)
+    object.__setattr__(bare, "screw", CASE.screw.replace(preload=0.0))
+    assert preload_curves(bare, "catalog", series(torque)).preloads[-1] == pytest.approx(4000.0)
+    # Few points, and a preload that does not fall: said.
+    few = TorqueSeries(TIME[:5], torque[:5], np.full(5, CATALOGUE_SPEED), "few")
+    assert any("5 measurements" in n for n in monitor_preload(CASE, few, limit="50 %").notes)
+    rising = monitor_preload(CASE, series(torque[::-1]), limit="50 %")
+    assert rising.slope > 0 and any("does not fall" in n for n in rising.notes)
+    for bad in ("0 %", "100 %", "0 kN"):
+        with pytest.raises(BallScrewInputError, match="--threshold"):
+            threshold(bad, 1800.0)

@@ -18,7 +18,8 @@ series of it over operating hours shows the preload going.
    preload the user gives (a force, a share of the initial preload, or the
    preload below which a working load lifts a half-nut off,
    :math:`F_a/2^{3/2}`), with the inverse-regression interval: the times at
-   which the trend's 95 % band contains the threshold (Draper & Smith,
+   which the trend's 95 % band contains the threshold, found on a grid and
+   refined by Brent's method (Draper & Smith,
    Applied Regression Analysis, 3rd ed. 1998, §3.2, the "inverse
    prediction" interval). It may be open-ended when the data cannot
    exclude late times.
@@ -36,6 +37,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+from scipy.optimize import brentq
 from scipy.stats import t as student_t
 
 from ..chain import friction_torque
@@ -343,5 +345,14 @@ def _crossing(r: MonitorResult) -> None:
         r.crossing_low = r.crossing_high = math.nan
         return
     idx = np.flatnonzero(inside)
-    r.crossing_low = float(grid[idx[0]]) if idx[0] > 0 else -math.inf
-    r.crossing_high = float(grid[idx[-1]]) if idx[-1] < grid.size - 1 else math.inf
+
+    def edge(t: float) -> float:  # the band's edge crosses the threshold where this is 0
+        mean, half_width = _mean_band(r.series.time, r.intercept, r.slope, r.residual_sd,
+                                      np.array([t]))  # fmt: skip
+        return float(abs(mean[0] - y_th) - half_width[0])
+
+    # Each edge found on the grid is refined to the root between its two nodes.
+    r.crossing_low = (brentq(edge, grid[idx[0] - 1], grid[idx[0]], xtol=1e-9)
+                      if idx[0] > 0 else -math.inf)  # fmt: skip
+    r.crossing_high = (brentq(edge, grid[idx[-1]], grid[idx[-1] + 1], xtol=1e-9)
+                       if idx[-1] < grid.size - 1 else math.inf)  # fmt: skip
