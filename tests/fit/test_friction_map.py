@@ -250,3 +250,18 @@ def test_an_inclined_axis_names_its_weight() -> None:
                      temperatures=[40.0])  # fmt: skip
     # 100 kg g sin 30 deg = 490.3 N.
     assert any("its weight adds 490.3 N" in n for n in m.notes)
+
+
+def test_every_side_of_a_form_with_a_direction_term() -> None:
+    form = LoadForm(c0=0.3, c1=4e-5, c2=-6e-6, b=2e-4, k_c=0.004, k_b=0.025,
+                    reference_temperature=20.0, rms_error=0.0, max_error=0.0)  # fmt: skip
+    lead, i = 0.01, 3.0
+    k = 2 * math.pi / lead
+    doc = form.as_dict(lead, i)
+    assert doc["table_side"]["c2"]["value"] == pytest.approx(-6e-6 * k, rel=1e-12)
+    assert doc["motor_side"]["c2"]["value"] == pytest.approx(-2e-6, rel=1e-12)
+    assert doc["motor_side"]["b"]["value"] == pytest.approx(2e-4 / 9.0, rel=1e-12)
+    plain = form.as_dict(lead)  # no gear: the motor is the screw
+    assert {n: v["value"] for n, v in plain["motor_side"].items()} == {
+        n: v["value"] for n, v in plain["screw_side"].items()
+    }
