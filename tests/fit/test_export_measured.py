@@ -13,7 +13,7 @@ from ballscrew import friction_torque
 from ballscrew.errors import BallScrewInputError
 from ballscrew.fit.controller import MOTOR_SIDE, stribeck_torque
 from ballscrew.fit.export import export_friction
-from ballscrew.io.case import load_case, parse_case
+from ballscrew.io.case import Case, load_case, parse_case
 from ballscrew.io.measured import MeasuredCurve
 from cli_runner import run
 
@@ -52,18 +52,15 @@ def test_the_measured_stribeck_drop_reaches_the_drive_and_intervals_cover_it() -
     assert hits >= 0.8 * trials
 
 
+def axis_case(axis: str) -> Case:
+    """The reference double nut in mineral VG 68 with the given ``[axis]`` lines."""
+    return parse_case('title = "axis"\n[screw]\ndesignation = "40x10 double 2.5x2 6.35"\n'
+                      'preload = "2 kN"\n[lubricant]\nname = "mineral ISO VG 68"\n'
+                      f"[axis]\n{axis}\n")  # fmt: skip
+
+
 def test_motor_side_goes_through_the_gear() -> None:
-    text = """title = "geared"
-[screw]
-designation = "40x10 double 2.5x2 6.35"
-preload = "2 kN"
-[lubricant]
-name = "mineral ISO VG 68"
-[axis]
-moving_mass = "100 kg"
-gear_ratio = 2.5
-"""
-    case = parse_case(text)
+    case = axis_case('moving_mass = "100 kg"\ngear_ratio = 2.5')
     out = export_friction(case, "complete", "stribeck", speeds=SPEEDS)
     doc = out.as_dict("test")["fits"][0]
     for name, power in MOTOR_SIDE.items():
@@ -74,17 +71,7 @@ gear_ratio = 2.5
 
 
 def test_an_inclined_axis_adds_its_weight_to_the_load_and_says_so() -> None:
-    text = """title = "vertical"
-[screw]
-designation = "40x10 double 2.5x2 6.35"
-preload = "2 kN"
-[lubricant]
-name = "mineral ISO VG 68"
-[axis]
-moving_mass = "120 kg"
-incline = "90 deg"
-"""
-    case = parse_case(text)
+    case = axis_case('moving_mass = "120 kg"\nincline = "90 deg"')
     out = export_friction(case, "complete", "table", speeds=SPEEDS[:3], temperatures=[40.0])
     weight = 120.0 * 9.80665
     assert out.axial_load == pytest.approx(weight)
