@@ -73,14 +73,18 @@ def _energy_figure(results: Mapping[str, CycleResult]) -> MplFigure:
     back = np.array([results[n].friction_energy_back for n in names])
     bearings = np.array([results[n].bearing_energy for n in names])
     ax.bar(x, out, label="screw, moving out")  # type: ignore[attr-defined]
-    ax.bar(x, back, bottom=out, label="screw, moving back")  # type: ignore[attr-defined]
-    ax.bar(x, bearings, bottom=out + back, label="support bearings")  # type: ignore[attr-defined]
+    ax.bar(x, back, bottom=out, hatch="//", label="screw, moving back")  # type: ignore[attr-defined]
+    ax.bar(x, bearings, bottom=out + back, hatch="..",  # type: ignore[attr-defined]
+           label="support bearings")  # fmt: skip
     rule = [results[n].constant_efficiency_energy for n in names]
     ax.scatter(x, rule, color="black", marker="_", s=400, zorder=3,  # type: ignore[attr-defined]
                label="catalogue rule (screw)")  # fmt: skip
     ax.set_xticks(x, names)  # type: ignore[attr-defined]
     ax.set_ylabel("friction energy [J]")  # type: ignore[attr-defined]
-    ax.legend()  # type: ignore[attr-defined]
+    # Room above the bars for the legend, so that it covers none of them.
+    top = max(float(np.max(out + back + bearings)), float(np.max(rule)))
+    ax.set_ylim(0.0, 1.45 * top if top > 0 else 1.0)  # type: ignore[attr-defined]
+    ax.legend(ncols=2, fontsize=8, loc="upper center")  # type: ignore[attr-defined]
     fig.tight_layout()
     return fig
 

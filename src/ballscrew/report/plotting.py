@@ -16,6 +16,7 @@ import matplotlib as mpl
 import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure as MplFigure
+from matplotlib.ticker import FuncFormatter
 
 from ..io.measured import MeasuredCurve
 from ..kinematics import rad_s_to_rpm
@@ -23,6 +24,9 @@ from ..study.series import Figure
 from ..sweep.sensitivity import SobolIndices
 
 __all__ = ["figure_bytes", "render", "sensitivity_figure"]
+
+_LINESTYLES = ("-", "--", "-.", ":", (0, (5, 1)), (0, (3, 1, 1, 1, 1, 1)))
+_MARKERS = ("o", "s", "^", "v", "D", "x", "P", "*", "<", ">")
 
 _STYLE: dict[str, Any] = {
     "svg.hashsalt": "ballscrew",
@@ -41,7 +45,7 @@ def render(
 ) -> MplFigure:
     """Draw one study figure: torque against screw speed, measured band and curve."""
     with mpl.rc_context(_STYLE):  # type: ignore[arg-type]
-        out = MplFigure(figsize=(9.0, 4.3))
+        out = MplFigure(figsize=(7.5, 5.2), layout="constrained")
         FigureCanvasAgg(out)
         ax = out.add_subplot(1, 1, 1)
         if len(measured_range) >= 2:
@@ -61,8 +65,13 @@ def render(
                 alpha=0.85,
             )
         else:
-            for s in fig.series:
-                ax.plot(s.speed_rpm, s.torque, lw=1.6, label=s.label)
+            # Told apart by line style and marker as well as colour (printed in grey, or
+            # read by someone who does not see colours apart).
+            for k, s in enumerate(fig.series):
+                ax.plot(s.speed_rpm, s.torque, lw=1.6, label=s.label,
+                        linestyle=_LINESTYLES[k % len(_LINESTYLES)],
+                        marker=_MARKERS[k % len(_MARKERS)], markersize=4,
+                        markevery=max(1, len(s.speed_rpm) // 8))  # fmt: skip
         if measured is not None:
             ax.plot(
                 rad_s_to_rpm(measured.speed),
@@ -76,6 +85,11 @@ def render(
         ax.set_title(fig.title)
         if fig.log_y:
             ax.set_yscale("log")
+            # Plain numbers on the log axis (0.02, 0.1, 2), not 2x10^0.
+            plain = FuncFormatter(lambda v, _: f"{v:g}")
+            ax.yaxis.set_major_formatter(plain)
+            ax.yaxis.set_minor_formatter(FuncFormatter(
+                lambda v, _: f"{v:g}" if f"{v:.1e}"[0] in "25" else ""))  # fmt: skip
         else:
             top = (
                 float(np.max(sum(s.torque for s in fig.series)))
@@ -86,8 +100,9 @@ def render(
                 top = max(top, max(measured_range))
             ax.set_ylim(0.0, 1.1 * top if top > 0 else 1.0)
         ax.set_xlim(left=0.0)
-        ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
-        out.tight_layout()
+        # Below the axes, in columns: no data hidden and no third of the figure left blank.
+        ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14),
+                  ncols=min(3, len(ax.get_legend_handles_labels()[0])), frameon=False)  # fmt: skip
     return out
 
 
