@@ -169,3 +169,14 @@ def test_sensitivity_finding_follows_the_indices(study: StudyResult) -> None:
 def replace_indices(s: object, total: np.ndarray, conf: np.ndarray) -> object:
     indices = dataclasses.replace(s.indices, total=total.copy(), total_conf=conf)  # type: ignore[attr-defined]
     return dataclasses.replace(s, indices=indices)  # type: ignore[type-var]
+
+
+def test_model_parameters_carry_the_units_of_their_docstrings() -> None:
+    from ballscrew.report.study import _shown, parameter_units
+
+    # The viscoelastic model documents k [N/m³], m [kg/m²], gamma [N·s/m³].
+    units = parameter_units("viscoelastic")
+    assert units == {"stiffness": "N/m³", "mass": "kg/m²", "damping": "N·s/m³"}
+    assert _shown(3.5e13, units["damping"]) == "3.5e+13 N·s/m³"
+    assert _shown("ball-radius", None) == "ball-radius" and _shown(0.0358, "-") == "0.0358"
+    assert parameter_units("complete")["return_turning_angle"] == "rad"

@@ -16,9 +16,11 @@ renamed), so an interrupted run leaves each file either complete or as it was.
 from __future__ import annotations
 
 import csv
+import inspect
 import io
 import json
 import math
+import re
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -29,6 +31,7 @@ from .._version import __version__
 from ..contact import hertz
 from ..errors import BallScrewInputError
 from ..files import atomic_write, sweep_temporaries
+from ..friction import get_model
 from ..io.case import Case, parse_case
 from ..io.measured import MeasuredCurve, parse_measured
 from ..kinematics import rad_s_to_rpm, rpm_to_rad_s
@@ -226,11 +229,38 @@ def _assumptions(result: StudyResult) -> list[Block]:
     return [Block("ul", notes)]
 
 
+_DOC_PARAMETER = re.compile(r"^([a-z_][a-z0-9_, ]*) : [^\n]*\n((?:    [^\n]*\n)+)", re.M)
+
+
+def parameter_units(model: str) -> dict[str, str]:
+    """Each parameter's unit as the model's docstring gives it.
+
+    The Parameters section's ``name : type`` lines, then the units in brackets in
+    the order of the names; a parameter whose description has none is left out.
+    """
+    doc = inspect.getdoc(get_model(model).function) or ""
+    units: dict[str, str] = {}
+    for names, text in _DOC_PARAMETER.findall(doc + "\n"):
+        found = re.findall(r"\[([^\]]+)\]", text)
+        keys = [n.strip() for n in names.split(",")]
+        if len(found) >= len(keys):
+            units.update(zip(keys, found[: len(keys)], strict=True))
+    return units
+
+
+def _shown(value: object, unit: str | None) -> str:
+    """A parameter's value with its unit, numbers to 4 significant digits."""
+    text = f"{value:.4g}" if isinstance(value, float) else str(value)
+    return f"{text} {unit}" if unit and unit != "-" and not isinstance(value, str) else text
+
+
 def _model_parameters(result: StudyResult) -> list[Block]:
-    rows = [
-        (m, ", ".join(f"{k}={v}" for k, v in sorted(p.items())))
-        for m, p in sorted(result.case.model_parameters.items())
-    ]
+    rows = []
+    for m, p in sorted(result.case.model_parameters.items()):
+        units = parameter_units(m)
+        rows.append(
+            (m, ", ".join(f"{k} = {_shown(v, units.get(k))}" for k, v in sorted(p.items())))
+        )
     return [
         Block("table", (["model", "parameters"], rows)),
         Block(
