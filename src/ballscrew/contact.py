@@ -59,7 +59,7 @@ import functools
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Literal
+from typing import Any, Literal
 
 import numpy as np
 import numpy.typing as npt
@@ -171,6 +171,33 @@ def _radius_ratio_of_ellipticity(k: FloatArray) -> FloatArray:
 _EPS = float(np.finfo(float).eps)
 
 
+def _rf_series(big_x: Any, big_y: Any) -> Any:
+    """Carlson's fifth-order series of :math:`R_F` after the duplications (floats or arrays)."""
+    big_z = -(big_x + big_y)
+    e2 = big_x * big_y - big_z * big_z
+    e3 = big_x * big_y * big_z
+    return 1.0 - e2 / 10.0 + e3 / 14.0 + e2 * e2 / 24.0 - 3.0 * e2 * e3 / 44.0
+
+
+def _rd_series(big_x: Any, big_y: Any) -> Any:
+    """Carlson's fifth-order series of :math:`R_D` after the duplications (floats or arrays)."""
+    big_z = -(big_x + big_y) / 3.0
+    xy, zz = big_x * big_y, big_z * big_z
+    e2 = xy - 6.0 * zz
+    e3 = (3.0 * xy - 8.0 * zz) * big_z
+    e4 = 3.0 * (xy - zz) * zz
+    e5 = xy * zz * big_z
+    return (
+        1.0
+        - 3.0 * e2 / 14.0
+        + e3 / 6.0
+        + 9.0 * e2 * e2 / 88.0
+        - 3.0 * e4 / 22.0
+        - 9.0 * e2 * e3 / 52.0
+        + 3.0 * e5 / 26.0
+    )
+
+
 def _carlson_rf(x: npt.ArrayLike, y: npt.ArrayLike, z: npt.ArrayLike) -> FloatArray:
     r"""Carlson's symmetric elliptic integral of the first kind :math:`R_F(x, y, z)`, x, y, z >= 0.
 
@@ -203,11 +230,7 @@ def _carlson_rf(x: npt.ArrayLike, y: npt.ArrayLike, z: npt.ArrayLike) -> FloatAr
         scale = np.where(active, 0.25 * scale, scale)
     else:  # pragma: no cover - the duplication shrinks the spread 4-fold per step
         raise RuntimeError("R_F did not converge")
-    big_x, big_y = dx * scale / a, dy * scale / a
-    big_z = -(big_x + big_y)
-    e2 = big_x * big_y - big_z * big_z
-    e3 = big_x * big_y * big_z
-    series = 1.0 - e2 / 10.0 + e3 / 14.0 + e2 * e2 / 24.0 - 3.0 * e2 * e3 / 44.0
+    series = _rf_series(dx * scale / a, dy * scale / a)
     result: FloatArray = series / np.sqrt(a)
     return result
 
@@ -227,11 +250,7 @@ def _carlson_rf_one(x: float, y: float, z: float) -> float:
         scale = 0.25 * scale
     else:  # pragma: no cover
         raise RuntimeError("R_F did not converge")
-    big_x, big_y = dx * scale / a, dy * scale / a
-    big_z = -(big_x + big_y)
-    e2 = big_x * big_y - big_z * big_z
-    e3 = big_x * big_y * big_z
-    series = 1.0 - e2 / 10.0 + e3 / 14.0 + e2 * e2 / 24.0 - 3.0 * e2 * e3 / 44.0
+    series: float = _rf_series(dx * scale / a, dy * scale / a)
     return series / math.sqrt(a)
 
 
@@ -251,22 +270,7 @@ def _carlson_rd_one(x: float, y: float, z: float) -> float:
         scale = 0.25 * scale
     else:  # pragma: no cover
         raise RuntimeError("R_D did not converge")
-    big_x, big_y = dx * scale / a, dy * scale / a
-    big_z = -(big_x + big_y) / 3.0
-    xy, zz = big_x * big_y, big_z * big_z
-    e2 = xy - 6.0 * zz
-    e3 = (3.0 * xy - 8.0 * zz) * big_z
-    e4 = 3.0 * (xy - zz) * zz
-    e5 = xy * zz * big_z
-    series = (
-        1.0
-        - 3.0 * e2 / 14.0
-        + e3 / 6.0
-        + 9.0 * e2 * e2 / 88.0
-        - 3.0 * e4 / 22.0
-        - 9.0 * e2 * e3 / 52.0
-        + 3.0 * e5 / 26.0
-    )
+    series: float = _rd_series(dx * scale / a, dy * scale / a)
     return scale * series / (a * math.sqrt(a)) + 3.0 * total
 
 
@@ -301,22 +305,7 @@ def _carlson_rd(x: npt.ArrayLike, y: npt.ArrayLike, z: npt.ArrayLike) -> FloatAr
         scale = np.where(active, 0.25 * scale, scale)
     else:  # pragma: no cover - the duplication shrinks the spread 4-fold per step
         raise RuntimeError("R_D did not converge")
-    big_x, big_y = dx * scale / a, dy * scale / a
-    big_z = -(big_x + big_y) / 3.0
-    xy, zz = big_x * big_y, big_z * big_z
-    e2 = xy - 6.0 * zz
-    e3 = (3.0 * xy - 8.0 * zz) * big_z
-    e4 = 3.0 * (xy - zz) * zz
-    e5 = xy * zz * big_z
-    series = (
-        1.0
-        - 3.0 * e2 / 14.0
-        + e3 / 6.0
-        + 9.0 * e2 * e2 / 88.0
-        - 3.0 * e4 / 22.0
-        - 9.0 * e2 * e3 / 52.0
-        + 3.0 * e5 / 26.0
-    )
+    series = _rd_series(dx * scale / a, dy * scale / a)
     result: FloatArray = scale * series / (a * np.sqrt(a)) + 3.0 * total
     return result
 
