@@ -88,7 +88,7 @@ import numpy.typing as npt
 
 from . import rolling_losses as rl
 from .errors import FloatArray, check_choice, check_nonnegative, check_positive
-from .numerics import Index, illinois
+from .numerics import Index, newton_bracketed
 
 __all__ = [
     "BallSlip",
@@ -100,6 +100,13 @@ __all__ = [
 
 TABLE_NODES: int = 513
 """Nodes of the tables of :math:`J` and :math:`G` over :math:`t = \\sigma/(1+\\sigma)`."""
+
+SHARE_TOLERANCE: float = 1e-9
+r"""Tolerance of the slip share in :func:`transverse_slip_loss` [-] (and of the force
+balance, relative to the ball's total friction capacity). The dissipation is
+stationary at the balance (the transverse force is the derivative of a contact's
+friction power with respect to its slip), so an error :math:`\delta` in the
+share changes the power by :math:`O(\delta^2)`: 1e-18 of it here."""
 
 
 @dataclass(frozen=True)
@@ -167,18 +174,36 @@ def _tables(aspect: float) -> tuple[FloatArray, FloatArray, FloatArray]:
     return t, j_scaled, np.append(g, 1.0)
 
 
+def _on_table(nodes: FloatArray, sigma: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:
+    """Linear interpolation of ``nodes`` (uniform in t = sigma/(1+sigma)) at ``sigma`` >= 0.
+
+    Returns the value, the rise of its interval, and the scaled position t x intervals;
+    the interval is found by arithmetic (the nodes are uniform), not by search.
+    """
+    intervals = TABLE_NODES - 1
+    t = sigma / (1.0 + sigma) * intervals
+    i = np.minimum(t.astype(np.intp), intervals - 1)
+    rise = nodes[i + 1] - nodes[i]
+    value: FloatArray = nodes[i] + (t - i) * rise
+    return value, rise, t
+
+
 def _lookup_j(aspect: float, sigma: FloatArray) -> FloatArray:
     """J at finite slip ratios ``sigma`` >= 0, by linear interpolation in the table."""
-    t_nodes, j_nodes, _ = _tables(aspect)
-    j: FloatArray = np.interp(sigma / (1.0 + sigma), t_nodes, j_nodes) * (1.0 + sigma)
+    _, j_nodes, _ = _tables(aspect)
+    j: FloatArray = _on_table(j_nodes, sigma)[0] * (1.0 + sigma)
     return j
 
 
-def _lookup_g(aspect: float, sigma: FloatArray) -> FloatArray:
-    """G at slip ratios ``sigma`` >= 0, as :func:`_lookup_j` (the root finder needs only G)."""
-    t_nodes, _, g_nodes = _tables(aspect)
-    g: FloatArray = np.interp(sigma / (1.0 + sigma), t_nodes, g_nodes)
-    return g
+def _lookup_g(aspect: float, sigma: FloatArray) -> tuple[FloatArray, FloatArray]:
+    """G and dG/dsigma at slip ratios ``sigma`` >= 0, linear in the table as :func:`_lookup_j`.
+
+    The slope is that of the table's interval, times dt/dsigma = 1/(1+sigma)^2.
+    """
+    _, _, g_nodes = _tables(aspect)
+    g, rise, _ = _on_table(g_nodes, sigma)
+    slope: FloatArray = rise * (TABLE_NODES - 1) / (1.0 + sigma) ** 2
+    return g, slope
 
 
 def _check_contacts(contacts: Sequence[SlipContact]) -> None:
@@ -240,22 +265,30 @@ def transverse_slip_loss(contacts: Sequence[SlipContact], slip: float) -> SlipSh
         r: FloatArray = speed / np.where(w > 0.0, w, np.inf)
         return r
 
-    def side_force(x: FloatArray, side: str, index: Index) -> FloatArray:
+    def side_force(x: FloatArray, side: str, index: Index) -> tuple[FloatArray, FloatArray]:
+        """Transverse force of one side's contacts, and its rate over the screw's share x."""
         share = x if side == "screw" else 1.0 - x
+        sign = 1.0 if side == "screw" else -1.0
         total: FloatArray = np.zeros(np.shape(x))
+        rate: FloatArray = np.zeros(np.shape(x))
         for k, c in enumerate(contacts):
             if c.side == side:
-                g = _lookup_g(c.aspect, ratio(share * s, k, index))
+                w = scale[k][index]
+                per_share = s / np.where(w > 0.0, w, np.inf)  # d sigma / d share
+                g, slope = _lookup_g(c.aspect, share * per_share)
                 total = total + capacity[k][index] * g
-        return total
+                rate = rate + sign * capacity[k][index] * slope * per_share
+        return total, rate
 
-    def residual(x: FloatArray, index: Index) -> FloatArray:
-        return side_force(x, "screw", index) - side_force(x, "nut", index)
+    def residual(x: FloatArray, index: Index) -> tuple[FloatArray, FloatArray]:
+        screw_force, screw_rate = side_force(x, "screw", index)
+        nut_force, nut_rate = side_force(x, "nut", index)
+        return screw_force - nut_force, screw_rate - nut_rate
 
     n = int(np.prod(shape))
     everything = np.arange(n)
     lo, hi = np.zeros(n), np.ones(n)
-    f_lo, f_hi = residual(lo, everything), residual(hi, everything)
+    f_lo, f_hi = residual(lo, everything)[0], residual(hi, everything)[0]
     # A side that cannot carry a transverse force (unloaded) takes all the slip, free: the
     # nut's when f(0) >= 0, else the screw's; the others are solved below.
     x = np.where(f_lo >= 0.0, 0.0, 1.0)
@@ -263,18 +296,19 @@ def transverse_slip_loss(contacts: Sequence[SlipContact], slip: float) -> SlipSh
     if loaded.any():
         idx = np.flatnonzero(loaded)
         total_capacity = sum(capacity, np.zeros(n))
-        x[idx] = illinois(
-            lambda xx, i: residual(xx, idx[i]),
-            lo[idx], hi[idx], f_lo[idx], f_hi[idx],
-            xtol=1e-12, ftol=1e-10 * total_capacity[idx],
+        # Start where a straight line between the two ends' residuals crosses zero.
+        start = -f_lo[idx] / (f_hi[idx] - f_lo[idx])
+        x[idx] = newton_bracketed(
+            lambda xx, i: residual(xx, idx[i]), lo[idx], hi[idx], start,
+            xtol=SHARE_TOLERANCE, ftol=SHARE_TOLERANCE * total_capacity[idx],
         )  # fmt: skip
     power = np.zeros(n)
     for k, c in enumerate(contacts):
         share = x if c.side == "screw" else 1.0 - x
         j_slip = _lookup_j(c.aspect, ratio(share * s, k, everything))
-        j_spin = _lookup_j(c.aspect, np.zeros(n))
+        j_spin = _tables(c.aspect)[1][0]  # J at sigma = 0: the spin alone
         power += capacity[k] * 1.5 / math.pi * scale[k] * (j_slip - j_spin)
-    force = side_force(x, "screw", everything)
+    force = side_force(x, "screw", everything)[0]
     return SlipShare(
         power=power.reshape(shape), screw_share=x.reshape(shape), force=force.reshape(shape)
     )
