@@ -109,6 +109,7 @@ def friction_torque(
     model: str = "complete",
     chunk_size: int | None = None,
     warn: bool = True,
+    components: bool = True,
     **parameters: Any,
 ) -> FrictionResult:
     r"""Friction torque of a ball screw with a rotating screw and translating nut.
@@ -137,6 +138,11 @@ def friction_torque(
         False: record the validity issues in the result without warning
         (for callers that gather them, such as sweeps on worker threads,
         where changing the warning filters is not thread-safe).
+    components : bool
+        False: keep only the total (``components`` of the result is then
+        empty), so that a call over many points holds one array of torques
+        instead of one per mechanism (a 1e7-point grid then peaks near
+        40 bytes a point; with components, near 110).
     **parameters
         The model's own parameters (see its docstring); an unknown name is
         an error listing the valid ones.
@@ -170,22 +176,28 @@ def friction_torque(
     w, t, fa = np.broadcast_arrays(w0, t0, fa0)
     used = dict(spec.parameters)
     used.update(parameters)
-    components, state = _evaluate(spec, screw, lubricant, (w0, t0, fa0), chunk, used, parameters)
-    _check_solved(spec.name, components, w, t, fa)
-    total = np.zeros(w.shape)
-    for value in components.values():
-        total = total + value
-    useful = np.abs(fa) * (screw.lead / (2.0 * math.pi))
-    # useful / (useful + T): 0 where there is no load (and no division by 0 when T = 0 too).
-    efficiency = useful / np.maximum(useful + total, np.finfo(float).tiny)
-    issues = validity.check(screw, lubricant, w, t, fa, spec.name, used, spec.checks)
+    kept, total, state = _evaluate(
+        spec, screw, lubricant, (w0, t0, fa0), chunk, used, parameters, components
+    )
+    # useful / (useful + T): 0 where there is no load (and no division by 0 when T = 0
+    # too), computed in place: a large call holds no more full-size temporaries than needed.
+    efficiency = np.abs(fa, out=np.empty(w.shape))
+    efficiency *= screw.lead / (2.0 * math.pi)
+    denominator = np.add(efficiency, total, out=np.empty(w.shape))
+    np.maximum(denominator, np.finfo(float).tiny, out=denominator)
+    np.divide(efficiency, denominator, out=efficiency)
+    del denominator
+    power_loss = np.abs(w, out=np.empty(w.shape))
+    power_loss *= total
+    # The checks look at the extremes only: the unbroadcast inputs have the same ones.
+    issues = validity.check(screw, lubricant, w0, t0, fa0, spec.name, used, spec.checks)
     if warn:
         _warn(issues)
     return FrictionResult(
         model=spec.name,
         total=total,
-        components=components,
-        power_loss=total * np.abs(w),
+        components=kept,
+        power_loss=power_loss,
         efficiency=efficiency,
         speed=w,
         temperature=t,
@@ -225,11 +237,15 @@ def _evaluate(
     chunk: int,
     used: dict[str, Any],
     parameters: dict[str, Any],
-) -> tuple[dict[str, FloatArray], OperatingState | None]:
-    """The model's components over the broadcast points, in chunks of at most ``chunk``.
+    keep: bool = True,
+) -> tuple[dict[str, FloatArray], FloatArray, OperatingState | None]:
+    """The model's components (if ``keep``) and total over the broadcast points.
 
-    The contact state is built once per chunk for the models that use one and
-    returned when there is a single chunk.
+    The points are evaluated in chunks of at most ``chunk``, each chunk's
+    results checked (:func:`_check_solved`) and written into arrays allocated
+    once; the inputs are read chunk by chunk from their broadcast views, never
+    expanded whole. The contact state is built once per chunk for the models
+    that use one and returned when there is a single chunk.
     """
 
     def state_of(sw: FloatArray, st: FloatArray, sf: FloatArray) -> OperatingState | None:
@@ -241,29 +257,49 @@ def _evaluate(
             asperity_c=used["asperity_c"], broadcast=False,
         )  # fmt: skip
 
+    def run(sw: FloatArray, st: FloatArray, sf: FloatArray, state: OperatingState | None) -> Any:
+        try:
+            out = spec(screw, lubricant, sw, st, sf, state, **parameters)
+        except _UNSOLVED as exc:
+            raise _unsolved(spec.name, exc, sw, st, sf) from exc
+        _check_solved(spec.name, out, sw, st, sf)
+        return out
+
     w0, t0, fa0 = points
     shape = np.broadcast_shapes(w0.shape, t0.shape, fa0.shape)
     n = math.prod(shape)
     if n <= chunk:
         # The unexpanded inputs: a grid given as an outer product is only
         # expanded where a quantity depends on all three.
-        try:
-            state = state_of(w0, t0, fa0)
-            out = spec(screw, lubricant, w0, t0, fa0, state, **parameters)
-        except _UNSOLVED as exc:
-            raise _unsolved(spec.name, exc, w0, t0, fa0) from exc
-        return {k: np.array(np.broadcast_to(v, shape), dtype=float) for k, v in out.items()}, state
-    flat = [np.ascontiguousarray(x).reshape(-1) for x in np.broadcast_arrays(w0, t0, fa0)]
-    pieces: dict[str, list[FloatArray]] = {}
+        state = state_of(w0, t0, fa0)
+        out = run(w0, t0, fa0, state)
+        total = np.zeros(shape)
+        for value in out.values():
+            total += value
+        kept = {k: np.array(np.broadcast_to(v, shape), dtype=float) for k, v in out.items()}
+        return (kept if keep else {}), total, state
+    views = np.broadcast_arrays(w0, t0, fa0)
+    flat_total = np.zeros(n)
+    kept = {}
     for start in range(0, n, chunk):
-        sw, st, sf = (x[start : min(start + chunk, n)] for x in flat)
-        try:
-            out = spec(screw, lubricant, sw, st, sf, state_of(sw, st, sf), **parameters)
-        except _UNSOLVED as exc:
-            raise _unsolved(spec.name, exc, sw, st, sf) from exc
+        stop = min(start + chunk, n)
+        sw, st, sf = (_flat_slice(x, start, stop) for x in views)
+        out = run(sw, st, sf, state_of(sw, st, sf))
         for key, value in out.items():
-            pieces.setdefault(key, []).append(value)
-    return {key: np.concatenate(parts).reshape(shape) for key, parts in pieces.items()}, None
+            piece = np.broadcast_to(value, (stop - start,))
+            flat_total[start:stop] += piece
+            if keep:
+                kept.setdefault(key, np.empty(n))[start:stop] = piece
+    return {k: v.reshape(shape) for k, v in kept.items()}, flat_total.reshape(shape), None
+
+
+def _flat_slice(x: FloatArray, start: int, stop: int) -> FloatArray:
+    """Elements ``start:stop`` of ``x`` in C order, without expanding a broadcast view whole."""
+    if x.flags.c_contiguous:
+        contiguous: FloatArray = x.reshape(-1)[start:stop]
+        return contiguous
+    picked: FloatArray = x[np.unravel_index(np.arange(start, stop), x.shape)]
+    return picked
 
 
 def _point(w: Any, t: Any, fa: Any) -> str:
@@ -306,6 +342,9 @@ def _check_solved(
         ok = np.isfinite(value) & (value >= 0.0)
         if ok.all():
             continue
+        shape = np.broadcast_shapes(ok.shape, np.shape(w), np.shape(t), np.shape(fa))
+        ok = np.broadcast_to(ok, shape)
+        value, w, t, fa = (np.broadcast_to(x, shape) for x in (value, w, t, fa))
         first = np.unravel_index(int(np.argmin(ok)), ok.shape) if ok.ndim else ()
         bad = float(np.asarray(value)[first])
         count = int(ok.size - np.count_nonzero(ok))

@@ -204,3 +204,25 @@ def test_the_chain_builds_the_contact_state_once_and_keeps_it(
     assert friction_torque(s, oil, speed=10.0, temperature=40.0, model="catalog").state is None
     chunked = friction_torque(s, oil, speed=[10.0, 100.0], temperature=40.0, chunk_size=1)
     assert chunked.state is None
+
+
+@pytest.mark.parametrize("chunk", [None, 7])
+def test_total_alone_is_the_sum_of_the_components(chunk: int | None) -> None:
+    # components=False keeps the total only; it must equal the sum of the components a
+    # full call gives, on a grid cut into chunks (7 does not divide its 5 x 3 x 4 points,
+    # so chunks straddle rows of every axis) and in one piece. Same arithmetic, summed in
+    # another order: equal to rounding (1e-12).
+    w = SPEEDS[:, None, None]
+    t = np.array([20.0, 40.0, 60.0])[None, :, None]
+    fa = np.array([-3000.0, 0.0, 500.0, 4000.0])[None, None, :]
+    full = friction_torque(reference_screw(), OIL, speed=w, temperature=t, axial_load=fa)
+    alone = friction_torque(
+        reference_screw(), OIL, speed=w, temperature=t, axial_load=fa,
+        chunk_size=chunk, components=False,
+    )  # fmt: skip
+    assert alone.components == {}
+    assert alone.total.shape == (5, 3, 4)
+    summed = sum(full.components.values())
+    np.testing.assert_allclose(alone.total, summed, rtol=1e-12, atol=1e-15)
+    np.testing.assert_allclose(alone.power_loss, summed * np.abs(w), rtol=1e-12, atol=1e-15)
+    np.testing.assert_allclose(alone.efficiency, full.efficiency, rtol=1e-12)
