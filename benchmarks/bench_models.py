@@ -11,13 +11,16 @@ whatever else the machine runs) and per wall-clock second; the one-point
 column is the CPU cost of one call. The last lines time, in fresh processes,
 a one-point ``ballscrew torque`` (whole process: start-up, case, computation)
 and the energy of a move with its temperature (``energy_run``, in process
-after a warm-up), for 1 and 10 cycles.
+after a warm-up), for 1 and 10 cycles, and measure the peak memory (maximum
+resident set) of one 1e7-point call of the complete model on a grid, with and
+without its components (about 45 s CPU; ``--no-memory`` skips it).
 
 Targets: on the grid (issues 3 and 8) catalog >= 1e7 pt/s, harris-simplified
 and olaru >= 1e6, viscoelastic >= 1e5, harris-full >= 1e4, complete >= 1e5;
 scattered (issue 25) complete, olaru and harris-simplified >= 1e6; one point
 (issue 25) complete < 0.5 ms, catalog < 0.2 ms; the one-point command < 0.5 s
-CPU; a move's energy with its temperature < 0.2 s per cycle.
+CPU; a move's energy with its temperature < 0.2 s per cycle; a 1e7-point call
+(total only) < 400 MB.
 """
 
 from __future__ import annotations
@@ -70,6 +73,38 @@ for cycles in (1, 10):
     energy_run(case, profile, ["complete"], cycles=cycles, run_time=3600.0, move=m)
     print(cycles, time.process_time() - cpu)
 """
+
+
+_MEMORY = """
+import resource, sys, time, warnings
+import numpy as np
+warnings.simplefilter("ignore")
+from ballscrew import friction_torque, lubricants, reference_screw
+screw, oil = reference_screw(), lubricants.get("PAO ISO VG 68")
+w = np.linspace(1.0, 314.0, 1000)[:, None, None]
+t = np.linspace(20.0, 45.0, 100)[None, :, None]
+fa = np.linspace(-4000.0, 4000.0, 100)[None, None, :]
+components = sys.argv[1] == "1"
+before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+cpu = time.process_time()
+friction_torque(screw, oil, speed=w, temperature=t, axial_load=fa, components=components)
+peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+print(before / 1024, peak / 1024, time.process_time() - cpu)
+"""
+
+
+def _memory() -> None:
+    """Peak memory of one 1e7-point call (complete, a 1000 x 100 x 100 grid), fresh processes."""
+    for components in (False, True):
+        run = [sys.executable, "-c", _MEMORY, "1" if components else "0"]
+        out = subprocess.run(run, check=True, capture_output=True, text=True).stdout.split()
+        before, peak, cpu = (float(x) for x in out)
+        flag = "" if peak < 400.0 or components else "  above target 400 MB"
+        print(
+            f"1e7-point grid, complete, components={components}: peak {peak:.0f} MB "
+            f"({before:.0f} MB before the call; {peak * 2**20 / 1e7:.0f} bytes a point), "
+            f"{cpu:.1f} s CPU{flag}"
+        )
 
 
 def _timed(func: Callable[[], object]) -> tuple[float, float]:
@@ -167,6 +202,9 @@ def main() -> None:
     parser.add_argument(
         "--command-runs", type=int, default=3, help="runs of the one-point command (0: none)"
     )
+    parser.add_argument(
+        "--no-memory", action="store_true", help="skip the 1e7-point memory measurement"
+    )
     args = parser.parse_args()
 
     points = {
@@ -197,6 +235,8 @@ def main() -> None:
             print(_model_row(spec.name, points, sample))
     if args.command_runs > 0:
         _commands(args.command_runs)
+    if not args.no_memory:
+        _memory()
 
 
 if __name__ == "__main__":
