@@ -1,0 +1,60 @@
+"""Tests of the array root finders in ballscrew.numerics against exact roots."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ballscrew.numerics import illinois, newton_bracketed
+
+
+def test_newton_finds_square_roots_to_rounding() -> None:
+    # x^2 - c has the root sqrt(c) exactly; quadratic convergence reaches it to a few ulps.
+    c = np.array([1e-6, 0.5, 2.0, 3.0, 15.9])
+    x = newton_bracketed(
+        lambda x, i: (x * x - c[i], 2.0 * x), np.zeros(5), np.full(5, 4.0), np.full(5, 4.0),
+        xtol=1e-15,
+    )  # fmt: skip
+    np.testing.assert_allclose(x, np.sqrt(c), rtol=1e-12)
+
+
+def test_newton_kept_in_its_bracket_on_a_kinked_residual() -> None:
+    # A residual whose Newton steps diverge without a bracket, atan(8(x - r)) (Newton
+    # from 8|x - r| > 1.39 overshoots further each step). The bracket
+    # must hold it: the root r exactly, to the tolerance asked.
+    r = np.array([-0.7, 0.0, 0.3, 0.95])
+    x = newton_bracketed(
+        lambda x, i: (np.arctan(8.0 * (x - r[i])), 8.0 / (1.0 + (8.0 * (x - r[i])) ** 2)),
+        np.full(4, -1.0), np.full(4, 1.0), np.full(4, -1.0), xtol=1e-13,
+    )  # fmt: skip
+    np.testing.assert_allclose(x, r, atol=1e-12)
+
+
+def test_newton_bisects_where_the_slope_is_zero() -> None:
+    # A residual flat at -1 left of 0.5 (slope 0 there: no Newton step), then linear with
+    # its root at 0.8: the bracket's midpoints must carry the iteration to the root.
+    def residual(x: np.ndarray, i: object) -> tuple[np.ndarray, np.ndarray]:
+        flat = x < 0.5
+        return np.where(flat, -1.0, (x - 0.8) / 0.3), np.where(flat, 0.0, 1.0 / 0.3)
+
+    x = newton_bracketed(residual, np.zeros(1), np.ones(1), np.zeros(1), xtol=1e-14)
+    np.testing.assert_allclose(x, [0.8], atol=1e-13)
+
+
+def test_newton_and_illinois_agree_on_a_piecewise_linear_table() -> None:
+    # The helix's residuals are tables read linearly: a root inside an interval is exact
+    # for both methods (a straight line), so they agree to their tolerances.
+    nodes = np.linspace(0.0, 1.0, 9)
+    values = np.cumsum(np.r_[0.0, np.linspace(0.05, 0.4, 8)]) - 0.6
+    slopes = np.diff(values) / np.diff(nodes)
+
+    def with_slope(x: np.ndarray, i: object) -> tuple[np.ndarray, np.ndarray]:
+        k = np.clip(np.searchsorted(nodes, x, side="right") - 1, 0, 7)
+        return np.interp(x, nodes, values), slopes[k]
+
+    lo, hi = np.zeros(1), np.ones(1)
+    x_newton = newton_bracketed(with_slope, lo, hi, np.full(1, 0.1), xtol=1e-14)
+    x_illinois = illinois(
+        lambda x, i: with_slope(x, i)[0], lo, hi, values[:1], values[-1:], xtol=1e-14
+    )
+    np.testing.assert_allclose(x_newton, x_illinois, atol=1e-12)
+    assert abs(float(np.interp(x_newton[0], nodes, values))) < 1e-12
