@@ -60,9 +60,12 @@ from ..sizing import (
     thermal_elongation,
 )
 from ..stiffness import (
+    CATALOGUE_RIGIDITY_RATIO,
+    CATALOGUE_RIGIDITY_SCATTER,
+    DESIGN_ALLOWANCE,
     axial_eigenfrequency,
+    design_nut_stiffness,
     lost_motion,
-    nut_axial_stiffness,
     series_stiffness,
     shaft_axial_stiffness,
     torsional_axial_stiffness,
@@ -381,11 +384,18 @@ def _stiffness_rows(
                 "screw.nut", "single", "a load on the nut: a single nut without preload and "
                 "without load has no stiffness (give a move with a force or a preloaded nut)",
             )  # fmt: skip
-        k_nut = nut_axial_stiffness(screw, load)
-        notes.append(f"single nut: contact stiffness at the cycle's peak load {load:.4g} N; "
+        k_nut = design_nut_stiffness(screw, load)
+        notes.append(f"single nut: stiffness at the cycle's peak load {load:.4g} N; "
                      "its axial play is not counted")  # fmt: skip
     else:
-        k_nut = nut_axial_stiffness(screw)
+        k_nut = design_nut_stiffness(screw)
+    notes.append(
+        "nut stiffness: the Hertz contacts' (all balls sharing the load) over "
+        f"{CATALOGUE_RIGIDITY_RATIO:g}, the level of THK's and HIWIN's printed rigidity "
+        f"(those nuts' printed values are {1 / CATALOGUE_RIGIDITY_SCATTER[1]:.2f} to "
+        f"{1 / CATALOGUE_RIGIDITY_SCATTER[0]:.2f} of their contacts'), times THK's design "
+        f"allowance {DESIGN_ALLOWANCE:g}"
+    )
     k_bearing = case.check.get("support_stiffness")
     if k_bearing is None:
         notes.append("thrust bearings taken as rigid (give check.support_stiffness from their "
@@ -417,7 +427,8 @@ def _stiffness_rows(
     }
     source = (
         "ISO 3408-4; shaft EA/a or EAL/(a(L-a)) (THK, Axial Rigidity of the Feed Screw "
-        "System, A15-43), nut Hertz at the preload"
+        "System, A15-43); nut: Hertz at the preload, at the makers' printed level, x 0.8 "
+        "(THK A-709)"
     )
     rows = [
         _info("axis stiffness (least over the stroke)", float(np.min(k_axis)) / 1e6, "N/um",
