@@ -117,29 +117,41 @@ STEEL_EXPANSION = 11.5e-6
 
 TRAVEL_VARIATION_300: dict[str, float] = {
     # ISO 3408-3:2006, positioning (P) and transport (T) grades, v_300p
+    "P0": 3.5e-6,
     "P1": 6e-6,
     "P3": 12e-6,
     "P5": 23e-6,
     "T5": 23e-6,
     "T7": 52e-6,
     "T10": 210e-6,
-    # JIS B 1192, travel variation over 300 mm (C0 to C5) or e_300 (C7, C10)
+    # JIS B 1192-1997: fluctuation over 300 mm (C0 to C5), travel distance error per 300 mm
+    # (C7 to C10)
     "C0": 3.5e-6,
     "C1": 5e-6,
+    "C2": 7e-6,
     "C3": 8e-6,
     "C5": 18e-6,
     "C7": 50e-6,
+    "C8": 100e-6,
     "C10": 210e-6,
 }
 r"""Permissible travel variation over 300 mm by accuracy grade [m].
 
-ISO 3408-3:2006 :math:`v_{300p}` for the P and T grades and JIS B 1192 for
-the C grades, as the makers reprint them (THK General Catalog, "Lead Angle
-Accuracy", A15-11). Checked against public reprints: P3 = 12 µm (Steinmeyer,
-"Lead error over 300 mm"); grades 3, 5, 7 = 12, 23, 52 µm (pinsimotion.com's
-table, which labels them C3, C5, C7). The rest (P1 6 µm, T10 210 µm, C0 to
-C10) are transcribed from the catalogues' tables without a second source here:
-check them against your copy. Grades 2 and 4 are left out.
+The C grades are JIS B 1192-1997 as THK prints them (General Catalog, English,
+"Accuracy of the Ball Screw", p. A-678): for C0, C1, C2, C3 and C5 the
+permissible fluctuation over 300 mm of thread (Table 2: 3.5, 5, 7, 8, 18 µm);
+for the rolled grades C7, C8 and C10 the permissible travel distance error
+over 300 mm (Table 1: ±50, ±100, ±210 µm), which THK's selection examples use
+as the grade's figure (pp. A-723 and A-737).
+
+The P and T grades are the :math:`v_{300p}` of ISO 3408-3:2006 as HIWIN
+prints them for its tolerance classes 0, 1, 3, 5, 7 and 10 (*Ballscrews &
+Accessories*, BS-08-2-EN-1704-K, Table 3.3, p. 15: 3.5, 6, 12, 23, 52,
+210 µm); T5 takes grade 5's figure. HIWIN names these classes T0 to T10 in its
+own scheme, which is not ISO's transport grade T, so only ISO's names are
+keys here. P3 = 12 µm is also Steinmeyer's "lead error over 300 mm". Grades 2
+and 4 of ISO 3408-3 are left out (HIWIN prints 8 and 18 µm for them under
+"JIS", the figures THK gives for C3 and C5, so the naming is not settled).
 """
 
 

@@ -135,3 +135,23 @@ def test_misumi_worked_examples() -> None:
     p = float(buckling_load(12.5e-3, 0.820, "fixed-supported"))
     assert p == pytest.approx(3630.0, rel=3e-3)
     assert p < 3630.0
+
+
+# Travel variation over 300 mm as printed, in um. THK General Catalog (English), "Accuracy
+# of the Ball Screw", p. A-678: Table 2 (fluctuation/300 of C0 to C5) and Table 1 (travel
+# distance error per 300 mm of the rolled grades C7, C8, C10). HIWIN, "Ballscrews &
+# Accessories" BS-08-2-EN-1704-K, Table 3.3, p. 15 (v300p of the DIN ISO 3408 classes
+# 0, 1, 3, 5, 7, 10). Printed integers or halves: exact.
+PRINTED_V300_UM = {
+    "C0": 3.5, "C1": 5, "C2": 7, "C3": 8, "C5": 18, "C7": 50, "C8": 100, "C10": 210,
+    "P0": 3.5, "P1": 6, "P3": 12, "P5": 23, "T5": 23, "T7": 52, "T10": 210,
+}  # fmt: skip
+
+
+@pytest.mark.parametrize(("grade", "microns"), list(PRINTED_V300_UM.items()))
+def test_grade_table_is_the_printed_one(grade: str, microns: float) -> None:
+    assert TRAVEL_VARIATION_300[grade] == pytest.approx(microns * 1e-6, rel=1e-12)
+
+
+def test_grade_table_has_no_unprinted_entry() -> None:
+    assert set(TRAVEL_VARIATION_300) == set(PRINTED_V300_UM)

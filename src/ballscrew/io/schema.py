@@ -338,8 +338,8 @@ class CheckSection(BaseModel):
     accuracy_grade: str | None = _f(
         None,
         "-",
-        "accuracy grade of the screw for the thermal lead error: P1, P3, P5, T5, T7, T10 (ISO "
-        "3408-3) or C0, C1, C3, C5, C7, C10 (JIS B 1192)",
+        "accuracy grade of the screw for the thermal lead error: P0, P1, P3, P5, T5, T7, T10 "
+        "(ISO 3408-3) or C0, C1, C2, C3, C5, C7, C8, C10 (JIS B 1192)",
         "P3",
     )
     support_stiffness: Value | None = _f(
