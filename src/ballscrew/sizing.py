@@ -38,7 +38,9 @@ Catalog, "Permissible Axial Load", A15-30, equation 5; HSK prints the same):
 :math:`\eta` = 0.25 (fixed-free), 1 (supported-supported), 2
 (fixed-supported), 4 (fixed-fixed) (:data:`BUCKLING_FACTORS`). With
 :math:`E` = 206 GPa and :math:`s` = 0.5 this is the catalogues' rule
-:math:`P = m\,d_r^4/L^2\cdot 10^4` N (mm) with :math:`m` = 1.3, 5.1, 10.2, 20.3.
+:math:`P = m\,d_r^4/L^2\cdot 10^4` N (mm) with :math:`m` = 1.25, 4.99, 9.98,
+19.96; THK's English General Catalog rounds these to 1.3, 10 and 20 (p. A-694,
+no supported-supported entry), other prints give 5.1, 10.2 and 20.3.
 
 **Thermal lead error.** A screw warmer than its mounting by :math:`\Delta T`
 lengthens by :math:`\Delta L = \alpha\,\Delta T\,L` (:math:`\alpha` =
