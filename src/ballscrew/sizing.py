@@ -25,9 +25,11 @@ up to the lift-off of the relieved half at :math:`|F_a| = 2^{3/2}F_{pr}`
 the nut's life as the two in series:
 :math:`L = (L_1^{-10/9} + L_2^{-10/9})^{-9/10}` (:func:`combined_life`).
 
-**Static safety.** :math:`f_s = C_{0a}/F_{max}` (ISO 3408-5, clause 6; THK
-asks at least 2 without vibration or impact and 5 with, "Static Safety
-Factor", Table 21).
+**Static safety.** :math:`f_s = C_{0a}/F_{max}` (ISO 3408-5, clause 6). THK's guideline
+for machine tools is 1 to 1.5 without vibration or impact and 2.5 to 7 with
+them (2 to 3 with them for general machinery; General Catalog, "Static Safety
+Factor", Table 18, p. A-703); the check's default least value, 2, sits
+between.
 
 **Buckling.** Euler's load of the root-diameter section with the mounting's
 end-condition factor, times the catalogue's safety factor 0.5 (THK General

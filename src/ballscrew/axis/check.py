@@ -325,7 +325,8 @@ def _load_rows(run: EnergyRun, force: FloatArray, d_r: float, span: float) -> li
     half_max = float(preloaded_loads(f_max, 0.0 if screw.nut == "single" else screw.preload)[0])
     source = (
         "ISO 3408-5:2006 cl. 6: f_s = C0a / F_max (most loaded half, preload included); "
-        "least f_s: THK, Static Safety Factor, Table 21 (2, or 5 with vibration or impact)"
+        "least f_s: THK, Static Safety Factor, Table 18, A-703 (machine tools: 1 to 1.5, "
+        "2.5 to 7 with vibration or impact)"
     )
     if case.static_load_rating is None:
         rows.append(_missing("static safety C0a/F_max", "-", source,

@@ -332,8 +332,8 @@ class CheckSection(BaseModel):
     static_safety: Value = _f(
         2.0,
         "-",
-        "least static safety factor C_0a/F_max (THK's guideline: 2 without vibration or "
-        "impact, 5 with)",
+        "least static safety factor C_0a/F_max (THK's guideline for machine tools: 1 to "
+        "1.5 without vibration or impact, 2.5 to 7 with)",
     )
     accuracy_grade: str | None = _f(
         None,
