@@ -105,3 +105,29 @@ def test_torques_equal_the_row_wise_algorithm(kind: str, monkeypatch: pytest.Mon
     for name, value in old.components.items():
         np.testing.assert_allclose(new.components[name], value, rtol=RTOL, atol=0.0)
     assert math.isfinite(float(np.max(new.total)))
+
+
+def test_exactly_direct_integrals_pairs_are_integrated_directly() -> None:
+    # "Up to DIRECT_INTEGRALS distinct pairs" includes the bound: exactly that many distinct
+    # contact sizes at one aspect, repeated so that the 1-D prefix looked at first holds all of
+    # them too, are the direct rule at every point; one more pair takes the spline, as the
+    # row-wise algorithm does.
+    n = module.DIRECT_INTEGRALS
+    kappa = np.tile(np.linspace(0.2, 0.5, n), 5)
+    assert kappa.size > 4 * n
+    aspect = np.full_like(kappa, 0.2)
+    got = module._unique_integral(kappa, aspect)
+    np.testing.assert_allclose(got, rl.spin_sliding_integral(kappa, aspect), rtol=RTOL)
+    more = np.append(kappa, 0.35 + 1e-6)
+    aspect = np.full_like(more, 0.2)
+    got = module._unique_integral(more, aspect)
+    np.testing.assert_allclose(got, _row_wise_unique_integral(more, aspect), rtol=RTOL)
+
+
+def test_spline_of_one_aspect_matches_the_direct_rule() -> None:
+    # Many distinct sizes at one aspect (a load sweep: b/a does not depend on the load) take
+    # the spline along kappa alone: 1e-8 over one contact's range (test_complete.py), 1e-7.
+    kappa = np.linspace(0.2, 0.5, 1000)
+    aspect = np.full_like(kappa, 0.2)
+    got = module._unique_integral(kappa, aspect)
+    np.testing.assert_allclose(got, rl.spin_sliding_integral(kappa, aspect), rtol=1e-7)

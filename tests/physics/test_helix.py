@@ -134,6 +134,87 @@ def test_without_spin_the_weaker_contact_takes_all_the_slip() -> None:
     assert float(r.power) == pytest.approx(0.08 * 30.0 * 2.5e-4, rel=1e-3)
 
 
+def test_coulomb_limit_holds_however_small_the_spin() -> None:
+    # Spin -> 0 (1e-20 of the screw speed): slip ratios sigma ~ 1e20, beyond the last node of
+    # the tables (sigma / (1 + sigma) rounds to 1). The limit is plain Coulomb sliding: the
+    # weaker contact (mu Q = 2.4 N) takes the whole slip and dissipates 2.4 N x slip. The
+    # residual is a step here (G jumps from 0 to 1 within a share of 1e-20), which the solver
+    # resolves to its bracket, 1e-9 of the share: tolerance 1e-8 on the share, and on the
+    # power (the stronger contact's 3 N over 1e-9 of the slip adds 1.25e-9 of it). The force
+    # then lies between the two capacities, which the step cannot tell apart.
+    strong = SlipContact("screw", 0.1, 30.0, 0.26e-3, 0.2, 1e-20)
+    weak = SlipContact("nut", 0.08, 30.0, 0.26e-3, 0.2, 1e-20)
+    r = transverse_slip_loss([strong, weak], 2.5e-4)
+    assert float(r.screw_share) == pytest.approx(0.0, abs=1e-8)
+    assert float(r.power) == pytest.approx(0.08 * 30.0 * 2.5e-4, rel=1e-8)
+    assert 0.08 * 30.0 * (1 - 1e-12) <= float(r.force) <= 0.1 * 30.0 * (1 + 1e-12)
+
+
+@pytest.mark.parametrize("spins", [(0.35, 0.30), (0.02, 0.05), (1e-3, 2e-3), (5e-3, 2e-3)])
+def test_contacts_equal_but_for_their_spin_share_at_equal_slip_ratios(
+    spins: tuple[float, float],
+) -> None:
+    # Equal mu Q and equal b/a: both transverse forces are mu Q G(sigma) with the same G,
+    # increasing in sigma, so the moment balance holds at equal slip ratios
+    # sigma = share s / (|omega_s| a): the screw takes |w_s| / (|w_s| + |w_n|) of the slip,
+    # exactly. From slips comparable to the spin's sliding (sigma ~ 1) to near-Coulomb
+    # sliding (sigma ~ 300, where G is flat: 1 - G falls as 1/sigma^2).
+    # Tolerance: the solver stops once |F_s - F_n| <= 1e-9 (mu Q_s + mu Q_n), or the share
+    # moves by less than 1e-9. Where G is flat the force tolerance admits share errors of
+    # 1e-9 x 2 mu Q / (dF/dx), dF/dx = mu Q G'(sigma) sigma (1/x + 1/(1 - x)) with G' from
+    # the integrals themselves (central difference): allowed 4 times that, and 1e-9.
+    mu, load, a, aspect, slip = 0.09, 30.0, 0.26e-3, 0.2, 2.5e-4
+    w_s, w_n = spins
+    c = [SlipContact("screw", mu, load, a, aspect, w_s),
+         SlipContact("nut", mu, load, a, aspect, w_n)]  # fmt: skip
+    x = w_s / (w_s + w_n)
+    sigma = x * slip / (w_s * a)
+    h = 1e-3 * sigma
+    g_hi, g_lo = (
+        float(rl.spin_slip_integrals(0.0, aspect, sig)[1]) for sig in (sigma + h, sigma - h)
+    )
+    rate = mu * load * (g_hi - g_lo) / (2 * h) * sigma * (1 / x + 1 / (1 - x))
+    tolerance = 4 * 1e-9 * 2 * mu * load / rate + 1e-9
+    r = transverse_slip_loss(c, slip)
+    assert float(r.screw_share) == pytest.approx(x, abs=tolerance)
+
+
+def test_share_does_not_depend_on_the_force_scale() -> None:
+    # The balance mu Q_s G(sigma_s) = mu Q_n G(sigma_n) is homogeneous in the loads (the
+    # semi-axes, hence the slip ratios, held): scaling both loads by 1e-6 (a ball near
+    # lift-off) or 1e4 leaves the share, and scales the power and the force by the same
+    # factor. The solver's force tolerance is relative to mu Q, so the scaled problems take
+    # the same steps: equal to rounding, 1e-9 allowed.
+    def pair(scale: float) -> list[SlipContact]:
+        return [SlipContact("screw", 0.092, 30.0 * scale, 0.26e-3, 0.19, 0.39),
+                SlipContact("nut", 0.080, 30.0 * scale, 0.25e-3, 0.22, 0.31)]  # fmt: skip
+
+    base = transverse_slip_loss(pair(1.0), 1e-4)
+    assert 0.05 < float(base.screw_share) < 0.95
+    for scale in (1e-6, 1e4):
+        r = transverse_slip_loss(pair(scale), 1e-4)
+        assert float(r.screw_share) == pytest.approx(float(base.screw_share), abs=1e-9)
+        assert float(r.power) == pytest.approx(scale * float(base.power), rel=1e-9)
+        assert float(r.force) == pytest.approx(scale * float(base.force), rel=1e-9)
+
+
+def test_without_curvature_only_the_slip_ratio_matters() -> None:
+    # Without Heathcote sliding (no curvature given) a contact enters the balance through
+    # sigma = share s / (|omega_s| a) alone, and its power as mu Q |omega_s| a J(sigma):
+    # growing the semi-axes and the slip together by 1000 leaves the share and the force and
+    # multiplies the power by 1000, in the reference and in the tables. Both solve the same
+    # dimensionless problem: equal to their tolerances (1e-13 Brent, 1e-9 Newton); 1e-9.
+    def pair(size: float) -> list[SlipContact]:
+        return [SlipContact("screw", 0.092, 30.0, 0.26e-3 * size, 0.19, 0.39),
+                SlipContact("nut", 0.080, 30.0, 0.25e-3 * size, 0.22, 0.31)]  # fmt: skip
+
+    for solve in (ball_slip_balance, transverse_slip_loss):
+        small, large = solve(pair(1.0), 1e-4), solve(pair(1e3), 1e-1)
+        assert float(large.screw_share) == pytest.approx(float(small.screw_share), abs=1e-9)
+        assert float(large.force) == pytest.approx(float(small.force), rel=1e-9)
+        assert float(large.power) == pytest.approx(1e3 * float(small.power), rel=1e-9)
+
+
 def test_equal_contacts_share_equally_and_the_force_lies_below_coulomb() -> None:
     c = [SlipContact(side, 0.09, 30.0, 0.26e-3, 0.2, 0.35) for side in ("screw", "nut")]
     r = transverse_slip_loss(c, 2.5e-4)
