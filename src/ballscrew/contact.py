@@ -198,6 +198,49 @@ def _rd_series(big_x: Any, big_y: Any) -> Any:
     )
 
 
+def _duplication(
+    x: FloatArray, y: FloatArray, z: FloatArray, a0: FloatArray, q: FloatArray, name: str
+) -> tuple[FloatArray, FloatArray, FloatArray]:
+    """Carlson's duplication of (x, y, z) until each element's spread is below ``q``.
+
+    Returns the mean ``a``, the scale 4**-n and, for R_D (``name == "R_D"``), the
+    sum of its terms scale / (sqrt(z) (z + lambda)) (0 for R_F, whose z may be 0);
+    each element stops at its own step.
+    """
+    a, scale, total = a0.copy(), np.ones_like(a0), np.zeros_like(a0)
+    for _ in range(100):
+        active = q * scale >= np.abs(a)
+        if not active.any():
+            return a, scale, total
+        sx, sy, sz = np.sqrt(x), np.sqrt(y), np.sqrt(z)
+        lam = sx * (sy + sz) + sy * sz
+        if name == "R_D":
+            total = np.where(active, total + scale / (sz * (z + lam)), total)
+        x = np.where(active, 0.25 * (x + lam), x)
+        y = np.where(active, 0.25 * (y + lam), y)
+        z = np.where(active, 0.25 * (z + lam), z)
+        a = np.where(active, 0.25 * (a + lam), a)
+        scale = np.where(active, 0.25 * scale, scale)
+    raise RuntimeError(f"{name} did not converge")  # pragma: no cover - 4-fold per step
+
+
+def _duplication_one(
+    x: float, y: float, z: float, a: float, q: float, name: str
+) -> tuple[float, float, float]:
+    """:func:`_duplication` at one point, operation for operation (the same bits)."""
+    scale, total = 1.0, 0.0
+    for _ in range(100):
+        if not q * scale >= abs(a):
+            return a, scale, total
+        sx, sy, sz = math.sqrt(x), math.sqrt(y), math.sqrt(z)
+        lam = sx * (sy + sz) + sy * sz
+        if name == "R_D":
+            total = total + scale / (sz * (z + lam))
+        x, y, z, a = 0.25 * (x + lam), 0.25 * (y + lam), 0.25 * (z + lam), 0.25 * (a + lam)
+        scale = 0.25 * scale
+    raise RuntimeError(f"{name} did not converge")  # pragma: no cover
+
+
 def _carlson_rf(x: npt.ArrayLike, y: npt.ArrayLike, z: npt.ArrayLike) -> FloatArray:
     r"""Carlson's symmetric elliptic integral of the first kind :math:`R_F(x, y, z)`, x, y, z >= 0.
 
@@ -216,20 +259,7 @@ def _carlson_rf(x: npt.ArrayLike, y: npt.ArrayLike, z: npt.ArrayLike) -> FloatAr
     q = (3.0 * _EPS) ** (-1.0 / 6.0) * np.maximum(
         np.maximum(np.abs(dx), np.abs(dy)), np.abs(a0 - z)
     )
-    a, scale = a0.copy(), np.ones_like(a0)
-    for _ in range(100):
-        active = q * scale >= np.abs(a)
-        if not active.any():
-            break
-        sx, sy, sz = np.sqrt(x), np.sqrt(y), np.sqrt(z)
-        lam = sx * (sy + sz) + sy * sz
-        x = np.where(active, 0.25 * (x + lam), x)
-        y = np.where(active, 0.25 * (y + lam), y)
-        z = np.where(active, 0.25 * (z + lam), z)
-        a = np.where(active, 0.25 * (a + lam), a)
-        scale = np.where(active, 0.25 * scale, scale)
-    else:  # pragma: no cover - the duplication shrinks the spread 4-fold per step
-        raise RuntimeError("R_F did not converge")
+    a, scale, _ = _duplication(x, y, z, a0, q, "R_F")
     series = _rf_series(dx * scale / a, dy * scale / a)
     result: FloatArray = series / np.sqrt(a)
     return result
@@ -240,16 +270,7 @@ def _carlson_rf_one(x: float, y: float, z: float) -> float:
     a0 = (x + y + z) / 3.0
     dx, dy = a0 - x, a0 - y
     q = (3.0 * _EPS) ** (-1.0 / 6.0) * max(max(abs(dx), abs(dy)), abs(a0 - z))
-    a, scale = a0, 1.0
-    for _ in range(100):
-        if not q * scale >= abs(a):
-            break
-        sx, sy, sz = math.sqrt(x), math.sqrt(y), math.sqrt(z)
-        lam = sx * (sy + sz) + sy * sz
-        x, y, z, a = 0.25 * (x + lam), 0.25 * (y + lam), 0.25 * (z + lam), 0.25 * (a + lam)
-        scale = 0.25 * scale
-    else:  # pragma: no cover
-        raise RuntimeError("R_F did not converge")
+    a, scale, _ = _duplication_one(x, y, z, a0, q, "R_F")
     series: float = _rf_series(dx * scale / a, dy * scale / a)
     return series / math.sqrt(a)
 
@@ -259,17 +280,7 @@ def _carlson_rd_one(x: float, y: float, z: float) -> float:
     a0 = (x + y + 3.0 * z) / 5.0
     dx, dy = a0 - x, a0 - y
     q = (0.25 * _EPS) ** (-1.0 / 6.0) * max(max(abs(dx), abs(dy)), abs(a0 - z))
-    a, scale, total = a0, 1.0, 0.0
-    for _ in range(100):
-        if not q * scale >= abs(a):
-            break
-        sx, sy, sz = math.sqrt(x), math.sqrt(y), math.sqrt(z)
-        lam = sx * (sy + sz) + sy * sz
-        total = total + scale / (sz * (z + lam))
-        x, y, z, a = 0.25 * (x + lam), 0.25 * (y + lam), 0.25 * (z + lam), 0.25 * (a + lam)
-        scale = 0.25 * scale
-    else:  # pragma: no cover
-        raise RuntimeError("R_D did not converge")
+    a, scale, total = _duplication_one(x, y, z, a0, q, "R_D")
     series: float = _rd_series(dx * scale / a, dy * scale / a)
     return scale * series / (a * math.sqrt(a)) + 3.0 * total
 
@@ -290,21 +301,7 @@ def _carlson_rd(x: npt.ArrayLike, y: npt.ArrayLike, z: npt.ArrayLike) -> FloatAr
     q = (0.25 * _EPS) ** (-1.0 / 6.0) * np.maximum(
         np.maximum(np.abs(dx), np.abs(dy)), np.abs(a0 - z)
     )
-    a, scale, total = a0.copy(), np.ones_like(a0), np.zeros_like(a0)
-    for _ in range(100):
-        active = q * scale >= np.abs(a)
-        if not active.any():
-            break
-        sx, sy, sz = np.sqrt(x), np.sqrt(y), np.sqrt(z)
-        lam = sx * (sy + sz) + sy * sz
-        total = np.where(active, total + scale / (sz * (z + lam)), total)
-        x = np.where(active, 0.25 * (x + lam), x)
-        y = np.where(active, 0.25 * (y + lam), y)
-        z = np.where(active, 0.25 * (z + lam), z)
-        a = np.where(active, 0.25 * (a + lam), a)
-        scale = np.where(active, 0.25 * scale, scale)
-    else:  # pragma: no cover - the duplication shrinks the spread 4-fold per step
-        raise RuntimeError("R_D did not converge")
+    a, scale, total = _duplication(x, y, z, a0, q, "R_D")
     series = _rd_series(dx * scale / a, dy * scale / a)
     result: FloatArray = scale * series / (a * np.sqrt(a)) + 3.0 * total
     return result

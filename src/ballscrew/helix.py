@@ -259,7 +259,7 @@ def transverse_slip_loss(contacts: Sequence[SlipContact], slip: float) -> SlipSh
     scale = [np.broadcast_to(c.spin * a, shape).reshape(-1) for c, (_, _, a) in zip(
         contacts, arrays, strict=True)]  # fmt: skip
 
-    def ratio(speed: FloatArray, k: int, index: Index) -> FloatArray:
+    def ratio(speed: FloatArray | float, k: int, index: Index) -> FloatArray:
         # An unloaded contact (a = 0) has no capacity: its ratio is never used, 0 is taken.
         w = scale[k][index]
         r: FloatArray = speed / np.where(w > 0.0, w, np.inf)
@@ -273,8 +273,7 @@ def transverse_slip_loss(contacts: Sequence[SlipContact], slip: float) -> SlipSh
         rate: FloatArray = np.zeros(np.shape(x))
         for k, c in enumerate(contacts):
             if c.side == side:
-                w = scale[k][index]
-                per_share = s / np.where(w > 0.0, w, np.inf)  # d sigma / d share
+                per_share = ratio(s, k, index)  # d sigma / d share
                 g, slope = _lookup_g(c.aspect, share * per_share)
                 total = total + capacity[k][index] * g
                 rate = rate + sign * capacity[k][index] * slope * per_share

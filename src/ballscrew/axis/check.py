@@ -15,7 +15,8 @@ with the formulas of :mod:`ballscrew.sizing`, :mod:`ballscrew.stiffness` and
 * **static safety** :math:`C_{0a}/F_{max}` on the most loaded half;
 * **buckling**, the **yield** of the root section, the **critical speed** and
   **d·n**;
-* **stiffness**: shaft, nut (Hertz at the preload) and thrust bearings in
+* **stiffness**: shaft, nut (Hertz at the preload, brought to the makers' printed
+  rigidity and derated to 80 %) and thrust bearings in
   series over the stroke, the **axial eigenfrequency** with the moving mass
   and the **lost motion** at a reversal, :math:`2F_f/k`, with :math:`F_f` the
   screw's drag torque at creep speed as an axial force, :math:`2\pi T_f/l`;

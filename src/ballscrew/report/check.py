@@ -70,7 +70,7 @@ def _stiffness_figure(check: AxisCheck) -> MplFigure:
     x = s["position_mm"]
     top.plot(x, s["axis_N_per_um"], color="C0", linestyle="-", label="axis (in series)")
     top.plot(x, s["shaft_N_per_um"], color="C1", linestyle="--", label="shaft")
-    top.axhline(s["nut_N_per_um"], color="C2", linestyle=":", label="nut (Hertz, at the preload)")
+    top.axhline(s["nut_N_per_um"], color="C2", linestyle=":", label="nut (catalogue level x 0.8)")
     top.set_ylabel("axial stiffness [N/µm]")
     top.set_yscale("log")
     top.legend(fontsize=7, loc="best")
