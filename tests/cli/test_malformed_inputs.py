@@ -193,6 +193,9 @@ def test_a_profile_that_cannot_be_used_names_the_file_line_or_header(
         ("stroke=300 mm, feed=0 m/s, acceleration=2 m/s^2", "--move feed", "more than 0"),
         ("stroke=1e30 m, feed=1 m/s, acceleration=2 m/s^2", "--move, --cycles",
          "at most 5,000,000 samples"),
+        # A decimal comma in a list the commas separate: refused, not read as force = 1 N.
+        ("stroke=300 mm, feed=1 m/s, acceleration=2 m/s^2, force=1,2 kN", "--move force",
+         "a decimal point"),
     ],
 )  # fmt: skip
 def test_a_move_that_cannot_be_sampled_is_refused_before_any_array_is_made(

@@ -22,6 +22,7 @@ numerical integration): the position at the end is the stroke to rounding.
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass
 
@@ -371,7 +372,16 @@ def parse_move(text: str) -> dict[str, float]:
     from ..units import to_si  # the unit library only when text is read
 
     out: dict[str, float] = {}
-    for part in (p.strip() for p in text.split(",") if p.strip()):
+    parts = [p.strip() for p in text.split(",") if p.strip()]
+    for before, after in itertools.pairwise(parts):
+        # "force=1,2 kN": a decimal comma, which also separates the keys here.
+        if "=" not in after and before[-1:].isdigit() and after[:1].isdigit():
+            key = before.partition("=")[0].strip()
+            raise BallScrewInputError(
+                f"--move {key}", f"{before.partition('=')[2].strip()},{after}",
+                "a decimal point: commas separate the keys of --move (e.g. '1.2 kN')",
+            )  # fmt: skip
+    for part in parts:
         key, sep, value = part.partition("=")
         key = key.strip()
         if not sep or key not in MOVE_KEYS:
