@@ -58,3 +58,53 @@ def test_newton_and_illinois_agree_on_a_piecewise_linear_table() -> None:
     )
     np.testing.assert_allclose(x_newton, x_illinois, atol=1e-12)
     assert abs(float(np.interp(x_newton[0], nodes, values))) < 1e-12
+
+
+def _counted(residual):  # type: ignore[no-untyped-def]
+    """The residual, and a list that records how many elements each call evaluated."""
+    calls: list[int] = []
+
+    def wrapped(x, i):  # type: ignore[no-untyped-def]
+        calls.append(np.size(x))
+        return residual(x, i)
+
+    return wrapped, calls
+
+
+def test_illinois_converges_superlinearly() -> None:
+    # The cube root of c from the bracket [0, 4] to 1e-14. Illinois converges with order
+    # 1.442 (Dowell & Jarratt): 15 evaluations here; plain regula falsi (no halving)
+    # stalls on the convex x^3, and bisection needs 48.
+    c = np.array([0.3, 2.0, 27.0, 50.0])
+    residual, calls = _counted(lambda x, i: x**3 - c[i])
+    x = illinois(residual, np.zeros(4), np.full(4, 4.0), -c, 64.0 - c, xtol=1e-14)
+    np.testing.assert_allclose(x, np.cbrt(c), rtol=1e-14)
+    assert len(calls) <= 16
+
+
+def test_newton_converges_quadratically() -> None:
+    # sqrt(c) from x0 = 4 to 1e-14. Newton's error
+    # squares each step: from 4 to sqrt(2) about 7 evaluations; bisection needs 50.
+    c = np.array([0.5, 2.0, 3.0, 15.9])
+    residual, calls = _counted(lambda x, i: (x * x - c[i], 2.0 * x))
+    x = newton_bracketed(residual, np.zeros(4), np.full(4, 4.0), np.full(4, 4.0), xtol=1e-14)
+    np.testing.assert_allclose(x, np.sqrt(c), rtol=1e-14)
+    assert len(calls) <= 9
+
+
+def test_each_element_stops_at_its_own_root() -> None:
+    # An element started on its root is done after one evaluation and never evaluated
+    # again; the others go on: the calls shrink to the elements still iterating.
+    c = np.array([4.0, 2.0])
+    for solve in ("newton", "illinois"):
+        if solve == "newton":
+            residual, calls = _counted(lambda x, i: (x * x - c[i], 2.0 * x))
+            x = newton_bracketed(residual, np.zeros(2), np.full(2, 3.0), np.array([2.0, 3.0]),
+                                 xtol=1e-15)  # fmt: skip
+        else:
+            # The first element's residual is a line: the first secant lands on its root.
+            residual, calls = _counted(lambda x, i: np.where(i == 0, x - 2.0, x * x - c[i]))
+            x = illinois(residual, np.zeros(2), np.full(2, 3.0), np.array([-2.0, -2.0]),
+                         np.array([1.0, 7.0]), xtol=1e-15)  # fmt: skip
+        np.testing.assert_allclose(x, np.sqrt(c), rtol=1e-15)
+        assert calls[0] == 2 and all(n == 1 for n in calls[1:]) and len(calls) > 1
