@@ -108,3 +108,25 @@ def test_each_element_stops_at_its_own_root() -> None:
                          np.array([1.0, 7.0]), xtol=1e-15)  # fmt: skip
         np.testing.assert_allclose(x, np.sqrt(c), rtol=1e-15)
         assert calls[0] == 2 and all(n == 1 for n in calls[1:]) and len(calls) > 1
+
+
+def test_a_force_tolerance_alone_stops_both_at_the_root() -> None:
+    # Given only ftol (the step tolerance left at its default, 0), both run until |f| is
+    # that small: the root of x^2 - c to ftol / f'(root) = 1e-12 / 2.8, not a looser one.
+    c = np.array([2.0, 8.0])
+    x_i = illinois(lambda x, i: x * x - c[i], np.zeros(2), np.full(2, 4.0), -c, 16.0 - c,
+                   ftol=1e-12)  # fmt: skip
+    x_n = newton_bracketed(lambda x, i: (x * x - c[i], 2.0 * x), np.zeros(2), np.full(2, 4.0),
+                           np.full(2, 4.0), ftol=1e-12)  # fmt: skip
+    np.testing.assert_allclose(x_i, np.sqrt(c), atol=1e-12)
+    np.testing.assert_allclose(x_n, np.sqrt(c), atol=1e-12)
+
+
+def test_newton_keeps_its_order_on_a_shallow_residual() -> None:
+    # The same roots with the residual scaled by 1e-3 (slopes well below 1): Newton's
+    # steps do not depend on the scale, so the count stays that of the unscaled problem.
+    c = np.array([0.5, 2.0, 3.0, 15.9])
+    residual, calls = _counted(lambda x, i: (1e-3 * (x * x - c[i]), 2e-3 * x))
+    x = newton_bracketed(residual, np.zeros(4), np.full(4, 4.0), np.full(4, 4.0), xtol=1e-14)
+    np.testing.assert_allclose(x, np.sqrt(c), rtol=1e-14)
+    assert len(calls) <= 9
