@@ -40,8 +40,9 @@ def test_the_extras_of_pyproject_are_those_the_package_checks_for() -> None:
     extras = _pyproject_extras()
     assert _names(extras["sweep"]) == {m.lower() for m in EXTRAS["sweep"]}
     assert _names(extras["web"]) == {m.lower() for m in EXTRAS["web"]}
+    assert _names(extras["fast"]) == {m.lower() for m in EXTRAS["fast"]}
     assert not _names(extras["core"]) & {m.lower() for m in OPTIONAL}
-    assert extras["all"] == ["ballscrew[sweep,web]"]
+    assert extras["all"] == ["ballscrew[sweep,web,fast]"]
     assert "ballscrew[all]" in extras["test"]  # the README's two commands install everything
 
 

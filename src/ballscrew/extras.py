@@ -29,6 +29,7 @@ __all__ = ["EXTRAS", "MissingExtraError", "MissingExtraWarning", "missing", "req
 EXTRAS: dict[str, tuple[str, ...]] = {
     "sweep": ("xarray", "zarr", "dask", "distributed", "SALib"),
     "web": ("starlette", "uvicorn", "anyio", "jinja2"),
+    "fast": ("numba",),
 }
 """The top-level modules each extra installs (the import names, not the distributions')."""
 

@@ -1,0 +1,174 @@
+r"""The helix's slip share as one compiled loop: the ``fast`` extra's kernel.
+
+:func:`ballscrew.helix.transverse_slip_loss` solves, at every operating point,
+the moment balance of a ball for the share of the slip taken at its screw
+contacts, by Newton's method kept in a bracket on tabulated traction
+integrals. In numpy each Newton step is a dozen whole-array passes; here each
+point runs its own iteration to the end in one compiled loop over the points,
+with the same start, steps, stopping rules and tables, so that both give the
+same shares (to rounding: the tests hold them to 1e-12 of a share).
+
+:func:`shares` is plain Python; :func:`compiled` compiles it with numba
+(``pip install 'ballscrew[fast]'``) on first use, cached on disk. Without
+numba, or with ``BALLSCREW_JIT=0`` in the environment, the helix takes its
+numpy path.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+import os
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+
+from .errors import FloatArray
+
+__all__ = ["compiled", "shares"]
+
+
+def shares(
+    capacity: FloatArray,
+    per_share: FloatArray,
+    scale: FloatArray,
+    screw_side: Any,
+    g_nodes: FloatArray,
+    j_nodes: FloatArray,
+    tolerance: float,
+    max_iter: int,
+    x: FloatArray,
+    power: FloatArray,
+    force: FloatArray,
+) -> None:
+    r"""Share of the slip at the screw, extra power and transverse force of every point.
+
+    Parameters (K contacts, n points, M + 1 table nodes uniform in
+    :math:`t = \sigma/(1+\sigma)`):
+
+    capacity : (K, n) :math:`\mu_jQ_j` [N];
+    per_share : (K, n) slip ratio per unit share, :math:`s_\perp/(|\omega_s|a)` [-] (0
+        for an unloaded contact); scale : (K, n) :math:`|\omega_s|a` per unit screw
+        speed [m];
+    screw_side : (K,) true for a screw contact; g_nodes, j_nodes : (K, M + 1) the
+        tables of :math:`G` and :math:`J/(1+\sigma)`;
+    tolerance : the stopping tolerance on the share (and, times the total
+        capacity, on the force residual); max_iter : residual evaluations at most;
+    x, power, force : (n,) outputs, written in place.
+    """
+    k_count, n = capacity.shape
+    intervals = g_nodes.shape[1] - 1
+    for p in range(n):
+        total = 0.0
+        for k in range(k_count):
+            total += capacity[k, p]
+        # The residual (screw force - nut force) and its slope at both ends of [0, 1].
+        f_lo = 0.0
+        f_hi = 0.0
+        for k in range(k_count):
+            ratio = per_share[k, p]
+            t = ratio / (1.0 + ratio) * intervals
+            i = min(int(t), intervals - 1)
+            g_full = g_nodes[k, i] + (t - i) * (g_nodes[k, i + 1] - g_nodes[k, i])
+            if screw_side[k]:
+                f_hi += capacity[k, p] * g_full
+            else:
+                f_lo -= capacity[k, p] * g_full
+        share = 0.0 if f_lo >= 0.0 else 1.0
+        if f_lo < 0.0 and f_hi > 0.0:
+            lo = 0.0
+            hi = 1.0
+            share = -f_lo / (f_hi - f_lo)
+            f_tol = tolerance * total
+            for _ in range(max_iter):
+                f = 0.0
+                slope = 0.0
+                for k in range(k_count):
+                    own = share if screw_side[k] else 1.0 - share
+                    sign = 1.0 if screw_side[k] else -1.0
+                    ratio = per_share[k, p]
+                    sigma = own * ratio
+                    t = sigma / (1.0 + sigma) * intervals
+                    i = min(int(t), intervals - 1)
+                    rise = g_nodes[k, i + 1] - g_nodes[k, i]
+                    g = g_nodes[k, i] + (t - i) * rise
+                    f += sign * capacity[k, p] * g
+                    slope += capacity[k, p] * rise * intervals / (1.0 + sigma) ** 2 * ratio
+                if f > 0.0:
+                    hi = share
+                else:
+                    lo = share
+                step = f / slope if slope > 0.0 else 0.0
+                trial = share - step
+                inside = slope > 0.0 and lo < trial < hi
+                done = (
+                    f == 0.0
+                    or abs(f) <= f_tol
+                    or (inside and abs(step) <= tolerance)
+                    or hi - lo <= tolerance
+                )
+                if done:
+                    if inside:
+                        share = trial
+                    break
+                share = trial if inside else 0.5 * (lo + hi)
+        x[p] = share
+        extra = 0.0
+        side_force = 0.0
+        for k in range(k_count):
+            own = share if screw_side[k] else 1.0 - share
+            sigma = own * per_share[k, p]
+            t = sigma / (1.0 + sigma) * intervals
+            i = min(int(t), intervals - 1)
+            frac = t - i
+            j = (j_nodes[k, i] + frac * (j_nodes[k, i + 1] - j_nodes[k, i])) * (1.0 + sigma)
+            extra += capacity[k, p] * 1.5 / math.pi * scale[k, p] * (j - j_nodes[k, 0])
+            if screw_side[k]:
+                side_force += capacity[k, p] * (
+                    g_nodes[k, i] + frac * (g_nodes[k, i + 1] - g_nodes[k, i])
+                )
+        power[p] = extra
+        force[p] = side_force
+
+
+def enabled() -> bool:
+    """Whether the compiled kernel is to be used: numba installed and not switched off."""
+    if os.environ.get("BALLSCREW_JIT", "1").strip().lower() in ("0", "false", "no", "off"):
+        return False
+    return compiled() is not None
+
+
+@functools.cache
+def compiled() -> Callable[..., None] | None:
+    """:func:`shares` compiled by numba (cached on disk), or None without numba."""
+    try:
+        import numba
+    except ImportError:
+        return None
+    kernel: Callable[..., None] = numba.njit(cache=True, nogil=True)(shares)
+    return kernel
+
+
+def run(
+    capacity: FloatArray,
+    per_share: FloatArray,
+    scale: FloatArray,
+    screw_side: Any,
+    g_nodes: FloatArray,
+    j_nodes: FloatArray,
+    tolerance: float,
+    max_iter: int,
+) -> tuple[FloatArray, FloatArray, FloatArray]:
+    """Shares, extra powers and forces of every point, by the compiled kernel."""
+    kernel = compiled()
+    assert kernel is not None
+    n = capacity.shape[1]
+    x, power, force = np.empty(n), np.empty(n), np.empty(n)
+    kernel(
+        np.ascontiguousarray(capacity), np.ascontiguousarray(per_share),
+        np.ascontiguousarray(scale), np.asarray(screw_side, dtype=np.bool_),
+        np.ascontiguousarray(g_nodes), np.ascontiguousarray(j_nodes),
+        float(tolerance), int(max_iter), x, power, force,
+    )  # fmt: skip
+    return x, power, force
