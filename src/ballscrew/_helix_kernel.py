@@ -8,7 +8,7 @@ point runs its own iteration to the end in one compiled loop over the points,
 with the same start, steps, stopping rules and tables, so that both give the
 same shares (to rounding: the tests hold them to 1e-12 of a share).
 
-:func:`shares` is plain Python; :func:`compiled` compiles it with numba
+:func:`shares` is plain Python (run as such for a few points); numba compiles it
 (``pip install 'ballscrew[fast]'``) on first use, cached on disk. Without
 numba, or with ``BALLSCREW_JIT=0`` in the environment, the helix takes its
 numpy path.
@@ -26,7 +26,7 @@ import numpy as np
 
 from .errors import FloatArray
 
-__all__ = ["compiled", "shares"]
+__all__ = ["enabled", "run", "shares"]
 
 
 def shares(
@@ -136,11 +136,11 @@ def enabled() -> bool:
     """Whether the compiled kernel is to be used: numba installed and not switched off."""
     if os.environ.get("BALLSCREW_JIT", "1").strip().lower() in ("0", "false", "no", "off"):
         return False
-    return compiled() is not None
+    return _compiled() is not None
 
 
 @functools.cache
-def compiled() -> Callable[..., None] | None:
+def _compiled() -> Callable[..., None] | None:
     """:func:`shares` compiled by numba (cached on disk), or None without numba."""
     try:
         import numba
@@ -159,9 +159,14 @@ def run(
     j_nodes: FloatArray,
     tolerance: float,
     max_iter: int,
+    *,
+    compiled: bool = True,
 ) -> tuple[FloatArray, FloatArray, FloatArray]:
-    """Shares, extra powers and forces of every point, by the compiled kernel."""
-    kernel = compiled()
+    """Shares, extra powers and forces of every point, by the compiled kernel.
+
+    With ``compiled=False``, by :func:`shares` as plain Python (for a few points).
+    """
+    kernel = _compiled() if compiled else shares
     assert kernel is not None
     n = capacity.shape[1]
     x, power, force = np.empty(n), np.empty(n), np.empty(n)

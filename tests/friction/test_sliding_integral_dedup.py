@@ -1,7 +1,7 @@
 """The sliding integral's de-duplication (issue 25): the same values as the row-wise unique.
 
 ``complete._unique_integral`` evaluates the spin-sliding integral once per distinct
-(kappa, aspect) pair and splines it above ``DIRECT_INTEGRALS`` pairs. It used to count
+(kappa, aspect) pair and interpolates it above ``DIRECT_INTEGRALS`` pairs. It used to count
 the pairs with a row-wise ``np.unique(..., axis=0)``; it now counts them on 1-D keys.
 The references here are independent of the new code: the direct quadrature rule at
 every point, and the former row-wise algorithm written out below. Tolerances: the
@@ -41,8 +41,9 @@ def _row_wise_unique_integral(kappa: FloatArray, aspect: FloatArray) -> FloatArr
 
 
 def test_a_grid_of_few_pairs_is_the_direct_rule_at_every_point() -> None:
-    # 40 contact sizes x 3 aspects, broadcast over a 2-D grid with repeats: 120 pairs.
-    kappa = np.repeat(np.linspace(0.1, 0.6, 40), 5)[:, None] * np.ones((1, 3))
+    # 3 contact sizes x 3 aspects, broadcast over a 2-D grid with repeats: 9 pairs.
+    assert module.DIRECT_INTEGRALS >= 9
+    kappa = np.repeat(np.linspace(0.1, 0.6, 3), 200 // 3 + 1)[:200, None] * np.ones((1, 3))
     aspect = np.array([0.15, 0.2, 0.25])[None, :] * np.ones((200, 1))
     got = module._unique_integral(kappa, aspect)
     assert got.shape == (200, 3)
@@ -131,3 +132,18 @@ def test_spline_of_one_aspect_matches_the_direct_rule() -> None:
     aspect = np.full_like(kappa, 0.2)
     got = module._unique_integral(kappa, aspect)
     np.testing.assert_allclose(got, rl.spin_sliding_integral(kappa, aspect), rtol=1e-7)
+
+
+@pytest.mark.parametrize("aspect", [0.05, 0.2, 1.0])
+@pytest.mark.parametrize("span", [(0.0, 0.004), (0.0, 0.5), (0.2, 0.45)])
+def test_chebyshev_along_kappa_is_the_direct_rule(aspect: float, span: tuple[float, float]) -> None:
+    # One aspect and kappa <= SMOOTH_KAPPA: degree-10 Chebyshev interpolation over the span,
+    # measured at 2e-13 of the rule (5e-13: the Clenshaw sum's rounding on top).
+    kappa = np.linspace(*span, 3001)
+    got = module._unique_integral(kappa, np.full_like(kappa, aspect))
+    np.testing.assert_allclose(got, rl.spin_sliding_integral(kappa, aspect), rtol=5e-13)
+    # Past SMOOTH_KAPPA the spline of 65 nodes (1e-4 over kappa to 2, test_complete.py).
+    wide = np.linspace(0.0, 2.0, 3001)
+    got = module._unique_integral(wide, np.full_like(wide, aspect))
+    np.testing.assert_allclose(got, rl.spin_sliding_integral(wide, aspect), rtol=2e-4)
+    assert np.max(np.abs(got / rl.spin_sliding_integral(wide, aspect) - 1.0)) > 1e-12

@@ -78,24 +78,27 @@ def test_kernel_is_used_from_its_threshold_and_switched_off_by_the_environment(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
     pytest.importorskip("numba")
-    calls: list[int] = []
+    calls: list[tuple[int, bool]] = []
     real = _helix_kernel.run
 
-    def spy(*args: object) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        calls.append(np.shape(args[0])[1])  # type: ignore[arg-type]
-        return real(*args)  # type: ignore[arg-type]
+    def spy(*args: object, compiled: bool = True) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        calls.append((np.shape(args[0])[1], compiled))  # type: ignore[arg-type]
+        return real(*args, compiled=compiled)  # type: ignore[arg-type]
 
     monkeypatch.setattr(_helix_kernel, "run", spy)
     monkeypatch.setenv("BALLSCREW_JIT", "1")
-    n = helix.JIT_MIN_POINTS
+    n, few = helix.JIT_MIN_POINTS, helix.PYTHON_MAX_POINTS
     transverse_slip_loss(_random_contacts(n - 1, False), 2.5e-4)
-    assert calls == []
+    transverse_slip_loss(_random_contacts(few + 1, False), 2.5e-4)
+    assert calls == []  # the numpy path in between
     transverse_slip_loss(_random_contacts(n, False), 2.5e-4)
-    assert calls == [n]
+    transverse_slip_loss(_random_contacts(few, False), 2.5e-4)
+    assert calls == [(n, True), (few, False)]  # compiled from n on, plain Python up to few
     for off in ("0", "off", "False"):
         monkeypatch.setenv("BALLSCREW_JIT", off)
         transverse_slip_loss(_random_contacts(n, False), 2.5e-4)
-    assert calls == [n]
+    transverse_slip_loss(_random_contacts(few, False), 2.5e-4)  # needs no compiler
+    assert calls == [(n, True), (few, False), (few, False)]
 
 
 @pytest.mark.parametrize("nut", ["double", "single-4point"])
@@ -132,11 +135,11 @@ def test_without_numba_many_points_take_the_numpy_path(monkeypatch: pytest.Monke
     expected = transverse_slip_loss(contacts, 2.5e-4)
     monkeypatch.setenv("BALLSCREW_JIT", "1")
     monkeypatch.setitem(sys.modules, "numba", None)  # an import of it now fails
-    _helix_kernel.compiled.cache_clear()
+    _helix_kernel._compiled.cache_clear()
     try:
         assert not _helix_kernel.enabled()
         got = transverse_slip_loss(contacts, 2.5e-4)
     finally:
-        _helix_kernel.compiled.cache_clear()
+        _helix_kernel._compiled.cache_clear()
     np.testing.assert_array_equal(got.screw_share, expected.screw_share)
     np.testing.assert_array_equal(got.power, expected.power)

@@ -148,9 +148,22 @@ them about as much. An assumption, stated with the result.
 _K_RS = {"oil": 3e-8, "grease": 6e-8}
 
 
-DIRECT_INTEGRALS: int = 256
+DIRECT_INTEGRALS: int = 11
 """Up to this many distinct (kappa, aspect) pairs the sliding integral is
-evaluated directly; above, it is interpolated (:func:`_interpolated_integral`)."""
+evaluated directly; above, it is interpolated (:func:`_interpolated_integral`),
+which evaluates it at 11 nodes on the contacts of ball screws: more pairs than
+that cost more directly than through the interpolation."""
+
+CHEBYSHEV_DEGREE: int = 10
+"""Degree of the Chebyshev interpolation of the sliding integral along kappa (11 nodes)."""
+
+SMOOTH_KAPPA: float = 0.5
+r"""Up to this Heathcote-to-spin ratio :math:`\kappa` the sliding integral is so smooth in
+:math:`\kappa` that a Chebyshev interpolation of degree 10 over the points' span
+reproduces it to 2e-13 (measured for :math:`\beta` from 0.05 to 1 against the rule at
+2000 points; ``tests/friction/test_sliding_integral_dedup.py``); ball screw contacts
+have :math:`\kappa` of a few thousandths. Past it (near :math:`\kappa = 1` the line of
+no Heathcote sliding crosses the ellipse) the cubic splines are taken."""
 
 
 def _unique_integral(kappa: FloatArray, aspect: FloatArray) -> FloatArray:
@@ -165,6 +178,9 @@ def _unique_integral(kappa: FloatArray, aspect: FloatArray) -> FloatArray:
     pairs); otherwise each pair gets the integer key of its two ranks.
     """
     kappa, aspect = np.broadcast_arrays(kappa, aspect)
+    if kappa.size <= DIRECT_INTEGRALS:  # a few points: at each, no counting needed
+        few: FloatArray = rl.spin_sliding_integral(kappa, aspect)
+        return few
     k, b = kappa.reshape(-1), aspect.reshape(-1)
     k_unique = _distinct_or_none(k)
     b_unique = None if k_unique is None else _distinct_or_none(b)
@@ -214,18 +230,35 @@ def _interpolated_integral(kappa: FloatArray, aspect: FloatArray) -> FloatArray:
     Many distinct loads (a motion cycle, scattered points) give many
     distinct :math:`\kappa` (it grows as :math:`Q^{1/3}`), while
     :math:`\beta = b/a` hardly varies (Hertz's ellipticity does not depend
-    on the load). The integral, smooth in both, is evaluated on a 65 x 17
-    grid spanning the points (65 nodes when :math:`\beta` is constant) and
-    interpolated with cubic splines: to a relative 1e-8 over one contact's
-    range, 1e-4 over :math:`\kappa` from 0 to 2 and :math:`\beta` from
-    0.05 to 1 (``tests/friction/test_complete.py``), below the 12 x 48-point rule's
-    own error.
+    on the load). With one :math:`\beta` and :math:`\kappa \le`
+    :data:`SMOOTH_KAPPA` (every ball screw contact), the integral is
+    interpolated along :math:`\kappa` by a Chebyshev polynomial of degree
+    :data:`CHEBYSHEV_DEGREE` over the points' span, to a relative 2e-13.
+    Otherwise it is evaluated on a 65 x 17 grid spanning the points (65
+    nodes when :math:`\beta` is constant) and interpolated with cubic
+    splines: to a relative 1e-8 over one contact's range, 1e-4 over
+    :math:`\kappa` from 0 to 2 and :math:`\beta` from 0.05 to 1
+    (``tests/friction/test_complete.py``), below the 12 x 48-point rule's own
+    error.
     """
     from scipy.interpolate import RectBivariateSpline, make_interp_spline
 
-    k_nodes = np.linspace(float(kappa.min()), float(kappa.max()), 65)
+    k_lo, k_hi = float(kappa.min()), float(kappa.max())
     b_lo, b_hi = float(aspect.min()), float(aspect.max())
-    if b_hi - b_lo <= 1e-12 * b_hi:
+    one_aspect = b_hi - b_lo <= 1e-12 * b_hi
+    if one_aspect and k_hi <= SMOOTH_KAPPA and k_hi > k_lo:
+        # Chebyshev interpolation over the points' span (numpy's chebinterpolate).
+        from numpy.polynomial import chebyshev
+
+        aspect_0, span = 0.5 * (b_lo + b_hi), k_hi - k_lo
+        coefficients = chebyshev.chebinterpolate(
+            lambda x: rl.spin_sliding_integral(k_lo + 0.5 * (x + 1.0) * span, aspect_0),
+            CHEBYSHEV_DEGREE,
+        )
+        smooth: FloatArray = chebyshev.chebval((kappa - k_lo) * (2.0 / span) - 1.0, coefficients)
+        return smooth
+    k_nodes = np.linspace(k_lo, k_hi, 65)
+    if one_aspect:
         line = rl.spin_sliding_integral(k_nodes, 0.5 * (b_lo + b_hi))
         result: FloatArray = make_interp_spline(k_nodes, line, k=3)(kappa)
         return result
