@@ -83,7 +83,7 @@ sliding speeds keep the lead angle.
 from __future__ import annotations
 
 import math
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
 import numpy as np
 
@@ -251,12 +251,12 @@ def _interpolated_integral(kappa: FloatArray, aspect: FloatArray) -> FloatArray:
         from numpy.polynomial import chebyshev
 
         aspect_0, span = 0.5 * (b_lo + b_hi), k_hi - k_lo
-        coefficients = chebyshev.chebinterpolate(
+        coefficients: Any = chebyshev.chebinterpolate(
             lambda x: rl.spin_sliding_integral(k_lo + 0.5 * (x + 1.0) * span, aspect_0),
             CHEBYSHEV_DEGREE,
         )
-        smooth: FloatArray = chebyshev.chebval((kappa - k_lo) * (2.0 / span) - 1.0, coefficients)
-        return smooth
+        smooth = chebyshev.chebval((kappa - k_lo) * (2.0 / span) - 1.0, coefficients)
+        return np.asarray(smooth, dtype=float)
     k_nodes = np.linspace(k_lo, k_hi, 65)
     if one_aspect:
         line = rl.spin_sliding_integral(k_nodes, 0.5 * (b_lo + b_hi))
