@@ -18,7 +18,7 @@ from __future__ import annotations
 
 from . import contact, ehl, friction, kinematics, loads, lubricants, rheology
 from ._version import __version__
-from .chain import FrictionResult, friction_torque, models
+from .chain import FrictionResult, friction_torque, friction_torques, models
 from .errors import BallScrewInputError
 from .examples import reference_screw
 from .geometry import BallScrew
@@ -34,6 +34,7 @@ __all__ = [
     "ehl",
     "friction",
     "friction_torque",
+    "friction_torques",
     "kinematics",
     "loads",
     "lubricants",

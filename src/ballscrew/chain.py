@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 import warnings
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -30,7 +30,7 @@ from .lubricant import Lubricant
 from .state import OperatingState, operating_points, operating_state
 from .validity import ValidityIssue
 
-__all__ = ["FrictionResult", "friction_torque", "models"]
+__all__ = ["FrictionResult", "friction_torque", "friction_torques", "models"]
 
 
 @dataclass(frozen=True)
@@ -179,16 +179,7 @@ def friction_torque(
     kept, total, state = _evaluate(
         spec, screw, lubricant, (w0, t0, fa0), chunk, used, parameters, components
     )
-    # useful / (useful + T): 0 where there is no load (and no division by 0 when T = 0
-    # too), computed in place: a large call holds no more full-size temporaries than needed.
-    efficiency = np.abs(fa, out=np.empty(w.shape))
-    efficiency *= screw.lead / (2.0 * math.pi)
-    denominator = np.add(efficiency, total, out=np.empty(w.shape))
-    np.maximum(denominator, np.finfo(float).tiny, out=denominator)
-    np.divide(efficiency, denominator, out=efficiency)
-    del denominator
-    power_loss = np.abs(w, out=np.empty(w.shape))
-    power_loss *= total
+    efficiency, power_loss = _efficiency_and_power(total, w, fa, screw.lead)
     # The checks look at the extremes only: the unbroadcast inputs have the same ones.
     issues = validity.check(screw, lubricant, w0, t0, fa0, spec.name, used, spec.checks)
     if warn:
@@ -206,6 +197,168 @@ def friction_torque(
         warnings=tuple(issues),
         state=state,
     )
+
+
+def friction_torques(
+    screws: Sequence[BallScrew],
+    lubricant: Lubricant | str,
+    *,
+    speed: npt.ArrayLike,
+    temperature: npt.ArrayLike,
+    axial_load: npt.ArrayLike = 0.0,
+    model: str = "complete",
+    paired: bool = False,
+    chunk_size: int | None = None,
+    warn: bool = True,
+    components: bool = True,
+    **parameters: Any,
+) -> FrictionResult:
+    r"""Friction torque of many screws in one call, on one lubricant and one model.
+
+    What :func:`friction_torque` gives for one screw, for a whole table of
+    them (a design space, a Monte Carlo sample over the geometry, a catalogue
+    series): the inputs are checked once, each screw is evaluated on the
+    operating points, and the results are stacked along a first axis, one
+    entry per screw.
+
+    Parameters
+    ----------
+    screws : sequence of BallScrew
+        The screws, at least one; their order is the first axis of every
+        result.
+    lubricant, speed, temperature, axial_load, model, chunk_size, warn, components, **parameters
+        As for :func:`friction_torque`; the chunks bound the points of one
+        screw at a time.
+    paired : bool
+        False (default): every screw at every operating point; the points
+        broadcast against each other to a shape P and the results have shape
+        ``(len(screws), *P)``. True: each screw at its own points; the first
+        axis of the points is the screw axis (length ``len(screws)``, or 1 for
+        a value shared by all), and the results have the points' broadcast
+        shape.
+
+    Returns
+    -------
+    FrictionResult
+        Arrays with the screw axis first; ``warnings`` holds each quantity's
+        worst validity issue over all screws; ``state`` is None.
+
+    Raises
+    ------
+    BallScrewInputError
+        For a screw that is not a :class:`~ballscrew.BallScrew` or a point a
+        screw cannot be solved at, naming the screw by its index
+        (``screws[3]``).
+
+    Examples
+    --------
+    Three leads of one screw at two speeds (the helix's slip grows with the
+    lead angle):
+
+    >>> from ballscrew import reference_screw
+    >>> base = reference_screw()
+    >>> screws = [base.replace(lead=lead) for lead in (0.005, 0.010, 0.020)]
+    >>> r = friction_torques(screws, "mineral ISO VG 68", speed=[10.0, 100.0],
+    ...                      temperature=40.0, warn=False)
+    >>> r.total.shape
+    (3, 2)
+    >>> bool(np.all(np.diff(r.components["helix_slip"], axis=0) > 0.0))
+    True
+    """
+    screws = list(screws) if not isinstance(screws, BallScrew) else [screws]
+    if not screws:
+        raise BallScrewInputError("screws", screws, "a sequence of at least one BallScrew")
+    for i, screw in enumerate(screws):
+        if not isinstance(screw, BallScrew):
+            raise BallScrewInputError(f"screws[{i}]", screw, "a ballscrew.BallScrew")
+    lubricant, spec = _checked(screws[0], lubricant, model, parameters)
+    chunk = spec.chunk if chunk_size is None else chunk_size
+    if isinstance(chunk, bool) or not isinstance(chunk, int) or chunk < 1:
+        raise BallScrewInputError("chunk_size", chunk_size, "a whole number >= 1")
+    w0, t0, fa0 = operating_points(speed, temperature, axial_load, broadcast=False)
+    lubricant.check_temperature("temperature", t0)
+    n = len(screws)
+    per_screw = _paired_points(n, (w0, t0, fa0)) if paired else None
+    points_shape = np.broadcast_shapes(w0.shape, t0.shape, fa0.shape)
+    shape = points_shape if paired else (n, *points_shape)
+    used = dict(spec.parameters)
+    used.update(parameters)
+    total = np.empty(shape)
+    kept: dict[str, FloatArray] = {}
+    worst: dict[tuple[str, str], ValidityIssue] = {}
+    for i, screw in enumerate(screws):
+        points = (w0, t0, fa0) if per_screw is None else per_screw(i)
+        try:
+            out, total[i], _ = _evaluate(
+                spec, screw, lubricant, points, chunk, used, parameters, components
+            )
+        except BallScrewInputError as exc:
+            raise BallScrewInputError(f"screws[{i}]: {exc.field}", exc.value, exc.allowed) from None
+        for key, value in out.items():
+            if key not in kept:
+                kept[key] = np.zeros(shape)  # a component another screw lacks is 0 there
+            kept[key][i] = value
+        for issue in validity.check(screw, lubricant, *points, spec.name, used, spec.checks):
+            known = worst.get((issue.quantity, issue.model))
+            if known is None or issue.excess > known.excess:
+                worst[(issue.quantity, issue.model)] = issue
+    leads = np.array([s.lead for s in screws]).reshape((n,) + (1,) * (len(shape) - 1))
+    w, t, fa = (np.broadcast_to(x, shape) for x in (w0, t0, fa0))
+    efficiency, power_loss = _efficiency_and_power(total, w, fa, leads)
+    issues = list(worst.values())
+    if warn:
+        _warn(issues)
+    return FrictionResult(
+        model=spec.name,
+        total=total,
+        components=kept,
+        power_loss=power_loss,
+        efficiency=efficiency,
+        speed=w,
+        temperature=t,
+        axial_load=fa,
+        parameters=used,
+        warnings=tuple(issues),
+    )
+
+
+def _paired_points(
+    n: int, points: tuple[FloatArray, FloatArray, FloatArray]
+) -> Callable[[int], tuple[FloatArray, FloatArray, FloatArray]]:
+    """Screw ``i``'s own points: entry ``i`` (or the shared entry 0) of each input's first axis."""
+    ndim = max(1, *(x.ndim for x in points))
+    aligned = [x.reshape((1,) * (ndim - x.ndim) + x.shape) for x in points]
+    for name, x in zip(("speed", "temperature", "axial_load"), aligned, strict=True):
+        if x.shape[0] not in (1, n):
+            raise BallScrewInputError(
+                name,
+                f"an array of shape {x.shape}",
+                f"with paired=True, a first axis of length {n} (one entry per screw) or 1 "
+                "(shared by all)",
+            )
+
+    def own(i: int) -> tuple[FloatArray, FloatArray, FloatArray]:
+        w, t, fa = (x[i if x.shape[0] > 1 else 0] for x in aligned)
+        return w, t, fa
+
+    return own
+
+
+def _efficiency_and_power(
+    total: FloatArray, w: FloatArray, fa: FloatArray, lead: float | FloatArray
+) -> tuple[FloatArray, FloatArray]:
+    """Forward efficiency and power loss of torques ``total`` at speeds ``w`` and loads ``fa``."""
+    # useful / (useful + T): 0 where there is no load (and no division by 0 when T = 0
+    # too), computed in place: a large call holds no more full-size temporaries than needed.
+    efficiency = np.abs(fa, out=np.empty(total.shape))
+    efficiency *= np.asarray(lead) / (2.0 * math.pi)
+    denominator = np.add(efficiency, total, out=np.empty(total.shape))
+    np.maximum(denominator, np.finfo(float).tiny, out=denominator)
+    np.divide(efficiency, denominator, out=efficiency)
+    del denominator
+    power_loss = np.abs(w, out=np.empty(total.shape))
+    power_loss *= total
+    return efficiency, power_loss
 
 
 def _checked(

@@ -1,0 +1,141 @@
+"""Many screws in one call (issue 25): ``friction_torques`` is ``friction_torque`` per screw.
+
+The reference is independent of the batch: one ``friction_torque`` call per
+screw on the same points. The batch runs the same evaluation per screw, so the
+numbers are equal to the bit; the efficiency is recomputed with each screw's own
+lead, so it is held to 1e-15 (one rounding of the lead's broadcast product).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from ballscrew import BallScrew, friction_torque, friction_torques, reference_screw
+from ballscrew.errors import BallScrewInputError
+from shared import MINERAL, PAO
+
+RPM = math.pi / 30.0
+
+
+def _screws() -> list[BallScrew]:
+    base = reference_screw()
+    return [
+        base,
+        base.replace(lead=0.020, preload=1500.0),
+        base.replace(pitch_diameter=0.032, ball_diameter=5.556e-3, lead=0.005),
+        base.replace(nut="single-4point", preload=400.0),
+        base.replace(nut="single", preload=0.0, conformity_nut=0.53),
+    ]
+
+
+def _same(batch: np.ndarray, single: np.ndarray) -> None:
+    np.testing.assert_allclose(batch, single, rtol=1e-15, atol=0.0)
+
+
+@pytest.mark.parametrize("model", ["complete", "olaru", "catalog"])
+def test_every_screw_at_every_point_is_its_own_call(model: str) -> None:
+    speed = np.array([30.0, 300.0, 3000.0])[:, None] * RPM
+    load = np.linspace(-3000.0, 3000.0, 7)[None, :]
+    screws = _screws()
+    batch = friction_torques(
+        screws, MINERAL, speed=speed, temperature=35.0, axial_load=load, model=model, warn=False
+    )
+    assert batch.total.shape == (len(screws), 3, 7)
+    assert batch.speed.shape == batch.axial_load.shape == (len(screws), 3, 7)
+    for i, screw in enumerate(screws):
+        one = friction_torque(
+            screw, MINERAL, speed=speed, temperature=35.0, axial_load=load, model=model, warn=False
+        )
+        np.testing.assert_array_equal(batch.total[i], one.total)
+        for name, value in one.components.items():
+            np.testing.assert_array_equal(batch.components[name][i], value)
+        _same(batch.efficiency[i], one.efficiency)
+        _same(batch.power_loss[i], one.power_loss)
+    assert set(batch.components) == set(one.components)
+
+
+def test_a_component_one_screw_lacks_is_zero_there() -> None:
+    # Only the 4-point nut has the 4-point spin; the double nut's entry is 0, not garbage.
+    screws = [reference_screw(), reference_screw().replace(nut="single-4point", preload=400.0)]
+    batch = friction_torques(screws, MINERAL, speed=100.0, temperature=40.0, warn=False)
+    four = batch.components["four_point"]
+    assert four[0] == 0.0 and four[1] > 0.0
+    np.testing.assert_allclose(sum(batch.components.values()), batch.total, rtol=1e-14, atol=0.0)
+
+
+def test_paired_points_give_each_screw_its_own() -> None:
+    # A Monte Carlo sample: screw i at speed i and load i; the temperature shared by all.
+    rng = np.random.default_rng(8)
+    base = reference_screw()
+    screws = [base.replace(preload=p) for p in rng.uniform(1000.0, 3000.0, 6)]
+    speed, load = rng.uniform(10.0, 300.0, 6), rng.uniform(-2000.0, 2000.0, 6)
+    batch = friction_torques(
+        screws, PAO, speed=speed, temperature=40.0, axial_load=load, paired=True, warn=False
+    )
+    assert batch.total.shape == (6,)
+    for i, screw in enumerate(screws):
+        one = friction_torque(screw, PAO, speed=speed[i], temperature=40.0,
+                              axial_load=load[i], warn=False)  # fmt: skip
+        np.testing.assert_array_equal(batch.total[i], one.total)
+        _same(batch.efficiency[i], one.efficiency)
+    # Own speeds (6, 1) against loads shared by all (1, 4): a (6, 4) result.
+    grid = friction_torques(
+        screws, PAO, speed=speed[:, None], temperature=40.0,
+        axial_load=np.array([[-1e3, 0.0, 1e3, 2e3]]), paired=True, warn=False,
+    )  # fmt: skip
+    assert grid.total.shape == (6, 4)
+    one = friction_torque(screws[2], PAO, speed=speed[2], temperature=40.0,
+                          axial_load=[-1e3, 0.0, 1e3, 2e3], warn=False)  # fmt: skip
+    np.testing.assert_array_equal(grid.total[2], one.total)
+
+
+def test_paired_points_of_the_wrong_length_are_refused_by_name() -> None:
+    with pytest.raises(BallScrewInputError) as info:
+        friction_torques(
+            _screws(), PAO, speed=[10.0, 20.0], temperature=40.0, paired=True, warn=False
+        )
+    assert info.value.field == "speed"
+    assert "first axis of length 5" in str(info.value)
+
+
+def test_bad_screw_lists_are_refused_by_index() -> None:
+    with pytest.raises(BallScrewInputError) as info:
+        friction_torques([], PAO, speed=10.0, temperature=40.0)
+    assert info.value.field == "screws"
+    with pytest.raises(BallScrewInputError) as info:
+        friction_torques([reference_screw(), "40x10"], PAO, speed=10.0, temperature=40.0)  # type: ignore[list-item]
+    assert info.value.field == "screws[1]"
+    # One screw alone is a batch of one.
+    alone = friction_torques(reference_screw(), PAO, speed=10.0, temperature=40.0, warn=False)  # type: ignore[arg-type]
+    assert alone.total.shape == (1,)
+
+
+def test_a_point_one_screw_cannot_solve_names_the_screw() -> None:
+    # Past the viscoelastic model's equations (see test_absurd_inputs.py) for the second
+    # screw only: its index leads the field.
+    screws = [reference_screw(), reference_screw().replace(preload=0.0, nut="single")]
+    with pytest.raises(BallScrewInputError) as info:
+        friction_torques(screws, PAO, speed=[100.0, 9.99e4], temperature=40.0,
+                         model="viscoelastic", warn=False)  # fmt: skip
+    assert info.value.field.startswith("screws[")
+    assert "operating point" in info.value.field
+
+
+def test_warnings_keep_each_quantitys_worst_screw() -> None:
+    # Each screw's own call warns of its own extremes; the batch keeps, per quantity, the
+    # issue of the screw farthest outside the range.
+    screws = _screws()
+    kw = {"speed": 6000.0 * RPM, "temperature": 10.0, "axial_load": 20000.0, "warn": False}
+    batch = friction_torques(screws, MINERAL, **kw)  # type: ignore[arg-type]
+    singles = [friction_torque(s, MINERAL, **kw).warnings for s in screws]  # type: ignore[arg-type]
+    expected: dict[tuple[str, str], float] = {}
+    for issues in singles:
+        for issue in issues:
+            key = (issue.quantity, issue.model)
+            expected[key] = max(expected.get(key, -math.inf), issue.excess)
+    assert expected  # the points leave some range
+    got = {(i.quantity, i.model): i.excess for i in batch.warnings}
+    assert got == expected
