@@ -99,6 +99,7 @@ __all__ = [
     "SlipContact",
     "SlipShare",
     "ball_slip_balance",
+    "load_kernel",
     "transverse_slip_loss",
 ]
 
@@ -267,6 +268,17 @@ def _lookup_g(aspect: float, sigma: FloatArray) -> tuple[FloatArray, FloatArray]
     g, rise, _ = _on_table(g_nodes, sigma)
     slope: FloatArray = rise * (TABLE_NODES - 1) / (1.0 + sigma) ** 2
     return g, slope
+
+
+def load_kernel() -> bool:
+    """Load the compiled slip-share loop now; return whether it will be used.
+
+    Loading is numba's import and the kernel from its disk cache, or its compilation
+    the first time: 0.3 s to 2 s. For servers and workers that warm up before their
+    first request; without it the first call on :data:`JIT_MIN_POINTS` points or more
+    pays that time. False without numba or with ``BALLSCREW_JIT=0``.
+    """
+    return _helix_kernel.enabled()
 
 
 def _check_contacts(contacts: Sequence[SlipContact]) -> None:

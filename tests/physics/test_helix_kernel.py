@@ -143,3 +143,13 @@ def test_without_numba_many_points_take_the_numpy_path(monkeypatch: pytest.Monke
         _helix_kernel._compiled.cache_clear()
     np.testing.assert_array_equal(got.screw_share, expected.screw_share)
     np.testing.assert_array_equal(got.power, expected.power)
+
+
+def test_load_kernel_says_whether_the_compiled_loop_is_used(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    pytest.importorskip("numba")
+    monkeypatch.setenv("BALLSCREW_JIT", "1")
+    assert helix.load_kernel() is True
+    monkeypatch.setenv("BALLSCREW_JIT", "0")
+    assert helix.load_kernel() is False

@@ -29,6 +29,7 @@ from typing import Any
 import anyio
 
 from ..errors import BallScrewInputError, BallScrewSpeedWarning, BallScrewValidityWarning
+from ..helix import load_kernel
 from . import service
 from .inputs import ApiError, Limits
 
@@ -52,6 +53,7 @@ def _serve(conn: Connection) -> None:
     # before the worker says it is ready, so that no request pays for it.
     with contextlib.suppress(Exception):
         service.evaluate(service.WARM_UP, service.LIMITS)
+        load_kernel()  # the helix's compiled loop, for requests of many points
     conn.send(("ready",))
     while True:
         try:
