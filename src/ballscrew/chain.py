@@ -332,7 +332,7 @@ def _paired_points(
         if x.shape[0] not in (1, n):
             raise BallScrewInputError(
                 name,
-                f"an array of shape {x.shape}",
+                x,
                 f"with paired=True, a first axis of length {n} (one entry per screw) or 1 "
                 "(shared by all)",
             )
