@@ -280,7 +280,11 @@ def friction_torques(
     n = len(screws)
     per_screw = _paired_points(n, (w0, t0, fa0)) if paired else None
     points_shape = np.broadcast_shapes(w0.shape, t0.shape, fa0.shape)
-    shape = points_shape if paired else (n, *points_shape)
+    if paired:  # the points' first axis is the screws' (values shared by all broadcast)
+        ndim = max(1, len(points_shape))
+        shape = np.broadcast_shapes((n,) + (1,) * (ndim - 1), points_shape)
+    else:
+        shape = (n, *points_shape)
     used = dict(spec.parameters)
     used.update(parameters)
     total = np.empty(shape)

@@ -92,6 +92,22 @@ def test_paired_points_give_each_screw_its_own() -> None:
     np.testing.assert_array_equal(grid.total[2], one.total)
 
 
+def test_paired_points_shared_by_all_screws_give_one_value_per_screw() -> None:
+    # Every input a single value with paired=True: each screw at that one point.
+    screws = _screws()[:3]
+    batch = friction_torques(screws, PAO, speed=50.0, temperature=40.0, paired=True, warn=False)
+    assert batch.total.shape == (3,)
+    for i, screw in enumerate(screws):
+        one = friction_torque(screw, PAO, speed=50.0, temperature=40.0, warn=False)
+        np.testing.assert_array_equal(batch.total[i], one.total)
+    # A first axis of 1 shared by all, against the screws' own speeds: (3, 2).
+    own = friction_torques(screws, PAO, speed=[[10.0], [20.0], [30.0]],
+                           temperature=[[30.0, 50.0]], paired=True, warn=False)  # fmt: skip
+    assert own.total.shape == (3, 2)
+    one = friction_torque(screws[1], PAO, speed=20.0, temperature=[30.0, 50.0], warn=False)
+    np.testing.assert_array_equal(own.total[1], one.total)
+
+
 def test_paired_points_of_the_wrong_length_are_refused_by_name() -> None:
     with pytest.raises(BallScrewInputError) as info:
         friction_torques(
