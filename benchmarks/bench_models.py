@@ -366,14 +366,17 @@ def main() -> None:
     )
     parser.add_argument("--json", type=Path, help="write this run's figures to this file")
     parser.add_argument(
-        "--baseline", type=Path, default=BASELINE, help="the figures to give ratios against"
+        "--baseline",
+        type=Path,
+        default=BASELINE,
+        help="the figures to give ratios against ('none': no ratios)",
     )
     parser.add_argument(
         "--readme", action="store_true",
         help="write the performance table of README.md and docs/guide.md from this run",
     )  # fmt: skip
     args = parser.parse_args()
-    if args.baseline and args.baseline.exists():
+    if str(args.baseline) not in ("", "none") and args.baseline.is_file():
         _BASE.update(json.loads(args.baseline.read_text(encoding="utf-8")))
 
     points = {
