@@ -416,3 +416,34 @@ def test_tables_across_aspects_match_tables_built_at_the_aspect() -> None:
     np.testing.assert_array_equal(helix._tables(node)[2], helix._exact_tables(node)[1])
     for outside in (1.3, 0.0199):
         np.testing.assert_array_equal(helix._tables(outside)[1], helix._exact_tables(outside)[0])
+
+
+def test_a_new_aspect_costs_only_the_node_tables_around_it(monkeypatch: pytest.MonkeyPatch) -> None:
+    # ASPECT_NODES: a new screw costs no table of its own, only the nodes around its
+    # contacts' aspects. From 0.02 to 1 (both included) every table the quadrature builds
+    # is a node's, at k / (ASPECT_NODES - 1) inside [0, 1], four at most (the cubic's
+    # stencil; one on a node). The nodes are multiples of a power of two apart: 1e-9 only
+    # allows for the rounding of k.
+    from ballscrew import helix
+
+    built: list[float] = []
+    real = helix._exact_tables
+
+    def spy(aspect: float) -> tuple[np.ndarray, np.ndarray]:
+        built.append(aspect)
+        return real(aspect)
+
+    monkeypatch.setattr(helix, "_exact_tables", spy)
+    try:
+        for aspect in (0.02, 0.021, 0.3131, 0.999, 1.0):
+            built.clear()
+            helix._tables.cache_clear()
+            helix._node_tables.cache_clear()
+            helix._tables(aspect)
+            assert 1 <= len(built) <= 4, aspect
+            for node in built:
+                k = node * (helix.ASPECT_NODES - 1)
+                assert abs(k - round(k)) < 1e-9 and 0.0 <= node <= 1.0, (aspect, node)
+    finally:
+        helix._tables.cache_clear()
+        helix._node_tables.cache_clear()
