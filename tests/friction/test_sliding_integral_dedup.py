@@ -149,3 +149,15 @@ def test_chebyshev_along_kappa_is_the_direct_rule(aspect: float, span: tuple[flo
     got = module._unique_integral(wide, np.full_like(wide, aspect))
     np.testing.assert_allclose(got, rl.spin_sliding_integral(wide, aspect), rtol=2e-4)
     assert np.max(np.abs(got / rl.spin_sliding_integral(wide, aspect) - 1.0)) > 1e-12
+
+
+@pytest.mark.parametrize("spread", [1e-14, 0.2])
+def test_one_kappa_over_many_aspects_is_the_direct_rule(spread: float) -> None:
+    # More distinct aspects than DIRECT_INTEGRALS at a single kappa (within 1e-12 of each
+    # other, taken as one aspect, or spread over 0.1 to 0.3): no kappa span to interpolate
+    # over, so the integral is the direct rule at every point (1e-13, RTOL).
+    aspect = 0.1 + spread * np.linspace(0.0, 1.0, 3 * module.DIRECT_INTEGRALS)
+    for k in (0.3, 0.7):
+        kappa = np.full_like(aspect, k)
+        got = module._unique_integral(kappa, aspect)
+        np.testing.assert_allclose(got, rl.spin_sliding_integral(kappa, aspect), rtol=RTOL)
