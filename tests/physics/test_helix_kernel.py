@@ -98,7 +98,7 @@ def test_python_kernel_takes_the_numpy_paths_steps_towards_coulomb_sliding(
     rng = np.random.default_rng(9)
     n = 60
     contacts = []
-    for side, spin in zip(("screw", "nut"), spins, strict=True):
+    for side, spin in (("screw", spins[0]), ("nut", spins[1])):
         load = rng.uniform(1.0, 400.0, n)
         semi = 0.26e-3 * (load / 30.0) ** (1 / 3)
         contacts.append(SlipContact(side, rng.uniform(0.03, 0.12, n), load, semi, 0.2, spin))
