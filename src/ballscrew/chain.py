@@ -235,7 +235,7 @@ def friction_torques(
         ``(len(screws), *P)``. True: each screw at its own points; the first
         axis of the points is the screw axis (length ``len(screws)``, or 1 for
         a value shared by all), and the results have the points' broadcast
-        shape.
+        shape, with ``len(screws)`` on that axis (also when every value is shared).
 
     Returns
     -------
@@ -280,11 +280,8 @@ def friction_torques(
     n = len(screws)
     per_screw = _paired_points(n, (w0, t0, fa0)) if paired else None
     points_shape = np.broadcast_shapes(w0.shape, t0.shape, fa0.shape)
-    if paired:  # the points' first axis is the screws' (values shared by all broadcast)
-        ndim = max(1, len(points_shape))
-        shape = np.broadcast_shapes((n,) + (1,) * (ndim - 1), points_shape)
-    else:
-        shape = (n, *points_shape)
+    # Paired, the points' first axis is the screws' (or absent, or 1: shared by all).
+    shape = (n, *points_shape[1:]) if paired else (n, *points_shape)
     used = dict(spec.parameters)
     used.update(parameters)
     total = np.empty(shape)

@@ -155,3 +155,51 @@ def test_warnings_keep_each_quantitys_worst_screw() -> None:
     assert expected  # the points leave some range
     got = {(i.quantity, i.model): i.excess for i in batch.warnings}
     assert got == expected
+
+
+def test_paired_points_shared_by_all_screws_give_one_entry_per_screw() -> None:
+    # Paired, with no input carrying the screw axis (scalars, or a first axis of 1, "shared
+    # by all"): every screw at the same point, one entry each, as its own call gives.
+    screws = _screws()
+    for speed in (100.0, [100.0]):
+        batch = friction_torques(
+            screws, PAO, speed=speed, temperature=40.0, axial_load=500.0, paired=True, warn=False
+        )
+        assert batch.total.shape == batch.efficiency.shape == (len(screws),)
+        for i, screw in enumerate(screws):
+            one = friction_torque(screw, PAO, speed=100.0, temperature=40.0, axial_load=500.0,
+                                  warn=False)  # fmt: skip
+            np.testing.assert_array_equal(batch.total[i], one.total)
+            _same(batch.efficiency[i], one.efficiency)
+    # Shared along the first axis, own points along the second: (screws, 3).
+    grid = friction_torques(
+        screws, PAO, speed=[[10.0, 100.0, 300.0]], temperature=40.0, paired=True, warn=False
+    )
+    assert grid.total.shape == (len(screws), 3)
+    one = friction_torque(screws[3], PAO, speed=[10.0, 100.0, 300.0], temperature=40.0,
+                          warn=False)  # fmt: skip
+    np.testing.assert_allclose(grid.total[3], one.total, rtol=1e-12, atol=0.0)
+
+
+def test_without_an_axial_load_there_is_none() -> None:
+    # The axial load defaults to 0 N, as for one screw: no useful work, efficiency 0, and
+    # the torque of the unloaded (preloaded) nut.
+    batch = friction_torques(_screws(), PAO, speed=[10.0, 100.0], temperature=40.0, warn=False)
+    assert np.all(batch.axial_load == 0.0) and np.all(batch.efficiency == 0.0)
+    one = friction_torque(_screws()[1], PAO, speed=[10.0, 100.0], temperature=40.0,
+                          axial_load=0.0, warn=False)  # fmt: skip
+    np.testing.assert_array_equal(batch.total[1], one.total)
+
+
+def test_chunks_of_one_point_give_the_same_torques_and_none_is_refused() -> None:
+    # A chunk bounds the points evaluated at once, down to one; the torques do not depend
+    # on it. Not to the bit: the helix's share is solved by the plain-Python kernel for a
+    # few points and by the numpy path for more, equal to 1e-12 (test_helix_kernel.py).
+    kw = {"speed": [10.0, 100.0, 300.0, 600.0, 900.0], "temperature": 40.0, "warn": False}
+    whole = friction_torques(_screws(), PAO, **kw)  # type: ignore[arg-type]
+    single = friction_torques(_screws(), PAO, chunk_size=1, **kw)  # type: ignore[arg-type]
+    np.testing.assert_allclose(single.total, whole.total, rtol=1e-12, atol=0.0)
+    for bad in (0, -1, 2.5, True):
+        with pytest.raises(BallScrewInputError) as info:
+            friction_torques(_screws(), PAO, chunk_size=bad, **kw)  # type: ignore[arg-type]
+        assert info.value.field == "chunk_size"

@@ -108,18 +108,20 @@ def test_torques_equal_the_row_wise_algorithm(kind: str, monkeypatch: pytest.Mon
     assert math.isfinite(float(np.max(new.total)))
 
 
-def test_exactly_direct_integrals_pairs_are_integrated_directly() -> None:
+@pytest.mark.parametrize("span", [(0.2, 0.5), (0.6, 1.2)])
+def test_exactly_direct_integrals_pairs_are_integrated_directly(span: tuple[float, float]) -> None:
     # "Up to DIRECT_INTEGRALS distinct pairs" includes the bound: exactly that many distinct
     # contact sizes at one aspect, repeated so that the 1-D prefix looked at first holds all of
     # them too, are the direct rule at every point; one more pair takes the spline, as the
-    # row-wise algorithm does.
+    # row-wise algorithm does. Past SMOOTH_KAPPA (0.6 to 1.2) the interpolation would err by
+    # far more than 1e-13 (the spline's 1e-8), so only the direct rule passes there.
     n = module.DIRECT_INTEGRALS
-    kappa = np.tile(np.linspace(0.2, 0.5, n), 5)
+    kappa = np.tile(np.linspace(*span, n), 5)
     assert kappa.size > 4 * n
     aspect = np.full_like(kappa, 0.2)
     got = module._unique_integral(kappa, aspect)
     np.testing.assert_allclose(got, rl.spin_sliding_integral(kappa, aspect), rtol=RTOL)
-    more = np.append(kappa, 0.35 + 1e-6)
+    more = np.append(kappa, 0.5 * (span[0] + span[1]) + 1e-6)
     aspect = np.full_like(more, 0.2)
     got = module._unique_integral(more, aspect)
     np.testing.assert_allclose(got, _row_wise_unique_integral(more, aspect), rtol=RTOL)
@@ -147,3 +149,15 @@ def test_chebyshev_along_kappa_is_the_direct_rule(aspect: float, span: tuple[flo
     got = module._unique_integral(wide, np.full_like(wide, aspect))
     np.testing.assert_allclose(got, rl.spin_sliding_integral(wide, aspect), rtol=2e-4)
     assert np.max(np.abs(got / rl.spin_sliding_integral(wide, aspect) - 1.0)) > 1e-12
+
+
+@pytest.mark.parametrize("spread", [1e-14, 0.2])
+def test_one_kappa_over_many_aspects_is_the_direct_rule(spread: float) -> None:
+    # More distinct aspects than DIRECT_INTEGRALS at a single kappa (within 1e-12 of each
+    # other, taken as one aspect, or spread over 0.1 to 0.3): no kappa span to interpolate
+    # over, so the integral is the direct rule at every point (1e-13, RTOL).
+    aspect = 0.1 + spread * np.linspace(0.0, 1.0, 3 * module.DIRECT_INTEGRALS)
+    for k in (0.3, 0.7):
+        kappa = np.full_like(aspect, k)
+        got = module._unique_integral(kappa, aspect)
+        np.testing.assert_allclose(got, rl.spin_sliding_integral(kappa, aspect), rtol=RTOL)

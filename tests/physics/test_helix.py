@@ -150,6 +150,27 @@ def test_coulomb_limit_holds_however_small_the_spin() -> None:
     assert 0.08 * 30.0 * (1 - 1e-12) <= float(r.force) <= 0.1 * 30.0 * (1 + 1e-12)
 
 
+@pytest.mark.parametrize("points", [1, 256])
+@pytest.mark.parametrize("spin", [1e-20, 1e-200])
+def test_coulomb_limit_with_exact_capacities_and_overflowing_slip_ratios(
+    points: int, spin: float
+) -> None:
+    # The Coulomb limit again, with capacities exact in binary (0.125 x 24 N = 3 N on the
+    # screw, 0.125 x 16 N = 2 N on the nut): fully sliding, the residual is 3 N - 2 N = 1 N
+    # exactly, which must not stop the solver. With a spin of 1e-200 the slip ratios pass
+    # 1e154, where (1 + sigma)^2 overflows to infinity (ignored here: it is meant to) and
+    # the residual's slope vanishes: the solver must bisect. One point (the kernel as plain
+    # Python) and 256 (compiled, with numba). Tolerances as in the test above: the nut takes
+    # the slip to 1e-8 and dissipates 2 N x slip to 1e-8.
+    contacts = [SlipContact("screw", np.full(points, 0.125), 24.0, 0.26e-3, 0.2, spin),
+                SlipContact("nut", 0.125, 16.0, 0.26e-3, 0.2, spin)]  # fmt: skip
+    with np.errstate(over="ignore"):
+        r = transverse_slip_loss(contacts, 2.5e-4)
+    np.testing.assert_allclose(r.screw_share, 0.0, rtol=0.0, atol=1e-8)
+    np.testing.assert_allclose(r.power, 2.0 * 2.5e-4, rtol=1e-8)
+    assert np.all((2.0 <= r.force) & (r.force <= 3.0 * (1 + 1e-12)))
+
+
 @pytest.mark.parametrize("spins", [(0.35, 0.30), (0.02, 0.05), (1e-3, 2e-3), (5e-3, 2e-3)])
 def test_contacts_equal_but_for_their_spin_share_at_equal_slip_ratios(
     spins: tuple[float, float],
@@ -182,16 +203,17 @@ def test_contacts_equal_but_for_their_spin_share_at_equal_slip_ratios(
 def test_share_does_not_depend_on_the_force_scale() -> None:
     # The balance mu Q_s G(sigma_s) = mu Q_n G(sigma_n) is homogeneous in the loads (the
     # semi-axes, hence the slip ratios, held): scaling both loads by 1e-6 (a ball near
-    # lift-off) or 1e4 leaves the share, and scales the power and the force by the same
-    # factor. The solver's force tolerance is relative to mu Q, so the scaled problems take
-    # the same steps: equal to rounding, 1e-9 allowed.
+    # lift-off), 1e-12 or 1e4 leaves the share, and scales the power and the force by the
+    # same factor. The solver's force tolerance is relative to mu Q (1e-9 of 5 pN at 1e-12,
+    # no absolute floor), so the scaled problems take the same steps: equal to rounding,
+    # 1e-9 allowed.
     def pair(scale: float) -> list[SlipContact]:
         return [SlipContact("screw", 0.092, 30.0 * scale, 0.26e-3, 0.19, 0.39),
                 SlipContact("nut", 0.080, 30.0 * scale, 0.25e-3, 0.22, 0.31)]  # fmt: skip
 
     base = transverse_slip_loss(pair(1.0), 1e-4)
     assert 0.05 < float(base.screw_share) < 0.95
-    for scale in (1e-6, 1e4):
+    for scale in (1e-12, 1e-6, 1e4):
         r = transverse_slip_loss(pair(scale), 1e-4)
         assert float(r.screw_share) == pytest.approx(float(base.screw_share), abs=1e-9)
         assert float(r.power) == pytest.approx(scale * float(base.power), rel=1e-9)
@@ -394,3 +416,34 @@ def test_tables_across_aspects_match_tables_built_at_the_aspect() -> None:
     np.testing.assert_array_equal(helix._tables(node)[2], helix._exact_tables(node)[1])
     for outside in (1.3, 0.0199):
         np.testing.assert_array_equal(helix._tables(outside)[1], helix._exact_tables(outside)[0])
+
+
+def test_a_new_aspect_costs_only_the_node_tables_around_it(monkeypatch: pytest.MonkeyPatch) -> None:
+    # ASPECT_NODES: a new screw costs no table of its own, only the nodes around its
+    # contacts' aspects. From 0.02 to 1 (both included) every table the quadrature builds
+    # is a node's, at k / (ASPECT_NODES - 1) inside [0, 1], four at most (the cubic's
+    # stencil; one on a node). The nodes are multiples of a power of two apart: 1e-9 only
+    # allows for the rounding of k.
+    from ballscrew import helix
+
+    built: list[float] = []
+    real = helix._exact_tables
+
+    def spy(aspect: float) -> tuple[np.ndarray, np.ndarray]:
+        built.append(aspect)
+        return real(aspect)
+
+    monkeypatch.setattr(helix, "_exact_tables", spy)
+    try:
+        for aspect in (0.02, 0.021, 0.3131, 0.999, 1.0):
+            built.clear()
+            helix._tables.cache_clear()
+            helix._node_tables.cache_clear()
+            helix._tables(aspect)
+            assert 1 <= len(built) <= 4, aspect
+            for node in built:
+                k = node * (helix.ASPECT_NODES - 1)
+                assert abs(k - round(k)) < 1e-9 and 0.0 <= node <= 1.0, (aspect, node)
+    finally:
+        helix._tables.cache_clear()
+        helix._node_tables.cache_clear()

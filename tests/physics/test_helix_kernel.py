@@ -58,6 +58,57 @@ def test_python_kernel_takes_the_numpy_paths_steps(
         assert np.any((x > 0.01) & (x < 0.99))
 
 
+def _python_kernel(contacts: list[SlipContact], slip: float, evaluations: int) -> np.ndarray:
+    """The kernel's shares as plain Python, stopped after ``evaluations`` residuals at most."""
+    n = np.size(contacts[0].load)
+    x, power, force = np.empty(n), np.empty(n), np.empty(n)
+    args = helix._kernel_inputs(contacts, slip)
+    _helix_kernel.shares(*args, helix.SHARE_TOLERANCE, evaluations, x, power, force)
+    return x
+
+
+@pytest.mark.parametrize("evaluations", [0, 1, 2, 3, 5])
+@pytest.mark.parametrize("four_point", [False, True])
+def test_python_kernel_takes_the_numpy_paths_steps_one_at_a_time(
+    monkeypatch: pytest.MonkeyPatch, four_point: bool, evaluations: int
+) -> None:
+    # Converged, a kernel that started elsewhere or stepped otherwise would still land on
+    # the same root. Stopped after a few residual evaluations, both paths return their last
+    # trial: with none, the start (where the straight line between the residuals at the
+    # ends of [0, 1] crosses zero); then each Newton step or bisection. The same steps give
+    # the same trials to rounding at every stage: 1e-12, as above.
+    contacts = _random_contacts(60, four_point)
+    _numpy_path(monkeypatch)
+    monkeypatch.setattr(helix, "MAX_ITERATIONS", evaluations)
+    for slip in (2e-5, 2.5e-4, 3e-3):
+        expected = transverse_slip_loss(contacts, slip)
+        x = _python_kernel(contacts, slip, evaluations)
+        np.testing.assert_allclose(x, expected.screw_share, rtol=0.0, atol=ROUNDING)
+
+
+@pytest.mark.parametrize("spins", [(1e-10, 0.3), (0.3, 1e-10), (1e-6, 1e-14), (1e-20, 1e-20)])
+def test_python_kernel_takes_the_numpy_paths_steps_towards_coulomb_sliding(
+    monkeypatch: pytest.MonkeyPatch, spins: tuple[float, float]
+) -> None:
+    # A spin far below the slip (slip ratios up to 1e20): the residual turns into a step,
+    # which both paths bisect until the bracket is narrower than the tolerance, and the
+    # weaker contact's share lies within 1e-9 of 0 or 1, where a Newton step can fall
+    # below the rounding of the share. Both stopping rules, and the step that rounds away,
+    # must be the numpy path's: the same shares to rounding (1e-12).
+    rng = np.random.default_rng(9)
+    n = 60
+    contacts = []
+    for side, spin in (("screw", spins[0]), ("nut", spins[1])):
+        load = rng.uniform(1.0, 400.0, n)
+        semi = 0.26e-3 * (load / 30.0) ** (1 / 3)
+        contacts.append(SlipContact(side, rng.uniform(0.03, 0.12, n), load, semi, 0.2, spin))
+    _numpy_path(monkeypatch)
+    expected = transverse_slip_loss(contacts, 2.5e-4)
+    x = _python_kernel(contacts, 2.5e-4, helix.MAX_ITERATIONS)
+    np.testing.assert_allclose(x, expected.screw_share, rtol=0.0, atol=ROUNDING)
+    assert min(x.min(), 1.0 - x.max()) < 1e-8  # the Coulomb end reached
+
+
 @pytest.mark.parametrize("four_point", [False, True])
 def test_compiled_kernel_equals_the_numpy_path_on_10000_balls(
     monkeypatch: pytest.MonkeyPatch, four_point: bool

@@ -245,6 +245,9 @@ def _interpolated_integral(kappa: FloatArray, aspect: FloatArray) -> FloatArray:
 
     k_lo, k_hi = float(kappa.min()), float(kappa.max())
     b_lo, b_hi = float(aspect.min()), float(aspect.max())
+    if k_hi == k_lo:  # one kappa: no span to interpolate over; the rule at every point
+        direct: FloatArray = rl.spin_sliding_integral(kappa, aspect)
+        return direct
     one_aspect = b_hi - b_lo <= 1e-12 * b_hi
     if one_aspect and k_hi <= SMOOTH_KAPPA and k_hi > k_lo:
         # Chebyshev interpolation over the points' span (numpy's chebinterpolate).
