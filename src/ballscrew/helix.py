@@ -323,13 +323,22 @@ def _stacked(
     """
     stacked_scale = np.stack(scale)
     per_share = slip / np.where(stacked_scale > 0.0, stacked_scale, np.inf)
+    sides, g_nodes, j_nodes = _stacked_tables(
+        tuple(c.side == "screw" for c in contacts), tuple(c.aspect for c in contacts)
+    )
+    return np.stack(capacity), per_share, stacked_scale, sides, g_nodes, j_nodes
+
+
+@functools.lru_cache(maxsize=64)
+def _stacked_tables(
+    sides: tuple[bool, ...], aspects: tuple[float, ...]
+) -> tuple[FloatArray, FloatArray, FloatArray]:
+    """The contacts' sides (True: screw) and their G and J tables, stacked by contact (kept)."""
+    tables = [_tables(a) for a in aspects]
     return (
-        np.stack(capacity),
-        per_share,
-        stacked_scale,
-        np.array([c.side == "screw" for c in contacts]),
-        np.stack([_tables(c.aspect)[2] for c in contacts]),
-        np.stack([_tables(c.aspect)[1] for c in contacts]),
+        np.array(sides),
+        np.stack([g for _, _, g in tables]),
+        np.stack([j for _, j, _ in tables]),
     )
 
 
