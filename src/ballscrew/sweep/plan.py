@@ -290,7 +290,8 @@ def compute_chunk(plan: Plan, index: int) -> tuple[dict[str, FloatArray], ChunkR
         )
         r = friction_torque(
             screw, lubricant, speed=w[:, None, None], temperature=t[None, :, None],
-            axial_load=f[None, None, :], model=model, warn=False, **params,
+            axial_load=f[None, None, :], model=model, warn=False,
+            chunk_size=max(len(w) * len(t) * len(f), 1), **params,
         )  # fmt: skip
         for o in asked:
             assert o.read is not None

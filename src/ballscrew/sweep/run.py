@@ -29,6 +29,7 @@ import numpy as np
 from ..errors import BallScrewInputError
 from ..extras import require
 from ..files import OutputInUseError, exclusive_lock
+from ..helix import load_kernel
 from .plan import ChunkReport, Plan, plan_sweep, run_chunk
 from .spec import OPERATING, SweepSpec
 
@@ -249,6 +250,13 @@ def _run(
     )
 
 
+def _warm_up() -> None:
+    """What a worker's first chunk would load: Zarr, and the helix's compiled loop."""
+    import zarr  # noqa: F401
+
+    load_kernel()
+
+
 def _distributed(
     plan: Plan, todo: Sequence[int], store: str, key: str, workers: int | None,
     scheduler: str | None, ready: list[float],
@@ -286,6 +294,10 @@ def _distributed(
             )  # fmt: skip
             client = stack.enter_context(Client(cluster))
         shared = client.scatter(plan, broadcast=True)
+        # Each worker imports Zarr and loads the helix's compiled loop now, with the
+        # cluster's start-up, not in its first chunk (0.5 s to 1 s: a tenth of a 2e7-point
+        # sweep on 2 workers).
+        client.run(_warm_up)
         ready[0] = time.perf_counter()
         threads = max(1, sum(client.nthreads().values()))
         window = 4 * threads
