@@ -25,6 +25,7 @@ References
 
 from __future__ import annotations
 
+import functools
 import re
 from dataclasses import dataclass, fields, replace
 from typing import Any, Literal, get_args
@@ -627,12 +628,18 @@ class Lubricant:
                 )
         return replace(self, **changes)
 
+    @functools.cached_property
+    def _fit(self) -> tuple[FloatArray, FloatArray]:
+        """The viscosity-temperature fit's two constants, computed once (the oil is immutable)."""
+        if self.viscosity_model == "vogel":
+            return vogel_constants(self.nu40, 40.0, self.nu100, 100.0)
+        return astm_d341_constants(self.nu40, 40.0, self.nu100, 100.0)
+
     def kinematic_viscosity(self, temperature: ArrayLike) -> FloatArray:
         """Kinematic viscosity at ambient pressure [m²/s] at ``temperature`` [°C]."""
+        a, b = self._fit
         if self.viscosity_model == "vogel":
-            a, b = vogel_constants(self.nu40, 40.0, self.nu100, 100.0)
             return vogel_viscosity(temperature, a, b)
-        a, b = astm_d341_constants(self.nu40, 40.0, self.nu100, 100.0)
         return astm_d341_viscosity(temperature, a, b)
 
     def check_temperature(self, field: str, temperature: ArrayLike) -> FloatArray:
