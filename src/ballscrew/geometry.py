@@ -34,6 +34,7 @@ References
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass, fields, replace
 from typing import Any, Literal, get_args
@@ -382,7 +383,7 @@ class BallScrew:
         f = self.conformity_nut
         return 2.0 * f * self.ball_diameter / (2.0 * f + 1.0)
 
-    @property
+    @functools.cached_property
     def reduced_modulus(self) -> float:
         """Reduced modulus :math:`E'` of ball against screw and nut [Pa]."""
         return float(
@@ -394,12 +395,12 @@ class BallScrew:
             )
         )
 
-    @property
+    @functools.cached_property
     def composite_roughness_screw(self) -> float:
         r"""Composite RMS roughness at the screw, :math:`\sqrt{\sigma_b^2+\sigma_s^2}` [m]."""
         return float(composite_roughness(self.roughness_ball, self.roughness_screw))
 
-    @property
+    @functools.cached_property
     def composite_roughness_nut(self) -> float:
         r"""Composite RMS roughness, ball-nut contact, :math:`\sqrt{\sigma_b^2+\sigma_n^2}` [m]."""
         return float(composite_roughness(self.roughness_ball, self.roughness_nut))
