@@ -430,8 +430,10 @@ def _evaluate(
         total = np.zeros(shape)
         for value in out.values():
             total += value
-        kept = {k: np.array(np.broadcast_to(v, shape), dtype=float) for k, v in out.items()}
-        return (kept if keep else {}), total, state
+        # The model's components come broadcast to the points' shape (ModelSpec.__call__):
+        # kept as arrays of their own, only when asked for.
+        kept = {k: np.array(v, dtype=float) for k, v in out.items()} if keep else {}
+        return kept, total, state
     views = np.broadcast_arrays(w0, t0, fa0)
     flat_total = np.zeros(n)
     kept = {}
