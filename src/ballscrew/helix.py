@@ -63,8 +63,8 @@ Two evaluations, which the tests hold against each other:
   (it adds 0.03 % to the spin of ball screw contacts), the balance solved by
   Newton's method kept in a bracket, for all points at once (from
   :data:`JIT_MIN_POINTS` points on, by a compiled loop when numba is
-  installed, ``pip install 'ballscrew[fast]'``: the same steps, about 4.5
-  times faster on 1e5 scattered points). Against the reference it
+  installed, ``pip install 'ballscrew[fast]'``: the same steps, about 4
+  times faster on 1e5 scattered balls). Against the reference it
   agrees within 0.6 % on the power (40 x 5 mm; 0.02 % at 40 x 40 mm) and
   0.007 on the share of the slip, nearly all of it from the Heathcote term
   (without it the two agree to 1e-6) (``tests/physics/test_helix.py``).
