@@ -260,9 +260,7 @@ def simplified_contact_force(
                 eyring_stress,
             )
         )
-    # The mean of tau over the disk, 2 ∫ tau(p0 s) s ds: a sum numpy does itself (a BLAS
-    # product would wake OpenBLAS's threads, whose spinning costs CPU time and gains nothing).
-    lub_integral = np.einsum("...j,j->...", tau, ws)
+    lub_integral = tau @ ws  # mean of tau over the disk: 2 ∫ tau(p0 s) s ds
     asperity = sliding_coefficient * share * mu0 * load
     lubricant = (1.0 - share) * area * lub_integral
     if sliding_sign_on_lubricant:
