@@ -139,10 +139,23 @@ def test_every_model_finite_positive_and_monotonic_in_preload(
     r = ballscrew.friction_torque(screw, oil, **kw)  # type: ignore[arg-type]
     assert math.isfinite(float(r.total)) and float(r.total) >= 0.0
     more = ballscrew.friction_torque(screw.replace(preload=1.5 * screw.preload), oil, **kw)  # type: ignore[arg-type]
+    # The complete model's recirculation push does not grow with the preload (the return's
+    # ball inertia sets it), and the loaded balls slide it along at the ball-ball
+    # coefficient, which moves either way with the train force (limiting shear tau0/p
+    # falls over a harder-pressed contact, the film share changes): at high speed on a
+    # lightly preloaded screw, where it is nearly all the torque, its fall can outweigh the
+    # rise of the rest (hypothesis found 4.45514 -> 4.45513 N*m at 2950 rpm, 100 N on a
+    # 78 mm screw). The claim is on the rest, the mechanisms the preload loads.
+    recirculation = (
+        (float(r.components["recirculation"]), float(more.components["recirculation"]))
+        if model == "complete"
+        else (0.0, 0.0)
+    )
+    rest, rest_more = float(r.total) - recirculation[0], float(more.total) - recirculation[1]
     if abs(c["axial"]) < 2.8 * c["preload"]:  # type: ignore[operator]
-        assert float(more.total) > float(r.total)
+        assert rest_more > rest
     else:  # past lift-off the preload no longer acts: equal (never smaller)
-        assert float(more.total) >= float(r.total) * (1 - 1e-12)
+        assert rest_more >= rest * (1 - 1e-12)
     listed = ballscrew.friction_torque(
         screw,
         oil,
