@@ -163,9 +163,14 @@ def shares(
             force[p] = side_force
 
 
-def enabled() -> bool:
-    """Whether the compiled kernel is to be used: numba installed and not switched off."""
+def enabled(*, load: bool = True) -> bool:
+    """Whether the compiled kernel is to be used: numba installed and not switched off.
+
+    With ``load=False``, only if this process has loaded it already (no import of numba).
+    """
     if os.environ.get("BALLSCREW_JIT", "1").strip().lower() in ("0", "false", "no", "off"):
+        return False
+    if not load and _compiled.cache_info().currsize == 0:
         return False
     return _compiled() is not None
 

@@ -26,6 +26,7 @@ from .errors import (
 )
 from .friction import MODELS, ModelSpec, get_model
 from .geometry import BallScrew
+from .helix import JIT_LOAD_POINTS, load_kernel
 from .lubricant import Lubricant
 from .state import OperatingState, operating_points, operating_state
 from .validity import ValidityIssue
@@ -284,6 +285,8 @@ def friction_torques(
     shape = (n, *points_shape[1:]) if paired else (n, *points_shape)
     used = dict(spec.parameters)
     used.update(parameters)
+    if math.prod(shape) >= JIT_LOAD_POINTS:
+        load_kernel()  # many points in all, though few a screw: the helix's compiled loop
     total = np.empty(shape)
     kept: dict[str, FloatArray] = {}
     worst: dict[tuple[str, str], ValidityIssue] = {}

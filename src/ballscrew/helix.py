@@ -61,10 +61,11 @@ Two evaluations, which the tests hold against each other:
   shape (:math:`\beta = b/a` depends on the groove geometry, not on the load)
   over :math:`\sigma/(1+\sigma)`, Heathcote sliding left out of the increment
   (it adds 0.03 % to the spin of ball screw contacts), the balance solved by
-  Newton's method kept in a bracket, for all points at once (from
-  :data:`JIT_MIN_POINTS` points on, by a compiled loop when numba is
-  installed, ``pip install 'ballscrew[fast]'``: the same steps, about 4
-  times faster on 1e5 scattered balls). Against the reference it
+  Newton's method kept in a bracket, for all points at once (with numba
+  installed, ``pip install 'ballscrew[fast]'``, by a compiled loop: the same
+  steps, about 4 times faster on 1e5 scattered balls, from
+  :data:`JIT_MIN_POINTS` points on once the process has loaded it, which a
+  call on :data:`JIT_LOAD_POINTS` points or :func:`load_kernel` does). Against the reference it
   agrees within 0.6 % on the power (40 x 5 mm; 0.02 % at 40 x 40 mm) and
   0.007 on the share of the slip, nearly all of it from the Heathcote term
   (without it the two agree to 1e-6) (``tests/physics/test_helix.py``).
@@ -133,8 +134,15 @@ a few points): the same steps, without a compiler."""
 
 JIT_MIN_POINTS: int = 256
 """Points from which :func:`transverse_slip_loss` runs the compiled kernel of the ``fast``
-extra (:mod:`ballscrew._helix_kernel`) when numba is installed; below it (and without
-numba) the numpy path, which needs no compiler at start-up."""
+extra (:mod:`ballscrew._helix_kernel`) when numba is installed and the kernel is loaded;
+below it (and without numba) the numpy path, which needs no compiler."""
+
+JIT_LOAD_POINTS: int = 1 << 17
+"""Points from which :func:`transverse_slip_loss` loads the compiled kernel if this process
+has not (numba's import and the kernel from its disk cache: about 0.3 s of CPU, which the
+kernel repays over some 3e5 points, at about 1 µs a point for a double nut). A call on
+fewer points takes the numpy path until then; :func:`load_kernel` loads it ahead (the web
+calculator's and the sweeps' workers do)."""
 
 
 @dataclass(frozen=True)
@@ -274,9 +282,10 @@ def load_kernel() -> bool:
     """Load the compiled slip-share loop now; return whether it will be used.
 
     Loading is numba's import and the kernel from its disk cache, or its compilation
-    the first time: 0.3 s to 2 s. For servers and workers that warm up before their
-    first request; without it the first call on :data:`JIT_MIN_POINTS` points or more
-    pays that time. False without numba or with ``BALLSCREW_JIT=0``.
+    the first time: 0.3 s to 2 s. For servers, workers and long runs, which then use
+    it from :data:`JIT_MIN_POINTS` points on; otherwise the first call on
+    :data:`JIT_LOAD_POINTS` points or more loads it. False without numba or with
+    ``BALLSCREW_JIT=0``.
     """
     return _helix_kernel.enabled()
 
@@ -408,7 +417,9 @@ def transverse_slip_loss(contacts: Sequence[SlipContact], slip: float) -> SlipSh
         return screw_force - nut_force, screw_rate - nut_rate
 
     n = int(np.prod(shape))
-    if n <= PYTHON_MAX_POINTS or (n >= JIT_MIN_POINTS and _helix_kernel.enabled()):
+    if n <= PYTHON_MAX_POINTS or (
+        n >= JIT_MIN_POINTS and _helix_kernel.enabled(load=n >= JIT_LOAD_POINTS)
+    ):
         x, power, force = _helix_kernel.run(
             *_stacked(contacts, capacity, scale, s), SHARE_TOLERANCE, MAX_ITERATIONS,
             compiled=n > PYTHON_MAX_POINTS,

@@ -203,3 +203,22 @@ def test_chunks_of_one_point_give_the_same_torques_and_none_is_refused() -> None
         with pytest.raises(BallScrewInputError) as info:
             friction_torques(_screws(), PAO, chunk_size=bad, **kw)  # type: ignore[arg-type]
         assert info.value.field == "chunk_size"
+
+
+def test_a_batch_of_many_points_in_all_loads_the_compiled_loop(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # Each screw's call is below JIT_LOAD_POINTS, the batch is not: the batch loads the
+    # helix's compiled loop once, so that every screw's call takes it.
+    pytest.importorskip("numba")
+    from ballscrew import _helix_kernel, helix
+
+    monkeypatch.setenv("BALLSCREW_JIT", "1")
+    _helix_kernel._compiled.cache_clear()
+    per_screw = helix.JIT_LOAD_POINTS // 4 + 1
+    friction_torques(_screws()[:3], PAO, speed=np.linspace(1.0, 300.0, per_screw),
+                     temperature=40.0, components=False, warn=False)  # fmt: skip
+    assert _helix_kernel._compiled.cache_info().currsize == 0  # 3 x per_screw: below it
+    friction_torques(_screws()[:4], PAO, speed=np.linspace(1.0, 300.0, per_screw),
+                     temperature=40.0, components=False, warn=False)  # fmt: skip
+    assert _helix_kernel.enabled(load=False)

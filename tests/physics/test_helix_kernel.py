@@ -139,6 +139,14 @@ def test_kernel_is_used_from_its_threshold_and_switched_off_by_the_environment(
     monkeypatch.setattr(_helix_kernel, "run", spy)
     monkeypatch.setenv("BALLSCREW_JIT", "1")
     n, few = helix.JIT_MIN_POINTS, helix.PYTHON_MAX_POINTS
+    # Not loaded yet: a call below JIT_LOAD_POINTS takes numpy's path and loads nothing;
+    # one on JIT_LOAD_POINTS loads the kernel, which from then on serves n points.
+    _helix_kernel._compiled.cache_clear()
+    transverse_slip_loss(_random_contacts(helix.JIT_LOAD_POINTS - 1, False), 2.5e-4)
+    assert calls == [] and _helix_kernel._compiled.cache_info().currsize == 0
+    transverse_slip_loss(_random_contacts(helix.JIT_LOAD_POINTS, False), 2.5e-4)
+    assert calls == [(helix.JIT_LOAD_POINTS, True)]
+    calls.clear()
     transverse_slip_loss(_random_contacts(n - 1, False), 2.5e-4)
     transverse_slip_loss(_random_contacts(few + 1, False), 2.5e-4)
     assert calls == []  # the numpy path in between
@@ -169,7 +177,17 @@ def test_model_with_the_kernel_equals_the_model_without(
         "axial_load": rng.uniform(-4000.0, 4000.0, n),
     }
     monkeypatch.setenv("BALLSCREW_JIT", "1")
+    assert helix.load_kernel()  # loaded, so that 10 000 points take it
+    calls: list[int] = []
+    real = _helix_kernel.run
+
+    def spy(*args: object, compiled: bool = True) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        calls.append(int(compiled))
+        return real(*args, compiled=compiled)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(_helix_kernel, "run", spy)
     fast = friction_torque(screw, MINERAL, **points, warn=False)
+    assert calls and all(calls)  # every ball family through the compiled loop
     _numpy_path(monkeypatch)
     slow = friction_torque(screw, MINERAL, **points, warn=False)
     assert fast.components["helix_slip"].max() > 0.0
@@ -201,6 +219,9 @@ def test_load_kernel_says_whether_the_compiled_loop_is_used(
 ) -> None:
     pytest.importorskip("numba")
     monkeypatch.setenv("BALLSCREW_JIT", "1")
+    _helix_kernel._compiled.cache_clear()
+    assert not _helix_kernel.enabled(load=False)  # not loaded: not used below the load size
     assert helix.load_kernel() is True
+    assert _helix_kernel.enabled(load=False)
     monkeypatch.setenv("BALLSCREW_JIT", "0")
     assert helix.load_kernel() is False

@@ -29,7 +29,7 @@ import numpy as np
 from ..errors import BallScrewInputError
 from ..extras import require
 from ..files import OutputInUseError, exclusive_lock
-from ..helix import load_kernel
+from ..helix import JIT_LOAD_POINTS, load_kernel
 from .plan import ChunkReport, Plan, plan_sweep, run_chunk
 from .spec import OPERATING, SweepSpec
 
@@ -210,6 +210,8 @@ def _run(
     reports: dict[int, dict[str, Any]] = dict(done)
     step = progress or (lambda _done, _total: None)
     step(len(reports), plan.n_chunks)
+    if workers is None and scheduler is None and plan.points >= JIT_LOAD_POINTS:
+        load_kernel()  # the helix's compiled loop, for every chunk of this process
     start = time.perf_counter()
     if workers is None and scheduler is None:
         mode = "in process"
