@@ -435,6 +435,14 @@ def test_a_new_aspect_costs_only_the_node_tables_around_it(monkeypatch: pytest.M
 
     monkeypatch.setattr(helix, "_exact_tables", spy)
     try:
+        # With the stored node tables (the package's file): no quadrature at all.
+        helix._tables.cache_clear()
+        helix._node_tables.cache_clear()
+        helix._tables(0.3131)
+        assert built == []
+        # Without them: the nodes around the aspect, built.
+        monkeypatch.setattr(helix, "TABLES_FILE", helix.TABLES_FILE.with_name("missing.npz"))
+        helix._stored_tables.cache_clear()
         for aspect in (0.02, 0.021, 0.3131, 0.999, 1.0):
             built.clear()
             helix._tables.cache_clear()
@@ -446,4 +454,36 @@ def test_a_new_aspect_costs_only_the_node_tables_around_it(monkeypatch: pytest.M
                 assert abs(k - round(k)) < 1e-9 and 0.0 <= node <= 1.0, (aspect, node)
     finally:
         helix._tables.cache_clear()
+        helix._node_tables.cache_clear()
+        helix._stored_tables.cache_clear()
+
+
+def test_stored_node_tables_are_the_rules_own() -> None:
+    # The file of node tables (scripts/build_helix_tables.py) must be what the package's
+    # quadrature gives at those aspects: a file left from another rule, node count or
+    # integrand fails here (1e-13: the rule's sums rounded by another numpy build).
+    from ballscrew import helix
+
+    stored = helix._stored_tables()
+    assert stored is not None, "rebuild src/ballscrew/data/helix_tables.npz"
+    for node in (0, 5, 51, 128, 200, helix.ASPECT_NODES - 1):
+        j, g = helix._exact_tables(node / (helix.ASPECT_NODES - 1))
+        np.testing.assert_allclose(stored[0][node], j, rtol=1e-13, atol=0.0)
+        np.testing.assert_allclose(stored[1][node], g, rtol=1e-13, atol=1e-300)
+
+
+def test_without_the_stored_tables_the_nodes_are_built(monkeypatch: pytest.MonkeyPatch) -> None:
+    from ballscrew import helix
+
+    monkeypatch.setattr(helix, "TABLES_FILE", helix.TABLES_FILE.with_name("missing.npz"))
+    helix._stored_tables.cache_clear()
+    helix._node_tables.cache_clear()
+    try:
+        assert helix._stored_tables() is None
+        j, g = helix._node_tables(77)
+        j_exact, g_exact = helix._exact_tables(77 / (helix.ASPECT_NODES - 1))
+        np.testing.assert_array_equal(j, j_exact)
+        np.testing.assert_array_equal(g, g_exact)
+    finally:
+        helix._stored_tables.cache_clear()
         helix._node_tables.cache_clear()
