@@ -24,7 +24,9 @@ LINK = re.compile(r"\]\(([^)\s]+)\)")
 
 def test_no_reference_to_files_outside_the_repository() -> None:
     files = [ROOT / "README.md", *DOCS, *sorted((ROOT / "src" / "ballscrew").rglob("*.py"))]
-    files += sorted((ROOT / "src" / "ballscrew" / "data").iterdir())
+    # The bundled data files that are text (the helix's stored tables are binary numbers).
+    data = (ROOT / "src" / "ballscrew" / "data").iterdir()
+    files += sorted(p for p in data if p.suffix != ".npz")
     for path in files:
         text = path.read_text("utf-8")
         for phrase in PHRASES:
