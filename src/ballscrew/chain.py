@@ -168,36 +168,16 @@ def friction_torque(
     >>> [round(float(t), 4) for t in r.total]
     [0.5642, 0.5642]
     """
-    lubricant, spec = _checked(screw, lubricant, model, parameters)
-    chunk = spec.chunk if chunk_size is None else chunk_size
-    if isinstance(chunk, bool) or not isinstance(chunk, int) or chunk < 1:
-        raise BallScrewInputError("chunk_size", chunk_size, "a whole number >= 1")
-    w0, t0, fa0 = operating_points(speed, temperature, axial_load, broadcast=False)
-    lubricant.check_temperature("temperature", t0)
-    w, t, fa = np.broadcast_arrays(w0, t0, fa0)
-    used = dict(spec.parameters)
-    used.update(parameters)
+    lubricant, spec, chunk, (w0, t0, fa0), used = _prepared(
+        screw, lubricant, model, parameters, chunk_size, (speed, temperature, axial_load)
+    )
     kept, total, state = _evaluate(
         spec, screw, lubricant, (w0, t0, fa0), chunk, used, parameters, components
     )
-    efficiency, power_loss = _efficiency_and_power(total, w, fa, screw.lead)
     # The checks look at the extremes only: the unbroadcast inputs have the same ones.
     issues = validity.check(screw, lubricant, w0, t0, fa0, spec.name, used, spec.checks)
-    if warn:
-        _warn(issues)
-    return FrictionResult(
-        model=spec.name,
-        total=total,
-        components=kept,
-        power_loss=power_loss,
-        efficiency=efficiency,
-        speed=w,
-        temperature=t,
-        axial_load=fa,
-        parameters=used,
-        warnings=tuple(issues),
-        state=state,
-    )
+    w, t, fa = np.broadcast_arrays(w0, t0, fa0)
+    return _result(spec, used, kept, total, (w, t, fa), screw.lead, issues, warn, state)
 
 
 def friction_torques(
@@ -272,19 +252,14 @@ def friction_torques(
     for i, screw in enumerate(screws):
         if not isinstance(screw, BallScrew):
             raise BallScrewInputError(f"screws[{i}]", screw, "a ballscrew.BallScrew")
-    lubricant, spec = _checked(screws[0], lubricant, model, parameters)
-    chunk = spec.chunk if chunk_size is None else chunk_size
-    if isinstance(chunk, bool) or not isinstance(chunk, int) or chunk < 1:
-        raise BallScrewInputError("chunk_size", chunk_size, "a whole number >= 1")
-    w0, t0, fa0 = operating_points(speed, temperature, axial_load, broadcast=False)
-    lubricant.check_temperature("temperature", t0)
+    lubricant, spec, chunk, (w0, t0, fa0), used = _prepared(
+        screws[0], lubricant, model, parameters, chunk_size, (speed, temperature, axial_load)
+    )
     n = len(screws)
     per_screw = _paired_points(n, (w0, t0, fa0)) if paired else None
     points_shape = np.broadcast_shapes(w0.shape, t0.shape, fa0.shape)
     # Paired, the points' first axis is the screws' (or absent, or 1: shared by all).
     shape = (n, *points_shape[1:]) if paired else (n, *points_shape)
-    used = dict(spec.parameters)
-    used.update(parameters)
     if math.prod(shape) >= JIT_LOAD_POINTS:
         load_kernel()  # many points in all, though few a screw: the helix's compiled loop
     total = np.empty(shape)
@@ -308,8 +283,43 @@ def friction_torques(
                 worst[(issue.quantity, issue.model)] = issue
     leads = np.array([s.lead for s in screws]).reshape((n,) + (1,) * (len(shape) - 1))
     w, t, fa = (np.broadcast_to(x, shape) for x in (w0, t0, fa0))
-    efficiency, power_loss = _efficiency_and_power(total, w, fa, leads)
-    issues = list(worst.values())
+    return _result(spec, used, kept, total, (w, t, fa), leads, list(worst.values()), warn)
+
+
+def _prepared(
+    screw: BallScrew,
+    lubricant: Lubricant | str,
+    model: str,
+    parameters: dict[str, Any],
+    chunk_size: int | None,
+    points: tuple[npt.ArrayLike, npt.ArrayLike, npt.ArrayLike],
+) -> tuple[Lubricant, ModelSpec, int, tuple[FloatArray, FloatArray, FloatArray], dict[str, Any]]:
+    """The checked lubricant, model, chunk size, operating points (unbroadcast) and parameters."""
+    oil, spec = _checked(screw, lubricant, model, parameters)
+    chunk = spec.chunk if chunk_size is None else chunk_size
+    if isinstance(chunk, bool) or not isinstance(chunk, int) or chunk < 1:
+        raise BallScrewInputError("chunk_size", chunk_size, "a whole number >= 1")
+    w0, t0, fa0 = operating_points(*points, broadcast=False)
+    oil.check_temperature("temperature", t0)
+    used = dict(spec.parameters)
+    used.update(parameters)
+    return oil, spec, chunk, (w0, t0, fa0), used
+
+
+def _result(
+    spec: ModelSpec,
+    used: dict[str, Any],
+    kept: dict[str, FloatArray],
+    total: FloatArray,
+    points: tuple[FloatArray, FloatArray, FloatArray],
+    lead: float | FloatArray,
+    issues: list[ValidityIssue],
+    warn: bool,
+    state: OperatingState | None = None,
+) -> FrictionResult:
+    """The result of the torques ``total`` at the broadcast ``points``, warned of ``issues``."""
+    w, t, fa = points
+    efficiency, power_loss = _efficiency_and_power(total, w, fa, lead)
     if warn:
         _warn(issues)
     return FrictionResult(
@@ -323,6 +333,7 @@ def friction_torques(
         axial_load=fa,
         parameters=used,
         warnings=tuple(issues),
+        state=state,
     )
 
 
@@ -526,5 +537,5 @@ def _warn(issues: list[ValidityIssue]) -> None:
             if told in _NOTED:
                 continue
             _NOTED.add(told)
-        # stacklevel 3: the caller of friction_torque, past this helper.
-        warnings.warn(BallScrewValidityWarning(issue), stacklevel=3)
+        # stacklevel 4: the caller of friction_torque(s), past this helper and _result.
+        warnings.warn(BallScrewValidityWarning(issue), stacklevel=4)
