@@ -225,7 +225,7 @@ def _sorted_distinct(x: FloatArray) -> FloatArray:
 
 
 def _interpolated_integral(kappa: FloatArray, aspect: FloatArray) -> FloatArray:
-    r""":func:`spin_sliding_integral` through a cubic spline over the points' range.
+    r""":func:`spin_sliding_integral` interpolated over the points' range (Chebyshev or splines).
 
     Many distinct loads (a motion cycle, scattered points) give many
     distinct :math:`\kappa` (it grows as :math:`Q^{1/3}`), while
@@ -249,7 +249,7 @@ def _interpolated_integral(kappa: FloatArray, aspect: FloatArray) -> FloatArray:
         direct: FloatArray = rl.spin_sliding_integral(kappa, aspect)
         return direct
     one_aspect = b_hi - b_lo <= 1e-12 * b_hi
-    if one_aspect and k_hi <= SMOOTH_KAPPA and k_hi > k_lo:
+    if one_aspect and k_hi <= SMOOTH_KAPPA:
         # Chebyshev interpolation over the points' span (numpy's chebinterpolate).
         from numpy.polynomial import chebyshev
 
