@@ -272,6 +272,8 @@ def friction_torques(
                 spec, screw, lubricant, points, chunk, used, parameters, components
             )
         except BallScrewInputError as exc:
+            if exc.field != "operating point":  # a model parameter: not this screw's doing
+                raise
             raise BallScrewInputError(f"screws[{i}]: {exc.field}", exc.value, exc.allowed) from None
         for key, value in out.items():
             if key not in kept:

@@ -97,9 +97,14 @@ def _as_float_array(field: str, value: Any) -> FloatArray:
     try:
         arr = np.asarray(value, dtype=np.float64)
     except (TypeError, ValueError):
-        raise BallScrewInputError(
-            field, value, "a real number or an array of real numbers"
-        ) from None
+        allowed = "a real number or an array of real numbers"
+        if isinstance(value, str) or (isinstance(value, list | tuple) and any(
+                isinstance(v, str) for v in value)):  # fmt: skip
+            allowed += (
+                " in SI units (a text with its unit, such as '3000 1/min', is read by "
+                "ballscrew.units.to_si(field, text, unit) first)"
+            )
+        raise BallScrewInputError(field, value, allowed) from None
     return arr
 
 
