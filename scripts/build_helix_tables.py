@@ -16,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from ballscrew import helix
-from ballscrew.files import atomic_write
+from ballscrew.io.files import atomic_write
 
 
 def main() -> None:

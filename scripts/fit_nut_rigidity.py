@@ -3,10 +3,10 @@
 Run with ``.venv/bin/python scripts/fit_nut_rigidity.py``. For every nut of
 ``src/ballscrew/data/catalog_rigidity.csv`` (rigidity printed by THK and HIWIN
 for preloaded double nuts, at a preload of 10 % of the dynamic load rating) it
-prints the ideal contact stiffness (:func:`ballscrew.stiffness.nut_axial_stiffness`
+prints the ideal contact stiffness (:func:`ballscrew.design.stiffness.nut_axial_stiffness`
 with the package's default conformity 0.55 and contact angle 45°), the printed
 value and their ratio; the median ratio over the training rows (THK) is the
-constant :data:`ballscrew.stiffness.CATALOGUE_RIGIDITY_RATIO`, and the test rows
+constant :data:`ballscrew.design.stiffness.CATALOGUE_RIGIDITY_RATIO`, and the test rows
 (HIWIN) show how well it carries to another maker.
 """
 
@@ -17,8 +17,8 @@ import statistics
 from importlib import resources
 
 from ballscrew import reference_screw
+from ballscrew.design.stiffness import CATALOGUE_RIGIDITY_RATIO, nut_axial_stiffness
 from ballscrew.geometry import BallScrew
-from ballscrew.stiffness import CATALOGUE_RIGIDITY_RATIO, nut_axial_stiffness
 
 
 def rows() -> list[dict[str, str]]:

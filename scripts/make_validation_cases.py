@@ -22,8 +22,8 @@ import io
 import math
 from pathlib import Path
 
-from ballscrew.catalog_formulas import preload_torque
-from ballscrew.files import atomic_write
+from ballscrew.design.catalog_formulas import preload_torque
+from ballscrew.io.files import atomic_write
 from ballscrew.lubricants import get
 from ballscrew.study.validation import acceptance_band, jungnickel_loss_torque, screw_from_row
 

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from ballscrew.files import atomic_write
+from ballscrew.io.files import atomic_write
 from ballscrew.report.validation import summary_csv
 from ballscrew.study.validation import SUMMARY_FILE, score, summarise
 

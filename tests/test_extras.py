@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-from ballscrew.extras import EXTRAS, MissingExtraError, MissingExtraWarning, missing, require
+from ballscrew.io.extras import EXTRAS, MissingExtraError, MissingExtraWarning, missing, require
 from cli_runner import run
 
 ROOT = Path(__file__).resolve().parents[1]

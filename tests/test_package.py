@@ -21,7 +21,7 @@ from pathlib import Path
 import pytest
 
 from ballscrew import __version__
-from ballscrew.extras import EXTRAS
+from ballscrew.io.extras import EXTRAS
 
 pytestmark = pytest.mark.slow
 

@@ -16,13 +16,15 @@ SI units throughout (m, N, Pa, Pa·s, m²/s, rad/s); temperatures in °C.
 
 from __future__ import annotations
 
-from . import contact, ehl, friction, kinematics, loads, lubricants, rheology
+from . import _moved, contact, ehl, friction, kinematics, loads, lubricants, rheology
 from ._version import __version__
 from .chain import FrictionResult, friction_torque, friction_torques, models
 from .errors import BallScrewInputError
 from .examples import reference_screw
 from .geometry import BallScrew
 from .lubricant import Lubricant
+
+_moved.install()  # old module paths, for one release
 
 __all__ = [
     "BallScrew",

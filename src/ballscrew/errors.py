@@ -102,7 +102,7 @@ def _as_float_array(field: str, value: Any) -> FloatArray:
                 isinstance(v, str) for v in value)):  # fmt: skip
             allowed += (
                 " in SI units (a text with its unit, such as '3000 1/min', is read by "
-                "ballscrew.units.to_si(field, text, unit) first)"
+                "ballscrew.io.units.to_si(field, text, unit) first)"
             )
         raise BallScrewInputError(field, value, allowed) from None
     return arr

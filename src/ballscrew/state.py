@@ -30,10 +30,10 @@ import numpy.typing as npt
 
 from . import ehl
 from .contact import HertzContact, hertz
+from .design.limits import check_operating_bounds
 from .errors import FloatArray, broadcast_inputs
 from .geometry import BallScrew
 from .kinematics import Kinematics, kinematics
-from .limits import check_operating_bounds
 from .loads import BallLoads, ball_loads
 from .lubricant import Lubricant
 

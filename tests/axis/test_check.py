@@ -9,10 +9,10 @@ import pytest
 
 from ballscrew.axis.check import CHECK_FROM, axis_check, verdict
 from ballscrew.axis.run import energy_run, profile_from_move
+from ballscrew.design.sizing import STEEL_EXPANSION, TRAVEL_VARIATION_300
+from ballscrew.design.stiffness import SHAFT_MODULUS, nut_axial_stiffness
 from ballscrew.errors import BallScrewInputError
 from ballscrew.io.case import Case, parse_case
-from ballscrew.sizing import STEEL_EXPANSION, TRAVEL_VARIATION_300
-from ballscrew.stiffness import SHAFT_MODULUS, nut_axial_stiffness
 
 BASE = """
 title = "check test"

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from ballscrew.catalog_formulas import drag_torque_tolerance, preload_torque
+from ballscrew.design.catalog_formulas import drag_torque_tolerance, preload_torque
 from ballscrew.errors import BallScrewInputError
 from ballscrew.fit.acceptance import accept_drag_torque
 from cli_runner import run

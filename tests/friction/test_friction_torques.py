@@ -227,11 +227,11 @@ def test_a_batch_of_many_points_in_all_loads_the_compiled_loop(
 def test_inputs_typed_as_text_or_a_bad_parameter_are_refused_by_their_own_name() -> None:
     # The API takes SI numbers: a speed typed with its unit is refused with the way to read
     # it; the message's recipe is checked to give the speed meant (3000 rpm in rad/s).
-    from ballscrew.units import to_si
+    from ballscrew.io.units import to_si
 
     with pytest.raises(BallScrewInputError) as info:
         friction_torques(_screws()[:2], PAO, speed="3000 1/min", temperature=40.0)
-    assert info.value.field == "speed" and "ballscrew.units.to_si" in str(info.value)
+    assert info.value.field == "speed" and "ballscrew.io.units.to_si" in str(info.value)
     assert to_si("speed", "3000 1/min", "rad/s") == pytest.approx(3000 * RPM, rel=1e-12)
     # A model parameter is no screw's doing: named alone, not as screws[0].
     with pytest.raises(BallScrewInputError) as info:

@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from ballscrew.files import atomic_write, deferred_signals, sweep_temporaries
+from ballscrew.io.files import atomic_write, deferred_signals, sweep_temporaries
 
 
 @pytest.fixture
@@ -80,7 +80,7 @@ def test_written_file_follows_the_umask(tmp_path: Path) -> None:
 
 def test_a_report_folder_is_swapped_in_whole_or_left_as_it_was(tmp_path: Path) -> None:
     # Issue 28: an interrupted rerun with other inputs left old text beside new figures.
-    from ballscrew.files import atomic_folder
+    from ballscrew.io.files import atomic_folder
 
     out = tmp_path / "report"
     with atomic_folder(out) as folder:
@@ -98,7 +98,7 @@ def test_a_report_folder_is_swapped_in_whole_or_left_as_it_was(tmp_path: Path) -
 
 
 def test_a_second_holder_of_an_output_lock_is_refused_naming_the_first(tmp_path: Path) -> None:
-    from ballscrew.files import OutputInUseError, exclusive_lock
+    from ballscrew.io.files import OutputInUseError, exclusive_lock
 
     lock = tmp_path / ".store.lock"
     with exclusive_lock(lock):
@@ -120,7 +120,7 @@ def test_a_full_disk_names_the_option_and_the_path(
     def full(fd: int) -> None:
         raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
 
-    monkeypatch.setattr("ballscrew.files.os.fsync", full)
+    monkeypatch.setattr("ballscrew.io.files.os.fsync", full)
     out = tmp_path / "t.csv"
     code, _, err = run(["torque", "--speed", "100 rpm", "--csv", str(out)], capsys)
     assert code == 2 and "internal error" not in err

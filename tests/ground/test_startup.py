@@ -15,7 +15,7 @@ import sys
 import numpy as np
 from scipy import special
 
-from ballscrew.contact import _carlson_rd, _carlson_rf, _elliptic_integrals
+from ballscrew.numerics.elliptic import carlson_rd, carlson_rf, complete_integrals
 
 _PROBE = """
 import json, sys
@@ -41,7 +41,7 @@ def test_one_point_torque_imports_neither_dask_nor_scipy_special_nor_numba() -> 
 
 def test_dask_imports_as_usual_after_the_units() -> None:
     probe = (
-        "import ballscrew.units, sys; assert 'dask' not in sys.modules;"
+        "import ballscrew.io.units, sys; assert 'dask' not in sys.modules;"
         "import dask.array as da; print(float(da.ones(4).sum().compute()))"
     )
     out = subprocess.run(
@@ -60,12 +60,12 @@ def test_complete_integrals_match_scipy() -> None:
         [[1.0, 1.0 + 1e-12, 1.001, 5.0, 72.0, 1e8], np.exp(rng.uniform(0, 12, 4000))]
     )
     p = 1.0 / k**2
-    big_k, big_e = _elliptic_integrals(k)
+    big_k, big_e = complete_integrals(k)
     np.testing.assert_allclose(big_k, special.ellipkm1(p), rtol=ULPS, atol=0.0)
     np.testing.assert_allclose(big_e, special.ellipe(1.0 - p), rtol=ULPS, atol=0.0)
     # One axis ratio (the cached path of one geometry) gives the batch's bits.
     for i in range(0, 4006, 97):
-        one_k, one_e = _elliptic_integrals(k[i : i + 1])
+        one_k, one_e = complete_integrals(k[i : i + 1])
         assert one_k[0] == big_k[i] and one_e[0] == big_e[i], k[i]
 
 
@@ -73,11 +73,11 @@ def test_carlson_integrals_match_scipy() -> None:
     rng = np.random.default_rng(3)
     x, y, z = rng.uniform(0.0, 10.0, (3, 4000))
     x[:100] = 0.0
-    np.testing.assert_allclose(_carlson_rf(x, y, z), special.elliprf(x, y, z), rtol=ULPS)
-    np.testing.assert_allclose(_carlson_rd(x, y, z), special.elliprd(x, y, z), rtol=ULPS)
+    np.testing.assert_allclose(carlson_rf(x, y, z), special.elliprf(x, y, z), rtol=ULPS)
+    np.testing.assert_allclose(carlson_rd(x, y, z), special.elliprd(x, y, z), rtol=ULPS)
     # Each element stops at its own step, and one point takes the same steps on Python
     # floats: a value does not depend on its neighbours, to the bit.
-    for f in (_carlson_rf, _carlson_rd):
+    for f in (carlson_rf, carlson_rd):
         batch = f(x[:200], y[:200], z[:200])
         one = [float(f(a, b, c)) for a, b, c in zip(x[:200], y[:200], z[:200], strict=True)]
         assert np.array_equal(batch, one), f.__name__

@@ -17,7 +17,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from ballscrew.errors import BallScrewInputError, BallScrewReadingWarning
-from ballscrew.units import parse_range, to_si
+from ballscrew.io.units import parse_range, to_si
 
 RPM = 2.0 * math.pi / 60.0  # rad/s per rev/min
 RPS = 2.0 * math.pi  # rad/s per rev/s
@@ -258,7 +258,7 @@ def test_a_unit_of_any_text_is_a_known_unit_or_refused(number: float, junk: str)
     except BallScrewInputError:
         return
     # Accepted: then it is a force unit pint knows, and the number scaled by its factor.
-    from ballscrew.units import parse_unit, registry
+    from ballscrew.io.units import parse_unit, registry
 
     factor = registry().Quantity(1.0, parse_unit("x", junk.strip())).to("N").magnitude
     assert got == pytest.approx(number * factor, rel=1e-12), text

@@ -12,7 +12,7 @@ from ballscrew.errors import BallScrewReadingWarning
 from ballscrew.friction.catalog import preload_from_drag_torque, preload_torque
 from ballscrew.io.case import default_case_path, load_case, parse_case
 from ballscrew.io.measured import error_metrics, parse_measured
-from ballscrew.units import parse_range, to_si
+from ballscrew.io.units import parse_range, to_si
 from shared import SMALL_CASE
 
 SMALL = SMALL_CASE

@@ -12,8 +12,8 @@ from scipy.optimize import brentq
 from ballscrew import reference_screw
 from ballscrew.axis.energy import Axis, axis_cycle
 from ballscrew.axis.motion import move
+from ballscrew.design.limits import SAFETY_FACTOR, critical_speed, root_diameter
 from ballscrew.errors import BallScrewInputError, BallScrewSpeedWarning
-from ballscrew.limits import SAFETY_FACTOR, critical_speed, root_diameter
 
 # Catalogue rule n = f d_r / L^2 * 1e7 rpm (d_r, L in mm), f printed to three
 # digits (HIWIN, THK, engineering tables): fixed-free 3.4, supported-supported
@@ -110,7 +110,7 @@ def test_axis_refuses_unknown_supports_and_bad_spans() -> None:
 
 def test_critical_speed_message_gives_the_span_and_root_in_mm() -> None:
     # A designer checks the message against the drawing: 1500 mm span, 33.5 mm root.
-    from ballscrew.limits import speed_limit_issues
+    from ballscrew.design.limits import speed_limit_issues
 
     (message,) = speed_limit_issues(reference_screw(), 3000 * math.pi / 30, span=1.5,
                                     support="fixed-free", root=0.0335,

@@ -13,10 +13,7 @@ import pytest
 
 from ballscrew import reference_screw
 from ballscrew.contact import hertz_hamrock_brewe_1983
-from ballscrew.geometry import BallScrew
-from ballscrew.io.case import parse_case
-from ballscrew.io.designation import catalog_screws
-from ballscrew.ratings import (
+from ballscrew.design.ratings import (
     STATIC_PRESSURE,
     Ratings,
     max_contact_pressure,
@@ -24,6 +21,9 @@ from ballscrew.ratings import (
     static_rating_estimate,
     stroke_findings,
 )
+from ballscrew.geometry import BallScrew
+from ballscrew.io.case import parse_case
+from ballscrew.io.designation import catalog_screws
 
 
 def _single(d: float, ball: float, circuits: int, turns: float = 1.0) -> BallScrew:

@@ -7,9 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from ballscrew.errors import BallScrewInputError
-from ballscrew.loads import preload_split
-from ballscrew.sizing import (
+from ballscrew.design.sizing import (
     BUCKLING_FACTORS,
     RELIABILITY_FACTORS,
     TRAVEL_VARIATION_300,
@@ -22,6 +20,8 @@ from ballscrew.sizing import (
     static_safety,
     thermal_elongation,
 )
+from ballscrew.errors import BallScrewInputError
+from ballscrew.loads import preload_split
 
 # The catalogues' buckling rule P = m d_r^4 / L^2 * 1e4 N (mm), safety 0.5 included:
 # HSK (b2b-linearbearing.com, "Screw Shaft Design") and THK (A15-30, eq. 5) print
@@ -125,7 +125,7 @@ def test_misumi_worked_examples() -> None:
     # (th.c.misumi-ec.com/book/THA_EconomySeries_e-catalog2025, pages 1676 and 1678).
     # Life: BSS1520 (C = 4400 N), mean axial load 250 N, work factor fw = 1.2, mean speed
     # 2118 rpm: Lh = 1e6 / (60 * 2118) * (4400 / (250 * 1.2))^3 = 24824 h as printed.
-    from ballscrew.sizing import life_hours
+    from ballscrew.design.sizing import life_hours
 
     hours = float(life_hours(nominal_life(4400.0, 250.0 * 1.2), 2118.0))
     assert hours == pytest.approx(24_824, rel=2e-4)  # 24 826.6: the print rounds (4400/300)^3

@@ -8,8 +8,7 @@ import numpy as np
 import pytest
 
 from ballscrew import reference_screw
-from ballscrew.errors import BallScrewInputError
-from ballscrew.stiffness import (
+from ballscrew.design.stiffness import (
     SHAFT_MODULUS,
     axial_eigenfrequency,
     lost_motion,
@@ -18,6 +17,7 @@ from ballscrew.stiffness import (
     shaft_axial_stiffness,
     torsional_axial_stiffness,
 )
+from ballscrew.errors import BallScrewInputError
 
 
 def test_shaft_stiffness_closed_forms() -> None:
@@ -101,7 +101,7 @@ def test_nut_stiffness_follows_the_printed_rigidity_across_sizes() -> None:
 
 
 def test_catalogue_level_is_the_training_median_and_carries_to_another_maker() -> None:
-    from ballscrew.stiffness import CATALOGUE_RIGIDITY_RATIO, CATALOGUE_RIGIDITY_SCATTER
+    from ballscrew.design.stiffness import CATALOGUE_RIGIDITY_RATIO, CATALOGUE_RIGIDITY_SCATTER
 
     r = _rigidity_script().ratios()
     # The constant is the THK median to its printed 3 digits.

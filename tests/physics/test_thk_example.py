@@ -22,9 +22,8 @@ import pytest
 from ballscrew import reference_screw
 from ballscrew.axis.energy import Axis, screw_motion
 from ballscrew.axis.motion import Profile
-from ballscrew.kinematics import rad_s_to_rpm, rpm_to_rad_s
-from ballscrew.limits import DEFAULT_DN_LIMIT, critical_speed, speed_limit_issues
-from ballscrew.sizing import (
+from ballscrew.design.limits import DEFAULT_DN_LIMIT, critical_speed, speed_limit_issues
+from ballscrew.design.sizing import (
     TRAVEL_VARIATION_300,
     buckling_load,
     cubic_mean_load,
@@ -35,6 +34,7 @@ from ballscrew.sizing import (
     static_safety,
     thermal_elongation,
 )
+from ballscrew.kinematics import rad_s_to_rpm, rpm_to_rad_s
 
 
 def within_last_digit(ours: float, printed: float, unit: float) -> bool:

@@ -22,7 +22,7 @@ from starlette.testclient import TestClient
 
 from ballscrew.chain import friction_torque
 from ballscrew.io.case import parse_case
-from ballscrew.units import parse_range
+from ballscrew.io.units import parse_range
 from ballscrew.web import create_app, service
 from ballscrew.web.service import LIMITS
 from cli_runner import run

@@ -43,10 +43,8 @@ from typing import Any
 import numpy as np
 
 from ..chain import friction_torque
-from ..errors import BallScrewInputError, FloatArray
-from ..kinematics import rad_s_to_rpm
-from ..limits import SAFETY_FACTOR, critical_speed, root_diameter
-from ..sizing import (
+from ..design.limits import SAFETY_FACTOR, critical_speed, root_diameter
+from ..design.sizing import (
     STEEL_EXPANSION,
     TRAVEL_VARIATION_300,
     buckling_load,
@@ -60,7 +58,7 @@ from ..sizing import (
     static_safety,
     thermal_elongation,
 )
-from ..stiffness import (
+from ..design.stiffness import (
     CATALOGUE_RIGIDITY_RATIO,
     CATALOGUE_RIGIDITY_SCATTER,
     DESIGN_ALLOWANCE,
@@ -71,6 +69,8 @@ from ..stiffness import (
     shaft_axial_stiffness,
     torsional_axial_stiffness,
 )
+from ..errors import BallScrewInputError, FloatArray
+from ..kinematics import rad_s_to_rpm
 from .energy import CycleResult
 from .run import EnergyRun
 

@@ -49,6 +49,7 @@ from ..bearings import (
     simplified_bearing_torque,
 )
 from ..chain import FrictionResult, friction_torque
+from ..design.limits import DEFAULT_DN_LIMIT, SUPPORT_EIGENVALUES, speed_limit_issues
 from ..errors import (
     BallScrewInputError,
     BallScrewSpeedWarning,
@@ -58,7 +59,6 @@ from ..errors import (
     check_positive,
 )
 from ..geometry import BallScrew
-from ..limits import DEFAULT_DN_LIMIT, SUPPORT_EIGENVALUES, speed_limit_issues
 from ..lubricant import Lubricant
 from .motion import Profile
 

@@ -293,7 +293,7 @@ def read_trajectory(text: str, source: str = "trajectory") -> Profile:
     import io
     import re
 
-    from ..units import parse_unit, to_si_array
+    from ..io.units import parse_unit, to_si_array
 
     first = next((line for line in text.splitlines() if line.strip()), "")
     delimiter = ";" if ";" in first else ("\t" if "\t" in first else ",")
@@ -369,7 +369,7 @@ def parse_move(text: str) -> dict[str, float]:
     process force on the way out), force_from, force_to (its window, distances
     from the start).
     """
-    from ..units import to_si  # the unit library only when text is read
+    from ..io.units import to_si  # the unit library only when text is read
 
     out: dict[str, float] = {}
     parts = [p.strip() for p in text.split(",") if p.strip()]

@@ -22,10 +22,10 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
+from ..design.ratings import Finding, plausibility, raise_errors, stroke_findings
 from ..errors import BallScrewInputError, FloatArray
 from ..io.case import Case
 from ..kinematics import rad_s_to_rpm
-from ..ratings import Finding, plausibility, raise_errors, stroke_findings
 from .energy import Axis, CycleResult, axis_cycle, screw_motion, self_locking, weight_back_driving
 from .motion import Profile, back_and_forth, chain, check_force_window, read_trajectory
 from .setup import axis_setup

@@ -42,15 +42,15 @@ def acceptance_command(
     """  # noqa: D301 - click needs the literal \b to keep the example lines
     import numpy as np
 
-    from ..catalog_formulas import preload_torque
     from ..chain import friction_torque
+    from ..design.catalog_formulas import preload_torque
     from ..errors import BallScrewInputError
     from ..fit.acceptance import accept_drag_torque
     from ..io.case import load_case
     from ..io.measured import read_measured
+    from ..io.units import parse_range, to_si
     from ..kinematics import rpm_to_rad_s
     from ..report.outputs import json_document
-    from ..units import parse_range, to_si
 
     if (torque_text is None) == (measured_file is None):
         raise BallScrewInputError("--torque", torque_text or "(none)",

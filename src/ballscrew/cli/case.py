@@ -42,7 +42,7 @@ def case_command(
       ballscrew case --check my_screw.toml            # resolved values, or the error
       ballscrew torque --case my_screw.toml --speed "100, 1000 rpm"
     """  # noqa: D301 - click needs the literal \b to keep the example lines
-    from ..files import atomic_write
+    from ..io.files import atomic_write
     from ..io.schema import reference_markdown, template
 
     if sum([want_template, want_reference, check_file is not None]) != 1:
@@ -61,9 +61,9 @@ def case_command(
 
 
 def _print_resolved(path: str) -> None:
+    from ..design.ratings import plausibility, raise_errors
     from ..io.case import load_case
     from ..kinematics import rad_s_to_rpm
-    from ..ratings import plausibility, raise_errors
 
     case = load_case(path)
     s, oil = case.screw, case.lubricant

@@ -70,8 +70,8 @@ def check_command(
     from ..axis.check import axis_check
     from ..axis.run import energy_run
     from ..io.case import load_case
+    from ..io.units import to_si
     from ..report.outputs import json_document
-    from ..units import to_si
 
     case = load_case(case_file)
     profile, m = motion(move_text, profile_file, cycles)
@@ -88,7 +88,7 @@ def check_command(
     if out_dir:
         from pathlib import Path
 
-        from ..files import atomic_folder
+        from ..io.files import atomic_folder
         from ..report.check import write_check_report
 
         with writing("--out", out_dir), atomic_folder(Path(out_dir)) as folder:

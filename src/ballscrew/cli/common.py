@@ -41,7 +41,7 @@ def writing(option: str, path: str | Path) -> Iterator[None]:
     temporary file. Another run holding the output keeps its own message.
     """
     from ..errors import BallScrewInputError
-    from ..files import OutputInUseError
+    from ..io.files import OutputInUseError
 
     try:
         yield
@@ -58,7 +58,7 @@ def write_json(json_file: str, text: str, option: str = "--json") -> None:
     """Write JSON text to ``json_file`` atomically, or to standard output for ``-``."""
     import sys
 
-    from ..files import atomic_write
+    from ..io.files import atomic_write
 
     if json_file == "-":
         sys.stdout.write(text)

@@ -10,7 +10,7 @@ import click
 from rich.console import Console
 from rich.table import Table
 
-from ..files import atomic_folder
+from ..io.files import atomic_folder
 from .common import motion, stdout, write_json, writing
 
 if TYPE_CHECKING:
@@ -71,9 +71,9 @@ def energy_command(
     from .._version import __version__
     from ..axis.run import energy_run
     from ..io.case import load_case
+    from ..io.units import parse_range, to_si
     from ..report.outputs import json_document
     from ..report.torque import warning_lines
-    from ..units import parse_range, to_si
 
     case = load_case(case_file)
     profile, m = motion(move_text, profile_file, cycles)

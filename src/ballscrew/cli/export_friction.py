@@ -88,12 +88,12 @@ def export_friction_command(
     if form == "load-map":
         _load_map(case_file, model_name, temperature, speed, axial_load, out_file, json_file)
         return
-    from ..files import atomic_write
     from ..fit.export import export_friction, log_speeds
     from ..io.case import load_case
+    from ..io.files import atomic_write
     from ..io.measured import read_measured
+    from ..io.units import parse_range, to_si
     from ..report.outputs import csv_text, json_document
-    from ..units import parse_range, to_si
 
     def si(flag: str, text: str | None, unit: str) -> float | None:
         return to_si(flag, text, unit) if text else None
@@ -172,9 +172,9 @@ def _load_map(
     from ..fit.export import log_speeds
     from ..fit.friction_map import friction_map
     from ..io.case import load_case
+    from ..io.units import parse_range
     from ..report.friction_files import write_map
     from ..report.outputs import json_document
-    from ..units import parse_range
 
     case = load_case(case_file)
     if axial_load:

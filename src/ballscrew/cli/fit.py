@@ -8,7 +8,7 @@ import click
 from rich.table import Table
 
 from .._version import __version__
-from ..files import atomic_folder
+from ..io.files import atomic_folder
 from .common import case_option, stdout, write_json, writing
 
 __all__ = ["fit_command"]
@@ -67,7 +67,7 @@ def fit_command(
     from ..friction import get_model
     from ..io.case import load_case
     from ..io.measured import read_measured
-    from ..units import to_si
+    from ..io.units import to_si
 
     case = load_case(case_file)
     model = get_model(model_name).name

@@ -15,8 +15,8 @@ import click
 
 from .._version import __version__
 from ..errors import BallScrewInputError
-from ..extras import MissingExtraError
-from ..files import record_signal, signal_received
+from ..io.extras import MissingExtraError
+from ..io.files import record_signal, signal_received
 from .acceptance import acceptance_command
 from .case import case_command
 from .check import check_command

@@ -44,9 +44,9 @@ def monitor_command(
           --threshold "lift-off 3 kN" --plot preload.png --json preload.json
     """  # noqa: D301 - click needs the literal \b to keep the example lines
     from ..errors import BallScrewInputError
-    from ..files import atomic_write
     from ..fit.monitor import monitor_preload
     from ..io.case import load_case
+    from ..io.files import atomic_write
     from ..io.series import read_series
     from ..report.outputs import json_document
     from ..report.plotting import figure_bytes

@@ -6,7 +6,7 @@ import ipaddress
 
 import click
 
-from ..extras import require
+from ..io.extras import require
 
 __all__ = ["serve_command"]
 

@@ -7,7 +7,7 @@ from pathlib import Path
 import click
 from rich.console import Console
 
-from ..files import atomic_folder
+from ..io.files import atomic_folder
 from .common import case_option, file_option, progress, writing
 
 __all__ = ["study"]

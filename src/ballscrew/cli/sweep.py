@@ -11,7 +11,7 @@ import click
 from rich.console import Console
 from rich.table import Table
 
-from ..extras import require
+from ..io.extras import require
 from .common import file_option, progress, stdout, write_json, writing
 
 __all__ = ["sweep_command"]
@@ -95,7 +95,7 @@ def _sobol_table(model: str, s: Any) -> Table:
 
 def _figures(out: Path, report: Any) -> list[Path]:
     """The sensitivity ranking figure of each model, beside the store."""
-    from ..files import atomic_write
+    from ..io.files import atomic_write
     from ..report.plotting import figure_bytes, sensitivity_figure
 
     written = []
@@ -181,7 +181,7 @@ def sweep_command(
       ballscrew sweep big.toml --out big.zarr --scheduler tcp://127.0.0.1:8786
     """  # noqa: D301 - click needs the literal \b to keep the example lines
     require("sweep", "ballscrew sweep")
-    from ..files import signal_received
+    from ..io.files import signal_received
     from ..sweep.plan import DEFAULT_MAX_POINTS, check_size, sweep_size
     from ..sweep.run import run_sweep
     from ..sweep.spec import load_sweep

@@ -112,12 +112,12 @@ def torque(
       ballscrew torque --model complete --model catalog --csv t.csv --csv-layout wide \\
           --csv-dialect semicolon-decimal-comma
     """  # noqa: D301 - click needs the literal \b to keep the example lines
-    from ..files import atomic_write
     from ..friction import get_model
     from ..io.case import load_case
+    from ..io.files import atomic_write
+    from ..io.units import parse_range
     from ..report.outputs import json_text
     from ..report.torque import torque_run
-    from ..units import parse_range
 
     case = load_case(case_file)
     if wiper_drag is not None:

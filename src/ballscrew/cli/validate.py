@@ -8,7 +8,7 @@ import click
 from rich.console import Console
 from rich.table import Table
 
-from ..files import atomic_folder
+from ..io.files import atomic_folder
 from .common import progress, stdout, writing
 
 __all__ = ["validate"]

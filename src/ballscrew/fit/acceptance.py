@@ -18,7 +18,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from ..catalog_formulas import drag_torque_tolerance
+from ..design.catalog_formulas import drag_torque_tolerance
 from ..errors import BallScrewInputError
 
 __all__ = ["Acceptance", "accept_drag_torque"]

@@ -56,6 +56,7 @@ import numpy as np
 import numpy.typing as npt
 
 from ..chain import friction_torque
+from ..design.ratings import Ratings, plausibility, static_rating_estimate
 from ..errors import BallScrewInputError, FloatArray
 from ..friction import get_model
 from ..friction.complete import BALL_TRAIN_SCATTER
@@ -63,7 +64,6 @@ from ..geometry import BallScrew
 from ..io.measured import MeasuredCurve
 from ..lubricant import Lubricant
 from ..lubricants import get as get_lubricant
-from ..ratings import Ratings, plausibility, static_rating_estimate
 
 Index = npt.NDArray[np.intp]
 

@@ -41,9 +41,9 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
+from ..design.stiffness import nut_axial_stiffness
 from ..errors import BallScrewInputError, FloatArray, check_nonnegative, check_positive
 from ..geometry import BallScrew
-from ..stiffness import nut_axial_stiffness
 
 __all__ = [
     "FORMS",

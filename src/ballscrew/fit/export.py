@@ -26,8 +26,8 @@ from ..errors import BallScrewInputError, FloatArray
 from ..friction import get_model
 from ..io.case import Case
 from ..io.measured import MeasuredCurve
+from ..io.units import parse_range
 from ..kinematics import rad_s_to_rpm
-from ..units import parse_range
 from .controller import FrictionForm, fit_form, form_curve, with_intervals
 
 __all__ = ["FrictionExport", "axis_inertia", "export_friction", "log_speeds"]

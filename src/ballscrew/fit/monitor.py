@@ -145,7 +145,7 @@ class Threshold:
 
 def threshold(text: str, initial: float) -> Threshold:
     """Read a threshold: ``"50 %"`` (of ``initial`` [N]), ``"1.2 kN"``, ``"lift-off 3 kN"``."""
-    from ..units import to_si
+    from ..io.units import to_si
 
     raw = text.strip()
     if raw.endswith("%"):

@@ -26,7 +26,7 @@ from typing import Any
 
 import numpy as np
 
-from ..catalog_formulas import (
+from ..design.catalog_formulas import (
     catalog_efficiency,
     preload_from_drag_torque,
     preload_torque,

@@ -34,14 +34,14 @@ import numpy as np
 from pydantic import ValidationError
 
 from .. import lubricants
+from ..design.limits import check_operating_bounds
+from ..design.ratings import Ratings, static_rating_estimate
 from ..errors import BallScrewInputError, FloatArray
 from ..geometry import BallScrew, check_buildable
-from ..limits import check_operating_bounds
 from ..lubricant import Lubricant
-from ..ratings import Ratings, static_rating_estimate
-from ..units import Reading, parse_range, to_si
 from .designation import resolve
 from .schema import SECTIONS, Assumed, CaseFile, LubricantSection, ScrewSection
+from .units import Reading, parse_range, to_si
 
 __all__ = [
     "LUBRICANT_UNITS",
@@ -436,7 +436,7 @@ def _check(data: CaseFile, si: Callable[[str, str, Any, str], float]) -> dict[st
     for name in ("required_life", "static_safety", "support_stiffness"):
         if name in out and not (math.isfinite(out[name]) and out[name] > 0.0):
             raise BallScrewInputError(f"check.{name}", getattr(c, name), "a value > 0")
-    from ..sizing import RELIABILITY_FACTORS, TRAVEL_VARIATION_300
+    from ..design.sizing import RELIABILITY_FACTORS, TRAVEL_VARIATION_300
 
     levels = [k for k in RELIABILITY_FACTORS if abs(k - out["reliability"]) < 1e-9]
     if not levels:
@@ -639,7 +639,7 @@ def _preload(
     if s.preload is not None:
         return si("screw", "preload", s.preload, "N")
     if s.preload_drag_torque is not None:
-        from ..catalog_formulas import preload_from_drag_torque
+        from ..design.catalog_formulas import preload_from_drag_torque
 
         torque = si("screw", "preload_drag_torque", s.preload_drag_torque, "N*m")
         return float(preload_from_drag_torque(torque, screw))

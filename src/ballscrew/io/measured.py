@@ -32,7 +32,7 @@ import numpy.typing as npt
 
 from ..errors import BallScrewInputError, FloatArray
 from ..geometry import BallScrew
-from ..units import parse_unit, to_si_array
+from .units import parse_unit, to_si_array
 
 __all__ = ["MeasuredCurve", "error_metrics", "parse_measured", "read_measured"]
 

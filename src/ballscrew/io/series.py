@@ -24,8 +24,8 @@ import numpy as np
 
 from ..errors import BallScrewInputError, FloatArray
 from ..geometry import BallScrew
-from ..units import parse_unit, to_si_array
 from .measured import _HEADER, _csv_rows, _dimension, _numbers, _screw_speed
+from .units import parse_unit, to_si_array
 
 __all__ = ["TorqueSeries", "parse_series", "read_series"]
 

@@ -25,7 +25,7 @@ from .._version import __version__
 from ..axis.energy import CycleResult
 from ..axis.motion import Profile
 from ..errors import FloatArray
-from ..files import atomic_write
+from ..io.files import atomic_write
 from .document import Block, html_page, markdown
 from .outputs import csv_bytes
 from .plotting import write_figures

@@ -18,9 +18,9 @@ import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure as MplFigure
 
-from ..files import atomic_write
 from ..fit.calibration import FitResult, fitted_case_toml
 from ..io.case import Case
+from ..io.files import atomic_write
 from ..kinematics import rad_s_to_rpm
 from .document import Block, html_page, markdown
 from .outputs import csv_text

@@ -25,8 +25,8 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import BallScrewInputError, FloatArray
-from ..files import atomic_write
 from ..fit.friction_map import FrictionMap
+from ..io.files import atomic_write
 from .outputs import csv_text
 
 __all__ = ["FORMATS", "c_header", "csv_file", "mat_file", "modelica_file", "write_map"]

@@ -151,7 +151,7 @@ def write_figures(
 
     Returns the paths written and the PNG bytes by key (for an HTML page).
     """
-    from ..files import atomic_write
+    from ..io.files import atomic_write
 
     (folder / "figures").mkdir(parents=True, exist_ok=True)
     written: list[Path] = []

@@ -30,9 +30,9 @@ import numpy as np
 from .._version import __version__
 from ..contact import hertz
 from ..errors import BallScrewInputError
-from ..files import atomic_write, sweep_temporaries
 from ..friction import get_model
 from ..io.case import Case, parse_case
+from ..io.files import atomic_write, sweep_temporaries
 from ..io.measured import MeasuredCurve, parse_measured
 from ..kinematics import rad_s_to_rpm, rpm_to_rad_s
 from ..loads import ball_loads

@@ -17,9 +17,9 @@ from typing import Any
 import numpy as np
 
 from ..chain import FrictionResult, friction_torque
+from ..design.ratings import Finding, plausibility, raise_errors
 from ..errors import BallScrewValidityWarning, FloatArray
 from ..io.case import WIPER_PARAMETERS, Case
-from ..ratings import Finding, plausibility, raise_errors
 from ..validity import statement
 from .outputs import csv_text, json_text, provenance, result_rows
 

@@ -30,7 +30,7 @@ from matplotlib.figure import Figure
 from matplotlib.ticker import FormatStrFormatter, LogLocator, NullFormatter
 
 from .._version import __version__
-from ..files import atomic_write
+from ..io.files import atomic_write
 from ..study.validation import (
     ACCEPTANCE_BANDS,
     SCORE_GROUPS,

@@ -20,9 +20,9 @@ from typing import Any
 import numpy as np
 
 from .. import lubricants
-from ..catalog_formulas import preload_from_drag_torque
 from ..chain import FrictionResult
 from ..chain import friction_torque as chain_friction_torque
+from ..design.catalog_formulas import preload_from_drag_torque
 from ..errors import BallScrewValidityWarning
 from ..io.case import Case
 from ..io.measured import MeasuredCurve, error_metrics
@@ -107,7 +107,7 @@ def _preloads(case: Case) -> dict[float, float]:
     The case's ``drag_torques`` if given; otherwise the case's own preload
     times 0.5, 1 and 1.5, keyed by their catalogue drag torque.
     """
-    from ..catalog_formulas import preload_torque
+    from ..design.catalog_formulas import preload_torque
 
     screw = case.screw
     if case.drag_torques:

@@ -18,8 +18,8 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from ..chain import friction_torque as chain_friction_torque
-from ..extras import MissingExtraWarning, missing
 from ..io.case import Case
+from ..io.extras import MissingExtraWarning, missing
 from ..kinematics import rad_s_to_rpm
 from ..sweep.sensitivity import SobolIndices
 from ..sweep.uncertainty import Distribution

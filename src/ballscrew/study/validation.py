@@ -62,8 +62,8 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from ..catalog_formulas import DRAG_TORQUE_TOLERANCE
 from ..chain import friction_torque, models
+from ..design.catalog_formulas import DRAG_TORQUE_TOLERANCE
 from ..errors import BallScrewValidityWarning, FloatArray
 from ..examples import reference_screw
 from ..geometry import BallScrew

@@ -34,7 +34,7 @@ import numpy as np
 from .._version import __version__
 from ..chain import friction_torque
 from ..errors import BallScrewInputError, FloatArray
-from ..files import atomic_write, deferred_signals
+from ..io.files import atomic_write, deferred_signals
 from .spec import OPERATING, OUTPUTS, SCALAR_OUTPUTS, SweepSpec, resolve
 
 __all__ = [

@@ -27,9 +27,9 @@ from typing import Any
 import numpy as np
 
 from ..errors import BallScrewInputError
-from ..extras import require
-from ..files import OutputInUseError, exclusive_lock
 from ..helix import JIT_LOAD_POINTS, load_kernel
+from ..io.extras import require
+from ..io.files import OutputInUseError, exclusive_lock
 from .plan import ChunkReport, Plan, plan_sweep, run_chunk
 from .spec import OPERATING, SweepSpec
 

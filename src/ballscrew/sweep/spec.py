@@ -37,11 +37,11 @@ import numpy as np
 import tomlkit
 
 from ..chain import FrictionResult
+from ..design.limits import check_operating_bounds
 from ..errors import BallScrewInputError, FloatArray
 from ..friction import MODELS, get_model
 from ..io.case import Case, load_case, parse_case, parse_toml
-from ..limits import check_operating_bounds
-from ..units import parse_range, to_si
+from ..io.units import parse_range, to_si
 from .fields import (
     OPERATING,
     check_value,

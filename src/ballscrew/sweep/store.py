@@ -21,8 +21,8 @@ import numpy as np
 
 from .._version import __version__
 from ..errors import BallScrewInputError
-from ..files import swap_in
 from ..friction import get_model
+from ..io.files import swap_in
 from .spec import OPERATING, OUTPUT_TABLE, OUTPUTS, SCALAR_OUTPUTS
 
 __all__ = ["FORMAT", "attributes", "create", "finalize", "markers", "partial_path"]

@@ -16,7 +16,7 @@ from typing import Any
 
 from ..errors import BallScrewInputError
 from ..io.case import Case
-from ..units import to_si
+from ..io.units import to_si
 from .fields import OPERATING, check_value, field_unit, unknown_keys
 
 __all__ = ["DISTRIBUTIONS", "Distribution", "Uncertainty", "parse_uncertainty"]

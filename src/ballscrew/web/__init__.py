@@ -10,7 +10,7 @@ this package raises :class:`ballscrew.extras.MissingExtraError` naming the extra
 
 from __future__ import annotations
 
-from ..extras import require
+from ..io.extras import require
 
 require("web", "ballscrew.web")
 

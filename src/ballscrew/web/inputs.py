@@ -20,7 +20,7 @@ import tomlkit
 
 from ..errors import BallScrewInputError
 from ..io.case import Case, parse_case, parse_toml
-from ..units import range_size
+from ..io.units import range_size
 
 __all__ = [
     "LIMITS",

@@ -26,11 +26,12 @@ import numpy as np
 
 from ..axis.motion import parse_move
 from ..chain import FrictionResult
+from ..design.ratings import plausibility, raise_errors
 from ..errors import BallScrewInputError, BallScrewSpeedWarning, BallScrewValidityWarning
 from ..friction import MODELS, get_model
 from ..io.case import Case
+from ..io.units import Reading, parse_range
 from ..kinematics import rad_s_to_rpm
-from ..ratings import plausibility, raise_errors
 from ..report.outputs import (
     INPUT_DIGITS,
     csv_text,
@@ -41,7 +42,6 @@ from ..report.outputs import (
     round_significant,
 )
 from ..report.torque import run_models, warning_lines
-from ..units import Reading, parse_range
 from .inputs import (
     LIMITS,
     ApiError,

@@ -62,7 +62,7 @@ import math
 import numpy as np
 import numpy.typing as npt
 
-from .errors import BallScrewInputError, FloatArray, check_nonnegative, check_positive
+from ..errors import BallScrewInputError, FloatArray, check_nonnegative, check_positive
 from .stiffness import SHAFT_MODULUS
 
 __all__ = [

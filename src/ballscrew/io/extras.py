@@ -12,7 +12,7 @@ line and exits with status 2.
 
 Examples
 --------
->>> from ballscrew.extras import EXTRAS, missing
+>>> from ballscrew.io.extras import EXTRAS, missing
 >>> EXTRAS["sweep"]
 ('xarray', 'zarr', 'dask', 'distributed', 'SALib')
 >>> missing("sweep", modules=("math",)) is None

@@ -55,10 +55,10 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
-from .contact import hertz
-from .errors import BallScrewInputError, FloatArray, check_finite
-from .geometry import BallScrew
-from .loads import ball_loads
+from ..contact import hertz
+from ..errors import BallScrewInputError, FloatArray, check_finite
+from ..geometry import BallScrew
+from ..loads import ball_loads
 
 __all__ = [
     "PRELOAD_SHARE_LIMIT",

@@ -44,9 +44,9 @@ from typing import Literal
 
 import numpy.typing as npt
 
-from .errors import BallScrewInputError, FloatArray, check_in_range, check_positive
-from .geometry import BallScrew
-from .kinematics import rad_s_to_rpm
+from ..errors import BallScrewInputError, FloatArray, check_in_range, check_positive
+from ..geometry import BallScrew
+from ..kinematics import rad_s_to_rpm
 
 __all__ = [
     "DEFAULT_DN_LIMIT",

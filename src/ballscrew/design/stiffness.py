@@ -35,10 +35,10 @@ import math
 import numpy as np
 import numpy.typing as npt
 
-from .contact import hertz
-from .errors import BallScrewInputError, FloatArray, check_positive
-from .geometry import BallScrew
-from .loads import ball_loads
+from ..contact import hertz
+from ..errors import BallScrewInputError, FloatArray, check_positive
+from ..geometry import BallScrew
+from ..loads import ball_loads
 
 __all__ = [
     "CATALOGUE_RIGIDITY_RATIO",

@@ -7,7 +7,7 @@ from collections.abc import Callable
 import numpy as np
 import numpy.typing as npt
 
-from .errors import FloatArray
+from ..errors import FloatArray
 
 __all__ = ["Index", "illinois", "newton_bracketed"]
 

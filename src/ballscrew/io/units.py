@@ -55,7 +55,7 @@ from dataclasses import dataclass
 from types import ModuleType
 from typing import TYPE_CHECKING, Any
 
-from .errors import BallScrewInputError, BallScrewReadingWarning
+from ..errors import BallScrewInputError, BallScrewReadingWarning
 
 
 def _import_pint_without_dask() -> ModuleType:

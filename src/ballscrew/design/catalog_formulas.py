@@ -27,14 +27,14 @@ import math
 import numpy as np
 import numpy.typing as npt
 
-from .errors import (
+from ..errors import (
     BallScrewInputError,
     FloatArray,
     check_in_range,
     check_nonnegative,
     check_positive,
 )
-from .geometry import BallScrew
+from ..geometry import BallScrew
 
 __all__ = [
     "DRAG_TORQUE_TOLERANCE",
