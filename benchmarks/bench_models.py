@@ -85,7 +85,7 @@ import time, warnings
 warnings.simplefilter("ignore")
 from ballscrew.io.case import load_case
 from ballscrew.axis.motion import parse_move
-from ballscrew.axis.run import energy_run, profile_from_move
+from ballscrew.axis.duty import energy_run, profile_from_move
 case, m = load_case(None), parse_move({MOVE!r})
 energy_run(case, profile_from_move(m, 1), ["complete"], cycles=1, run_time=3600.0, move=m)
 for cycles in (1, 10):

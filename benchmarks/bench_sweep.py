@@ -23,7 +23,7 @@ import tempfile
 import time
 from pathlib import Path
 
-from ballscrew.sweep.run import run_sweep
+from ballscrew.sweep.execute import run_sweep
 from ballscrew.sweep.spec import parse_sweep
 
 CASE = """

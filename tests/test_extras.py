@@ -85,7 +85,7 @@ def test_the_web_package_without_its_extra_names_it(monkeypatch: pytest.MonkeyPa
 
 
 def test_run_sweep_without_its_extra_names_it(monkeypatch: pytest.MonkeyPatch) -> None:
-    from ballscrew.sweep.run import run_sweep
+    from ballscrew.sweep.execute import run_sweep
 
     monkeypatch.setitem(sys.modules, "zarr", None)
     with pytest.raises(MissingExtraError, match=r"zarr is not installed.*ballscrew\[sweep\]"):

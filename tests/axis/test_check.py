@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from ballscrew.axis.check import CHECK_FROM, axis_check, verdict
-from ballscrew.axis.run import energy_run, profile_from_move
+from ballscrew.axis.duty import energy_run, profile_from_move
 from ballscrew.design.sizing import STEEL_EXPANSION, TRAVEL_VARIATION_300
 from ballscrew.design.stiffness import SHAFT_MODULUS, nut_axial_stiffness
 from ballscrew.errors import BallScrewInputError

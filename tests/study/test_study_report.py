@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from ballscrew.io.case import load_case
-from ballscrew.study.run import StudyResult, run_study
+from ballscrew.study.reproduce import StudyResult, run_study
 
 pytestmark = pytest.mark.slow  # every test reads one whole study run
 

@@ -12,7 +12,7 @@ from scipy import stats
 
 from ballscrew import friction_torque
 from ballscrew.io.case import load_case
-from ballscrew.sweep.run import run_sweep
+from ballscrew.sweep.execute import run_sweep
 from ballscrew.sweep.sensitivity import sample, sobol_indices
 from ballscrew.sweep.spec import Distribution, parse_sweep
 from cli_runner import run

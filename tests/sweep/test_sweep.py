@@ -15,7 +15,7 @@ import xarray as xr
 
 from ballscrew import friction_torque
 from ballscrew.io.case import load_case
-from ballscrew.sweep.run import plan_sweep, run_sweep
+from ballscrew.sweep.execute import plan_sweep, run_sweep
 from ballscrew.sweep.spec import parse_sweep
 from ballscrew.sweep.store import partial_path, progress_path
 from cli_runner import run

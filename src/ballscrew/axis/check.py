@@ -1,7 +1,7 @@
 r"""The whole axis check: life, safety, speed, stiffness, thermal lead error and the motor.
 
 What ``ballscrew check`` computes. :func:`axis_check` takes an
-:class:`~ballscrew.axis.run.EnergyRun` (the case, the motion cycle, the torques
+:class:`~ballscrew.axis.duty.EnergyRun` (the case, the motion cycle, the torques
 and the temperature the cycle reaches, as ``ballscrew energy`` computes them)
 and sets every criterion of a feed-drive designer's sizing against its limit,
 with the formulas of :mod:`ballscrew.sizing`, :mod:`ballscrew.stiffness` and
@@ -71,8 +71,8 @@ from ..design.stiffness import (
 )
 from ..errors import BallScrewInputError, FloatArray
 from ..kinematics import rad_s_to_rpm
+from .duty import EnergyRun
 from .energy import CycleResult
-from .run import EnergyRun
 
 __all__ = ["CHECK_FROM", "AxisCheck", "Criterion", "axis_check", "verdict"]
 

@@ -122,7 +122,7 @@ class Axis:
         The nut's d·n limit [mm·rpm] (catalogue value).
     max_feed, max_acceleration : float, optional
         The axis' speed [m/s] and acceleration [m/s²] limits; a motion beyond
-        them is refused (:func:`ballscrew.axis.run.motion_plausibility`).
+        them is refused (:func:`ballscrew.axis.duty.motion_plausibility`).
     """
 
     moving_mass: float

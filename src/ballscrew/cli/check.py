@@ -68,7 +68,7 @@ def check_command(
     """  # noqa: D301 - click needs the literal \b to keep the example lines
     from .._version import __version__
     from ..axis.check import axis_check
-    from ..axis.run import energy_run
+    from ..axis.duty import energy_run
     from ..io.case import load_case
     from ..io.units import to_si
     from ..report.outputs import json_document

@@ -97,7 +97,7 @@ def motion(
     move_text: str | None, profile_file: str | None, cycles: int
 ) -> tuple[Any, dict[str, float]]:
     """The motion profile of ``--move`` or ``--profile`` (exactly one), and the move's fields."""
-    from ..axis.run import profile_from_file, profile_from_move
+    from ..axis.duty import profile_from_file, profile_from_move
 
     if (move_text is None) == (profile_file is None):
         raise click.UsageError("give exactly one of --move and --profile")

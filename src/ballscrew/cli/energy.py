@@ -14,7 +14,7 @@ from ..io.files import atomic_folder
 from .common import motion, stdout, write_json, writing
 
 if TYPE_CHECKING:
-    from ..axis.run import EnergyRun
+    from ..axis.duty import EnergyRun
     from ..axis.thermal import SteadyAtSpeed
 
 __all__ = ["energy_command"]
@@ -69,7 +69,7 @@ def energy_command(
                 force_from=50 mm, force_to=250 mm"
     """  # noqa: D301 - click needs the literal \b to keep the example lines
     from .._version import __version__
-    from ..axis.run import energy_run
+    from ..axis.duty import energy_run
     from ..io.case import load_case
     from ..io.units import parse_range, to_si
     from ..report.outputs import json_document

@@ -45,7 +45,7 @@ def study(
     from ..io.case import load_case
     from ..io.measured import read_measured
     from ..report.study import load_record, write_report
-    from ..study.run import run_study
+    from ..study.reproduce import run_study
 
     console = Console(stderr=True)
     if record_file is not None:

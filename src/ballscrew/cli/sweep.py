@@ -182,8 +182,8 @@ def sweep_command(
     """  # noqa: D301 - click needs the literal \b to keep the example lines
     require("sweep", "ballscrew sweep")
     from ..io.files import signal_received
+    from ..sweep.execute import run_sweep
     from ..sweep.plan import DEFAULT_MAX_POINTS, check_size, sweep_size
-    from ..sweep.run import run_sweep
     from ..sweep.spec import load_sweep
     from ..sweep.store import partial_path
 

@@ -36,7 +36,7 @@ from ..io.files import atomic_write, sweep_temporaries
 from ..io.measured import MeasuredCurve, parse_measured
 from ..kinematics import rad_s_to_rpm, rpm_to_rad_s
 from ..loads import ball_loads
-from ..study.run import StudyResult, StudySensitivity, run_study
+from ..study.reproduce import StudyResult, StudySensitivity, run_study
 from .document import Block, html_page, markdown
 from .plotting import figure_bytes, render, sensitivity_figure
 

@@ -193,9 +193,9 @@ _MOVE_KEYS = ("stroke", "feed", "acceleration")
 
 def _energy(case: Case, move: Any, limits: Limits) -> dict[str, Any]:
     """The energy of one back-and-forth move (``ballscrew energy --move``), complete model."""
+    from ..axis.duty import motion_plausibility
     from ..axis.energy import axis_cycle
     from ..axis.motion import back_and_forth
-    from ..axis.run import motion_plausibility
     from ..axis.setup import axis_setup
 
     if not isinstance(move, Mapping) or not all(isinstance(move.get(k), str) for k in _MOVE_KEYS):
@@ -257,7 +257,7 @@ def _check(
     check says what it is, as its verdict, and the energy is still shown.
     """
     from ..axis.check import axis_check
-    from ..axis.run import energy_run
+    from ..axis.duty import energy_run
 
     try:
         with warnings.catch_warnings():

@@ -159,7 +159,7 @@ def run_sweep(
     MissingExtraError
         When the ``sweep`` extra is not installed.
     """
-    require("sweep", "ballscrew.sweep.run.run_sweep")
+    require("sweep", "ballscrew.sweep.execute.run_sweep")
     from . import store
 
     if workers is not None and scheduler is not None:
