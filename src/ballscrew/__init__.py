@@ -20,8 +20,7 @@ from . import _moved, contact, ehl, friction, kinematics, loads, lubricants, rhe
 from ._version import __version__
 from .chain import FrictionResult, friction_torque, friction_torques, models
 from .errors import BallScrewInputError
-from .examples import reference_screw
-from .geometry import BallScrew
+from .geometry import BallScrew, reference_screw
 from .lubricant import Lubricant
 
 _moved.install()  # old module paths, for one release

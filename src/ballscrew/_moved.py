@@ -28,6 +28,7 @@ MOVED: dict[str, str] = {
     "units": "io.units",
     "files": "io.files",
     "extras": "io.extras",
+    "examples": "geometry",
     # 0.2.0: the wings and the readers became folders
     "case": "io.case",
     "case_schema": "io.schema",

@@ -40,7 +40,7 @@ def demo(lubricant_name: str, temperature: float) -> None:
       ballscrew demo --lubricant "SAE 20" --temperature 30
     """  # noqa: D301 - click needs the literal \b to keep the example lines
     from .. import lubricants
-    from ..examples import reference_screw
+    from ..geometry import reference_screw
 
     console = Console(width=110, markup=False)
     screw = reference_screw()

@@ -65,8 +65,7 @@ import numpy.typing as npt
 from ..chain import friction_torque, models
 from ..design.catalog_formulas import DRAG_TORQUE_TOLERANCE
 from ..errors import BallScrewValidityWarning, FloatArray
-from ..examples import reference_screw
-from ..geometry import BallScrew
+from ..geometry import BallScrew, reference_screw
 from ..kinematics import rpm_to_rad_s
 from ..lubricant import Lubricant
 from ..lubricants import get as get_lubricant
