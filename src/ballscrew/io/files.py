@@ -19,6 +19,7 @@ import os
 import re
 import secrets
 import signal
+import stat
 import threading
 from collections.abc import Callable, Iterator
 from pathlib import Path
@@ -32,6 +33,7 @@ __all__ = [
     "deferred_signals",
     "exclusive_lock",
     "swap_in",
+    "sweep_stale_folders",
     "sweep_temporaries",
 ]
 
@@ -111,13 +113,33 @@ def _deliver(
         os.kill(os.getpid(), signum)  # the default action, now that the handler is restored
 
 
-def atomic_write(path: Path, data: bytes) -> None:
-    """Write ``data`` to ``path`` through a temporary file and an atomic rename.
+def atomic_write(path: Path | str, data: bytes) -> None:
+    """Write ``data`` where ``path`` points: a regular file atomically, anything else directly.
 
-    The file gets the permissions of any new file (the umask applies), not
-    those of a private temporary file.
+    - ``-`` is standard output.
+    - A regular file (or a new name) is written through a temporary file in the same
+      folder and an atomic rename, so a reader (or an interrupted run) sees either the
+      complete new file or the complete old one. The file gets the permissions of any
+      new file (the umask applies), not those of a private temporary file.
+    - A symbolic link to a regular file keeps its link: the file it points to is
+      replaced atomically.
+    - A named pipe, a character device or a socket (or a link to one) is opened and
+      written as it is: renaming a file over it would replace what the user pointed at.
     """
+    if str(path) == "-":
+        import sys
+
+        sys.stdout.flush()
+        sys.stdout.buffer.write(data)
+        sys.stdout.buffer.flush()
+        return
     path = Path(path)
+    if not _is_regular_or_new(path):
+        with open(path, "wb") as handle:  # a pipe, a device: written as it is
+            handle.write(data)
+        return
+    if path.is_symlink():
+        path = Path(os.path.realpath(path))  # the link stays; its target is replaced
     path.parent.mkdir(parents=True, exist_ok=True)
     tmp = _temporary(path)
     with deferred_signals():
@@ -130,6 +152,15 @@ def atomic_write(path: Path, data: bytes) -> None:
         except BaseException:
             tmp.unlink(missing_ok=True)
             raise
+
+
+def _is_regular_or_new(path: Path) -> bool:
+    """Whether ``path`` (followed through links) is a regular file or does not exist yet."""
+    try:
+        mode = os.stat(path).st_mode
+    except FileNotFoundError:
+        return True  # a new file (or a dangling link: its target is created)
+    return stat.S_ISREG(mode)
 
 
 def sweep_temporaries(folder: Path) -> int:
@@ -152,25 +183,64 @@ def sweep_temporaries(folder: Path) -> int:
 def atomic_folder(folder: Path) -> Iterator[Path]:
     """A report folder written whole: files go to a sibling, swapped in when all are written.
 
-    Yields the temporary folder (``.<name>.<hex>.new`` beside ``folder``). When
+    Yields the temporary folder (``.<name>.<pid>-<hex>.new`` beside ``folder``). When
     the block ends normally, ``folder`` (if any) is moved aside and the new one
     renamed into its place, under :func:`deferred_signals`, so the folder is
     always either the earlier run's, whole, or this run's, whole: never a mix.
     When the block raises (Ctrl-C included) the temporary folder is removed and
-    ``folder`` is left as it was.
+    ``folder`` is left as it was. A run killed outright leaves its temporary folder
+    behind: the next run into the same folder removes it (:func:`sweep_stale_folders`).
     """
     folder = Path(folder)
     folder.parent.mkdir(parents=True, exist_ok=True)
-    tmp = folder.parent / f".{folder.name}.{secrets.token_hex(6)}.new"
+    sweep_stale_folders(folder)
+    tmp = folder.parent / f".{folder.name}.{os.getpid()}-{secrets.token_hex(6)}.new"
     tmp.mkdir()
     try:
         yield tmp
-        old = folder.parent / f".{folder.name}.{secrets.token_hex(6)}.old"
+        old = folder.parent / f".{folder.name}.{os.getpid()}-{secrets.token_hex(6)}.old"
         if swap_in(tmp, folder, aside=old):
             _remove_tree(old)
     except BaseException:
         _remove_tree(tmp)
         raise
+
+
+_FOLDER_TEMP = re.compile(r"^\.(?P<name>.+)\.(?:(?P<pid>\d+)-)?[0-9a-f]{12}\.(?:new|old)$")
+
+
+def sweep_stale_folders(folder: Path) -> int:
+    """Remove the temporary siblings of ``folder`` that killed runs of :func:`atomic_folder` left.
+
+    A sibling ``.<name>.<pid>-<hex>.new`` (or ``.old``) is removed when its process no
+    longer runs, so a run in progress keeps its own; one without a process id (written
+    by a release before 0.3.0) is removed too. Returns how many were removed.
+    """
+    folder = Path(folder)
+    if not folder.parent.is_dir():
+        return 0
+    removed = 0
+    for entry in folder.parent.iterdir():
+        match = _FOLDER_TEMP.match(entry.name)
+        if not match or match["name"] != folder.name or not entry.is_dir():
+            continue
+        if match["pid"] is not None and _alive(int(match["pid"])):
+            continue
+        _remove_tree(entry)
+        removed += 1
+    return removed
+
+
+def _alive(pid: int) -> bool:
+    if pid == os.getpid():
+        return True
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:  # another user's process: running
+        return True
+    return True
 
 
 def swap_in(new: Path, target: Path, *, aside: Path) -> bool:
