@@ -158,8 +158,8 @@ def _is_regular_or_new(path: Path) -> bool:
     """Whether ``path`` (followed through links) is a regular file or does not exist yet."""
     try:
         mode = os.stat(path).st_mode
-    except FileNotFoundError:
-        return True  # a new file (or a dangling link: its target is created)
+    except (FileNotFoundError, NotADirectoryError):
+        return True  # a new file (or a dangling link: its target is created); mkdir says why not
     return stat.S_ISREG(mode)
 
 
