@@ -602,7 +602,7 @@ def _ball_train(
         mu_bb = ball_ball_friction(
             state, c, c_b * c.load, mu_bl, tau0, gamma_l,
             asperity_b=asperity_b, asperity_c=asperity_c,
-        ) if touching else np.zeros(1)  # fmt: skip
+        ) if touching else np.zeros(shape)  # fmt: skip
         ball_ball = ball_ball + c.balls * mu_bb * c_b * c.load * sliding
         # Each family of a double nut has its circuits; a 4-point ball belongs to both
         # families, and is counted with the first. The grooves drive the train only where
