@@ -388,6 +388,10 @@ def parse_move(text: str) -> dict[str, float]:
             raise BallScrewInputError(
                 "--move", part, f"key=value with a unit; keys: {', '.join(MOVE_KEYS)}"
             )
+        if key in out:
+            raise BallScrewInputError(
+                f"--move {key}", text, f"{key} once (it is given twice; which one is meant?)"
+            )
         out[key] = to_si(f"--move {key}", value.strip(), MOVE_KEYS[key][0])
     missing = [k for k, (_, needed) in MOVE_KEYS.items() if needed and k not in out]
     if missing:

@@ -147,6 +147,7 @@ def _grouped(parts: list[str]) -> bool:
     return (
         all(p.isdigit() for p in parts)
         and 1 <= len(parts[0]) <= 3
+        and (len(parts) == 1 or parts[0][0] != "0")  # '0 500' is two values, not 500
         and all(len(p) == 3 for p in parts[1:])
     )
 
@@ -160,7 +161,8 @@ def _digits_value(digits: str) -> str:
         if not tail or not _grouped([*head, tail.group(1)]):
             raise _NotOneNumberError(
                 "a space inside a number is read only as a thousands separator, between "
-                "groups of three digits (e.g. '1 200'); write the number without spaces"
+                "groups of three digits (e.g. '1 200'); write the number without spaces, "
+                "or separate several values with commas ('0, 500')"
             )
         fraction = "." + tail.group(3) if tail.group(2) else ""
         return "".join(head) + tail.group(1) + fraction
@@ -572,6 +574,10 @@ _COUNT = re.compile(r":\s*(\d+)")
 
 def _range_parts(field: str, raw: str) -> tuple[str, str, int | None]:
     """``a..b:n unit`` split into the text of a, of 'b unit' and the count (None: default)."""
+    if "..." in raw or "\u2026" in raw:
+        raise BallScrewInputError(
+            field, raw, "a range with two points, 'a..b unit' ('...' is no range)"
+        )
     low, high = raw.split("..", 1)
     counts = _COUNT.findall(high)
     if ".." in high or len(counts) > 1 or high.count(":") != len(counts):
@@ -638,7 +644,7 @@ def _range_values(
     raw = _clean(field, text)
     if not raw:
         raise BallScrewInputError(field, text, _LIST_HELP)
-    if ".." in raw:
+    if ".." in raw or "\u2026" in raw:
         low, high, count = _range_parts(field, raw)
         n = default_points if count is None else count
         if n < 1 or n > 1_000_000:

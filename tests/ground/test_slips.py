@@ -1,0 +1,48 @@
+"""Inputs typed loosely are read as meant or refused naming the field (issue 35).
+
+Each slip below was misread silently by release 0.2.0 (the attack's list): a range with
+three points, two values typed with a space for one, a key of --move given twice. Each
+is now refused, with the form that works in the message.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from ballscrew.axis.motion import parse_move
+from ballscrew.errors import BallScrewInputError
+from ballscrew.io.units import parse_range, to_si
+
+
+@pytest.mark.parametrize(
+    ("text", "hint"),
+    [
+        ("10...3000:3 rpm", "'a..b unit'"),  # 0.2.0: 10, 5.15 and 0.3 rpm
+        ("10\u20263000 rpm", "'a..b unit'"),  # the ellipsis character
+    ],
+)
+def test_a_range_with_three_points_is_refused(text: str, hint: str) -> None:
+    with pytest.raises(BallScrewInputError, match="speed") as err:
+        parse_range("speed", text, "rad/s")
+    assert hint in str(err.value)
+
+
+@pytest.mark.parametrize("reader", ["one value", "a list"])
+def test_two_values_typed_with_a_space_are_refused(reader: str) -> None:
+    # 0.2.0 read '0 500 N' as one value of 500 N: a thousands group cannot start with 0.
+    with pytest.raises(BallScrewInputError, match=r"axial_load.*'0, 500'"):
+        if reader == "one value":
+            to_si("axial_load", "0 500 N", "N")
+        else:
+            parse_range("axial_load", "0 500 N", "N")
+
+
+@pytest.mark.parametrize(("text", "meant"), [("1 200 N", 1200.0), ("12 500 N", 12500.0)])
+def test_thousands_groups_are_still_read(text: str, meant: float) -> None:
+    assert to_si("axial_load", text, "N") == meant
+
+
+def test_a_move_key_given_twice_is_refused() -> None:
+    # 0.2.0 kept the last stroke (200 mm) without a word.
+    with pytest.raises(BallScrewInputError, match=r"--move stroke.*twice"):
+        parse_move("stroke=300 mm, feed=1 m/min, acceleration=1 m/s^2, stroke=200 mm")
