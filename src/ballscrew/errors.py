@@ -93,19 +93,54 @@ def _show(value: Any) -> str:
     return f"array of shape {arr.shape}"
 
 
+_NUMBER_KINDS = frozenset("iuf")  # signed and unsigned integers, floats: what a quantity is
+
+
 def _as_float_array(field: str, value: Any) -> FloatArray:
+    if type(value) is float:  # the common single-point case, cheapest first
+        return np.asarray(value)
+    kind = _kind(value)
+    if kind == "U":
+        raise BallScrewInputError(
+            field,
+            value,
+            "a real number or an array of real numbers in SI units (a text with its unit, "
+            "such as '3000 1/min', is read by ballscrew.io.units.to_si(field, text, unit) "
+            "first)",
+        )
+    if kind not in _NUMBER_KINDS and kind != "O":
+        what = {"b": "a truth value", "S": "bytes", "M": "a date", "m": "a time span"}
+        raise BallScrewInputError(
+            field, value, f"a real number or an array of real numbers, not {what.get(kind, kind)}"
+        )
     try:
         arr = np.asarray(value, dtype=np.float64)
+    except OverflowError:
+        raise BallScrewInputError(
+            field, value, "a number a double-precision float can hold (below 1.8e308)"
+        ) from None
     except (TypeError, ValueError):
-        allowed = "a real number or an array of real numbers"
-        if isinstance(value, str) or (isinstance(value, list | tuple) and any(
-                isinstance(v, str) for v in value)):  # fmt: skip
-            allowed += (
-                " in SI units (a text with its unit, such as '3000 1/min', is read by "
-                "ballscrew.io.units.to_si(field, text, unit) first)"
-            )
-        raise BallScrewInputError(field, value, allowed) from None
+        raise BallScrewInputError(
+            field, value, "a real number or an array of real numbers"
+        ) from None
     return arr
+
+
+def _kind(value: Any) -> str:
+    """The kind letter numpy gives ``value``'s elements ('O' for mixed Python objects)."""
+    if isinstance(value, bool | np.bool_):
+        return "b"
+    if isinstance(value, int):  # a Python int of any length: 'i' (too long: overflow below)
+        return "i"
+    if isinstance(value, list | tuple):
+        for odd, letter in ((str, "U"), (bytes, "S"), (bool | np.bool_, "b")):
+            if any(isinstance(v, odd) for v in value):
+                return letter
+        return "O"
+    try:
+        return str(np.asarray(value).dtype.kind)
+    except Exception:  # an object numpy cannot hold: let the conversion say why
+        return "O"
 
 
 def _first_bad(arr: FloatArray, bad: npt.NDArray[np.bool_]) -> float:

@@ -7,8 +7,10 @@ is now refused, with the form that works in the message.
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
 
+from ballscrew import friction_torque, reference_screw
 from ballscrew.axis.motion import parse_move
 from ballscrew.errors import BallScrewInputError
 from ballscrew.io.units import parse_range, to_si
@@ -46,3 +48,28 @@ def test_a_move_key_given_twice_is_refused() -> None:
     # 0.2.0 kept the last stroke (200 mm) without a word.
     with pytest.raises(BallScrewInputError, match=r"--move stroke.*twice"):
         parse_move("stroke=300 mm, feed=1 m/min, acceleration=1 m/s^2, stroke=200 mm")
+
+
+@pytest.mark.parametrize(
+    ("value", "why"),
+    [
+        (b"100", "not bytes"),  # 0.2.0: 100 rad/s
+        (np.datetime64("2026-11-26"), "not a date"),  # 0.2.0: days since 1970 as rad/s
+        (np.timedelta64(3, "s"), "not a time span"),
+        (True, "not a truth value"),  # 0.2.0: 1 rad/s
+        ([10.0, True], "not a truth value"),
+        ("100", "to_si"),  # text goes through the unit reader first
+        (10**400, "below 1.8e308"),  # 0.2.0: OverflowError in every model
+    ],
+)
+def test_a_speed_that_is_no_number_is_refused_by_name(value: object, why: str) -> None:
+    with pytest.raises(BallScrewInputError, match="speed") as err:
+        friction_torque(reference_screw(), "mineral ISO VG 68", speed=value, temperature=40.0)
+    assert why in str(err.value)
+
+
+@pytest.mark.parametrize("value", [100, np.float32(100.0), np.int64(100), [100, 200]])
+def test_numbers_of_any_numeric_type_are_read(value: object) -> None:
+    r = friction_torque(reference_screw(), "mineral ISO VG 68", speed=value, temperature=40.0,
+                        model="catalog")  # fmt: skip
+    assert np.all(np.asarray(r.total) > 0.0)
