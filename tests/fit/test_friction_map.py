@@ -122,6 +122,21 @@ def test_mat_read_back_as_a_lookup_table(fmap, tmp_path: Path) -> None:  # type:
     got = lookup(np.stack([w.ravel(), f.ravel(), t.ravel()], axis=-1)).reshape(w.shape)
     np.testing.assert_allclose(np.transpose(got, (2, 1, 0)), fmap.motor_torque, rtol=1e-14)
     assert "conventions" in str(m["description"])
+    assert m["__header__"] == b"MATLAB 5.0 MAT-file, written by ballscrew test"
+
+
+def test_two_exports_of_one_map_are_the_same_bytes(  # type: ignore[no-untyped-def]
+    fmap, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # Issue 35: scipy puts the clock's time in the MAT-file's text; two runs must not differ,
+    # even a second apart (the clock made to tick at every call).
+    ticks = iter(range(1_000_000))
+    monkeypatch.setattr("time.asctime", lambda *a: f"tick {next(ticks)}")
+    for suffix in FORMATS:
+        one, two = tmp_path / f"one{suffix}", tmp_path / f"two{suffix}"
+        write_map(fmap, one, "test")
+        write_map(fmap, two, "test")
+        assert one.read_bytes() == two.read_bytes(), suffix
 
 
 def test_modelica_record_and_tables(fmap, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
