@@ -78,7 +78,16 @@ def mat_file(m: FrictionMap, version: str) -> bytes:
         "motor_friction_torque_Nm": table(m.motor_torque),
         "lead_m": m.lead, "gear_ratio": m.gear_ratio,
     }, do_compression=True, oned_as="column")  # fmt: skip
-    return buffer.getvalue()
+    # The file's first 116 bytes are free text; scipy writes the clock's time there, which
+    # would make two exports of the same map differ. The same text without the time:
+    text = f"MATLAB 5.0 MAT-file, written by ballscrew {version}".encode("ascii")
+    return (
+        text.ljust(_MAT_DESCRIPTION, b" ")[:_MAT_DESCRIPTION] + buffer.getvalue()[_MAT_DESCRIPTION:]
+    )
+
+
+_MAT_DESCRIPTION = 116
+"""Length of a MAT-file version 5's descriptive text [bytes] (MathWorks, MAT-File Format)."""
 
 
 def _identifier(text: str) -> str:
