@@ -78,3 +78,22 @@ def test_a_killed_runs_folder_is_removed_and_a_live_runs_kept(tmp_path: Path) ->
     with atomic_folder(tmp_path / "report") as tmp:
         (tmp / "a.txt").write_text("a")
     assert (tmp_path / "report" / "a.txt").read_text() == "a"
+
+
+def test_an_input_that_is_no_regular_file_is_refused_by_name(tmp_path: Path) -> None:
+    from ballscrew.errors import BallScrewInputError
+    from ballscrew.io.files import read_input_text
+
+    fifo = tmp_path / "case.toml"
+    os.mkfifo(fifo)  # 0.2.0 waited for a writer forever
+    for path, why in [(fifo, "pipe or a device"), (Path("/dev/zero"), "pipe or a device"),
+                      (tmp_path, "folder"), (tmp_path / "none.toml", "No such file")]:  # fmt: skip
+        with pytest.raises(BallScrewInputError, match="--case") as err:
+            read_input_text("--case", path)
+        assert why in str(err.value)
+    text = tmp_path / "ok.toml"
+    text.write_bytes("title = 'Fräse'\n".encode())
+    assert read_input_text("--case", text) == "title = 'Fräse'\n"
+    text.write_bytes(b"\xff\xfe")
+    with pytest.raises(BallScrewInputError, match="UTF-8"):
+        read_input_text("--case", text)

@@ -27,11 +27,13 @@ from types import FrameType
 from typing import Any
 
 __all__ = [
+    "MAX_INPUT_BYTES",
     "OutputInUseError",
     "atomic_folder",
     "atomic_write",
     "deferred_signals",
     "exclusive_lock",
+    "read_input_text",
     "swap_in",
     "sweep_stale_folders",
     "sweep_temporaries",
@@ -303,3 +305,45 @@ def exclusive_lock(path: Path) -> Iterator[None]:
         with contextlib.suppress(OSError):
             os.unlink(path)
         os.close(fd)
+
+
+MAX_INPUT_BYTES = 50 * 1024 * 1024
+"""The largest input file read [bytes]: 50 MiB, far above any case, sweep, profile or
+measured curve (a 1e6-row trajectory CSV is about 40 MB), and below what would hold a
+run for minutes before it is refused."""
+
+
+def read_input_text(field: str, path: str | Path) -> str:
+    """The text of an input file; a :class:`~ballscrew.errors.BallScrewInputError` names ``field``.
+
+    Only a regular file (or a link to one) is read: a named pipe could wait for a writer
+    forever and a device such as ``/dev/zero`` never ends, so both are refused by name,
+    as are a folder, a file larger than :data:`MAX_INPUT_BYTES` and text that is not
+    UTF-8.
+    """
+    from ..errors import BallScrewInputError
+
+    file = Path(path)
+    try:
+        info = os.stat(file)
+    except OSError as exc:
+        raise BallScrewInputError(field, str(file), f"a readable file ({exc.strerror})") from None
+    if not stat.S_ISREG(info.st_mode):
+        kind = "a folder" if stat.S_ISDIR(info.st_mode) else "a pipe or a device"
+        raise BallScrewInputError(field, str(file), f"a regular file (this is {kind})")
+    if info.st_size > MAX_INPUT_BYTES:
+        raise BallScrewInputError(
+            field, str(file), f"a file of at most {MAX_INPUT_BYTES // 2**20} MiB "
+            f"(this one has {info.st_size / 2**20:.0f} MiB)"
+        )  # fmt: skip
+    try:
+        with open(file, "rb") as handle:
+            data = handle.read(MAX_INPUT_BYTES + 1)
+    except OSError as exc:
+        raise BallScrewInputError(field, str(file), f"a readable file ({exc.strerror})") from None
+    if len(data) > MAX_INPUT_BYTES:  # grew while being read
+        raise BallScrewInputError(field, str(file), f"a file of at most {MAX_INPUT_BYTES} bytes")
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError:
+        raise BallScrewInputError(field, str(file), "a UTF-8 text file") from None
