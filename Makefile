@@ -1,7 +1,8 @@
 # Two commands do all set-up on a fresh machine with Python 3.11+ and pip:
 #   make run   - the main job: reproduce the study, report in study-report/
-#   make test  - the whole test suite: ruff, mypy on src/, the import contracts, pytest with
-#                doctests, the documentation site built with warnings as errors (make docs)
+#   make test  - the whole test suite: ruff, mypy on src/, the import contracts, the
+#                documentation site built with warnings as errors (make docs), pytest with
+#                doctests (which also opens the built site in a browser, offline)
 #                (make test-fast: the same without the tests marked slow and the docs)
 PYTHON ?= python3
 VENV   ?= .venv
@@ -29,8 +30,8 @@ test: $(STAMP) chromium
 	$(BIN)/ruff format --check src tests benchmarks examples scripts
 	$(BIN)/mypy src
 	$(BIN)/lint-imports
-	$(BIN)/pytest -q
 	$(MAKE) docs
+	$(BIN)/pytest -q
 
 # The documentation site in docs/_build/html: the API reference, the Markdown pages and
 # the gallery (examples/plot_*.py run); a warning fails the build.

@@ -27,6 +27,7 @@ extensions = [
     "sphinx.ext.autodoc",
     "sphinx.ext.autosummary",
     "sphinx.ext.mathjax",
+    "sphinx-mathjax-offline",  # MathJax copied into _static: equations render offline
     "sphinx.ext.viewcode",
     "numpydoc",
     "myst_parser",
@@ -47,6 +48,10 @@ numpydoc_show_class_members = False
 numpydoc_validation_checks: set[str] = set()
 # The docstrings list their sources under References without citing each in the text.
 suppress_warnings = ["ref.citation"]
+
+# MathJax from the site itself (sphinx-mathjax-offline copies it from its wheel into
+# _static/mathjax), not from a CDN: machine-tool shops often read the docs offline.
+mathjax_path = "mathjax/tex-chtml.js"
 
 # The Markdown pages: GitHub's heading anchors, $...$ and $$...$$ maths.
 myst_heading_anchors = 4
