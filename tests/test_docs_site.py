@@ -47,8 +47,8 @@ def offline_page() -> Iterator[object]:
         pytest.skip("no chromium on this machine (make test installs Debian's)")
     sync_api = pytest.importorskip("playwright.sync_api")
     assert CHROMIUM is not None, "CI needs chromium: make test installs it"
-    args = ["--headless", "--no-sandbox", "--disable-gpu", "--no-first-run",
-            "--disable-background-networking", "--disable-component-update", "--disable-sync"]  # fmt: skip
+    args = ["--headless", "--no-sandbox", "--disable-gpu", "--no-first-run", "--disable-sync",
+            "--disable-background-networking", "--disable-component-update"]  # fmt: skip
     with sync_api.sync_playwright() as p:
         browser = p.chromium.launch(executable_path=CHROMIUM, headless=True, args=args)
         context = browser.new_context()
