@@ -123,6 +123,9 @@ def find(designation: str) -> CatalogScrew:
     )
 
 
+MAX_DESIGNATION = 200
+"""The longest designation read [characters] (a catalogue part number is about 30)."""
+
 _NUMBER = r"(\d+(?:\.\d+)?)"
 _SIZE = re.compile(
     rf"^\s*{_NUMBER}\s*[xX×]\s*{_NUMBER}"  # nominal diameter x lead
@@ -130,6 +133,18 @@ _SIZE = re.compile(
     rf"(?:\s+(?P<turns>\d+(?:\.\d+)?)\s*[xX×]\s*(?P<circuits>\d+))?"  # turns x circuits
     rf"(?:\s+(?P<ball>\d+(?:\.\d+)?))?\s*(?:mm)?\s*$"  # ball diameter
 )
+
+
+def _bounded(text: str) -> str:
+    """``text`` with each run of blanks as one space, refused past :data:`MAX_DESIGNATION`.
+
+    The size pattern's optional parts, each led by blanks, backtrack over a long run of
+    them (100 kB of spaces held a request for minutes); one blank each keeps it linear.
+    """
+    if len(text) > MAX_DESIGNATION:
+        shown = f"{text[:20]}... ({len(text)} characters)"
+        raise BallScrewInputError("designation", shown, f"at most {MAX_DESIGNATION} characters")
+    return " ".join(text.split())
 
 
 def parse_size(text: str) -> dict[str, Any]:
@@ -143,7 +158,7 @@ def parse_size(text: str) -> dict[str, Any]:
     >>> parse_size("25x5")["lead"]
     0.005
     """
-    match = _SIZE.match(text)
+    match = _SIZE.match(_bounded(text))
     if not match:
         raise BallScrewInputError(
             "designation",
@@ -190,7 +205,7 @@ def resolve(designation: str) -> ResolvedDesignation:
     >>> r.geometry["ball_diameter"], r.geometry["circuits"], r.dynamic_load_rating
     (0.00635, 5, 63400.0)
     """
-    if _SIZE.match(designation):
+    if _SIZE.match(_bounded(designation)):
         return ResolvedDesignation(parse_size(designation), source="size notation (mm)")
     screw = find(designation)
     geometry: dict[str, Any] = {
