@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 import sys
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import click
 import numpy as np
@@ -17,9 +17,6 @@ from .common import case_option, file_option, progress, stdout, write_json, writ
 
 MAX_POINTS = 2_000_000
 """The most operating points ``ballscrew torque`` computes without ``--max-points``."""
-
-if TYPE_CHECKING:
-    pass
 
 __all__ = ["torque"]
 
@@ -112,18 +109,18 @@ def torque(
       ballscrew torque --model complete --model catalog --csv t.csv --csv-layout wide \\
           --csv-dialect semicolon-decimal-comma
     """  # noqa: D301 - click needs the literal \b to keep the example lines
-    from ..friction import get_model
-    from ..io.case import load_case
+    from ..chain import model_named, torque_table
+    from ..io.case import WIPER_PARAMETERS, load_case
     from ..io.files import atomic_write
     from ..io.units import parse_range
     from ..report.outputs import json_text
-    from ..report.torque import torque_run
+    from ..report.torque import TorqueRun
 
     case = load_case(case_file)
     if wiper_drag is not None:
         case = case.with_wiper_drag(wiper_drag, field="--wiper-drag")
     for name in model_names:
-        get_model(name)
+        model_named(name)
     w = np.asarray(parse_range("--speed", speed, "rad/s")) if speed else None
     t = np.asarray(parse_range("--temperature", temperature, "degC")) if temperature else None
     f = np.asarray(parse_range("--axial-load", axial_load, "N")) if axial_load else None
@@ -145,8 +142,16 @@ def torque(
             bar.update(task, description=name)
             bar.advance(task)
 
-        loads = "operation.axial_load" if f is None else "--axial-load"
-        run = torque_run(case, model_names, w, t, f, on_model=advance, load_field=loads)
+        table = torque_table(
+            case.screw, case.lubricant, model_names,
+            case.speed if w is None else w, case.temperature if t is None else t,
+            case.axial_load if f is None else f,
+            parameters={name: case.parameters_for(name) for name in model_names},
+            ratings=case.load_ratings(),
+            load_field="operation.axial_load" if f is None else "--axial-load",
+            wiper_drag=case.wiper_drag, wiper_models=WIPER_PARAMETERS, on_model=advance,
+        )  # fmt: skip
+    run = TorqueRun(case, table)
     for line in run.warning_lines():
         click.echo(line, err=True)
     _print_table(run, table_kind, json_file)
