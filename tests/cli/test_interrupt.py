@@ -104,8 +104,8 @@ def test_an_interrupt_a_library_turns_into_another_error_still_exits_130(
 ) -> None:
     # numpy turns a KeyboardInterrupt raised inside a structured-array comparison into a
     # TypeError; the run was interrupted all the same and must say so, not "internal error".
-    from ballscrew.cli import group as cli
     from ballscrew import chain
+    from ballscrew.cli import group as cli
 
     def converted(*args: object, **kwargs: object) -> object:
         try:

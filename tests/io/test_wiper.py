@@ -6,12 +6,12 @@ import numpy as np
 import pytest
 
 from ballscrew import BallScrewInputError
-from ballscrew.friction import get_model
-from ballscrew.io.case import WIPER_PARAMETERS, parse_case
 from ballscrew.chain import FrictionResult, torque_table
-from ballscrew.io.case import Case
+from ballscrew.friction import get_model
+from ballscrew.io.case import WIPER_PARAMETERS, Case, parse_case
 from ballscrew.report.torque import warning_lines
 from shared import BUILT_IN_MODELS
+
 
 def run_models(case: Case, models: list[str]) -> dict[str, FrictionResult]:
     """The case's models over its points, as ``ballscrew torque`` runs them."""
