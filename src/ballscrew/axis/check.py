@@ -405,13 +405,7 @@ def _stiffness_rows(
         notes.append("thrust bearings taken as rigid (give check.support_stiffness from their "
                      "catalogue; the axis is softer than shown)")  # fmt: skip
     k_axis = series_stiffness(k_shaft, k_nut, k_bearing)
-    params = case.parameters_for(model)
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        t_f = float(friction_torque(screw, case.lubricant, speed=CREEP_SPEED,
-                                    temperature=run.temperature, axial_load=0.0, model=model,
-                                    **params).total.flat[0])  # fmt: skip
-    f_f = 2.0 * math.pi * t_f / screw.lead
+    f_f = _creep_drag(run, model)
     mass = axis.moving_mass
     freq = axial_eigenfrequency(k_axis, mass) if mass > 0.0 else None
     play = lost_motion(f_f, k_axis)
@@ -448,6 +442,17 @@ def _stiffness_rows(
         rows.append(_info("axial eigenfrequency (least)", float(np.min(freq)), "Hz",
                           "sqrt(k/m) / 2 pi with the moving mass"))  # fmt: skip
     return rows, figures
+
+
+def _creep_drag(run: EnergyRun, model: str) -> float:
+    """The screw's drag at :data:`CREEP_SPEED` without load, as an axial force [N]: 2π T_f / l."""
+    case, screw = run.case, run.case.screw
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        t_f = float(friction_torque(screw, case.lubricant, speed=CREEP_SPEED,
+                                    temperature=run.temperature, axial_load=0.0, model=model,
+                                    **case.parameters_for(model)).total.flat[0])  # fmt: skip
+    return 2.0 * math.pi * t_f / screw.lead
 
 
 def _thermal_rows(
