@@ -224,3 +224,14 @@ def test_thermal_error_closes_the_heat_balance() -> None:
     row = _row(result, "thermal lead error")
     assert row.value == pytest.approx(STEEL_EXPANSION * balance * 0.3 * 1e6, rel=2e-3)
     assert row.limit == pytest.approx(18.0)
+
+
+def test_the_entry_points_old_names_still_answer_with_a_deprecation_warning() -> None:
+    from ballscrew.axis import check, duty
+
+    with pytest.warns(DeprecationWarning, match="run_energy"):
+        assert duty.energy_run is duty.run_energy
+    with pytest.warns(DeprecationWarning, match="run_check"):
+        assert check.axis_check is check.run_check
+    with pytest.raises(AttributeError):
+        _ = duty.no_such_name

@@ -555,3 +555,15 @@ def _motor_rows(run: EnergyRun, cycle: CycleResult) -> tuple[list[Criterion], di
         rows.append(_info("acceleration the peak torque allows", allowed, "m/s^2",
                           "(T_peak - T_no inertia) / ((J_m + J_load) 2 pi i / l)"))  # fmt: skip
     return rows, figures
+
+
+def __getattr__(name: str) -> Any:
+    """The entry point's name before 0.3.0, kept for one release with a DeprecationWarning."""
+    if name == "axis_check":
+        warnings.warn(
+            f"{__name__}.axis_check is now run_check (the old name goes in the next release)",
+            DeprecationWarning,
+            stacklevel=2,
+        )
+        return run_check
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -351,3 +351,15 @@ def _one_model(
         friction_energy_at_final_temperature=warm, history=(times, history),
         steady_at_speed=at,
     )  # fmt: skip
+
+
+def __getattr__(name: str) -> Any:
+    """The entry point's name before 0.3.0, kept for one release with a DeprecationWarning."""
+    if name == "energy_run":
+        warnings.warn(
+            f"{__name__}.energy_run is now run_energy (the old name goes in the next release)",
+            DeprecationWarning,
+            stacklevel=2,
+        )
+        return run_energy
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
