@@ -42,6 +42,7 @@ from typing import Any
 
 import numpy as np
 
+from .._moved import renamed
 from ..chain import friction_torque
 from ..design.limits import SAFETY_FACTOR, critical_speed, root_diameter
 from ..design.sizing import (
@@ -559,11 +560,4 @@ def _motor_rows(run: EnergyRun, cycle: CycleResult) -> tuple[list[Criterion], di
 
 def __getattr__(name: str) -> Any:
     """The entry point's name before 0.3.0, kept for one release with a DeprecationWarning."""
-    if name == "axis_check":
-        warnings.warn(
-            f"{__name__}.axis_check is now run_check (the old name goes in the next release)",
-            DeprecationWarning,
-            stacklevel=2,
-        )
-        return run_check
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    return renamed(__name__, name, {"axis_check": run_check})

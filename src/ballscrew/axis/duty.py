@@ -23,6 +23,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
+from .._moved import renamed
 from ..design.ratings import Finding, plausibility, raise_errors, stroke_findings
 from ..errors import BallScrewInputError, FloatArray
 from ..io.case import Case
@@ -110,10 +111,10 @@ class ModelEnergy:
     duration: float
     weight_reverse_efficiency: float
     self_locking: bool
+    history: tuple[FloatArray, FloatArray] | None = field(default=None, repr=False)
     steady_temperature: float | None = None
     final_temperature: float | None = None
     friction_energy_at_final_temperature: float | None = None
-    history: tuple[FloatArray, FloatArray] | None = field(default=None, repr=False)
     steady_at_speed: SteadyAtSpeed | None = None
     thermal_error: BallScrewInputError | None = None
 
@@ -347,19 +348,12 @@ def _one_model(
                               axial_load=run.move.get("force", 0.0), model=name,
                               **params)  # fmt: skip
     return dataclasses.replace(
-        base, steady_temperature=steady.temperature, final_temperature=float(history[-1]),
-        friction_energy_at_final_temperature=warm, history=(times, history),
+        base, history=(times, history), steady_temperature=steady.temperature,
+        final_temperature=float(history[-1]), friction_energy_at_final_temperature=warm,
         steady_at_speed=at,
     )  # fmt: skip
 
 
 def __getattr__(name: str) -> Any:
     """The entry point's name before 0.3.0, kept for one release with a DeprecationWarning."""
-    if name == "energy_run":
-        warnings.warn(
-            f"{__name__}.energy_run is now run_energy (the old name goes in the next release)",
-            DeprecationWarning,
-            stacklevel=2,
-        )
-        return run_energy
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    return renamed(__name__, name, {"energy_run": run_energy})

@@ -486,15 +486,9 @@ def axis_cycle(
 
 
 def friction_energy(
-    profile: Profile,
-    screw: BallScrew,
-    lubricant: Lubricant | str,
-    axis: Axis,
-    *,
-    temperature: float = 40.0,
-    model: str = "complete",
-    **parameters: Any,
-) -> float:
+    profile: Profile, screw: BallScrew, lubricant: Lubricant | str, axis: Axis, *,
+    temperature: float = 40.0, model: str = "complete", **parameters: Any,
+) -> float:  # fmt: skip
     """The screw's friction energy over ``profile`` [J]: :func:`axis_cycle`'s alone.
 
     The same friction call and the same trapezoidal rule, without the
