@@ -13,7 +13,7 @@ random screws (pitch diameter, lead, conformities, contact angle and preload
 drawn around the reference screw; ``--screws``) on a 10 x 10 x 10 grid each.
 The last lines time, in fresh processes, a one-point ``ballscrew torque``
 (whole process: start-up, case, computation) and the energy of a move with
-its temperature (``energy_run``, in process after a warm-up), for 1 and 10
+its temperature (``run_energy``, in process after a warm-up), for 1 and 10
 cycles, and measure the peak memory (maximum resident set) of one 1e7-point
 call of the complete model on a grid, with and without its components (about
 45 s CPU; ``--no-memory`` skips it).
@@ -85,13 +85,13 @@ import time, warnings
 warnings.simplefilter("ignore")
 from ballscrew.io.case import load_case
 from ballscrew.axis.motion import parse_move
-from ballscrew.axis.duty import energy_run, profile_from_move
+from ballscrew.axis.duty import profile_from_move, run_energy
 case, m = load_case(None), parse_move({MOVE!r})
-energy_run(case, profile_from_move(m, 1), ["complete"], cycles=1, run_time=3600.0, move=m)
+run_energy(case, profile_from_move(m, 1), ["complete"], cycles=1, run_time=3600.0, move=m)
 for cycles in (1, 10):
     profile = profile_from_move(m, cycles)
     cpu = time.process_time()
-    energy_run(case, profile, ["complete"], cycles=cycles, run_time=3600.0, move=m)
+    run_energy(case, profile, ["complete"], cycles=cycles, run_time=3600.0, move=m)
     print(cycles, time.process_time() - cpu)
 """
 
@@ -181,7 +181,7 @@ def _commands(figures: Figures, runs: int) -> None:
     run = [sys.executable, "-c", _ENERGY]
     done = subprocess.run(run, capture_output=True, text=True)
     if done.returncode != 0:
-        print("energy of a move: not measured (this version's energy_run differs)")
+        print("energy of a move: not measured (this version's run_energy differs)")
         return
     for line in done.stdout.split("\n"):
         if line.strip():
@@ -189,7 +189,7 @@ def _commands(figures: Figures, runs: int) -> None:
             key = f"energy_{cycles}_cycles_per_cycle_s"
             figures[key] = seconds / cycles
             print(
-                f"energy of {cycles:>2} cycle(s) with its temperature (energy_run, complete): "
+                f"energy of {cycles:>2} cycle(s) with its temperature (run_energy, complete): "
                 f"{seconds:.3f} s CPU, {seconds / cycles:.3f} s per cycle"
                 + _against(figures, key, 0.2)
             )

@@ -14,9 +14,11 @@ import importlib.abc
 import importlib.machinery
 import sys
 import warnings
+from collections.abc import Mapping
 from types import ModuleType
+from typing import Any
 
-__all__ = ["MOVED", "install"]
+__all__ = ["MOVED", "install", "renamed"]
 
 MOVED: dict[str, str] = {
     # 0.3.0: the design rules and the plumbing left the package's top
@@ -84,3 +86,20 @@ def install() -> None:
     """Put the finder on ``sys.meta_path`` (once)."""
     if not any(isinstance(f, _Finder) for f in sys.meta_path):
         sys.meta_path.append(_Finder())
+
+
+def renamed(module: str, name: str, renames: Mapping[str, Any]) -> Any:
+    """A module's ``__getattr__`` for names that were renamed: the object, with a warning.
+
+    ``renames`` maps each old name in ``module`` to the object it is now (named
+    by its ``__name__`` in the warning); any other ``name`` is an AttributeError.
+    """
+    if name not in renames:
+        raise AttributeError(f"module {module!r} has no attribute {name!r}")
+    new = renames[name]
+    warnings.warn(
+        f"{module}.{name} is now {new.__name__}; the old name goes in the next release",
+        DeprecationWarning,
+        stacklevel=3,
+    )
+    return new

@@ -11,14 +11,15 @@ from __future__ import annotations
 
 import math
 import warnings
-from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass, field
+from collections.abc import Callable, Collection, Mapping, Sequence
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
 import numpy.typing as npt
 
 from . import validity
+from .design.ratings import Finding, Ratings, plausibility, raise_errors
 from .errors import (
     BallScrewInputError,
     BallScrewValidityWarning,
@@ -27,11 +28,21 @@ from .errors import (
 from .friction import MODELS, ModelSpec, get_model
 from .geometry import BallScrew
 from .helix import JIT_LOAD_POINTS, load_kernel
+from .kinematics import rad_s_to_rpm
 from .lubricant import Lubricant
 from .state import OperatingState, operating_points, operating_state
 from .validity import ValidityIssue
 
-__all__ = ["FrictionResult", "friction_torque", "friction_torques", "models"]
+__all__ = [
+    "FrictionResult",
+    "TorqueTable",
+    "friction_torque",
+    "friction_torques",
+    "model_named",
+    "models",
+    "operating_grid",
+    "torque_table",
+]
 
 
 @dataclass(frozen=True)
@@ -98,6 +109,17 @@ def models() -> list[ModelSpec]:
     ['catalog', 'complete', 'harris-full', 'harris-simplified', 'olaru', 'viscoelastic']
     """
     return list(MODELS.values())
+
+
+def model_named(name: str) -> ModelSpec:
+    """The registered model ``name``; an unknown name raises an input error listing the models.
+
+    Examples
+    --------
+    >>> model_named("catalog").name
+    'catalog'
+    """
+    return get_model(name)
 
 
 def friction_torque(
@@ -482,7 +504,7 @@ def _point(w: Any, t: Any, fa: Any) -> str:
         lo, hi = float(np.min(x)), float(np.max(x))
         return f"{lo:g} {unit}" if lo == hi else f"{lo:g} to {hi:g} {unit}"
 
-    rpm = w * (30.0 / math.pi)
+    rpm = rad_s_to_rpm(w)
     return f"speed {span(rpm, 'rpm')}, temperature {span(t, 'degC')}, axial_load {span(fa, 'N')}"
 
 
@@ -541,3 +563,120 @@ def _warn(issues: list[ValidityIssue]) -> None:
             _NOTED.add(told)
         # stacklevel 4: the caller of friction_torque(s), past this helper and _result.
         warnings.warn(BallScrewValidityWarning(issue), stacklevel=4)
+
+
+@dataclass(frozen=True)
+class TorqueTable:
+    """Each model's result over every combination of the operating points (:func:`torque_table`).
+
+    ``findings`` are the plausibility warnings of the loads against the screw's
+    ratings (:func:`ballscrew.design.ratings.plausibility`); its errors were raised.
+    """
+
+    results: dict[str, FrictionResult]
+    findings: tuple[Finding, ...] = ()
+
+    def as_dict(self) -> dict[str, Any]:
+        """Each model's points and results as lists (SI, temperatures in °C), and the findings."""
+
+        def listed(x: npt.ArrayLike) -> list[float]:
+            values: list[float] = np.ravel(x).astype(float).tolist()
+            return values
+
+        return {
+            "models": {
+                name: {
+                    "speed_rad_s": listed(r.speed),
+                    "temperature_C": listed(r.temperature),
+                    "axial_load_N": listed(r.axial_load),
+                    "torque_Nm": listed(r.total),
+                    "power_loss_W": listed(r.power_loss),
+                    "efficiency": listed(r.efficiency),
+                    "components_Nm": {k: listed(v) for k, v in r.components.items()},
+                    "warnings": [str(issue) for issue in r.warnings],
+                }
+                for name, r in self.results.items()
+            },
+            "plausibility": [str(f) for f in self.findings],
+        }
+
+
+def operating_grid(
+    speed: npt.ArrayLike, temperature: npt.ArrayLike, axial_load: npt.ArrayLike
+) -> tuple[FloatArray, FloatArray, FloatArray]:
+    """Every combination of the speeds, temperatures and loads, as three flat arrays.
+
+    The speed varies slowest, then the temperature, then the load: the row
+    order of the tables and files of ``ballscrew torque``.
+
+    Examples
+    --------
+    >>> [a.tolist() for a in operating_grid([1.0, 2.0], 40.0, [0.0, 5.0])]
+    [[1.0, 1.0, 2.0, 2.0], [40.0, 40.0, 40.0, 40.0], [0.0, 5.0, 0.0, 5.0]]
+    """
+    w, t, f = (np.ravel(a) for a in np.meshgrid(speed, temperature, axial_load, indexing="ij"))
+    return w, t, f
+
+
+def torque_table(
+    screw: BallScrew,
+    lubricant: Lubricant | str,
+    model_names: Sequence[str],
+    speed: npt.ArrayLike,
+    temperature: npt.ArrayLike,
+    axial_load: npt.ArrayLike,
+    *,
+    parameters: Mapping[str, Mapping[str, Any]] | None = None,
+    ratings: Ratings | None = None,
+    load_field: str = "axial_load",
+    wiper_drag: float = 0.0,
+    wiper_models: Collection[str] = (),
+    on_model: Callable[[str], None] | None = None,
+) -> TorqueTable:
+    """Each model of ``model_names`` over every combination of the operating points.
+
+    What ``ballscrew torque`` and the web page compute. The names are checked
+    first; with ``ratings`` the loads are then checked against the screw's
+    ratings and the contact pressure limit
+    (:func:`ballscrew.design.ratings.plausibility`, naming ``load_field``): an
+    error is raised before anything is computed, the warnings are kept in the
+    table. Each model runs once over the grid (:func:`operating_grid`) with its
+    ``parameters[name]``; its validity issues are kept in its result, not
+    warned of. A ``wiper_drag`` [N·m] reaches the models through their
+    parameters; the models not in ``wiper_models`` (those without a wiper or
+    seal term) get a note in their result that they leave it out.
+    ``on_model(name)`` is called after each model.
+    """
+    for name in model_names:
+        get_model(name)
+    found: tuple[Finding, ...] = ()
+    if ratings is not None:
+        found = tuple(raise_errors(plausibility(screw, ratings, axial_load, load_field=load_field)))
+    grid_w, grid_t, grid_f = operating_grid(speed, temperature, axial_load)
+    results: dict[str, FrictionResult] = {}
+    for name in model_names:
+        params = dict((parameters or {}).get(name, {}))
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", BallScrewValidityWarning)
+            results[name] = friction_torque(
+                screw, lubricant, speed=grid_w, temperature=grid_t, axial_load=grid_f,
+                model=name, **params,
+            )  # fmt: skip
+        if wiper_drag and name not in wiper_models:
+            results[name] = _wiper_left_out(results[name], wiper_drag)
+        if on_model is not None:
+            on_model(name)
+    return TorqueTable(results, found)
+
+
+def _wiper_left_out(result: FrictionResult, drag: float) -> FrictionResult:
+    """The result with a note that its model has no term for the case's wiper drag."""
+    note = validity.statement(
+        "wiper drag [N*m]",
+        "left out, as the model has no wiper or seal term (the complete model adds it as its "
+        "'seals' component)",
+        "[screw] wiper_drag or --wiper-drag",
+        value=drag,
+        routine="a case's wiper drag reaches only the models with a seal term",
+    )
+    return replace(result, warnings=(*result.warnings, replace(note, model=result.model)))

@@ -7,8 +7,8 @@ import math
 import numpy as np
 import pytest
 
-from ballscrew.axis.check import CHECK_FROM, axis_check, verdict
-from ballscrew.axis.duty import energy_run, profile_from_move
+from ballscrew.axis.check import CHECK_FROM, run_check, verdict
+from ballscrew.axis.duty import profile_from_move, run_energy
 from ballscrew.design.sizing import STEEL_EXPANSION, TRAVEL_VARIATION_300
 from ballscrew.design.stiffness import SHAFT_MODULUS, nut_axial_stiffness
 from ballscrew.errors import BallScrewInputError
@@ -52,8 +52,8 @@ def _case(
 
 def _check(case: Case, move: dict[str, float] | None = None, run_time: float = 60.0):  # type: ignore[no-untyped-def]
     m = dict(MOVE if move is None else move)
-    run = energy_run(case, profile_from_move(m, 1), ["catalog"], run_time=run_time, move=m)
-    return run, axis_check(run)
+    run = run_energy(case, profile_from_move(m, 1), ["catalog"], run_time=run_time, move=m)
+    return run, run_check(run)
 
 
 def _row(result, name: str):  # type: ignore[no-untyped-def]
@@ -136,7 +136,7 @@ def test_thermal_lead_error_and_pretension() -> None:
     grade = '[check]\naccuracy_grade = "p3"\npretension_temperature = "1 K"'
     case = _case(nut="double", preload="1 kN", support="fixed-fixed", sections=grade)
     run, result = _check(case, run_time=600.0)
-    rise = run.results["catalog"]["final_temperature_C"] - run.node.ambient
+    rise = run.results["catalog"].final_temperature - run.node.ambient
     row = _row(result, "thermal lead error")
     assert row.value == pytest.approx(STEEL_EXPANSION * max(rise - 1.0, 0.0) * 0.3 * 1e6)
     assert row.limit == pytest.approx(TRAVEL_VARIATION_300["P3"] * 1e6)
@@ -224,3 +224,14 @@ def test_thermal_error_closes_the_heat_balance() -> None:
     row = _row(result, "thermal lead error")
     assert row.value == pytest.approx(STEEL_EXPANSION * balance * 0.3 * 1e6, rel=2e-3)
     assert row.limit == pytest.approx(18.0)
+
+
+def test_the_entry_points_old_names_still_answer_with_a_deprecation_warning() -> None:
+    from ballscrew.axis import check, duty
+
+    with pytest.warns(DeprecationWarning, match="run_energy"):
+        assert duty.energy_run is duty.run_energy
+    with pytest.warns(DeprecationWarning, match="run_check"):
+        assert check.axis_check is check.run_check
+    with pytest.raises(AttributeError):
+        _ = duty.no_such_name

@@ -104,8 +104,8 @@ def test_an_interrupt_a_library_turns_into_another_error_still_exits_130(
 ) -> None:
     # numpy turns a KeyboardInterrupt raised inside a structured-array comparison into a
     # TypeError; the run was interrupted all the same and must say so, not "internal error".
+    from ballscrew import chain
     from ballscrew.cli import group as cli
-    from ballscrew.report import torque as torque_table
 
     def converted(*args: object, **kwargs: object) -> object:
         try:
@@ -114,7 +114,7 @@ def test_an_interrupt_a_library_turns_into_another_error_still_exits_130(
             raise TypeError("Cannot compare structured arrays") from None
         return None
 
-    monkeypatch.setattr(torque_table, "run_models", converted)
+    monkeypatch.setattr(chain, "torque_table", converted)
     with pytest.raises(SystemExit) as info:
         cli.main(["torque", "--speed", "100 rpm"])
     assert info.value.code == 130

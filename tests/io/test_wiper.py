@@ -6,10 +6,21 @@ import numpy as np
 import pytest
 
 from ballscrew import BallScrewInputError
+from ballscrew.chain import FrictionResult, torque_table
 from ballscrew.friction import get_model
-from ballscrew.io.case import WIPER_PARAMETERS, parse_case
-from ballscrew.report.torque import run_models, warning_lines
+from ballscrew.io.case import WIPER_PARAMETERS, Case, parse_case
+from ballscrew.report.torque import warning_lines
 from shared import BUILT_IN_MODELS
+
+
+def run_models(case: Case, models: list[str]) -> dict[str, FrictionResult]:
+    """The case's models over its points, as ``ballscrew torque`` runs them."""
+    return torque_table(
+        case.screw, case.lubricant, models, case.speed, case.temperature, case.axial_load,
+        parameters={m: case.parameters_for(m) for m in models}, wiper_drag=case.wiper_drag,
+        wiper_models=WIPER_PARAMETERS,
+    ).results  # fmt: skip
+
 
 CASE = """
 [screw]
@@ -62,8 +73,8 @@ def test_the_wiper_list_matches_the_models_seal_terms() -> None:
 def test_the_wiper_adds_exactly_its_torque_as_the_seals_component() -> None:
     plain, wiped = parse_case(_case()), parse_case(_case('wiper_drag = "0.05 N*m"'))
     models = ["complete", "catalog", "olaru"]
-    before = run_models(plain, models, plain.speed, plain.temperature, plain.axial_load)
-    after = run_models(wiped, models, wiped.speed, wiped.temperature, wiped.axial_load)
+    before = run_models(plain, models)
+    after = run_models(wiped, models)
     np.testing.assert_array_equal(after["complete"].components["seals"], 0.05)
     np.testing.assert_allclose(
         after["complete"].total - before["complete"].total, 0.05, rtol=0, atol=1e-15

@@ -202,6 +202,49 @@ def test_the_page_results_reproduce_with_the_command_line(
     assert check["criteria"] == command["criteria"]
 
 
+MOVE_REQUEST = {
+    "case": CASE,
+    "models": ["complete"],
+    "move": {"stroke": "300 mm", "feed": "15 m/min", "acceleration": "2 m/s**2"},
+}
+
+
+def test_one_request_with_a_move_runs_the_cycle_once(monkeypatch: pytest.MonkeyPatch) -> None:
+    # The energy and the check of the move read one run_energy: the cycle is computed
+    # once, not once for the energy and again for the check (and its warm-up energy).
+    from ballscrew.axis import duty, energy
+
+    calls: list[str] = []
+    original = energy.axis_cycle
+
+    def counted(*args: Any, **kwargs: Any) -> Any:
+        calls.append(kwargs.get("model", "complete"))
+        return original(*args, **kwargs)
+
+    monkeypatch.setattr(energy, "axis_cycle", counted)
+    monkeypatch.setattr(duty, "axis_cycle", counted)
+    page = service.evaluate(MOVE_REQUEST)
+    assert calls == ["complete"]
+    assert page["energy"]["check"]["verdict"] in ("OK", "CHECK", "NOT OK")
+    assert page["energy"]["friction_energy_J"] > 0.0
+
+
+def test_a_heat_balance_without_a_solution_is_the_checks_verdict_not_the_pages(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # `ballscrew check` stops at it; the page still shows the energy of the move.
+    from ballscrew import BallScrewInputError
+    from ballscrew.axis import duty
+
+    def unsolved(*args: Any, **kwargs: Any) -> Any:
+        raise BallScrewInputError("thermal", "(steady state)", "a cycle the node can shed")
+
+    monkeypatch.setattr(duty, "steady_temperature", unsolved)
+    page = service.evaluate(MOVE_REQUEST)
+    assert page["energy"]["friction_energy_J"] > 0.0
+    assert page["energy"]["check"]["error"].startswith("thermal = '(steady state)'")
+
+
 def test_the_page_budget_adds_up_to_the_torque(client: TestClient) -> None:
     page = client.post("/api/evaluate", json={"case": CASE, "models": ["complete"]}).json()
     complete = next(c for c in page["curves"] if c["model"] == "complete")
@@ -376,7 +419,7 @@ def test_an_internal_error_shows_no_traceback(monkeypatch: pytest.MonkeyPatch) -
     def broken(*args: Any, **kwargs: Any) -> Any:
         raise RuntimeError("secret internals at /home/someone/ballscrew/chain.py line 42")
 
-    monkeypatch.setattr(service, "run_models", broken)
+    monkeypatch.setattr(service, "torque_table", broken)
     # Computing in this process (processes=0), so that the broken function is the one run.
     app = create_app(allowed_hosts=["testserver"], processes=0)
     with TestClient(app, raise_server_exceptions=False) as c:

@@ -5,4 +5,23 @@ Motion profiles (:mod:`.motion`), torques, powers and energies over a cycle
 a case file with what it leaves out filled in and stated (:mod:`.setup`), the axis over
 its duty for every model at once (:mod:`.duty`) and the whole axis check
 (:mod:`.check`).
+
+The entry points of the commands: :func:`run_energy` (``ballscrew energy``) and
+:func:`run_check` (``ballscrew check``), each returning one typed result.
 """
+
+from .check import AxisCheck, Criterion, run_check
+from .duty import EnergyRun, ModelEnergy, run_energy
+from .energy import Axis, CycleResult, axis_cycle
+
+__all__ = [
+    "Axis",
+    "AxisCheck",
+    "Criterion",
+    "CycleResult",
+    "EnergyRun",
+    "ModelEnergy",
+    "axis_cycle",
+    "run_check",
+    "run_energy",
+]

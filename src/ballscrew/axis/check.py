@@ -1,6 +1,6 @@
 r"""The whole axis check: life, safety, speed, stiffness, thermal lead error and the motor.
 
-What ``ballscrew check`` computes. :func:`axis_check` takes an
+What ``ballscrew check`` computes. :func:`run_check` takes an
 :class:`~ballscrew.axis.duty.EnergyRun` (the case, the motion cycle, the torques
 and the temperature the cycle reaches, as ``ballscrew energy`` computes them)
 and sets every criterion of a feed-drive designer's sizing against its limit,
@@ -42,6 +42,7 @@ from typing import Any
 
 import numpy as np
 
+from .._moved import renamed
 from ..chain import friction_torque
 from ..design.limits import SAFETY_FACTOR, critical_speed, root_diameter
 from ..design.sizing import (
@@ -71,10 +72,11 @@ from ..design.stiffness import (
 )
 from ..errors import BallScrewInputError, FloatArray
 from ..kinematics import rad_s_to_rpm
-from .duty import EnergyRun
+from .duty import EnergyRun, ModelEnergy
 from .energy import CycleResult
+from .thermal import nut_length
 
-__all__ = ["CHECK_FROM", "AxisCheck", "Criterion", "axis_check", "verdict"]
+__all__ = ["CHECK_FROM", "AxisCheck", "Criterion", "run_check", "verdict"]
 
 CHECK_FROM = 0.9
 """Utilisation from which a criterion is flagged CHECK rather than OK [-]."""
@@ -152,7 +154,7 @@ def _missing(name: str, unit: str, source: str, needed: str) -> Criterion:
     return Criterion(name, None, None, unit, None, "NOT CHECKED", source, needed)
 
 
-@dataclass
+@dataclass(frozen=True)
 class AxisCheck:
     """The verdict table of an axis over a cycle, the figures behind it and the assumptions."""
 
@@ -177,10 +179,13 @@ class AxisCheck:
         """The criteria left out for a missing input."""
         return [c.name for c in self.criteria if c.verdict == "NOT CHECKED"]
 
-    def as_dict(self, version: str) -> dict[str, Any]:
-        """The JSON document of ``ballscrew check --json``."""
+    def as_dict(self) -> dict[str, Any]:
+        """The JSON document of ``ballscrew check --json``.
+
+        Without the package's version, which the JSON writer adds
+        (:func:`ballscrew.report.outputs.result_json`).
+        """
         return {
-            "ballscrew": version,
             "case": self.title,
             "model": self.model,
             "verdict": self.verdict,
@@ -215,28 +220,26 @@ def _span(run: EnergyRun, notes: list[str]) -> float:
     return span
 
 
-def _nut_length(run: EnergyRun) -> float:
-    s = run.case.screw
-    return (s.loaded_turns + 1.0) * s.circuits * s.lead * (2.0 if s.nut == "double" else 1.0)
-
-
-def axis_check(run: EnergyRun, model: str | None = None) -> AxisCheck:
+def run_check(run: EnergyRun, model: str | None = None) -> AxisCheck:
     """Every criterion of the axis over ``run``'s cycle for ``model`` (module docstring).
 
     ``model`` defaults to the run's first. Raises
     :class:`~ballscrew.errors.BallScrewInputError` naming the field when the
     stroke does not fit between the supports or a motor is given without its
-    rotor inertia.
+    rotor inertia, and the heat balance's error when ``run`` kept one
+    (:func:`~ballscrew.axis.duty.run_energy`'s ``thermal_failure``).
     """
     name = model or next(iter(run.results))
-    cycle = run.cycles_by_model[name]
-    numbers = run.results[name]
+    energy = run.results[name]
+    if energy.thermal_error is not None:
+        raise energy.thermal_error
+    cycle = energy.cycle
     case, axis, screw = run.case, run.axis, run.case.screw
     notes: list[str] = []
     rows: list[Criterion] = []
     span = _span(run, notes)
     stroke = float(np.ptp(run.profile.position))
-    nut = _nut_length(run)
+    nut = nut_length(screw)
     if stroke + nut >= span:
         raise BallScrewInputError(
             "axis.bearing_span" if axis.bearing_span is not None else "axis.screw_length",
@@ -256,7 +259,7 @@ def axis_check(run: EnergyRun, model: str | None = None) -> AxisCheck:
     rows += _speed_rows(run, omega, d_r, span)
     stiff_rows, stiffness = _stiffness_rows(run, name, force, d_r, span, stroke, nut, notes)
     rows += stiff_rows
-    thermal_rows, thermal = _thermal_rows(run, name, numbers, stroke, notes)
+    thermal_rows, thermal = _thermal_rows(run, name, energy, stroke, notes)
     rows += thermal_rows
     motor_rows, motor = _motor_rows(run, cycle)
     rows += motor_rows
@@ -403,13 +406,7 @@ def _stiffness_rows(
         notes.append("thrust bearings taken as rigid (give check.support_stiffness from their "
                      "catalogue; the axis is softer than shown)")  # fmt: skip
     k_axis = series_stiffness(k_shaft, k_nut, k_bearing)
-    params = case.parameters_for(model)
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        t_f = float(friction_torque(screw, case.lubricant, speed=CREEP_SPEED,
-                                    temperature=run.temperature, axial_load=0.0, model=model,
-                                    **params).total.flat[0])  # fmt: skip
-    f_f = 2.0 * math.pi * t_f / screw.lead
+    f_f = _creep_drag(run, model)
     mass = axis.moving_mass
     freq = axial_eigenfrequency(k_axis, mass) if mass > 0.0 else None
     play = lost_motion(f_f, k_axis)
@@ -448,12 +445,24 @@ def _stiffness_rows(
     return rows, figures
 
 
+def _creep_drag(run: EnergyRun, model: str) -> float:
+    """The screw's drag at :data:`CREEP_SPEED` without load, as an axial force [N]: 2π T_f / l."""
+    case, screw = run.case, run.case.screw
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        t_f = float(friction_torque(screw, case.lubricant, speed=CREEP_SPEED,
+                                    temperature=run.temperature, axial_load=0.0, model=model,
+                                    **case.parameters_for(model)).total.flat[0])  # fmt: skip
+    return 2.0 * math.pi * t_f / screw.lead
+
+
 def _thermal_rows(
-    run: EnergyRun, model: str, numbers: dict[str, Any], stroke: float, notes: list[str]
+    run: EnergyRun, model: str, energy: ModelEnergy, stroke: float, notes: list[str]
 ) -> tuple[list[Criterion], dict[str, Any]]:
     """The thermal lead error per 300 mm against the grade, the growth over the stroke."""
     case, axis = run.case, run.axis
-    rise = float(numbers["final_temperature_C"]) - float(run.node.ambient)
+    assert energy.final_temperature is not None  # a kept thermal error raised in run_check
+    rise = float(energy.final_temperature) - float(run.node.ambient)
     pre = float(case.check.get("pretension_temperature", 0.0))
     if pre > 0.0 and axis.support != "fixed-fixed":
         raise BallScrewInputError(
@@ -523,18 +532,18 @@ def _motor_rows(run: EnergyRun, cycle: CycleResult) -> tuple[list[Criterion], di
         "rms_torque_Nm": rms,
         "top_speed_rpm": top,
     }
-    for key, label, value, unit, scale, advice in (
-        ("peak_torque", "peak torque", peak, "N*m", 1.0,
+    for key, label, value, unit, advice in (
+        ("peak_torque", "peak torque", peak, "N*m",
          "a larger motor, gentler accelerations, or a gear"),
-        ("rated_torque", "RMS torque / rated torque", rms, "N*m", 1.0,
+        ("rated_torque", "RMS torque / rated torque", rms, "N*m",
          "a larger motor, longer dwells, or less friction (lower preload)"),
-        ("rated_speed", "motor speed", top, "rpm", 30.0 / math.pi,
-         "a longer lead or a lower feed"),
+        ("rated_speed", "motor speed", top, "rpm", "a longer lead or a lower feed"),
     ):  # fmt: skip
         if key not in motor:
             rows.append(_missing(label, unit, "[motor]", f"give motor.{key}"))
             continue
-        rows.append(_at_most(label, value, motor[key] * scale, unit,
+        limit = float(rad_s_to_rpm(motor[key])) if unit == "rpm" else motor[key]
+        rows.append(_at_most(label, value, limit, unit,
                              "the cycle's torques (energy) against the motor's ratings",
                              advice))  # fmt: skip
     if "peak_torque" in motor:
@@ -547,3 +556,8 @@ def _motor_rows(run: EnergyRun, cycle: CycleResult) -> tuple[list[Criterion], di
         rows.append(_info("acceleration the peak torque allows", allowed, "m/s^2",
                           "(T_peak - T_no inertia) / ((J_m + J_load) 2 pi i / l)"))  # fmt: skip
     return rows, figures
+
+
+def __getattr__(name: str) -> Any:
+    """The entry point's name before 0.3.0, kept for one release with a DeprecationWarning."""
+    return renamed(__name__, name, {"axis_check": run_check})

@@ -2,17 +2,18 @@
 
 What ``ballscrew energy`` and the web page compute.
 
-:func:`energy_run` takes a case (with its ``[axis]``), a motion profile and the
-models, and returns an :class:`EnergyRun`: per model the cycle's energies and
-torques (:func:`ballscrew.axis.energy.axis_cycle`), the weight's back-driving
-verdict, the temperature the repeated cycle reaches and the energy at it
-(:mod:`ballscrew.axis.thermal`), and optionally the steady temperature of
-continuous running at given speeds. :meth:`EnergyRun.as_dict` is the JSON
-document the command writes.
+:func:`run_energy` takes a case (with its ``[axis]``), a motion profile and the
+models, and returns an :class:`EnergyRun`: per model a :class:`ModelEnergy`
+with the cycle's energies and torques (:func:`ballscrew.axis.energy.axis_cycle`,
+run once per model), the weight's back-driving verdict, the temperature the
+repeated cycle reaches and the energy at it (:mod:`ballscrew.axis.thermal`), and
+optionally the steady temperature of continuous running at given speeds.
+:meth:`EnergyRun.as_dict` is the JSON document the command writes.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import warnings
 from collections.abc import Sequence
 from dataclasses import dataclass, field
@@ -22,11 +23,20 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
+from .._moved import renamed
 from ..design.ratings import Finding, plausibility, raise_errors, stroke_findings
 from ..errors import BallScrewInputError, FloatArray
 from ..io.case import Case
 from ..kinematics import rad_s_to_rpm
-from .energy import Axis, CycleResult, axis_cycle, screw_motion, self_locking, weight_back_driving
+from .energy import (
+    Axis,
+    CycleResult,
+    axis_cycle,
+    friction_energy,
+    screw_motion,
+    self_locking,
+    weight_back_driving,
+)
 from .motion import Profile, back_and_forth, chain, check_force_window, read_trajectory
 from .setup import axis_setup
 from .thermal import (
@@ -40,10 +50,11 @@ from .thermal import (
 
 __all__ = [
     "EnergyRun",
-    "energy_run",
+    "ModelEnergy",
     "motion_plausibility",
     "profile_from_file",
     "profile_from_move",
+    "run_energy",
 ]
 
 
@@ -82,9 +93,63 @@ def profile_from_file(path: str, cycles: int) -> Profile:
     return chain(*([one] * cycles))
 
 
-@dataclass
+@dataclass(frozen=True)
+class ModelEnergy:
+    """One model over the cycle: the cycle itself, the back-driving verdicts, the heat.
+
+    ``cycle`` is :func:`~ballscrew.axis.energy.axis_cycle`'s result, run once.
+    The temperatures [°C] are those the repeated cycle reaches
+    (:mod:`ballscrew.axis.thermal`): the steady one and the one after the run
+    time, with ``history`` (times [s], temperatures [°C]) and the friction
+    energy of the cycle at the latter [J]. They are None, and
+    ``thermal_error`` says why, when the heat balance could not be solved and
+    the run was asked to go on (:func:`run_energy`'s ``thermal_failure``).
+    """
+
+    cycle: CycleResult
+    cycles: int
+    duration: float
+    weight_reverse_efficiency: float
+    self_locking: bool
+    history: tuple[FloatArray, FloatArray] | None = field(default=None, repr=False)
+    steady_temperature: float | None = None
+    final_temperature: float | None = None
+    friction_energy_at_final_temperature: float | None = None
+    steady_at_speed: SteadyAtSpeed | None = None
+    thermal_error: BallScrewInputError | None = None
+
+    def as_dict(self) -> dict[str, Any]:
+        """The model's figures as ``ballscrew energy --json`` gives them, per model."""
+        figures = self.cycle.as_dict()
+        warnings_ = figures.pop("warnings")
+        doc: dict[str, Any] = {
+            "friction_energy_J": self.cycle.friction_energy,
+            "friction_energy_per_cycle_J": self.cycle.friction_energy / self.cycles,
+        }
+        doc |= figures
+        doc |= {
+            "weight_reverse_efficiency": self.weight_reverse_efficiency,
+            "self_locking": self.self_locking,
+            "duration_s": self.duration,
+            "warnings": warnings_,
+            "steady_temperature_C": self.steady_temperature,
+            "final_temperature_C": self.final_temperature,
+            "friction_energy_at_final_temperature_J": self.friction_energy_at_final_temperature,
+        }
+        at = self.steady_at_speed
+        if at is not None:
+            doc["steady_at_speed"] = {
+                "speed_rpm": rad_s_to_rpm(at.speed).tolist(),
+                "temperature_C": at.temperature.tolist(),
+                "torque_Nm": at.torque.tolist(),
+                "power_W": at.power.tolist(),
+            }
+        return doc
+
+
+@dataclass(frozen=True)
 class EnergyRun:
-    """Everything ``ballscrew energy`` reports, per model."""
+    """Everything ``ballscrew energy`` reports, per model (:func:`run_energy`)."""
 
     case: Case
     profile: Profile
@@ -95,23 +160,43 @@ class EnergyRun:
     thermal: dict[str, float]
     assumptions: list[str]
     move: dict[str, float]
-    results: dict[str, dict[str, Any]] = field(default_factory=dict)
-    cycles_by_model: dict[str, CycleResult] = field(default_factory=dict)
-    histories: dict[str, tuple[FloatArray, FloatArray]] = field(default_factory=dict)
-    steady: dict[str, SteadyAtSpeed] = field(default_factory=dict)
-    speed_warnings: list[str] = field(default_factory=list)
+    results: dict[str, ModelEnergy] = field(default_factory=dict)
     findings: list[Finding] = field(default_factory=list)
     """Plausibility warnings: the motion's loads and stroke against the screw (errors raise)."""
 
-    def as_dict(self, version: str) -> dict[str, Any]:
-        """The JSON document of ``ballscrew energy --json``: the first model at the top."""
-        first_name = next(iter(self.results))
-        first = self.results[first_name]
+    @property
+    def cycles_by_model(self) -> dict[str, CycleResult]:
+        """Each model's cycle (:func:`~ballscrew.axis.energy.axis_cycle`)."""
+        return {name: r.cycle for name, r in self.results.items()}
+
+    @property
+    def histories(self) -> dict[str, tuple[FloatArray, FloatArray]]:
+        """Each model's temperature over the run time: (times [s], temperatures [°C])."""
+        return {name: r.history for name, r in self.results.items() if r.history is not None}
+
+    @property
+    def steady(self) -> dict[str, SteadyAtSpeed]:
+        """Each model's steady temperatures of continuous running, where asked for."""
+        return {n: r.steady_at_speed for n, r in self.results.items() if r.steady_at_speed}
+
+    @property
+    def speed_warnings(self) -> list[str]:
+        """The speed limits the cycle passes (the same for every model), in words."""
+        last = next(reversed(self.results.values()), None)
+        return [] if last is None else list(last.cycle.speed_warnings)
+
+    def as_dict(self) -> dict[str, Any]:
+        """The JSON document of ``ballscrew energy --json``: the first model at the top.
+
+        Without the package's version, which the JSON writer adds
+        (:func:`ballscrew.report.outputs.result_json`).
+        """
+        models = {name: r.as_dict() for name, r in self.results.items()}
+        first_name = next(iter(models))
         return {
-            "ballscrew": version,
             "case": self.case.title,
             "model": first_name,
-            **{k: v for k, v in first.items() if k != "steady_at_speed"},
+            **{k: v for k, v in models[first_name].items() if k != "steady_at_speed"},
             "move": self.move,
             "cycles": self.cycles,
             "temperature_C": self.temperature,
@@ -119,29 +204,11 @@ class EnergyRun:
             "thermal": self.thermal,
             "assumptions": self.assumptions,
             "plausibility": [str(f) for f in self.findings],
-            "models": self.results,
+            "models": models,
         }
 
 
-def _cycle_numbers(r: CycleResult, cycles: int) -> dict[str, Any]:
-    return {
-        "friction_energy_J": r.friction_energy,
-        "friction_energy_per_cycle_J": r.friction_energy / cycles,
-        "friction_energy_out_J": r.friction_energy_out,
-        "friction_energy_back_J": r.friction_energy_back,
-        "friction_energy_by_mechanism_J": r.friction_energy_by_mechanism,
-        "bearing_energy_J": r.bearing_energy,
-        "constant_efficiency_energy_J": r.constant_efficiency_energy,
-        "load_work_J": r.load_work,
-        "peak_motor_torque_Nm": r.peak_motor_torque,
-        "rms_motor_torque_Nm": r.rms_motor_torque,
-        "forward_efficiency": r.forward_efficiency,
-        "reverse_efficiency": r.reverse_efficiency,
-        "back_drives_at_working_point": r.reverse_efficiency > 0.0,
-    }
-
-
-def energy_run(
+def run_energy(
     case: Case,
     profile: Profile,
     model_names: Sequence[str],
@@ -152,8 +219,11 @@ def energy_run(
     steady_speeds: npt.ArrayLike | None = None,
     move: dict[str, float] | None = None,
     motion_field: str = "--move",
+    thermal_failure: str = "raise",
 ) -> EnergyRun:
     """Each model's energy, torques and temperatures over ``profile`` (module docstring).
+
+    Each model's cycle is computed once (:func:`~ballscrew.axis.energy.axis_cycle`).
 
     Parameters
     ----------
@@ -178,11 +248,18 @@ def energy_run(
         What the motion was given as, named by the plausibility errors: the
         largest axial force of the cycle (weight, inertia and process force)
         against the screw's ratings and contact pressure
-        (:func:`ballscrew.ratings.plausibility`), the travel against the
+        (:func:`ballscrew.design.ratings.plausibility`), the travel against the
         screw's length where ``[axis]`` gives it (bearing span, else screw length),
         the largest speed and acceleration against ``[axis]`` ``max_feed`` and
         ``max_acceleration`` where given.
+    thermal_failure : str
+        "raise": a heat balance that cannot be solved (a cycle whose friction
+        the screw cannot shed) raises its input error; "keep": the error is
+        kept in each :class:`ModelEnergy` and the cycle's figures are returned
+        (the web page shows the energy, and the check says why it cannot run).
     """
+    if thermal_failure not in ("raise", "keep"):
+        raise BallScrewInputError("thermal_failure", thermal_failure, "'raise' or 'keep'")
     m = dict(move or {})
     temp = float(case.temperature.flat[0]) if temperature is None else float(temperature)
     setup = axis_setup(case.screw, case.axis, case.thermal, float(np.ptp(profile.position)))
@@ -194,9 +271,11 @@ def energy_run(
                                        "nut_mass")},
         list(setup.notes), m, findings=found,
     )  # fmt: skip
-    for name in model_names:
-        _one_model(run, name, run_time, steady_speeds)
-    return run
+    results = {
+        name: _one_model(run, name, run_time, steady_speeds, thermal_failure)
+        for name in model_names
+    }
+    return dataclasses.replace(run, results=results)
 
 
 def motion_plausibility(
@@ -234,47 +313,47 @@ def _axis_limits(profile: Profile, axis: Axis, motion_field: str) -> list[Findin
 
 
 def _one_model(
-    run: EnergyRun, name: str, run_time: float, steady_speeds: npt.ArrayLike | None
-) -> None:
+    run: EnergyRun, name: str, run_time: float, steady_speeds: npt.ArrayLike | None,
+    thermal_failure: str,
+) -> ModelEnergy:  # fmt: skip
+    """One model's cycle (run once), back-driving verdicts and temperatures."""
     case, profile, axis, node = run.case, run.profile, run.axis, run.node
     params = case.parameters_for(name)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # the speed limits are kept in the result
-        r = axis_cycle(profile, case.screw, case.lubricant, axis, temperature=run.temperature,
-                       model=name, **params)  # fmt: skip
-    run.speed_warnings = list(r.speed_warnings)
-    run.cycles_by_model[name] = r
-    numbers = _cycle_numbers(r, run.cycles)
-    numbers["weight_reverse_efficiency"] = weight_back_driving(
+        cycle = axis_cycle(profile, case.screw, case.lubricant, axis,
+                           temperature=run.temperature, model=name, **params)  # fmt: skip
+    weight = weight_back_driving(
         case.screw, case.lubricant, axis, temperature=run.temperature, model=name, **params
     )
-    numbers["self_locking"] = self_locking(
+    locking = self_locking(
         case.screw, case.lubricant, temperature=run.temperature, model=name, **params
     )
-    numbers["duration_s"] = profile.duration
-    numbers["warnings"] = [str(issue) for issue in r.friction.warnings] + list(r.speed_warnings)
-    steady = steady_temperature(profile, case.screw, case.lubricant, axis, node, model=name,
-                                **params)  # fmt: skip
-    times, history = temperature_history(profile, case.screw, case.lubricant, axis, node,
-                                         run_time, model=name, points=50, steady=steady,
-                                         **params)  # fmt: skip
-    run.histories[name] = (times, history)
-    numbers["steady_temperature_C"] = steady.temperature
-    numbers["final_temperature_C"] = float(history[-1])
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        warm = axis_cycle(profile, case.screw, case.lubricant, axis,
-                          temperature=float(history[-1]), model=name, **params)  # fmt: skip
-    numbers["friction_energy_at_final_temperature_J"] = warm.friction_energy
+    base = ModelEnergy(cycle, run.cycles, profile.duration, weight, locking)
+    try:
+        steady = steady_temperature(profile, case.screw, case.lubricant, axis, node, model=name,
+                                    **params)  # fmt: skip
+        times, history = temperature_history(profile, case.screw, case.lubricant, axis, node,
+                                             run_time, model=name, points=50, steady=steady,
+                                             **params)  # fmt: skip
+    except BallScrewInputError as exc:
+        if thermal_failure == "raise":
+            raise
+        return dataclasses.replace(base, thermal_error=exc)
+    warm = friction_energy(profile, case.screw, case.lubricant, axis,
+                           temperature=float(history[-1]), model=name, **params)  # fmt: skip
+    at = None
     if steady_speeds is not None:
         at = steady_at_speeds(case.screw, case.lubricant, node, steady_speeds,
                               axial_load=run.move.get("force", 0.0), model=name,
                               **params)  # fmt: skip
-        run.steady[name] = at
-        numbers["steady_at_speed"] = {
-            "speed_rpm": rad_s_to_rpm(at.speed).tolist(),
-            "temperature_C": at.temperature.tolist(),
-            "torque_Nm": at.torque.tolist(),
-            "power_W": at.power.tolist(),
-        }
-    run.results[name] = numbers
+    return dataclasses.replace(
+        base, history=(times, history), steady_temperature=steady.temperature,
+        final_temperature=float(history[-1]), friction_energy_at_final_temperature=warm,
+        steady_at_speed=at,
+    )  # fmt: skip
+
+
+def __getattr__(name: str) -> Any:
+    """The entry point's name before 0.3.0, kept for one release with a DeprecationWarning."""
+    return renamed(__name__, name, {"energy_run": run_energy})

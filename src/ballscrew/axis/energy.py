@@ -66,6 +66,7 @@ __all__ = [
     "Axis",
     "CycleResult",
     "axis_cycle",
+    "friction_energy",
     "reverse_efficiency",
     "screw_motion",
     "self_locking",
@@ -219,6 +220,30 @@ class CycleResult:
     friction: FrictionResult = field(repr=False)
     friction_energy_by_mechanism: dict[str, float] = field(default_factory=dict)
     speed_warnings: tuple[str, ...] = ()
+
+    def as_dict(self) -> dict[str, Any]:
+        """The cycle's figures as JSON-ready values (the arrays per sample left out).
+
+        The energies [J], the peak and RMS motor torque [N·m], the efficiencies
+        at the working point, whether the load back-drives the screw there, and
+        the model's validity issues and the speed limits passed, as text.
+        """
+        return {
+            "friction_energy_J": self.friction_energy,
+            "friction_energy_out_J": self.friction_energy_out,
+            "friction_energy_back_J": self.friction_energy_back,
+            "friction_energy_by_mechanism_J": self.friction_energy_by_mechanism,
+            "bearing_energy_J": self.bearing_energy,
+            "constant_efficiency_energy_J": self.constant_efficiency_energy,
+            "load_work_J": self.load_work,
+            "peak_motor_torque_Nm": self.peak_motor_torque,
+            "rms_motor_torque_Nm": self.rms_motor_torque,
+            "forward_efficiency": self.forward_efficiency,
+            "reverse_efficiency": self.reverse_efficiency,
+            "back_drives_at_working_point": self.reverse_efficiency > 0.0,
+            "warnings": [str(issue) for issue in self.friction.warnings]
+            + list(self.speed_warnings),
+        }
 
 
 def reverse_efficiency(result: FrictionResult, lead: float) -> FloatArray:
@@ -458,6 +483,23 @@ def axis_cycle(
         speed_warnings=tuple(limits),
         friction_energy_by_mechanism=_energy_by_mechanism(fr, omega, time),
     )
+
+
+def friction_energy(
+    profile: Profile, screw: BallScrew, lubricant: Lubricant | str, axis: Axis, *,
+    temperature: float = 40.0, model: str = "complete", **parameters: Any,
+) -> float:  # fmt: skip
+    """The screw's friction energy over ``profile`` [J]: :func:`axis_cycle`'s alone.
+
+    The same friction call and the same trapezoidal rule, without the
+    catalogue rule, the bearings and the motor; for the energy of a cycle at
+    another temperature (the one it warms up to).
+    """
+    omega, _, force = screw_motion(profile, screw, axis)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # as axis_cycle: kept out of this figure
+        fr = _per_sample(screw, lubricant, omega, force, temperature, model, parameters)
+    return _integral(fr.total * np.abs(omega), profile.time)
 
 
 def _energy_by_mechanism(

@@ -190,6 +190,7 @@ def _axis_rows(case: Any) -> list[tuple[str, str, str]]:
 
 def _check_rows(case: Any) -> list[tuple[str, str, str]]:
     """Load ratings, ``[motor]`` and ``[check]`` as ``ballscrew check`` will use them."""
+    from ..kinematics import rad_s_to_rpm
 
     def kn(value: float | None, key: str) -> str:
         return f"give screw.{key} for ballscrew check" if value is None else f"{value / 1e3:.4g} kN"
@@ -199,11 +200,10 @@ def _check_rows(case: Any) -> list[tuple[str, str, str]]:
         ("screw", "dynamic load rating C_a", kn(case.dynamic_load_rating, "dynamic_load_rating")),
         ("screw", "static load rating C_0a", kn(case.static_load_rating, "static_load_rating")),
     ]
-    units = {"rated_torque": (1.0, "N*m"), "peak_torque": (1.0, "N*m"),
-             "rated_speed": (30.0 / math.pi, "rpm")}  # fmt: skip
     for key, value in case.motor.items():
-        scale, unit = units[key]
-        rows.append(("motor", key.replace("_", " "), f"{value * scale:.4g} {unit}"))
+        rpm = key == "rated_speed"
+        shown, unit = (float(rad_s_to_rpm(value)), "rpm") if rpm else (float(value), "N*m")
+        rows.append(("motor", key.replace("_", " "), f"{shown:.4g} {unit}"))
     life = c.get("required_life")
     rows += [
         ("check", "required life",

@@ -66,25 +66,23 @@ def check_command(
       ballscrew check --case my_axis.toml \\
         --move "stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2, force=2 kN"
     """  # noqa: D301 - click needs the literal \b to keep the example lines
-    from .._version import __version__
-    from ..axis.check import axis_check
-    from ..axis.duty import energy_run
+    from ..axis import run_check, run_energy
     from ..io.case import load_case
     from ..io.units import to_si
-    from ..report.outputs import json_document
+    from ..report.outputs import result_json
 
     case = load_case(case_file)
     profile, m = motion(move_text, profile_file, cycles)
     temp = to_si("--temperature", temperature, "degC") if temperature else None
-    run = energy_run(case, profile, [model_name], cycles=cycles, temperature=temp,
+    run = run_energy(case, profile, [model_name], cycles=cycles, temperature=temp,
                      run_time=to_si("--run-time", run_time, "s"), move=m)  # fmt: skip
-    result = axis_check(run, model_name)
+    result = run_check(run, model_name)
     out = stdout(json_file)
     out.print(_verdict_table(result))
     for line in result.assumptions:
         out.print(f"assumed: {line}")
     if json_file:
-        write_json(json_file, json_document(result.as_dict(__version__)))
+        write_json(json_file, result_json(result))
     if out_dir:
         from pathlib import Path
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 import click
 from rich.console import Console
@@ -68,11 +68,10 @@ def energy_command(
         --move "stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2, force=2 kN, \\
                 force_from=50 mm, force_to=250 mm"
     """  # noqa: D301 - click needs the literal \b to keep the example lines
-    from .._version import __version__
-    from ..axis.duty import energy_run
+    from ..axis import run_energy
     from ..io.case import load_case
     from ..io.units import parse_range, to_si
-    from ..report.outputs import json_document
+    from ..report.outputs import result_json
     from ..report.torque import warning_lines
 
     case = load_case(case_file)
@@ -80,7 +79,7 @@ def energy_command(
     speeds = None if steady_speeds is None else parse_range("--steady-speeds", steady_speeds,
                                                               "rad/s")  # fmt: skip
     temp = to_si("--temperature", temperature, "degC") if temperature else None
-    run = energy_run(case, profile, model_names, cycles=cycles, temperature=temp,
+    run = run_energy(case, profile, model_names, cycles=cycles, temperature=temp,
                      run_time=to_si("--run-time", run_time, "s"), steady_speeds=speeds,
                      move=m, motion_field="--move" if move_text else "--profile")  # fmt: skip
     for finding in run.findings:
@@ -93,7 +92,7 @@ def energy_command(
         click.echo(f"note: {line}", err=True)
     title = f"{case.title}: {cycles} cycle(s), {profile.duration:.4g} s, {run.temperature:g} °C"
     out = stdout(json_file)
-    out.print(_results_table(title, run.results, run_time))
+    out.print(_results_table(title, run, run_time))
     _print_weight_verdicts(out, run)
     for name, at in run.steady.items():
         out.print(_steady_table(f"{name}: continuous running at {m.get('force', 0.0):g} N", at))
@@ -101,14 +100,13 @@ def energy_command(
         from ..report.energy import write_energy_report
 
         with writing("--out", out_dir), atomic_folder(Path(out_dir)) as folder:
-            files = write_energy_report(folder, case.title, profile, run.cycles_by_model,
-                                    run.results, run.histories or None)  # fmt: skip
+            files = write_energy_report(folder, run)
         click.echo(f"report: {Path(out_dir) / 'report.html'} ({len(files)} files)", err=True)
     if json_file:
-        write_json(json_file, json_document(run.as_dict(__version__)))
+        write_json(json_file, result_json(run))
 
 
-def _results_table(title: str, results: dict[str, dict[str, Any]], run_time: str) -> Table:
+def _results_table(title: str, run: EnergyRun, run_time: str) -> Table:
     """The results of each model over the cycles: energies, efficiencies, motor torques."""
     table = Table(title=title)
     for column in ("model", "friction energy [J]", "per cycle [J]", "catalogue rule [J]",
@@ -116,25 +114,26 @@ def _results_table(title: str, results: dict[str, dict[str, Any]], run_time: str
                    "RMS motor torque [N*m]",
                    f"temperature after {run_time} [degC]"):  # fmt: skip
         table.add_column(column, justify="right")
-    for name, v in results.items():
+    for name, r in run.results.items():
+        c = r.cycle
         table.add_row(
             name,
-            f"{v['friction_energy_J']:.4g}",
-            f"{v['friction_energy_per_cycle_J']:.4g}",
-            f"{v['constant_efficiency_energy_J']:.4g}",
-            f"{v['bearing_energy_J']:.4g}",
-            f"{v['forward_efficiency']:.3f} / {v['reverse_efficiency']:.3f}",
-            f"{v['peak_motor_torque_Nm']:.4g}",
-            f"{v['rms_motor_torque_Nm']:.4g}",
-            f"{v['final_temperature_C']:.3g}",
+            f"{c.friction_energy:.4g}",
+            f"{c.friction_energy / r.cycles:.4g}",
+            f"{c.constant_efficiency_energy:.4g}",
+            f"{c.bearing_energy:.4g}",
+            f"{c.forward_efficiency:.3f} / {c.reverse_efficiency:.3f}",
+            f"{c.peak_motor_torque:.4g}",
+            f"{c.rms_motor_torque:.4g}",
+            f"{r.final_temperature:.3g}",
         )
     return table
 
 
 def _print_weight_verdicts(out: Console, run: EnergyRun) -> None:
     """Per model, whether the weight along an inclined axis back-drives the screw."""
-    for name, v in run.results.items():
-        eta = v["weight_reverse_efficiency"]
+    for name, r in run.results.items():
+        eta = r.weight_reverse_efficiency
         if math.isnan(eta):
             continue
         # The catalogue's test: a load back-drives the screw when the reverse efficiency
@@ -143,7 +142,7 @@ def _print_weight_verdicts(out: Console, run: EnergyRun) -> None:
                  f"motor off: reverse efficiency {eta:.3f}; ")  # fmt: skip
         if eta > 0.0:
             out.print(where + "it turns the screw: hold the axis with a brake")
-        elif v["self_locking"]:
+        elif r.self_locking:
             out.print(where + "self-locking (the friction angle exceeds the lead angle)")
         else:
             out.print(

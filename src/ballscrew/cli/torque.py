@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 import sys
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import click
 import numpy as np
@@ -17,9 +17,6 @@ from .common import case_option, file_option, progress, stdout, write_json, writ
 
 MAX_POINTS = 2_000_000
 """The most operating points ``ballscrew torque`` computes without ``--max-points``."""
-
-if TYPE_CHECKING:
-    pass
 
 __all__ = ["torque"]
 
@@ -112,31 +109,18 @@ def torque(
       ballscrew torque --model complete --model catalog --csv t.csv --csv-layout wide \\
           --csv-dialect semicolon-decimal-comma
     """  # noqa: D301 - click needs the literal \b to keep the example lines
-    from ..friction import get_model
-    from ..io.case import load_case
+    from ..chain import model_named, torque_table
+    from ..io.case import WIPER_PARAMETERS, load_case
     from ..io.files import atomic_write
-    from ..io.units import parse_range
     from ..report.outputs import json_text
-    from ..report.torque import torque_run
+    from ..report.torque import TorqueRun
 
     case = load_case(case_file)
     if wiper_drag is not None:
         case = case.with_wiper_drag(wiper_drag, field="--wiper-drag")
     for name in model_names:
-        get_model(name)
-    w = np.asarray(parse_range("--speed", speed, "rad/s")) if speed else None
-    t = np.asarray(parse_range("--temperature", temperature, "degC")) if temperature else None
-    f = np.asarray(parse_range("--axial-load", axial_load, "N")) if axial_load else None
-    sizes = [len(a) for a in (w, t, f) if a is not None]
-    sizes += [case_size for case_size, given in ((case.speed.size, w), (case.temperature.size, t),
-              (case.axial_load.size, f)) if given is None]  # fmt: skip
-    points = math.prod(sizes) * len(model_names)
-    if points > max_points:
-        raise BallScrewInputError(
-            "operating points", f"{points:,}",
-            f"at most {max_points:,} (speeds x temperatures x loads x models); take fewer, or "
-            "raise the limit with --max-points",
-        )  # fmt: skip
+        model_named(name)
+    w, t, f = _points(case, speed, temperature, axial_load, len(model_names), max_points)
     console = Console(stderr=True)
     with progress(console) as bar:
         task = bar.add_task("models", total=len(model_names))
@@ -145,8 +129,14 @@ def torque(
             bar.update(task, description=name)
             bar.advance(task)
 
-        loads = "operation.axial_load" if f is None else "--axial-load"
-        run = torque_run(case, model_names, w, t, f, on_model=advance, load_field=loads)
+        table = torque_table(
+            case.screw, case.lubricant, model_names, w, t, f,
+            parameters={name: case.parameters_for(name) for name in model_names},
+            ratings=case.load_ratings(),
+            load_field="--axial-load" if axial_load else "operation.axial_load",
+            wiper_drag=case.wiper_drag, wiper_models=WIPER_PARAMETERS, on_model=advance,
+        )  # fmt: skip
+    run = TorqueRun(case, table)
     for line in run.warning_lines():
         click.echo(line, err=True)
     _print_table(run, table_kind, json_file)
@@ -158,6 +148,31 @@ def torque(
             atomic_write(Path(csv_file + ".meta.json"), meta.encode("utf-8"))
     if json_file:
         write_json(json_file, run.json(command))
+
+
+def _points(
+    case: Any, speed: str | None, temperature: str | None, axial_load: str | None,
+    models: int, max_points: int,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:  # fmt: skip
+    """The speeds [rad/s], temperatures [°C] and loads [N]: those given, else the case's.
+
+    Refuses more than ``max_points`` points over the ``models`` before any is computed.
+    """
+    from ..io.units import parse_range
+
+    w = np.asarray(parse_range("--speed", speed, "rad/s")) if speed else case.speed
+    t = np.asarray(parse_range("--temperature", temperature, "degC")) if temperature else None
+    t = case.temperature if t is None else t
+    f = np.asarray(parse_range("--axial-load", axial_load, "N")) if axial_load else None
+    f = case.axial_load if f is None else f
+    points = math.prod(np.size(a) for a in (w, t, f)) * models
+    if points > max_points:
+        raise BallScrewInputError(
+            "operating points", f"{points:,}",
+            f"at most {max_points:,} (speeds x temperatures x loads x models); take fewer, or "
+            "raise the limit with --max-points",
+        )  # fmt: skip
+    return w, t, f
 
 
 def _print_table(run: Any, kind: str, json_file: str | None) -> None:

@@ -41,14 +41,14 @@ def validate(out_dir: str, model_names: tuple[str, ...]) -> None:
       ballscrew validate --out scorecard
       ballscrew validate --model complete --model catalog
     """  # noqa: D301 - click needs the literal \b to keep the example lines
-    from ..friction import MODELS, get_model
+    from ..chain import model_named, models
     from ..report.validation import summary_table, write_scorecard
     from ..study.validation import score, summarise
 
-    names = [get_model(name).name for name in model_names] or None
+    names = [model_named(name).name for name in model_names] or None
     console = Console(stderr=True)
     with progress(console) as bar:
-        total = len(names) if names else len(MODELS)
+        total = len(names) if names else len(models())
         task = bar.add_task("scoring", total=total)
         rows = score(names, progress=lambda name: bar.update(task, description=name, advance=1))
     with writing("--out", out_dir), atomic_folder(Path(out_dir)) as folder:

@@ -164,8 +164,7 @@ def critical_speed(
     catalogue rule's 15.1 * 33.5 / 1000**2 * 1e7 = 5059 rpm (its factor is
     rounded to three digits).
 
-    >>> import math
-    >>> round(0.8 * float(critical_speed(0.0335, 1.0)) * 30 / math.pi)
+    >>> round(0.8 * float(rad_s_to_rpm(critical_speed(0.0335, 1.0))))
     5053
     """
     if support not in SUPPORT_EIGENVALUES:

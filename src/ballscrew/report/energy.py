@@ -22,6 +22,7 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure as MplFigure
 
 from .._version import __version__
+from ..axis.duty import EnergyRun
 from ..axis.energy import CycleResult
 from ..axis.motion import Profile
 from ..errors import FloatArray
@@ -213,15 +214,14 @@ def _blocks(
     return blocks
 
 
-def write_energy_report(
-    out: str | Path,
-    title: str,
-    profile: Profile,
-    results: Mapping[str, CycleResult],
-    summary: Mapping[str, Mapping[str, object]],
-    history: Mapping[str, tuple[FloatArray, FloatArray]] | None = None,
-) -> list[Path]:
-    """Write the report files into ``out``; returns the paths written."""
+def write_energy_report(out: str | Path, run: EnergyRun) -> list[Path]:
+    """Write the report of ``run`` (:func:`ballscrew.axis.duty.run_energy`) into ``out``.
+
+    Returns the paths written.
+    """
+    title, profile, results = run.case.title, run.profile, run.cycles_by_model
+    summary = {name: r.as_dict() for name, r in run.results.items()}
+    history = run.histories or None
     folder = Path(out)
     (folder / "figures").mkdir(parents=True, exist_ok=True)
     (folder / "data").mkdir(parents=True, exist_ok=True)

@@ -24,7 +24,7 @@ import io
 import json
 import math
 from collections.abc import Callable, Mapping, Sequence
-from typing import Any
+from typing import Any, Protocol
 
 import numpy as np
 
@@ -39,6 +39,7 @@ __all__ = [
     "csv_text",
     "json_text",
     "provenance",
+    "result_json",
     "result_rows",
     "round_significant",
 ]
@@ -224,3 +225,16 @@ def json_text(rows: Sequence[Mapping[str, Any]], meta: Mapping[str, Any]) -> str
     """The rows and their provenance as one JSON document (strict JSON: no NaN)."""
     document = _clean({"provenance": meta, "rows": list(rows)})
     return json.dumps(document, indent=1, ensure_ascii=False, allow_nan=False) + "\n"
+
+
+class _Result(Protocol):
+    def as_dict(self) -> dict[str, Any]: ...
+
+
+def result_json(result: _Result) -> str:
+    """A command's result as its ``--json`` file: the package's version, then its :meth:`as_dict`.
+
+    The version is the writer's to add, not each result's (strict JSON,
+    non-finite numbers null: :func:`json_document`).
+    """
+    return json_document({"ballscrew": __version__, **result.as_dict()})

@@ -3,10 +3,12 @@
 Every request is turned into a case file's TOML text and read by
 :func:`ballscrew.io.case.parse_case`, so the rules, units and one-line messages
 are the command line's; the models run through
-:func:`ballscrew.report.torque.run_models` and the tables through
+:func:`ballscrew.chain.torque_table` and the tables through
 :mod:`ballscrew.report.outputs`, so the numbers and files are those of ``ballscrew
-torque``; the energy of a move is :func:`ballscrew.axis.energy.axis_cycle` on the
-move of ``ballscrew energy --move``.
+torque``; the energy and the check of a move are
+:func:`ballscrew.axis.run_energy` (the cycle computed once) and
+:func:`ballscrew.axis.run_check` on the move of ``ballscrew energy --move``, as
+the commands compute them.
 
 The work a request may ask for is bounded before any of it is done: the
 request's fields and sizes in :mod:`ballscrew.web.inputs`
@@ -24,12 +26,11 @@ from typing import Any
 
 import numpy as np
 
-from ..axis.motion import parse_move
-from ..chain import FrictionResult
-from ..design.ratings import plausibility, raise_errors
+from ..axis import EnergyRun, run_check, run_energy
+from ..axis.motion import Profile, back_and_forth, parse_move
+from ..chain import FrictionResult, model_named, models, torque_table
 from ..errors import BallScrewInputError, BallScrewSpeedWarning, BallScrewValidityWarning
-from ..friction import MODELS, get_model
-from ..io.case import Case
+from ..io.case import WIPER_PARAMETERS, Case
 from ..io.units import Reading, parse_range
 from ..kinematics import rad_s_to_rpm
 from ..report.outputs import (
@@ -41,7 +42,7 @@ from ..report.outputs import (
     result_rows,
     round_significant,
 )
-from ..report.torque import run_models, warning_lines
+from ..report.torque import warning_lines
 from .inputs import (
     LIMITS,
     ApiError,
@@ -132,11 +133,13 @@ def _quiet_run(
     load_field: str = "operation.axial_load",
 ) -> tuple[dict[str, FrictionResult], list[str]]:
     """The models' results and the plausibility warnings; a plausibility error raises."""
-    found = raise_errors(plausibility(case.screw, case.load_ratings(), f, load_field=load_field))
-    with warnings.catch_warnings():
-        # The issues are kept in each result and returned as text.
-        warnings.simplefilter("ignore", BallScrewValidityWarning)
-        return run_models(case, names, w, t, f), [f"warning: {x}" for x in found]
+    table = torque_table(
+        case.screw, case.lubricant, names, w, t, f,
+        parameters={name: case.parameters_for(name) for name in names},
+        ratings=case.load_ratings(), load_field=load_field, wiper_drag=case.wiper_drag,
+        wiper_models=WIPER_PARAMETERS,
+    )  # fmt: skip
+    return table.results, [f"warning: {x}" for x in table.findings]
 
 
 def torque(payload: Mapping[str, Any], limits: Limits = LIMITS) -> dict[str, Any]:
@@ -154,7 +157,7 @@ def torque(payload: Mapping[str, Any], limits: Limits = LIMITS) -> dict[str, Any
     try:
         if not isinstance(model, str):
             raise BallScrewInputError("model", model, "the name of one model")
-        get_model(model)
+        model_named(model)
         case = load_case(fields, limits)
         read: list[Reading] = []
         w, t, f = _operating_points(case, payload, limits, read)
@@ -184,20 +187,15 @@ def _models(value: Any, limits: Limits) -> list[str]:
     if len(names) > limits.models:
         raise BallScrewInputError("models", value, f"at most {limits.models} models")
     for name in names:
-        get_model(name)
+        model_named(name)
     return [*dict.fromkeys(n for n in names if n != "catalog"), "catalog"]
 
 
 _MOVE_KEYS = ("stroke", "feed", "acceleration")
 
 
-def _energy(case: Case, move: Any, limits: Limits) -> dict[str, Any]:
-    """The energy of one back-and-forth move (``ballscrew energy --move``), complete model."""
-    from ..axis.duty import motion_plausibility
-    from ..axis.energy import axis_cycle
-    from ..axis.motion import back_and_forth
-    from ..axis.setup import axis_setup
-
+def _move_profile(move: Any, limits: Limits) -> tuple[str, dict[str, float], Profile]:
+    """The move's text, its SI values and its back-and-forth profile, within the page's limit."""
     if not isinstance(move, Mapping) or not all(isinstance(move.get(k), str) for k in _MOVE_KEYS):
         raise BallScrewInputError("--move", move, "stroke, feed and acceleration as text")
     text = ", ".join(f"{k}={move[k]}" for k in _MOVE_KEYS)
@@ -210,68 +208,70 @@ def _energy(case: Case, move: Any, limits: Limits) -> dict[str, Any]:
             f"a move out and back within {limits.move_seconds:g} s on the page "
             f"(this one takes {seconds:.3g} s; the command line has no such limit)",
         )
-    profile = back_and_forth(m["stroke"], m["feed"], m["acceleration"])
+    return text, m, back_and_forth(m["stroke"], m["feed"], m["acceleration"])
+
+
+_ENERGY_SHOWN = (
+    "friction_energy_J", "friction_energy_out_J", "friction_energy_back_J",
+    "constant_efficiency_energy_J", "bearing_energy_J", "load_work_J", "peak_motor_torque_Nm",
+    "rms_motor_torque_Nm", "forward_efficiency", "reverse_efficiency",
+)  # fmt: skip
+"""The figures of the cycle (:meth:`ballscrew.axis.CycleResult.as_dict`) the page shows."""
+
+
+def _energy(case: Case, move: Any, limits: Limits) -> dict[str, Any]:
+    """The energy and the check of one back-and-forth move, complete model.
+
+    ``ballscrew energy --move`` and ``ballscrew check --move``: one
+    :func:`~ballscrew.axis.run_energy` (the cycle computed once), whose result
+    the check reads. A heat balance that cannot be solved is the check's
+    verdict, not an error of the page: the energy is still shown.
+    """
+    text, m, profile = _move_profile(move, limits)
     temperature = float(case.temperature.flat[0])
-    params = case.parameters_for("complete")
-    setup = axis_setup(case.screw, case.axis, case.thermal, abs(m["stroke"]))
-    found = motion_plausibility(case, profile, setup.axis, "--move")
     with warnings.catch_warnings():
         # The speed limits are returned in the result, as the command line reports them.
         warnings.simplefilter("ignore", BallScrewSpeedWarning)
         warnings.simplefilter("ignore", BallScrewValidityWarning)
-        r = axis_cycle(
-            profile, case.screw, case.lubricant, setup.axis, temperature=temperature,
-            model="complete", **params,
-        )  # fmt: skip
+        run = run_energy(case, profile, ["complete"], temperature=temperature, move=m,
+                         thermal_failure="keep")  # fmt: skip
+    cycle = run.results["complete"].cycle
+    figures = cycle.as_dict()
     result: dict[str, Any] = finite_or_null(
         {
             "move": text,
             "temperature_C": temperature,
             "duration_s": profile.duration,
-            "friction_energy_J": r.friction_energy,
-            "friction_energy_out_J": r.friction_energy_out,
-            "friction_energy_back_J": r.friction_energy_back,
-            "constant_efficiency_energy_J": r.constant_efficiency_energy,
-            "bearing_energy_J": r.bearing_energy,
-            "load_work_J": r.load_work,
-            "peak_motor_torque_Nm": r.peak_motor_torque,
-            "rms_motor_torque_Nm": r.rms_motor_torque,
-            "forward_efficiency": r.forward_efficiency,
-            "reverse_efficiency": r.reverse_efficiency,
-            "warnings": [str(x) for x in found] + list(r.speed_warnings),
+            **{key: figures[key] for key in _ENERGY_SHOWN},
+            "warnings": [str(x) for x in run.findings] + list(cycle.speed_warnings),
             # The page shows no temperature: the heat balance's notes do not apply.
-            "notes": [n for n in setup.notes if "machine_resistance" not in n],
+            "notes": [n for n in run.assumptions if "machine_resistance" not in n],
             "command": f'ballscrew energy --case case.toml --move "{text}"',
         }
     )
-    result["check"] = _check(case, profile, m, temperature, text)
+    result["check"] = _check(run, text)
     return result
 
 
-def _check(
-    case: Case, profile: Any, move: dict[str, float], temperature: float, text: str
-) -> dict[str, Any]:
+def _check(run: EnergyRun, text: str) -> dict[str, Any]:
     """``ballscrew check`` of the same move (complete model): the verdict table's rows.
 
     An input the check needs and the case lacks is not an error of the page: the
     check says what it is, as its verdict, and the energy is still shown.
     """
-    from ..axis.check import axis_check
-    from ..axis.duty import energy_run
-
+    command = f'ballscrew check --case case.toml --move "{text}"'
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", BallScrewSpeedWarning)
             warnings.simplefilter("ignore", BallScrewValidityWarning)
-            run = energy_run(case, profile, ["complete"], temperature=temperature, move=move)
-            check = axis_check(run, "complete")
+            check = run_check(run, "complete")
     except BallScrewInputError as exc:
-        return {"error": str(exc), "command": f'ballscrew check --case case.toml --move "{text}"'}
-    doc = check.as_dict("")
+        return {"error": str(exc), "command": command}
+    doc = check.as_dict()
     rows: dict[str, Any] = finite_or_null({
         "verdict": doc["verdict"], "not_checked": doc["not_checked"],
         "criteria": doc["criteria"], "assumptions": list(check.assumptions),
-        "command": f'ballscrew check --case case.toml --move "{text}"',
+        "command": command,
     })  # fmt: skip
     return rows
 
@@ -374,5 +374,5 @@ def model_choices() -> list[dict[str, str]]:
     """The registered models (name, title, purpose), for the page's check boxes."""
     return [
         {"name": m.name, "title": m.title, "purpose": m.purpose}
-        for m in sorted(MODELS.values(), key=lambda m: (m.name != "complete", m.name))
+        for m in sorted(models(), key=lambda m: (m.name != "complete", m.name))
     ]
