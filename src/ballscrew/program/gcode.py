@@ -154,7 +154,10 @@ def _words(text: str, number: int) -> tuple[str, list[tuple[str, float]]]:
                          "(no decimal codes such as G91.1 or G64.1)")  # fmt: skip
         pos = match.end()
     kept = [(k, v) for k, v in words if k != "N"]
-    text = " ".join(f"{k}{int(v)}" if k in "GMT" else f"{k}{v:.9f}" for k, v in kept)
+    # Codes first: gcodeparser attaches a parameter to the code before it (and passes over
+    # one before any code); the parameters of a line are merged anyway.
+    codes = [f"{k}{int(v)}" for k, v in kept if k in "GMT"]
+    text = " ".join(codes + [f"{k}{v:.9f}" for k, v in kept if k not in "GMT"])
     return text, kept
 
 

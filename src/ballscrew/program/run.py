@@ -145,9 +145,18 @@ class AxisResult:
 
     @property
     def friction_share(self) -> float:
-        """Screw and bearing friction over the energy supplied [-] (NaN when none supplied)."""
+        """Screw and bearing friction over all the energy the axis turns over [-].
+
+        The energy turned over is where the energy goes: the friction, the
+        process work, what the motor takes back, and the potential energy
+        stored (a weight lifted). For a horizontal axis that is the energy the
+        motor supplies; for a descending vertical axis the weight supplies
+        part of it. NaN when nothing moved.
+        """
         losses = self.friction_energy + self.bearing_energy
-        return losses / self.supplied_energy if self.supplied_energy > 0 else math.nan
+        total = (losses + max(self.process_work, 0.0) + self.regenerated_energy
+                 + max(self.potential_energy, 0.0))  # fmt: skip
+        return losses / total if total > 0 else math.nan
 
     def as_dict(self) -> dict[str, Any]:
         """The axis's numbers in the JSON document's units."""
@@ -222,6 +231,11 @@ class ProgramResult:
 
         supplied = self.supplied_energy
         losses = sum(a.friction_energy + a.bearing_energy for a in self.axes.values())
+        turned = sum(
+            a.friction_energy + a.bearing_energy + max(a.process_work, 0.0)
+            + a.regenerated_energy + max(a.potential_energy, 0.0)
+            for a in self.axes.values()
+        )  # fmt: skip
         return {
             "ballscrew": __version__,
             "machine": self.machine,
@@ -235,7 +249,7 @@ class ProgramResult:
                 "process_work_J": sum(a.process_work for a in self.axes.values()),
                 "friction_energy_J": self.friction_energy,
                 "bearing_energy_J": sum(a.bearing_energy for a in self.axes.values()),
-                "friction_share": losses / supplied if supplied > 0 else None,
+                "friction_share": losses / turned if turned > 0 else None,
             },
             "axes": {k: a.as_dict() for k, a in self.axes.items()},
             "energy_per_block_J": {
@@ -454,9 +468,7 @@ def _one_axis(
     shaft = t_m * first["motor_speed"]
     dt = np.diff(time)
     friction_steps = 0.5 * (power[1:] + power[:-1]) * dt
-    per_block = np.bincount(
-        motion.block[:-1], weights=friction_steps, minlength=program.size
-    )
+    per_block = np.bincount(motion.block[:-1], weights=friction_steps, minlength=program.size)
     force = first["axial_force"]
     reversals = _reversals(letter, setup, machine, motion, program, force, t0)
     g_axial = STANDARD_GRAVITY * math.sin(axis.incline)
