@@ -58,7 +58,10 @@ from ..design.stiffness import (
 )
 from ..errors import BallScrewInputError, FloatArray
 from ..io.machine import LINEAR_AXES, Machine
-from .gcode import Program, read_program
+from .gcode import ARC, Program, read_program
+
+ARC_PLANES = {17: (0, 1), 18: (2, 0), 19: (1, 2)}
+"""The in-plane axes (indices of X, Y, Z) of each arc plane."""
 from .planner import Limits, Motion, plan
 
 __all__ = ["AxisResult", "ProgramResult", "Reversal", "run_program"]
@@ -280,7 +283,9 @@ def _check_travel(machine: Machine, program: Program) -> None:
     for i, letter in enumerate(LINEAR_AXES):
         moved = program.kind != 3
         if letter in program.axes and letter not in machine.axes:
-            k = int(np.argmax(np.abs(program.end[:, i] - program.start[:, i]) > 0))
+            in_plane = np.isin(program.plane, [p for p, axes in ARC_PLANES.items() if i in axes])
+            uses = (program.end[:, i] != program.start[:, i]) | ((program.kind == ARC) & in_plane)
+            k = int(np.argmax(uses))
             raise BallScrewInputError(
                 f"program line {int(program.line[k])}", letter,
                 f"an axis of the machine file ({', '.join(machine.axes)})",
