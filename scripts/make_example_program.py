@@ -15,13 +15,14 @@ Z = -150 mm), machined in three operations, as CAM output looks:
 
     python scripts/make_example_program.py [--repeat N] [OUT]
 
-``--repeat N`` writes the three operations N times (for the benchmark).
+``--repeat N`` writes the three operations N times.
 """
 
 from __future__ import annotations
 
 import argparse
 import math
+import re
 from pathlib import Path
 
 TOP = -150.0  # Z of the plate's top face [mm]
@@ -95,15 +96,21 @@ def drill(lines: list[str]) -> None:
             lines.append(f"G0 Z{_f(SAFE)}")
 
 
-def program(repeat: int = 1) -> str:
-    """The program text."""
+def program(repeat: int = 1, vary: bool = False) -> str:
+    """The program text; ``vary``: each repetition at feeds 0.3 % apart (for the benchmark)."""
     lines = ["%", "O1000 (pocket, contour and drilled holes on a 200 x 140 plate)",
              "G21 G90 G17 G40 G49 G80", "T1", "S8000 M3", "M8",
              f"G0 Z{_f(SAFE)}"]  # fmt: skip
-    for _ in range(repeat):
-        pocket(lines)
-        contour(lines)
-        drill(lines)
+    for k in range(repeat):
+        chunk: list[str] = []
+        pocket(chunk)
+        contour(chunk)
+        drill(chunk)
+        if vary:
+            scale = 1.0 + 0.003 * (k % 100)
+            chunk = [re.sub(r"F(\d+)", lambda m: f"F{int(m.group(1)) * scale:.1f}", line)
+                     for line in chunk]  # fmt: skip
+        lines += chunk
     lines += ["G0 Z-10", "G0 X0 Y0", "M5 M9", "M30", "%"]
     numbered = []
     n = 0

@@ -59,12 +59,12 @@ from ..design.stiffness import (
 from ..errors import BallScrewInputError, FloatArray
 from ..io.machine import LINEAR_AXES, Machine
 from .gcode import ARC, Program, read_program
-
-ARC_PLANES = {17: (0, 1), 18: (2, 0), 19: (1, 2)}
-"""The in-plane axes (indices of X, Y, Z) of each arc plane."""
 from .planner import Limits, Motion, plan
 
 __all__ = ["AxisResult", "ProgramResult", "Reversal", "run_program"]
+
+ARC_PLANES = {17: (0, 1), 18: (2, 0), 19: (1, 2)}
+"""The in-plane axes (indices of X, Y, Z) of each arc plane."""
 
 THERMAL_EXPANSION = 11.5e-6
 """Linear expansion of screw steel [1/K] (as ``ballscrew check``)."""
