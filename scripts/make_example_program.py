@@ -96,6 +96,10 @@ def drill(lines: list[str]) -> None:
             lines.append(f"G0 Z{_f(SAFE)}")
 
 
+def _scaled_feeds(line: str, scale: float) -> str:
+    return re.sub(r"F(\d+)", lambda m: f"F{int(m.group(1)) * scale:.1f}", line)
+
+
 def program(repeat: int = 1, vary: bool = False) -> str:
     """The program text; ``vary``: each repetition at feeds 0.3 % apart (for the benchmark)."""
     lines = ["%", "O1000 (pocket, contour and drilled holes on a 200 x 140 plate)",
@@ -107,9 +111,7 @@ def program(repeat: int = 1, vary: bool = False) -> str:
         contour(chunk)
         drill(chunk)
         if vary:
-            scale = 1.0 + 0.003 * (k % 100)
-            chunk = [re.sub(r"F(\d+)", lambda m: f"F{int(m.group(1)) * scale:.1f}", line)
-                     for line in chunk]  # fmt: skip
+            chunk = [_scaled_feeds(line, 1.0 + 0.003 * (k % 100)) for line in chunk]
         lines += chunk
     lines += ["G0 Z-10", "G0 X0 Y0", "M5 M9", "M30", "%"]
     numbered = []
