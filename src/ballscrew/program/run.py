@@ -20,7 +20,8 @@ with the axis wing (:mod:`ballscrew.axis`):
   interpolated linearly in temperature between the two runs (the model is
   smooth in temperature over a few kelvin; both runs are the model's own);
 - every reversal of each axis: its time, position, the axial load on either
-  side (the sign a controller's friction compensation needs), the friction
+  side (its mean over :data:`LOAD_WINDOW` of motion; the sign a controller's
+  friction compensation needs), the friction
   force :math:`F_f = 2\pi T_f/l` of the model at creep speed under that load,
   and the lost motion :math:`2F_f/k` with the axis stiffness :math:`k` at that
   nut position (shaft, nut at the makers' printed level, thrust bearings;
@@ -72,6 +73,8 @@ CREEP_SPEED = 0.1
 """Screw speed of the friction at a reversal [rad/s] (as ``ballscrew check``)."""
 MOVING = 1e-9
 """Axis speed below which an axis stands [m/s]."""
+LOAD_WINDOW = 0.02
+"""Time over which the load on either side of a reversal is averaged [s]."""
 
 
 def cycle_values(cycle: Any) -> dict[str, Any]:
@@ -397,6 +400,14 @@ def _reversals(
     ax = machine.axes[letter]
     case = ax.case
     screw = case.screw
+    # The load on either side: its mean over LOAD_WINDOW of motion before the last moving
+    # sample and after the first (a single sample can sit where a block starts without
+    # acceleration).
+    integral = np.concatenate([[0.0], np.cumsum(0.5 * (force[1:] + force[:-1]) * np.diff(t))])
+    mean_before = (np.interp(t[before], t, integral)
+                   - np.interp(t[before] - LOAD_WINDOW, t, integral)) / LOAD_WINDOW  # fmt: skip
+    mean_after = (np.interp(t[after] + LOAD_WINDOW, t, integral)
+                  - np.interp(t[after], t, integral)) / LOAD_WINDOW  # fmt: skip
     load = 0.5 * (force[before] + force[after])
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
@@ -418,7 +429,7 @@ def _reversals(
     play = np.broadcast_to(lost_motion(f_f, k), pos.shape)
     lines = program.line[motion.block[after]]
     return tuple(
-        Reversal(float(time[n]), float(pos[n]), float(force[before[n]]), float(force[after[n]]),
+        Reversal(float(time[n]), float(pos[n]), float(mean_before[n]), float(mean_after[n]),
                  float(f_f[n]), float(k[n]), float(play[n]), int(lines[n]))
         for n in range(time.size)
     )  # fmt: skip
