@@ -33,6 +33,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from importlib import resources
 from pathlib import Path
 from typing import Any
 
@@ -45,10 +46,12 @@ from .schema import Assumed
 from .units import to_si
 
 __all__ = [
+    "EXAMPLE_MACHINE",
     "LINEAR_AXES",
     "ROTARY_AXES",
     "Machine",
     "MachineAxis",
+    "example_machine_text",
     "load_machine",
     "parse_machine",
 ]
@@ -210,10 +213,14 @@ def _validation_error(exc: ValidationError, prefix: str = "") -> BallScrewInputE
     return BallScrewInputError(name, value, allowed)
 
 
-def _axis_case(letter: str, raw: str | dict[str, Any], folder: Path) -> Case:
+def _axis_case(letter: str, raw: str | dict[str, Any], folder: Path | None) -> Case:
     """The axis's case: a file relative to the machine file, or the inline table."""
     name = f"axes.{letter}.case"
+    if isinstance(raw, str) and folder is None:
+        allowed = f"the case inline, as an [{name}] table (the web page reads no file)"
+        raise BallScrewInputError(name, raw, allowed)
     if isinstance(raw, str):
+        assert folder is not None
         path = Path(raw) if Path(raw).is_absolute() else folder / raw
         try:
             text = path.read_text(encoding="utf-8")
@@ -229,10 +236,13 @@ def _axis_case(letter: str, raw: str | dict[str, Any], folder: Path) -> Case:
         raise BallScrewInputError(f"{name}: {exc.field}", exc.value, exc.allowed) from None
 
 
-def parse_machine(text: str, *, source: str = "machine", folder: str | Path = ".") -> Machine:
+def parse_machine(
+    text: str, *, source: str = "machine", folder: str | Path | None = "."
+) -> Machine:
     """Validate a machine file given as TOML text; case paths are relative to ``folder``.
 
-    See the module docstring for the format.
+    ``folder`` None: every case must be inline (no file is read). See the module
+    docstring for the format.
     """
     raw = parse_toml(text, source)
     try:
@@ -278,7 +288,7 @@ def parse_machine(text: str, *, source: str = "machine", folder: str | Path = ".
             raise BallScrewInputError(f"{key}.process_force", entry.process_force, "a force >= 0")
         axes[letter] = MachineAxis(
             letter=letter,
-            case=_axis_case(letter, entry.case, Path(folder)),
+            case=_axis_case(letter, entry.case, None if folder is None else Path(folder)),
             max_feed=_positive(f"{key}.max_feed", entry.max_feed, "m/s"),
             max_acceleration=_positive(f"{key}.max_acceleration", entry.max_acceleration, "m/s**2"),
             max_jerk=_positive(f"{key}.max_jerk", entry.max_jerk, "m/s**3"),
@@ -302,6 +312,15 @@ def parse_machine(text: str, *, source: str = "machine", folder: str | Path = ".
         notes=tuple(notes),
         text=text,
     )
+
+
+def example_machine_text() -> str:
+    """The bundled example machine (examples/machine_vmc.toml with every case inline)."""
+    return resources.files("ballscrew").joinpath(EXAMPLE_MACHINE).read_text(encoding="utf-8")
+
+
+EXAMPLE_MACHINE = "data/machine_vmc.toml"
+"""The bundled example machine, inside the package."""
 
 
 def load_machine(path: str | Path) -> Machine:
