@@ -62,7 +62,7 @@ from ..io.machine import LINEAR_AXES, Machine
 from .gcode import ARC, Program, read_program
 from .planner import Limits, Motion, plan
 
-__all__ = ["AxisResult", "ProgramResult", "Reversal", "run_program"]
+__all__ = ["AxisResult", "ProgramResult", "Reversal", "cycle_values", "heat_balance", "run_program"]
 
 ARC_PLANES = {17: (0, 1), 18: (2, 0), 19: (1, 2)}
 """The in-plane axes (indices of X, Y, Z) of each arc plane."""
