@@ -76,6 +76,17 @@ def test_refusals_name_the_field(client: TestClient, body: dict[str, str], field
     assert answer.json()["field"] == field
 
 
+def test_a_server_without_the_program_extra_says_which(
+    client: TestClient, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    import sys
+
+    monkeypatch.setitem(sys.modules, "ruckig", None)
+    answer = client.post("/api/program", json={"program": PROGRAM})
+    assert answer.status_code == 501
+    assert "ballscrew[program]" in answer.json()["error"]
+
+
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
 
 

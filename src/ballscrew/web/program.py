@@ -14,6 +14,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from ..io.extras import MissingExtraError
 from ..io.machine import example_machine_text, parse_machine
 from ..program import read_program, run_program
 from ..report.outputs import finite_or_null
@@ -52,7 +53,10 @@ def run(payload: dict[str, Any], limits: Limits) -> dict[str, Any]:
             422, f"program: about {nominal:.0f} s of motion; this server runs at most "
             f"{MAX_SECONDS:.0f} s (the command line has no bound)", "program",
         )  # fmt: skip
-    r = run_program(machine, program)
+    try:
+        r = run_program(machine, program)
+    except MissingExtraError as exc:  # the server runs without the program extra
+        raise ApiError(501, str(exc)) from None
     doc = r.as_dict()
     doc.pop("energy_per_block_J")
     for axis in doc["axes"].values():
