@@ -116,6 +116,9 @@ def test_friction_energy_is_the_integral_of_the_models_torque_times_speed(tmp_pa
         assert float(np.sum(r.axes[letter].energy_per_block)) == pytest.approx(
             r.axes[letter].friction_energy, rel=1e-9
         )
+        assert float(np.sum(r.axes[letter].supplied_per_block)) == pytest.approx(
+            r.axes[letter].supplied_energy, rel=1e-9
+        )
     # The vertical axis carries its weight: the nut's load never changes sign at a reversal.
     z = r.axes["Z"]
     assert z.reversals and all(rev.load_direction == "+/+" for rev in z.reversals)

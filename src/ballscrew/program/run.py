@@ -147,6 +147,9 @@ class AxisResult:
     travel: float
     reversals: tuple[Reversal, ...]
     energy_per_block: FloatArray = field(repr=False)
+    """Screw friction energy of each block [J]."""
+    supplied_per_block: FloatArray = field(repr=False, default_factory=lambda: np.zeros(0))
+    """Energy the motor supplies in each block (positive shaft power) [J]."""
     notes: tuple[str, ...] = ()
 
     @property
@@ -260,7 +263,8 @@ class ProgramResult:
             "axes": {k: a.as_dict() for k, a in self.axes.items()},
             "energy_per_block_J": {
                 "line": self.program.line.tolist(),
-                **{k: a.energy_per_block.tolist() for k, a in self.axes.items()},
+                "friction": {k: a.energy_per_block.tolist() for k, a in self.axes.items()},
+                "supplied": {k: a.supplied_per_block.tolist() for k, a in self.axes.items()},
             },
             "notes": list(self.notes),
         }
@@ -485,6 +489,10 @@ def _one_axis(
     dt = np.diff(time)
     friction_steps = 0.5 * (power[1:] + power[:-1]) * dt
     per_block = np.bincount(motion.block[:-1], weights=friction_steps, minlength=program.size)
+    positive = np.maximum(shaft, 0.0)
+    supplied_steps = 0.5 * (positive[1:] + positive[:-1]) * dt
+    supplied_block = np.bincount(motion.block[:-1], weights=supplied_steps,
+                                 minlength=program.size)  # fmt: skip
     force = first["axial_force"]
     reversals = _reversals(letter, setup, machine, motion, program, force, t0)
     g_axial = STANDARD_GRAVITY * math.sin(axis.incline)
@@ -517,6 +525,7 @@ def _one_axis(
         travel=travel,
         reversals=reversals,
         energy_per_block=per_block.astype(float),
+        supplied_per_block=supplied_block.astype(float),
         notes=tuple(notes),
     )
     series = {

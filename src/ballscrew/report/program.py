@@ -130,10 +130,13 @@ def time_series_csv(r: ProgramResult) -> bytes:
 def _blocks_csv(r: ProgramResult) -> bytes:
     letters = list(r.axes)
     rows = [
-        [int(line), *(float(r.axes[k].energy_per_block[i]) for k in letters)]
+        [int(line), *(float(r.axes[k].energy_per_block[i]) for k in letters),
+         *(float(r.axes[k].supplied_per_block[i]) for k in letters)]
         for i, line in enumerate(r.program.line)
-    ]
-    return csv_bytes(["line", *(f"{k} friction energy [J]" for k in letters)], rows)
+    ]  # fmt: skip
+    header = ["line", *(f"{k} friction energy [J]" for k in letters),
+              *(f"{k} energy supplied [J]" for k in letters)]  # fmt: skip
+    return csv_bytes(header, rows)
 
 
 def _reversals_csv(r: ProgramResult) -> bytes:
