@@ -139,3 +139,24 @@ def test_junctions_and_blocks_stay_within_every_axis_limit(
         rate = v**3 / r**2 * np.abs(dv)
         assert np.all(centripetal <= lim.acceleration * tol)
         assert np.all(rate <= lim.jerk * tol)
+
+
+def test_collinear_blocks_run_through_at_the_feed() -> None:
+    # Two 150 mm halves of the 300 mm line: the look-ahead lets the first end at the feed
+    # (each half is long enough to reach it), so the program takes the single line's time.
+    one = plan(read_program("G1 X300 F30000\n"), LIMITS)
+    two = plan(read_program("G1 X150 F30000\nG1 X300\n"), LIMITS)
+    assert two.entry_speed[1] == pytest.approx(0.5, rel=1e-6)
+    assert two.duration == pytest.approx(one.duration, rel=1e-6)
+
+
+def test_a_slower_block_is_entered_at_its_own_feed_and_a_dwell_adds_its_time() -> None:
+    fast_slow = plan(read_program("G1 X150 F30000\nG1 X300 F6000\n"), LIMITS)
+    assert fast_slow.entry_speed[1] == pytest.approx(0.1, rel=1e-6)
+    # The second block cruises at 0.1 m/s from its start: its samples never exceed it.
+    second = fast_slow.block == 1
+    assert np.max(fast_slow.path_speed[second]) <= 0.1 * (1 + 1e-9)
+    # A reversal of the path stops anyway: a dwell there adds exactly its 0.5 s.
+    plain = plan(read_program("G1 X100 F6000\nG1 X0\n"), LIMITS)
+    dwelt = plan(read_program("G1 X100 F6000\nG4 P0.5\nG1 X0\n"), LIMITS)
+    assert dwelt.duration - plain.duration == pytest.approx(0.5, rel=1e-9)
