@@ -312,6 +312,8 @@ def plan(program: Program, limits: Limits, progress: object = None) -> Motion:
         phases[k, :, 4] = prof.p[:7]
     if progress is not None:
         progress(n, n)  # type: ignore[operator]
+    if not float(phases[:, :, 0].sum()) > 0.0:
+        raise BallScrewInputError("program", "(no time)", "a move or a dwell that takes time")
     return _sample(program, g, phases, limits.sample_time, np.array(en), np.array(ex), v)
 
 
