@@ -166,6 +166,9 @@ def test_machine_file_errors_name_the_key(tmp_path: Path) -> None:
     with pytest.raises(BallScrewInputError) as info:
         parse_machine(good.replace('"60 m/s^3"', '"60 m/s^2"'), folder=EXAMPLES)
     assert info.value.field == "axes.X.max_jerk"
+    with pytest.raises(BallScrewInputError) as info:
+        parse_machine(good.replace('["0 mm", "800 mm"]', '["10 mm", "800 mm"]'), folder=EXAMPLES)
+    assert info.value.field == "axes.X.travel"  # the program starts at 0
     rotary = parse_machine(good + '\n[axes.C]\nnote = "a rotary table"\n', folder=EXAMPLES)
     assert any("axes.C" in n for n in rotary.notes)
 

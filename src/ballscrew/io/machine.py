@@ -283,6 +283,9 @@ def parse_machine(
         low, high = (_si(f"{key}.travel", v, "m") for v in entry.travel)
         if not (math.isfinite(low) and math.isfinite(high) and low < high):
             raise BallScrewInputError(f"{key}.travel", entry.travel, "lowest < highest")
+        if not low <= 0.0 <= high:
+            raise BallScrewInputError(f"{key}.travel", entry.travel, "a range that holds 0 mm, "
+                                      "where the program starts")  # fmt: skip
         force = _si(f"{key}.process_force", entry.process_force, "N")
         if not (math.isfinite(force) and force >= 0.0):
             raise BallScrewInputError(f"{key}.process_force", entry.process_force, "a force >= 0")
