@@ -223,6 +223,8 @@ class ProgramResult:
     axes: dict[str, AxisResult]
     data: Any = field(repr=False)
     notes: tuple[str, ...] = ()
+    inputs: dict[str, Any] = field(default_factory=dict, repr=False)
+    """The machine's settings (SI) and the program's SHA-256, carried into the JSON."""
 
     @property
     def friction_energy(self) -> float:
@@ -267,7 +269,30 @@ class ProgramResult:
                 "supplied": {k: a.supplied_per_block.tolist() for k, a in self.axes.items()},
             },
             "notes": list(self.notes),
+            "inputs": self.inputs,
         }
+
+
+def _inputs(machine: Machine, program: Program) -> dict[str, Any]:
+    """What the result was computed from: the machine's settings (SI) and the program's hash."""
+    import hashlib
+
+    return {
+        "program_sha256": hashlib.sha256(program.text.encode("utf-8")).hexdigest(),
+        "model": machine.model,
+        "rapid_feed_m_per_s": machine.rapid_feed,
+        "path_tolerance_m": machine.path_tolerance,
+        "arc_tolerance_m": machine.arc_tolerance,
+        "sample_time_s": machine.sample_time,
+        "ambient_C": machine.ambient,
+        "axes": {
+            k: {"case": a.case.title, "max_feed_m_per_s": a.max_feed,
+                "max_acceleration_m_per_s2": a.max_acceleration, "max_jerk_m_per_s3": a.max_jerk,
+                "travel_m": list(a.travel), "process_force_N": a.process_force,
+                "start_temperature_C": a.start_temperature}
+            for k, a in machine.axes.items()
+        },
+    }  # fmt: skip
 
 
 def _limits(machine: Machine, program: Program) -> Limits:
@@ -600,7 +625,8 @@ def run_program(
         axes[letter], series[letter] = _one_axis(letter, machine, motion, program)
     notes = tuple(program.notes) + tuple(machine.notes)
     return ProgramResult(machine.title, program, motion, axes,
-                         _dataset(machine, motion, series), notes)  # fmt: skip
+                         _dataset(machine, motion, series), notes,
+                         _inputs(machine, program))  # fmt: skip
 
 
 def _dataset(machine: Machine, motion: Motion, series: dict[str, dict[str, FloatArray]]) -> Any:
