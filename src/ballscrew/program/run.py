@@ -622,7 +622,12 @@ def run_program(
     for n, letter in enumerate(machine.axes):
         if progress is not None:
             progress("axes", n, len(machine.axes))
-        axes[letter], series[letter] = _one_axis(letter, machine, motion, program)
+        try:
+            axes[letter], series[letter] = _one_axis(letter, machine, motion, program)
+        except BallScrewInputError as exc:
+            if exc.field != "model":
+                raise
+            raise BallScrewInputError("machine.model", exc.value, exc.allowed) from None
     notes = tuple(program.notes) + tuple(machine.notes)
     return ProgramResult(machine.title, program, motion, axes,
                          _dataset(machine, motion, series), notes,
