@@ -41,8 +41,9 @@ def test_the_extras_of_pyproject_are_those_the_package_checks_for() -> None:
     assert _names(extras["sweep"]) == {m.lower() for m in EXTRAS["sweep"]}
     assert _names(extras["web"]) == {m.lower() for m in EXTRAS["web"]}
     assert _names(extras["fast"]) == {m.lower() for m in EXTRAS["fast"]}
+    assert _names(extras["program"]) == {m.lower() for m in EXTRAS["program"]}
     assert not _names(extras["core"]) & {m.lower() for m in OPTIONAL}
-    assert extras["all"] == ["ballscrew[sweep,web,fast]"]
+    assert extras["all"] == ["ballscrew[sweep,web,fast,program]"]
     assert "ballscrew[all]" in extras["test"]  # the README's two commands install everything
 
 

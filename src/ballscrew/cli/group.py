@@ -27,6 +27,7 @@ from .fit import fit_command
 from .lubricants import lubricants_command
 from .models import models_command
 from .monitor import monitor_command
+from .program import program_command
 from .screws import screws_command
 from .serve import serve_command
 from .study import study
@@ -53,6 +54,7 @@ def cli() -> None:
       ballscrew export-friction --case my_screw.toml --form stribeck --temperature "20, 40 degC"
       ballscrew monitor --case my_screw.toml --measured drag_torque.csv --threshold "50 %"
       ballscrew sweep examples/sweep_preload.toml --out preload.zarr --workers 2
+      ballscrew program part.nc --machine examples/machine_vmc.toml --out part-report
       ballscrew models
       ballscrew lubricants
       ballscrew serve                       # the web calculator on http://127.0.0.1:8050/
@@ -62,7 +64,7 @@ def cli() -> None:
 for command in (demo, study, validate, models_command, lubricants_command, torque,
                 case_command, screws_command, energy_command, check_command, fit_command,
                 export_friction_command, monitor_command, acceptance_command,
-                serve_command, sweep_command):  # fmt: skip
+                serve_command, sweep_command, program_command):  # fmt: skip
     cli.add_command(command)
 
 

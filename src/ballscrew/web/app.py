@@ -14,6 +14,8 @@ Built on Starlette (an ASGI toolkit) and served by uvicorn
     Everything the page shows and the files it offers (:func:`service.evaluate`).
 ``POST /api/case``
     An uploaded case file read as TOML data (:func:`service.read_case_file`).
+``POST /api/program``
+    A short part program on the example machine (:func:`program.run`).
 
 Safe to leave running: request bodies are capped (413 before the body is
 read when ``Content-Length`` says so, and while it streams otherwise), the
@@ -50,7 +52,7 @@ from starlette.types import ASGIApp, Message, Receive, Scope, Send
 from .. import lubricants
 from .._version import __version__
 from ..io.designation import catalog_screws
-from . import service
+from . import program, service
 from .service import LIMITS, ApiError, Limits
 from .worker import WorkerPool
 
@@ -63,6 +65,7 @@ LOOPBACK_HOSTS = ("127.0.0.1", "localhost", "::1", "[::1]")
 
 _STATIC_TYPES = {
     "app.js": "text/javascript; charset=utf-8",
+    "program.js": "text/javascript; charset=utf-8",
     "style.css": "text/css; charset=utf-8",
 }
 
@@ -139,6 +142,7 @@ def _page_context() -> dict[str, Any]:
         "lubricants": lubricants.names(),
         "models": service.model_choices(),
         "limits": LIMITS,
+        "program_blocks": program.MAX_BLOCKS,
     }
 
 
@@ -284,6 +288,7 @@ def create_app(
             Route("/api/torque", _json_route("torque", limits, compute), methods=["POST"]),
             Route("/api/evaluate", _json_route("evaluate", limits, compute), methods=["POST"]),
             Route("/api/case", _case_file(limits), methods=["POST"]),
+            Route("/api/program", _json_route("program", limits, compute), methods=["POST"]),
         ],
         middleware=[
             Middleware(_Guard, limit=limits.body_bytes),

@@ -1,0 +1,98 @@
+"""``ballscrew program``: a machine's feed axes through a part program."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import click
+
+from ..io.files import atomic_folder
+from .common import progress, stdout, write_json, writing
+
+__all__ = ["program_command"]
+
+
+@click.command("program")
+@click.argument("program_file", type=click.Path(dir_okay=False))
+@click.option("--machine", "machine_file", required=True, type=click.Path(dir_okay=False),
+              help="Machine file: the axes by program letter, their cases and limits.")  # fmt: skip
+@click.option("--out", "out_dir", type=click.Path(file_okay=False), default=None,
+              help="Write a report (Markdown, HTML, plots, CSV) into this folder.")  # fmt: skip
+@click.option("--json", "json_file", default=None,
+              help="Write the results as JSON to FILE ('-' for standard output).")  # fmt: skip
+@click.option("--csv", "csv_file", default=None,
+              help="Write the time series (every axis, units in the header) to FILE.")  # fmt: skip
+def program_command(
+    program_file: str,
+    machine_file: str,
+    out_dir: str | None,
+    json_file: str | None,
+    csv_file: str | None,
+) -> None:
+    """Energy, torques, heat and reversals of every feed axis over a G-code program.
+
+    \b
+    Example:
+      ballscrew program examples/pocket_contour_drill.nc --machine examples/machine_vmc.toml
+    """  # noqa: D301 - click needs the literal \b to keep the example lines
+    from ..errors import BallScrewInputError
+    from ..io.extras import require
+    from ..io.machine import load_machine
+
+    require("program", "ballscrew program")
+    from ..program import run_program
+    from ..report.outputs import json_document
+    from ..report.program import summary_rows, time_series_csv
+
+    machine = load_machine(machine_file)
+    try:
+        text = Path(program_file).read_bytes().decode("utf-8")
+    except OSError as exc:
+        raise BallScrewInputError("PROGRAM", program_file, f"a readable file ({exc.strerror})") \
+            from None  # fmt: skip
+    except UnicodeDecodeError:
+        raise BallScrewInputError("PROGRAM", program_file, "a UTF-8 text file") from None
+    err = stdout("-")
+    with progress(err) as bar:
+        task = bar.add_task("planning the blocks", total=None)
+
+        def tell(stage: str, done: int, total: int) -> None:
+            label = "planning the blocks" if stage == "plan" else "the axes through the program"
+            bar.update(task, description=label, completed=done, total=total)
+
+        result = run_program(machine, text, progress=tell)
+    for note in result.notes:
+        click.echo(f"note: {note}", err=True)
+    from rich.table import Table
+
+    out = stdout(json_file)
+    table = Table(
+        title=f"{machine.title}: {result.program.size} blocks, "
+        f"{result.motion.duration:.4g} s (nominal {result.motion.nominal_time:.4g} s)"
+    )
+    for column in ("quantity", *result.axes):
+        table.add_column(column, justify="right")
+    for row in summary_rows(result):
+        table.add_row(*row)
+    out.print(table)
+    totals = result.as_dict()["machine_totals"]
+    share = totals["friction_share"]
+    out.print(
+        f"machine: {totals['supplied_energy_J']:.4g} J supplied to the feed axes, "
+        f"{totals['regenerated_energy_J']:.4g} J taken back, {totals['process_work_J']:.4g} J "
+        f"process work, {totals['friction_energy_J']:.4g} J screw friction "
+        f"({'-' if share is None else f'{share:.1%}'} with the bearings)"
+    )  # fmt: skip
+    if csv_file:
+        with writing("--csv", csv_file):
+            from ..io.files import atomic_write
+
+            atomic_write(Path(csv_file), time_series_csv(result))
+    if out_dir:
+        from ..report.program import write_program_report
+
+        with writing("--out", out_dir), atomic_folder(Path(out_dir)) as folder:
+            files = write_program_report(folder, result)
+        click.echo(f"report: {Path(out_dir) / 'report.html'} ({len(files)} files)", err=True)
+    if json_file:
+        write_json(json_file, json_document(result.as_dict()))

@@ -1,0 +1,415 @@
+r"""Jerk-limited feed along a part program's path, and each axis's motion over time.
+
+The path is planned as a CNC look-ahead does, in three steps:
+
+1. **Limits per block.** A line with unit direction :math:`u` may run at the
+   programmed feed (the rapid feed for G0) capped by every axis,
+   :math:`v \le v_i/|u_i|`, and accelerate at :math:`a \le a_i/|u_i|` with jerk
+   :math:`j \le j_i/|u_i|`. On an arc of radius :math:`R` the in-plane axes
+   also carry the centripetal acceleration :math:`v^2/R` and its rate
+   :math:`v^3/R^2`: half of the smaller in-plane limit is given to each, so
+   :math:`v \le \sqrt{a R/2}`, :math:`v \le (j R^2/2)^{1/3}`, and the
+   tangential acceleration and jerk get the other half.
+2. **Junction speeds.** Where two blocks meet at an angle, the controller
+   blends the corner within the path tolerance :math:`\delta`. The blend is
+   the circle tangent to both blocks whose distance from the corner is
+   :math:`\delta`, of radius :math:`r = \delta \sin(\theta/2)/(1 -
+   \sin(\theta/2))` with :math:`\cos\theta = -u_1\cdot u_2`; the speed through
+   it is bounded by the centripetal acceleration along the blend's direction
+   :math:`d = (u_2 - u_1)/|u_2 - u_1|`, :math:`v^2/r \le \min_i a_i/|d_i|`
+   (Grbl's junction-deviation rule: S. K. Jeon, Grbl v0.8 to v1.1 planner,
+   ``planner.c``, 2011-2016), and here also by its jerk, :math:`v^3/r^2 \le
+   \min_i j_i/|d_i|`. The blend itself (shorter than the tolerance) is not
+   drawn: the samples turn the corner sharply, and the axis velocity steps
+   there by :math:`v|u_{2,i} - u_{1,i}|`.
+3. **Look-ahead.** A backward pass lowers every junction speed to what the
+   following block can brake from, a forward pass to what the preceding
+   block can reach, both with the distance of a jerk-limited speed change
+   that starts and ends without acceleration: from :math:`v_0` to
+   :math:`v_1 > v_0` over :math:`\Delta v \ge a^2/j`,
+   :math:`s = \tfrac12(v_0 + v_1)(\Delta v/a + a/j)`, else
+   :math:`s = (v_0 + v_1)\sqrt{\Delta v/j}`.
+
+Each block is then the time-optimal jerk-limited profile from its entry to
+its exit speed computed by `ruckig <https://ruckig.com>`_ (Berscheid and
+Kröger, "Jerk-limited real-time trajectory generation with arbitrary target
+states", RSS 2021); its seven phases are polynomials in time, sampled
+exactly (phase ends are samples; interior samples at most ``sample_time``
+apart, cruises on lines without interior samples since nothing changes
+there, arcs at least every 5°).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import BallScrewInputError, FloatArray
+from .gcode import ARC, DWELL, RAPID, Program
+
+__all__ = ["Limits", "Motion", "plan", "speed_change_distance"]
+
+ARC_STEP = math.radians(5.0)
+"""Largest angle between two samples on an arc [rad]."""
+MARGIN = 1.0 - 1e-7
+"""Entry and exit speeds are kept this far inside what the look-ahead allows."""
+
+
+@dataclass(frozen=True)
+class Limits:
+    """The axes' limits, X, Y, Z (SI); an axis the machine lacks has NaN."""
+
+    feed: FloatArray
+    acceleration: FloatArray
+    jerk: FloatArray
+    rapid_feed: float
+    path_tolerance: float
+    sample_time: float = 5e-3
+
+
+@dataclass(frozen=True)
+class Motion:
+    """The planned motion, sampled (SI).
+
+    Attributes
+    ----------
+    time : numpy.ndarray, shape (n,)
+        [s].
+    position, velocity, acceleration, jerk : numpy.ndarray, shape (n, 3)
+        Of X, Y, Z [m, m/s, m/s², m/s³].
+    block : numpy.ndarray of int, shape (n,)
+        The program block each sample lies in (the last sample: the last block).
+    feeding : numpy.ndarray of bool, shape (n,)
+        Whether the sample lies in a feed block (G1, G2, G3).
+    path_speed : numpy.ndarray, shape (n,)
+        Speed along the path [m/s].
+    entry_speed, exit_speed : numpy.ndarray, shape (blocks,)
+        Path speed at each block's start and end [m/s].
+    block_limit : numpy.ndarray, shape (blocks,)
+        Each block's top speed [m/s] (feed and axis limits).
+    block_time : numpy.ndarray, shape (blocks,)
+        Duration of each block [s].
+    nominal_time : float
+        The program at its programmed feeds without acceleration [s].
+    """
+
+    time: FloatArray
+    position: FloatArray
+    velocity: FloatArray
+    acceleration: FloatArray
+    jerk: FloatArray
+    block: np.ndarray
+    feeding: np.ndarray
+    path_speed: FloatArray
+    entry_speed: FloatArray
+    exit_speed: FloatArray
+    block_limit: FloatArray
+    block_time: FloatArray
+    nominal_time: float
+
+    @property
+    def duration(self) -> float:
+        """Program time [s]."""
+        return float(self.time[-1] - self.time[0])
+
+
+def speed_change_distance(v0: FloatArray, v1: FloatArray, a: FloatArray, j: FloatArray
+                          ) -> FloatArray:  # fmt: skip
+    r"""Shortest distance of a jerk-limited speed change from rest acceleration to rest [m].
+
+    :math:`s = \tfrac12(v_0+v_1)(\Delta v/a + a/j)` when :math:`\Delta v \ge
+    a^2/j` (the acceleration reaches :math:`a`), else :math:`(v_0 + v_1)
+    \sqrt{\Delta v/j}`; :math:`\Delta v = |v_1 - v_0|`. Broadcasts.
+
+    Examples
+    --------
+    From rest to 0.5 m/s at 2 m/s² and 50 m/s³: 0.5 × 0.5 × (0.25 + 0.04) = 0.0725 m.
+
+    >>> round(float(speed_change_distance(0.0, 0.5, 2.0, 50.0)), 6)
+    0.0725
+    """
+    v0, v1 = np.asarray(v0, dtype=float), np.asarray(v1, dtype=float)
+    dv = np.abs(v1 - v0)
+    full = dv >= a * a / j
+    out: FloatArray = np.where(
+        full, 0.5 * (v0 + v1) * (dv / a + a / j), (v0 + v1) * np.sqrt(dv / j)
+    )
+    return out
+
+
+def _reach(v0: float, length: float, a: float, j: float) -> float:
+    """The highest speed reachable from ``v0`` over ``length`` (the inverse of the above)."""
+    # Acceleration reaches a: (v1^2 - v0^2)/(2a) + (v0 + v1) a/(2j) = L, a quadratic in v1.
+    k = a * a / j
+    c = v0 * k - v0 * v0 - 2.0 * a * length
+    v1 = 0.5 * (-k + math.sqrt(k * k - 4.0 * c))
+    if v1 - v0 >= k:
+        return v1
+    # Otherwise v1 = v0 + j s^2 with j s^3 + 2 v0 s - L = 0 (Cardano, one real root).
+    p, q = 2.0 * v0 / (3.0 * j), length / (2.0 * j)
+    root = math.sqrt(q * q + p**3)
+    s = math.cbrt(q + root) + math.cbrt(q - root)
+    return v0 + j * s * s
+
+
+def _geometry(program: Program) -> dict[str, FloatArray]:
+    """Length, unit tangents at both ends, and the arcs' radius and in-plane share."""
+    d = program.end - program.start
+    n = program.size
+    length = np.linalg.norm(d, axis=1)
+    t0 = np.divide(d, length[:, None], out=np.zeros_like(d), where=length[:, None] > 0)
+    t1 = t0.copy()
+    radius = np.full(n, np.inf)
+    share = np.zeros(n)  # in-plane share of the arc's length
+    normal_share = np.zeros(n)
+    for plane, (ia, ib, inn) in ((17, (0, 1, 2)), (18, (2, 0, 1)), (19, (1, 2, 0))):
+        m = (program.kind == ARC) & (program.plane == plane)
+        if not np.any(m):
+            continue
+        c, s0, sw = program.centre[m], program.start[m], program.sweep[m]
+        r = np.hypot(s0[:, ia] - c[:, ia], s0[:, ib] - c[:, ib])
+        theta0 = np.arctan2(s0[:, ib] - c[:, ib], s0[:, ia] - c[:, ia])
+        h = d[m, inn]
+        arc_len = r * np.abs(sw)
+        total = np.hypot(arc_len, h)
+        length[m] = total
+        radius[m] = r
+        share[m] = arc_len / total
+        normal_share[m] = h / total
+        for idx, theta in ((t0, theta0), (t1, theta0 + sw)):
+            tan = np.zeros((int(m.sum()), 3))
+            sgn = np.sign(sw)
+            tan[:, ia] = -np.sin(theta) * sgn * share[m]
+            tan[:, ib] = np.cos(theta) * sgn * share[m]
+            tan[:, inn] = normal_share[m]
+            idx[m] = tan
+    return {"length": length, "t0": t0, "t1": t1, "radius": radius, "share": share}
+
+
+def _block_limits(program: Program, g: dict[str, FloatArray], lim: Limits
+                  ) -> tuple[FloatArray, FloatArray, FloatArray]:  # fmt: skip
+    """Top speed, acceleration and jerk along the path of each block."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        comp = np.maximum(np.abs(g["t0"]), np.abs(g["t1"]))
+        arc = program.kind == ARC
+        # An arc's in-plane axes see the whole in-plane share at some point of a long arc.
+        for plane, (ia, ib, _) in ((17, (0, 1, 2)), (18, (2, 0, 1)), (19, (1, 2, 0))):
+            m = arc & (program.plane == plane)
+            comp[m, ia] = g["share"][m]
+            comp[m, ib] = g["share"][m]
+        v = np.nanmin(np.where(comp > 0, lim.feed / comp, np.inf), axis=1)
+        a = np.nanmin(np.where(comp > 0, lim.acceleration / comp, np.inf), axis=1)
+        j = np.nanmin(np.where(comp > 0, lim.jerk / comp, np.inf), axis=1)
+        feed = np.where(program.kind == RAPID, lim.rapid_feed, program.feed)
+        v = np.minimum(v, feed)
+        if np.any(arc):
+            r = g["radius"][arc]
+            a_plane = np.full(int(arc.sum()), np.inf)
+            j_plane = np.full(int(arc.sum()), np.inf)
+            for plane, (ia, ib, _) in ((17, (0, 1, 2)), (18, (2, 0, 1)), (19, (1, 2, 0))):
+                sel = program.plane[arc] == plane
+                a_plane[sel] = min(lim.acceleration[ia], lim.acceleration[ib])
+                j_plane[sel] = min(lim.jerk[ia], lim.jerk[ib])
+            share = g["share"][arc]
+            v[arc] = np.minimum(v[arc], np.sqrt(0.5 * a_plane * r) / share)
+            v[arc] = np.minimum(v[arc], np.cbrt(0.5 * j_plane * r * r) / share)
+            a[arc] = 0.5 * a[arc]
+            j[arc] = 0.5 * j[arc]
+    dwell = program.kind == DWELL
+    v[dwell], a[dwell], j[dwell] = 0.0, 1.0, 1.0
+    return v, a, j
+
+
+def _junctions(program: Program, g: dict[str, FloatArray], v: FloatArray, lim: Limits
+               ) -> FloatArray:  # fmt: skip
+    """The highest speed at the start of each block (0 at the first, after a dwell)."""
+    n = program.size
+    vj = np.zeros(n)
+    if n < 2:
+        return vj
+    u1, u2 = g["t1"][:-1], g["t0"][1:]
+    cos = np.clip(-np.sum(u1 * u2, axis=1), -1.0, 1.0)
+    sin_half = np.sqrt(0.5 * (1.0 - cos))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        r = lim.path_tolerance * sin_half / (1.0 - sin_half)
+        dvec = u2 - u1
+        dn = np.linalg.norm(dvec, axis=1)
+        dunit = dvec / np.where(dn > 0, dn, 1.0)[:, None]
+        absd = np.abs(dunit)
+        a_j = np.nanmin(np.where(absd > 1e-12, lim.acceleration / absd, np.inf), axis=1)
+        j_j = np.nanmin(np.where(absd > 1e-12, lim.jerk / absd, np.inf), axis=1)
+        corner = np.minimum(np.sqrt(a_j * r), np.cbrt(j_j * r * r))
+    straight = cos < -1.0 + 1e-12
+    corner = np.where(straight, np.inf, corner)
+    corner = np.where(cos > 1.0 - 1e-12, 0.0, corner)  # a reversal of the path
+    stop = (program.kind[:-1] == DWELL) | (program.kind[1:] == DWELL)
+    vj[1:] = np.where(stop, 0.0, np.minimum(np.minimum(v[:-1], v[1:]), corner))
+    return vj
+
+
+def plan(program: Program, limits: Limits, progress: object = None) -> Motion:
+    """Plan the program's motion and sample it (module docstring).
+
+    ``progress``, when given, is called as ``progress(done, total)`` while
+    the blocks' profiles are computed.
+    """
+    from ruckig import InputParameter, Result, Ruckig, Trajectory
+
+    n = program.size
+    if n == 0:
+        raise BallScrewInputError("program", "(no motion)", "at least one move or dwell")
+    g = _geometry(program)
+    length = g["length"]
+    v, a, j = _block_limits(program, g, limits)
+    vj = _junctions(program, g, v, limits)
+    entry = vj.copy()
+    exit_ = np.append(vj[1:], 0.0)
+    lengths, accs, jerks = length.tolist(), a.tolist(), j.tolist()
+    en, ex = entry.tolist(), exit_.tolist()
+    for k in range(n - 1, -1, -1):  # backward: every block can brake to its exit speed
+        if program.kind[k] == DWELL:
+            en[k] = 0.0
+            continue
+        en[k] = min(en[k], _reach(ex[k], lengths[k], accs[k], jerks[k]) * MARGIN)
+        if k:
+            ex[k - 1] = min(ex[k - 1], en[k])
+    for k in range(n):  # forward: every block can reach its exit speed
+        if program.kind[k] != DWELL:
+            ex[k] = min(ex[k], _reach(en[k], lengths[k], accs[k], jerks[k]) * MARGIN)
+        if k + 1 < n:
+            en[k + 1] = min(en[k + 1], ex[k])
+    otg, inp, traj = Ruckig(1), InputParameter(1), Trajectory(1)
+    inp.current_acceleration = [0.0]
+    inp.target_acceleration = [0.0]
+    phases = np.zeros((n, 7, 5))  # duration, jerk, a0, v0, p0
+    feeds = v.tolist()
+    dwell = program.dwell.tolist()
+    kinds = program.kind.tolist()
+    step = max(1, n // 100)
+    for k in range(n):
+        if progress is not None and k % step == 0:
+            progress(k, n)  # type: ignore[operator]
+        if kinds[k] == DWELL:
+            phases[k, 0, 0] = dwell[k]
+            continue
+        inp.current_position, inp.current_velocity = [0.0], [en[k]]
+        inp.target_position, inp.target_velocity = [lengths[k]], [ex[k]]
+        inp.max_velocity = [max(feeds[k], en[k], ex[k])]
+        inp.max_acceleration, inp.max_jerk = [accs[k]], [jerks[k]]
+        result = otg.calculate(inp, traj)
+        prof = traj.profiles[0][0]
+        if result != Result.Working or prof.brake.duration > 0.0 or prof.accel.duration > 0.0:
+            raise BallScrewInputError(
+                f"program line {int(program.line[k])}", f"{result}",
+                "a block ruckig can plan (please report this program)",
+            )  # fmt: skip
+        phases[k, :, 0] = prof.t
+        phases[k, :, 1] = prof.j
+        phases[k, :, 2] = prof.a[:7]
+        phases[k, :, 3] = prof.v[:7]
+        phases[k, :, 4] = prof.p[:7]
+    if progress is not None:
+        progress(n, n)  # type: ignore[operator]
+    if not float(phases[:, :, 0].sum()) > 0.0:
+        raise BallScrewInputError("program", "(no time)", "a move or a dwell that takes time")
+    return _sample(program, g, phases, limits.sample_time, np.array(en), np.array(ex), v)
+
+
+def _sample(
+    program: Program, g: dict[str, FloatArray], phases: FloatArray, sample_time: float,
+    entry: FloatArray, exit_: FloatArray, vmax: FloatArray,
+) -> Motion:  # fmt: skip
+    """Sample every phase exactly and map the path to the axes."""
+    n = program.size
+    dur = phases[:, :, 0]
+    count = np.where(dur > 0.0, np.maximum(1, np.ceil(dur / sample_time)), 0).astype(int)
+    cruise = (phases[:, :, 1] == 0.0) & (np.abs(phases[:, :, 2]) < 1e-12)
+    line = program.kind != ARC
+    count = np.where(cruise & line[:, None] & (dur > 0.0), 1, count)
+    arc = program.kind == ARC
+    if np.any(arc):
+        # At least one sample every ARC_STEP of the arc's angle within each phase.
+        travelled = (
+            phases[:, :, 3] * dur + 0.5 * phases[:, :, 2] * dur**2
+            + phases[:, :, 1] * dur**3 / 6.0
+        )  # fmt: skip
+        with np.errstate(divide="ignore", invalid="ignore"):
+            angle = np.abs(program.sweep)[:, None] * travelled / g["length"][:, None]
+        need = np.ceil(np.nan_to_num(angle) / ARC_STEP).astype(int)
+        count = np.where(arc[:, None] & (dur > 0.0), np.maximum(count, need), count)
+    flat = count.ravel()
+    total = int(flat.sum())
+    phase_of = np.repeat(np.arange(flat.size), flat)
+    first = np.cumsum(flat) - flat
+    k_in = np.arange(total) - np.repeat(first, flat)
+    d = dur.ravel()[phase_of]
+    tau = d * k_in / flat[phase_of]
+    jj, a0 = phases[:, :, 1].ravel()[phase_of], phases[:, :, 2].ravel()[phase_of]
+    v0, p0 = phases[:, :, 3].ravel()[phase_of], phases[:, :, 4].ravel()[phase_of]
+    block = phase_of // 7
+    start_time = np.concatenate([[0.0], np.cumsum(dur.ravel())])[:-1]
+    time = start_time[phase_of] + tau
+    s = p0 + v0 * tau + 0.5 * a0 * tau**2 + jj * tau**3 / 6.0
+    sd = v0 + a0 * tau + 0.5 * jj * tau**2
+    sdd = a0 + jj * tau
+    sddd = jj
+    # The program's end: the last block's end, at rest.
+    last = n - 1
+    time = np.append(time, float(dur.sum()))
+    s = np.append(s, g["length"][last] if program.kind[last] != DWELL else 0.0)
+    sd, sdd = np.append(sd, 0.0), np.append(sdd, 0.0)
+    sddd = np.append(sddd, 0.0)
+    block = np.append(block, last)
+    pos, vel, acc, jerk = _axes(program, g, block, s, sd, sdd, sddd)
+    block_time = dur.sum(axis=1)
+    feed = np.where(program.kind == RAPID, np.nan, program.feed)
+    nominal = np.where(program.kind == DWELL, program.dwell, g["length"] / np.where(
+        program.kind == RAPID, vmax, feed))  # fmt: skip
+    return Motion(
+        time=time, position=pos, velocity=vel, acceleration=acc, jerk=jerk, block=block,
+        feeding=np.isin(program.kind[block], (1, ARC)), path_speed=sd, entry_speed=entry,
+        exit_speed=exit_, block_limit=vmax, block_time=block_time,
+        nominal_time=float(np.sum(nominal)),
+    )  # fmt: skip
+
+
+def _axes(
+    program: Program, g: dict[str, FloatArray], block: np.ndarray, s: FloatArray,
+    sd: FloatArray, sdd: FloatArray, sddd: FloatArray,
+) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:  # fmt: skip
+    """Position, velocity, acceleration and jerk of X, Y, Z from the path's."""
+    start = program.start[block]
+    u = g["t0"][block]
+    pos = start + s[:, None] * u
+    vel = sd[:, None] * u
+    acc = sdd[:, None] * u
+    jerk = sddd[:, None] * u
+    kind = program.kind[block]
+    for plane, (ia, ib, inn) in ((17, (0, 1, 2)), (18, (2, 0, 1)), (19, (1, 2, 0))):
+        m = (kind == ARC) & (program.plane[block] == plane)
+        if not np.any(m):
+            continue
+        b = block[m]
+        c, s0, sw = program.centre[b], program.start[b], program.sweep[b]
+        length = g["length"][b]
+        r = np.hypot(s0[:, ia] - c[:, ia], s0[:, ib] - c[:, ib])
+        w = sw / length  # dθ/ds
+        theta = np.arctan2(s0[:, ib] - c[:, ib], s0[:, ia] - c[:, ia]) + w * s[m]
+        hs = (program.end[b, inn] - s0[:, inn]) / length
+        sin, cos = np.sin(theta), np.cos(theta)
+        v1, a1, j1 = sd[m], sdd[m], sddd[m]
+        pos[m, ia] = c[:, ia] + r * cos
+        pos[m, ib] = c[:, ib] + r * sin
+        pos[m, inn] = s0[:, inn] + hs * s[m]
+        vel[m, ia] = -r * sin * w * v1
+        vel[m, ib] = r * cos * w * v1
+        vel[m, inn] = hs * v1
+        acc[m, ia] = -r * (sin * w * a1 + cos * w * w * v1 * v1)
+        acc[m, ib] = r * (cos * w * a1 - sin * w * w * v1 * v1)
+        acc[m, inn] = hs * a1
+        jerk[m, ia] = -r * (sin * w * j1 + 3 * cos * w**2 * v1 * a1 - sin * w**3 * v1**3)
+        jerk[m, ib] = r * (cos * w * j1 - 3 * sin * w**2 * v1 * a1 - cos * w**3 * v1**3)
+        jerk[m, inn] = hs * j1
+    return pos, vel, acc, jerk

@@ -1,0 +1,233 @@
+"""The report of ``ballscrew program --out DIR``: the path, energies, torques, temperatures.
+
+:func:`write_program_report` writes into one folder, every file atomically:
+
+* ``figures/path.png``/``.svg``: the tool path seen from above (X, Y), coloured
+  by the screws' friction power, with every reversal of an axis marked;
+* ``figures/energy.png``/``.svg``: energy per axis, stacked by where it goes
+  (screw friction, support bearings, process work, the rest: kinetic and
+  potential energy and what the drive takes back);
+* ``figures/torque.png``/``.svg``: each axis's motor torque and screw
+  temperature against time, reversals marked;
+* ``data/time_series.csv`` (units in the header), ``data/blocks.csv`` (the
+  friction energy per block and axis), ``data/reversals.csv``;
+* ``report.md`` and ``report.html``.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.collections import LineCollection
+from matplotlib.figure import Figure as MplFigure
+
+from .._version import __version__
+from ..io.files import atomic_write
+from ..program.run import ProgramResult
+from .document import Block, html_page, markdown
+from .outputs import csv_bytes
+from .plotting import write_figures
+
+__all__ = ["time_series_csv", "write_program_report"]
+
+MARKERS = {"X": "o", "Y": "s", "Z": "^"}
+
+
+def _path_figure(r: ProgramResult) -> MplFigure:
+    fig = MplFigure(figsize=(7.0, 5.5))
+    FigureCanvasAgg(fig)
+    ax = fig.add_subplot(1, 1, 1)
+    ds = r.data
+    pos = r.motion.position * 1e3
+    power = np.sum(ds["friction_power"].values, axis=1)
+    points = pos[:, :2]
+    segments = np.stack([points[:-1], points[1:]], axis=1)
+    lines = LineCollection(list(segments), cmap="viridis", linewidths=1.2)
+    lines.set_array(0.5 * (power[1:] + power[:-1]))
+    ax.add_collection(lines)
+    ax.autoscale()
+    fig.colorbar(lines, ax=ax, label="friction power of the screws [W]")
+    for letter, a in r.axes.items():
+        if not a.reversals:
+            continue
+        t = np.array([rev.time for rev in a.reversals])
+        x = np.interp(t, r.motion.time, pos[:, 0])
+        y = np.interp(t, r.motion.time, pos[:, 1])
+        ax.scatter(x, y, marker=MARKERS.get(letter, "x"), facecolors="none", edgecolors="red",
+                   s=30, label=f"{letter} reversals")  # fmt: skip
+    ax.set_aspect("equal")
+    ax.set_xlabel("X [mm]")
+    ax.set_ylabel("Y [mm]")
+    if any(a.reversals for a in r.axes.values()):
+        ax.legend(fontsize="small")
+    fig.tight_layout()
+    return fig
+
+
+def _energy_figure(r: ProgramResult) -> MplFigure:
+    fig = MplFigure(figsize=(7.0, 4.0))
+    FigureCanvasAgg(fig)
+    ax = fig.add_subplot(1, 1, 1)
+    letters = list(r.axes)
+    parts = {
+        "screw friction": [r.axes[k].friction_energy for k in letters],
+        "support bearings": [r.axes[k].bearing_energy for k in letters],
+        "process work": [max(r.axes[k].process_work, 0.0) for k in letters],
+        "rest (kinetic, potential, taken back)": [
+            max(a.supplied_energy - a.friction_energy - a.bearing_energy - a.process_work, 0.0)
+            for a in (r.axes[k] for k in letters)
+        ],
+    }
+    bottom = np.zeros(len(letters))
+    for name, values in parts.items():
+        ax.bar(letters, values, bottom=bottom, label=name)
+        bottom += np.asarray(values)
+    ax.set_ylabel("energy over the program [J]")
+    ax.legend(fontsize="small")
+    fig.tight_layout()
+    return fig
+
+
+def _torque_figure(r: ProgramResult) -> MplFigure:
+    letters = list(r.axes)
+    fig = MplFigure(figsize=(7.0, 2.2 * len(letters) + 0.6))
+    FigureCanvasAgg(fig)
+    axes = fig.subplots(len(letters), 1, sharex=True, squeeze=False)[:, 0]
+    t = r.motion.time
+    for ax, letter in zip(axes, letters, strict=True):
+        torque = r.data["motor_torque"].sel(axis=letter).values
+        temp = r.data["temperature"].sel(axis=letter).values
+        ax.plot(t, torque, color="tab:blue", linewidth=0.8)
+        ax.set_ylabel(f"{letter} torque [N·m]", color="tab:blue")
+        for rev in r.axes[letter].reversals:
+            ax.axvline(rev.time, color="red", linewidth=0.4, alpha=0.5)
+        twin = ax.twinx()
+        twin.plot(t, temp, color="tab:orange")
+        twin.set_ylabel("°C", color="tab:orange")
+    axes[-1].set_xlabel("time [s] (red: reversals)")
+    fig.tight_layout()
+    return fig
+
+
+def time_series_csv(r: ProgramResult) -> bytes:
+    """The time series, one row per sample, units in the header."""
+    ds = r.data
+    header = ["time [s]", "block line", "path speed [m/s]"]
+    cols = [r.motion.time, r.program.line[r.motion.block], r.motion.path_speed]
+    for letter in r.axes:
+        for name, unit in (("position", "m"), ("velocity", "m/s"), ("acceleration", "m/s^2"),
+                           ("jerk", "m/s^3"), ("motor_torque", "N*m"),
+                           ("friction_torque", "N*m"), ("friction_power", "W"),
+                           ("temperature", "degC")):  # fmt: skip
+            header.append(f"{letter} {name.replace('_', ' ')} [{unit}]")
+            cols.append(ds[name].sel(axis=letter).values)
+    table = np.column_stack(cols)
+    return csv_bytes(header, table.tolist())
+
+
+def _blocks_csv(r: ProgramResult) -> bytes:
+    letters = list(r.axes)
+    rows = [
+        [int(line), *(float(r.axes[k].energy_per_block[i]) for k in letters),
+         *(float(r.axes[k].supplied_per_block[i]) for k in letters)]
+        for i, line in enumerate(r.program.line)
+    ]  # fmt: skip
+    header = ["line", *(f"{k} friction energy [J]" for k in letters),
+              *(f"{k} energy supplied [J]" for k in letters)]  # fmt: skip
+    return csv_bytes(header, rows)
+
+
+def _reversals_csv(r: ProgramResult) -> bytes:
+    rows = [
+        [k, rev.line, rev.time, rev.position * 1e3, rev.load_before, rev.load_after,
+         rev.load_direction, rev.friction_force, rev.stiffness / 1e6, rev.lost_motion * 1e6]
+        for k, a in r.axes.items() for rev in a.reversals
+    ]  # fmt: skip
+    return csv_bytes(
+        ["axis", "line", "time [s]", "position [mm]", "load before [N]", "load after [N]",
+         "load direction", "friction force [N]", "stiffness [N/um]", "lost motion [um]"],
+        rows,
+    )  # fmt: skip
+
+
+def summary_rows(r: ProgramResult) -> list[list[str]]:
+    """The summary table: one row per quantity, one column per axis."""
+    spec = [
+        ("energy supplied [J]", "supplied_energy", "{:.4g}"),
+        ("energy taken back [J]", "regenerated_energy", "{:.4g}"),
+        ("process work [J]", "process_work", "{:.4g}"),
+        ("screw friction [J]", "friction_energy", "{:.4g}"),
+        ("support bearings [J]", "bearing_energy", "{:.4g}"),
+        ("friction share", "friction_share", "{:.1%}"),
+        ("peak motor torque [N*m]", "peak_torque", "{:.3g}"),
+        ("RMS motor torque [N*m]", "rms_torque", "{:.3g}"),
+        ("start / top temperature [degC]", None, ""),
+        ("thermal lead error [um]", None, ""),
+        ("reversals (load +/+ , +/-, -/+, -/-)", None, ""),
+    ]
+    rows = []
+    for label, attr, fmt in spec:
+        row = [label]
+        for a in r.axes.values():
+            if attr is not None:
+                row.append(fmt.format(getattr(a, attr)))
+            elif label.startswith("start"):
+                row.append(f"{a.start_temperature:.1f} / {a.max_temperature:.2f}")
+            elif label.startswith("thermal"):
+                row.append(f"{a.thermal_lead_error * 1e6:.2g}")
+            else:
+                kinds = [rev.load_direction for rev in a.reversals]
+                row.append(f"{len(kinds)} ({kinds.count('+/+')}, {kinds.count('+/-')}, "
+                           f"{kinds.count('-/+')}, {kinds.count('-/-')})")  # fmt: skip
+        rows.append(row)
+    rows.append(["RMS / rated motor torque"] + [
+        "-" if a.rated_torque is None else f"{a.rms_torque / a.rated_torque:.0%}"
+        for a in r.axes.values()
+    ])  # fmt: skip
+    rows.append(["peak / peak motor torque"] + [
+        "-" if a.peak_rating is None else f"{a.peak_torque / a.peak_rating:.0%}"
+        for a in r.axes.values()
+    ])  # fmt: skip
+    rows.append(["top / rated motor speed"] + [
+        "-" if a.rated_speed is None else f"{a.peak_speed / a.rated_speed:.0%}"
+        for a in r.axes.values()
+    ])  # fmt: skip
+    return rows
+
+
+def write_program_report(out: str | Path, r: ProgramResult) -> list[Path]:
+    """Write the report files into ``out``; returns the paths written."""
+    folder = Path(out)
+    (folder / "data").mkdir(parents=True, exist_ok=True)
+    figures = {
+        "path": (_path_figure(r), "The tool path (X, Y) coloured by the screws' friction power; "
+                 "reversals of each axis marked"),
+        "energy": (_energy_figure(r), "Energy per axis by where it goes"),
+        "torque": (_torque_figure(r), "Motor torque (blue) and screw temperature (orange); "
+                   "reversals in red"),
+    }  # fmt: skip
+    written, images = write_figures(folder, {k: fig for k, (fig, _) in figures.items()})
+    for key, content in (("time_series", time_series_csv(r)), ("blocks", _blocks_csv(r)),
+                         ("reversals", _reversals_csv(r))):  # fmt: skip
+        path = folder / "data" / f"{key}.csv"
+        atomic_write(path, content)
+        written.append(path)
+    blocks = [
+        Block("h1", f"Part program on {r.machine}"),
+        Block("p", f"Computed by ballscrew {__version__}: {r.program.size} blocks, "
+              f"{r.motion.duration:.4g} s (nominal {r.motion.nominal_time:.4g} s at the "
+              "programmed feeds)."),
+        Block("table", (["quantity", *r.axes], summary_rows(r))),
+        *(Block("img", (k, caption)) for k, (_, caption) in figures.items()),
+        Block("h2", "Notes"),
+        Block("ul", list(r.notes) + [n for a in r.axes.values() for n in a.notes] or ["none"]),
+    ]  # fmt: skip
+    for name, text in (
+        ("report.md", markdown(blocks)),
+        ("report.html", html_page(blocks, f"Part program: {r.machine}", images)),
+    ):
+        atomic_write(folder / name, text.encode("utf-8"))
+        written.append(folder / name)
+    return written
