@@ -3,10 +3,10 @@
 :func:`run_program` reads a G-code program (:mod:`.gcode`), plans its
 jerk-limited motion with look-ahead (:mod:`.planner`), and runs every linear
 axis of a machine file (:mod:`ballscrew.io.machine`) through it with the axis
-wing (:mod:`.run`). Needs the ``program`` extra (gcodeparser, ruckig, xarray).
+wing (:mod:`.axes`). Needs the ``program`` extra (gcodeparser, ruckig, xarray).
 """
 
+from .axes import AxisResult, ProgramResult, Reversal, run_program
 from .gcode import Program, read_program
-from .run import AxisResult, ProgramResult, Reversal, run_program
 
 __all__ = ["AxisResult", "Program", "ProgramResult", "Reversal", "read_program", "run_program"]

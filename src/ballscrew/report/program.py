@@ -25,7 +25,7 @@ from matplotlib.figure import Figure as MplFigure
 
 from .._version import __version__
 from ..io.files import atomic_write
-from ..program.run import ProgramResult
+from ..program.axes import ProgramResult
 from .document import Block, html_page, markdown
 from .outputs import csv_bytes
 from .plotting import write_figures

@@ -62,7 +62,7 @@ from ..io.machine import LINEAR_AXES, Machine
 from .gcode import ARC, Program, read_program
 from .planner import Limits, Motion, plan
 
-__all__ = ["AxisResult", "ProgramResult", "Reversal", "cycle_values", "heat_balance", "run_program"]
+__all__ = ["AxisResult", "ProgramResult", "Reversal", "heat_balance", "run_program"]
 
 ARC_PLANES = {17: (0, 1), 18: (2, 0), 19: (1, 2)}
 """The in-plane axes (indices of X, Y, Z) of each arc plane."""
@@ -75,19 +75,6 @@ MOVING = 1e-9
 """Axis speed below which an axis stands [m/s]."""
 LOAD_WINDOW = 0.02
 """Time over which the load on either side of a reversal is averaged [s]."""
-
-
-def cycle_values(cycle: Any) -> dict[str, Any]:
-    """The numbers this wing reads from a cycle result, by name (the one adapter).
-
-    ``axis_cycle``'s result is read here only, so that a change of its form
-    (attributes or keys) is one change.
-    """
-    names = ("screw_speed", "axial_force", "friction_torque", "motor_torque", "motor_speed",
-             "bearing_torque", "friction", "speed_warnings")  # fmt: skip
-    if isinstance(cycle, dict):
-        return {name: cycle[name] for name in names}
-    return {name: getattr(cycle, name) for name in names}
 
 
 @dataclass(frozen=True)
@@ -480,37 +467,28 @@ def _one_axis(
     t0 = ax.start_temperature
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        first = cycle_values(axis_cycle(profile, case.screw, case.lubricant, axis,
-                                        temperature=t0, model=machine.model, **params))  # fmt: skip
-    omega = first["screw_speed"]
+        first = axis_cycle(profile, case.screw, case.lubricant, axis, temperature=t0,
+                           model=machine.model, **params)  # fmt: skip
+    omega = first.screw_speed
     time = motion.time
-    power0 = first["friction_torque"] * np.abs(omega)
-    temp = _temperatures(time, power0 + first["bearing_torque"] * np.abs(omega), node,
+    power0 = first.friction_torque * np.abs(omega)
+    temp = _temperatures(time, power0 + first.bearing_torque * np.abs(omega), node,
                          case.screw.pitch_diameter, omega, machine.ambient, t0, case)  # fmt: skip
-    t_f = first["friction_torque"]
-    t_m = first["motor_torque"]
+    t_f = first.friction_torque
+    t_m = first.motor_torque
     top = float(np.max(temp))
     if top - t0 > 0.05:  # the friction at each instant's temperature
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            warm = cycle_values(
-                axis_cycle(
-                    profile,
-                    case.screw,
-                    case.lubricant,
-                    axis,
-                    temperature=top,
-                    model=machine.model,
-                    **params,
-                )
-            )
+            warm = axis_cycle(profile, case.screw, case.lubricant, axis, temperature=top,
+                              model=machine.model, **params)  # fmt: skip
         share = (temp - t0) / (top - t0)
-        t_f = first["friction_torque"] + share * (warm["friction_torque"] -
-                                                  first["friction_torque"])  # fmt: skip
-        t_m = first["motor_torque"] + np.sign(omega) * (t_f - first["friction_torque"]) \
+        t_f = first.friction_torque + share * (warm.friction_torque -
+                                                  first.friction_torque)  # fmt: skip
+        t_m = first.motor_torque + np.sign(omega) * (t_f - first.friction_torque) \
             / axis.gear_ratio  # fmt: skip
     power = t_f * np.abs(omega)
-    shaft = t_m * first["motor_speed"]
+    shaft = t_m * first.motor_speed
     dt = np.diff(time)
     friction_steps = 0.5 * (power[1:] + power[:-1]) * dt
     per_block = np.bincount(motion.block[:-1], weights=friction_steps, minlength=program.size)
@@ -518,19 +496,19 @@ def _one_axis(
     supplied_steps = 0.5 * (positive[1:] + positive[:-1]) * dt
     supplied_block = np.bincount(motion.block[:-1], weights=supplied_steps,
                                  minlength=program.size)  # fmt: skip
-    force = first["axial_force"]
+    force = first.axial_force
     reversals = _reversals(letter, setup, machine, motion, program, force, t0)
     g_axial = STANDARD_GRAVITY * math.sin(axis.incline)
     duration = motion.duration
     motor = case.motor
     notes = list(setup.notes)
-    for text in first["speed_warnings"]:
+    for text in first.speed_warnings:
         notes.append(text)
     result = AxisResult(
         letter=letter,
         title=case.title,
         friction_energy=float(np.sum(friction_steps)),
-        bearing_energy=_integral(first["bearing_torque"] * np.abs(omega), time),
+        bearing_energy=_integral(first.bearing_torque * np.abs(omega), time),
         supplied_energy=_integral(np.maximum(shaft, 0.0), time),
         regenerated_energy=-_integral(np.minimum(shaft, 0.0), time),
         process_work=_integral(profile.process_force * profile.speed, time),
@@ -539,7 +517,7 @@ def _one_axis(
         * float(profile.position[-1] - profile.position[0]),
         peak_torque=float(np.max(np.abs(t_m))),
         rms_torque=math.sqrt(_integral(t_m**2, time) / duration) if duration > 0 else 0.0,
-        peak_speed=float(np.max(np.abs(first["motor_speed"]))),
+        peak_speed=float(np.max(np.abs(first.motor_speed))),
         rated_torque=motor.get("rated_torque"),
         peak_rating=motor.get("peak_torque"),
         rated_speed=motor.get("rated_speed"),
@@ -559,7 +537,7 @@ def _one_axis(
         "friction_power": power,
         "temperature": temp,
         "axial_force": force,
-        "motor_speed": first["motor_speed"],
+        "motor_speed": first.motor_speed,
     }
     return result, series
 
