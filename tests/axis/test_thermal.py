@@ -57,6 +57,41 @@ def test_history_with_constant_power_and_conductance_is_the_exponential() -> Non
     assert capacity == pytest.approx((7850 * math.pi / 4 * 0.04**2 + 3.0) * 460.0, rel=1e-12)
 
 
+def test_a_run_of_years_settles_on_the_steady_temperature_at_once() -> None:
+    # Issue 35: a run time of 1e6 h held the solver for minutes. The exponential of the
+    # test above reaches its steady value after a few C/G (here about an hour): a run of
+    # 10 years ends at the steady temperature, and its first hours follow the exponential.
+    import time
+
+    screw = reference_screw()
+    node = ThermalNode(screw_length=1.0, ambient=20.0, machine_resistance=2.0, nut_mass=3.0)
+    axis = Axis(moving_mass=200.0)
+    s = steady_temperature(CYCLE, screw, "mineral ISO VG 68", axis, node, model="catalog")
+    start = time.process_time()
+    years = 10 * 8760 * 3600.0
+    t, temp = temperature_history(CYCLE, screw, "mineral ISO VG 68", axis, node, years,
+                                  model="catalog", points=100_001)  # fmt: skip
+    assert time.process_time() - start < 5.0  # CPU seconds; 0.2.0 took minutes
+    assert temp[-1] == pytest.approx(s.temperature, abs=1e-6)
+    early = t < 4 * 3600.0
+    tau = node.heat_capacity(screw) / s.conductance
+    expected = 20.0 + s.friction_power / s.conductance * (1 - np.exp(-t[early] / tau))
+    np.testing.assert_allclose(temp[early], expected, rtol=1e-5)
+
+
+def test_run_time_and_steady_speeds_have_limits() -> None:
+    from ballscrew.axis.duty import profile_from_move, run_energy
+    from ballscrew.errors import BallScrewInputError
+    from ballscrew.io.case import load_case
+
+    case = load_case()
+    profile = profile_from_move({"stroke": 0.3, "feed": 0.5, "acceleration": 2.0}, 1)
+    with pytest.raises(BallScrewInputError, match=r"--run-time.*at most 100 000 h"):
+        run_energy(case, profile, ["catalog"], run_time=1e30 * 3600.0)
+    with pytest.raises(BallScrewInputError, match=r"--steady-speeds.*at most 1000 speeds"):
+        run_energy(case, profile, ["catalog"], steady_speeds=np.linspace(1.0, 300.0, 1001))
+
+
 def test_mean_powers_over_temperatures_in_one_call_match_each_cycle() -> None:
     from ballscrew.axis.energy import axis_cycle
     from ballscrew.axis.thermal import mean_powers

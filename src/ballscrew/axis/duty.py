@@ -208,6 +208,15 @@ class EnergyRun:
         }
 
 
+MAX_RUN_TIME = 100_000 * 3600.0
+"""The longest run time [s] for the temperature reached (100 000 h, about 11 years of
+running; a repeated cycle settles within hours)."""
+
+MAX_STEADY_SPEEDS = 1000
+"""The most speeds of continuous running a run solves the steady temperature for (each costs
+a friction call per bisection step: 1000 take about a second)."""
+
+
 def run_energy(
     case: Case,
     profile: Profile,
@@ -260,6 +269,16 @@ def run_energy(
     """
     if thermal_failure not in ("raise", "keep"):
         raise BallScrewInputError("thermal_failure", thermal_failure, "'raise' or 'keep'")
+    if not 0.0 < run_time <= MAX_RUN_TIME:
+        raise BallScrewInputError(
+            "--run-time", f"{run_time / 3600.0:g} h", "more than 0 and at most 100 000 h"
+        )
+    if steady_speeds is not None and np.size(steady_speeds) > MAX_STEADY_SPEEDS:
+        raise BallScrewInputError(
+            "--steady-speeds", f"{np.size(steady_speeds)} speeds",
+            f"at most {MAX_STEADY_SPEEDS} speeds (a range 'a..b:n rpm' with n <= "
+            f"{MAX_STEADY_SPEEDS})",
+        )  # fmt: skip
     m = dict(move or {})
     temp = float(case.temperature.flat[0]) if temperature is None else float(temperature)
     setup = axis_setup(case.screw, case.axis, case.thermal, float(np.ptp(profile.position)))
