@@ -52,8 +52,8 @@ __all__ = [
     "PreloadCurves",
     "Threshold",
     "invert",
-    "monitor_preload",
     "preload_curves",
+    "run_monitor",
     "threshold",
 ]
 
@@ -201,8 +201,8 @@ class MonitorResult:
         """The trend and its 95 % band [N] at ``time`` [h]."""
         return _band(self, np.asarray(time, dtype=float))
 
-    def as_dict(self, version: str) -> dict[str, Any]:
-        """The JSON document of ``ballscrew monitor``."""
+    def as_dict(self) -> dict[str, Any]:
+        """The JSON document of ``ballscrew monitor`` (the writer adds the version)."""
         rows = [{"time_h": float(a), "torque_Nm": float(b), "preload_N": float(c),
                  "preload_low_N": float(d), "preload_high_N": float(e),
                  "trend_N": float(f), "trend_low_N": float(g), "trend_high_N": float(h)}
@@ -212,7 +212,7 @@ class MonitorResult:
                     strict=True)]  # fmt: skip
         unit = "1/h" if self.trend_kind == "exponential" else "N/h"
         return {
-            "ballscrew": version, "source": self.series.source, "model": self.model,
+            "source": self.series.source, "model": self.model,
             "trend": {"kind": self.trend_kind,
                       "initial_preload_N": _value(self.trend_kind, self.intercept),
                       "slope": {"value": self.slope, "unit": unit},
@@ -247,7 +247,7 @@ def _mean_band(
     return a + b * time, half
 
 
-def monitor_preload(
+def run_monitor(
     case: Case,
     series: TorqueSeries,
     *,
