@@ -341,7 +341,7 @@ def test_chunk_report_time_and_memory() -> None:
 
     plan = plan_sweep(parse_sweep(SWEEP))
     began = time.perf_counter()
-    _, report = compute_chunk(plan, 0)
+    _, report = compute_chunk(plan.chunk(0))
     wall = time.perf_counter() - began
     assert 0.0 < report.seconds <= wall
     status = Path("/proc/self/status")

@@ -42,7 +42,7 @@ def acceptance_command(
     import numpy as np
 
     from ..errors import BallScrewInputError
-    from ..fit import run_acceptance
+    from ..fit.acceptance import run_acceptance
     from ..io.case import load_case
     from ..io.measured import read_measured
     from ..io.units import parse_range, to_si

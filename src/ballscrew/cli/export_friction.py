@@ -86,8 +86,7 @@ def export_friction_command(
       ballscrew export-friction --form load-map --axial-load "-4..4:9 kN" \\
           --temperature "20, 30, 40 degC" --out friction.mat
     """  # noqa: D301 - click needs the literal \b to keep the example lines
-    from ..fit import run_export_friction
-    from ..fit.export import FrictionExport, log_speeds
+    from ..fit.export import FrictionExport, log_speeds, run_export_friction
     from ..io.case import load_case
     from ..io.measured import read_measured
     from ..io.units import parse_range, to_si

@@ -63,8 +63,7 @@ def fit_command(
         --free preload,ball_train_constant --out fit
     """  # noqa: D301 - click needs the literal \b to keep the example lines
     from ..errors import BallScrewInputError
-    from ..fit import run_fit
-    from ..fit.calibration import FITTABLE
+    from ..fit.calibration import FITTABLE, run_fit
     from ..friction import get_model
     from ..io.case import load_case
     from ..io.measured import read_measured

@@ -43,7 +43,7 @@ def monitor_command(
           --threshold "lift-off 3 kN" --plot preload.png --json preload.json
     """  # noqa: D301 - click needs the literal \b to keep the example lines
     from ..errors import BallScrewInputError
-    from ..fit import run_monitor
+    from ..fit.monitor import run_monitor
     from ..io.case import load_case
     from ..io.files import atomic_write
     from ..io.series import read_series

@@ -152,7 +152,7 @@ def sweep_command(
     """  # noqa: D301 - click needs the literal \b to keep the example lines
     require("sweep", "ballscrew sweep")
     from ..io.files import signal_received
-    from ..sweep import run_sweep
+    from ..sweep.execute import run_sweep
     from ..sweep.store import partial_path
 
     target = Path(out)

@@ -25,7 +25,7 @@ import numpy as np
 
 from ..chain import FrictionResult, friction_torque
 from ..errors import FloatArray
-from .plan import Plan
+from .plan import Chunk
 from .spec import OPERATING, SCALAR_OUTPUTS, resolve
 
 __all__ = ["Block", "ChunkReport", "compute_chunk", "summarise", "worst_issues"]
@@ -36,28 +36,29 @@ Block = tuple[tuple[slice, ...], FloatArray]
 
 @dataclass
 class ChunkReport:
-    """What one chunk gave: its index, size, time, process, summary numbers and issues."""
+    """What one chunk gave: its index, model, size, time, process, summary numbers, issues.
+
+    ``stats`` holds, per output, ``min`` and ``max`` as [value, the point's coordinates]
+    and ``sum`` as [sum, count of finite values].
+    """
 
     index: int
+    model: str
     points: int
     seconds: float
     pid: int
     peak_rss: int
-    stats: dict[str, dict[str, list[float]]] = field(default_factory=dict)
+    stats: dict[str, dict[str, list[Any]]] = field(default_factory=dict)
     issues: dict[str, tuple[float, str]] = field(default_factory=dict)
 
 
-def _evaluate(plan: Plan, region: tuple[slice, ...], position: tuple[int, ...]) -> FrictionResult:
+def _evaluate(chunk: Chunk, point: dict[str, Any]) -> FrictionResult:
     """The friction of one outer point over the chunk's operating points."""
-    model = plan.spec.models[region[0].start]
-    op = region[1 + len(plan.outer) :]
-    w, t, f = (plan.spec.operating[k][s] for k, s in zip(OPERATING, op, strict=True))
-    screw, lubricant, params = resolve(
-        plan.spec.case, model, plan.parameters[model], plan.outer_point(position)
-    )
+    w, t, f = chunk.operating
+    screw, lubricant, params = resolve(chunk.case, chunk.model, chunk.parameters, point)
     return friction_torque(
         screw, lubricant, speed=w[:, None, None], temperature=t[None, :, None],
-        axial_load=f[None, None, :], model=model, warn=False,
+        axial_load=f[None, None, :], model=chunk.model, warn=False,
         chunk_size=max(len(w) * len(t) * len(f), 1), **params,
     )  # fmt: skip
 
@@ -71,58 +72,60 @@ def _note(issues: dict[str, tuple[float, str]], r: FrictionResult) -> None:
             issues[issue.quantity] = (issue.excess, f"{kind}: {issue.note()}")
 
 
-def compute_chunk(plan: Plan, index: int) -> tuple[dict[str, Block], ChunkReport]:
-    """Every output's block of chunk ``index`` and its region, and its report (no file)."""
+def compute_chunk(chunk: Chunk) -> tuple[dict[str, Block], ChunkReport]:
+    """Every output's block of a chunk and its region, and its report (no file is touched)."""
     start = time.perf_counter()
-    region = plan.region(index)
-    n_outer = len(plan.outer)
+    region = chunk.region
     shape = tuple(s.stop - s.start for s in region)
-    asked = [o for o in SCALAR_OUTPUTS if o.name in plan.spec.outputs]  # only what was asked
-    with_components = "components" in plan.spec.outputs
+    cut = len(shape) - len(OPERATING)  # the model and the outer dimensions
+    asked = [o for o in SCALAR_OUTPUTS if o.name in chunk.outputs]  # only what was asked
+    with_components = "components" in chunk.outputs
     out = {o.name: np.full(shape, np.nan) for o in asked}
-    comp_shape = (*shape[: 1 + n_outer], len(plan.components), *shape[1 + n_outer :])
+    comp_shape = (*shape[:cut], len(chunk.components), *shape[cut:])
     components = np.full(comp_shape if with_components else (0,), np.nan)
     issues: dict[str, tuple[float, str]] = {}
-    outer_ranges = [range(s.start, s.stop) for s in region[1 : 1 + n_outer]]
-    for position in itertools.product(*outer_ranges):  # screws, never operating points
-        local = (0, *(p - s.start for p, s in zip(position, region[1:], strict=False)))
-        r = _evaluate(plan, region, position)
+    outer = itertools.product(*(range(n) for n in shape[1:cut]))
+    for position, point in zip(outer, chunk.points, strict=True):  # screws, not operating points
+        local = (0, *position)
+        r = _evaluate(chunk, point)
         for o in asked:
             assert o.read is not None
             out[o.name][local] = o.read(r)
         for name, value in r.components.items() if with_components else ():
-            components[(*local, plan.components.index(name))] = value
+            components[(*local, chunk.components.index(name))] = value
         _note(issues, r)
-    stats = {name: _stats(plan, region, out[name]) for name in (o.name for o in asked)}
+    stats = {name: _stats(chunk, out[name]) for name in (o.name for o in asked)}
     blocks: dict[str, Block] = {name: (region, values) for name, values in out.items()}
     if with_components:
-        cut = 1 + n_outer
         blocks["components"] = ((*region[:cut], slice(None), *region[cut:]), components)
     report = ChunkReport(
-        index, int(math.prod(shape)), time.perf_counter() - start, os.getpid(),
-        _peak_rss(), stats, issues,
+        chunk.index, chunk.model, int(math.prod(shape)), time.perf_counter() - start,
+        os.getpid(), _peak_rss(), stats, issues,
     )  # fmt: skip
     return blocks, report
 
 
-def _stats(plan: Plan, region: tuple[slice, ...], values: FloatArray) -> dict[str, list[float]]:
-    """Smallest and largest value with their flat grid index, and the sum and count."""
+def _stats(chunk: Chunk, values: FloatArray) -> dict[str, list[Any]]:
+    """Smallest and largest value with their point's coordinates, and the sum and count."""
     lo, hi = int(np.nanargmin(values)), int(np.nanargmax(values))
     return {
-        "min": [float(values.flat[lo]), _flat(plan, region, lo)],
-        "max": [float(values.flat[hi]), _flat(plan, region, hi)],
+        "min": [float(values.flat[lo]), _where(chunk, values.shape, lo)],
+        "max": [float(values.flat[hi]), _where(chunk, values.shape, hi)],
         "sum": [float(np.nansum(values)), float(np.count_nonzero(np.isfinite(values)))],
     }
 
 
-def _flat(plan: Plan, region: tuple[slice, ...], local: int) -> float:
-    """Flat index in the whole grid of the chunk's flat position ``local``."""
-    where = np.unravel_index(local, tuple(s.stop - s.start for s in region))
-    return float(
-        np.ravel_multi_index(
-            tuple(int(i) + s.start for i, s in zip(where, region, strict=True)), plan.shape
-        )
-    )
+def _where(chunk: Chunk, shape: tuple[int, ...], local: int) -> dict[str, Any]:
+    """The coordinates of the chunk's point at flat position ``local``."""
+    position = np.unravel_index(local, shape)
+    cut = len(shape) - len(OPERATING)
+    k = int(np.ravel_multi_index(position[1:cut], shape[1:cut])) if cut > 1 else 0
+    found = dict(chunk.points[k])
+    if chunk.samples[k] is not None:
+        found["sample"] = chunk.samples[k]
+    for dim, values, i in zip(OPERATING, chunk.operating, position[cut:], strict=True):
+        found[dim] = float(values[int(i)])
+    return found
 
 
 def _peak_rss() -> int:
@@ -131,25 +134,13 @@ def _peak_rss() -> int:
     return int(peak if sys.platform == "darwin" else peak * 1024)
 
 
-def _where(plan: Plan, flat: float) -> dict[str, Any]:
-    """The coordinates of a point of the grid given as a flat index."""
-    position = [int(i) for i in np.unravel_index(int(flat), plan.shape)]
-    n_outer = len(plan.outer)
-    found: dict[str, Any] = plan.outer_point(position[1 : 1 + n_outer])
-    if "sample" in plan.outer:
-        found["sample"] = position[plan.dims.index("sample")]
-    for dim in OPERATING:
-        found[dim] = float(plan.spec.operating[dim][position[plan.dims.index(dim)]])
-    return found
-
-
-def summarise(plan: Plan, reports: Iterable[dict[str, Any]]) -> dict[str, dict[str, Any]]:
+def summarise(reports: Iterable[dict[str, Any]]) -> dict[str, dict[str, Any]]:
     """Min, mean and max of each output per model, from the chunk reports (in index order)."""
-    acc: dict[str, list[float]] = {}
+    acc: dict[str, list[Any]] = {}
     for report in sorted(reports, key=lambda r: int(r["index"])):
-        model = plan.spec.models[plan.region(int(report["index"]))[0].start]
         for name, s in report["stats"].items():
-            a = acc.setdefault(f"{name}\0{model}", [math.inf, -1.0, -math.inf, -1.0, 0.0, 0.0])
+            a = acc.setdefault(f"{name}\0{report['model']}", [math.inf, None, -math.inf, None,
+                                                               0.0, 0.0])  # fmt: skip
             if s["min"][0] < a[0]:
                 a[0], a[1] = s["min"]
             if s["max"][0] > a[2]:
@@ -161,7 +152,7 @@ def summarise(plan: Plan, reports: Iterable[dict[str, Any]]) -> dict[str, dict[s
         name, model = key.split("\0")
         summary.setdefault(name, {})[model] = {
             "min": a[0], "mean": a[4] / a[5] if a[5] else math.nan, "max": a[2],
-            "min_at": _where(plan, a[1]), "max_at": _where(plan, a[3]),
+            "min_at": a[1], "max_at": a[3],
         }  # fmt: skip
     return summary
 

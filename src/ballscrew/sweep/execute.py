@@ -34,7 +34,7 @@ from ..io.extras import require
 from ..io.files import OutputInUseError, exclusive_lock
 from . import store
 from .compute import ChunkReport, compute_chunk, summarise, worst_issues
-from .plan import DEFAULT_MAX_POINTS, LONG_NAMES, Plan, check_size, layout, plan_sweep, sweep_size
+from .plan import DEFAULT_MAX_POINTS, LONG_NAMES, Plan, check_size, plan_sweep, sweep_size
 from .spec import OPERATING, OUTPUTS, SCALAR_OUTPUTS, SweepSpec, load_sweep
 
 __all__ = ["Percentiles", "SweepReport", "plan_sweep", "run_chunk", "run_sweep"]
@@ -162,7 +162,7 @@ def run_sweep(
         When the ``sweep`` extra is not installed.
     """
     require("sweep", "ballscrew.sweep.execute.run_sweep")
-    spec = sweep if isinstance(sweep, SweepSpec) else load_sweep(sweep)
+    spec = load_sweep(sweep) if isinstance(sweep, str | Path) else sweep
     size = sweep_size(spec)
     check_size(size, max_points or DEFAULT_MAX_POINTS)
     if notify is not None:
@@ -197,7 +197,7 @@ def _run(
 ) -> SweepReport:
     """The sweep, with the lock on its output held: spec -> plan -> chunks -> store."""
     plan = plan_sweep(spec)
-    key = plan.fingerprint()
+    key = plan.key
     partial = store.partial_path(target)
     done = _start(plan, partial, key, restart, notify or (lambda _text: None))
     todo = [i for i in range(plan.n_chunks) if i not in done]
@@ -221,7 +221,7 @@ def _run(
         start = ready[0]
     seconds = time.perf_counter() - start
     sobol, percentiles = _uncertainty(spec, partial)
-    summary = summarise(plan, reports.values())
+    summary = summarise(reports.values())
     issues = worst_issues(reports.values())
     if store.markers(partial, key) is None:  # the lock makes this impossible, but check
         raise BallScrewInputError("--out", str(target), "a store this run alone wrote")
@@ -244,7 +244,8 @@ def _start(
         if partial.exists():
             tell(f"restarting: {partial} holds another sweep's chunks" if not restart
                  else f"restarting: the chunks in {partial} are discarded")  # fmt: skip
-        store.create(layout(plan), partial, key)
+        assert plan.layout is not None
+        store.create(plan.layout, partial, key)
         return {}
     if done:
         tell(f"resuming: {len(done)} of {plan.n_chunks} chunks already done in {partial}")
@@ -253,7 +254,7 @@ def _start(
 
 def run_chunk(index: int, plan: Plan, partial: str, key: str) -> ChunkReport:
     """Compute chunk ``index`` and hand it to the store, which writes it and marks it done."""
-    blocks, report = compute_chunk(plan, index)
+    blocks, report = compute_chunk(plan.chunk(index))
     store.write_chunk(Path(partial), key, blocks, asdict(report))
     return report
 

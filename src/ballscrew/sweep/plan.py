@@ -21,7 +21,7 @@ import itertools
 import json
 import math
 from collections.abc import Sequence
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -30,13 +30,14 @@ from .._version import __version__
 from ..chain import friction_torque
 from ..errors import BallScrewInputError, FloatArray
 from ..friction import get_model
+from ..io.case import Case
 from .spec import OPERATING, OUTPUT_TABLE, OUTPUTS, SweepSpec, resolve
 from .store import Layout, json_safe
 
 __all__ = [
     "DEFAULT_MAX_POINTS",
     "LONG_NAMES",
-    "Layout",
+    "Chunk",
     "Plan",
     "SweepSize",
     "check_size",
@@ -47,8 +48,48 @@ __all__ = [
 
 
 @dataclass(frozen=True)
+class Chunk:
+    """One chunk's work, handed to :func:`ballscrew.sweep.compute.compute_chunk` whole.
+
+    Attributes
+    ----------
+    index : int
+        The chunk's number.
+    model : str
+        Its friction model, and ``parameters`` the model's fixed parameters.
+    case : Case
+        The base case the outer points change.
+    region : tuple of slice
+        Where the chunk lies in the grid (dimensions as :attr:`Plan.dims`).
+    points : tuple of dict
+        Field name -> value of each outer point, in C order over the chunk's outer
+        positions; ``samples`` the Monte Carlo sample of each (None without samples).
+    operating : tuple of array
+        The chunk's speeds [rad/s], temperatures [°C] and axial loads [N].
+    outputs : tuple of str
+        The outputs asked for; ``components`` the names along the components' dimension.
+    """
+
+    index: int
+    model: str
+    parameters: dict[str, Any]
+    case: Case
+    region: tuple[slice, ...]
+    points: tuple[dict[str, Any], ...]
+    samples: tuple[int | None, ...]
+    operating: tuple[FloatArray, FloatArray, FloatArray]
+    outputs: tuple[str, ...]
+    components: tuple[str, ...]
+
+
+@dataclass(frozen=True)
 class Plan:
-    """The grid of a sweep and its chunks (picklable: sent once to every worker)."""
+    """The grid of a sweep, its chunks and its store's layout.
+
+    Picklable: sent once to every worker. ``key`` identifies the sweep (a partial
+    store is resumed only by the same sweep); ``layout`` is what the store is
+    created with.
+    """
 
     spec: SweepSpec
     dims: tuple[str, ...]
@@ -59,6 +100,8 @@ class Plan:
     components: tuple[str, ...]
     model_components: dict[str, tuple[str, ...]]
     parameters: dict[str, dict[str, Any]]
+    key: str = ""
+    layout: Layout | None = None
 
     @property
     def grid(self) -> tuple[int, ...]:
@@ -95,6 +138,25 @@ class Plan:
                 axis = next(a for a in self.spec.axes if a.name == name)
                 point[name] = axis.values[i]
         return point
+
+    def chunk(self, index: int) -> Chunk:
+        """The work of chunk ``index``: its model, region, outer points and operating points."""
+        region = self.region(index)
+        n_outer = len(self.outer)
+        positions = list(
+            itertools.product(*(range(s.start, s.stop) for s in region[1 : 1 + n_outer]))
+        )
+        at = self.outer.index("sample") if "sample" in self.outer else None
+        w, t, f = (
+            self.spec.operating[k][s] for k, s in zip(OPERATING, region[1 + n_outer :], strict=True)
+        )
+        model = self.spec.models[region[0].start]
+        return Chunk(
+            index, model, self.parameters[model], self.spec.case, region,
+            tuple(self.outer_point(p) for p in positions),
+            tuple(None if at is None else p[at] for p in positions), (w, t, f),
+            self.spec.outputs, self.components,
+        )  # fmt: skip
 
     def fingerprint(self) -> str:
         """Identity of the sweep: a partial store is resumed only by the same sweep."""
@@ -247,7 +309,7 @@ def plan_sweep(spec: SweepSpec) -> Plan:
             shown = ", ".join(f"{k} = {v:g}" if isinstance(v, float) else f"{k} = {v}"
                               for k, v in point.items())  # fmt: skip
             raise BallScrewInputError(exc.field, exc.value, f"{exc.allowed} (at {shown})") from None
-    return plan
+    return replace(plan, key=plan.fingerprint(), layout=layout(plan))
 
 
 LONG_NAMES = {
