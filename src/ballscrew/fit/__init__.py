@@ -5,13 +5,25 @@ friction forms for servo controllers (:mod:`.controller`, :mod:`.export`) and th
 load map (:mod:`.friction_map`); the preload read from drag-torque measurements
 (:mod:`.monitor`); a drag torque against the makers' band (:mod:`.acceptance`).
 
-The commands' entry points: :func:`run_fit`, :func:`run_export_friction`,
-:func:`run_monitor`, :func:`run_acceptance`.
+The commands' entry points: :func:`run_fit` (``ballscrew fit``),
+:func:`run_export_friction` (``ballscrew export-friction``), :func:`run_monitor`
+(``ballscrew monitor``) and :func:`run_acceptance` (``ballscrew acceptance``).
 """
 
-from .acceptance import run_acceptance
-from .calibration import run_fit
-from .export import run_export_friction
-from .monitor import run_monitor
+from .acceptance import Acceptance, run_acceptance
+from .calibration import FitResult, run_fit
+from .export import FrictionExport, run_export_friction
+from .friction_map import FrictionMap
+from .monitor import MonitorResult, run_monitor
 
-__all__ = ["run_acceptance", "run_export_friction", "run_fit", "run_monitor"]
+__all__ = [
+    "Acceptance",
+    "FitResult",
+    "FrictionExport",
+    "FrictionMap",
+    "MonitorResult",
+    "run_acceptance",
+    "run_export_friction",
+    "run_fit",
+    "run_monitor",
+]

@@ -51,6 +51,14 @@ class Percentiles:
     speeds: FloatArray
     torque: dict[str, FloatArray]
 
+    def as_dict(self) -> dict[str, Any]:
+        """Percentiles [%], speeds [rad/s] and, per model, the torque rows [N·m]."""
+        return {
+            "percentiles": self.percentiles.tolist(),
+            "speed_rad_s": self.speeds.tolist(),
+            "torque_Nm": {model: values.tolist() for model, values in self.torque.items()},
+        }
+
 
 @dataclass(frozen=True)
 class SweepReport:
@@ -108,17 +116,8 @@ class SweepReport:
             "mode": self.mode,
             "summary": self.summary,
             "validity": list(self.issues),
-            "sobol": {
-                model: {
-                    name: {
-                        "total": float(s.total[i]), "total_conf": float(s.total_conf[i]),
-                        "first": float(s.first[i]), "first_conf": float(s.first_conf[i]),
-                    }
-                    for i, name in enumerate(s.names)
-                }
-                for model, s in self.sobol.items()
-            },
-        }  # fmt: skip
+            "sobol": {model: s.as_dict() for model, s in self.sobol.items()},
+        }
 
 
 def run_sweep(
