@@ -204,3 +204,15 @@ def test_grid_defaults_exact_nodes_and_notes(truth: tuple[np.ndarray, np.ndarray
     for bad in ("0 %", "100 %", "0 kN"):
         with pytest.raises(BallScrewInputError, match="--threshold"):
             threshold(bad, 1800.0)
+
+
+def test_the_former_name_warns_and_gives_the_same_result(
+    truth: tuple[np.ndarray, np.ndarray],
+) -> None:
+    from ballscrew.fit.monitor import monitor_preload
+
+    _, torque = truth
+    with pytest.warns(DeprecationWarning, match="run_monitor"):
+        old = monitor_preload(CASE, series(torque), limit="50 %")
+    new = run_monitor(CASE, series(torque), limit="50 %")
+    np.testing.assert_array_equal(old.preload, new.preload)

@@ -52,6 +52,7 @@ __all__ = [
     "PreloadCurves",
     "Threshold",
     "invert",
+    "monitor_preload",
     "preload_curves",
     "run_monitor",
     "threshold",
@@ -312,6 +313,17 @@ def run_monitor(
     if n < 6:
         notes.append(f"{n} measurements: the intervals are wide (t quantile {q:.3g})")
     return result
+
+
+def monitor_preload(*args: Any, **kwargs: Any) -> MonitorResult:
+    """The former name of :func:`run_monitor` (for one release; it warns)."""
+    warnings.warn(
+        "ballscrew.fit.monitor.monitor_preload is now run_monitor (also ballscrew.fit."
+        "run_monitor); the old name goes in the next release",
+        DeprecationWarning,
+        stacklevel=2,
+    )
+    return run_monitor(*args, **kwargs)
 
 
 def _crossing(r: MonitorResult) -> None:
