@@ -145,15 +145,9 @@ class ValidityCheck(Protocol):
     """
 
     def __call__(
-        self,
-        screw: BallScrew,
-        lubricant: Lubricant,
-        speed: FloatArray,
-        temperature: FloatArray,
-        axial_load: FloatArray,
-        parameters: dict[str, Any],
-        /,
-    ) -> list[ValidityIssue]:
+        self, screw: BallScrew, lubricant: Lubricant, speed: FloatArray, temperature: FloatArray,
+        axial_load: FloatArray, parameters: dict[str, Any], /,
+    ) -> list[ValidityIssue]:  # fmt: skip
         """The issues of one call: those its inputs and state leave a range."""
 
 

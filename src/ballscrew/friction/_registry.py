@@ -29,16 +29,9 @@ class FrictionModel(Protocol):
     """
 
     def __call__(
-        self,
-        screw: BallScrew,
-        lubricant: Lubricant,
-        speed: FloatArray,
-        temperature: FloatArray,
-        axial_load: FloatArray,
-        /,
-        *args: Any,
-        **params: Any,
-    ) -> dict[str, FloatArray]:
+        self, screw: BallScrew, lubricant: Lubricant, speed: FloatArray, temperature: FloatArray,
+        axial_load: FloatArray, /, *args: Any, **params: Any,
+    ) -> dict[str, FloatArray]:  # fmt: skip
         """The model's named torque contributions [N·m] at the broadcast points."""
 
 
@@ -102,15 +95,9 @@ class ModelSpec:
                 )
 
     def __call__(
-        self,
-        screw: BallScrew,
-        lubricant: Lubricant,
-        speed: FloatArray,
-        temperature: FloatArray,
-        axial_load: FloatArray,
-        state: Any = None,
-        **params: Any,
-    ) -> dict[str, FloatArray]:
+        self, screw: BallScrew, lubricant: Lubricant, speed: FloatArray, temperature: FloatArray,
+        axial_load: FloatArray, state: Any = None, **params: Any,
+    ) -> dict[str, FloatArray]:  # fmt: skip
         """Evaluate the model (parameters checked first), with the contact state if given."""
         self.check_parameters(params)
         if state is not None and self.uses_state:
