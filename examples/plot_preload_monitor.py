@@ -13,7 +13,7 @@ from pathlib import Path
 import matplotlib.pyplot as plt
 import numpy as np
 
-from ballscrew.fit.monitor import monitor_preload
+from ballscrew.fit.monitor import run_monitor
 from ballscrew.io.case import load_case
 from ballscrew.io.series import read_series
 
@@ -22,7 +22,7 @@ data = next(p for p in (Path("drag_torque_series.csv"), Path("examples/drag_torq
             if p.exists())  # fmt: skip
 case = load_case(None)  # the bundled study case: its screw and oil
 series = read_series(data, case.screw)
-result = monitor_preload(case, series, limit="50 %")
+result = run_monitor(case, series, limit="50 %")
 assert result.limit is not None
 print(f"50 % of the initial preload at {result.crossing:.0f} h "
       f"(95 %: {result.crossing_low:.0f} to {result.crossing_high:.0f} h)")  # fmt: skip

@@ -26,9 +26,9 @@ from __future__ import annotations
 
 import functools
 import math
-from collections.abc import Callable, Iterable
+from collections.abc import Iterable
 from dataclasses import dataclass, replace
-from typing import Any
+from typing import Any, Protocol
 
 import numpy as np
 
@@ -45,6 +45,7 @@ __all__ = [
     "RANGES",
     "BallScrewValidityWarning",
     "Check",
+    "ValidityCheck",
     "ValidityIssue",
     "ValidityRange",
     "check",
@@ -133,10 +134,25 @@ class ValidityIssue:
         return f"{self} (usual for ball screws: {self.routine})" if self.routine else str(self)
 
 
-Check = Callable[
-    [BallScrew, Lubricant, FloatArray, FloatArray, FloatArray, dict[str, Any]], list[ValidityIssue]
-]
-"""A model's validity check: ``f(screw, lubricant, speed, temperature, axial_load, params)``."""
+class ValidityCheck(Protocol):
+    """A model's validity check, the one signature every check has.
+
+    Called as ``check(screw, lubricant, speed, temperature, axial_load, parameters)``
+    with the call's inputs (speed [rad/s], temperature [°C], axial load [N], broadcast
+    float arrays) and the model's parameters as used; returns the issues it finds,
+    worst value each (:func:`outside`). A model names its checks in ``checks=`` of
+    :func:`ballscrew.friction.register`; :func:`check` runs them.
+    """
+
+    def __call__(
+        self, screw: BallScrew, lubricant: Lubricant, speed: FloatArray, temperature: FloatArray,
+        axial_load: FloatArray, parameters: dict[str, Any], /,
+    ) -> list[ValidityIssue]:  # fmt: skip
+        """The issues of one call: those its inputs and state leave a range."""
+
+
+Check = ValidityCheck
+"""The former name of :class:`ValidityCheck`."""
 
 
 _ROUTINE_FILM = (
@@ -309,7 +325,7 @@ def check(
     axial_load: FloatArray,
     model: str,
     parameters: dict[str, Any],
-    checks: Iterable[Check] = (),
+    checks: Iterable[ValidityCheck] = (),
 ) -> list[ValidityIssue]:
     """Every quantity of a call that leaves its validity range, worst value each.
 

@@ -89,7 +89,7 @@ def test_band_edges_belong_to_the_band_and_the_json() -> None:
     assert edge.accepted and accept_drag_torque(1.3, 1.0).accepted
     one = accept_drag_torque(0.9, 1.0)
     assert one.fluctuation == 0.0 and one.points == 1
-    doc = accept_drag_torque([0.8, 0.9], 1.0).as_dict("test")
+    doc = accept_drag_torque([0.8, 0.9], 1.0).as_dict()
     assert doc["row"] == {"from_Nm": 0.6, "to_Nm": 1.0, "tolerance": 0.3}
     assert doc["accepted_from_Nm"] == pytest.approx(0.7) and doc["accepted_to_Nm"] == 1.3
     assert doc["mean_torque_Nm"] == pytest.approx(0.85) and doc["fluctuation_Nm"] == pytest.approx(

@@ -103,7 +103,7 @@ def test_lugre_rules_and_table_side_units() -> None:
     assert f.parameters["bristle_damping"] == pytest.approx(
         2 * math.sqrt(f.parameters["bristle_stiffness"] * 4e-3)
     )
-    side = f.as_dict(lead=0.01)["table_side"]
+    side = f.as_drive_dict(lead=0.01)["table_side"]
     # F = 2 pi T / l; c = b (2 pi / l)^2.
     assert side["coulomb_force"]["value"] == pytest.approx(
         f.parameters["coulomb_torque"] * 2 * math.pi / 0.01
@@ -168,7 +168,7 @@ def test_every_table_side_quantity_follows_the_lead() -> None:
 
     lead = 0.005
     k = 2 * math.pi / lead
-    side = FrictionForm("lugre", p, 0.0, 0.0).as_dict(lead=lead)["table_side"]
+    side = FrictionForm("lugre", p, 0.0, 0.0).as_drive_dict(lead=lead)["table_side"]
     expected = {
         "coulomb_force": (0.3 * k, "N"),
         "static_force": (0.5 * k, "N"),

@@ -62,7 +62,7 @@ def axis_case(axis: str) -> Case:
 def test_motor_side_goes_through_the_gear() -> None:
     case = axis_case('moving_mass = "100 kg"\ngear_ratio = 2.5')
     out = export_friction(case, "complete", "stribeck", speeds=SPEEDS)
-    doc = out.as_dict("test")["fits"][0]
+    doc = out.as_dict()["fits"][0]
     for name, power in MOTOR_SIDE.items():
         if name in doc["parameters"]:
             # T_m = T / i, w_m = i w, T_m / w_m = (T / w) / i^2.

@@ -229,7 +229,7 @@ def test_the_three_sides_of_the_compact_form(fmap) -> None:  # type: ignore[no-u
     # Independent conversions: F = 2 pi T / l; v = l w / 2 pi, so a viscous torque per
     # rad/s b becomes b (2 pi / l)^2 N per m/s; the motor side through i = 2: T / i and,
     # per motor rad/s, b / i^2.
-    doc = fmap.form.as_dict(CASE.screw.lead, 2.0)
+    doc = fmap.form.as_drive_dict(CASE.screw.lead, 2.0)
     k = 2 * math.pi / CASE.screw.lead
     for name in ("c0", "c1", "c2", "b"):
         screw = doc["screw_side"][name]["value"]
@@ -272,11 +272,11 @@ def test_every_side_of_a_form_with_a_direction_term() -> None:
                     reference_temperature=20.0, rms_error=0.0, max_error=0.0)  # fmt: skip
     lead, i = 0.01, 3.0
     k = 2 * math.pi / lead
-    doc = form.as_dict(lead, i)
+    doc = form.as_drive_dict(lead, i)
     assert doc["table_side"]["c2"]["value"] == pytest.approx(-6e-6 * k, rel=1e-12)
     assert doc["motor_side"]["c2"]["value"] == pytest.approx(-2e-6, rel=1e-12)
     assert doc["motor_side"]["b"]["value"] == pytest.approx(2e-4 / 9.0, rel=1e-12)
-    plain = form.as_dict(lead)  # no gear: the motor is the screw
+    plain = form.as_drive_dict(lead)  # no gear: the motor is the screw
     assert {n: v["value"] for n, v in plain["motor_side"].items()} == {
         n: v["value"] for n, v in plain["screw_side"].items()
     }

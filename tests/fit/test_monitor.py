@@ -11,7 +11,7 @@ import pytest
 
 from ballscrew import friction_torque
 from ballscrew.errors import BallScrewInputError
-from ballscrew.fit.monitor import PreloadCurves, invert, monitor_preload, preload_curves, threshold
+from ballscrew.fit.monitor import PreloadCurves, invert, preload_curves, run_monitor, threshold
 from ballscrew.io.case import load_case
 from ballscrew.io.series import CATALOGUE_SPEED, TorqueSeries, parse_series
 from ballscrew.loads import LIFT_OFF_RATIO
@@ -61,10 +61,10 @@ def test_intervals_cover_the_truth_at_the_stated_rate(truth: tuple[np.ndarray, n
     trials = 40
     for _ in range(trials):
         noisy = series(torque * (1.0 + 0.03 * rng.standard_normal(TIME.size)))
-        r = monitor_preload(CASE, noisy, curves=curves, limit="50 %")
+        r = run_monitor(CASE, noisy, curves=curves, limit="50 %")
         covered.append((preload >= r.trend_low) & (preload <= r.trend_high))
         share_hits += r.crossing_low <= share_time <= r.crossing_high
-        g = monitor_preload(CASE, noisy, curves=curves, limit=f"{force} N")
+        g = run_monitor(CASE, noisy, curves=curves, limit=f"{force} N")
         force_hits += g.crossing_low <= force_time <= g.crossing_high
     # 95 % intervals, a trend of the true form and nearly Gaussian errors in ln F:
     # at least 90 % (the bar; 40 trials leave a few points of sampling spread).
@@ -74,7 +74,7 @@ def test_intervals_cover_the_truth_at_the_stated_rate(truth: tuple[np.ndarray, n
 
 def test_an_exact_series_gives_its_decay_rate(truth: tuple[np.ndarray, np.ndarray]) -> None:
     _, torque = truth
-    r = monitor_preload(CASE, series(torque), limit="50 %")
+    r = run_monitor(CASE, series(torque), limit="50 %")
     assert r.slope == pytest.approx(-1.0 / TAU, rel=1e-2)  # the inversion's 0.5 %, over ln F
     assert r.crossing == pytest.approx(TAU * math.log(2.0), rel=1e-2)
 
@@ -83,9 +83,9 @@ def test_a_threshold_above_the_initial_preload_is_said_to_be_passed_already(
     truth: tuple[np.ndarray, np.ndarray],
 ) -> None:
     _, torque = truth
-    r = monitor_preload(CASE, series(torque), limit=f"{1.2 * CASE.screw.preload} N")
+    r = run_monitor(CASE, series(torque), limit=f"{1.2 * CASE.screw.preload} N")
     assert r.crossing < 0.0 and any("from the first measurement on" in n for n in r.notes)
-    late = monitor_preload(CASE, series(torque), limit="10 %")
+    late = run_monitor(CASE, series(torque), limit="10 %")
     assert late.crossing > TIME[-1] and any("extrapolated beyond" in n for n in late.notes)
 
 
@@ -105,16 +105,16 @@ def test_bad_series_name_the_row() -> None:
     with pytest.raises(BallScrewInputError, match="time column"):
         parse_series("time,torque [N*m]\n0,0.3\n", screw)
     with pytest.raises(BallScrewInputError, match="at least 3"):
-        monitor_preload(CASE, parse_series("time [h],torque [N*m]\n0,0.3\n5,0.28\n", screw))
+        run_monitor(CASE, parse_series("time [h],torque [N*m]\n0,0.3\n5,0.28\n", screw))
     # N*mm written under an N*m header: far past 4 times the case's preload.
     with pytest.raises(BallScrewInputError, match="check the torque unit"):
-        monitor_preload(CASE, parse_series("time [h],torque [N*m]\n0,300\n5,290\n9,280\n", screw))
+        run_monitor(CASE, parse_series("time [h],torque [N*m]\n0,300\n5,290\n9,280\n", screw))
     # Without axial load and preload no ball carries load: the model's torque is 0.
     assert model_torque(0.0, float(np.ravel(CASE.temperature)[0])) == 0.0
     text = "time [d],torque [N*m]\n0,0.3\n5,0.28\n9,0\n"
     with pytest.raises(BallScrewInputError, match="measurement"):
-        monitor_preload(CASE, parse_series(text, screw))
-    r = monitor_preload(CASE, parse_series(text, screw), trend="linear")
+        run_monitor(CASE, parse_series(text, screw))
+    r = run_monitor(CASE, parse_series(text, screw), trend="linear")
     assert r.preload[-1] == 0.0 and any("zero preload" in n for n in r.notes)
     np.testing.assert_allclose(r.series.time, [0.0, 120.0, 216.0])  # days in hours
 
@@ -141,7 +141,7 @@ def test_bands_and_crossings_against_an_independent_regression(
     _, torque = truth
     noisy = series(torque * (1.0 + 0.02 * np.random.default_rng(7).standard_normal(TIME.size)))
     force = 0.5 * CASE.screw.preload
-    r = monitor_preload(CASE, noisy, limit=f"{force} N")
+    r = run_monitor(CASE, noisy, limit=f"{force} N")
     y = np.log(r.preload)
     fit = linregress(TIME, y)
     n = TIME.size
@@ -173,7 +173,7 @@ def test_bands_and_crossings_against_an_independent_regression(
     assert r.crossing_low == pytest.approx(low, abs=1e-6)
     assert r.crossing_high == pytest.approx(high, abs=1e-6)
     # A share of the initial preload: ln(share) over the slope's 95 % interval.
-    g = monitor_preload(CASE, noisy, limit="50 %")
+    g = run_monitor(CASE, noisy, limit="50 %")
     edges = sorted(np.log(0.5) / (fit.slope + np.array([-1.0, 1.0]) * q * fit.stderr))
     assert (g.crossing_low, g.crossing_high) == pytest.approx(tuple(edges), rel=1e-10)
     assert g.crossing == pytest.approx(np.log(0.5) / fit.slope, rel=1e-10)
@@ -198,9 +198,21 @@ def test_grid_defaults_exact_nodes_and_notes(truth: tuple[np.ndarray, np.ndarray
     assert preload_curves(bare, "catalog", series(torque)).preloads[-1] == pytest.approx(4000.0)
     # Few points, and a preload that does not fall: said.
     few = TorqueSeries(TIME[:5], torque[:5], np.full(5, CATALOGUE_SPEED), "few")
-    assert any("5 measurements" in n for n in monitor_preload(CASE, few, limit="50 %").notes)
-    rising = monitor_preload(CASE, series(torque[::-1]), limit="50 %")
+    assert any("5 measurements" in n for n in run_monitor(CASE, few, limit="50 %").notes)
+    rising = run_monitor(CASE, series(torque[::-1]), limit="50 %")
     assert rising.slope > 0 and any("does not fall" in n for n in rising.notes)
     for bad in ("0 %", "100 %", "0 kN"):
         with pytest.raises(BallScrewInputError, match="--threshold"):
             threshold(bad, 1800.0)
+
+
+def test_the_former_name_warns_and_gives_the_same_result(
+    truth: tuple[np.ndarray, np.ndarray],
+) -> None:
+    from ballscrew.fit.monitor import monitor_preload
+
+    _, torque = truth
+    with pytest.warns(DeprecationWarning, match="run_monitor"):
+        old = monitor_preload(CASE, series(torque), limit="50 %")
+    new = run_monitor(CASE, series(torque), limit="50 %")
+    np.testing.assert_array_equal(old.preload, new.preload)

@@ -120,3 +120,31 @@ def test_check_shows_the_axis_as_the_energy_command_will_use_it(
     for shown in ("0.0015 kg*m^2", "bore 20 mm", "1000 mm, fixed-supported", "1200 mm",
                   "20 degC, 2 K/W"):  # fmt: skip
         assert shown in out, shown
+
+
+def test_each_numeric_key_states_its_si_unit_in_the_schema_and_its_example_reads_in_it() -> None:
+    # The case file's SI units live in the schema (issue 33): every key io/case.py turns
+    # into a number names its SI unit there, and the key's own example (written by hand
+    # in the schema, e.g. "6.35 mm", "10.3 cSt", "1.2e-4 m/N" would fail) converts to it.
+    from ballscrew.io.case import LUBRICANT_UNITS, SCREW_UNITS
+    from ballscrew.io.schema import AxisSection, LubricantSection, ScrewSection, si_units
+    from ballscrew.io.units import to_si
+
+    assert si_units(ScrewSection) == SCREW_UNITS
+    assert si_units(LubricantSection) == LUBRICANT_UNITS
+    assert set(si_units(AxisSection, "thermal")) == {
+        "screw_length", "nut_mass", "machine_resistance", "ambient",
+    }  # fmt: skip
+    checked = 0
+    for section, model in SECTIONS.items():
+        for key, info in model.model_fields.items():
+            extra = info.json_schema_extra if isinstance(info.json_schema_extra, dict) else {}
+            if "si" not in extra:
+                continue
+            example = extra["example"]
+            if isinstance(example, str) and example.endswith("%"):
+                example = float(example[:-1]) / 100.0  # a share, read as such by case.py
+            value = to_si(f"{section}.{key}", example, extra["si"])
+            assert value == value, key  # finite: not NaN
+            checked += 1
+    assert checked >= 40

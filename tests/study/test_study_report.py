@@ -180,3 +180,15 @@ def test_model_parameters_carry_the_units_of_their_docstrings() -> None:
     assert _shown(3.5e13, units["damping"]) == "3.5e+13 N·s/m³"
     assert _shown("ball-radius", None) == "ball-radius" and _shown(0.0358, "-") == "0.0358"
     assert parameter_units("complete")["return_turning_angle"] == "rad"
+
+
+def test_the_study_result_is_json_with_every_figure_and_finding(study: StudyResult) -> None:
+    import json
+
+    doc = json.loads(json.dumps(study.as_dict()))
+    assert [f["key"] for f in doc["figures"]] == [f.key for f in study.figures]
+    first = study.figures[0].series[0]
+    assert doc["figures"][0]["series"][0]["torque_Nm"] == pytest.approx(first.torque.tolist())
+    assert doc["findings"] == list(study.findings)
+    if study.sensitivity is not None:
+        assert set(doc["sensitivity"]["indices"]) == set(study.sensitivity.indices.names)

@@ -344,3 +344,21 @@ def test_trend_slopes_and_intervals_by_frisch_waugh_lovell() -> None:
     slopes, half = trend_slopes([c.screw for c in cases], measured)
     for row, s, h in zip(rows, slopes, half, strict=True):
         assert row.predicted == pytest.approx(s) and row.interval == pytest.approx((s - h, s + h))
+
+
+def test_run_validate_names_models_by_their_registry_name_and_its_json_reads_back() -> None:
+    # The command's entry point: a model named by an alias is scored under its registry name,
+    # and as_dict is JSON whose rows say inside/outside as the bands do (the catalogue rule
+    # scores its own cases inside, as above).
+    import json
+
+    from ballscrew.friction import get_model
+    from ballscrew.study import run_validate
+
+    card = run_validate(["catalog"])
+    assert {r.model for r in card.rows} == {get_model("catalog").name}
+    doc = json.loads(json.dumps(card.as_dict()))
+    catalog_rows = [r for r in doc["rows"] if r["kind"] == "catalog"]
+    assert catalog_rows and all(r["within"] for r in catalog_rows)
+    assert all(r["low"] <= r["predicted"] <= r["high"] for r in catalog_rows)
+    assert doc["scores"][0]["model"] == "catalog"

@@ -337,11 +337,11 @@ def test_uneven_chunks_hold_every_point_of_a_direct_grid(tmp_path: Path) -> None
 def test_chunk_report_time_and_memory() -> None:
     # The report's seconds lie within the wall time of the call; its peak memory is the
     # process's high-water mark (Linux: VmHWM of /proc/self/status, in kB).
-    from ballscrew.sweep.plan import compute_chunk
+    from ballscrew.sweep.compute import compute_chunk
 
     plan = plan_sweep(parse_sweep(SWEEP))
     began = time.perf_counter()
-    _, report = compute_chunk(plan, 0)
+    _, report = compute_chunk(plan.chunk(0))
     wall = time.perf_counter() - began
     assert 0.0 < report.seconds <= wall
     status = Path("/proc/self/status")

@@ -6,8 +6,7 @@ import sys
 
 import click
 
-from .._version import __version__
-from .common import case_option, stdout, write_json
+from .common import case_option, stdout, write_result
 
 __all__ = ["acceptance_command"]
 
@@ -42,39 +41,24 @@ def acceptance_command(
     """  # noqa: D301 - click needs the literal \b to keep the example lines
     import numpy as np
 
-    from ..chain import friction_torque
-    from ..design.catalog_formulas import preload_torque
     from ..errors import BallScrewInputError
-    from ..fit.acceptance import accept_drag_torque
+    from ..fit.acceptance import run_acceptance
     from ..io.case import load_case
     from ..io.measured import read_measured
     from ..io.units import parse_range, to_si
-    from ..kinematics import rpm_to_rad_s
-    from ..report.outputs import json_document
 
     if (torque_text is None) == (measured_file is None):
         raise BallScrewInputError("--torque", torque_text or "(none)",
                                   "either --torque or --measured, not both")  # fmt: skip
     case = load_case(case_file)
-    screw = case.screw
     if torque_text is not None:
         torque = np.asarray(parse_range("--torque", torque_text, "N*m"), dtype=float)
     else:
-        torque = read_measured(measured_file, screw).torque  # type: ignore[arg-type]
+        torque = read_measured(measured_file, case.screw).torque  # type: ignore[arg-type]
     choice = reference_text.strip().lower()
-    if choice == "catalog":
-        reference = float(preload_torque(screw.preload, screw.lead, screw.lead_angle))
-        source = f"the makers' rule at {screw.preload:.4g} N preload"
-    elif choice == "model":
-        reference = float(friction_torque(
-            screw, case.lubricant, speed=rpm_to_rad_s(100.0),
-            temperature=float(np.ravel(case.temperature)[0]), model=model_name,
-            **case.parameters_for(model_name)).total)  # fmt: skip
-        source = f"{model_name} at 100 rpm, no axial load"
-    else:
-        reference = to_si("--reference", reference_text, "N*m")
-        source = "given"
-    a = accept_drag_torque(torque, reference, grade=grade, reference_source=source)
+    reference = choice if choice in ("catalog", "model") else to_si(
+        "--reference", reference_text, "N*m")  # fmt: skip
+    a = run_acceptance(case, torque, reference=reference, model=model_name, grade=grade)
     console = stdout(json_file)
     lo, hi, tol = a.row
     console.print(f"reference {a.reference:.4g} N*m ({a.reference_source}); grade {a.grade}, "
@@ -87,5 +71,5 @@ def acceptance_command(
     for note in a.notes:
         click.echo(f"note: {note}", err=True)
     if json_file:
-        write_json(json_file, json_document(a.as_dict(__version__)))
+        write_result(json_file, a.as_dict())
     sys.stdout.flush()

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import contextlib
 import os
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Mapping
 from pathlib import Path
 from typing import Any, TypeVar
 
@@ -13,7 +13,8 @@ from rich.console import Console
 from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 
 __all__ = [
-    "case_option", "file_option", "motion", "progress", "stdout", "write_json", "writing",
+    "case_option", "file_option", "motion", "progress", "stdout", "write_json", "write_result",
+    "writing",
 ]  # fmt: skip
 
 F = TypeVar("F", bound=Callable[..., Any])
@@ -65,6 +66,14 @@ def write_json(json_file: str, text: str, option: str = "--json") -> None:
     else:
         with writing(option, json_file):
             atomic_write(Path(json_file), text.encode("utf-8"))
+
+
+def write_result(json_file: str, document: Mapping[str, Any], option: str = "--json") -> None:
+    """Write a result's :meth:`as_dict` as the command's JSON, the package version first."""
+    from .._version import __version__
+    from ..report.outputs import json_document
+
+    write_json(json_file, json_document({"ballscrew": __version__, **document}), option)
 
 
 def progress(console: Console) -> Progress:

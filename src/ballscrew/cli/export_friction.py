@@ -11,11 +11,12 @@ from rich.console import Console
 from rich.table import Table
 
 from .._version import __version__
-from .common import case_option, stdout, write_json, writing
+from .common import case_option, stdout, write_result, writing
 
 if TYPE_CHECKING:
     from ..fit.controller import FrictionForm
     from ..fit.export import FrictionExport
+    from ..fit.friction_map import FrictionMap
 
 __all__ = ["export_friction_command"]
 
@@ -85,29 +86,43 @@ def export_friction_command(
       ballscrew export-friction --form load-map --axial-load "-4..4:9 kN" \\
           --temperature "20, 30, 40 degC" --out friction.mat
     """  # noqa: D301 - click needs the literal \b to keep the example lines
-    if form == "load-map":
-        _load_map(case_file, model_name, temperature, speed, axial_load, out_file, json_file)
-        return
-    from ..fit.export import export_friction, log_speeds
+    from ..fit.export import FrictionExport, log_speeds, run_export_friction
     from ..io.case import load_case
-    from ..io.files import atomic_write
     from ..io.measured import read_measured
     from ..io.units import parse_range, to_si
-    from ..report.outputs import csv_text, json_document
 
     def si(flag: str, text: str | None, unit: str) -> float | None:
         return to_si(flag, text, unit) if text else None
 
     case = load_case(case_file)
-    measured = read_measured(measured_file, case.screw) if measured_file else None
-    result = export_friction(
-        case, model_name, form, measured=measured,
-        temperatures=parse_range("--temperature", temperature, "degC") if temperature else None,
-        speeds=log_speeds(speed), axial_load=si("--axial-load", axial_load, "N"),
-        inertia=si("--inertia", inertia, "kg*m**2"),
-        bristle_stiffness=si("--bristle-stiffness", bristle_stiffness, "N*m/rad"),
-        bristle_damping=si("--bristle-damping", bristle_damping, "N*m*s/rad"),
-    )  # fmt: skip
+    temps = parse_range("--temperature", temperature, "degC") if temperature else None
+    if form == "load-map":  # signed loads; the options of a fitted form do not apply
+        loads = parse_range("--axial-load", axial_load, "N") if axial_load else None
+        result = run_export_friction(case, model_name, form, speeds=log_speeds(speed),
+                                     temperatures=temps, loads=loads)  # fmt: skip
+    else:
+        result = run_export_friction(
+            case, model_name, form, temperatures=temps, speeds=log_speeds(speed),
+            measured=read_measured(measured_file, case.screw) if measured_file else None,
+            axial_load=si("--axial-load", axial_load, "N"),
+            inertia=si("--inertia", inertia, "kg*m**2"),
+            bristle_stiffness=si("--bristle-stiffness", bristle_stiffness, "N*m/rad"),
+            bristle_damping=si("--bristle-damping", bristle_damping, "N*m*s/rad"),
+        )  # fmt: skip
+    if isinstance(result, FrictionExport):
+        _print_export(result, form, out_file, json_file)
+    else:
+        _print_map(result, out_file, json_file)
+    sys.stdout.flush()
+
+
+def _print_export(
+    result: FrictionExport, form: str, out_file: str | None, json_file: str | None
+) -> None:
+    """The fitted forms' tables and notes; the CSV and the JSON."""
+    from ..io.files import atomic_write
+    from ..report.outputs import csv_text
+
     console = stdout(json_file)
     for temp, fitted in result.fitted:
         _print_fit(console, result, temp, fitted)
@@ -120,8 +135,7 @@ def export_friction_command(
         with writing("--out", out_file):
             atomic_write(Path(out_file), csv_text(result.rows).encode("utf-8"))
     if json_file:
-        write_json(json_file, json_document(result.as_dict(__version__)))
-    sys.stdout.flush()
+        write_result(json_file, result.as_dict())
 
 
 def _print_fit(console: Console, result: FrictionExport, temp: float, fitted: FrictionForm) -> None:
@@ -141,7 +155,7 @@ def _print_fit(console: Console, result: FrictionExport, temp: float, fitted: Fr
         columns.append(f"motor side (gear {result.gear_ratio:g})")
     for column in columns:
         table.add_column(column, justify="right")
-    doc = fitted.as_dict(result.lead, result.gear_ratio)
+    doc = fitted.as_drive_dict(result.lead, result.gear_ratio)
     side = doc["table_side"]
     for name, value in fitted.parameters.items():
         t_name = TABLE_SIDE.get(name, (None,))[0]
@@ -162,31 +176,14 @@ def _print_fit(console: Console, result: FrictionExport, temp: float, fitted: Fr
         click.echo(f"note: {note}", err=True)
 
 
-def _load_map(
-    case_file: str | None, model_name: str, temperature: str | None, speed: str,
-    axial_load: str | None, out_file: str | None, json_file: str | None,
-) -> None:  # fmt: skip
-    """``export-friction --form load-map``: the map, its compact form, and the file."""
+def _print_map(m: FrictionMap, out_file: str | None, json_file: str | None) -> None:
+    """``export-friction --form load-map``: the compact form's table, the notes and the file."""
     import numpy as np
 
-    from ..fit.export import log_speeds
-    from ..fit.friction_map import friction_map
-    from ..io.case import load_case
-    from ..io.units import parse_range
     from ..report.friction_files import write_map
-    from ..report.outputs import json_document
 
-    case = load_case(case_file)
-    if axial_load:
-        loads = np.asarray(parse_range("--axial-load", axial_load, "N"), dtype=float)
-    else:
-        given = np.abs(np.ravel(case.axial_load))
-        loads = np.unique(np.concatenate([-given, [0.0], given]))
-    temps = (parse_range("--temperature", temperature, "degC") if temperature
-             else np.ravel(case.temperature)[:1])  # fmt: skip
-    m = friction_map(case, model_name, speeds=log_speeds(speed), loads=loads, temperatures=temps)
     console = stdout(json_file)
-    fit = m.form.as_dict(m.lead, m.gear_ratio)
+    fit = m.form.as_drive_dict(m.lead, m.gear_ratio)
     table = Table(title=f"{m.case_title}: load map of {m.model}, {m.speeds.size} speeds x "
                   f"{m.loads.size} loads x {m.temperatures.size} temperatures")  # fmt: skip
     for column in ("parameter", "screw side", "table side", "motor side"):
@@ -209,5 +206,4 @@ def _load_map(
         with writing("--out", out_file):
             write_map(m, Path(out_file), __version__)
     if json_file:
-        write_json(json_file, json_document(m.as_dict(__version__)))
-    sys.stdout.flush()
+        write_result(json_file, m.as_dict())

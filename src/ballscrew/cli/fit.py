@@ -63,7 +63,7 @@ def fit_command(
         --free preload,ball_train_constant --out fit
     """  # noqa: D301 - click needs the literal \b to keep the example lines
     from ..errors import BallScrewInputError
-    from ..fit.calibration import FITTABLE, fit_parameters
+    from ..fit.calibration import FITTABLE, run_fit
     from ..friction import get_model
     from ..io.case import load_case
     from ..io.measured import read_measured
@@ -81,16 +81,11 @@ def fit_command(
             raise BallScrewInputError("--start", part, f"name=value with a unit; names: "
                                       f"{', '.join(sorted(FITTABLE))}")  # fmt: skip
         start[key] = to_si(f"--start {key}", value.strip(), FITTABLE[key].unit.replace("-", ""))
-    temp = (to_si("--temperature", temperature, "degC") if temperature
-            else float(case.temperature.flat[0]))  # fmt: skip
-    load = (to_si("--axial-load", axial_load, "N") if axial_load
-            else float(case.axial_load.flat[0]))  # fmt: skip
+    temp = to_si("--temperature", temperature, "degC") if temperature else None
+    load = to_si("--axial-load", axial_load, "N") if axial_load else None
     with stdout(json_file).status(f"fitting {', '.join(free)} of {model}"):
-        result = fit_parameters(
-            case.screw, case.lubricant, measured, free, model=model, temperature=temp,
-            axial_load=load, parameters=case.parameters_for(model), start=start,
-            ratings=case.load_ratings(),
-        )  # fmt: skip
+        result = run_fit(case, measured, free, model=model, start=start, temperature=temp,
+                         axial_load=load)  # fmt: skip
     table = Table(title=f"{case.title}: {model} fitted to {measured.source} "
                   f"({measured.speed.size} points)")  # fmt: skip
     for column in ("parameter", "start", "fitted", "95 % interval", "unit"):

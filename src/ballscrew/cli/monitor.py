@@ -9,8 +9,7 @@ from pathlib import Path
 import click
 from rich.table import Table
 
-from .._version import __version__
-from .common import case_option, stdout, write_json, writing
+from .common import case_option, stdout, write_result, writing
 
 __all__ = ["monitor_command"]
 
@@ -44,18 +43,17 @@ def monitor_command(
           --threshold "lift-off 3 kN" --plot preload.png --json preload.json
     """  # noqa: D301 - click needs the literal \b to keep the example lines
     from ..errors import BallScrewInputError
-    from ..fit.monitor import monitor_preload
+    from ..fit.monitor import run_monitor
     from ..io.case import load_case
     from ..io.files import atomic_write
     from ..io.series import read_series
-    from ..report.outputs import json_document
     from ..report.plotting import figure_bytes
 
     if plot_file and Path(plot_file).suffix.lower() not in (".png", ".svg"):
         raise BallScrewInputError("--plot", plot_file, "a file ending in .png or .svg")
     case = load_case(case_file)
     series = read_series(measured_file, case.screw)
-    r = monitor_preload(case, series, model=model_name, trend=trend, limit=limit)
+    r = run_monitor(case, series, model=model_name, trend=trend, limit=limit)
     console = stdout(json_file)
     table = Table(title=f"Preload read by {r.model} from {Path(series.source).name}")
     for column in ("time [h]", "torque [N*m]", "preload [N]", "95 % interval [N]", "trend [N]"):
@@ -86,5 +84,5 @@ def monitor_command(
         with writing("--plot", plot_file):
             atomic_write(path, figure_bytes(monitor_figure(r), path.suffix.lower()[1:]))
     if json_file:
-        write_json(json_file, json_document(r.as_dict(__version__)))
+        write_result(json_file, r.as_dict())
     sys.stdout.flush()

@@ -57,27 +57,20 @@ def _summary_table(report: Any) -> Table:
     return table
 
 
-def _percentile_table(out: Path) -> Table | None:
-    import xarray as xr
-
+def _percentile_table(p: Any) -> Table:
     from ..kinematics import rad_s_to_rpm
 
-    with xr.open_zarr(out) as ds:
-        if "torque_percentile" not in ds:
-            return None
-        p = ds["torque_percentile"].load()
     table = Table(title="Monte Carlo: friction torque percentiles [N·m]")
     table.add_column("model")
     table.add_column("speed [rpm]", justify="right")
-    for q in p["percentile"].values:
+    for q in p.percentiles:
         table.add_column(f"P{float(q):g}", justify="right")
-    speeds = p["speed"].values
+    speeds = p.speeds
     picks = sorted({0, len(speeds) // 2, len(speeds) - 1})
-    for model in p["model"].values:
+    for model, values in p.torque.items():
         for i in picks:
-            values = p.sel(model=model).isel(speed=i, temperature=0, axial_load=0).values
             table.add_row(str(model), f"{rad_s_to_rpm(speeds[i]):.4g}",
-                          *(f"{v:.4g}" for v in values))  # fmt: skip
+                          *(f"{v:.4g}" for v in values[i]))  # fmt: skip
     return table
 
 
@@ -106,29 +99,6 @@ def _figures(out: Path, report: Any) -> list[Path]:
             atomic_write(path, figure_bytes(fig, kind))
             written.append(path)
     return written
-
-
-def _json(report: Any) -> str:
-    data: dict[str, Any] = {
-        "store": str(report.out),
-        "points": report.plan.points,
-        "chunks": report.plan.n_chunks,
-        "dims": dict(zip(report.plan.dims, report.plan.shape, strict=True)),
-        "mode": report.mode,
-        "summary": report.summary,
-        "validity": list(report.issues),
-        "sobol": {
-            model: {
-                name: {
-                    "total": float(s.total[i]), "total_conf": float(s.total_conf[i]),
-                    "first": float(s.first[i]), "first_conf": float(s.first_conf[i]),
-                }
-                for i, name in enumerate(s.names)
-            }
-            for model, s in report.sobol.items()
-        },
-    }  # fmt: skip
-    return json.dumps(data, indent=2, ensure_ascii=False) + "\n"
 
 
 @click.command(name="sweep")
@@ -183,16 +153,10 @@ def sweep_command(
     require("sweep", "ballscrew sweep")
     from ..io.files import signal_received
     from ..sweep.execute import run_sweep
-    from ..sweep.plan import DEFAULT_MAX_POINTS, check_size, sweep_size
-    from ..sweep.spec import load_sweep
     from ..sweep.store import partial_path
 
-    spec = load_sweep(sweep_file)
-    size = sweep_size(spec)
-    check_size(size, max_points or DEFAULT_MAX_POINTS)
     target = Path(out)
     console = Console(stderr=True)
-    console.print(f"sweep: {size.describe()}", highlight=False)
     counts = [0, 0]
     with progress(console) as bar:
         task = bar.add_task("chunks", total=None)
@@ -204,8 +168,9 @@ def sweep_command(
         try:
             with writing("--out", out):
                 report = run_sweep(
-                    spec, target, workers=workers, scheduler=scheduler, restart=restart,
-                    progress=step, notify=lambda text: console.print(text, highlight=False),
+                    sweep_file, target, max_points=max_points, workers=workers,
+                    scheduler=scheduler, restart=restart, progress=step,
+                    notify=lambda text: console.print(text, highlight=False),
                 )  # fmt: skip
         except (KeyboardInterrupt, Exception) as exc:
             if not isinstance(exc, KeyboardInterrupt) and not signal_received():
@@ -219,9 +184,8 @@ def sweep_command(
             raise KeyboardInterrupt from exc
     console_out = stdout(json_file)
     console_out.print(_summary_table(report))
-    percentiles = _percentile_table(report.out)
-    if percentiles is not None:
-        console_out.print(percentiles)
+    if report.percentiles is not None:
+        console_out.print(_percentile_table(report.percentiles))
     for model, s in report.sobol.items():
         console_out.print(_sobol_table(model, s))
     with writing("--out", out):
@@ -231,7 +195,7 @@ def sweep_command(
     shown = _store_line(report, figures)
     click.echo(f"store: {target} {shown}", err=json_file == "-")
     if json_file is not None:
-        write_json(json_file, _json(report))
+        write_json(json_file, json.dumps(report.as_dict(), indent=2, ensure_ascii=False) + "\n")
 
 
 def _store_line(report: Any, figures: list[Path]) -> str:

@@ -41,19 +41,20 @@ def validate(out_dir: str, model_names: tuple[str, ...]) -> None:
       ballscrew validate --out scorecard
       ballscrew validate --model complete --model catalog
     """  # noqa: D301 - click needs the literal \b to keep the example lines
-    from ..chain import model_named, models
+    from ..chain import models
     from ..report.validation import summary_table, write_scorecard
-    from ..study.validation import score, summarise
+    from ..study.validation import run_validate
 
-    names = [model_named(name).name for name in model_names] or None
     console = Console(stderr=True)
     with progress(console) as bar:
-        total = len(names) if names else len(models())
+        total = len(model_names) if model_names else len(models())
         task = bar.add_task("scoring", total=total)
-        rows = score(names, progress=lambda name: bar.update(task, description=name, advance=1))
+        card = run_validate(
+            model_names, progress=lambda name: bar.update(task, description=name, advance=1)
+        )
     with writing("--out", out_dir), atomic_folder(Path(out_dir)) as folder:
-        files = write_scorecard(rows, folder)
-    header, table_rows = summary_table(summarise(rows))
+        files = write_scorecard(list(card.rows), folder)
+    header, table_rows = summary_table(list(card.scores))
     # One column per model, one row per group: narrow enough for an 80-column terminal.
     table = Table(title="Validation scorecard (cases inside their band)")
     table.add_column("", no_wrap=True)

@@ -18,10 +18,13 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from ..design.catalog_formulas import drag_torque_tolerance
+from ..chain import friction_torque
+from ..design.catalog_formulas import drag_torque_tolerance, preload_torque
 from ..errors import BallScrewInputError
+from ..io.case import Case
+from ..kinematics import rpm_to_rad_s
 
-__all__ = ["Acceptance", "accept_drag_torque"]
+__all__ = ["Acceptance", "accept_drag_torque", "reference_torque", "run_acceptance"]
 
 _SOURCE = "THK General Catalog A-688 Table 13 (JIS B 1192 / ISO 3408-3)"
 
@@ -47,9 +50,9 @@ class Acceptance:
     accepted: bool
     notes: list[str] = field(default_factory=list)
 
-    def as_dict(self, version: str) -> dict[str, Any]:
-        """The JSON document of ``ballscrew acceptance``."""
-        return {"ballscrew": version, "mean_torque_Nm": self.mean,
+    def as_dict(self) -> dict[str, Any]:
+        """The JSON document of ``ballscrew acceptance`` (the writer adds the version)."""
+        return {"mean_torque_Nm": self.mean,
                 "fluctuation_Nm": self.fluctuation, "readings": self.points,
                 "reference_Nm": self.reference, "reference_from": self.reference_source,
                 "grade": self.grade,
@@ -99,3 +102,45 @@ def accept_drag_torque(
     return Acceptance(mean, fluct, int(values.size), float(reference), reference_source,
                       grade.strip().upper(), row, low, high, bool(low <= mean <= high),
                       notes)  # fmt: skip
+
+
+def reference_torque(
+    case: Case, reference: str | float, model: str = "complete"
+) -> tuple[float, str]:
+    """The reference drag torque [N·m] of a case, and where it comes from.
+
+    ``reference`` is ``"catalog"`` (the makers' rule at the case's preload,
+    :func:`ballscrew.design.catalog_formulas.preload_torque`), ``"model"`` (``model``
+    at 100 rpm, no axial load, the case's first temperature) or a given torque [N·m].
+    """
+    screw = case.screw
+    if isinstance(reference, str):
+        choice = reference.strip().lower()
+        if choice == "catalog":
+            value = float(preload_torque(screw.preload, screw.lead, screw.lead_angle))
+            return value, f"the makers' rule at {screw.preload:.4g} N preload"
+        if choice == "model":
+            value = float(friction_torque(
+                screw, case.lubricant, speed=rpm_to_rad_s(100.0),
+                temperature=float(np.ravel(case.temperature)[0]), model=model,
+                **case.parameters_for(model)).total)  # fmt: skip
+            return value, f"{model} at 100 rpm, no axial load"
+        raise BallScrewInputError("reference", reference, "'catalog', 'model' or a torque")
+    return float(reference), "given"
+
+
+def run_acceptance(
+    case: Case,
+    torque: npt.ArrayLike,
+    *,
+    reference: str | float = "catalog",
+    model: str = "complete",
+    grade: str = "C3",
+) -> Acceptance:
+    """``ballscrew acceptance``: measured drag torques [N·m] of a case against its reference.
+
+    The reference is found by :func:`reference_torque`, the verdict given by
+    :func:`accept_drag_torque`.
+    """
+    value, source = reference_torque(case, reference, model)
+    return accept_drag_torque(torque, value, grade=grade, reference_source=source)

@@ -61,6 +61,7 @@ from ..errors import BallScrewInputError, FloatArray
 from ..friction import get_model
 from ..friction.complete import BALL_TRAIN_SCATTER
 from ..geometry import BallScrew
+from ..io.case import Case
 from ..io.measured import MeasuredCurve
 from ..lubricant import Lubricant
 from ..lubricants import get as get_lubricant
@@ -77,6 +78,7 @@ __all__ = [
     "absurdity_notes",
     "fit_parameters",
     "lag1_autocorrelation",
+    "run_fit",
     "runs_test",
 ]
 
@@ -338,6 +340,32 @@ def fit_parameters(
         reliable=not absurd,
         structure=structure,
     )
+
+
+def run_fit(
+    case: Case,
+    measured: MeasuredCurve,
+    free: Sequence[str],
+    *,
+    model: str = "complete",
+    start: dict[str, float] | None = None,
+    temperature: float | None = None,
+    axial_load: float | None = None,
+) -> FitResult:
+    """``ballscrew fit``: :func:`fit_parameters` of a case's screw, oil and model parameters.
+
+    ``temperature`` [°C] and ``axial_load`` [N] are used where the measured curve
+    has no such column; by default the case's first. The fitted screw is checked
+    against the case's load ratings.
+    """
+    name = get_model(model).name
+    temp = float(case.temperature.flat[0]) if temperature is None else temperature
+    load = float(case.axial_load.flat[0]) if axial_load is None else axial_load
+    return fit_parameters(
+        case.screw, case.lubricant, measured, free, model=name, temperature=temp,
+        axial_load=load, parameters=case.parameters_for(name), start=start,
+        ratings=case.load_ratings(),
+    )  # fmt: skip
 
 
 def _predictor(

@@ -159,11 +159,16 @@ class FrictionForm:
     notes: tuple[str, ...] = ()
     intervals: dict[str, tuple[float, float]] | None = None
 
-    def as_dict(self, lead: float | None = None, gear_ratio: float | None = None) -> dict[str, Any]:
-        """JSON-ready parameters: screw-side values with their units.
+    def as_dict(self) -> dict[str, Any]:
+        """JSON-ready parameters: screw-side values with their units (and 95 % intervals)."""
+        return self.as_drive_dict()
 
-        With 95 % intervals where fitted to a measurement; table-side values
-        when ``lead`` is given, motor-side ones when ``gear_ratio`` is.
+    def as_drive_dict(
+        self, lead: float | None = None, gear_ratio: float | None = None
+    ) -> dict[str, Any]:
+        """:meth:`as_dict` with table-side values for ``lead``, motor-side ones for ``gear_ratio``.
+
+        With 95 % intervals where fitted to a measurement.
         """
         out: dict[str, Any] = {
             "form": self.form,

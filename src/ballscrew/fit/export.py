@@ -29,8 +29,11 @@ from ..io.measured import MeasuredCurve
 from ..io.units import parse_range
 from ..kinematics import rad_s_to_rpm
 from .controller import FrictionForm, fit_form, form_curve, with_intervals
+from .friction_map import FrictionMap, friction_map
 
-__all__ = ["FrictionExport", "axis_inertia", "export_friction", "log_speeds"]
+__all__ = [
+    "FrictionExport", "axis_inertia", "export_friction", "log_speeds", "run_export_friction",
+]  # fmt: skip
 
 
 def log_speeds(text: str) -> FloatArray:
@@ -73,9 +76,9 @@ class FrictionExport:
         """The screw's lead [m]."""
         return self.case.screw.lead
 
-    def as_dict(self, version: str) -> dict[str, Any]:
-        """The JSON document of ``ballscrew export-friction --json``."""
-        payload: dict[str, Any] = {"ballscrew": version, "case": self.case.title,
+    def as_dict(self) -> dict[str, Any]:
+        """The JSON of ``ballscrew export-friction --json`` (the writer adds the version)."""
+        payload: dict[str, Any] = {"case": self.case.title,
                                    "model": self.model, "form": self.form,
                                    "lead_m": self.lead, "notes": list(self.notes)}  # fmt: skip
         if self.measured is not None:
@@ -84,7 +87,7 @@ class FrictionExport:
             payload["table"] = self.rows
             return payload
         fits = [{"temperature_C": t, "axial_load_N": self.axial_load,
-                 **f.as_dict(self.lead, self.gear_ratio)}
+                 **f.as_drive_dict(self.lead, self.gear_ratio)}
                 for t, f in self.fitted]  # fmt: skip
         payload["fits"] = fits
         payload |= {k: v for k, v in fits[0].items() if k in ("parameters", "rms_error_Nm")}
@@ -207,3 +210,39 @@ def _fit_measured(
         out.notes.append("the measured curve turns one way: the form is taken as odd in the "
                          "speed (the same friction both ways)")  # fmt: skip
     return out
+
+
+def run_export_friction(
+    case: Case,
+    model: str,
+    form: str,
+    *,
+    speeds: FloatArray,
+    temperatures: Sequence[float] | None = None,
+    axial_load: float | None = None,
+    loads: Sequence[float] | None = None,
+    inertia: float | None = None,
+    bristle_stiffness: float | None = None,
+    bristle_damping: float | None = None,
+    measured: MeasuredCurve | None = None,
+) -> FrictionExport | FrictionMap:
+    """``ballscrew export-friction``: a fitted form (:func:`export_friction`) or a load map.
+
+    For ``form="load-map"`` the map over ``speeds``, the signed ``loads`` [N]
+    (default: the case's loads, mirrored, and 0) and ``temperatures`` [°C]
+    (default: the case's first), with its compact form
+    (:func:`ballscrew.fit.friction_map.friction_map`).
+    """
+    if form != "load-map":
+        return export_friction(
+            case, model, form, temperatures=temperatures, speeds=speeds, axial_load=axial_load,
+            inertia=inertia, bristle_stiffness=bristle_stiffness,
+            bristle_damping=bristle_damping, measured=measured,
+        )  # fmt: skip
+    if loads is None:
+        given = np.abs(np.ravel(case.axial_load))
+        grid = np.unique(np.concatenate([-given, [0.0], given]))
+    else:
+        grid = np.asarray(loads, dtype=float)
+    temps = np.ravel(case.temperature)[:1] if temperatures is None else temperatures
+    return friction_map(case, model, speeds=speeds, loads=grid, temperatures=temps)

@@ -102,7 +102,7 @@ class LoadForm:
         """The form's friction torque [N·m] at screw speed [rad/s], load [N], temperature [°C]."""
         return load_form(speed, load, temperature, self)
 
-    def as_dict(self, lead: float, gear_ratio: float = 1.0) -> dict[str, Any]:
+    def as_drive_dict(self, lead: float, gear_ratio: float = 1.0) -> dict[str, Any]:
         """Parameters with units on the screw side, the table side and the motor side."""
         to_force = 2.0 * math.pi / lead  # N per N·m
         to_table_speed = lead / (2.0 * math.pi)  # m per rad
@@ -274,15 +274,15 @@ class FrictionMap:
             )
         ]  # fmt: skip
 
-    def as_dict(self, version: str) -> dict[str, Any]:
-        """The JSON document: axes, the compact form and the notes."""
+    def as_dict(self) -> dict[str, Any]:
+        """The JSON document: axes, the compact form and the notes (the writer adds the version)."""
         return {
-            "ballscrew": version, "case": self.case_title, "model": self.model,
+            "case": self.case_title, "model": self.model,
             "form": "load-map", "lead_m": self.lead, "gear_ratio": self.gear_ratio,
             "axes": {"temperature_C": self.temperatures.tolist(),
                      "axial_load_N": self.loads.tolist(),
                      "screw_speed_rad_s": self.speeds.tolist()},
-            "fit": self.form.as_dict(self.lead, self.gear_ratio),
+            "fit": self.form.as_drive_dict(self.lead, self.gear_ratio),
             "notes": list(self.notes),
         }  # fmt: skip
 

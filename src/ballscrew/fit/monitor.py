@@ -54,6 +54,7 @@ __all__ = [
     "invert",
     "monitor_preload",
     "preload_curves",
+    "run_monitor",
     "threshold",
 ]
 
@@ -201,8 +202,8 @@ class MonitorResult:
         """The trend and its 95 % band [N] at ``time`` [h]."""
         return _band(self, np.asarray(time, dtype=float))
 
-    def as_dict(self, version: str) -> dict[str, Any]:
-        """The JSON document of ``ballscrew monitor``."""
+    def as_dict(self) -> dict[str, Any]:
+        """The JSON document of ``ballscrew monitor`` (the writer adds the version)."""
         rows = [{"time_h": float(a), "torque_Nm": float(b), "preload_N": float(c),
                  "preload_low_N": float(d), "preload_high_N": float(e),
                  "trend_N": float(f), "trend_low_N": float(g), "trend_high_N": float(h)}
@@ -212,7 +213,7 @@ class MonitorResult:
                     strict=True)]  # fmt: skip
         unit = "1/h" if self.trend_kind == "exponential" else "N/h"
         return {
-            "ballscrew": version, "source": self.series.source, "model": self.model,
+            "source": self.series.source, "model": self.model,
             "trend": {"kind": self.trend_kind,
                       "initial_preload_N": _value(self.trend_kind, self.intercept),
                       "slope": {"value": self.slope, "unit": unit},
@@ -247,7 +248,7 @@ def _mean_band(
     return a + b * time, half
 
 
-def monitor_preload(
+def run_monitor(
     case: Case,
     series: TorqueSeries,
     *,
@@ -312,6 +313,17 @@ def monitor_preload(
     if n < 6:
         notes.append(f"{n} measurements: the intervals are wide (t quantile {q:.3g})")
     return result
+
+
+def monitor_preload(*args: Any, **kwargs: Any) -> MonitorResult:
+    """The former name of :func:`run_monitor` (for one release; it warns)."""
+    warnings.warn(
+        "ballscrew.fit.monitor.monitor_preload is now run_monitor (also ballscrew.fit."
+        "run_monitor); the old name goes in the next release",
+        DeprecationWarning,
+        stacklevel=2,
+    )
+    return run_monitor(*args, **kwargs)
 
 
 def _crossing(r: MonitorResult) -> None:

@@ -16,7 +16,8 @@ imported here, and registers its model with :func:`register` as it loads: a new
 model is a new module, nothing else. Modules starting with an underscore hold
 what the models share (the registry, the shear laws). The shipped models load
 first, in the order listings have always shown them; any other module follows,
-by name.
+by name. A model has the signature of :class:`FrictionModel` and its validity checks
+that of :class:`ballscrew.validity.ValidityCheck`; :func:`register` holds both to them.
 """
 
 from __future__ import annotations
@@ -24,9 +25,9 @@ from __future__ import annotations
 import importlib
 import pkgutil
 
-from ._registry import MODELS, ModelSpec, get_model, register
+from ._registry import MODELS, FrictionModel, ModelSpec, get_model, register
 
-__all__ = ["MODELS", "ModelSpec", "get_model", "register"]
+__all__ = ["MODELS", "FrictionModel", "ModelSpec", "get_model", "register"]
 
 _SHIPPED = ("catalog", "complete", "harris_simplified", "harris_full", "olaru", "viscoelastic")
 _OTHERS = sorted(m.name for m in pkgutil.iter_modules(__path__) if m.name not in _SHIPPED)

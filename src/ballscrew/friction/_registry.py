@@ -5,24 +5,40 @@ from __future__ import annotations
 import inspect
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, Protocol, TypeVar
 
 import numpy as np
 
 from ..errors import BallScrewInputError, FloatArray
 from ..geometry import BallScrew
 from ..lubricant import Lubricant
+from ..validity import ValidityCheck
 
-__all__ = ["MODELS", "ModelFunction", "ModelSpec", "get_model", "register"]
+__all__ = ["MODELS", "FrictionModel", "ModelFunction", "ModelSpec", "get_model", "register"]
 
-ModelFunction = Callable[..., dict[str, FloatArray]]
-"""A friction model: ``f(screw, lubricant, speed, temperature, axial_load, **params)``.
 
-``speed`` [rad/s], ``temperature`` [°C] and ``axial_load`` [N] arrive as
-broadcast float arrays of one shape; the model returns a mapping of named
-torque contributions on the screw [N·m], each of that shape, non-negative,
-whose sum is the friction torque.
-"""
+class FrictionModel(Protocol):
+    """A friction model, the one signature every model has.
+
+    Called as ``f(screw, lubricant, speed, temperature, axial_load, **params)``:
+    ``speed`` [rad/s], ``temperature`` [°C] and ``axial_load`` [N] arrive as
+    broadcast float arrays of one shape; ``params`` are the model's own keyword-only
+    parameters with their defaults (and ``state``, the contact state, for a model that
+    asks for it). The model returns a mapping of named torque contributions on the
+    screw [N·m], each of that shape, non-negative, whose sum is the friction torque.
+    """
+
+    def __call__(
+        self, screw: BallScrew, lubricant: Lubricant, speed: FloatArray, temperature: FloatArray,
+        axial_load: FloatArray, /, *args: Any, **params: Any,
+    ) -> dict[str, FloatArray]:  # fmt: skip
+        """The model's named torque contributions [N·m] at the broadcast points."""
+
+
+ModelFunction = FrictionModel
+"""The former name of :class:`FrictionModel`."""
+
+M = TypeVar("M", bound=FrictionModel)
 
 
 @dataclass(frozen=True)
@@ -33,7 +49,7 @@ class ModelSpec:
     ----------
     name : str
         Registry name, e.g. ``"harris-simplified"``.
-    function : ModelFunction
+    function : FrictionModel
         The model.
     title : str
         One-line description.
@@ -45,7 +61,7 @@ class ModelSpec:
         The model's own keyword parameters and their defaults.
     purpose : str
         What the model is for (to predict, to reproduce the study, ...).
-    checks : tuple of callables
+    checks : tuple of ValidityCheck
         The validity checks that apply to the model (see
         :mod:`ballscrew.validity`): the model declares them beside its
         equations, including checks of its own ranges.
@@ -59,14 +75,14 @@ class ModelSpec:
     """
 
     name: str
-    function: ModelFunction
+    function: FrictionModel
     title: str
     reference: str
     validity: str
     parameters: dict[str, Any] = field(default_factory=dict)
     purpose: str = ""
     chunk: int = 1 << 17
-    checks: tuple[Callable[..., Any], ...] = ()
+    checks: tuple[ValidityCheck, ...] = ()
     uses_state: bool = False
 
     def check_parameters(self, given: dict[str, Any]) -> None:
@@ -79,15 +95,9 @@ class ModelSpec:
                 )
 
     def __call__(
-        self,
-        screw: BallScrew,
-        lubricant: Lubricant,
-        speed: FloatArray,
-        temperature: FloatArray,
-        axial_load: FloatArray,
-        state: Any = None,
-        **params: Any,
-    ) -> dict[str, FloatArray]:
+        self, screw: BallScrew, lubricant: Lubricant, speed: FloatArray, temperature: FloatArray,
+        axial_load: FloatArray, state: Any = None, **params: Any,
+    ) -> dict[str, FloatArray]:  # fmt: skip
         """Evaluate the model (parameters checked first), with the contact state if given."""
         self.check_parameters(params)
         if state is not None and self.uses_state:
@@ -109,8 +119,8 @@ def register(
     validity: str,
     purpose: str = "",
     chunk: int = 1 << 17,
-    checks: tuple[Callable[..., Any], ...] = (),
-) -> Callable[[ModelFunction], ModelFunction]:
+    checks: tuple[ValidityCheck, ...] = (),
+) -> Callable[[M], M]:
     """Register a model function under ``name`` (decorator).
 
     The model's parameters and defaults are read from its keyword-only
@@ -120,7 +130,7 @@ def register(
     temporary arrays stay near 100 MB).
     """
 
-    def deco(func: ModelFunction) -> ModelFunction:
+    def deco(func: M) -> M:
         sig = inspect.signature(func)
         params = {
             p.name: p.default

@@ -40,7 +40,17 @@ from ..errors import BallScrewInputError, FloatArray
 from ..geometry import BallScrew, check_buildable
 from ..lubricant import Lubricant
 from .designation import resolve
-from .schema import SECTIONS, Assumed, CaseFile, LubricantSection, ScrewSection
+from .schema import (
+    SECTIONS,
+    Assumed,
+    AxisSection,
+    CaseFile,
+    CheckSection,
+    LubricantSection,
+    MotorSection,
+    ScrewSection,
+    si_units,
+)
 from .units import Reading, parse_range, to_si
 
 __all__ = [
@@ -390,44 +400,17 @@ def _operation(
     return speed, temperature, axial
 
 
-_AXIS_UNITS = (
-    ("moving_mass", "kg"),
-    ("screw_inertia", "kg*m**2"),
-    ("coupling_inertia", "kg*m**2"),
-    ("motor_inertia", "kg*m**2"),
-    ("gear_ratio", ""),
-    ("incline", "rad"),
-    ("bearing_bore", "m"),
-    ("bearing_span", "m"),
-    ("bearing_outer_diameter", "m"),
-    ("bearing_static_rating", "N"),
-    ("root_diameter", "m"),
-    ("dn_limit", "mm*rpm"),
-    ("max_feed", "m/s"),
-    ("max_acceleration", "m/s**2"),
-)
-"""The numeric ``[axis]`` keys of the axis and their SI units."""
+_AXIS_UNITS = tuple(si_units(AxisSection).items())
+"""The numeric ``[axis]`` keys of the axis and their SI units (from the schema)."""
 
-_THERMAL_UNITS = (
-    ("screw_length", "m"),
-    ("nut_mass", "kg"),
-    ("machine_resistance", "K/W"),
-    ("ambient", "degC"),
-)
-"""The thermal ``[axis]`` keys and their SI units."""
+_THERMAL_UNITS = tuple(si_units(AxisSection, "thermal").items())
+"""The thermal ``[axis]`` keys and their SI units (from the schema)."""
 
+_MOTOR_UNITS = tuple(si_units(MotorSection).items())
+"""The ``[motor]`` keys and their SI units (from the schema)."""
 
-_MOTOR_UNITS = (("rated_torque", "N*m"), ("peak_torque", "N*m"), ("rated_speed", "rad/s"))
-"""The ``[motor]`` keys and their SI units."""
-
-_CHECK_UNITS = (
-    ("required_life", "s"),
-    ("reliability", ""),
-    ("static_safety", ""),
-    ("support_stiffness", "N/m"),
-    ("pretension_temperature", "K"),
-)
-"""The numeric ``[check]`` keys and their SI units."""
+_CHECK_UNITS = tuple(si_units(CheckSection).items())
+"""The numeric ``[check]`` keys and their SI units (from the schema)."""
 
 
 def _check(data: CaseFile, si: Callable[[str, str, Any, str], float]) -> dict[str, Any]:
@@ -484,34 +467,13 @@ def _axis(data: CaseFile, si: Callable[[str, str, Any, str], float]) -> dict[str
     }
 
 
-SCREW_UNITS: dict[str, str] = {
-    "pitch_diameter": "m",
-    "lead": "m/turn",
-    "ball_diameter": "m",
-    "contact_angle": "rad",
-    "conformity_screw": "",
-    "conformity_nut": "",
-    "loaded_turns": "",
-    "circuits": "",
-    "youngs_modulus_ball": "Pa",
-    "youngs_modulus_races": "Pa",
-    "poisson_ratio_ball": "",
-    "poisson_ratio_races": "",
-    "roughness_ball": "m",
-    "roughness_screw": "m",
-    "roughness_nut": "m",
-}
-"""The SI unit of each numeric ``[screw]`` key that is a :class:`BallScrew` field ("" = none)."""
+SCREW_UNITS: dict[str, str] = si_units(ScrewSection)
+"""The SI unit of each numeric ``[screw]`` key that is a :class:`BallScrew` field ("" = none).
 
-LUBRICANT_UNITS: dict[str, str] = {
-    "nu40": "m**2/s",
-    "nu100": "m**2/s",
-    "density15": "kg/m**3",
-    "pressure_viscosity": "1/Pa",
-    "limiting_shear_stress": "Pa",
-    "limiting_shear_coefficient": "",
-}
-"""The SI unit of each numeric ``[lubricant]`` key ("" = none)."""
+Read from the schema (:func:`ballscrew.io.schema.si_units`), where each key states it."""
+
+LUBRICANT_UNITS: dict[str, str] = si_units(LubricantSection)
+"""The SI unit of each numeric ``[lubricant]`` key ("" = none), from the schema."""
 
 
 _LENGTHS = ("pitch_diameter", "lead", "ball_diameter")

@@ -25,6 +25,7 @@ __all__ = [
     "ReferenceRow",
     "reference_markdown",
     "reference_rows",
+    "si_units",
     "template",
 ]
 
@@ -41,14 +42,31 @@ Value = str | float | int | Assumed
 
 
 def _f(
-    default: Any, unit: str, text: str, example: Any = None, *, fill: bool = False, **kwargs: Any
+    default: Any,
+    unit: str,
+    text: str,
+    example: Any = None,
+    *,
+    fill: bool = False,
+    si: str | None = None,
+    group: str | None = None,
+    **kwargs: Any,
 ) -> Any:
     """A field with its unit (``"-"`` for a number) and an example value.
 
     ``fill``: an optional key that the template writes filled in (one of a
-    pair of which exactly one is needed).
+    pair of which exactly one is needed). ``si``: the SI unit the key's value is
+    read in (``""`` for a plain number), for the keys :mod:`ballscrew.io.case` turns
+    into numbers by :func:`si_units`; ``group`` sets some of a section's keys apart
+    (``"thermal"``: the thermal keys of ``[axis]``).
     """
-    extra = {"unit": unit, "example": example if example is not None else default, "fill": fill}
+    extra: dict[str, Any] = {
+        "unit": unit, "example": example if example is not None else default, "fill": fill,
+    }  # fmt: skip
+    if si is not None:
+        extra["si"] = si
+    if group is not None:
+        extra["group"] = group
     if default is ...:
         return Field(description=text, json_schema_extra=extra, **kwargs)
     return Field(default=default, description=text, json_schema_extra=extra, **kwargs)
@@ -71,6 +89,7 @@ class ScrewSection(BaseModel):
         "diameter through the ball centres d_m (required unless the designation gives it)",
         "40 mm",
         fill=True,
+        si="m",
     )
     lead: Value | None = _f(
         None,
@@ -78,6 +97,7 @@ class ScrewSection(BaseModel):
         "axial advance per screw revolution (required unless the designation gives it)",
         "10 mm",
         fill=True,
+        si="m/turn",
     )
     ball_diameter: Value | None = _f(
         None,
@@ -85,12 +105,13 @@ class ScrewSection(BaseModel):
         "ball diameter D_w (required unless the designation gives it)",
         "6.35 mm",
         fill=True,
+        si="m",
     )
-    contact_angle: Value = _f("45 deg", "angle", "nominal contact angle")
-    conformity_screw: Value = _f(0.55, "-", "screw groove radius / ball diameter (> 0.5)")
-    conformity_nut: Value = _f(0.55, "-", "nut groove radius / ball diameter (> 0.5)")
-    loaded_turns: Value = _f(2.5, "-", "loaded turns per circuit")
-    circuits: Value = _f(2, "-", "ball circuits per nut (per half-nut for a double nut)")
+    contact_angle: Value = _f("45 deg", "angle", "nominal contact angle", si="rad")
+    conformity_screw: Value = _f(0.55, "-", "screw groove radius / ball diameter (> 0.5)", si="")
+    conformity_nut: Value = _f(0.55, "-", "nut groove radius / ball diameter (> 0.5)", si="")
+    loaded_turns: Value = _f(2.5, "-", "loaded turns per circuit", si="")
+    circuits: Value = _f(2, "-", "ball circuits per nut (per half-nut for a double nut)", si="")
     # Left out (None): BallScrew's own defaults apply (one place for them).
     nut: Literal["double", "single", "single-4point"] | Assumed | None = _f(
         None,
@@ -138,13 +159,19 @@ class ScrewSection(BaseModel):
         "geometry by ISO 3408-5's 4200 MPa)",
         "184 kN",
     )
-    youngs_modulus_ball: Value | None = _f(None, "pressure", "default 210 GPa", "210 GPa")
-    youngs_modulus_races: Value | None = _f(None, "pressure", "default 210 GPa", "210 GPa")
-    poisson_ratio_ball: Value | None = _f(None, "-", "default 0.3", 0.3)
-    poisson_ratio_races: Value | None = _f(None, "-", "default 0.3", 0.3)
-    roughness_ball: Value | None = _f(None, "length", "RMS roughness, default 0.08 um", "0.08 um")
-    roughness_screw: Value | None = _f(None, "length", "RMS roughness, default 0.3 um", "0.3 um")
-    roughness_nut: Value | None = _f(None, "length", "RMS roughness, default 0.3 um", "0.3 um")
+    youngs_modulus_ball: Value | None = _f(None, "pressure", "default 210 GPa", "210 GPa", si="Pa")
+    youngs_modulus_races: Value | None = _f(None, "pressure", "default 210 GPa", "210 GPa", si="Pa")
+    poisson_ratio_ball: Value | None = _f(None, "-", "default 0.3", 0.3, si="")
+    poisson_ratio_races: Value | None = _f(None, "-", "default 0.3", 0.3, si="")
+    roughness_ball: Value | None = _f(
+        None, "length", "RMS roughness, default 0.08 um", "0.08 um", si="m"
+    )
+    roughness_screw: Value | None = _f(
+        None, "length", "RMS roughness, default 0.3 um", "0.3 um", si="m"
+    )
+    roughness_nut: Value | None = _f(
+        None, "length", "RMS roughness, default 0.3 um", "0.3 um", si="m"
+    )
     wiper_drag: Value | None = _f(
         None,
         "torque",
@@ -170,22 +197,26 @@ class LubricantSection(BaseModel):
         "kinematic viscosity",
         "your oil: viscosity at 40 °C (with nu100, density15)",
         "68 cSt",
+        si="m**2/s",
     )
     nu100: Value | None = _f(
-        None, "kinematic viscosity", "your oil: viscosity at 100 °C", "10.3 cSt"
+        None, "kinematic viscosity", "your oil: viscosity at 100 °C", "10.3 cSt", si="m**2/s"
     )
-    density15: Value | None = _f(None, "density", "your oil: density at 15 °C", "850 kg/m**3")
+    density15: Value | None = _f(
+        None, "density", "your oil: density at 15 °C", "850 kg/m**3", si="kg/m**3"
+    )
     pressure_viscosity: Value | None = _f(
         None,
         "1/pressure",
         "pressure-viscosity coefficient alpha (estimated if left out)",
         "18 1/GPa",
+        si="1/Pa",
     )
     limiting_shear_stress: Value | None = _f(
-        None, "pressure", "limiting shear stress tau_0 of the traction model", "2 MPa"
+        None, "pressure", "limiting shear stress tau_0 of the traction model", "2 MPa", si="Pa"
     )
     limiting_shear_coefficient: Value | None = _f(
-        None, "-", "pressure coefficient gamma_L of the limiting shear stress", 0.047
+        None, "-", "pressure coefficient gamma_L of the limiting shear stress", 0.047, si=""
     )
 
 
@@ -204,22 +235,28 @@ class AxisSection(BaseModel):
     """``[axis]``: what the screw moves and drives, for ``ballscrew energy``."""
 
     model_config = ConfigDict(extra="forbid")
-    moving_mass: Value = _f("0 kg", "mass", "table, workpiece and nut", "200 kg")
+    moving_mass: Value = _f("0 kg", "mass", "table, workpiece and nut", "200 kg", si="kg")
     screw_inertia: Value | None = _f(
         None,
         "moment of inertia",
         "of the screw (none: a solid steel shaft of the pitch diameter over screw_length)",
         "1.5e-3 kg*m**2",
+        si="kg*m**2",
     )
-    coupling_inertia: Value = _f("0 kg*m**2", "moment of inertia", "of the coupling")
-    motor_inertia: Value = _f("0 kg*m**2", "moment of inertia", "of the motor's rotor")
-    gear_ratio: Value = _f(1.0, "-", "motor turns per screw turn")
-    incline: Value = _f("0 deg", "angle", "of the axis above the horizontal (90 deg: vertical)")
+    coupling_inertia: Value = _f("0 kg*m**2", "moment of inertia", "of the coupling", si="kg*m**2")
+    motor_inertia: Value = _f(
+        "0 kg*m**2", "moment of inertia", "of the motor's rotor", si="kg*m**2"
+    )
+    gear_ratio: Value = _f(1.0, "-", "motor turns per screw turn", si="")
+    incline: Value = _f(
+        "0 deg", "angle", "of the axis above the horizontal (90 deg: vertical)", si="rad"
+    )
     bearing_bore: Value | None = _f(
         None,
         "length",
         "bore of the fixed-end support bearings (none: their friction left out)",
         "30 mm",
+        si="m",
     )
     bearing_type: str = _f(
         "angular-contact ball, single row",
@@ -233,6 +270,7 @@ class AxisSection(BaseModel):
         "outside diameter of the support bearings: their friction is then Palmgren's, "
         "rising with speed and viscosity (none: SKF's simplified estimate)",
         "62 mm",
+        si="m",
     )
     bearing_static_rating: Value | None = _f(
         None,
@@ -240,6 +278,7 @@ class AxisSection(BaseModel):
         "static load rating C0 of the support bearings, from their catalogue (needed with "
         "bearing_outer_diameter)",
         "40 kN",
+        si="N",
     )
     bearing_lubrication: str = _f(
         "grease",
@@ -258,29 +297,34 @@ class AxisSection(BaseModel):
         "length",
         "distance between the screw's supports (none: critical speed not checked)",
         "1 m",
+        si="m",
     )
     root_diameter: Value | None = _f(
         None,
         "length",
         "root diameter of the thread, from the catalogue (none: estimated from the groove)",
         "34.1 mm",
+        si="m",
     )
     dn_limit: Value = _f(
         "70000 mm*rpm",
         "length * angular speed",
         "the nut's d·n limit from its catalogue (pitch diameter times speed)",
+        si="mm*rpm",
     )
     max_feed: Value | None = _f(
         None,
         "speed",
         "the axis' speed limit (drive, guideways); a motion faster than it is refused",
         "0.5 m/s",
+        si="m/s",
     )
     max_acceleration: Value | None = _f(
         None,
         "acceleration",
         "the axis' acceleration limit; a motion that accelerates harder is refused",
         "5 m/s**2",
+        si="m/s**2",
     )
     screw_length: Value | None = _f(
         None,
@@ -288,15 +332,23 @@ class AxisSection(BaseModel):
         "screw length in the air, for the temperature (none: estimated from the stroke, "
         "the nut and the diameter)",
         "1 m",
+        si="m",
+        group="thermal",
     )
-    nut_mass: Value = _f("0 kg", "mass", "of the nut, for the heat capacity", "3 kg")
+    nut_mass: Value = _f(
+        "0 kg", "mass", "of the nut, for the heat capacity", "3 kg", si="kg", group="thermal"
+    )
     machine_resistance: Value | None = _f(
         None,
         "thermal resistance",
         "from the nut into the machine (none: convection only)",
         "2 K/W",
+        si="K/W",
+        group="thermal",
     )
-    ambient: Value = _f("20 degC", "temperature", "of the air and the machine")
+    ambient: Value = _f(
+        "20 degC", "temperature", "of the air and the machine", si="degC", group="thermal"
+    )
 
 
 class MotorSection(BaseModel):
@@ -307,13 +359,25 @@ class MotorSection(BaseModel):
 
     model_config = ConfigDict(extra="forbid")
     rated_torque: Value | None = _f(
-        None, "torque", "continuous (rated) torque, against the cycle's RMS torque", "2.4 N*m"
+        None,
+        "torque",
+        "continuous (rated) torque, against the cycle's RMS torque",
+        "2.4 N*m",
+        si="N*m",
     )
     peak_torque: Value | None = _f(
-        None, "torque", "peak torque of motor and drive, against the cycle's peak", "7.2 N*m"
+        None,
+        "torque",
+        "peak torque of motor and drive, against the cycle's peak",
+        "7.2 N*m",
+        si="N*m",
     )
     rated_speed: Value | None = _f(
-        None, "angular speed", "speed up to which the motor gives its torque", "3000 rpm"
+        None,
+        "angular speed",
+        "speed up to which the motor gives its torque",
+        "3000 rpm",
+        si="rad/s",
     )
 
 
@@ -327,13 +391,17 @@ class CheckSection(BaseModel):
         "nominal life the screw must reach (none: 20000 h, THK's and NSK's figure for "
         "machine tools)",
         "20000 h",
+        si="s",
     )
-    reliability: Value = _f("90 %", "-", "reliability of the life (90 to 99 %, ISO 3408-5 a1)")
+    reliability: Value = _f(
+        "90 %", "-", "reliability of the life (90 to 99 %, ISO 3408-5 a1)", si=""
+    )
     static_safety: Value = _f(
         2.0,
         "-",
         "least static safety factor C_0a/F_max (THK's guideline for machine tools: 1 to "
         "1.5 without vibration or impact, 2.5 to 7 with)",
+        si="",
     )
     accuracy_grade: str | None = _f(
         None,
@@ -348,12 +416,14 @@ class CheckSection(BaseModel):
         "axial stiffness of the thrust bearings, from their catalogue (none: taken as rigid, "
         "and said so)",
         "750 N/um",
+        si="N/m",
     )
     pretension_temperature: Value = _f(
         "0 K",
         "temperature difference",
         "temperature rise that the screw's pre-tension absorbs (fixed-fixed mounting; 0: none)",
         "3 K",
+        si="K",
     )
 
 
@@ -460,6 +530,19 @@ def _default(info: FieldInfo) -> Any:
     if info.default_factory is not None:
         return info.default_factory()  # type: ignore[call-arg]
     return info.default
+
+
+def si_units(section: type[BaseModel], group: str | None = None) -> dict[str, str]:
+    """Key -> SI unit of the numeric keys of a section (``""``: a plain number), in order.
+
+    Only the keys of ``group`` (by default those in no group).
+    """
+    out: dict[str, str] = {}
+    for key, info in section.model_fields.items():
+        extra = info.json_schema_extra if isinstance(info.json_schema_extra, dict) else {}
+        if "si" in extra and extra.get("group") == group:
+            out[key] = str(extra["si"])
+    return out
 
 
 def reference_rows() -> list[ReferenceRow]:

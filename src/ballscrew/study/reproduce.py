@@ -57,6 +57,22 @@ class StudyResult:
     axial_load: float = 0.0
     sensitivity: StudySensitivity | None = None
 
+    def as_dict(self) -> dict[str, Any]:
+        """The study's numbers: figures and their series, findings, metrics, validity."""
+        return {
+            "case": self.case.title,
+            "reproduction": self.reproduction,
+            "axial_load_N": self.axial_load,
+            "preloads_N": {str(k): v for k, v in self.preloads.items()},
+            "figures": [f.as_dict() for f in self.figures],
+            "viscosity": [list(row) for row in self.viscosity_table],
+            "findings": list(self.findings),
+            "measured": None if self.measured is None else self.measured.source,
+            "metrics": self.metrics,
+            "validity": list(self.validity),
+            "sensitivity": None if self.sensitivity is None else self.sensitivity.as_dict(),
+        }
+
 
 def _controller_figure(model_curve: Series, at: str) -> Figure:
     """The complete model's curve and the Stribeck curve a controller would take from it."""

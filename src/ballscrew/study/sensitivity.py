@@ -14,6 +14,7 @@ from __future__ import annotations
 import math
 import warnings
 from dataclasses import dataclass, replace
+from typing import Any
 
 import numpy as np
 
@@ -54,6 +55,18 @@ class StudySensitivity:
     spread: tuple[float, float, float]
     speeds: tuple[float, float]
     n_speeds: int
+
+    def as_dict(self) -> dict[str, Any]:
+        """The inputs (label, distribution, source), the indices and the sample's size."""
+        return {
+            "inputs": [{"name": i.distribution.name, "label": i.label,
+                        "distribution": i.distribution.describe(), "source": i.source}
+                       for i in self.inputs],
+            "indices": self.indices.as_dict(),
+            "base_samples": self.base_samples, "evaluations": self.evaluations,
+            "spread_Nm": list(self.spread), "speeds_rad_s": list(self.speeds),
+            "n_speeds": self.n_speeds,
+        }  # fmt: skip
 
     def indices_labelled(self) -> SobolIndices:
         """The indices with the inputs' labels for names (for figures)."""

@@ -54,8 +54,8 @@ import csv
 import io
 import math
 import warnings
-from collections.abc import Callable
-from dataclasses import dataclass, replace
+from collections.abc import Callable, Sequence
+from dataclasses import asdict, dataclass, replace
 from importlib import resources
 from typing import Any
 
@@ -65,6 +65,7 @@ import numpy.typing as npt
 from ..chain import friction_torque, models
 from ..design.catalog_formulas import DRAG_TORQUE_TOLERANCE
 from ..errors import BallScrewValidityWarning, FloatArray
+from ..friction import get_model
 from ..geometry import BallScrew, reference_screw
 from ..kinematics import rpm_to_rad_s
 from ..lubricant import Lubricant
@@ -72,12 +73,15 @@ from ..lubricants import get as get_lubricant
 
 __all__ = [
     "ACCEPTANCE_BANDS",
+    "ModelScore",
     "ReferenceCase",
     "ScoreRow",
+    "Scorecard",
     "acceptance_band",
     "bundled_summary",
     "jungnickel_loss_torque",
     "load_cases",
+    "run_validate",
     "score",
     "screw_from_row",
     "summarise",
@@ -552,6 +556,35 @@ def summarise(rows: list[ScoreRow]) -> list[ModelScore]:
             )
         )
     return out
+
+
+@dataclass(frozen=True)
+class Scorecard:
+    """Every model's rows on the reference cases and trends, and each model's summary."""
+
+    rows: tuple[ScoreRow, ...]
+    scores: tuple[ModelScore, ...]
+
+    def as_dict(self) -> dict[str, Any]:
+        """The rows (with their ratio and whether inside the band) and the summaries."""
+        return {
+            "rows": [{**asdict(r), "ratio": r.ratio, "within": r.within} for r in self.rows],
+            "scores": [asdict(s) for s in self.scores],
+        }
+
+
+def run_validate(
+    model_names: Sequence[str] | None = None,
+    *,
+    progress: Callable[[str], object] | None = None,
+) -> Scorecard:
+    """``ballscrew validate``: every model (or those named) on every bundled reference case.
+
+    ``progress`` is called with each model's name as it is scored.
+    """
+    names = [get_model(name).name for name in model_names or ()] or None
+    rows = score(names, progress=progress)
+    return Scorecard(tuple(rows), tuple(summarise(rows)))
 
 
 def bundled_summary() -> dict[str, dict[str, str]]:

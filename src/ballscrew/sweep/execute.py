@@ -1,11 +1,13 @@
 """Design-space sweeps: a labelled N-dimensional result, computed in chunks, streamed to Zarr.
 
-:func:`run_sweep` lays the sweep out (:mod:`ballscrew.sweep.plan`), creates
-the store (:mod:`ballscrew.sweep.store`) and computes the chunks in this
-process, on a local Dask cluster (``workers``) or on a running one
-(``scheduler``); each chunk is written by the process that computed it (the
-store must be on a file system the workers share) and then marked done. The
-same function computes each chunk in every mode, so the arrays are identical.
+:func:`run_sweep` (``ballscrew sweep``) reads the sweep file
+(:mod:`ballscrew.sweep.spec`), lays it out (:mod:`ballscrew.sweep.plan`), hands
+the layout to the store (:mod:`ballscrew.sweep.store`) and computes the chunks
+(:mod:`ballscrew.sweep.compute`) in this process, on a local Dask cluster
+(``workers``) or on a running one (``scheduler``); each chunk is written by the
+process that computed it (the store must be on a file system the workers share)
+and then marked done. The same function computes each chunk in every mode, so the
+arrays are identical.
 
 Interruptions: the store is built under a temporary name beside the target
 (``.NAME.partial``) and renamed to the target only when complete. A chunk's
@@ -26,14 +28,36 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import BallScrewInputError
+from ..errors import BallScrewInputError, FloatArray
 from ..helix import JIT_LOAD_POINTS, load_kernel
 from ..io.extras import require
 from ..io.files import OutputInUseError, exclusive_lock
-from .plan import ChunkReport, Plan, plan_sweep, run_chunk
-from .spec import OPERATING, SweepSpec
+from . import store
+from .compute import ChunkReport, compute_chunk, summarise, worst_issues
+from .plan import DEFAULT_MAX_POINTS, LONG_NAMES, Plan, check_size, plan_sweep, sweep_size
+from .spec import OPERATING, OUTPUTS, SCALAR_OUTPUTS, SweepSpec, load_sweep
 
-__all__ = ["SweepReport", "plan_sweep", "run_sweep"]
+__all__ = ["Percentiles", "SweepReport", "plan_sweep", "run_chunk", "run_sweep"]
+
+
+@dataclass(frozen=True)
+class Percentiles:
+    """Monte Carlo percentiles of the torque [N·m] at the first temperature and axial load.
+
+    ``torque[model]`` has one row per speed [rad/s] and one column per percentile [%].
+    """
+
+    percentiles: FloatArray
+    speeds: FloatArray
+    torque: dict[str, FloatArray]
+
+    def as_dict(self) -> dict[str, Any]:
+        """Percentiles [%], speeds [rad/s] and, per model, the torque rows [N·m]."""
+        return {
+            "percentiles": self.percentiles.tolist(),
+            "speed_rad_s": self.speeds.tolist(),
+            "torque_Nm": {model: values.tolist() for model, values in self.torque.items()},
+        }
 
 
 @dataclass(frozen=True)
@@ -60,6 +84,8 @@ class SweepReport:
         Model -> :class:`ballscrew.sweep.sensitivity.SobolIndices` (when asked for).
     mode : str
         ``in process``, ``N local workers`` or the scheduler's address.
+    percentiles : Percentiles or None
+        The torque's Monte Carlo percentiles (when there are samples and a torque).
     """
 
     out: Path
@@ -72,6 +98,7 @@ class SweepReport:
     peak_rss: dict[int, int]
     sobol: dict[str, Any]
     mode: str
+    percentiles: Percentiles | None = None
 
     @property
     def points_per_second(self) -> float:
@@ -79,55 +106,25 @@ class SweepReport:
         done = self.plan.points * self.computed / max(self.plan.n_chunks, 1)
         return done / self.seconds if self.seconds > 0 else math.nan
 
-
-def _where(plan: Plan, flat: float) -> dict[str, Any]:
-    """The coordinates of a point of the grid given as a flat index."""
-    position = [int(i) for i in np.unravel_index(int(flat), plan.shape)]
-    n_outer = len(plan.outer)
-    found: dict[str, Any] = plan.outer_point(position[1 : 1 + n_outer])
-    if "sample" in plan.outer:
-        found["sample"] = position[plan.dims.index("sample")]
-    for dim in OPERATING:
-        found[dim] = float(plan.spec.operating[dim][position[plan.dims.index(dim)]])
-    return found
-
-
-def _summary(plan: Plan, reports: Iterable[dict[str, Any]]) -> dict[str, dict[str, Any]]:
-    """Min, mean and max of each output per model, from the chunk reports (in index order)."""
-    acc: dict[str, list[float]] = {}
-    for report in sorted(reports, key=lambda r: int(r["index"])):
-        model = plan.spec.models[plan.region(int(report["index"]))[0].start]
-        for name, s in report["stats"].items():
-            a = acc.setdefault(f"{name}\0{model}", [math.inf, -1.0, -math.inf, -1.0, 0.0, 0.0])
-            if s["min"][0] < a[0]:
-                a[0], a[1] = s["min"]
-            if s["max"][0] > a[2]:
-                a[2], a[3] = s["max"]
-            a[4] += s["sum"][0]
-            a[5] += s["sum"][1]
-    summary: dict[str, dict[str, Any]] = {}
-    for key, a in acc.items():
-        name, model = key.split("\0")
-        summary.setdefault(name, {})[model] = {
-            "min": a[0], "mean": a[4] / a[5] if a[5] else math.nan, "max": a[2],
-            "min_at": _where(plan, a[1]), "max_at": _where(plan, a[3]),
-        }  # fmt: skip
-    return summary
-
-
-def _issues(reports: Iterable[dict[str, Any]]) -> tuple[str, ...]:
-    worst: dict[str, tuple[float, str]] = {}
-    for report in sorted(reports, key=lambda r: int(r["index"])):
-        for quantity, (excess, note) in report["issues"].items():
-            if quantity not in worst or excess > worst[quantity][0]:
-                worst[quantity] = (excess, note)
-    return tuple(note for _, note in worst.values())
+    def as_dict(self) -> dict[str, Any]:
+        """The JSON document of ``ballscrew sweep --json``."""
+        return {
+            "store": str(self.out),
+            "points": self.plan.points,
+            "chunks": self.plan.n_chunks,
+            "dims": dict(zip(self.plan.dims, self.plan.shape, strict=True)),
+            "mode": self.mode,
+            "summary": self.summary,
+            "validity": list(self.issues),
+            "sobol": {model: s.as_dict() for model, s in self.sobol.items()},
+        }
 
 
 def run_sweep(
-    spec: SweepSpec,
+    sweep: SweepSpec | str | Path,
     out: str | Path,
     *,
+    max_points: int | None = None,
     workers: int | None = None,
     scheduler: str | None = None,
     restart: bool = False,
@@ -138,10 +135,13 @@ def run_sweep(
 
     Parameters
     ----------
-    spec : SweepSpec
-        The checked sweep file.
+    sweep : SweepSpec, str or Path
+        The checked sweep file, or its path.
     out : str or Path
         The store to write; an earlier sweep store there is replaced at the end.
+    max_points : int, optional
+        The most points the sweep may have (default :data:`DEFAULT_MAX_POINTS`); its
+        size is told (``notify``) before it starts.
     workers : int, optional
         Run on a local Dask cluster of this many worker processes (on 127.0.0.1).
     scheduler : str, optional
@@ -152,7 +152,8 @@ def run_sweep(
     progress : callable, optional
         Called with (chunks done, chunks in all) as chunks finish.
     notify : callable, optional
-        Called with a sentence when a run is resumed or restarted.
+        Called with a sentence: the sweep's size, and whether a run is resumed or
+        restarted.
 
     Raises
     ------
@@ -160,8 +161,11 @@ def run_sweep(
         When the ``sweep`` extra is not installed.
     """
     require("sweep", "ballscrew.sweep.execute.run_sweep")
-    from . import store
-
+    spec = load_sweep(sweep) if isinstance(sweep, str | Path) else sweep
+    size = sweep_size(spec)
+    check_size(size, max_points or DEFAULT_MAX_POINTS)
+    if notify is not None:
+        notify(f"sweep: {size.describe()}")
     if workers is not None and scheduler is not None:
         raise BallScrewInputError("--workers", workers, "either --workers or --scheduler")
     if workers is not None and (isinstance(workers, bool) or workers < 1):
@@ -190,22 +194,11 @@ def _run(
     progress: Callable[[int, int], None] | None,
     notify: Callable[[str], None] | None,
 ) -> SweepReport:
-    """The sweep, with the lock on its output held."""
-    from . import store
-
+    """The sweep, with the lock on its output held: spec -> plan -> chunks -> store."""
     plan = plan_sweep(spec)
-    key = plan.fingerprint()
+    key = plan.key
     partial = store.partial_path(target)
-    tell = notify or (lambda _text: None)
-    done = None if restart else store.markers(partial, key)
-    if done is None:
-        if partial.exists():
-            tell(f"restarting: {partial} holds another sweep's chunks" if not restart
-                 else f"restarting: the chunks in {partial} are discarded")  # fmt: skip
-        store.create(plan, partial, key)
-        done = {}
-    elif done:
-        tell(f"resuming: {len(done)} of {plan.n_chunks} chunks already done in {partial}")
+    done = _start(plan, partial, key, restart, notify or (lambda _text: None))
     todo = [i for i in range(plan.n_chunks) if i not in done]
     reports: dict[int, dict[str, Any]] = dict(done)
     step = progress or (lambda _done, _total: None)
@@ -226,21 +219,9 @@ def _run(
             step(len(reports), plan.n_chunks)
         start = ready[0]
     seconds = time.perf_counter() - start
-    sobol: dict[str, Any] = {}
-    u = spec.uncertainty
-    if u is not None:
-        variables = store.percentile_variables(partial, plan)
-        if u.sensitivity == "sobol":
-            from .sensitivity import sobol_indices
-
-            means = store.mean_torque(partial)
-            sobol = {m: sobol_indices(u.inputs, means[i], u.seed) for i, m in
-                     enumerate(spec.models)}  # fmt: skip
-            names = [d.name for d in u.inputs]
-            variables |= store.sobol_variables(names, [sobol[m] for m in spec.models])
-        store.add_variables(partial, variables)
-    summary = _summary(plan, reports.values())
-    issues = _issues(reports.values())
+    sobol, percentiles = _uncertainty(spec, partial)
+    summary = summarise(reports.values())
+    issues = worst_issues(reports.values())
     if store.markers(partial, key) is None:  # the lock makes this impossible, but check
         raise BallScrewInputError("--out", str(target), "a store this run alone wrote")
     store.finalize(partial, target, {"summary": summary, "validity": list(issues)})
@@ -248,8 +229,63 @@ def _run(
     for r in reports.values():
         peak[int(r["pid"])] = max(peak.get(int(r["pid"]), 0), int(r["peak_rss"]))
     return SweepReport(
-        target, plan, len(todo), len(done), seconds, summary, issues, peak, sobol, mode
-    )
+        target, plan, len(todo), len(done), seconds, summary, issues, peak, sobol, mode,
+        percentiles,
+    )  # fmt: skip
+
+
+def _start(
+    plan: Plan, partial: Path, key: str, restart: bool, tell: Callable[[str], None]
+) -> dict[int, dict[str, Any]]:
+    """The chunks an interrupted run of the same sweep left, or a new store and none."""
+    done = None if restart else store.markers(partial, key)
+    if done is None:
+        if partial.exists():
+            tell(f"restarting: {partial} holds another sweep's chunks" if not restart
+                 else f"restarting: the chunks in {partial} are discarded")  # fmt: skip
+        assert plan.layout is not None
+        store.create(plan.layout, partial, key)
+        return {}
+    if done:
+        tell(f"resuming: {len(done)} of {plan.n_chunks} chunks already done in {partial}")
+    return done
+
+
+def run_chunk(index: int, plan: Plan, partial: str, key: str) -> ChunkReport:
+    """Compute chunk ``index`` and hand it to the store, which writes it and marks it done."""
+    blocks, report = compute_chunk(plan.chunk(index))
+    store.write_chunk(Path(partial), key, blocks, asdict(report))
+    return report
+
+
+def _uncertainty(spec: SweepSpec, partial: Path) -> tuple[dict[str, Any], Percentiles | None]:
+    """Percentiles and Sobol indices, computed from the store and added to it."""
+    u = spec.uncertainty
+    if u is None:
+        return {}, None
+    outputs = {o.name: (OUTPUTS[o.name], LONG_NAMES[o.name]) for o in SCALAR_OUTPUTS}
+    variables = store.percentile_variables(partial, u.percentiles, outputs)
+    sobol: dict[str, Any] = {}
+    if u.sensitivity == "sobol":
+        from .sensitivity import sobol_indices
+
+        means = store.mean_torque(partial, list(OPERATING))
+        sobol = {m: sobol_indices(u.inputs, means[i], u.seed) for i, m in
+                 enumerate(spec.models)}  # fmt: skip
+        names = [d.name for d in u.inputs]
+        variables |= store.sobol_variables(names, [sobol[m] for m in spec.models])
+    store.add_variables(partial, variables)
+    percentiles = None
+    torque = variables.get("torque_percentile")
+    if torque is not None:
+        first = {d: 0 for d in torque.dims if d not in ("percentile", "model", "speed")}
+        values = torque.isel(first).transpose("model", "speed", "percentile").values
+        percentiles = Percentiles(
+            np.asarray(variables["percentile"].values, dtype=float),
+            np.asarray(spec.operating["speed"], dtype=float),
+            {m: values[i] for i, m in enumerate(spec.models)},
+        )
+    return sobol, percentiles
 
 
 def _warm_up() -> None:
@@ -260,7 +296,7 @@ def _warm_up() -> None:
 
 
 def _distributed(
-    plan: Plan, todo: Sequence[int], store: str, key: str, workers: int | None,
+    plan: Plan, todo: Sequence[int], partial: str, key: str, workers: int | None,
     scheduler: str | None, ready: list[float],
 ) -> Iterable[ChunkReport]:  # fmt: skip
     """Run the chunks on a Dask cluster, yielding reports as they finish (a bounded window).
@@ -306,7 +342,7 @@ def _distributed(
         pending = iter(todo)
 
         def submit(index: int) -> Any:
-            return client.submit(run_chunk, index, shared, store, key, pure=False)
+            return client.submit(run_chunk, index, shared, partial, key, pure=False)
 
         running = as_completed([submit(i) for i in itertools.islice(pending, window)])
         try:

@@ -1,17 +1,17 @@
-"""The grid of a sweep, its chunks, and the evaluation of one chunk.
+"""The grid of a sweep, its chunks, and the layout of its store.
 
 :func:`plan_sweep` lays a :class:`~ballscrew.sweep.spec.SweepSpec` out as a
 grid of dimensions ``model``, the outer axes (case fields, model parameters,
 and ``sample`` for Monte Carlo), then ``speed``, ``temperature`` and
 ``axial_load``, cut into chunks of about ``chunk_points`` points (the Zarr
 store's chunks). A chunk holds one model and a block of outer points (a single
-screw whenever the operating grid is large); :func:`compute_chunk` calls
-:func:`ballscrew.chain.friction_torque` once per screw with the chunk's
-operating points as an unexpanded outer product, so the screw-dependent state
-is built once per chunk, never per point, and no Python loop runs over
-operating points. :func:`run_chunk` writes a chunk into the store (a Zarr
-region write) and then marks it done; it runs in this process or on a Dask
-worker alike, which is why every execution mode gives the same arrays.
+screw whenever the operating grid is large). :func:`layout` says what the store
+holds: its coordinates, its empty arrays and its attributes, as plain data that
+:func:`ballscrew.sweep.store.create` writes. The chunks are computed by
+:mod:`ballscrew.sweep.compute`.
+
+The pipeline: spec -> plan -> (layout -> store) and (chunk -> compute -> store);
+the store is handed what it writes and never reads the plan.
 """
 
 from __future__ import annotations
@@ -20,13 +20,8 @@ import hashlib
 import itertools
 import json
 import math
-import os
-import resource
-import sys
-import time
 from collections.abc import Sequence
-from dataclasses import asdict, dataclass, field
-from pathlib import Path
+from dataclasses import asdict, dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -34,25 +29,67 @@ import numpy as np
 from .._version import __version__
 from ..chain import friction_torque
 from ..errors import BallScrewInputError, FloatArray
-from ..io.files import atomic_write, deferred_signals
-from .spec import OPERATING, OUTPUTS, SCALAR_OUTPUTS, SweepSpec, resolve
+from ..friction import get_model
+from ..io.case import Case
+from .spec import OPERATING, OUTPUT_TABLE, OUTPUTS, SweepSpec, resolve
+from .store import Layout, json_safe
 
 __all__ = [
     "DEFAULT_MAX_POINTS",
-    "ChunkReport",
+    "LONG_NAMES",
+    "Chunk",
     "Plan",
     "SweepSize",
     "check_size",
-    "compute_chunk",
+    "layout",
     "plan_sweep",
-    "run_chunk",
     "sweep_size",
 ]
 
 
 @dataclass(frozen=True)
+class Chunk:
+    """One chunk's work, handed to :func:`ballscrew.sweep.compute.compute_chunk` whole.
+
+    Attributes
+    ----------
+    index : int
+        The chunk's number.
+    model : str
+        Its friction model, and ``parameters`` the model's fixed parameters.
+    case : Case
+        The base case the outer points change.
+    region : tuple of slice
+        Where the chunk lies in the grid (dimensions as :attr:`Plan.dims`).
+    points : tuple of dict
+        Field name -> value of each outer point, in C order over the chunk's outer
+        positions; ``samples`` the Monte Carlo sample of each (None without samples).
+    operating : tuple of array
+        The chunk's speeds [rad/s], temperatures [°C] and axial loads [N].
+    outputs : tuple of str
+        The outputs asked for; ``components`` the names along the components' dimension.
+    """
+
+    index: int
+    model: str
+    parameters: dict[str, Any]
+    case: Case
+    region: tuple[slice, ...]
+    points: tuple[dict[str, Any], ...]
+    samples: tuple[int | None, ...]
+    operating: tuple[FloatArray, FloatArray, FloatArray]
+    outputs: tuple[str, ...]
+    components: tuple[str, ...]
+
+
+@dataclass(frozen=True)
 class Plan:
-    """The grid of a sweep and its chunks (picklable: sent once to every worker)."""
+    """The grid of a sweep, its chunks and its store's layout.
+
+    Picklable: sent once to every worker. ``key`` identifies the sweep (a partial
+    store is resumed only by the same sweep); ``layout`` is what the store is
+    created with.
+    """
 
     spec: SweepSpec
     dims: tuple[str, ...]
@@ -63,6 +100,8 @@ class Plan:
     components: tuple[str, ...]
     model_components: dict[str, tuple[str, ...]]
     parameters: dict[str, dict[str, Any]]
+    key: str = ""
+    layout: Layout | None = None
 
     @property
     def grid(self) -> tuple[int, ...]:
@@ -99,6 +138,25 @@ class Plan:
                 axis = next(a for a in self.spec.axes if a.name == name)
                 point[name] = axis.values[i]
         return point
+
+    def chunk(self, index: int) -> Chunk:
+        """The work of chunk ``index``: its model, region, outer points and operating points."""
+        region = self.region(index)
+        n_outer = len(self.outer)
+        positions = list(
+            itertools.product(*(range(s.start, s.stop) for s in region[1 : 1 + n_outer]))
+        )
+        at = self.outer.index("sample") if "sample" in self.outer else None
+        w, t, f = (
+            self.spec.operating[k][s] for k, s in zip(OPERATING, region[1 + n_outer :], strict=True)
+        )
+        model = self.spec.models[region[0].start]
+        return Chunk(
+            index, model, self.parameters[model], self.spec.case, region,
+            tuple(self.outer_point(p) for p in positions),
+            tuple(None if at is None else p[at] for p in positions), (w, t, f),
+            self.spec.outputs, self.components,
+        )  # fmt: skip
 
     def fingerprint(self) -> str:
         """Identity of the sweep: a partial store is resumed only by the same sweep."""
@@ -251,120 +309,93 @@ def plan_sweep(spec: SweepSpec) -> Plan:
             shown = ", ".join(f"{k} = {v:g}" if isinstance(v, float) else f"{k} = {v}"
                               for k, v in point.items())  # fmt: skip
             raise BallScrewInputError(exc.field, exc.value, f"{exc.allowed} (at {shown})") from None
-    return plan
+    return replace(plan, key=plan.fingerprint(), layout=layout(plan))
 
 
-@dataclass
-class ChunkReport:
-    """What one chunk gave: its index, size, time, process, summary numbers and issues."""
-
-    index: int
-    points: int
-    seconds: float
-    pid: int
-    peak_rss: int
-    stats: dict[str, dict[str, list[float]]] = field(default_factory=dict)
-    issues: dict[str, tuple[float, str]] = field(default_factory=dict)
+LONG_NAMES = {
+    **{o.name: o.long_name for o in OUTPUT_TABLE},
+    "speed": "screw speed",
+    "temperature": "lubricant temperature",
+    "axial_load": "external axial load on the nut",
+}
+"""The long name of every stored output and operating axis."""
 
 
-def compute_chunk(plan: Plan, index: int) -> tuple[dict[str, FloatArray], ChunkReport]:
-    """Every output of chunk ``index``, and its report (no file is touched)."""
-    start = time.perf_counter()
-    region = plan.region(index)
-    model = plan.spec.models[region[0].start]
-    n_outer = len(plan.outer)
-    op = region[1 + n_outer :]
-    w, t, f = (plan.spec.operating[k][s] for k, s in zip(OPERATING, op, strict=True))
-    shape = tuple(s.stop - s.start for s in region)
-    asked = [o for o in SCALAR_OUTPUTS if o.name in plan.spec.outputs]  # only what was asked
-    with_components = "components" in plan.spec.outputs
-    out = {o.name: np.full(shape, np.nan) for o in asked}
-    comp_shape = (*shape[: 1 + n_outer], len(plan.components), *shape[1 + n_outer :])
-    components = np.full(comp_shape if with_components else (0,), np.nan)
-    issues: dict[str, tuple[float, str]] = {}
-    outer_ranges = [range(s.start, s.stop) for s in region[1 : 1 + n_outer]]
-    for position in itertools.product(*outer_ranges):  # screws, never operating points
-        local = (0, *(p - s.start for p, s in zip(position, region[1:], strict=False)))
-        screw, lubricant, params = resolve(
-            plan.spec.case, model, plan.parameters[model], plan.outer_point(position)
-        )
-        r = friction_torque(
-            screw, lubricant, speed=w[:, None, None], temperature=t[None, :, None],
-            axial_load=f[None, None, :], model=model, warn=False,
-            chunk_size=max(len(w) * len(t) * len(f), 1), **params,
-        )  # fmt: skip
-        for o in asked:
-            assert o.read is not None
-            out[o.name][local] = o.read(r)
-        for name, value in r.components.items() if with_components else ():
-            components[(*local, plan.components.index(name))] = value
-        for issue in r.warnings:
-            if issue.quantity not in issues or issue.excess > issues[issue.quantity][0]:
-                # Routine ranges (left by every ordinary ball screw) are notes; the rest warn.
-                kind = "note" if issue.routine else "warning"
-                issues[issue.quantity] = (issue.excess, f"{kind}: {issue.note()}")
-    if with_components:
-        out["components"] = components
-    stats = {}
-    for name in (o.name for o in asked):
-        values = out[name]
-        lo, hi = int(np.nanargmin(values)), int(np.nanargmax(values))
-        stats[name] = {
-            "min": [float(values.flat[lo]), _flat(plan, region, lo)],
-            "max": [float(values.flat[hi]), _flat(plan, region, hi)],
-            "sum": [float(np.nansum(values)), float(np.count_nonzero(np.isfinite(values)))],
+def attributes(plan: Plan) -> dict[str, Any]:
+    """The store's attributes: inputs, units, parameters, version."""
+    spec = plan.spec
+    units: dict[str, str] = {name: OUTPUTS[name] for name in spec.outputs}
+    units |= {name: unit for name, unit in OPERATING.items()}
+    units |= {a.name: a.unit for a in spec.axes}
+    parameters = {}
+    for model in spec.models:
+        used = dict(get_model(model).parameters)
+        used.update(plan.parameters[model])
+        parameters[model] = used
+    attrs: dict[str, Any] = {
+        "title": f"ballscrew sweep: {spec.case.title}",
+        "ballscrew_version": __version__,
+        "sweep_file": spec.source,
+        "sweep_toml": spec.text,
+        "case_toml": spec.case.text,
+        "models": list(spec.models),
+        "model_parameters": parameters,
+        "units": units,
+        "screw": asdict(spec.case.screw),
+        "lubricant": asdict(spec.case.lubricant),
+        "axes": {a.name: a.unit for a in spec.axes},
+        "chunk_points": spec.chunk_points,
+        "conventions": "SI units (temperatures in degC); speed > 0 turns the screw forward",
+    }
+    u = spec.uncertainty
+    if u is not None:
+        units |= {d.name: d.unit or "1" for d in u.inputs}
+        attrs["uncertainty"] = {
+            "inputs": {d.name: d.describe() for d in u.inputs},
+            "samples": u.samples,
+            "seed": u.seed,
+            "sensitivity": u.sensitivity,
+            "design": (
+                "Saltelli/Sobol' (SALib sobol.sample, no second order): N (D + 2) rows"
+                if u.sensitivity == "sobol"
+                else "Latin hypercube (SALib latin.sample)"
+            ),
         }
-    report = ChunkReport(
-        index, int(math.prod(shape)), time.perf_counter() - start, os.getpid(),
-        _peak_rss(), stats, issues,
-    )  # fmt: skip
-    return out, report
+    return json_safe(attrs)  # type: ignore[no-any-return]
 
 
-def _flat(plan: Plan, region: tuple[slice, ...], local: int) -> float:
-    """Flat index in the whole grid of the chunk's flat position ``local``."""
-    where = np.unravel_index(local, tuple(s.stop - s.start for s in region))
-    return float(
-        np.ravel_multi_index(
-            tuple(int(i) + s.start for i, s in zip(where, region, strict=True)), plan.shape
+def layout(plan: Plan) -> Layout:
+    """The store's coordinates, empty arrays and attributes (nothing is computed)."""
+    spec = plan.spec
+    coords: dict[str, tuple[tuple[str, ...], Any, dict[str, Any]]] = {
+        "model": (("model",), np.array(spec.models, dtype=object), {})
+    }
+    for axis in spec.axes:
+        values = np.array(axis.values, dtype=object if axis.labels else float)
+        coords[axis.name] = ((axis.name,), values, {"units": axis.unit})
+    if plan.samples is not None:
+        assert spec.uncertainty is not None
+        coords["sample"] = (("sample",), np.arange(plan.samples.shape[0]), {})
+        for j, dist in enumerate(spec.uncertainty.inputs):
+            attrs = {"units": dist.unit or "1", "distribution": dist.describe()}
+            coords[dist.name] = (("sample",), plan.samples[:, j], attrs)
+    for name, unit in OPERATING.items():
+        coords[name] = (
+            (name,),
+            spec.operating[name],
+            {"units": unit, "long_name": LONG_NAMES[name]},
         )
-    )
-
-
-def _peak_rss() -> int:
-    """Peak resident memory of this process so far [bytes]."""
-    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
-    return int(peak if sys.platform == "darwin" else peak * 1024)
-
-
-_ARRAYS: dict[tuple[str, str], dict[str, Any]] = {}
-"""Open Zarr arrays per (store, fingerprint), reused by the chunks a process writes."""
-
-
-def _arrays(store: str, key: str) -> dict[str, Any]:
-    import zarr
-
-    if (store, key) not in _ARRAYS:
-        group = zarr.open_group(store, mode="r+", zarr_format=2)
-        _ARRAYS.clear()
-        _ARRAYS[(store, key)] = {name: group[name] for name in OUTPUTS if name in group}
-    return _ARRAYS[(store, key)]
-
-
-def run_chunk(index: int, plan: Plan, partial: str, key: str) -> ChunkReport:
-    """Compute chunk ``index``, write it into the partial store, then mark it done."""
-    from .store import progress_path, store_path
-
-    values, report = compute_chunk(plan, index)
-    region = plan.region(index)
-    n_outer = len(plan.outer)
-    arrays = _arrays(str(store_path(Path(partial))), key)
-    with deferred_signals():  # a chunk is written whole before Ctrl-C is acted on
-        for name, array in arrays.items():
-            where = region
-            if name == "components":
-                where = (*region[: 1 + n_outer], slice(None), *region[1 + n_outer :])
-            array[where] = values[name]
-        marker = progress_path(Path(partial)) / f"{index}.json"
-        atomic_write(marker, json.dumps(asdict(report)).encode("utf-8"))
-    return report
+    coords["speed_rpm"] = (("speed",), spec.operating["speed"] * 30.0 / np.pi, {"units": "rpm"})
+    variables = {}
+    cut = 1 + len(plan.outer)
+    for name in spec.outputs:
+        dims, shape, chunks = plan.dims, plan.shape, plan.chunks
+        if name == "components":
+            dims = (*dims[:cut], "component", *dims[cut:])
+            shape = (*shape[:cut], len(plan.components), *shape[cut:])
+            chunks = (*chunks[:cut], len(plan.components), *chunks[cut:])
+        attrs = {"units": OUTPUTS[name], "long_name": LONG_NAMES[name]}
+        variables[name] = (dims, shape, chunks, attrs)
+    if "components" in spec.outputs:
+        coords["component"] = (("component",), np.array(plan.components, dtype=object), {})
+    return Layout(coords, variables, attributes(plan))

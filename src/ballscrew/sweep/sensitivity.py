@@ -52,6 +52,16 @@ class SobolIndices:
     total: FloatArray
     total_conf: FloatArray
 
+    def as_dict(self) -> dict[str, dict[str, float]]:
+        """Input -> its total and first-order index, each with its 95 % half-width."""
+        return {
+            name: {
+                "total": float(self.total[i]), "total_conf": float(self.total_conf[i]),
+                "first": float(self.first[i]), "first_conf": float(self.first_conf[i]),
+            }
+            for i, name in enumerate(self.names)
+        }  # fmt: skip
+
     def ranking(self) -> list[int]:
         """Input positions by decreasing total index."""
         return [int(i) for i in np.argsort(-self.total, kind="stable")]

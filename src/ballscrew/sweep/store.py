@@ -1,9 +1,14 @@
-"""The Zarr store of a sweep: layout and attributes, resume markers, statistics, the final rename.
+"""The Zarr store of a sweep: written as it is handed, resume markers, statistics, the rename.
 
 The store is Zarr format 2 with consolidated metadata, read back with
 ``xarray.open_zarr(path)``. Its attributes carry the sweep file's text, the
 case file's text, the resolved screw and lubricant, every model's parameters
 (defaults filled in), the unit of every variable and the package version.
+
+The store is handed what it writes: the layout (:class:`Layout`, from
+:func:`ballscrew.sweep.plan.layout`),
+each chunk's blocks and report (:func:`ballscrew.sweep.compute.compute_chunk`), the
+computed variables and the closing attributes. It never reads the plan.
 """
 
 from __future__ import annotations
@@ -12,20 +17,31 @@ import contextlib
 import json
 import secrets
 import shutil
-from collections.abc import Sequence
-from dataclasses import asdict
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Literal
 
 import numpy as np
 
-from .._version import __version__
-from ..errors import BallScrewInputError
-from ..friction import get_model
-from ..io.files import swap_in
-from .spec import OPERATING, OUTPUT_TABLE, OUTPUTS, SCALAR_OUTPUTS
+from ..errors import BallScrewInputError, FloatArray
+from ..io.files import atomic_write, deferred_signals, swap_in
 
-__all__ = ["FORMAT", "attributes", "create", "finalize", "markers", "partial_path"]
+__all__ = [
+    "FORMAT",
+    "Layout",
+    "add_variables",
+    "check_target",
+    "create",
+    "finalize",
+    "json_safe",
+    "markers",
+    "mean_torque",
+    "partial_path",
+    "percentile_variables",
+    "sobol_variables",
+    "write_chunk",
+]  # fmt: skip
 
 FORMAT: Literal[2] = 2
 """Zarr format: 2 stores text coordinates (model and component names) in a
@@ -34,12 +50,37 @@ extensions in format 3."""
 
 FINGERPRINT = "fingerprint"
 
-LONG_NAMES = {
-    **{o.name: o.long_name for o in OUTPUT_TABLE},
-    "speed": "screw speed",
-    "temperature": "lubricant temperature",
-    "axial_load": "external axial load on the nut",
-}
+
+@dataclass(frozen=True)
+class Layout:
+    """What a sweep's store holds before any chunk is computed (plain data).
+
+    Attributes
+    ----------
+    coords : dict
+        Coordinate name -> (dimensions, values, attributes), in the store's order.
+    variables : dict
+        Output name -> (dimensions, shape, chunks, attributes): arrays of NaN to fill.
+    attrs : dict
+        The store's attributes (JSON-safe).
+    """
+
+    coords: dict[str, tuple[tuple[str, ...], Any, dict[str, Any]]]
+    variables: dict[str, tuple[tuple[str, ...], tuple[int, ...], tuple[int, ...], dict[str, Any]]]
+    attrs: dict[str, Any]
+
+
+def json_safe(value: Any) -> Any:
+    """A copy of nested mappings and sequences that JSON (and Zarr's attributes) take."""
+    if isinstance(value, dict):
+        return {str(k): json_safe(v) for k, v in value.items()}
+    if isinstance(value, list | tuple):
+        return [json_safe(v) for v in value]
+    if isinstance(value, np.generic):
+        return value.item()
+    if value is None or isinstance(value, str | int | float | bool):
+        return value
+    return str(value)
 
 
 def partial_path(out: Path) -> Path:
@@ -61,108 +102,58 @@ def progress_path(partial: Path) -> Path:
     return partial / "progress"
 
 
-def _json_safe(value: Any) -> Any:
-    if isinstance(value, dict):
-        return {str(k): _json_safe(v) for k, v in value.items()}
-    if isinstance(value, list | tuple):
-        return [_json_safe(v) for v in value]
-    if isinstance(value, np.generic):
-        return value.item()
-    if value is None or isinstance(value, str | int | float | bool):
-        return value
-    return str(value)
-
-
-def attributes(plan: Any) -> dict[str, Any]:
-    """The store's attributes: inputs, units, parameters, version."""
-    spec = plan.spec
-    units: dict[str, str] = {name: OUTPUTS[name] for name in spec.outputs}
-    units |= {name: unit for name, unit in OPERATING.items()}
-    units |= {a.name: a.unit for a in spec.axes}
-    parameters = {}
-    for model in spec.models:
-        used = dict(get_model(model).parameters)
-        used.update(plan.parameters[model])
-        parameters[model] = used
-    attrs: dict[str, Any] = {
-        "title": f"ballscrew sweep: {spec.case.title}",
-        "ballscrew_version": __version__,
-        "sweep_file": spec.source,
-        "sweep_toml": spec.text,
-        "case_toml": spec.case.text,
-        "models": list(spec.models),
-        "model_parameters": parameters,
-        "units": units,
-        "screw": asdict(spec.case.screw),
-        "lubricant": asdict(spec.case.lubricant),
-        "axes": {a.name: a.unit for a in spec.axes},
-        "chunk_points": spec.chunk_points,
-        "conventions": "SI units (temperatures in degC); speed > 0 turns the screw forward",
-    }
-    u = spec.uncertainty
-    if u is not None:
-        units |= {d.name: d.unit or "1" for d in u.inputs}
-        attrs["uncertainty"] = {
-            "inputs": {d.name: d.describe() for d in u.inputs},
-            "samples": u.samples,
-            "seed": u.seed,
-            "sensitivity": u.sensitivity,
-            "design": (
-                "Saltelli/Sobol' (SALib sobol.sample, no second order): N (D + 2) rows"
-                if u.sensitivity == "sobol"
-                else "Latin hypercube (SALib latin.sample)"
-            ),
-        }
-    return _json_safe(attrs)  # type: ignore[no-any-return]
-
-
-def _dataset(plan: Any) -> Any:
+def _dataset(layout: Layout) -> Any:
     """The layout as an xarray Dataset of lazy NaN arrays (nothing is computed)."""
     import dask.array as da
     import xarray as xr
 
-    spec = plan.spec
-    n_outer = len(plan.outer)
-    coords: dict[str, Any] = {"model": np.array(spec.models, dtype=object)}
-    for axis in spec.axes:
-        labels = axis.labels
-        values = np.array(axis.values, dtype=object if labels else float)
-        coords[axis.name] = xr.Variable(axis.name, values, {"units": axis.unit})
-    if plan.samples is not None:
-        coords["sample"] = np.arange(plan.samples.shape[0])
-        for j, dist in enumerate(spec.uncertainty.inputs):
-            attrs = {"units": dist.unit or "1", "distribution": dist.describe()}
-            coords[dist.name] = xr.Variable("sample", plan.samples[:, j], attrs)
-    for name, unit in OPERATING.items():
-        attrs = {"units": unit, "long_name": LONG_NAMES[name]}
-        coords[name] = xr.Variable(name, spec.operating[name], attrs)
-    coords["speed_rpm"] = xr.Variable("speed", spec.operating["speed"] * 30.0 / np.pi,
-                                      {"units": "rpm"})  # fmt: skip
-    data: dict[str, Any] = {}
-    for name in spec.outputs:
-        dims, shape, chunks = plan.dims, plan.shape, plan.chunks
-        if name == "components":
-            cut = 1 + n_outer
-            dims = (*dims[:cut], "component", *dims[cut:])
-            shape = (*shape[:cut], len(plan.components), *shape[cut:])
-            chunks = (*chunks[:cut], len(plan.components), *chunks[cut:])
-        attrs = {"units": OUTPUTS[name], "long_name": LONG_NAMES[name]}
-        data[name] = xr.Variable(dims, da.full(shape, np.nan, chunks=chunks), attrs)
-    if "components" in spec.outputs:
-        coords["component"] = np.array(plan.components, dtype=object)
-    return xr.Dataset(data, coords=coords, attrs=attributes(plan))
+    coords = {name: xr.Variable(*c) for name, c in layout.coords.items()}
+    data = {
+        name: xr.Variable(dims, da.full(shape, np.nan, chunks=chunks), attrs)
+        for name, (dims, shape, chunks, attrs) in layout.variables.items()
+    }
+    return xr.Dataset(data, coords=coords, attrs=layout.attrs)
 
 
-def create(plan: Any, partial: Path, fingerprint: str) -> None:
+def create(layout: Layout, partial: Path, fingerprint: str) -> None:
     """Write the layout (coordinates, attributes, empty arrays) and the fingerprint."""
     if partial.exists():
         shutil.rmtree(partial)
-    dataset = _dataset(plan)
-    encoding = {name: {"chunks": dataset[name].data.chunksize} for name in plan.spec.outputs}
+    dataset = _dataset(layout)
+    encoding = {name: {"chunks": dataset[name].data.chunksize} for name in layout.variables}
     dataset.to_zarr(store_path(partial), mode="w", compute=False, consolidated=False,
                     zarr_format=FORMAT, encoding=encoding)  # fmt: skip
     progress_path(partial).mkdir()
     (progress_path(partial) / FINGERPRINT).write_text(fingerprint, encoding="utf-8")
+
+
+_ARRAYS: dict[tuple[str, str], dict[str, Any]] = {}
+"""Open Zarr arrays per (store, fingerprint), reused by the chunks a process writes."""
+
+
+def _arrays(store: str, key: str, names: Sequence[str]) -> dict[str, Any]:
+    import zarr
+
+    if (store, key) not in _ARRAYS or not set(names) <= _ARRAYS[(store, key)].keys():
+        group = zarr.open_group(store, mode="r+", zarr_format=FORMAT)
+        _ARRAYS.clear()
+        _ARRAYS[(store, key)] = {name: group[name] for name in names}
+    return _ARRAYS[(store, key)]
+
+
+def write_chunk(
+    partial: Path,
+    fingerprint: str,
+    blocks: Mapping[str, tuple[tuple[slice, ...], FloatArray]],
+    report: Mapping[str, Any],
+) -> None:
+    """Write a chunk's blocks (each into its region), then mark the chunk done with its report."""
+    arrays = _arrays(str(store_path(partial)), fingerprint, list(blocks))
+    with deferred_signals():  # a chunk is written whole before Ctrl-C is acted on
+        for name, (region, values) in blocks.items():
+            arrays[name][region] = values
+        marker = progress_path(partial) / f"{report['index']}.json"
+        atomic_write(marker, json.dumps(report).encode("utf-8"))
 
 
 def markers(partial: Path, fingerprint: str) -> dict[int, dict[str, Any]] | None:
@@ -202,7 +193,7 @@ def finalize(partial: Path, out: Path, extra_attrs: dict[str, Any]) -> None:
 
     path = store_path(partial)
     group = zarr.open_group(path, mode="r+", zarr_format=FORMAT)
-    group.attrs.update(_json_safe(extra_attrs))
+    group.attrs.update(json_safe(extra_attrs))
     zarr.consolidate_metadata(str(path), zarr_format=FORMAT)
     old = out.parent / f".{out.name}.old-{secrets.token_hex(4)}"
     moved = swap_in(path, out, aside=old)
@@ -224,42 +215,48 @@ def check_target(out: Path) -> None:
     )
 
 
-def percentile_variables(partial: Path, plan: Any, chunk_bytes: int = 1 << 25) -> dict[str, Any]:
-    """Percentiles over the samples of torque and efficiency, read back from the store.
+def percentile_variables(
+    partial: Path,
+    percentiles: Sequence[float],
+    outputs: Mapping[str, tuple[str, str]],
+    chunk_bytes: int = 1 << 25,
+) -> dict[str, Any]:
+    """Percentiles [%] over the samples of ``outputs`` (name -> unit, long name), read back.
 
-    Streamed with dask: each block holds every sample of a block of operating
-    points, about ``chunk_bytes`` in size.
+    Streamed with dask: each block holds every sample of a block of the points
+    after the sample dimension, about ``chunk_bytes`` in size.
     """
     import xarray as xr
 
-    u = plan.spec.uncertainty
     ds = xr.open_zarr(store_path(partial), consolidated=False)
     n = ds.sizes["sample"]
     budget = max(1, chunk_bytes // (8 * n))
     rechunk: dict[str, int] = {"sample": -1}
-    for name in reversed(OPERATING):
+    inner = next((name for name in outputs if name in ds), None)
+    after = ds[inner].dims[ds[inner].dims.index("sample") + 1 :] if inner else ()
+    for name in reversed(after):
         rechunk[name] = max(1, min(ds.sizes[name], budget))
         budget = max(1, budget // rechunk[name])
     out = {}
-    q = np.asarray(u.percentiles) / 100.0
-    for name in (o.name for o in SCALAR_OUTPUTS):
+    q = np.asarray(percentiles) / 100.0
+    for name, (unit, long_name) in outputs.items():
         if name not in ds:
             continue
         value = ds[name].chunk(rechunk).quantile(q, dim="sample")
         value = value.rename(quantile="percentile")
-        value.attrs = {"units": OUTPUTS[name], "long_name": f"{LONG_NAMES[name]}: percentiles "
+        value.attrs = {"units": unit, "long_name": f"{long_name}: percentiles "
                        "over the Monte Carlo samples"}  # fmt: skip
         out[f"{name}_percentile"] = value.compute(scheduler="threads").variable
     out["percentile"] = xr.Variable("percentile", q * 100.0, {"units": "%"})
     return out
 
 
-def mean_torque(partial: Path) -> Any:
-    """Torque averaged over the operating points, per model and sample (streamed)."""
+def mean_torque(partial: Path, over: Sequence[str]) -> Any:
+    """Torque averaged over the dimensions ``over``, per model and sample (streamed)."""
     import xarray as xr
 
     ds = xr.open_zarr(store_path(partial), consolidated=False)
-    return ds["torque"].mean(dim=list(OPERATING)).compute(scheduler="threads").values
+    return ds["torque"].mean(dim=list(over)).compute(scheduler="threads").values
 
 
 def sobol_variables(names: Sequence[str], indices: Sequence[Any]) -> dict[str, Any]:
