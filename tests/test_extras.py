@@ -41,8 +41,9 @@ def test_the_extras_of_pyproject_are_those_the_package_checks_for() -> None:
     assert _names(extras["sweep"]) == {m.lower() for m in EXTRAS["sweep"]}
     assert _names(extras["web"]) == {m.lower() for m in EXTRAS["web"]}
     assert _names(extras["fast"]) == {m.lower() for m in EXTRAS["fast"]}
+    assert _names(extras["servo"]) == {m.lower() for m in EXTRAS["servo"]}
     assert not _names(extras["core"]) & {m.lower() for m in OPTIONAL}
-    assert extras["all"] == ["ballscrew[sweep,web,fast]"]
+    assert extras["all"] == ["ballscrew[sweep,web,fast,servo]"]
     assert "ballscrew[all]" in extras["test"]  # the README's two commands install everything
 
 

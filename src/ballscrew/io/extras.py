@@ -30,6 +30,7 @@ EXTRAS: dict[str, tuple[str, ...]] = {
     "sweep": ("xarray", "zarr", "dask", "distributed", "SALib"),
     "web": ("starlette", "uvicorn", "anyio", "jinja2"),
     "fast": ("numba",),
+    "servo": ("control",),
 }
 """The top-level modules each extra installs (the import names, not the distributions')."""
 
