@@ -24,9 +24,9 @@ them physical by construction:
   yielding before the balls roll), with :math:`K_a` the design value
   :func:`ballscrew.design.stiffness.design_nut_stiffness` that ``ballscrew
   check`` and the servo model (:mod:`ballscrew.servo`) also take (the ideal
-  contacts' stiffness, :func:`nut_axial_stiffness`, is 1.85 times stiffer), and :math:`\sigma_1 = 2\zeta
-  \sqrt{\sigma_0 J}` with :math:`\zeta = 1`, a critically damped bristle on the
-  axis inertia :math:`J`.
+  contacts' stiffness, :func:`nut_axial_stiffness`, is 1.85 times stiffer),
+  and :math:`\sigma_1 = 2\zeta\sqrt{\sigma_0 J}` with :math:`\zeta = 1`, a
+  critically damped bristle on the axis inertia :math:`J`.
 * **table**: the torque itself over speed (and temperature), which a
   controller interpolates.
 

@@ -171,7 +171,7 @@ class CircleRun:
         return max(abs(g.height) for g in self.glitches)
 
     def binned(self, width: float = 1.0) -> tuple[FloatArray, FloatArray]:
-        """Radial deviation [m] in bins of ``width`` degrees (centres [deg]; empty ones left out)."""
+        """Radial deviation [m] in bins of ``width`` degrees (centres [deg]; no empty bins)."""
         edges = np.arange(0.0, 360.0 + width, width)
         idx = np.clip(np.digitize(self.angle, edges) - 1, 0, edges.size - 2)
         sums = np.bincount(idx, self.deviation, edges.size - 1)
