@@ -39,15 +39,21 @@ def _step(span_um: float) -> float:
     return 1000.0
 
 
-def polar_figure(runs: list[CircleRun], title: str = "") -> MplFigure:
-    """The runs' radial deviations on a polar plot, magnified (module docstring)."""
+def polar_figure(
+    runs: list[CircleRun], title: str = "", figure: MplFigure | None = None
+) -> MplFigure:
+    """The runs' radial deviations on a polar plot, magnified (module docstring).
+
+    Drawn into ``figure`` when given (a pyplot figure, say), else into a new one.
+    """
     devs = [r.binned(0.5)[1] * 1e6 for r in runs]
     lo = min(float(np.min(d)) for d in devs)
     hi = max(float(np.max(d)) for d in devs)
     step = _step(max(hi - lo, 1e-3))
     inner = math.floor(lo / step) - 2  # ring 0 of the plot: this many steps below 0
-    fig = MplFigure(figsize=(6.0, 6.0))
-    FigureCanvasAgg(fig)
+    fig = figure if figure is not None else MplFigure(figsize=(6.0, 6.0))
+    if figure is None:
+        FigureCanvasAgg(fig)
     ax = fig.add_subplot(1, 1, 1, projection="polar")
     for run, dev in zip(runs, devs, strict=True):
         angle = run.binned(0.5)[0]

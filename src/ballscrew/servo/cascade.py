@@ -3,7 +3,8 @@ r"""A CNC's servo cascade: position P with feed-forward, velocity PI, current lo
 The loops, from the outside in, run at one sampling time :math:`T_s`:
 
 * **position**: :math:`v_c = k_v(x_r - x) + k_{vff}\,v_r`, with the position
-  :math:`x` read by the motor encoder (semi-closed loop) or a linear scale;
+  :math:`x` read by the motor encoder (semi-closed loop) or a linear scale on
+  the table (closed loop; the speed still comes from the motor's encoder);
 * **velocity PI**: :math:`F_c = K_p(v_c - v) + K_i\int(v_c - v)\,dt + k_{aff}\,m\,a_r
   + F_{comp}(v_r)`, the speed :math:`v` the backward difference of the
   position over one sample, :math:`m` the axis' whole mass, :math:`F_{comp}`
@@ -174,14 +175,16 @@ def loop_systems(axis: AxisDynamics, gains: Gains) -> dict[str, Any]:
         # x1 through (c s + k)/(m2 s^2 + c s + k).
         spring = m2 * s**2 + c * s + k
         x1 = spring / (s**2 * (m1 * spring + m2 * (c * s + k)))
-        plant = s * x1 if gains.feedback == "motor" else s * x1 * (c * s + k) / spring
+        plant = s * x1
     num, den = control.pade(gains.sampling_time, 2)
     delay = control.tf(num, den)
     pi = gains.kp + gains.ki / s
     lag = 1 / (gains.current_lag * s + 1)
     velocity_open = control.minreal(pi * lag * delay * plant, verbose=False)
     velocity_closed = control.feedback(velocity_open, 1)
-    position_open = control.minreal(gains.kv * velocity_closed / s, verbose=False)
+    # The position read on the motor (x1), or on the table (x2 = x1 (c s + k)/(m2 s^2 + c s + k)).
+    scale = 1 if axis.rigid or gains.feedback == "motor" else (c * s + k) / spring
+    position_open = control.minreal(gains.kv * velocity_closed * scale / s, verbose=False)
     return {"plant": plant, "velocity_open": velocity_open, "velocity_closed": velocity_closed,
             "position_open": position_open,
             "position_closed": control.feedback(position_open, 1)}  # fmt: skip

@@ -146,7 +146,7 @@ def simulate_axis(
     v1 = v2 = 0.0
     z = zg = 0.0
     force = integ = -ext
-    measured_prev = x1 if motor_fb or rigid else x2
+    motor_prev = x1
     size = xr.size
     out_motor = [0.0] * size
     out_table = [0.0] * size
@@ -158,9 +158,10 @@ def simulate_axis(
     for i in range(size):
         out_motor[i] = x1
         out_table[i] = x2
+        # The speed from the motor's encoder; the position from it or from a linear scale.
         measured = x1 if motor_fb or rigid else x2
-        speed = (measured - measured_prev) / ts
-        measured_prev = measured
+        speed = (x1 - motor_prev) / ts
+        motor_prev = x1
         ev = kv * (xr_l[i] - measured) + vff[i] - speed
         integ += ki * ts * ev
         command = kp * ev + integ + ff[i]
@@ -195,6 +196,11 @@ def simulate_axis(
                 x2 += v2 * h
         out_force[i] = force
         out_fric[i] = fric
+    if not (math.isfinite(x1) and math.isfinite(x2)):
+        raise BallScrewInputError(
+            "gains", f"kv {kv:g} 1/s, kp {kp:.4g} N*s/m", "a stable loop: the simulated axis "
+            "diverged (lower k_v or the velocity loop's crossover)",
+        )  # fmt: skip
     time = np.asarray(np.arange(size) * ts, dtype=float)
     return Trace(time, xr, vr, np.asarray(out_motor), np.asarray(out_table),
                  np.asarray(out_force), np.asarray(out_fric))  # fmt: skip
