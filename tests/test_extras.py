@@ -77,6 +77,19 @@ def test_serve_without_its_extra_says_which_in_one_line(
     )
 
 
+def test_contour_without_its_extra_says_which_in_one_line(
+    monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    monkeypatch.setitem(sys.modules, "control", None)
+    case = str(ROOT / "examples" / "xy_table_32x10.toml")
+    code, _, err = run(["contour", "--case", case, "--radius", "5 mm"], capsys)
+    assert code == 2
+    assert err == (
+        "error: ballscrew contour needs the servo extra (control is not installed): "
+        "pip install 'ballscrew[servo]'\n"
+    )
+
+
 def test_the_web_package_without_its_extra_names_it(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setitem(sys.modules, "starlette", None)
     monkeypatch.delitem(sys.modules, "ballscrew.web", raising=False)

@@ -48,3 +48,28 @@ def test_contour_refuses_three_cases_and_a_bad_radius(capsys: pytest.CaptureFixt
     assert code == 2 and "--case" in err
     code, _, err = run(["contour", "--case", str(EXAMPLE), "--radius", "-5 mm"], capsys)
     assert code == 2 and "--radius" in err
+
+
+def test_export_friction_writes_the_controller_tables(
+    capsys: pytest.CaptureFixture[str], tmp_path: Path
+) -> None:
+    hal = tmp_path / "friction.hal"
+    args = ["--form", "lincurve", "--speed", "5 m/min", "--out", str(hal), "--json", "-"]
+    code, out, err = run(["export-friction", "--case", str(EXAMPLE), *args], capsys)
+    assert code == 0, err
+    assert "setp lincurve.0.x-val-15" in hal.read_text("utf-8")
+    doc = json.loads(out)
+    assert len(doc["speed_m_s"]) == 16 and doc["rms_error_N"] > 0
+    assert "interpolation error" in err
+    code, _, err = run(["export-friction", "--case", str(EXAMPLE), "--form", "frict-comp",
+                        "--speed", "5 m/min"], capsys)  # fmt: skip
+    assert code == 2 and "--torque-constant" in err
+    fmu = tmp_path / "friction.fmu"
+    code, _, err = run(["export-friction", "--case", str(EXAMPLE), "--form", "load-map",
+                        "--speed", "1..3000:6 rpm", "--out", str(fmu)], capsys)  # fmt: skip
+    assert code == 0, err
+    import zipfile
+
+    with zipfile.ZipFile(fmu) as z:
+        assert {"modelDescription.xml", "sources/ballscrew_friction_map.h",
+                "sources/ballscrew_friction_fmu.c"} <= set(z.namelist())  # fmt: skip

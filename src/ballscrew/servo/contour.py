@@ -39,7 +39,7 @@ from __future__ import annotations
 import math
 import time
 from collections.abc import Sequence
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -387,6 +387,7 @@ def run_contour(
     guide_viscous: float = 0.0,
     rigid: bool = False,
     compensate: bool = True,
+    gains: tuple[Gains, Gains] | None = None,
 ) -> ContourResult:
     """The circular test of one case (both axes) or two (x, y), with the reversal test.
 
@@ -408,7 +409,16 @@ def run_contour(
         One-mass axes.
     compensate : bool
         Also run with the 16-point friction table fed forward.
+    gains : tuple of Gains, optional
+        The loops' gains of x and y, instead of the tuning rule (the arguments
+        ``sampling_time`` to ``feedback`` are then not used).
+
+    Raises :class:`~ballscrew.io.extras.MissingExtraError` without the ``servo``
+    extra (the loops' margins need the Python Control Systems Library).
     """
+    from ..io.extras import require
+
+    require("servo", "ballscrew contour")
     if not 1 <= len(cases) <= 2:
         raise BallScrewInputError("--case", len(cases), "one case (both axes) or two (x, y)")
     bad = [d for d in directions if d not in ("CW", "CCW")]
@@ -422,10 +432,12 @@ def run_contour(
     if rigid:
         dyn = tuple(d.as_rigid() for d in dyn)
     axes = (dyn[0], dyn[1])
-    gains = tuple(tune(a, sampling_time=sampling_time, kv=kv, phase_margin=phase_margin,
-                       velocity_ff=velocity_ff, acceleration_ff=acceleration_ff,
-                       feedback=feedback) for a in axes)  # fmt: skip
-    g2 = (gains[0], gains[1])
+    if gains is None:
+        tuned = tuple(tune(a, sampling_time=sampling_time, kv=kv, phase_margin=phase_margin,
+                           velocity_ff=velocity_ff, acceleration_ff=acceleration_ff,
+                           feedback=feedback) for a in axes)  # fmt: skip
+        gains = (tuned[0], tuned[1])
+    g2 = gains
     figures = (loop_figures(axes[0], g2[0]), loop_figures(axes[1], g2[1]))
     tables = tuple(fit_table(a.speeds, a.friction, TABLE_POINTS, top) for a in axes)
     t2 = (tables[0], tables[1])
@@ -448,8 +460,3 @@ def run_contour(
                  f"{top:.4g} m/s, fed forward at the reference speed")  # fmt: skip
     return ContourResult(axes, g2, figures, radius, feed, tuple(circles), tuple(reversals), t2,
                          model, time.process_time() - start, tuple(notes))  # fmt: skip
-
-
-def with_gains(result: ContourResult, **changes: Any) -> tuple[Gains, Gains]:
-    """The result's gains with ``changes`` (for a what-if run)."""
-    return (replace(result.gains[0], **changes), replace(result.gains[1], **changes))
