@@ -171,3 +171,24 @@ def test_the_table_fed_back_lowers_the_glitch(feed: float) -> None:
 def test_a_case_without_moving_mass_is_refused() -> None:
     with pytest.raises(BallScrewInputError, match=r"axis\.moving_mass"):
         axis_dynamics(load_case(None))
+
+
+def test_reversal_springs_the_table_by_the_checks_lost_motion(axis) -> None:  # type: ignore[no-untyped-def]
+    # With the motor's encoder in the loop the motor follows the reference exactly at
+    # steady speed, and the table lags it by the spring's strain F/k. Across a reversal
+    # the friction changes from -F(-v) to +F(v): the table's error steps by
+    # (F(v) + |F(-v)|)/k, the lost motion 2 F/k that ballscrew check reports.
+    gains = tune(axis)
+    v = 0.02
+    x, vr, a, k = reversal_reference(v, 0.5, gains.sampling_time)
+    run = simulate_axis(axis, gains, x, vr, a)
+    clean = simulate_axis(frictionless(axis), gains, x, vr, a)
+    diff = run.error - clean.error
+    # Before: the end of the hold at -v (the deceleration starts v/a before the crossing).
+    start = k - round(v / 0.5 / gains.sampling_time) - 1
+    before, after = float(diff[start]), float(diff[-1])
+    f_up = float(np.interp(v, axis.speeds, axis.friction))
+    f_down = float(np.interp(-v, axis.speeds, axis.friction))
+    # 2 %: what is left of the loop's settling 0.3 s (12 time constants 1/k_v) after the
+    # reversal; the bristle's strain is the friction's own state and does not move the table.
+    assert after - before == pytest.approx((f_up - f_down) / axis.stiffness, rel=0.02)
