@@ -192,3 +192,11 @@ def test_reversal_springs_the_table_by_the_checks_lost_motion(axis) -> None:  # 
     # 2 %: what is left of the loop's settling 0.3 s (12 time constants 1/k_v) after the
     # reversal; the bristle's strain is the friction's own state and does not move the table.
     assert after - before == pytest.approx((f_up - f_down) / axis.stiffness, rel=0.02)
+
+
+def test_a_step_reversal_turns_the_speed_in_one_sample() -> None:
+    _, v, _, k = reversal_reference(0.02, math.inf, 1e-3)
+    assert float(np.max(np.diff(v))) == pytest.approx(0.04)  # -v to +v in one sample
+    assert v[k - 1] == pytest.approx(-0.02) and v[k] == pytest.approx(0.02)
+    with pytest.raises(BallScrewInputError, match="acceleration"):
+        reversal_reference(0.02, 0.0, 1e-3)

@@ -281,12 +281,20 @@ def reversal_reference(
 ) -> tuple[FloatArray, FloatArray, FloatArray, int]:
     """From rest to -speed, hold, through zero to +speed at ``acceleration``, hold.
 
-    Returns x, v, a per sample and the sample of the zero crossing.
+    An infinite ``acceleration`` makes each change of speed a step within one sample
+    (a jog reversed at once). Returns x, v, a per sample and the sample of the zero
+    crossing.
     """
     ts = sampling_time
-    t_a = speed / acceleration
-    segments = [(0.05, 0.0), (t_a, -acceleration), (hold, 0.0), (2 * t_a, acceleration),
-                (hold, 0.0)]  # fmt: skip
+    if not acceleration > 0.0:
+        raise BallScrewInputError("acceleration", acceleration, "a positive acceleration")
+    if math.isinf(acceleration):
+        segments = [(0.05, 0.0), (ts, -speed / ts), (hold, 0.0), (ts, 2 * speed / ts),
+                    (hold, 0.0)]  # fmt: skip
+    else:
+        t_a = speed / acceleration
+        segments = [(0.05, 0.0), (t_a, -acceleration), (hold, 0.0), (2 * t_a, acceleration),
+                    (hold, 0.0)]  # fmt: skip
     acc = np.concatenate([np.full(max(round(d / ts), 1), a) for d, a in segments])
     v = np.concatenate([[0.0], np.cumsum(acc[:-1]) * ts])
     x = np.concatenate([[0.0], np.cumsum(0.5 * (v[1:] + v[:-1])) * ts])
@@ -388,6 +396,7 @@ def run_contour(
     rigid: bool = False,
     compensate: bool = True,
     gains: tuple[Gains, Gains] | None = None,
+    reversal_acceleration: float | None = None,
 ) -> ContourResult:
     """The circular test of one case (both axes) or two (x, y), with the reversal test.
 
@@ -412,6 +421,9 @@ def run_contour(
     gains : tuple of Gains, optional
         The loops' gains of x and y, instead of the tuning rule (the arguments
         ``sampling_time`` to ``feedback`` are then not used).
+    reversal_acceleration : float, optional
+        [m/s²] of the reversal test; default the circle's at the quadrant,
+        :math:`v^2/R`; ``math.inf`` reverses the speed in one sample.
 
     Raises :class:`~ballscrew.io.extras.MissingExtraError` without the ``servo``
     extra (the loops' margins need the Python Control Systems Library).
@@ -446,7 +458,7 @@ def run_contour(
         circles.append(circular_test(axes, g2, radius, feed, clockwise=d == "CW"))
         if compensate:
             circles.append(circular_test(axes, g2, radius, feed, clockwise=d == "CW", tables=t2))
-    acc = feed**2 / radius
+    acc = feed**2 / radius if reversal_acceleration is None else reversal_acceleration
     reversals = [reversal_test(axes[0], g2[0], feed, acc)]
     if compensate:
         reversals.append(reversal_test(axes[0], g2[0], feed, acc, t2[0]))
