@@ -284,6 +284,7 @@ def create_app(
             Route("/api/torque", _json_route("torque", limits, compute), methods=["POST"]),
             Route("/api/evaluate", _json_route("evaluate", limits, compute), methods=["POST"]),
             Route("/api/case", _case_file(limits), methods=["POST"]),
+            Route("/api/contour", _json_route("contour", limits, compute), methods=["POST"]),
         ],
         middleware=[
             Middleware(_Guard, limit=limits.body_bytes),

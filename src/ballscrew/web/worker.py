@@ -30,7 +30,7 @@ import anyio
 
 from ..errors import BallScrewInputError, BallScrewSpeedWarning, BallScrewValidityWarning
 from ..helix import load_kernel
-from . import service
+from . import contour, service
 from .inputs import ApiError, Limits
 
 __all__ = ["FUNCTIONS", "WorkerPool"]
@@ -40,6 +40,7 @@ LOG = logging.getLogger("ballscrew.web")
 FUNCTIONS: dict[str, Callable[[dict[str, Any], Limits], dict[str, Any]]] = {
     "torque": service.torque,
     "evaluate": service.evaluate,
+    "contour": contour.contour,
 }
 """What a worker may be asked to run, by name."""
 
