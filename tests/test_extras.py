@@ -42,8 +42,9 @@ def test_the_extras_of_pyproject_are_those_the_package_checks_for() -> None:
     assert _names(extras["web"]) == {m.lower() for m in EXTRAS["web"]}
     assert _names(extras["fast"]) == {m.lower() for m in EXTRAS["fast"]}
     assert _names(extras["program"]) == {m.lower() for m in EXTRAS["program"]}
+    assert _names(extras["servo"]) == {m.lower() for m in EXTRAS["servo"]}
     assert not _names(extras["core"]) & {m.lower() for m in OPTIONAL}
-    assert extras["all"] == ["ballscrew[sweep,web,fast,program]"]
+    assert extras["all"] == ["ballscrew[sweep,web,fast,program,servo]"]
     assert "ballscrew[all]" in extras["test"]  # the README's two commands install everything
 
 
@@ -74,6 +75,19 @@ def test_serve_without_its_extra_says_which_in_one_line(
     assert err == (
         f"error: ballscrew serve needs the web extra ({module} is not installed): "
         "pip install 'ballscrew[web]'\n"
+    )
+
+
+def test_contour_without_its_extra_says_which_in_one_line(
+    monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    monkeypatch.setitem(sys.modules, "control", None)
+    case = str(ROOT / "examples" / "xy_table_32x10.toml")
+    code, _, err = run(["contour", "--case", case, "--radius", "5 mm"], capsys)
+    assert code == 2
+    assert err == (
+        "error: ballscrew contour needs the servo extra (control is not installed): "
+        "pip install 'ballscrew[servo]'\n"
     )
 
 

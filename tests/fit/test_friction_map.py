@@ -207,7 +207,7 @@ def test_bad_inputs_name_the_field(fmap, tmp_path: Path) -> None:  # type: ignor
     with pytest.raises(BallScrewInputError, match="gear_ratio"):
         friction_map(CASE, "complete", speeds=SPEEDS, loads=[0.0], temperatures=[40.0],
                      gear_ratio=0.0)  # fmt: skip
-    assert set(FORMATS) == {".csv", ".mat", ".mo", ".h"}
+    assert set(FORMATS) == {".csv", ".mat", ".mo", ".h", ".fmu"}
 
 
 def test_cli_load_map(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:

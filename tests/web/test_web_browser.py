@@ -262,3 +262,16 @@ def test_screenshots_at_desktop_and_phone_widths(browser: sync_api.Browser, base
         pg.screenshot(path=str(SHOTS / f"web-{name}.png"), full_page=True)
         context.close()
     assert (SHOTS / "web-desktop.png").stat().st_size > 10_000
+
+
+def test_the_circular_test_on_the_page_draws_its_polar_plot(page: sync_api.Page) -> None:
+    # The page's defaults (the move is on, so the axis has its mass): the button asks
+    # /api/contour and draws the two runs about the nominal circle.
+    settle(page)
+    page.fill("#contour_radius", "5 mm")
+    page.click("#contour_run")
+    # (the page's security policy allows no evaluated script: wait on the element)
+    page.locator("#chart_contour polygon").nth(1).wait_for(timeout=60_000)
+    assert page.locator("#chart_contour polygon").count() == 2
+    summary = page.text_content("#contour_summary") or ""
+    assert summary.startswith("G ") and "with compensation" in summary

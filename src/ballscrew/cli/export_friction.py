@@ -25,11 +25,19 @@ __all__ = ["export_friction_command"]
 @case_option
 @click.option("--model", "model_name", default="complete", show_default=True)
 @click.option("--form", type=click.Choice(["coulomb-viscous", "stribeck", "lugre", "table",
-                                           "load-map"]),
+                                           "load-map", "lincurve", "frict-comp", "charcurve"]),
               default="stribeck", show_default=True,
               help="Form the controller takes; load-map: the friction over speed, signed axial "
               "load and temperature with a compact load- and direction-dependent form, written "
-              "by --out as .csv, .mat, .mo (Modelica) or .h (C).")  # fmt: skip
+              "by --out as .csv, .mat, .mo (Modelica), .h (C) or .fmu (FMI 2.0 C source); "
+              "lincurve (LinuxCNC, 16 points), frict-comp (TwinCAT CNC, 20 points, needs "
+              "--torque-constant), charcurve (CODESYS, 11 points): a compensation "
+              "table.")  # fmt: skip
+@click.option(
+    "--torque-constant",
+    default=None,
+    help="Motor torque constant K_t for frict-comp, e.g. '1.2 N*m/A'.",
+)
 @click.option(
     "--temperature",
     default=None,
@@ -76,6 +84,7 @@ def export_friction_command(
     bristle_damping: str | None,
     out_file: str | None,
     json_file: str | None,
+    torque_constant: str | None,
 ) -> None:
     """Friction parameters for a servo controller, fitted to a model's torque-speed curve.
 
@@ -85,7 +94,15 @@ def export_friction_command(
       ballscrew export-friction --case my_screw.toml --form table --out friction_table.csv
       ballscrew export-friction --form load-map --axial-load "-4..4:9 kN" \\
           --temperature "20, 30, 40 degC" --out friction.mat
+      ballscrew export-friction --case axis.toml --form lincurve --speed "0..5 m/min" \\
+          --out friction.hal
     """  # noqa: D301 - click needs the literal \b to keep the example lines
+    if form in ("lincurve", "frict-comp", "charcurve"):
+        from .controller_tables import write_controller_table
+
+        write_controller_table(case_file, model_name, form, temperature, speed, axial_load,
+                               torque_constant, out_file, json_file)  # fmt: skip
+        return
     from ..fit.export import FrictionExport, log_speeds, run_export_friction
     from ..io.case import load_case
     from ..io.measured import read_measured

@@ -20,6 +20,7 @@ from ..io.files import record_signal, signal_received
 from .acceptance import acceptance_command
 from .case import case_command
 from .check import check_command
+from .contour import contour_command
 from .demo import demo
 from .energy import energy_command
 from .export_friction import export_friction_command
@@ -52,6 +53,7 @@ def cli() -> None:
       ballscrew check --case my_axis.toml --move "stroke=0.3 m, feed=0.5 m/s, acceleration=2 m/s^2"
       ballscrew fit --case my_screw.toml --measured run.csv --free preload,ball_train_constant
       ballscrew export-friction --case my_screw.toml --form stribeck --temperature "20, 40 degC"
+      ballscrew contour --case x.toml --case y.toml --radius "50 mm" --feed "2 m/min"
       ballscrew monitor --case my_screw.toml --measured drag_torque.csv --threshold "50 %"
       ballscrew sweep examples/sweep_preload.toml --out preload.zarr --workers 2
       ballscrew program part.nc --machine examples/machine_vmc.toml --out part-report
@@ -64,7 +66,7 @@ def cli() -> None:
 for command in (demo, study, validate, models_command, lubricants_command, torque,
                 case_command, screws_command, energy_command, check_command, fit_command,
                 export_friction_command, monitor_command, acceptance_command,
-                serve_command, sweep_command, program_command):  # fmt: skip
+                serve_command, sweep_command, program_command, contour_command):  # fmt: skip
     cli.add_command(command)
 
 

@@ -19,11 +19,14 @@ them physical by construction:
   is the Stribeck curve with :math:`g = T_c + (T_s-T_c)e^{-|\omega/\omega_s|^\delta}`
   and :math:`\sigma_2 = b`. The dynamic parameters cannot come from a
   steady curve. The rules used unless you give them:
-  :math:`\sigma_0 = K_a (l/2\pi)^2`, the nut's axial contact stiffness at its
-  preload seen from the screw (pre-sliding in a rolling contact is the elastic
-  contact yielding before the balls roll), and :math:`\sigma_1 = 2\zeta
-  \sqrt{\sigma_0 J}` with :math:`\zeta = 1`, a critically damped bristle on the
-  axis inertia :math:`J`.
+  :math:`\sigma_0 = K_a (l/2\pi)^2`, the nut's axial stiffness at its preload
+  seen from the screw (pre-sliding in a rolling contact is the elastic contact
+  yielding before the balls roll), with :math:`K_a` the design value
+  :func:`ballscrew.design.stiffness.design_nut_stiffness` that ``ballscrew
+  check`` and the servo model (:mod:`ballscrew.servo`) also take (the ideal
+  contacts' stiffness, :func:`nut_axial_stiffness`, is 1.85 times stiffer),
+  and :math:`\sigma_1 = 2\zeta\sqrt{\sigma_0 J}` with :math:`\zeta = 1`, a
+  critically damped bristle on the axis inertia :math:`J`.
 * **table**: the torque itself over speed (and temperature), which a
   controller interpolates.
 
@@ -41,7 +44,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from ..design.stiffness import nut_axial_stiffness
+from ..design.stiffness import design_nut_stiffness, nut_axial_stiffness
 from ..errors import BallScrewInputError, FloatArray, check_nonnegative, check_positive
 from ..geometry import BallScrew
 
@@ -370,11 +373,12 @@ def fit_form(
             raise BallScrewInputError(
                 "bristle_stiffness", None, "a value, or the screw for the stiffness rule"
             )
-        k = nut_axial_stiffness(screw)
+        k = design_nut_stiffness(screw)
         bristle_stiffness = k * (screw.lead / (2.0 * math.pi)) ** 2
         notes.append(
-            f"bristle stiffness from the nut's contact stiffness {k / 1e6:.4g} N/um: a rule, "
-            "not a measurement; identify it from a torque reversal if the controller needs it"
+            f"bristle stiffness from the nut's design stiffness {k / 1e6:.4g} N/um (the value "
+            "ballscrew check takes): a rule, not a measurement; identify it from a torque "
+            "reversal if the controller needs it"
         )
     s0 = float(check_positive("bristle_stiffness", bristle_stiffness, "N*m/rad"))
     if bristle_damping is None:

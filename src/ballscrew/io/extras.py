@@ -31,6 +31,7 @@ EXTRAS: dict[str, tuple[str, ...]] = {
     "web": ("starlette", "uvicorn", "anyio", "jinja2"),
     "fast": ("numba",),
     "program": ("gcodeparser", "ruckig", "xarray"),
+    "servo": ("control",),
 }
 """The top-level modules each extra installs (the import names, not the distributions')."""
 

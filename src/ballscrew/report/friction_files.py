@@ -13,7 +13,9 @@ Each file states its formula, its axes, units and sign conventions in a header
   and, per temperature, a matrix laid out for ``Modelica.Blocks.Tables.CombiTable2Ds``
   (first row the loads, first column the motor speeds);
 * ``.h``: a C header with the axes and the table as constant arrays and a
-  trilinear interpolation function, clamped at the edges, for drive firmware.
+  trilinear interpolation function, clamped at the edges, for drive firmware;
+* ``.fmu``: a C-source FMU (FMI 2.0 co-simulation) around that header, for
+  simulators (:mod:`ballscrew.report.friction_fmu`).
 """
 
 from __future__ import annotations
@@ -29,7 +31,9 @@ from ..fit.friction_map import FrictionMap
 from ..io.files import atomic_write
 from .outputs import csv_text
 
-__all__ = ["FORMATS", "c_header", "csv_file", "mat_file", "modelica_file", "write_map"]
+__all__ = [
+    "FORMATS", "c_header", "csv_file", "fmu_file", "mat_file", "modelica_file", "write_map",
+]  # fmt: skip
 
 CONVENTIONS = (
     "speed > 0 moves the nut towards +x; axial load = force of the load on the nut along x; "
@@ -189,8 +193,15 @@ static inline double bs_friction_torque(double motor_speed, double load, double 
     return text.encode("utf-8")
 
 
+def fmu_file(m: FrictionMap, version: str) -> bytes:
+    """A C-source FMU (FMI 2.0) around :func:`c_header` (:mod:`ballscrew.report.friction_fmu`)."""
+    from .friction_fmu import fmu_bytes
+
+    return fmu_bytes(m, version)
+
+
 FORMATS: dict[str, Callable[[FrictionMap, str], bytes]] = {
-    ".csv": csv_file, ".mat": mat_file, ".mo": modelica_file, ".h": c_header,
+    ".csv": csv_file, ".mat": mat_file, ".mo": modelica_file, ".h": c_header, ".fmu": fmu_file,
 }  # fmt: skip
 """File suffix -> writer."""
 

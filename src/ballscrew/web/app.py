@@ -289,6 +289,7 @@ def create_app(
             Route("/api/evaluate", _json_route("evaluate", limits, compute), methods=["POST"]),
             Route("/api/case", _case_file(limits), methods=["POST"]),
             Route("/api/program", _json_route("program", limits, compute), methods=["POST"]),
+            Route("/api/contour", _json_route("contour", limits, compute), methods=["POST"]),
         ],
         middleware=[
             Middleware(_Guard, limit=limits.body_bytes),

@@ -30,7 +30,7 @@ import anyio
 
 from ..errors import BallScrewInputError, BallScrewSpeedWarning, BallScrewValidityWarning
 from ..helix import load_kernel
-from . import program, service
+from . import contour, program, service
 from .inputs import ApiError, Limits
 
 __all__ = ["FUNCTIONS", "WorkerPool"]
@@ -41,6 +41,7 @@ FUNCTIONS: dict[str, Callable[[dict[str, Any], Limits], dict[str, Any]]] = {
     "torque": service.torque,
     "evaluate": service.evaluate,
     "program": program.run,
+    "contour": contour.contour,
 }
 """What a worker may be asked to run, by name."""
 

@@ -554,7 +554,58 @@
     $("rating_field").hidden = $("preload_kind").value !== "preload_share";
   }
 
+  // ---------------------------------------------------------------- circular test, on demand
+  async function runContour() {
+    if (!state.result) return;
+    $("contour_summary").textContent = "computing...";
+    const body = { case: buildRequest().case, radius: $("contour_radius").value, feed: $("contour_feed").value };
+    const response = await fetch("/api/contour", {
+      method: "POST", headers: { "content-type": "application/json" }, body: JSON.stringify(body),
+    });
+    const data = await response.json();
+    if (!response.ok) {
+      $("contour_summary").textContent = data.error || `refused (${response.status})`;
+      return;
+    }
+    const [plain, comp] = data.runs;
+    $("contour_summary").textContent =
+      `G ${fmt(plain.circular_deviation_G_um)} µm, glitch ${fmt(plain.largest_glitch_um)} µm; ` +
+      `with compensation ${fmt(comp.circular_deviation_G_um)} µm, ${fmt(comp.largest_glitch_um)} µm`;
+    drawPolar("chart_contour", data.runs);
+  }
+
+  // The deviation magnified about the nominal circle, as a ballbar's polar plot.
+  function drawPolar(id, runs) {
+    const svg = $(id);
+    const size = Math.min(360, Math.max(240, Math.floor(svg.parentElement.clientWidth)));
+    const c = size / 2;
+    const devs = runs.flatMap((r) => r.radial_deviation.deviation_um);
+    const lo = Math.min(...devs);
+    const hi = Math.max(...devs);
+    const span = Math.max(hi - lo, 1e-3);
+    const r0 = c * 0.25;
+    const scale = (c * 0.9 - r0) / span;
+    const rad = (d) => r0 + (d - lo) * scale;
+    const parts = [`<circle class="grid" cx="${c}" cy="${c}" r="${rad(0)}" fill="none" stroke="#999"/>`];
+    runs.forEach((run, k) => {
+      const a = run.radial_deviation.angle_deg;
+      const d = run.radial_deviation.deviation_um;
+      const pts = a.map((t, i) => {
+        const th = (t * Math.PI) / 180;
+        return `${(c + rad(d[i]) * Math.cos(th)).toFixed(1)},${(c - rad(d[i]) * Math.sin(th)).toFixed(1)}`;
+      }).join(" ");
+      parts.push(`<polygon class="curve" points="${pts}" fill="none" stroke="${k ? "#d62728" : "#1f77b4"}"` +
+        ` stroke-width="1.5"${run.compensated ? ' stroke-dasharray="6 4"' : ""}/>`);
+    });
+    parts.push(`<text class="tick" x="4" y="${size - 6}">${fmt(lo)} to ${fmt(hi)} µm; grey: nominal; dashed: compensated</text>`);
+    svg.setAttribute("viewBox", `0 0 ${size} ${size}`);
+    svg.setAttribute("width", String(size));
+    svg.setAttribute("height", String(size));
+    svg.innerHTML = parts.join("");
+  }
+
   function start() {
+    $("contour_run").addEventListener("click", runContour);
     $("inputs").addEventListener("input", (ev) => {
       if (ev.target.id !== "upload") schedule();
     });

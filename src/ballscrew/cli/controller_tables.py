@@ -1,0 +1,66 @@
+"""``ballscrew export-friction --form lincurve|frict-comp|charcurve``: a controller's table.
+
+A helper of :mod:`ballscrew.cli.export_friction`, not a command of its own.
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import click
+from rich.table import Table
+
+from .common import stdout, write_json, writing
+
+__all__ = ["write_controller_table"]
+
+
+def write_controller_table(
+    case_file: str | None, model_name: str, target: str, temperature: str | None, speed: str,
+    axial_load: str | None, torque_constant: str | None, out_file: str | None,
+    json_file: str | None,
+) -> None:  # fmt: skip
+    """Compute the table, print it with its error, write the controller's file and the JSON."""
+    from .._version import __version__
+    from ..io.case import load_case
+    from ..io.files import atomic_write
+    from ..io.units import parse_range, to_si
+    from ..report.controller_tables import TABLE_WRITERS
+    from ..report.outputs import json_document
+    from ..servo.tables import controller_table
+
+    case = load_case(case_file)
+    import numpy as np
+
+    speeds = np.asarray(parse_range("--speed", speed, "m/s"), dtype=float)
+    top = float(np.max(np.abs(speeds)))
+    if not top > 0.0:
+        raise click.UsageError("--speed needs a positive table speed for the table's range")
+    temps = parse_range("--temperature", temperature, "degC") if temperature else None
+    result = controller_table(
+        case, model_name, target, speed_range=top,
+        temperature=None if temps is None else float(np.ravel(temps)[0]),
+        axial_load=to_si("--axial-load", axial_load, "N") if axial_load else None,
+        torque_constant=(to_si("--torque-constant", torque_constant, "N*m/A")
+                         if torque_constant else None),
+    )  # fmt: skip
+    console = stdout(json_file)
+    table = Table(title=f"{case.title}: {target} table of {result.model} at "
+                  f"{result.axial_load:.4g} N, {result.temperature:g} degC")  # fmt: skip
+    for column in ("point", "speed [mm/s]", "force [N]", "motor torque [N*m]"):
+        table.add_column(column, justify="right")
+    torque = result.motor_torque()
+    for k, (v, f) in enumerate(zip(result.table.speed, result.table.force, strict=True)):
+        table.add_row(str(k), f"{v * 1e3:.5g}", f"{f:.5g}", f"{torque[k]:.5g}")
+    console.print(table)
+    tab = result.table
+    console.print(f"interpolation error against the model over +-{top * 1e3:g} mm/s: RMS "
+                  f"{tab.rms_error:.3g} N, largest {tab.max_error:.3g} N")  # fmt: skip
+    if out_file:
+        with writing("--out", out_file):
+            text = TABLE_WRITERS[target](result, __version__)
+            atomic_write(Path(out_file), text.encode("utf-8"))
+    if json_file:
+        write_json(json_file, json_document({"ballscrew": __version__, **result.as_dict()}))
+    sys.stdout.flush()

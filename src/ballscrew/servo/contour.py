@@ -1,0 +1,474 @@
+r"""The circular test (after ISO 230-4) and the reversal test of simulated axes.
+
+What ``ballscrew contour`` computes.
+
+**Circular test.** Two axes follow a circle of radius :math:`R` at the feed
+:math:`v` (angular speed :math:`\omega = v/R`), clockwise and
+counter-clockwise. The path starts at rest at 45° (between two quadrants),
+speeds up smoothly along the arc, runs one full revolution at the feed (the
+evaluated part) and stops. From the table positions (what a ballbar reads):
+
+* the **radial deviation** :math:`\Delta r(\theta) = r(\theta) - R` about the
+  circle's centre;
+* the **circular deviation** :math:`G`: the radial width of the band between
+  two circles about the least-squares centre that holds the evaluated
+  revolution (ISO 230-4 evaluates it about such a centre);
+* the **circular hysteresis** :math:`H`: the largest radial difference between
+  the clockwise and the counter-clockwise path at one angle;
+* each **quadrant glitch** (at 0°, 90°, 180°, 270°, where one axis reverses):
+  its height, the largest excursion of :math:`\Delta r` within ±30° of the
+  quadrant above the revolution's median :math:`\Delta r` (positive outwards),
+  and its width, the angle over which it exceeds half its height.
+
+**Reversal test.** One axis runs at :math:`-v`, reverses at constant
+acceleration (that of the circle at the quadrant, :math:`v^2/R`) and runs on
+at :math:`+v`: the commissioning engineer's first measurement. Its glitch is
+the following error's largest departure, after the reversal, from that of the
+same run without friction.
+
+**Compensation.** The same tests with the friction feed-forward of a
+controller's table (LinuxCNC's 16 points, :func:`ballscrew.servo.tables.fit_table`)
+at the reference speed and, with the motor's encoder in the loop, the
+lost motion :math:`F/k` that the same table gives (:func:`lost_motion`,
+what a controller's backlash compensation adds to the position reference);
+the glitch's reduction is the ratio of heights.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from ..errors import BallScrewInputError, FloatArray
+from ..io.case import Case
+from .cascade import Gains, LoopFigures, loop_figures, tune
+from .plant import AxisDynamics, axis_dynamics, frictionless
+from .simulate import Trace, simulate_axis
+from .tables import CompensationTable, fit_table
+
+__all__ = [
+    "CircleRun",
+    "ContourResult",
+    "Glitch",
+    "ReversalRun",
+    "circle_reference",
+    "circular_test",
+    "reversal_test",
+    "run_contour",
+]
+
+START_ANGLE = math.pi / 4
+"""Where the circle starts and ends [rad], between two quadrants."""
+
+QUADRANTS = (0.0, 90.0, 180.0, 270.0)
+GLITCH_WINDOW = 30.0
+"""Half-width of the window around a quadrant in which its glitch is sought [deg]."""
+
+TABLE_POINTS = 16
+"""Points of the compensation table fed back into the simulation (LinuxCNC's ``lincurve``)."""
+
+
+def circle_reference(
+    radius: float, feed: float, sampling_time: float, *, clockwise: bool = False,
+    acceleration: float = 1.0, settle: float = 0.05,
+) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray, FloatArray, FloatArray,
+           slice]:  # fmt: skip
+    r"""The circle's references per sample, and the evaluated samples.
+
+    x, y [m], their speeds [m/s] and accelerations [m/s²], and the slice of
+    samples of the evaluated revolution at the feed.
+
+    The path speed rises as :math:`v(1 - \cos(\pi t/t_r))/2` over :math:`t_r =
+    \max(1.5\,v/a, 20\,T_s)` (peak tangential acceleration about ``acceleration``
+    [m/s²]), holds one revolution, and falls the same way.
+    """
+    if not radius > 0.0:
+        raise BallScrewInputError("--radius", radius, "a positive radius [m]")
+    if not feed > 0.0:
+        raise BallScrewInputError("--feed", feed, "a positive feed [m/s]")
+    ts = sampling_time
+    t_r = max(1.5 * feed / acceleration, 20 * ts)
+    t_c = 2.0 * math.pi * radius / feed
+    n_s, n_r, n_c = round(settle / ts), round(t_r / ts), round(t_c / ts)
+    t = np.arange(n_s + 2 * n_r + n_c + n_s) * ts
+    ramp = np.clip((t - n_s * ts) / t_r, 0.0, 1.0)
+    down = np.clip((t - (n_s + n_r + n_c) * ts) / t_r, 0.0, 1.0)
+    speed = feed * 0.5 * ((1.0 - np.cos(math.pi * ramp)) - (1.0 - np.cos(math.pi * down)))
+    rising = np.sin(math.pi * ramp) * ((ramp > 0) & (ramp < 1))
+    falling = np.sin(math.pi * down) * ((down > 0) & (down < 1))
+    accel = feed * 0.5 * math.pi * (rising - falling) / t_r
+
+    # Path length by the exact integral of the ramp: t/2 - t_r sin(pi t/t_r)/(2 pi).
+    def covered(u: FloatArray) -> FloatArray:
+        out: FloatArray = feed * t_r * (0.5 * u - np.sin(math.pi * u) / (2.0 * math.pi))
+        return out
+
+    in_const = np.clip(t - (n_s + n_r) * ts, 0.0, n_c * ts)
+    s = covered(ramp) + feed * in_const + np.where(down > 0, feed * t_r * down - covered(down),
+                                                   0.0)  # fmt: skip
+    sign = -1.0 if clockwise else 1.0
+    phi = START_ANGLE + sign * s / radius
+    w = sign * speed / radius
+    dw = sign * accel / radius
+    x, y = radius * np.cos(phi), radius * np.sin(phi)
+    vx, vy = -y * w, x * w
+    ax = -x * w * w - y * dw
+    ay = -y * w * w + x * dw
+    return x, y, vx, vy, ax, ay, slice(n_s + n_r, n_s + n_r + n_c)
+
+
+def lost_motion(axis: AxisDynamics, gains: Gains, force: FloatArray) -> FloatArray | None:
+    r"""The position offset that cancels the axis' elastic lag under friction, :math:`F/k` [m].
+
+    With the motor's encoder in the loop the table lags the motor by the
+    spring's strain; a controller's lost-motion (backlash) compensation adds
+    it to the position reference. None for a rigid axis or a table-side scale.
+    """
+    if axis.rigid or gains.feedback != "motor":
+        return None
+    out: FloatArray = np.asarray(force, dtype=float) / axis.stiffness
+    return out
+
+
+@dataclass(frozen=True)
+class Glitch:
+    """A quadrant glitch: the axis that reverses, the quadrant [deg], height [m], width [deg]."""
+
+    axis: str
+    quadrant: float
+    height: float
+    width: float
+    angle: float
+
+    def as_dict(self) -> dict[str, Any]:
+        """JSON-ready glitch (µm and degrees)."""
+        return {"axis": self.axis, "quadrant_deg": self.quadrant, "height_um": self.height * 1e6,
+                "width_deg": self.width, "peak_angle_deg": self.angle}  # fmt: skip
+
+
+@dataclass(frozen=True)
+class CircleRun:
+    """One direction of the circular test: deviations, G, glitches, and the traces."""
+
+    clockwise: bool
+    compensated: bool
+    angle: FloatArray
+    deviation: FloatArray
+    circular_deviation: float
+    mean_radius_error: float
+    glitches: tuple[Glitch, ...]
+    x: Trace
+    y: Trace
+
+    @property
+    def largest_glitch(self) -> float:
+        """The largest glitch height [m]."""
+        return max(abs(g.height) for g in self.glitches)
+
+    def binned(self, width: float = 1.0) -> tuple[FloatArray, FloatArray]:
+        """Radial deviation [m] in bins of ``width`` degrees (centres [deg]; no empty bins)."""
+        edges = np.arange(0.0, 360.0 + width, width)
+        idx = np.clip(np.digitize(self.angle, edges) - 1, 0, edges.size - 2)
+        sums = np.bincount(idx, self.deviation, edges.size - 1)
+        counts = np.bincount(idx, None, edges.size - 1)
+        keep = counts > 0
+        return (0.5 * (edges[:-1] + edges[1:]))[keep], sums[keep] / counts[keep]
+
+    def as_dict(self) -> dict[str, Any]:
+        """JSON-ready run (µm, degrees; the deviation in 1° bins)."""
+        centres, dev = self.binned()
+        return {"direction": "CW" if self.clockwise else "CCW",
+                "compensated": self.compensated,
+                "circular_deviation_G_um": self.circular_deviation * 1e6,
+                "mean_radius_error_um": self.mean_radius_error * 1e6,
+                "glitches": [g.as_dict() for g in self.glitches],
+                "largest_glitch_um": self.largest_glitch * 1e6,
+                "radial_deviation": {"angle_deg": centres.round(3).tolist(),
+                                     "deviation_um": (dev * 1e6).tolist()}}  # fmt: skip
+
+
+def _fit_centre(x: FloatArray, y: FloatArray) -> tuple[float, float]:
+    """Least-squares circle centre (Kåsa's linear fit)."""
+    a = np.column_stack([2 * x, 2 * y, np.ones_like(x)])
+    sol = np.linalg.lstsq(a, x * x + y * y, rcond=None)[0]
+    return float(sol[0]), float(sol[1])
+
+
+def _glitches(angle: FloatArray, dev: FloatArray) -> tuple[Glitch, ...]:
+    base = float(np.median(dev))
+    out = []
+    for q in QUADRANTS:
+        diff = (angle - q + 180.0) % 360.0 - 180.0
+        inside = np.abs(diff) <= GLITCH_WINDOW
+        order = np.argsort(diff[inside])
+        d, e = diff[inside][order], dev[inside][order] - base
+        j = int(np.argmax(np.abs(e)))
+        height = float(e[j])
+        above = np.abs(e) >= 0.5 * abs(height)
+        lo = j
+        while lo > 0 and above[lo - 1]:
+            lo -= 1
+        hi = j
+        while hi < e.size - 1 and above[hi + 1]:
+            hi += 1
+        axis = "x" if q in (0.0, 180.0) else "y"
+        out.append(Glitch(axis, q, height, float(d[hi] - d[lo]), float((q + d[j]) % 360.0)))
+    return tuple(out)
+
+
+def _analyse(x: Trace, y: Trace, radius: float, window: slice, clockwise: bool,
+             compensated: bool) -> CircleRun:  # fmt: skip
+    px, py = x.table[window], y.table[window]
+    cx, cy = _fit_centre(px, py)
+    r_fit = np.hypot(px - cx, py - cy)
+    dev = np.hypot(px, py) - radius
+    angle = np.degrees(np.arctan2(py, px)) % 360.0
+    return CircleRun(clockwise, compensated, angle, dev, float(np.ptp(r_fit)),
+                     float(np.mean(dev)), _glitches(angle, dev), x, y)  # fmt: skip
+
+
+def circular_test(
+    axes: tuple[AxisDynamics, AxisDynamics],
+    gains: tuple[Gains, Gains],
+    radius: float,
+    feed: float,
+    *,
+    clockwise: bool = False,
+    tables: tuple[CompensationTable, CompensationTable] | None = None,
+) -> CircleRun:
+    """One direction of the circular test (module docstring); ``tables`` compensate friction."""
+    ts = gains[0].sampling_time
+    if gains[1].sampling_time != ts:
+        raise BallScrewInputError("sampling_time", gains[1].sampling_time,
+                                  f"the same for both axes ({ts:g} s)")  # fmt: skip
+    x, y, vx, vy, ax, ay, window = circle_reference(radius, feed, ts, clockwise=clockwise)
+    if tables is None:
+        tx = simulate_axis(axes[0], gains[0], x, vx, ax)
+        ty = simulate_axis(axes[1], gains[1], y, vy, ay)
+    else:
+        fx, fy = tables[0](vx), tables[1](vy)
+        tx = simulate_axis(axes[0], gains[0], x, vx, ax, fx, lost_motion(axes[0], gains[0], fx))
+        ty = simulate_axis(axes[1], gains[1], y, vy, ay, fy, lost_motion(axes[1], gains[1], fy))
+    return _analyse(tx, ty, radius, window, clockwise, tables is not None)
+
+
+@dataclass(frozen=True)
+class ReversalRun:
+    """The reversal test of one axis: its glitch and the traces with and without friction."""
+
+    speed: float
+    acceleration: float
+    glitch: float
+    time_to_peak: float
+    trace: Trace
+    reference: Trace
+    compensated: bool
+
+    def as_dict(self) -> dict[str, Any]:
+        """JSON-ready run."""
+        return {"speed_m_s": self.speed, "acceleration_m_s2": self.acceleration,
+                "compensated": self.compensated, "glitch_um": self.glitch * 1e6,
+                "time_to_peak_ms": self.time_to_peak * 1e3}  # fmt: skip
+
+
+def reversal_reference(
+    speed: float, acceleration: float, sampling_time: float, hold: float = 0.3
+) -> tuple[FloatArray, FloatArray, FloatArray, int]:
+    """From rest to -speed, hold, through zero to +speed at ``acceleration``, hold.
+
+    An infinite ``acceleration`` makes each change of speed a step within one sample
+    (a jog reversed at once). Returns x, v, a per sample and the sample of the zero
+    crossing.
+    """
+    ts = sampling_time
+    if not acceleration > 0.0:
+        raise BallScrewInputError("acceleration", acceleration, "a positive acceleration")
+    if math.isinf(acceleration):
+        segments = [(0.05, 0.0), (ts, -speed / ts), (hold, 0.0), (ts, 2 * speed / ts),
+                    (hold, 0.0)]  # fmt: skip
+    else:
+        t_a = speed / acceleration
+        segments = [(0.05, 0.0), (t_a, -acceleration), (hold, 0.0), (2 * t_a, acceleration),
+                    (hold, 0.0)]  # fmt: skip
+    acc = np.concatenate([np.full(max(round(d / ts), 1), a) for d, a in segments])
+    v = np.concatenate([[0.0], np.cumsum(acc[:-1]) * ts])
+    x = np.concatenate([[0.0], np.cumsum(0.5 * (v[1:] + v[:-1])) * ts])
+    crossing = int(np.argmax((v[:-1] < 0.0) & (v[1:] >= 0.0))) + 1
+    return x, v, acc, crossing
+
+
+def reversal_test(
+    axis: AxisDynamics, gains: Gains, speed: float, acceleration: float,
+    table: CompensationTable | None = None,
+) -> ReversalRun:  # fmt: skip
+    """The reversal test (module docstring)."""
+    x, v, a, k = reversal_reference(speed, acceleration, gains.sampling_time)
+    comp = None if table is None else table(v)
+    offset = None if comp is None else lost_motion(axis, gains, comp)
+    run = simulate_axis(axis, gains, x, v, a, comp, offset)
+    clean = simulate_axis(frictionless(axis), gains, x, v, a)
+    after = slice(k, None)
+    diff = (run.error - clean.error)[after]
+    before = float((run.error - clean.error)[k - 1])
+    j = int(np.argmax(np.abs(diff - before)))
+    return ReversalRun(speed, acceleration, float(diff[j] - before), j * gains.sampling_time,
+                       run, clean, table is not None)  # fmt: skip
+
+
+@dataclass(frozen=True)
+class ContourResult:
+    """``ballscrew contour``: the axes, loops, circles and reversals, compensated or not."""
+
+    axes: tuple[AxisDynamics, AxisDynamics]
+    gains: tuple[Gains, Gains]
+    figures: tuple[LoopFigures, LoopFigures]
+    radius: float
+    feed: float
+    circles: tuple[CircleRun, ...]
+    reversals: tuple[ReversalRun, ...]
+    tables: tuple[CompensationTable, CompensationTable]
+    model: str
+    cpu_seconds: float
+    notes: tuple[str, ...] = field(default_factory=tuple)
+
+    def circle(self, clockwise: bool, compensated: bool) -> CircleRun | None:
+        """The run of that direction, with or without compensation."""
+        return next((c for c in self.circles if c.clockwise == clockwise
+                     and c.compensated == compensated), None)  # fmt: skip
+
+    @property
+    def hysteresis(self) -> float | None:
+        """Circular hysteresis H [m] without compensation (both directions needed)."""
+        cw, ccw = self.circle(True, False), self.circle(False, False)
+        if cw is None or ccw is None:
+            return None
+        a1, d1 = cw.binned()
+        a2, d2 = ccw.binned()
+        common = np.intersect1d(a1, a2)
+        return float(np.max(np.abs(d1[np.isin(a1, common)] - d2[np.isin(a2, common)])))
+
+    @property
+    def reduction(self) -> float:
+        """Largest glitch without compensation over that with it [-] (first direction)."""
+        plain = [c for c in self.circles if not c.compensated]
+        comp = [c for c in self.circles if c.compensated]
+        return plain[0].largest_glitch / max(comp[0].largest_glitch, 1e-15)
+
+    def as_dict(self) -> dict[str, Any]:
+        """The JSON document of ``ballscrew contour --json``."""
+        h = self.hysteresis
+        return {
+            "model": self.model, "radius_mm": self.radius * 1e3,
+            "feed_m_per_min": self.feed * 60.0,
+            "axes": {name: {"dynamics": a.as_dict(), "gains": g.as_dict(a),
+                            "loops": f.as_dict(), "compensation_table": t.as_dict()}
+                     for name, a, g, f, t in zip("xy", self.axes, self.gains, self.figures,
+                                                 self.tables, strict=True)},
+            "circles": [c.as_dict() for c in self.circles],
+            "circular_hysteresis_H_um": None if h is None else h * 1e6,
+            "glitch_reduction": self.reduction,
+            "reversals": [r.as_dict() for r in self.reversals],
+            "cpu_seconds": self.cpu_seconds,
+            "notes": list(self.notes),
+        }  # fmt: skip
+
+
+def run_contour(
+    cases: Sequence[Case],
+    *,
+    radius: float = 0.05,
+    feed: float = 2.0 / 60.0,
+    model: str = "complete",
+    directions: Sequence[str] = ("CCW", "CW"),
+    sampling_time: float = 250e-6,
+    kv: float = 40.0,
+    phase_margin: float = math.radians(45.0),
+    velocity_ff: float = 1.0,
+    acceleration_ff: float = 1.0,
+    feedback: str = "motor",
+    guide_coulomb: float | None = None,
+    guide_viscous: float = 0.0,
+    rigid: bool = False,
+    compensate: bool = True,
+    gains: tuple[Gains, Gains] | None = None,
+    reversal_acceleration: float | None = None,
+) -> ContourResult:
+    """The circular test of one case (both axes) or two (x, y), with the reversal test.
+
+    Parameters
+    ----------
+    cases : sequence of Case
+        One case for both axes or two (x then y).
+    radius, feed : float
+        [m], [m/s].
+    model : str
+        Friction model.
+    directions : sequence of {"CCW", "CW"}
+        The directions run.
+    sampling_time, kv, phase_margin, velocity_ff, acceleration_ff, feedback
+        The cascade (:func:`ballscrew.servo.cascade.tune`).
+    guide_coulomb, guide_viscous : float, optional
+        Guideway friction [N], [N·s/m] of each axis; None leaves it out (noted).
+    rigid : bool
+        One-mass axes.
+    compensate : bool
+        Also run with the 16-point friction table fed forward.
+    gains : tuple of Gains, optional
+        The loops' gains of x and y, instead of the tuning rule (the arguments
+        ``sampling_time`` to ``feedback`` are then not used).
+    reversal_acceleration : float, optional
+        [m/s²] of the reversal test; default the circle's at the quadrant,
+        :math:`v^2/R`; ``math.inf`` reverses the speed in one sample.
+
+    Raises :class:`~ballscrew.io.extras.MissingExtraError` without the ``servo``
+    extra (the loops' margins need the Python Control Systems Library).
+    """
+    from ..io.extras import require
+
+    require("servo", "ballscrew contour")
+    if not 1 <= len(cases) <= 2:
+        raise BallScrewInputError("--case", len(cases), "one case (both axes) or two (x, y)")
+    bad = [d for d in directions if d not in ("CW", "CCW")]
+    if bad or not directions:
+        raise BallScrewInputError("--direction", bad or list(directions), "CW and/or CCW")
+    start = time.process_time()
+    pair = (cases[0], cases[-1])
+    top = max(1.25 * feed, 0.01)
+    dyn = tuple(axis_dynamics(c, model, max_speed=max(top, 0.05), guide_coulomb=guide_coulomb,
+                              guide_viscous=guide_viscous) for c in pair)  # fmt: skip
+    if rigid:
+        dyn = tuple(d.as_rigid() for d in dyn)
+    axes = (dyn[0], dyn[1])
+    if gains is None:
+        tuned = tuple(tune(a, sampling_time=sampling_time, kv=kv, phase_margin=phase_margin,
+                           velocity_ff=velocity_ff, acceleration_ff=acceleration_ff,
+                           feedback=feedback) for a in axes)  # fmt: skip
+        gains = (tuned[0], tuned[1])
+    g2 = gains
+    figures = (loop_figures(axes[0], g2[0]), loop_figures(axes[1], g2[1]))
+    tables = tuple(fit_table(a.speeds, a.friction, TABLE_POINTS, top) for a in axes)
+    t2 = (tables[0], tables[1])
+    circles: list[CircleRun] = []
+    for d in directions:
+        circles.append(circular_test(axes, g2, radius, feed, clockwise=d == "CW"))
+        if compensate:
+            circles.append(circular_test(axes, g2, radius, feed, clockwise=d == "CW", tables=t2))
+    acc = feed**2 / radius if reversal_acceleration is None else reversal_acceleration
+    reversals = [reversal_test(axes[0], g2[0], feed, acc)]
+    if compensate:
+        reversals.append(reversal_test(axes[0], g2[0], feed, acc, t2[0]))
+    notes = [f"{name}: {n}" for name, a in zip("xy", axes, strict=True) for n in a.notes]
+    notes += [f"{name}: {n}" for name, g in zip("xy", g2, strict=True) for n in g.notes]
+    if len(cases) == 1:
+        notes.append("one case for both axes")
+    if rigid:
+        notes.append("rigid axes (one mass each): no lost motion between motor and table")
+    notes.append(f"compensation: the {TABLE_POINTS}-point table of each axis' friction up to "
+                 f"{top:.4g} m/s, fed forward at the reference speed")  # fmt: skip
+    return ContourResult(axes, g2, figures, radius, feed, tuple(circles), tuple(reversals), t2,
+                         model, time.process_time() - start, tuple(notes))  # fmt: skip
