@@ -17,7 +17,6 @@ import dataclasses
 import warnings
 from collections.abc import Sequence
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -27,6 +26,7 @@ from .._moved import renamed
 from ..design.ratings import Finding, plausibility, raise_errors, stroke_findings
 from ..errors import BallScrewInputError, FloatArray
 from ..io.case import Case
+from ..io.files import read_input_text
 from ..kinematics import rad_s_to_rpm
 from .energy import (
     Axis,
@@ -81,14 +81,7 @@ def profile_from_move(move: dict[str, float], cycles: int) -> Profile:
 
 def profile_from_file(path: str, cycles: int) -> Profile:
     """A trajectory CSV (units in the header) repeated ``cycles`` times."""
-    try:
-        data = Path(path).read_bytes()
-    except OSError as exc:
-        raise BallScrewInputError("--profile", path, f"a readable file ({exc.strerror})") from None
-    try:
-        text = data.decode("utf-8")
-    except UnicodeDecodeError:
-        raise BallScrewInputError("--profile", path, "a UTF-8 text file") from None
+    text = read_input_text("--profile", path)
     one = read_trajectory(text, path)
     return chain(*([one] * cycles))
 

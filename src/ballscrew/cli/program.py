@@ -6,7 +6,7 @@ from pathlib import Path
 
 import click
 
-from ..io.files import atomic_folder
+from ..io.files import atomic_folder, read_input_text
 from .common import progress, stdout, write_json, writing
 
 __all__ = ["program_command"]
@@ -35,7 +35,6 @@ def program_command(
     Example:
       ballscrew program examples/pocket_contour_drill.nc --machine examples/machine_vmc.toml
     """  # noqa: D301 - click needs the literal \b to keep the example lines
-    from ..errors import BallScrewInputError
     from ..io.extras import require
     from ..io.machine import load_machine
 
@@ -45,13 +44,7 @@ def program_command(
     from ..report.program import summary_rows, time_series_csv
 
     machine = load_machine(machine_file)
-    try:
-        text = Path(program_file).read_bytes().decode("utf-8")
-    except OSError as exc:
-        raise BallScrewInputError("PROGRAM", program_file, f"a readable file ({exc.strerror})") \
-            from None  # fmt: skip
-    except UnicodeDecodeError:
-        raise BallScrewInputError("PROGRAM", program_file, "a UTF-8 text file") from None
+    text = read_input_text("PROGRAM", program_file)
     err = stdout("-")
     with progress(err) as bar:
         task = bar.add_task("planning the blocks", total=None)

@@ -40,6 +40,7 @@ from ..errors import BallScrewInputError, FloatArray
 from ..geometry import BallScrew, check_buildable
 from ..lubricant import Lubricant
 from .designation import resolve
+from .files import read_input_text
 from .schema import (
     SECTIONS,
     Assumed,
@@ -685,12 +686,5 @@ def default_case_path() -> Path:
 def load_case(path: str | Path | None = None) -> Case:
     """Load a case file; the bundled default case when ``path`` is None."""
     file = default_case_path() if path is None else Path(path)
-    try:
-        data = file.read_bytes()
-    except OSError as exc:
-        raise BallScrewInputError("case", str(file), f"a readable file ({exc.strerror})") from None
-    try:
-        text = data.decode("utf-8")
-    except UnicodeDecodeError:
-        raise BallScrewInputError("case", str(file), "a UTF-8 text file") from None
+    text = read_input_text("case", file)
     return parse_case(text, source=str(file))

@@ -42,6 +42,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from ..errors import BallScrewInputError
 from .case import Case, parse_case, parse_toml
+from .files import read_input_text
 from .schema import Assumed
 from .units import to_si
 
@@ -329,11 +330,5 @@ EXAMPLE_MACHINE = "data/machine_vmc.toml"
 def load_machine(path: str | Path) -> Machine:
     """Load a machine file; its cases' paths are relative to its folder."""
     file = Path(path)
-    try:
-        text = file.read_bytes().decode("utf-8")
-    except OSError as exc:
-        raise BallScrewInputError("--machine", str(file), f"a readable file ({exc.strerror})") \
-            from None  # fmt: skip
-    except UnicodeDecodeError:
-        raise BallScrewInputError("--machine", str(file), "a UTF-8 text file") from None
+    text = read_input_text("--machine", file)
     return parse_machine(text, source=str(file), folder=file.parent)

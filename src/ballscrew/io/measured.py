@@ -32,6 +32,7 @@ import numpy.typing as npt
 
 from ..errors import BallScrewInputError, FloatArray
 from ..geometry import BallScrew
+from .files import read_input_text
 from .units import parse_unit, to_si_array
 
 __all__ = ["MeasuredCurve", "error_metrics", "parse_measured", "read_measured"]
@@ -219,16 +220,7 @@ def _screw_speed(
 def read_measured(path: str | Path, screw: BallScrew) -> MeasuredCurve:
     """Read a measured curve from a CSV file (see the module docstring)."""
     file = Path(path)
-    try:
-        data = file.read_bytes()
-    except OSError as exc:
-        raise BallScrewInputError(
-            "measured", str(file), f"a readable file ({exc.strerror})"
-        ) from None
-    try:
-        text = data.decode("utf-8")
-    except UnicodeDecodeError:
-        raise BallScrewInputError("measured", str(file), "a UTF-8 text file") from None
+    text = read_input_text("measured", file)
     return parse_measured(text, screw, source=str(file))
 
 

@@ -24,6 +24,7 @@ import numpy as np
 
 from ..errors import BallScrewInputError, FloatArray
 from ..geometry import BallScrew
+from .files import read_input_text
 from .measured import _HEADER, _csv_rows, _dimension, _numbers, _screw_speed
 from .units import parse_unit, to_si_array
 
@@ -110,11 +111,5 @@ def parse_series(text: str, screw: BallScrew, source: str = "series") -> TorqueS
 def read_series(path: str | Path, screw: BallScrew) -> TorqueSeries:
     """Read a torque series from a CSV file (module docstring)."""
     file = Path(path)
-    try:
-        text = file.read_bytes().decode("utf-8")
-    except OSError as exc:
-        raise BallScrewInputError("--measured", str(file),
-                                  f"a readable file ({exc.strerror})") from None  # fmt: skip
-    except UnicodeDecodeError:
-        raise BallScrewInputError("--measured", str(file), "a UTF-8 text file") from None
+    text = read_input_text("--measured", file)
     return parse_series(text, screw, source=str(file))

@@ -41,6 +41,7 @@ from ..design.limits import check_operating_bounds
 from ..errors import BallScrewInputError, FloatArray
 from ..friction import MODELS, get_model
 from ..io.case import Case, load_case, parse_case, parse_toml
+from ..io.files import read_input_text
 from ..io.units import parse_range, to_si
 from .fields import (
     OPERATING,
@@ -290,10 +291,5 @@ def parse_sweep(text: str, *, folder: str | Path = ".", source: str = "sweep") -
 def load_sweep(path: str | Path) -> SweepSpec:
     """Read and check a sweep file."""
     file = Path(path)
-    try:
-        text = file.read_bytes().decode("utf-8")
-    except OSError as exc:
-        raise BallScrewInputError("sweep", str(file), f"a readable file ({exc.strerror})") from None
-    except UnicodeDecodeError:
-        raise BallScrewInputError("sweep", str(file), "a UTF-8 text file") from None
+    text = read_input_text("sweep", file)
     return parse_sweep(text, folder=file.parent, source=str(file))
