@@ -73,3 +73,33 @@ def test_numbers_of_any_numeric_type_are_read(value: object) -> None:
     r = friction_torque(reference_screw(), "mineral ISO VG 68", speed=value, temperature=40.0,
                         model="catalog")  # fmt: skip
     assert np.all(np.asarray(r.total) > 0.0)
+
+
+@pytest.mark.parametrize(
+    ("parameter", "value", "why"),
+    [
+        ("boundary_friction", 1e10, "a friction coefficient"),  # 0.2.0: up to 2e301 N*m
+        ("boundary_friction", -0.1, "a friction coefficient"),
+        ("boundary_friction", [0.1, 0.2], "a real number"),  # 0.2.0: a foreign TypeError
+        ("boundary_friction", True, "a real number"),
+        ("limiting_shear_stress", 1e300, "a stress of 0 to 10 GPa"),
+        ("limiting_shear_stress", float("nan"), "a stress of 0 to 10 GPa"),
+        ("thermal_correction", "no", "true or false"),
+        ("lubrication", 3, "a name"),
+        ("ball_train_constant", 2.0, "a force ratio of 0 to 1"),
+    ],
+)
+def test_a_model_parameter_out_of_its_range_or_kind_is_refused(
+    parameter: str, value: object, why: str
+) -> None:
+    with pytest.raises(BallScrewInputError, match=parameter) as err:
+        friction_torque(reference_screw(), "mineral ISO VG 68", speed=100.0, temperature=40.0,
+                        model="complete", **{parameter: value})  # fmt: skip
+    assert why in str(err.value)
+
+
+def test_model_parameters_inside_their_ranges_are_read() -> None:
+    r = friction_torque(reference_screw(), "mineral ISO VG 68", speed=100.0, temperature=40.0,
+                        model="complete", boundary_friction=0.12, limiting_shear_stress=2e7,
+                        thermal_correction=False)  # fmt: skip
+    assert float(r.total) > 0.0

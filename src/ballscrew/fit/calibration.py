@@ -231,7 +231,7 @@ def _spec(name: str, model: str) -> FreeParameter:
         raise BallScrewInputError("--free", name, f"one of {sorted(FITTABLE)}")
     spec = FITTABLE[name]
     if spec.where == "model":
-        get_model(model).check_parameters({name: 0.0})
+        get_model(model).check_names({name: 0.0})
     return spec
 
 

@@ -14,7 +14,15 @@ from ..geometry import BallScrew
 from ..lubricant import Lubricant
 from ..validity import ValidityCheck
 
-__all__ = ["MODELS", "FrictionModel", "ModelFunction", "ModelSpec", "get_model", "register"]
+__all__ = [
+    "MODELS",
+    "PARAMETER_RANGES",
+    "FrictionModel",
+    "ModelFunction",
+    "ModelSpec",
+    "get_model",
+    "register",
+]
 
 
 class FrictionModel(Protocol):
@@ -85,7 +93,7 @@ class ModelSpec:
     checks: tuple[ValidityCheck, ...] = ()
     uses_state: bool = False
 
-    def check_parameters(self, given: dict[str, Any]) -> None:
+    def check_names(self, given: dict[str, Any]) -> None:
         """Raise if ``given`` holds a parameter the model does not have."""
         for key in given:
             if key not in self.parameters:
@@ -93,6 +101,17 @@ class ModelSpec:
                 raise BallScrewInputError(
                     key, given[key], f"a parameter of model {self.name!r}: {allowed}"
                 )
+
+    def check_parameters(self, given: dict[str, Any]) -> None:
+        """Raise if ``given`` holds a parameter the model lacks, or a value of the wrong kind.
+
+        A value must be of its default's kind (a truth value, a name, a number; a
+        number where the default is None) and, for the parameters of
+        :data:`PARAMETER_RANGES`, inside their physical range.
+        """
+        self.check_names(given)
+        for key, value in given.items():
+            _check_value(key, value, self.parameters[key])
 
     def __call__(
         self, screw: BallScrew, lubricant: Lubricant, speed: FloatArray, temperature: FloatArray,
@@ -105,6 +124,66 @@ class ModelSpec:
         out = self.function(screw, lubricant, speed, temperature, axial_load, **params)
         shape = np.broadcast_shapes(speed.shape, temperature.shape, axial_load.shape)
         return {k: np.broadcast_to(np.asarray(v, dtype=float), shape) for k, v in out.items()}
+
+
+PARAMETER_RANGES: dict[str, tuple[float, float, str]] = {
+    # Coulomb and traction coefficients of lubricated steel: 0.001 to about 0.15 measured;
+    # above 1 no lubricated steel contact goes (dry hardened steel is 0.6 to 0.8).
+    "mu0": (0.0, 1.0, "a friction coefficient"),
+    "boundary_friction": (0.0, 1.0, "a friction coefficient"),
+    "ball_ball_friction": (0.0, 1.0, "a friction coefficient"),
+    "friction_coefficient": (0.0, 1.0, "a friction coefficient"),
+    "sliding_coefficient": (0.0, 1.0, "a friction coefficient"),
+    "limiting_shear_coefficient": (0.0, 1.0, "a limiting shear over pressure"),
+    "kappa": (0.0, 1.0, "a ratio of 0 to 1"),
+    # The makers' preload drag coefficient K is 0.05 (THK) with 0.01 to 0.1 in use.
+    "preload_coefficient": (0.0, 1.0, "a drag coefficient of 0 to 1"),
+    "ball_train_constant": (0.0, 1.0, "a force ratio of 0 to 1"),
+    "hysteresis_loss_factor": (0.0, 1.0, "a loss factor of 0 to 1 (steel: about 0.01)"),
+    # Shear stresses: the limiting shear stress of oils is 1 to 100 MPa; 10 GPa is the
+    # shear strength of steel's order, past which no lubricant film goes.
+    "limiting_shear_stress": (0.0, 1e10, "a stress of 0 to 10 GPa"),
+    "eyring_stress": (0.0, 1e10, "a stress of 0 to 10 GPa"),
+    "return_turning_angle": (0.0, 8.0 * np.pi, "an angle of 0 to 4 turns [rad]"),
+    "seal_torque": (0.0, 1000.0, "a torque of 0 to 1000 N*m"),
+    "ball_ball_force": (0.0, 1e6, "a force of 0 to 1 MN"),
+    "asperity_b": (0.0, 100.0, "a fit constant of 0 to 100"),
+    "asperity_c": (0.0, 100.0, "a fit constant of 0 to 100"),
+    "rheology_exponent": (0.0, 100.0, "an exponent of 0 to 100"),
+}
+"""Physical range of each numeric model parameter that has one: (low, high, in words).
+
+A value outside is refused by :meth:`ModelSpec.check_parameters`: a parameter of 1e10 or
+more gave torques up to 2e301 N·m in 0.2.0. Other numeric parameters (the viscoelastic
+bed's constants per unit area) must be finite and non-negative."""
+
+
+def _check_value(key: str, value: Any, default: Any) -> None:
+    """``value`` of the kind of ``default`` and inside :data:`PARAMETER_RANGES`."""
+    if isinstance(default, bool):
+        if not isinstance(value, bool | np.bool_):
+            raise BallScrewInputError(key, value, "true or false")
+        return
+    if isinstance(default, str):
+        if not isinstance(value, str):
+            raise BallScrewInputError(key, value, f"a name, such as {default!r}")
+        return
+    if isinstance(default, tuple):
+        if not (isinstance(value, list | tuple) and len(value) == len(default)):
+            raise BallScrewInputError(key, value, f"{len(default)} whole numbers, like {default}")
+        for v in value:
+            _check_value(key, v, default[0])
+        return
+    if value is None and default is None:
+        return
+    if isinstance(value, bool | np.bool_) or not isinstance(value, int | float | np.number):
+        raise BallScrewInputError(key, value, "a real number")
+    number = float(value)
+    low, high, words = PARAMETER_RANGES.get(key, (0.0, np.inf, "a finite number, 0 or more"))
+    if not (low <= number <= high) or not np.isfinite(number):
+        raise BallScrewInputError(key, value, words)
+    if isinstance(default, int) and not isinstance(default, bool) and number != int(number):
+        raise BallScrewInputError(key, value, "a whole number")
 
 
 MODELS: dict[str, ModelSpec] = {}

@@ -110,6 +110,8 @@ def parse_toml(text: str, source: str) -> dict[str, Any]:
         raise BallScrewInputError(source, "(file)", f"valid TOML ({exc})") from None
     except RecursionError:
         raise BallScrewInputError(source, "(file)", deep) from None
+    except ValueError as exc:  # an integer of more digits than Python converts (4300)
+        raise BallScrewInputError(source, "(file)", f"numbers a float can hold ({exc})") from None
     level: list[tuple[Any, int]] = [(raw, 0)]
     while level:  # iteratively: a deep structure must not overflow the check either
         value, depth = level.pop()

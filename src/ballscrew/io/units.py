@@ -569,7 +569,7 @@ def _tell(readings: list[Reading], notes: list[Reading] | None) -> None:
 
 
 # --- lists and ranges ------------------------------------------------------------------------
-_COUNT = re.compile(r":\s*(\d+)")
+_COUNT = re.compile(r":\s*(\d{1,9})(?!\d)")  # a count of more digits is refused below
 
 
 def _range_parts(field: str, raw: str) -> tuple[str, str, int | None]:
