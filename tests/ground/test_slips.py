@@ -103,3 +103,15 @@ def test_model_parameters_inside_their_ranges_are_read() -> None:
                         model="complete", boundary_friction=0.12, limiting_shear_stress=2e7,
                         thermal_correction=False)  # fmt: skip
     assert float(r.total) > 0.0
+
+
+@pytest.mark.parametrize("text", ["5 K", "5 degC", "5 °C", "5 delta_degC", "9 degF"])
+def test_a_temperature_rise_typed_in_celsius_is_a_rise(text: str) -> None:
+    # 0.2.0 read pretension_temperature = "5 degC" as 278.15 K: the thermal error went
+    # from 14.75 um NOT OK to 0 um, and the verdict to OK.
+    from ballscrew.io.case import parse_case
+    from shared import reference_case_toml
+
+    toml = reference_case_toml("rise", speed="100 rpm", axial_load="0 N",
+                               more=f'[check]\npretension_temperature = "{text}"\n')  # fmt: skip
+    assert parse_case(toml).check["pretension_temperature"] == pytest.approx(5.0)

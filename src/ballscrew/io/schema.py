@@ -421,9 +421,10 @@ class CheckSection(BaseModel):
     pretension_temperature: Value = _f(
         "0 K",
         "temperature difference",
-        "temperature rise that the screw's pre-tension absorbs (fixed-fixed mounting; 0: none)",
+        "temperature rise that the screw's pre-tension absorbs (fixed-fixed mounting; 0: none; "
+        "a rise: '3 degC' is read as 3 K)",
         "3 K",
-        si="K",
+        si="delta_degC",
     )
 
 

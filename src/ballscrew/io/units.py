@@ -425,7 +425,8 @@ def to_si(field: str, value: Any, unit: str | None, notes: list[Reading] | None 
         silent slip (rad/s or rpm? m or mm?).
     unit : str or None
         Target unit, in pint's notation ("m", "N", "rad", "rad/s", "m/turn",
-        "degC"), or "" for a dimensionless number. None: whatever the value's
+        "degC"), or "" for a dimensionless number; "delta_degC" for a temperature
+        difference, which reads "5 degC" and "5 K" alike as a difference of 5 K. None: whatever the value's
         unit is, converted to SI base units, and a bare number taken as SI (the
         convention of model parameters, whose units the models document).
     notes : list of Reading, optional
@@ -446,6 +447,8 @@ def to_si(field: str, value: Any, unit: str | None, notes: list[Reading] | None 
     (0.01, 0.01)
     >>> to_si("temperature", "313.15 K", "degC")
     40.0
+    >>> to_si("rise", "5 degC", "delta_degC"), to_si("rise", "9 degF", "delta_degC")
+    (5.0, 5.0)
     >>> to_si("speed", "100", "rad/s")  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
@@ -499,6 +502,8 @@ def _convert(
             return ureg.Quantity(number, have).to_base_units().magnitude
         if unit == "":
             return ureg.Quantity(number, have).to("").magnitude
+        if unit == "delta_degC":  # a difference: 5 degC (or degF) is 5 K (9 degF 5 K) of it
+            have = _as_difference(have)
         factor = _per_turn(field, text, have, unit)
         if unit == "rad/s" and (note := _frequency_note(field, text, number, have)):
             _tell([note], notes)
@@ -511,6 +516,21 @@ def _convert(
         raise BallScrewInputError(field, text, wanted) from None
     except (pint.errors.PintError, ValueError, TypeError, ArithmeticError):
         raise BallScrewInputError(field, text, _UNIT_HELP) from None
+
+
+def _as_difference(unit: Any) -> Any:
+    """A temperature unit as the unit of a difference: degC -> delta_degC, degF -> delta_degF.
+
+    A field that is a temperature difference (a rise) reads '5 degC' as a rise of
+    5 K: pint would read it as the temperature 278.15 K (issue 35: a pre-tension of
+    '5 degC' became 278 K and flipped the thermal check's verdict).
+    """
+    ureg = registry()
+    for absolute, delta in (("degree_Celsius", "delta_degree_Celsius"),
+                            ("degree_Fahrenheit", "delta_degree_Fahrenheit")):  # fmt: skip
+        if unit == ureg.Unit(absolute):
+            return ureg.Unit(delta)
+    return unit
 
 
 def to_si_array(
@@ -542,6 +562,7 @@ EXAMPLE_UNITS: dict[str, str] = {
     "m**2/s": "mm**2/s",
     "kg/m**3": "kg/m**3",
     "1/Pa": "1/GPa",
+    "delta_degC": "K",
 }
 """The unit shown in the example of an error for each target unit."""
 
