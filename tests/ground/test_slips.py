@@ -115,3 +115,25 @@ def test_a_temperature_rise_typed_in_celsius_is_a_rise(text: str) -> None:
     toml = reference_case_toml("rise", speed="100 rpm", axial_load="0 N",
                                more=f'[check]\npretension_temperature = "{text}"\n')  # fmt: skip
     assert parse_case(toml).check["pretension_temperature"] == pytest.approx(5.0)
+
+
+@pytest.mark.parametrize(
+    ("key", "text"),
+    [("check.required_life", "20.000 h"), ("axis.moving_mass", "1.200 kg")],
+)
+def test_a_case_value_that_reads_two_ways_is_refused(key: str, text: str) -> None:
+    # 0.2.0: a 20 h life limit and a 1.2 kg mass (German readers meant 20 000 h, 1200 kg).
+    from ballscrew.io.case import parse_case
+    from shared import reference_case_toml
+
+    section, name = key.split(".")
+    toml = reference_case_toml("slip", speed="100 rpm", axial_load="0 N",
+                               more=f'[{section}]\n{name} = "{text}"\n')  # fmt: skip
+    with pytest.raises(BallScrewInputError, match=key):
+        parse_case(toml)
+
+
+def test_a_ball_diameter_in_three_decimals_is_read_as_the_ball_it_is() -> None:
+    from ballscrew.io.case import load_case
+
+    assert load_case().screw.ball_diameter == pytest.approx(3.969e-3)  # '3.969 mm'

@@ -39,7 +39,10 @@ SLIPS: list[tuple[str, str, float | None]] = [
     ("rad/s", "50 rps", 50 * RPS),
     ("rad/s", "50 rev/s", 50 * RPS),
     ("rad/s", "50 Hz", 50 * RPS),  # with a note: Hz read as revolutions per second
-    ("rad/s", "314.159 rad/s", 314.159),
+    ("rad/s", "314.16 rad/s", 314.16),
+    ("rad/s", "314.159 rad/s", REFUSED),  # a point before 3 digits: 314159 or 314.159?
+    ("rad/s", "3.000 rpm", REFUSED),  # 0.2.0: 3 rpm (3000 in German notation)
+    ("rad/s", "1.500 U/min", REFUSED),  # 0.2.0: 1.5 rpm
     ("rad/s", "18000 deg/s", 18000 * math.pi / 180.0),
     ("rad/s", "3 000 rpm", 3000 * RPM),
     ("rad/s", "1,5 rps", 1.5 * RPS),
@@ -133,9 +136,27 @@ def test_each_slip_is_read_as_meant_or_refused(unit: str, text: str, meant: floa
             assert to_si("field", text, unit) == pytest.approx(meant, rel=1e-12, abs=1e-15)
 
 
-def test_a_number_read_two_ways_shows_both_readings() -> None:
-    with pytest.raises(BallScrewInputError, match=r"'1200 N' or '1\.200 N'"):
-        to_si("screw.preload", "1,200 N", "N")
+@pytest.mark.parametrize(
+    ("text", "shown"),
+    [("1,200 N", r"'1200 N' or '1\.2 N'"), ("1.200 N", r"'1200 N' or '1\.2 N'"),
+     ("3.000 rpm", r"'3000 rpm' or '3 rpm'")],
+)  # fmt: skip
+def test_a_number_read_two_ways_shows_both_readings(text: str, shown: str) -> None:
+    with pytest.raises(BallScrewInputError, match=shown):
+        to_si("screw.preload", text, "rad/s" if "rpm" in text else "N")
+
+
+@pytest.mark.parametrize(
+    ("text", "meant"), [("3.969 mm", 3.969e-3), ("6,350 mm", 6.35e-3), ("4.762 mm", 4.762e-3)]
+)
+def test_the_fields_range_settles_a_number_read_two_ways(text: str, meant: float) -> None:
+    # A ball of 3969 mm is none: inside a ball diameter's range only one reading remains.
+    assert to_si("screw.ball_diameter", text, "m", plausible=(0.3e-3, 0.1)) == meant
+
+
+def test_a_range_holding_both_readings_settles_nothing() -> None:
+    with pytest.raises(BallScrewInputError, match=r"'1200 kg' or '1\.2 kg'"):
+        to_si("axis.moving_mass", "1.200 kg", "kg", plausible=(0.0, 1e5))
 
 
 @pytest.mark.parametrize("text", ["50 Hz", "100 1/s", "2 kHz"])
@@ -237,8 +258,8 @@ def test_a_number_in_any_format_is_read_right_or_refused(
     try:
         got = to_si("x", text, target)
     except BallScrewInputError as exc:
-        # Refused only where the text could mean two numbers: a comma then three digits.
-        assert "thousands or be a decimal comma" in str(exc), text
+        # Refused only where the text could mean two numbers: a mark then three digits.
+        assert "thousands or be a decimal" in str(exc), text
         return
     # Each format is exact decimal text; the conversion adds one rounding: 1e-12.
     assert got == pytest.approx(meant, rel=1e-12, abs=1e-300), text

@@ -50,6 +50,7 @@ from .schema import (
     LubricantSection,
     MotorSection,
     ScrewSection,
+    plausible_ranges,
     si_units,
 )
 from .units import Reading, parse_range, to_si
@@ -310,7 +311,8 @@ def parse_case(text: str, *, source: str = "case") -> Case:
 
     def si(section: str, name: str, value: Any, unit: str) -> float:
         field = f"{section}.{name}"
-        return to_si(field, _unwrap(field, value, notes), unit, notes=read)
+        return to_si(field, _unwrap(field, value, notes), unit, notes=read,
+                     plausible=PLAUSIBLE.get(field))  # fmt: skip
 
     screw, screw_source, ratings = _screw(s, si, notes)
 
@@ -469,6 +471,13 @@ def _axis(data: CaseFile, si: Callable[[str, str, Any, str], float]) -> dict[str
         "support": data.axis.support,
     }
 
+
+PLAUSIBLE: dict[str, tuple[float, float]] = {
+    f"{name}.{key}": bounds
+    for name, section in SECTIONS.items()
+    for key, bounds in plausible_ranges(section).items()
+}
+"""Field -> its plausible range [SI], where the schema states one (a number read two ways)."""
 
 SCREW_UNITS: dict[str, str] = si_units(ScrewSection)
 """The SI unit of each numeric ``[screw]`` key that is a :class:`BallScrew` field ("" = none).

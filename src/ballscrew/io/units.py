@@ -133,6 +133,16 @@ _NUMBER = re.compile(
 )
 
 
+class AmbiguousNumberError(BallScrewInputError):
+    """A number that reads two ways ('1,200', '3.000'); ``numbers`` holds both readings."""
+
+    def __init__(
+        self, field: str, value: Any, allowed: str, numbers: tuple[float, ...], unit_text: str
+    ) -> None:
+        super().__init__(field, value, allowed)
+        self.numbers, self.unit_text = numbers, unit_text
+
+
 class _NotOneNumberError(Exception):
     """The digits cannot be read as one number, or could be read two ways."""
 
@@ -183,9 +193,13 @@ def _digits_value(digits: str) -> str:
             raise _NotOneNumberError(f"several '{mark}' that do not group the digits by threes")
         return "".join(groups)
     whole, fraction = groups
-    if mark == "," and len(fraction) == 3 and 1 <= len(whole) <= 3 and whole[0] != "0":
+    if len(fraction) == 3 and 1 <= len(whole) <= 3 and whole[0] != "0":
+        # '1,200' and '3.000' are each read one way in English and the other in German or
+        # French: unless the field's range settles it (to_si's plausible), neither reading
+        # is taken, and both are shown.
+        name = "comma" if mark == "," else "point"
         raise _NotOneNumberError(
-            "a comma before three digits may group thousands or be a decimal comma",
+            f"a {name} before three digits may group thousands or be a decimal {name}",
             (whole + fraction, whole + "." + fraction),
         )
     return (whole or "0") + "." + fraction
@@ -236,11 +250,15 @@ def split_quantity(field: str, text: str) -> tuple[float, str]:
     try:
         plain = _digits_value(digits)
     except _NotOneNumberError as exc:
-        shown = ""
-        if exc.readings:
-            shown = " (" + " or ".join(f"'{r}{(' ' + rest.strip()) if rest.strip() else ''}'"
-                                       for r in exc.readings) + "?)"  # fmt: skip
-        raise BallScrewInputError(field, text, f"one number: {exc.why}{shown}") from None
+        if not exc.readings:
+            raise BallScrewInputError(field, text, f"one number: {exc.why}") from None
+        shown = " or ".join(f"'{float(r):g}{(' ' + rest.strip()) if rest.strip() else ''}'"
+                            for r in exc.readings)  # fmt: skip
+        sign, exponent = match.group("sign"), match.group("exponent") or ""
+        raise AmbiguousNumberError(
+            field, text, f"one number: {exc.why} ({shown}?)",
+            tuple(float(sign + r + exponent) for r in exc.readings), _unit_text(field, text, rest),
+        ) from None  # fmt: skip
     number = float(match.group("sign") + plain + (match.group("exponent") or ""))
     return number, _unit_text(field, text, rest)
 
@@ -409,7 +427,13 @@ def _frequency_note(field: str, text: str, number: Any, unit: Any) -> Reading | 
     return Reading(field, text, f"{shown}; for radians per second write the unit rad/s")
 
 
-def to_si(field: str, value: Any, unit: str | None, notes: list[Reading] | None = None) -> float:
+def to_si(
+    field: str,
+    value: Any,
+    unit: str | None,
+    notes: list[Reading] | None = None,
+    plausible: tuple[float, float] | None = None,
+) -> float:
     """Convert ``value`` to the SI unit ``unit`` and return the magnitude.
 
     Parameters
@@ -426,12 +450,17 @@ def to_si(field: str, value: Any, unit: str | None, notes: list[Reading] | None 
     unit : str or None
         Target unit, in pint's notation ("m", "N", "rad", "rad/s", "m/turn",
         "degC"), or "" for a dimensionless number; "delta_degC" for a temperature
-        difference, which reads "5 degC" and "5 K" alike as a difference of 5 K. None: whatever the value's
-        unit is, converted to SI base units, and a bare number taken as SI (the
-        convention of model parameters, whose units the models document).
+        difference, which reads "5 degC" and "5 K" alike as a difference of 5 K.
+        None: whatever the value's unit is, converted to SI base units, and a bare
+        number taken as SI (the convention of model parameters, whose units the
+        models document).
     notes : list of Reading, optional
         Where to add how an ambiguous unit was read (a speed in Hz or 1/s);
         without it, a :class:`~ballscrew.errors.BallScrewReadingWarning`.
+    plausible : (float, float), optional
+        The field's plausible range in ``unit``: a number that reads two ways
+        ("3.969 mm", "1,200 N") is taken in the one reading inside it; without a
+        range, or with both readings (or none) inside, it is refused showing both.
 
     Examples
     --------
@@ -461,7 +490,18 @@ def to_si(field: str, value: Any, unit: str | None, notes: list[Reading] | None 
         if unit:
             raise _bare(field, value, unit)
         return _finite(field, value, float(value))
-    number, unit_text = split_quantity(field, str(value))
+    try:
+        number, unit_text = split_quantity(field, str(value))
+    except AmbiguousNumberError as amb:
+        if plausible is None:
+            raise
+        values = [_value_si(field, str(value).strip(), n, amb.unit_text, unit, notes)
+                  for n in amb.numbers]  # fmt: skip
+        inside = [v for v in values if plausible[0] <= v <= plausible[1]]
+        if len(inside) != 1:
+            raise
+        # The other reading is outside the field's range (a 3969 mm ball): nothing to tell.
+        return inside[0]
     return _value_si(field, str(value).strip(), number, unit_text, unit, notes)
 
 
