@@ -107,6 +107,21 @@ PLAUSIBLE_SIZES: tuple[tuple[str, float, float, str], ...] = (
 (name, low, high, why): generous bounds around every made screw, so that a
 value given in the wrong unit (40 for 40 mm) is caught with a hint."""
 
+PLAUSIBLE_MODULI: tuple[tuple[str, float, float, str], ...] = (
+    ("youngs_modulus_ball", 5e10, 7e11, "balls are bearing steel (about 210 GPa), silicon "
+     "nitride (310 GPa) or cemented carbide (up to 650 GPa)"),
+    ("youngs_modulus_races", 5e10, 7e11, "screws and nuts are steel (about 210 GPa)"),
+)  # fmt: skip
+"""Young's moduli [Pa] outside which a :class:`BallScrew` is refused (name, low, high, why):
+'210 MPa' for 210 GPa gave 7.5 times the torque in 0.2.0."""
+
+MAX_CIRCUITS = 20
+"""The most circuits per nut (or half-nut) a :class:`BallScrew` takes: makers build 1 to 10."""
+
+MAX_LOADED_TURNS = 10.0
+"""The most loaded turns per circuit a :class:`BallScrew` takes: makers build 1.5 to 5 (a
+designation's '25x2' read as 25 turns was a slip for 2.5)."""
+
 
 MAX_PRELOAD = 1e8
 """The largest preload a :class:`BallScrew` takes [N] (100 MN: far past any ball screw)."""
@@ -205,7 +220,7 @@ class BallScrew:
     roughness_nut: float = 0.3e-6
 
     def _plausible(self) -> None:
-        """Refuse sizes no ball screw has: most often a unit slip (mm given as m)."""
+        """Refuse sizes and moduli no ball screw has: most often a unit slip (mm given as m)."""
         for name, low, high, made in PLAUSIBLE_SIZES:
             value = float(getattr(self, name))
             if low <= value <= high:
@@ -216,6 +231,21 @@ class BallScrew:
                     hint = f"; {value:g} looks like {unit}: {value:g} {unit} = {value * factor:g} m"
                     break
             raise BallScrewInputError(name, value, f"{low:g} to {high:g} m ({made}){hint}")
+        for name, low, high, made in PLAUSIBLE_MODULI:
+            value = float(getattr(self, name))
+            if not low <= value <= high:
+                hint = f"; {value:g} Pa looks like GPa given as MPa" if 5e7 <= value <= 7e8 else ""
+                raise BallScrewInputError(name, value, f"{low:g} to {high:g} Pa ({made}){hint}")
+        if self.circuits > MAX_CIRCUITS:
+            raise BallScrewInputError(
+                "circuits", self.circuits, f"1 to {MAX_CIRCUITS} (makers build 1 to 10 per nut)"
+            )
+        if self.loaded_turns > MAX_LOADED_TURNS:
+            raise BallScrewInputError(
+                "loaded_turns", self.loaded_turns,
+                f"at most {MAX_LOADED_TURNS:g} per circuit (makers build 1.5 to 5; "
+                "a designation's '2.5x2' is 2.5 turns in each of 2 circuits)",
+            )  # fmt: skip
 
     def __post_init__(self) -> None:
         for name in ("pitch_diameter", "lead", "ball_diameter", "loaded_turns"):

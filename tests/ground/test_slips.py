@@ -137,3 +137,28 @@ def test_a_ball_diameter_in_three_decimals_is_read_as_the_ball_it_is() -> None:
     from ballscrew.io.case import load_case
 
     assert load_case().screw.ball_diameter == pytest.approx(3.969e-3)  # '3.969 mm'
+
+
+@pytest.mark.parametrize(
+    ("change", "why"),
+    [
+        ({"youngs_modulus_ball": 210e6}, "GPa given as MPa"),  # 0.2.0: 7.5 x the torque
+        ({"youngs_modulus_races": 2.1e15}, "5e+10 to 7e+11 Pa"),
+        ({"circuits": 10**18}, "1 to 20"),  # 0.2.0: 3.8e20 N*m
+        ({"loaded_turns": 25.0}, "at most 10 per circuit"),  # a designation's '25x2'
+    ],
+)
+def test_a_screw_no_maker_builds_is_refused_by_name(change: dict[str, float], why: str) -> None:
+    (name,) = change
+    with pytest.raises(BallScrewInputError, match=name) as err:
+        reference_screw().replace(**change)
+    assert why in str(err.value)
+
+
+def test_a_designation_with_25_turns_is_refused() -> None:
+    from ballscrew.io.case import parse_case
+
+    toml = '[screw]\ndesignation = "40x10 double 25x2 6.35"\npreload = "2 kN"\n'
+    toml += '[lubricant]\nname = "mineral ISO VG 68"\n[operation]\nspeed = "100 rpm"\n'
+    with pytest.raises(BallScrewInputError, match="loaded_turns"):
+        parse_case(toml)

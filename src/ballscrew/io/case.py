@@ -37,7 +37,7 @@ from .. import lubricants
 from ..design.limits import check_operating_bounds
 from ..design.ratings import Ratings, static_rating_estimate
 from ..errors import BallScrewInputError, FloatArray
-from ..geometry import BallScrew, check_buildable
+from ..geometry import PLAUSIBLE_SIZES, BallScrew, check_buildable
 from ..lubricant import Lubricant
 from .designation import resolve
 from .files import read_input_text
@@ -50,7 +50,6 @@ from .schema import (
     LubricantSection,
     MotorSection,
     ScrewSection,
-    plausible_ranges,
     si_units,
 )
 from .units import Reading, parse_range, to_si
@@ -473,11 +472,10 @@ def _axis(data: CaseFile, si: Callable[[str, str, Any, str], float]) -> dict[str
 
 
 PLAUSIBLE: dict[str, tuple[float, float]] = {
-    f"{name}.{key}": bounds
-    for name, section in SECTIONS.items()
-    for key, bounds in plausible_ranges(section).items()
+    f"screw.{name}": (low, high) for name, low, high, _ in PLAUSIBLE_SIZES
 }
-"""Field -> its plausible range [SI], where the schema states one (a number read two ways)."""
+"""Field -> its plausible range [SI], the sizes a :class:`BallScrew` takes: a number that
+reads two ways ('3.969 mm') is read in the one way inside it."""
 
 SCREW_UNITS: dict[str, str] = si_units(ScrewSection)
 """The SI unit of each numeric ``[screw]`` key that is a :class:`BallScrew` field ("" = none).

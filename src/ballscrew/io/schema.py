@@ -50,7 +50,6 @@ def _f(
     fill: bool = False,
     si: str | None = None,
     group: str | None = None,
-    plausible: tuple[float, float] | None = None,
     **kwargs: Any,
 ) -> Any:
     """A field with its unit (``"-"`` for a number) and an example value.
@@ -59,9 +58,7 @@ def _f(
     pair of which exactly one is needed). ``si``: the SI unit the key's value is
     read in (``""`` for a plain number), for the keys :mod:`ballscrew.io.case` turns
     into numbers by :func:`si_units`; ``group`` sets some of a section's keys apart
-    (``"thermal"``: the thermal keys of ``[axis]``). ``plausible``: the range [SI] a
-    value of the key may have, which decides a number that reads two ways ('3.969 mm':
-    a 3969 mm ball is none; :func:`ballscrew.io.units.to_si`).
+    (``"thermal"``: the thermal keys of ``[axis]``).
     """
     extra: dict[str, Any] = {
         "unit": unit, "example": example if example is not None else default, "fill": fill,
@@ -70,8 +67,6 @@ def _f(
         extra["si"] = si
     if group is not None:
         extra["group"] = group
-    if plausible is not None:
-        extra["plausible"] = plausible
     if default is ...:
         return Field(description=text, json_schema_extra=extra, **kwargs)
     return Field(default=default, description=text, json_schema_extra=extra, **kwargs)
@@ -95,7 +90,6 @@ class ScrewSection(BaseModel):
         "40 mm",
         fill=True,
         si="m",
-        plausible=(2e-3, 1.0),
     )
     lead: Value | None = _f(
         None,
@@ -104,7 +98,6 @@ class ScrewSection(BaseModel):
         "10 mm",
         fill=True,
         si="m/turn",
-        plausible=(0.5e-3, 0.5),
     )
     ball_diameter: Value | None = _f(
         None,
@@ -113,7 +106,6 @@ class ScrewSection(BaseModel):
         "6.35 mm",
         fill=True,
         si="m",
-        plausible=(0.3e-3, 0.1),
     )
     contact_angle: Value = _f("45 deg", "angle", "nominal contact angle", si="rad")
     conformity_screw: Value = _f(0.55, "-", "screw groove radius / ball diameter (> 0.5)", si="")
@@ -551,17 +543,6 @@ def si_units(section: type[BaseModel], group: str | None = None) -> dict[str, st
         extra = info.json_schema_extra if isinstance(info.json_schema_extra, dict) else {}
         if "si" in extra and extra.get("group") == group:
             out[key] = str(extra["si"])
-    return out
-
-
-def plausible_ranges(section: type[BaseModel]) -> dict[str, tuple[float, float]]:
-    """Key -> the range [SI] a value of the key may have, for the keys that state one."""
-    out: dict[str, tuple[float, float]] = {}
-    for key, info in section.model_fields.items():
-        extra = info.json_schema_extra if isinstance(info.json_schema_extra, dict) else {}
-        bounds = extra.get("plausible")
-        if isinstance(bounds, tuple | list):
-            out[key] = (float(str(bounds[0])), float(str(bounds[1])))
     return out
 
 
