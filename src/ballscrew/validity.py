@@ -318,15 +318,12 @@ def grease_note(lubricant: Lubricant) -> list[ValidityIssue]:
 
 
 def check(
-    screw: BallScrew,
-    lubricant: Lubricant,
-    speed: FloatArray,
-    temperature: FloatArray,
+    screw: BallScrew, lubricant: Lubricant, speed: FloatArray, temperature: FloatArray,
     axial_load: FloatArray,
     model: str,
     parameters: dict[str, Any],
     checks: Iterable[ValidityCheck] = (),
-) -> list[ValidityIssue]:
+) -> list[ValidityIssue]:  # fmt: skip
     """Every quantity of a call that leaves its validity range, worst value each.
 
     Parameters
@@ -361,26 +358,18 @@ def check(
 
 
 def lubricant_checks(
-    screw: BallScrew,
-    lubricant: Lubricant,
-    speed: FloatArray,
-    temperature: FloatArray,
-    axial_load: FloatArray,
-    parameters: dict[str, Any],
-) -> list[ValidityIssue]:
+    screw: BallScrew, lubricant: Lubricant, speed: FloatArray, temperature: FloatArray,
+    axial_load: FloatArray, parameters: dict[str, Any],
+) -> list[ValidityIssue]:  # fmt: skip
     """The viscosity-temperature fit's range and a grease's note (models that use the oil)."""
     t_range = [float(np.min(temperature)), float(np.max(temperature))]
     return outside("temperature [degC]", t_range) + grease_note(lubricant)
 
 
 def film_checks(
-    screw: BallScrew,
-    lubricant: Lubricant,
-    speed: FloatArray,
-    temperature: FloatArray,
-    axial_load: FloatArray,
-    parameters: dict[str, Any],
-) -> list[ValidityIssue]:
+    screw: BallScrew, lubricant: Lubricant, speed: FloatArray, temperature: FloatArray,
+    axial_load: FloatArray, parameters: dict[str, Any],
+) -> list[ValidityIssue]:  # fmt: skip
     """Ranges of the EHL film formulas and of the Hertz fits, for models built on them.
 
     Includes :func:`lubricant_checks` (the viscosity fit's range, a grease's

@@ -147,17 +147,13 @@ def local_viscosity(
 
 
 def model_state(
-    screw: BallScrew,
-    lubricant: Lubricant,
-    speed: FloatArray,
-    temperature: FloatArray,
-    axial_load: FloatArray,
-    *,
+    screw: BallScrew, lubricant: Lubricant, speed: FloatArray, temperature: FloatArray,
+    axial_load: FloatArray, *,
     hertz_method: str,
     asperity_b: float,
     asperity_c: float,
     state: OperatingState | None = None,
-) -> OperatingState:
+) -> OperatingState:  # fmt: skip
     """The contact state a model works on: the chain's, or built here when called directly.
 
     Built unbroadcast (:func:`ballscrew.state.operating_points`), so that each

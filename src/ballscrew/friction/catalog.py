@@ -58,13 +58,9 @@ CATALOG_TEMPERATURE_RANGE = ValidityRange(
 
 
 def catalog_temperature_check(
-    screw: BallScrew,
-    lubricant: Lubricant,
-    speed: FloatArray,
-    temperature: FloatArray,
-    axial_load: FloatArray,
-    parameters: dict[str, Any],
-) -> list[ValidityIssue]:
+    screw: BallScrew, lubricant: Lubricant, speed: FloatArray, temperature: FloatArray,
+    axial_load: FloatArray, parameters: dict[str, Any],
+) -> list[ValidityIssue]:  # fmt: skip
     """The catalogue rule's temperature range (it does not follow temperature)."""
     return outside(
         CATALOG_TEMPERATURE_RANGE, [float(np.min(temperature)), float(np.max(temperature))]
@@ -81,15 +77,11 @@ def catalog_temperature_check(
     checks=(catalog_temperature_check,),
 )
 def catalog(
-    screw: BallScrew,
-    lubricant: Lubricant,
-    speed: FloatArray,
-    temperature: FloatArray,
-    axial_load: FloatArray,
-    *,
+    screw: BallScrew, lubricant: Lubricant, speed: FloatArray, temperature: FloatArray,
+    axial_load: FloatArray, *,
     preload_coefficient: float = 0.05,
     friction_coefficient: float = 0.003,
-) -> dict[str, FloatArray]:
+) -> dict[str, FloatArray]:  # fmt: skip
     r"""Catalogue friction torque: preload drag torque plus the external-load term.
 
     Parameters

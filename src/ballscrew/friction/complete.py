@@ -398,13 +398,8 @@ def _helix_slip(
     checks=(film_checks,),
 )
 def complete(
-    screw: BallScrew,
-    lubricant: Lubricant,
-    speed: FloatArray,
-    temperature: FloatArray,
-    axial_load: FloatArray,
-    *,
-    state: OperatingState | None = None,
+    screw: BallScrew, lubricant: Lubricant, speed: FloatArray, temperature: FloatArray,
+    axial_load: FloatArray, *, state: OperatingState | None = None,
     boundary_friction: float = 0.1,
     limiting_shear_stress: float | None = None,
     limiting_shear_coefficient: float | None = None,
@@ -417,7 +412,7 @@ def complete(
     asperity_b: float = 1.42,
     asperity_c: float = 0.8,
     hertz_method: str = "exact",
-) -> dict[str, FloatArray]:
+) -> dict[str, FloatArray]:  # fmt: skip
     r"""Friction torque as the sum of every loss mechanism (module docstring).
 
     Parameters

@@ -280,13 +280,8 @@ class _Integrand:
     checks=(film_checks,),
 )
 def harris_full(
-    screw: BallScrew,
-    lubricant: Lubricant,
-    speed: FloatArray,
-    temperature: FloatArray,
-    axial_load: FloatArray,
-    *,
-    state: OperatingState | None = None,
+    screw: BallScrew, lubricant: Lubricant, speed: FloatArray, temperature: FloatArray,
+    axial_load: FloatArray, *, state: OperatingState | None = None,
     mu0: float = 0.1,
     rheology_model: str = "harmonic",
     rheology_exponent: float = 1.0,
@@ -298,7 +293,7 @@ def harris_full(
     film: str = "central",
     hertz_method: str = "exact",
     nodes: tuple[int, int] = (8, 8),
-) -> dict[str, FloatArray]:
+) -> dict[str, FloatArray]:  # fmt: skip
     r"""Friction torque by the full Harris-type integral (module docstring).
 
     Parameters

@@ -285,13 +285,8 @@ def _harmonic(tau_n: FloatArray, tau_lim: FloatArray) -> FloatArray:
     checks=(film_checks,),
 )
 def harris_simplified(
-    screw: BallScrew,
-    lubricant: Lubricant,
-    speed: FloatArray,
-    temperature: FloatArray,
-    axial_load: FloatArray,
-    *,
-    state: OperatingState | None = None,
+    screw: BallScrew, lubricant: Lubricant, speed: FloatArray, temperature: FloatArray,
+    axial_load: FloatArray, *, state: OperatingState | None = None,
     mu0: float = 0.1,
     sliding_coefficient: float = 0.3,
     sliding_sign_on_lubricant: bool = False,
@@ -307,7 +302,7 @@ def harris_simplified(
     hertz_method: str = "houpert",
     torque_arm: str = "energy",
     nodes: int = 8,
-) -> dict[str, FloatArray]:
+) -> dict[str, FloatArray]:  # fmt: skip
     r"""Friction torque by the study's simplified model (module docstring).
 
     Parameters

@@ -179,13 +179,9 @@ SPIN_PARAMETER_RANGE = ValidityRange(
 
 
 def spin_parameter_check(
-    screw: BallScrew,
-    lubricant: Lubricant,
-    speed: FloatArray,
-    temperature: FloatArray,
-    axial_load: FloatArray,
-    parameters: dict[str, Any],
-) -> list[ValidityIssue]:
+    screw: BallScrew, lubricant: Lubricant, speed: FloatArray, temperature: FloatArray,
+    axial_load: FloatArray, parameters: dict[str, Any],
+) -> list[ValidityIssue]:  # fmt: skip
     """Houpert's spin parameter :math:`E` of the model at the extreme ball loads."""
     kappa = float(parameters.get("kappa", 0.05))
     ra = 0.5 * screw.ball_diameter * (1.0 + kappa) / (1.0 + 0.5 * kappa)
@@ -213,13 +209,8 @@ def spin_parameter_check(
     checks=(film_checks, spin_parameter_check),
 )
 def olaru(
-    screw: BallScrew,
-    lubricant: Lubricant,
-    speed: FloatArray,
-    temperature: FloatArray,
-    axial_load: FloatArray,
-    *,
-    state: OperatingState | None = None,
+    screw: BallScrew, lubricant: Lubricant, speed: FloatArray, temperature: FloatArray,
+    axial_load: FloatArray, *, state: OperatingState | None = None,
     mu0: float = 0.1,
     sliding_friction: str = "asperity",
     asperity_b: float = 1.42,
@@ -230,7 +221,7 @@ def olaru(
     include_pivoting: bool = True,
     hysteresis_units: str = "SI",
     hertz_method: str = "houpert",
-) -> dict[str, FloatArray]:
+) -> dict[str, FloatArray]:  # fmt: skip
     r"""Friction torque by Olaru et al.'s model (decisions: module docstring).
 
     Parameters

@@ -365,19 +365,15 @@ def _rolling_friction(
     purpose="to reproduce the study (Sušeň's Figs. 4-5); not for prediction",
 )
 def viscoelastic(
-    screw: BallScrew,
-    lubricant: Lubricant,
-    speed: FloatArray,
-    temperature: FloatArray,
-    axial_load: FloatArray,
-    *,
+    screw: BallScrew, lubricant: Lubricant, speed: FloatArray, temperature: FloatArray,
+    axial_load: FloatArray, *,
     stiffness: float = 2.1e18,
     mass: float = 7.8e-4,
     damping: float = 3.5e13,
     leading_edge: bool = True,
     edge_power: str = "kinetic",
     torque_arm: str = "energy",
-) -> dict[str, FloatArray]:
+) -> dict[str, FloatArray]:  # fmt: skip
     r"""Friction torque by the viscoelastic model (module docstring).
 
     Parameters
