@@ -163,12 +163,8 @@ def ball_loads(screw: BallScrew, axial_load: npt.ArrayLike = 0.0) -> BallLoads:
 
     Examples
     --------
-    >>> import math
-    >>> s = BallScrew(pitch_diameter=0.040, lead=0.010, ball_diameter=6.35e-3,
-    ...               contact_angle=math.radians(45), conformity_screw=0.55,
-    ...               conformity_nut=0.55, loaded_turns=2.5, circuits=2,
-    ...               nut="double", preload=2000.0)
-    >>> loads = ball_loads(s)
+    >>> from ballscrew.geometry import reference_screw  # 40 x 10 mm, 98 balls a half-nut
+    >>> loads = ball_loads(reference_screw())
     >>> round(float(loads.normal_load_1), 2)  # 2000 / (98 sin 45° cos 4.55°)
     28.95
     """
