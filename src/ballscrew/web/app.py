@@ -13,7 +13,7 @@ Built on Starlette (an ASGI toolkit) and served by uvicorn
 ``POST /api/evaluate``
     Everything the page shows and the files it offers (:func:`service.evaluate`).
 ``POST /api/case``
-    An uploaded case file read as TOML data (:func:`service.read_case_file`).
+    An uploaded case file read as TOML data (:func:`service.read_case_file`, in a worker).
 ``POST /api/program``
     A short part program on the example machine (:func:`program.run`).
 
@@ -205,18 +205,17 @@ def _json_route(name: str, limits: Limits, compute: WorkerPool) -> _Endpoint:
 
     async def endpoint(request: Request) -> Response:
         _same_origin(request, "application/json")
-        payload = service.read_json(await _body(request, limits))
-        return _json(await compute(name, payload))
+        return _json(await compute(name, await _body(request, limits)))
 
     return endpoint
 
 
-def _case_file(limits: Limits) -> _Endpoint:
+def _case_file(limits: Limits, compute: WorkerPool) -> _Endpoint:
     """``POST /api/case``: an uploaded case file (sent as application/toml) read as TOML data."""
 
     async def case_file(request: Request) -> Response:
         _same_origin(request, "application/toml")
-        return _json(service.read_case_file(await _body(request, limits)))
+        return _json(await compute("case", await _body(request, limits)))
 
     return case_file
 
@@ -257,7 +256,7 @@ def _lifespan(
         await anyio.to_thread.run_sync(compute.start, 120.0)
         if not compute.size:
             try:
-                await compute("evaluate", service.WARM_UP)
+                await compute("evaluate", json.dumps(service.WARM_UP).encode("utf-8"))
             except Exception:  # the server still starts, and answers what it can
                 LOG.exception("warm-up computation failed")
         try:
@@ -287,7 +286,7 @@ def create_app(
             Route("/static/{name}", _static_file(_static()), methods=["GET"]),
             Route("/api/torque", _json_route("torque", limits, compute), methods=["POST"]),
             Route("/api/evaluate", _json_route("evaluate", limits, compute), methods=["POST"]),
-            Route("/api/case", _case_file(limits), methods=["POST"]),
+            Route("/api/case", _case_file(limits, compute), methods=["POST"]),
             Route("/api/program", _json_route("program", limits, compute), methods=["POST"]),
             Route("/api/contour", _json_route("contour", limits, compute), methods=["POST"]),
         ],

@@ -37,13 +37,32 @@ __all__ = ["FUNCTIONS", "WorkerPool"]
 
 LOG = logging.getLogger("ballscrew.web")
 
-FUNCTIONS: dict[str, Callable[[dict[str, Any], Limits], dict[str, Any]]] = {
-    "torque": service.torque,
-    "evaluate": service.evaluate,
-    "program": program.run,
-    "contour": contour.contour,
+Function = Callable[[dict[str, Any], Limits], dict[str, Any]]
+
+
+def _from_json(function: Function) -> Callable[[bytes, Limits], dict[str, Any]]:
+    """``function`` on a request body read as a JSON object, the reading in the worker too."""
+
+    def run(body: bytes, limits: Limits) -> dict[str, Any]:
+        return function(service.read_json(body), limits)
+
+    return run
+
+
+def _case_file(body: bytes, limits: Limits) -> dict[str, Any]:
+    return service.read_case_file(body)
+
+
+FUNCTIONS: dict[str, Callable[[bytes, Limits], dict[str, Any]]] = {
+    "torque": _from_json(service.torque),
+    "evaluate": _from_json(service.evaluate),
+    "program": _from_json(program.run),
+    "contour": _from_json(contour.contour),
+    "case": _case_file,
 }
-"""What a worker may be asked to run, by name."""
+"""What a worker may be asked to run, by name: each takes the request's body (bytes) and
+reads it there, so that reading, like computing, runs within the time budget and off the
+server's event loop (a body of the worst shape cannot hold the server)."""
 
 
 def _serve(conn: Connection) -> None:
@@ -91,7 +110,7 @@ class _Process:
             self.ready = self.conn.recv() == ("ready",)
         return self.ready
 
-    def ask(self, name: str, payload: dict[str, Any], limits: Limits, seconds: float) -> Any:
+    def ask(self, name: str, payload: bytes, limits: Limits, seconds: float) -> Any:
         """The answer; None when the budget ran out (the caller then kills the process)."""
         self.conn.send((name, payload, limits))
         if not self.conn.poll(seconds):
@@ -150,7 +169,7 @@ class WorkerPool:
             self._idle = []
             self._started = False
 
-    def _run(self, name: str, payload: dict[str, Any]) -> dict[str, Any]:
+    def _run(self, name: str, payload: bytes) -> dict[str, Any]:
         begin = time.monotonic()
         if not self._free.acquire(timeout=self.limits.seconds / 2):
             raise ApiError(503, "the calculator is busy; try again in a moment")
@@ -196,8 +215,8 @@ class WorkerPool:
             raise ApiError(answer[1], answer[2], answer[3])
         raise RuntimeError(f"the worker failed on {name} (see the server's log)")
 
-    async def __call__(self, name: str, payload: dict[str, Any]) -> dict[str, Any]:
-        """Run ``FUNCTIONS[name]`` on ``payload`` in a worker; the event loop stays free."""
+    async def __call__(self, name: str, payload: bytes) -> dict[str, Any]:
+        """Run ``FUNCTIONS[name]`` on the request body ``payload`` in a worker, off the loop."""
         if self.size:
             return await anyio.to_thread.run_sync(self._run, name, payload)
         try:
