@@ -162,3 +162,19 @@ def test_a_body_of_the_worst_shape_holds_neither_the_page_nor_itself(
         sender.join(timeout=20)
     status, seconds = answers["post"]
     assert status in (0, 200, 400, 413, 422) and seconds < 2.0, (status, seconds)
+
+
+def test_a_flood_of_one_log_line_is_held_back_and_counted() -> None:
+    import logging
+
+    from ballscrew.web.server import LogRate
+
+    rate = LogRate(burst=3, seconds=3600.0)
+    records = [logging.LogRecord("uvicorn.error", logging.ERROR, "", 0, "accept failed", (), None)
+               for _ in range(1000)]  # fmt: skip
+    assert sum(rate.filter(r) for r in records) == 3
+    other = logging.LogRecord("uvicorn.error", logging.ERROR, "", 0, "another", (), None)
+    assert rate.filter(other)
+    rate.seconds = 0.0  # the window over: the next passes and says how many were held
+    late = logging.LogRecord("uvicorn.error", logging.ERROR, "", 0, "accept failed", (), None)
+    assert rate.filter(late) and "997 more like it held back" in late.getMessage()

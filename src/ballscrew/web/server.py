@@ -13,13 +13,15 @@ request into a 503); the work is bounded by the worker pool instead
 from __future__ import annotations
 
 import asyncio
+import logging
+import time
 from typing import Any
 
 import h11
 from uvicorn.config import Config
 from uvicorn.protocols.http.h11_impl import H11Protocol
 
-__all__ = ["HEAD_SECONDS", "HeadDeadline", "server_config"]
+__all__ = ["HEAD_SECONDS", "HeadDeadline", "LogRate", "raise_file_limit", "server_config"]
 
 HEAD_SECONDS = 10.0
 """Time a connection has to send a whole request head [s]."""
@@ -69,13 +71,66 @@ class HeadDeadline(H11Protocol):
         super().connection_lost(exc)
 
 
+class LogRate(logging.Filter):
+    """Lets through at most ``burst`` records of one message template per ``seconds``.
+
+    With its file descriptors used up, a server fails every accept and logs each
+    failure: 166 MB of the same line in 40 s (issue 35). The first records of a kind
+    pass, the rest of the window is counted and said once when the next window opens.
+    """
+
+    def __init__(self, burst: int = 10, seconds: float = 10.0) -> None:
+        super().__init__()
+        self.burst, self.seconds = burst, seconds
+        self._windows: dict[str, tuple[float, int]] = {}
+
+    def filter(self, record: logging.LogRecord) -> bool:
+        """Whether ``record`` is logged (the count of those held back joins the next)."""
+        now = time.monotonic()
+        key = f"{record.name}:{record.msg}"
+        start, count = self._windows.get(key, (now, 0))
+        if now - start > self.seconds:
+            if count > self.burst:
+                record.msg = f"{record.msg} (and {count - self.burst} more like it held back)"
+            start, count = now, 0
+        self._windows[key] = (start, count + 1)
+        if len(self._windows) > 1000:  # a flood of distinct messages: start afresh
+            self._windows.clear()
+        return count < self.burst
+
+
+def raise_file_limit() -> int:
+    """Raise the process's soft limit of open files to its hard limit; return the limit.
+
+    Each connection holds a file descriptor: with the common soft limit of 256 or
+    1024, a few hundred idle connections leave none for the next visitor.
+    """
+    import resource
+
+    soft, hard = resource.getrlimit(resource.RLIMIT_NOFILE)
+    if hard == resource.RLIM_INFINITY or soft < hard:
+        try:
+            resource.setrlimit(resource.RLIMIT_NOFILE, (hard, hard))
+            soft = hard
+        except (ValueError, OSError):
+            pass
+    return int(soft)
+
+
 def server_config(app: Any, **kwargs: Any) -> Config:
     """Uvicorn's configuration for the calculator (keyword arguments pass through).
 
     Idle kept-alive connections close after 5 s, a request's head must come
     within :data:`HEAD_SECONDS`, a head is at most 16 kB, and no server header
-    is sent.
+    is sent. The process may open as many files as its hard limit allows
+    (:func:`raise_file_limit`), and the server's own log is rate-limited
+    (:class:`LogRate`).
     """
+    raise_file_limit()
+    for name in ("uvicorn.error", "asyncio"):
+        logger = logging.getLogger(name)
+        if not any(isinstance(f, LogRate) for f in logger.filters):
+            logger.addFilter(LogRate())
     settings: dict[str, Any] = {
         "http": HeadDeadline,
         "timeout_keep_alive": 5,
