@@ -162,3 +162,13 @@ def test_a_designation_with_25_turns_is_refused() -> None:
     toml += '[lubricant]\nname = "mineral ISO VG 68"\n[operation]\nspeed = "100 rpm"\n'
     with pytest.raises(BallScrewInputError, match="loaded_turns"):
         parse_case(toml)
+
+
+@pytest.mark.parametrize("workers", [0, 100_000, True])
+def test_a_sweep_asking_for_absurd_workers_is_refused(workers: int) -> None:
+    # 0.2.0 tried to start 100 000 local processes.
+    from ballscrew.sweep.execute import run_sweep
+    from shared import ROOT
+
+    with pytest.raises(BallScrewInputError, match="--workers"):
+        run_sweep(ROOT / "examples" / "sweep_preload.toml", "unused.zarr", workers=workers)

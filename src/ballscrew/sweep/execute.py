@@ -120,6 +120,12 @@ class SweepReport:
         }
 
 
+MAX_WORKERS = 256
+"""The most local worker processes ``--workers`` starts: each is a Python process of some
+200 MB (100 000 asked in 0.2.0 held the machine); a larger cluster is started on its own
+and named by ``--scheduler``."""
+
+
 def run_sweep(
     sweep: SweepSpec | str | Path,
     out: str | Path,
@@ -168,8 +174,11 @@ def run_sweep(
         notify(f"sweep: {size.describe()}")
     if workers is not None and scheduler is not None:
         raise BallScrewInputError("--workers", workers, "either --workers or --scheduler")
-    if workers is not None and (isinstance(workers, bool) or workers < 1):
-        raise BallScrewInputError("--workers", workers, "a whole number >= 1")
+    if workers is not None and (isinstance(workers, bool) or not 1 <= workers <= MAX_WORKERS):
+        raise BallScrewInputError(
+            "--workers", workers, f"a whole number from 1 to {MAX_WORKERS} (local processes; "
+            "a larger cluster is started on its own and named by --scheduler)",
+        )  # fmt: skip
     target = Path(out).absolute()
     store.check_target(target)
     target.parent.mkdir(parents=True, exist_ok=True)
