@@ -9,6 +9,7 @@ import pytest
 
 from ballscrew.axis.check import CHECK_FROM, axis_check, verdict
 from ballscrew.axis.duty import energy_run, profile_from_move
+from ballscrew.axis.motion import Profile
 from ballscrew.design.sizing import STEEL_EXPANSION, TRAVEL_VARIATION_300
 from ballscrew.design.stiffness import SHAFT_MODULUS, nut_axial_stiffness
 from ballscrew.errors import BallScrewInputError
@@ -210,8 +211,10 @@ def test_missing_inputs_are_named() -> None:
     with pytest.raises(BallScrewInputError, match=r"axis\.bearing_span"):
         _check(case, {**MOVE, "stroke": 1.15})
     motor = '[motor]\npeak_torque = "6 N*m"'
-    with pytest.raises(BallScrewInputError, match=r"axis\.motor_inertia"):
+    with pytest.raises(BallScrewInputError, match=r"axis\.motor_inertia = '\(missing\)'"):
         _check(_case(sections=motor))
+    with pytest.raises(BallScrewInputError, match=r"axis\.motor_inertia = 0 "):
+        _check(_case(axis_extra='motor_inertia = "0 kg*m**2"', sections=motor))
     with pytest.raises(BallScrewInputError, match=r"check\.accuracy_grade"):
         _case(sections='[check]\naccuracy_grade = "P9"')
     with pytest.raises(BallScrewInputError, match=r"check\.reliability"):
@@ -287,6 +290,15 @@ def test_lost_motion_and_eigenfrequency_rows_by_hand() -> None:
     freq = _row(result, "axial eigenfrequency")
     assert freq.value == pytest.approx(math.sqrt(least / 200.0) / (2 * math.pi), rel=1e-9)
     assert result.stiffness["nut_N_per_um"] == pytest.approx(k_nut / 1e6, rel=1e-12)
+    assert f"nut {k_nut / 1e6:.4g} N/um" in _row(result, "axis stiffness").source
+    # The shaft's twist under T_p = 0.252313 N m from the drive to the far end of the
+    # stroke, 0.8 m: G J_p = 79.3e9 * pi 0.026^4 / 32 = 3557.6 N m^2, 2 T_p a / G J_p
+    # = 1.1348e-4 rad, times l / 2 pi: 0.18 um.
+    assert "the shaft's torsion adds up to 0.18 um" in play.source
+    # The nut's level as stated: contacts over 1.48, printed nuts 0.56 to 0.71 of theirs
+    # (THK's and HIWIN's tables, tests/physics/test_stiffness.py), THK's allowance 0.8.
+    notes = "\n".join(result.assumptions)
+    assert "over 1.48" in notes and "0.56 to 0.71" in notes and "allowance 0.8" in notes
     assert result.stiffness["bearings_N_per_um"] == pytest.approx(500.0, rel=1e-12)
     # Without a moving mass there is no eigenfrequency to give: the row says so.
     _, still = _check(_case_with_mass("0 kg", nut="double", preload="1 kN"))
@@ -299,6 +311,9 @@ def test_a_single_nut_needs_a_load_for_its_stiffness() -> None:
     # A light table (0.2 kg at 2 m/s^2: 0.4 N) still loads the nut and gets its stiffness.
     _, light = _check(_case_with_mass("0.2 kg"))
     assert 0.0 < _row(light, "axis stiffness").value < math.inf
+    assert _row(light, "axial eigenfrequency").verdict == "INFO"
+    # Its static safety is the rating over that load: 50 kN / 0.4 N = 125 000.
+    assert _row(light, "static safety").value == pytest.approx(125_000.0, rel=1e-9)
 
 
 def test_nut_length_and_the_stroke_that_fits() -> None:
@@ -309,7 +324,8 @@ def test_nut_length_and_the_stroke_that_fits() -> None:
     _, double = _check(_case(nut="double", preload="1 kN"))
     assert double.stiffness["nut_length_mm"] == pytest.approx(140.0, rel=1e-12)
     _check(_case(), {**MOVE, "stroke": 1.125})
-    with pytest.raises(BallScrewInputError, match=r"stroke 1135 mm plus the nut 70 mm"):
+    with pytest.raises(BallScrewInputError,
+                       match=r"'1200 mm'.*stroke 1135 mm plus the nut 70 mm"):  # fmt: skip
         _check(_case(), {**MOVE, "stroke": 1.135})
 
 
@@ -331,10 +347,21 @@ def test_the_life_row_reports_the_mean_speed_and_the_turns() -> None:
     assert _row(short, "fatigue life").value == pytest.approx(10 * hours, rel=1e-6)
 
 
-def test_a_cycle_without_turns_has_no_life_row() -> None:
-    from ballscrew.axis.check import axis_check
-    from ballscrew.axis.motion import Profile
+def test_several_cycles_count_their_turns_per_cycle() -> None:
+    # Three cycles of the 80-turn move: 240 turns in 6.3 s, still 80 per cycle and the
+    # same life in hours as one cycle.
+    case = _case(nut="double", preload="1 kN")
+    run = energy_run(case, profile_from_move(MOVE, 3), ["catalog"], cycles=3, run_time=60.0,
+                     move=dict(MOVE))  # fmt: skip
+    result = axis_check(run)
+    assert result.life["turns_per_cycle"] == pytest.approx(80.0, rel=1e-3)
+    _, one = _check(case)
+    assert _row(result, "fatigue life").value == pytest.approx(
+        _row(one, "fatigue life").value, rel=1e-9
+    )
 
+
+def test_a_cycle_without_turns_has_no_life_row() -> None:
     case = _case(nut="double", preload="1 kN")
     time, zero = np.linspace(0.0, 2.0, 5), np.zeros(5)
     run = energy_run(case, Profile(time, zero, zero, zero, zero), ["catalog"], run_time=60.0)
