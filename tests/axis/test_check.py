@@ -409,3 +409,21 @@ def test_the_assumptions_state_the_numbers_taken() -> None:
     assert "root diameter 25.48 mm estimated from the groove" in notes
     # A single nut's stiffness is taken at the cycle's peak load, m a = 400 N.
     assert "stiffness at the cycle's peak load 400 N" in notes
+
+
+def test_a_gear_divides_the_load_inertia_and_the_drag() -> None:
+    # The motor test's axis behind a 1:2 gear (i = 2 motor turns per screw turn), by hand:
+    # J_load = (8e-4 + 5.06606e-4) / 4 = 3.26651e-4 kg m^2, 1.63326 x the rotor;
+    # per m/s^2 of the table (2e-4 + 3.26651e-4) 2 pi 2 / 0.01 = 0.661810 N m; the drag at
+    # the motor (0.252313 + 0.019396) / 2 = 0.135855 N m (test_motor_check_by_hand).
+    motor = '[motor]\nrated_torque = "2 N*m"\npeak_torque = "6 N*m"\nrated_speed = "6000 rpm"'
+    gear = 'motor_inertia = "2e-4 kg*m**2"\nscrew_inertia = "8e-4 kg*m**2"\ngear_ratio = 2'
+    case = _case(nut="double", preload="1 kN", axis_extra=gear, sections=motor)
+    _, result = _check(case)
+    assert _row(result, "inertia ratio").value == pytest.approx(1.63326, rel=3e-6)
+    # The peak, 2 m/s^2: 0.661810 * 2 + 0.135855 = 1.459475 N m.
+    assert _row(result, "peak torque").value == pytest.approx(1.459475, rel=2e-6)
+    # The acceleration 6 N m allows: (6 - 0.135855) / 0.661810 = 8.86077 m/s^2.
+    assert _row(result, "acceleration the peak").value == pytest.approx(8.86077, rel=2e-6)
+    # 3000 screw rpm are 6000 motor rpm, the rated speed.
+    assert _row(result, "motor speed").value == pytest.approx(6000.0, rel=1e-9)

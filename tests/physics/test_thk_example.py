@@ -179,6 +179,9 @@ def test_horizontal_positioning_error_and_inertia() -> None:
     assert total == pytest.approx(0.234e-3, abs=0.5e-6)
     # J = 80 (40 / 2 pi)^2 1e-6 + 1.48e-4 = 3.39e-3 kg m^2.
     assert reflected_inertia(80.0, 0.04, 1.48e-4) == pytest.approx(3.39e-3, abs=0.005e-3)
+    # The table's share alone (no screw, coupling or gear given): 3.39e-3 - 1.48e-4 = 3.242e-3
+    # as printed (3.2423e-3 by hand).
+    assert reflected_inertia(80.0, 0.04) == pytest.approx(3.242e-3, abs=0.005e-3)
 
 
 # --- Vertical: "Vertical Conveyance System", A-736 to A-745 -------------------------------
