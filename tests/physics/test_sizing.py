@@ -153,6 +153,16 @@ def test_preloaded_loads_follow_the_exact_hertz_split() -> None:
     assert (float(single1), float(single2)) == (700.0, 0.0)
 
 
+def test_preloaded_loads_depend_only_on_the_ratio() -> None:
+    # The split has no scale of its own: F1 / F_pr is a function of |F_a| / F_pr. At a ratio
+    # of 1, 1 + 1 / 2^1.5 = 1.353553 and 1.353553^1.5 = 1.574755, at any size of preload,
+    # also a fraction of a newton (ISO 3408-5's form; 1575 N at 1 kN in the docstring).
+    for preload in (0.1, 1000.0, 1e5):
+        f1, f2 = preloaded_loads(preload, preload)
+        assert float(f1) == pytest.approx(1.574755 * preload, rel=1e-6)
+        assert float(f2) == pytest.approx(0.574755 * preload, rel=2e-6)
+
+
 def test_combined_life_of_two_halves() -> None:
     assert float(combined_life(1e9, 1e9)) == pytest.approx(2 ** (-0.9) * 1e9)
     assert float(combined_life(1e9, math.inf)) == pytest.approx(1e9)
