@@ -42,10 +42,12 @@ def test_catalog_preload_torque_matches_thk_worked_example() -> None:
     # ball centre diameter 41.75 mm, lead 10 mm, preload 3000 N -> tan(beta)
     # = 0.0762 and a reference torque of 865 N·mm (printed to 3 digits, so
     # the tolerance is half a unit in the last: 0.5/865).
-    beta = math.atan(0.010 / (math.pi * 0.04175))
+    # The lead angle is the package's (BallScrew.lead_angle), its tangent the printed 0.0762
+    # (half a unit in the last digit).
+    s = reference_screw().replace(pitch_diameter=0.04175, preload=3000.0)
+    beta = s.lead_angle
     assert math.tan(beta) == pytest.approx(0.0762, abs=5e-5)
     assert float(preload_torque(3000.0, 0.010, beta)) * 1e3 == pytest.approx(865.0, abs=0.5)
-    s = reference_screw().replace(pitch_diameter=0.04175, preload=3000.0)
     r = friction_torque(s, OIL, speed=10.0, temperature=40.0, model="catalog")
     assert float(r.components["preload"]) * 1e3 == pytest.approx(865.0, abs=0.5)
 

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 from scipy import integrate
 
-from ballscrew import BallScrewInputError
+from ballscrew import BallScrewInputError, reference_screw
 from ballscrew.contact import (
     HERTZ_METHODS,
     HertzContact,
@@ -111,11 +111,14 @@ def test_reference_notes_cross_check() -> None:
     # side) by hand with the 1.0339 fits (labelled Hamrock-Brewe there; they are
     # Brewe & Hamrock 1977): k = 12.06 (radius ratio), a = 0.264 mm,
     # b = 0.0524 mm, delta = 2.37 µm; with Houpert: a = 0.271 mm, b = 0.0528 mm.
-    dw, dm, alpha, f = 3.969e-3, 0.032, math.radians(45), 0.55
-    gamma = dw * math.cos(alpha) / dm
-    rx = dw / 2 * (1 - gamma)
-    ry = f * dw / (2 * f - 1)
-    assert ry / rx == pytest.approx(12.06, abs=0.01)
+    # The radii are the package's (BallScrew.rx_screw, ry_screw); their ratio is the notes'
+    # printed 12.06 (four digits: half a unit in the last, 0.005).
+    s = reference_screw().replace(
+        ball_diameter=3.969e-3, pitch_diameter=0.032, contact_angle=math.radians(45),
+        conformity_screw=0.55,
+    )  # fmt: skip
+    rx, ry = s.rx_screw, s.ry_screw
+    assert ry / rx == pytest.approx(12.06, abs=0.005)
     hb = hertz(50.0, rx, ry, 2.308e11, method="brewe_hamrock")
     hp = hertz(50.0, rx, ry, 2.308e11, method="houpert")
     # The notes give 3 significant figures: half a unit in the last place.
@@ -249,8 +252,10 @@ def test_stachowiak_two_ball_example() -> None:
     # R' = 3 mm, E' = 2.308e11 Pa. The book's results (a ~ 0.058 mm,
     # p_max ~ 0.71 GPa, delta ~ 0.56 µm, 2 significant figures) agree with the
     # closed form; the tolerances are half a unit in the last printed digit.
-    rx = 1 / (1 / 0.010 + 1 / 0.015)
-    assert rx == pytest.approx(6e-3)
+    # The book's printed intermediates are the inputs (Rx = Ry = 6 mm) and the check of the
+    # package's reduced modulus (E' = 2.308e11 Pa, four digits).
+    rx = 6e-3
+    assert E_STEEL == pytest.approx(2.308e11, abs=0.0005e11)
     c = hertz(5.0, rx, rx, E_STEEL)
     assert float(c.a) * 1e3 == pytest.approx(0.058, abs=0.0005)
     assert float(c.p_max) / 1e9 == pytest.approx(0.71, abs=0.005)
