@@ -11,15 +11,15 @@ from __future__ import annotations
 
 import os
 import re
-import shutil
 from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
 
+from browser import CHROMIUM, chromium
+
 ROOT = Path(__file__).resolve().parents[1]
 SITE = ROOT / "docs" / "_build" / "html"
-CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
 
 if not (SITE / "index.html").is_file():
     if os.environ.get("CI"):
@@ -45,12 +45,7 @@ def test_no_page_loads_mathjax_from_elsewhere() -> None:
 def offline_page() -> Iterator[object]:
     if CHROMIUM is None and not os.environ.get("CI"):
         pytest.skip("no chromium on this machine (make test installs Debian's)")
-    sync_api = pytest.importorskip("playwright.sync_api")
-    assert CHROMIUM is not None, "CI needs chromium: make test installs it"
-    args = ["--headless", "--no-sandbox", "--disable-gpu", "--no-first-run", "--disable-sync",
-            "--disable-background-networking", "--disable-component-update"]  # fmt: skip
-    with sync_api.sync_playwright() as p:
-        browser = p.chromium.launch(executable_path=CHROMIUM, headless=True, args=args)
+    with chromium() as browser:
         context = browser.new_context()
         refused: list[str] = []
 
@@ -66,7 +61,6 @@ def offline_page() -> Iterator[object]:
         page = context.new_page()
         page.refused = refused  # type: ignore[attr-defined]
         yield page
-        browser.close()
 
 
 @pytest.mark.parametrize("name", PAGES)

@@ -15,7 +15,6 @@ import csv
 import io
 import json
 import os
-import shutil
 import statistics
 import time
 from collections.abc import Iterator
@@ -26,11 +25,11 @@ import pytest
 
 from ballscrew.chain import friction_torque
 from ballscrew.io.case import parse_case
+from browser import CHROMIUM, chromium
 from cli_runner import run
 from shared import DATA, ROOT, reference_case_toml
 from web_server import running_server
 
-CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
 SHOTS = Path(os.environ.get("BALLSCREW_SCREENSHOTS", ROOT / "test-output" / "screenshots"))
 
 if CHROMIUM is None and not os.environ.get("CI"):
@@ -40,19 +39,6 @@ if CHROMIUM is None and not os.environ.get("CI"):
     )
 
 sync_api = pytest.importorskip("playwright.sync_api")
-
-# Chromium's own background connections are refused on a closed network; without
-# these flags it waits on them. A fresh profile comes with every launch.
-CHROMIUM_ARGS = [
-    "--headless",
-    "--no-sandbox",
-    "--disable-gpu",
-    "--disable-quic",
-    "--no-first-run",
-    "--disable-background-networking",
-    "--disable-component-update",
-    "--disable-sync",
-]
 
 # The page's defaults (templates/index.html), written as a case file.
 DEFAULT_CASE = reference_case_toml("ball screw case", speed="10..3000:50 rpm", axial_load="1 kN")
@@ -66,11 +52,8 @@ def base_url() -> Iterator[str]:
 
 @pytest.fixture(scope="module")
 def browser() -> Iterator[sync_api.Browser]:
-    assert CHROMIUM is not None, "CI needs chromium: make test installs it"
-    with sync_api.sync_playwright() as p:
-        b = p.chromium.launch(executable_path=CHROMIUM, headless=True, args=CHROMIUM_ARGS)
+    with chromium() as b:
         yield b
-        b.close()
 
 
 @pytest.fixture

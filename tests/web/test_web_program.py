@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import os
-import shutil
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -14,6 +12,7 @@ from ballscrew.io.machine import example_machine_text, load_machine, parse_machi
 from ballscrew.program import run_program
 from ballscrew.web import create_app
 from ballscrew.web.program import MAX_BLOCKS
+from browser import chromium, needs_chromium
 
 ROOT = Path(__file__).resolve().parents[2]
 PROGRAM = "G0 X300 Y200 Z-140\nG1 Z-155 F400\nG1 X430 F2500\nG3 X450 Y220 R20\nG0 Z-140\nM30\n"
@@ -87,29 +86,11 @@ def test_a_server_without_the_program_extra_says_which(
     assert "ballscrew[program]" in answer.json()["error"]
 
 
-CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
-
-
-@pytest.mark.skipif(CHROMIUM is None and not os.environ.get("CI"), reason="no chromium")
+@needs_chromium
 def test_the_page_runs_a_program_in_the_browser() -> None:
-    sync_api = pytest.importorskip("playwright.sync_api")
     from web_server import running_server
 
-    # As tests/web/test_web_browser.py: no background connections on a closed network.
-    args = [
-        "--headless",
-        "--no-sandbox",
-        "--disable-gpu",
-        "--disable-quic",
-        "--no-first-run",
-        "--disable-background-networking",
-        "--disable-component-update",
-        "--disable-sync",
-    ]
-
-    assert CHROMIUM is not None, "CI needs chromium: make test installs it"
-    with running_server() as url, sync_api.sync_playwright() as p:
-        browser = p.chromium.launch(executable_path=CHROMIUM, headless=True, args=args)
+    with running_server() as url, chromium() as browser:
         page = browser.new_page()
         errors: list[str] = []
         page.on("pageerror", lambda exc: errors.append(str(exc)))
@@ -123,5 +104,4 @@ def test_the_page_runs_a_program_in_the_browser() -> None:
         page.fill("#program_text", "G1 X10 F100\nG81 Z-5 R2\n")
         page.click("#program_run")
         page.wait_for_selector("#program_status:has-text('program line 2')")
-        browser.close()
         assert errors == []
