@@ -20,7 +20,6 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
-from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure as MplFigure
 
 from .._version import __version__
@@ -28,7 +27,7 @@ from ..axis.check import AxisCheck
 from ..io.files import atomic_write
 from .document import Block, html_page, markdown
 from .outputs import csv_bytes
-from .plotting import write_figures
+from .plotting import new_figure, write_figures
 
 __all__ = ["write_check_report"]
 
@@ -44,8 +43,7 @@ def _number(value: Any) -> str:
 
 def _utilisation_figure(check: AxisCheck) -> MplFigure:
     rows = [c for c in check.criteria if c.utilisation is not None]
-    fig = MplFigure(figsize=(7.0, 0.45 * max(len(rows), 2) + 1.2), layout="constrained")
-    FigureCanvasAgg(fig)
+    fig = new_figure(7.0, 0.45 * max(len(rows), 2) + 1.2, layout="constrained")
     ax = fig.add_subplot()
     y = np.arange(len(rows))[::-1]
     use = [100.0 * float(c.utilisation or 0.0) for c in rows]
@@ -64,8 +62,7 @@ def _utilisation_figure(check: AxisCheck) -> MplFigure:
 
 def _stiffness_figure(check: AxisCheck) -> MplFigure:
     s = check.stiffness
-    fig = MplFigure(figsize=(7.0, 4.6), layout="constrained")
-    FigureCanvasAgg(fig)
+    fig = new_figure(7.0, 4.6, layout="constrained")
     top, bottom = fig.subplots(2, 1, sharex=True)
     x = s["position_mm"]
     top.plot(x, s["axis_N_per_um"], color="C0", linestyle="-", label="axis (in series)")
@@ -84,8 +81,7 @@ def _stiffness_figure(check: AxisCheck) -> MplFigure:
 
 def _thermal_figure(check: AxisCheck) -> MplFigure:
     t = check.thermal
-    fig = MplFigure(figsize=(7.0, 4.6), layout="constrained")
-    FigureCanvasAgg(fig)
+    fig = new_figure(7.0, 4.6, layout="constrained")
     top, bottom = fig.subplots(2, 1, sharex=True)
     hours = np.asarray(t["time_s"], dtype=float) / 3600.0
     top.plot(hours, t["temperature_C"], color="C3")

@@ -26,7 +26,7 @@ from ..io.files import atomic_write
 from ..servo.contour import CircleRun, ContourResult
 from .document import Block, html_page, markdown
 from .outputs import csv_bytes, json_document
-from .plotting import write_figures
+from .plotting import new_figure, write_figures
 
 __all__ = ["polar_figure", "write_contour_report"]
 
@@ -80,8 +80,7 @@ def polar_figure(
 
 
 def _reversal_figure(result: ContourResult) -> MplFigure:
-    fig = MplFigure(figsize=(7.0, 4.0))
-    FigureCanvasAgg(fig)
+    fig = new_figure(7.0, 4.0)
     ax = fig.add_subplot(1, 1, 1)
     for run in result.reversals:
         t = run.trace.time
@@ -100,8 +99,7 @@ def _reversal_figure(result: ContourResult) -> MplFigure:
 
 
 def _table_figure(result: ContourResult) -> MplFigure:
-    fig = MplFigure(figsize=(7.0, 4.0))
-    FigureCanvasAgg(fig)
+    fig = new_figure(7.0, 4.0)
     ax = fig.add_subplot(1, 1, 1)
     axis, table = result.axes[0], result.tables[0]
     keep = np.abs(axis.speeds) <= table.speed_range

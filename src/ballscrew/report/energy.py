@@ -18,7 +18,6 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
-from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure as MplFigure
 
 from .._version import __version__
@@ -29,20 +28,18 @@ from ..errors import FloatArray
 from ..io.files import atomic_write
 from .document import Block, html_page, markdown
 from .outputs import csv_bytes
-from .plotting import write_figures
+from .plotting import new_figure, write_figures
 
 __all__ = ["write_energy_report"]
 
 
 def _figure() -> tuple[MplFigure, object]:
-    fig = MplFigure(figsize=(7.0, 4.0))
-    FigureCanvasAgg(fig)
+    fig = new_figure(7.0, 4.0)
     return fig, fig.add_subplot(1, 1, 1)
 
 
 def _motion_figure(profile: Profile, results: Mapping[str, CycleResult]) -> MplFigure:
-    fig = MplFigure(figsize=(7.0, 5.5))
-    FigureCanvasAgg(fig)
+    fig = new_figure(7.0, 5.5)
     top, bottom = fig.subplots(2, 1, sharex=True)
     top.plot(profile.time, profile.speed * 60.0, color="black")
     top.set_ylabel("table speed [m/min]")

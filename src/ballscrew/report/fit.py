@@ -15,7 +15,6 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
-from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure as MplFigure
 
 from ..fit.calibration import FitResult, fitted_case_toml
@@ -24,14 +23,13 @@ from ..io.files import atomic_write
 from ..kinematics import rad_s_to_rpm
 from .document import Block, html_page, markdown
 from .outputs import csv_text
-from .plotting import write_figures
+from .plotting import new_figure, write_figures
 
 __all__ = ["write_fit_report"]
 
 
 def _figure(result: FitResult) -> MplFigure:
-    fig = MplFigure(figsize=(7.0, 6.0))
-    FigureCanvasAgg(fig)
+    fig = new_figure(7.0, 6.0)
     top, bottom = fig.subplots(2, 1, sharex=True)
     rpm = rad_s_to_rpm(np.abs(result.speed))
     order = np.argsort(rpm)

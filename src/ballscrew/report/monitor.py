@@ -6,18 +6,17 @@ import math
 from pathlib import Path
 
 import numpy as np
-from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure as MplFigure
 
 from ..fit.monitor import MonitorResult
+from .plotting import new_figure
 
 __all__ = ["monitor_figure"]
 
 
 def monitor_figure(r: MonitorResult) -> MplFigure:
     """Preload per measurement (95 % intervals), the trend with its band, the threshold."""
-    fig = MplFigure(figsize=(7.0, 4.2), layout="constrained")
-    FigureCanvasAgg(fig)
+    fig = new_figure(7.0, 4.2, layout="constrained")
     ax = fig.add_subplot()
     t = r.series.time
     end = t[-1]

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import io
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal
 
 import matplotlib as mpl
 import numpy as np
@@ -23,7 +23,12 @@ from ..kinematics import rad_s_to_rpm
 from ..study.series import Figure
 from ..sweep.sensitivity import SobolIndices
 
-__all__ = ["figure_bytes", "render", "sensitivity_figure"]
+__all__ = [
+    "figure_bytes",
+    "new_figure",
+    "render",
+    "sensitivity_figure",
+]
 
 _LINESTYLES = ("-", "--", "-.", ":", (0, (5, 1)), (0, (3, 1, 1, 1, 1, 1)))
 _MARKERS = ("o", "s", "^", "v", "D", "x", "P", "*", "<", ">")
@@ -37,6 +42,19 @@ _STYLE: dict[str, Any] = {
 }
 
 
+def new_figure(
+    width: float, height: float, *, layout: Literal["constrained"] | None = None
+) -> MplFigure:
+    """A Matplotlib figure of ``width`` x ``height`` inches on its own Agg canvas.
+
+    Figures are drawn without pyplot (no global state, safe in threads and workers), so
+    each needs a canvas attached before it is drawn or saved.
+    """
+    fig = MplFigure(figsize=(width, height), layout=layout)
+    FigureCanvasAgg(fig)
+    return fig
+
+
 def render(
     fig: Figure,
     measured_range: tuple[float, ...] = (),
@@ -45,8 +63,7 @@ def render(
 ) -> MplFigure:
     """Draw one study figure: torque against screw speed, measured band and curve."""
     with mpl.rc_context(_STYLE):  # type: ignore[arg-type]
-        out = MplFigure(figsize=(7.5, 5.2), layout="constrained")
-        FigureCanvasAgg(out)
+        out = new_figure(7.5, 5.2, layout="constrained")
         ax = out.add_subplot(1, 1, 1)
         if len(measured_range) >= 2:
             lo, hi = min(measured_range), max(measured_range)
@@ -115,8 +132,7 @@ def sensitivity_figure(indices: SobolIndices, title: str) -> MplFigure:
     order = indices.ranking()[::-1]  # barh draws from the bottom up
     y = np.arange(len(order), dtype=float)
     with mpl.rc_context(_STYLE):  # type: ignore[arg-type]
-        out = MplFigure(figsize=(7.5, 0.45 * len(order) + 1.6))
-        FigureCanvasAgg(out)
+        out = new_figure(7.5, 0.45 * len(order) + 1.6)
         ax = out.add_subplot(1, 1, 1)
         ax.barh(y + 0.2, indices.total[order], height=0.38, xerr=indices.total_conf[order],
                 label="total index S_T", color="C0", capsize=2)  # fmt: skip

@@ -19,7 +19,6 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
-from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure as MplFigure
 
@@ -28,7 +27,7 @@ from ..io.files import atomic_write
 from ..program.axes import ProgramResult
 from .document import Block, html_page, markdown
 from .outputs import csv_bytes
-from .plotting import write_figures
+from .plotting import new_figure, write_figures
 
 __all__ = ["time_series_csv", "write_program_report"]
 
@@ -36,8 +35,7 @@ MARKERS = {"X": "o", "Y": "s", "Z": "^"}
 
 
 def _path_figure(r: ProgramResult) -> MplFigure:
-    fig = MplFigure(figsize=(7.0, 5.5))
-    FigureCanvasAgg(fig)
+    fig = new_figure(7.0, 5.5)
     ax = fig.add_subplot(1, 1, 1)
     ds = r.data
     pos = r.motion.position * 1e3
@@ -67,8 +65,7 @@ def _path_figure(r: ProgramResult) -> MplFigure:
 
 
 def _energy_figure(r: ProgramResult) -> MplFigure:
-    fig = MplFigure(figsize=(7.0, 4.0))
-    FigureCanvasAgg(fig)
+    fig = new_figure(7.0, 4.0)
     ax = fig.add_subplot(1, 1, 1)
     letters = list(r.axes)
     parts = {
@@ -92,8 +89,7 @@ def _energy_figure(r: ProgramResult) -> MplFigure:
 
 def _torque_figure(r: ProgramResult) -> MplFigure:
     letters = list(r.axes)
-    fig = MplFigure(figsize=(7.0, 2.2 * len(letters) + 0.6))
-    FigureCanvasAgg(fig)
+    fig = new_figure(7.0, 2.2 * len(letters) + 0.6)
     axes = fig.subplots(len(letters), 1, sharex=True, squeeze=False)[:, 0]
     t = r.motion.time
     for ax, letter in zip(axes, letters, strict=True):
