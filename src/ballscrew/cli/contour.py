@@ -134,21 +134,13 @@ def _print(console: Console, result: ContourResult) -> None:
         console.print(f"reversal of x at {r.acceleration:.3g} m/s^2 "
                       f"{'with' if r.compensated else 'without'} compensation: glitch "
                       f"{r.glitch * 1e6:.3g} um after {r.time_to_peak * 1e3:.3g} ms")  # fmt: skip
+    from ..report.contour import loop_table
+
     loops = Table(title="Loops (control: linear, friction left out)")
-    for column in (
-        "axis",
-        "velocity crossover [Hz]",
-        "phase margin [deg]",
-        "gain margin [dB]",
-        "velocity bandwidth [Hz]",
-        "position bandwidth [Hz]",
-        "eigenfrequency [Hz]",
-    ):
+    header, rows = loop_table(result)
+    for column in header:
         loops.add_column(column, justify="right")
-    for name, f, a in zip("xy", result.figures, result.axes, strict=True):
-        loops.add_row(name, f"{f.velocity_crossover_hz:.3g}", f"{f.velocity_phase_margin_deg:.3g}",
-                      f"{f.velocity_gain_margin_db:.3g}", f"{f.velocity_bandwidth_hz:.3g}",
-                      f"{f.position_bandwidth_hz:.3g}",
-                      "rigid" if a.rigid else f"{a.eigenfrequency:.4g}")  # fmt: skip
+    for row in rows:
+        loops.add_row(*row)
     console.print(loops)
     console.print(f"CPU time: {result.cpu_seconds:.3g} s")

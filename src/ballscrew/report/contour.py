@@ -28,7 +28,7 @@ from .document import Block, html_page, markdown
 from .outputs import csv_bytes, json_document
 from .plotting import new_figure, write_figures
 
-__all__ = ["polar_figure", "write_contour_report"]
+__all__ = ["loop_table", "polar_figure", "write_contour_report"]
 
 
 def _step(span_um: float) -> float:
@@ -122,6 +122,21 @@ def _fmt(v: float | None, digits: int = 4) -> str:
     return "" if v is None else f"{v:.{digits}g}"
 
 
+def loop_table(result: ContourResult) -> tuple[list[str], list[list[str]]]:
+    """Each axis's loops as (header, rows): crossover, margins, bandwidths, eigenfrequency."""
+    header = ["axis", "velocity crossover [Hz]", "phase margin [deg]", "gain margin [dB]",
+              "velocity bandwidth [Hz]", "position bandwidth [Hz]",
+              "eigenfrequency [Hz]"]  # fmt: skip
+    rows = [
+        [name, *(_fmt(v, 3) for v in (f.velocity_crossover_hz, f.velocity_phase_margin_deg,
+                                      f.velocity_gain_margin_db, f.velocity_bandwidth_hz,
+                                      f.position_bandwidth_hz)),
+         "rigid" if a.rigid else _fmt(a.eigenfrequency)]
+        for name, f, a in zip("xy", result.figures, result.axes, strict=True)
+    ]  # fmt: skip
+    return header, rows
+
+
 def _blocks(result: ContourResult) -> list[Block]:
     doc = result.as_dict()
     blocks = [
@@ -158,30 +173,7 @@ def _blocks(result: ContourResult) -> list[Block]:
         Block("img", ("reversal", "Reversal test of the x axis")),
         Block("img", ("table", "Friction map and compensation table of the x axis")),
         Block("h2", "Loops"),
-        Block(
-            "table",
-            (
-                [
-                    "axis",
-                    "velocity crossover [Hz]",
-                    "phase margin [deg]",
-                    "gain margin [dB]",
-                    "velocity bandwidth [Hz]",
-                    "position bandwidth [Hz]",
-                ],
-                [
-                    [
-                        name,
-                        _fmt(f.velocity_crossover_hz),
-                        _fmt(f.velocity_phase_margin_deg),
-                        _fmt(f.velocity_gain_margin_db),
-                        _fmt(f.velocity_bandwidth_hz),
-                        _fmt(f.position_bandwidth_hz),
-                    ]
-                    for name, f in zip("xy", result.figures, strict=True)
-                ],
-            ),
-        ),
+        Block("table", loop_table(result)),
         Block("h2", "Assumptions"),
         Block("ul", list(result.notes)),
     ]
