@@ -24,8 +24,7 @@ from matplotlib.figure import Figure as MplFigure
 
 from .._version import __version__
 from ..axis.check import AxisCheck
-from ..io.files import atomic_write
-from .document import Block, html_page, markdown
+from .document import Block, write_data, write_pages
 from .outputs import csv_bytes
 from .plotting import new_figure, write_figures
 
@@ -145,13 +144,6 @@ def write_check_report(out: str | Path, check: AxisCheck) -> list[Path]:
                     "300 mm over the run time (the heat balance of the repeated cycle)."),
     }  # fmt: skip
     written, images = write_figures(folder, {k: fig for k, (fig, _) in figures.items()})
-    for key, content in _data(check).items():
-        path = folder / "data" / f"{key}.csv"
-        atomic_write(path, content)
-        written.append(path)
+    written += write_data(folder, _data(check).items())
     blocks = _blocks(check, {k: caption for k, (_, caption) in figures.items()})
-    page = html_page(blocks, f"Axis check: {check.title}", images)
-    for name, text in (("report.md", markdown(blocks)), ("report.html", page)):
-        atomic_write(folder / name, text.encode("utf-8"))
-        written.append(folder / name)
-    return written
+    return written + write_pages(folder, blocks, f"Axis check: {check.title}", images)

@@ -24,7 +24,7 @@ from matplotlib.figure import Figure as MplFigure
 from .._version import __version__
 from ..io.files import atomic_write
 from ..servo.contour import CircleRun, ContourResult
-from .document import Block, html_page, markdown
+from .document import Block, write_data, write_pages
 from .outputs import csv_bytes, json_document
 from .plotting import new_figure, write_figures
 
@@ -229,18 +229,8 @@ def write_contour_report(out: str | Path, result: ContourResult) -> list[Path]:
             for v, f in zip(t.speed, t.force, strict=True)
         ],
     )
-    for key, content in data.items():
-        path = folder / "data" / f"{key}.csv"
-        atomic_write(path, content)
-        written.append(path)
+    written += write_data(folder, data.items())
     document = json_document({"ballscrew": __version__, **result.as_dict()})
     atomic_write(folder / "contour.json", document.encode("utf-8"))
     written.append(folder / "contour.json")
-    blocks = _blocks(result)
-    for name, text in (
-        ("report.md", markdown(blocks)),
-        ("report.html", html_page(blocks, "Circular test", images)),
-    ):
-        atomic_write(folder / name, text.encode("utf-8"))
-        written.append(folder / name)
-    return written
+    return written + write_pages(folder, _blocks(result), "Circular test", images)

@@ -9,10 +9,14 @@ from __future__ import annotations
 
 import base64
 import html
+from collections.abc import Iterable
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any
 
-__all__ = ["Block", "html_page", "markdown"]
+from ..io.files import atomic_write
+
+__all__ = ["Block", "html_page", "markdown", "write_data", "write_pages"]
 
 
 @dataclass(frozen=True)
@@ -90,3 +94,25 @@ def html_page(blocks: list[Block], title: str, images: dict[str, bytes]) -> str:
             )
     parts.append("</body></html>\n")
     return "\n".join(parts)
+
+
+def write_pages(
+    folder: Path, blocks: list[Block], title: str, images: dict[str, bytes]
+) -> list[Path]:
+    """``report.md`` and the self-contained ``report.html`` of ``blocks`` in ``folder``."""
+    written = []
+    for name, text in (("report.md", markdown(blocks)),
+                       ("report.html", html_page(blocks, title, images))):  # fmt: skip
+        atomic_write(folder / name, text.encode("utf-8"))
+        written.append(folder / name)
+    return written
+
+
+def write_data(folder: Path, tables: Iterable[tuple[str, bytes]]) -> list[Path]:
+    """Each (name, CSV bytes) as ``data/NAME.csv`` in ``folder``."""
+    written = []
+    for key, content in tables:
+        path = folder / "data" / f"{key}.csv"
+        atomic_write(path, content)
+        written.append(path)
+    return written

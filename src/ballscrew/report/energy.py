@@ -25,8 +25,7 @@ from ..axis.duty import EnergyRun
 from ..axis.energy import CycleResult
 from ..axis.motion import Profile
 from ..errors import FloatArray
-from ..io.files import atomic_write
-from .document import Block, html_page, markdown
+from .document import Block, write_data, write_pages
 from .outputs import csv_bytes
 from .plotting import new_figure, write_figures
 
@@ -232,18 +231,9 @@ def write_energy_report(out: str | Path, run: EnergyRun) -> list[Path]:
     keys = _scalar_keys(summary)
     data["summary"] = csv_bytes(["model", *keys], [[n, *(v.get(k, "") for k in keys)]
                                                for n, v in summary.items()])  # fmt: skip
-    for key, content in data.items():
-        path = folder / "data" / f"{key}.csv"
-        atomic_write(path, content)
-        written.append(path)
+    written += write_data(folder, data.items())
     blocks = _blocks(title, profile, summary, {k: caption for k, (_, caption) in figures.items()})
-    for name, text in (
-        ("report.md", markdown(blocks)),
-        ("report.html", html_page(blocks, f"Feed axis energy: {title}", images)),
-    ):
-        atomic_write(folder / name, text.encode("utf-8"))
-        written.append(folder / name)
-    return written
+    return written + write_pages(folder, blocks, f"Feed axis energy: {title}", images)
 
 
 def _fmt(value: object) -> str:

@@ -23,9 +23,8 @@ from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure as MplFigure
 
 from .._version import __version__
-from ..io.files import atomic_write
 from ..program.axes import ProgramResult
-from .document import Block, html_page, markdown
+from .document import Block, write_data, write_pages
 from .outputs import csv_bytes
 from .plotting import new_figure, write_figures
 
@@ -205,11 +204,8 @@ def write_program_report(out: str | Path, r: ProgramResult) -> list[Path]:
                    "reversals in red"),
     }  # fmt: skip
     written, images = write_figures(folder, {k: fig for k, (fig, _) in figures.items()})
-    for key, content in (("time_series", time_series_csv(r)), ("blocks", _blocks_csv(r)),
-                         ("reversals", _reversals_csv(r))):  # fmt: skip
-        path = folder / "data" / f"{key}.csv"
-        atomic_write(path, content)
-        written.append(path)
+    written += write_data(folder, (("time_series", time_series_csv(r)), ("blocks", _blocks_csv(r)),
+                                   ("reversals", _reversals_csv(r))))  # fmt: skip
     blocks = [
         Block("h1", f"Part program on {r.machine}"),
         Block("p", f"Computed by ballscrew {__version__}: {r.program.size} blocks, "
@@ -220,10 +216,4 @@ def write_program_report(out: str | Path, r: ProgramResult) -> list[Path]:
         Block("h2", "Notes"),
         Block("ul", list(r.notes) + [n for a in r.axes.values() for n in a.notes] or ["none"]),
     ]  # fmt: skip
-    for name, text in (
-        ("report.md", markdown(blocks)),
-        ("report.html", html_page(blocks, f"Part program: {r.machine}", images)),
-    ):
-        atomic_write(folder / name, text.encode("utf-8"))
-        written.append(folder / name)
-    return written
+    return written + write_pages(folder, blocks, f"Part program: {r.machine}", images)
