@@ -63,19 +63,20 @@ def test_an_arc_has_its_length_and_velocities_f_times_minus_sin_cos() -> None:
     np.testing.assert_allclose(a_r, -(feed**2) / 0.05, rtol=1e-9)
 
 
-def test_incremental_is_its_absolute_twin() -> None:
-    absolute = "G90 G1 X10 Y5 F600\nG1 X30 Y5\nG2 X40 Y15 I0 J10\nG0 Z3\nG1 X10 Y20 Z0\n"
-    incremental = "G91 G1 X10 Y5 F600\nG1 X20 Y0\nG2 X10 Y10 I0 J10\nG0 Z3\nG1 X-30 Y5 Z-3\n"
-    a, b = plan(read_program(absolute), LIMITS), plan(read_program(incremental), LIMITS)
-    np.testing.assert_allclose(b.time, a.time, atol=1e-12)
-    np.testing.assert_allclose(b.position, a.position, atol=1e-12)
-
-
-def test_inch_is_its_millimetre_twin() -> None:
-    mm = "G21 G1 X25.4 Y12.7 F508\nG3 X50.8 Y12.7 R12.7\n"
-    inch = "G20 G1 X1 Y0.5 F20\nG3 X2 Y0.5 R0.5\n"
-    a, b = plan(read_program(mm), LIMITS), plan(read_program(inch), LIMITS)
-    np.testing.assert_allclose(b.time, a.time, rtol=1e-9)
+@pytest.mark.parametrize(
+    ("first", "twin"),
+    [
+        ("G90 G1 X10 Y5 F600\nG1 X30 Y5\nG2 X40 Y15 I0 J10\nG0 Z3\nG1 X10 Y20 Z0\n",
+         "G91 G1 X10 Y5 F600\nG1 X20 Y0\nG2 X10 Y10 I0 J10\nG0 Z3\nG1 X-30 Y5 Z-3\n"),
+        ("G21 G1 X25.4 Y12.7 F508\nG3 X50.8 Y12.7 R12.7\n",
+         "G20 G1 X1 Y0.5 F20\nG3 X2 Y0.5 R0.5\n"),
+    ],
+    ids=["incremental-is-its-absolute-twin", "inch-is-its-millimetre-twin"],
+)  # fmt: skip
+def test_a_program_and_its_twin_plan_the_same_motion(first: str, twin: str) -> None:
+    a, b = plan(read_program(first), LIMITS), plan(read_program(twin), LIMITS)
+    # Inches are exact in millimetres (25.4); the times agree to the planner's rounding.
+    np.testing.assert_allclose(b.time, a.time, rtol=1e-9, atol=1e-12)
     np.testing.assert_allclose(b.position, a.position, atol=1e-12)
 
 
