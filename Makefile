@@ -2,7 +2,8 @@
 #   make run   - the main job: reproduce the study, report in study-report/
 #   make test  - the whole test suite: ruff, mypy on src/, the import contracts, the
 #                documentation site built with warnings as errors (make docs), pytest with
-#                doctests (which also opens the built site in a browser, offline)
+#                doctests and the code blocks of README.md and docs/*.md (Sybil; it
+#                also opens the built site in a browser, offline)
 #                (make test-fast: the same without the tests marked slow and the docs)
 PYTHON ?= python3
 VENV   ?= .venv
@@ -26,8 +27,8 @@ run: $(STAMP)
 	$(BIN)/ballscrew study --out study-report
 
 test: $(STAMP) chromium
-	$(BIN)/ruff check src tests benchmarks examples scripts
-	$(BIN)/ruff format --check src tests benchmarks examples scripts
+	$(BIN)/ruff check src tests benchmarks examples scripts conftest.py
+	$(BIN)/ruff format --check src tests benchmarks examples scripts conftest.py
 	$(BIN)/mypy src
 	$(BIN)/lint-imports
 	$(MAKE) docs
@@ -42,7 +43,7 @@ docs: $(STAMP)
 	@echo "docs: docs/_build/html/index.html"
 
 test-fast: $(STAMP)
-	$(BIN)/ruff check src tests benchmarks examples scripts
+	$(BIN)/ruff check src tests benchmarks examples scripts conftest.py
 	$(BIN)/mypy src
 	$(BIN)/lint-imports
 	$(BIN)/pytest -q -m "not slow"
