@@ -35,8 +35,10 @@ test: $(STAMP) chromium
 	$(BIN)/pytest -q
 
 # The documentation site in docs/_build/html: the API reference, the Markdown pages and
-# the gallery (examples/plot_*.py run); a warning fails the build.
-docs: $(STAMP)
+# the gallery (examples/plot_*.py run), the notebooks (run), and the pictures of docs/img
+# redrawn from this version (scripts/docs_figures.py, the web pages in Chromium); a
+# warning fails the build.
+docs: $(STAMP) chromium
 	rm -rf docs/_build docs/api docs/gallery docs/sg_execution_times.rst
 	$(BIN)/sphinx-build -W --keep-going -q -b html docs docs/_build/html
 	$(BIN)/python scripts/check_api_docs.py docs/_build/html
