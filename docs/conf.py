@@ -11,6 +11,7 @@ from __future__ import annotations
 import os
 import subprocess
 import sys
+import types
 from pathlib import Path
 from typing import Any
 
@@ -94,7 +95,22 @@ def _draw_figures(app: object) -> None:
     subprocess.run([sys.executable, str(ROOT / "scripts" / "docs_figures.py")], check=True)
 
 
+def _alias_signature(
+    app: object, what: str, name: str, obj: object, options: object, sig: object, ret: object
+) -> tuple[None, None] | None:
+    """No signature for a type alias such as ``Block = tuple[...]`` (a module's data).
+
+    numpydoc gives the alias the signature of ``tuple`` (it is callable), and Sphinx 9
+    then fails on the data's empty signature list ("list assignment index out of range");
+    answering first with a result Sphinx ignores leaves the alias without a signature.
+    """
+    if what == "data" and isinstance(obj, types.GenericAlias):
+        return None, None
+    return None
+
+
 def setup(app: Any) -> dict[str, bool]:
     """Sphinx's hook: the pictures are drawn before the pages are read."""
     app.connect("builder-inited", _draw_figures)
+    app.connect("autodoc-process-signature", _alias_signature, priority=100)
     return {"parallel_read_safe": True}
