@@ -6,6 +6,9 @@ marked slow in the Markdown run unless ``-m "not slow"`` deselects the slow test
 
 from __future__ import annotations
 
+from collections.abc import Generator
+from typing import Any
+
 import pytest
 from tests.docs_blocks import make_sybil
 
@@ -22,3 +25,15 @@ def pytest_configure(config: pytest.Config) -> None:
 
 
 pytest_collect_file = make_sybil(lambda: _SLOW["run"]).pytest()
+
+
+@pytest.hookimpl(hookwrapper=True)
+def pytest_runtest_makereport(
+    item: pytest.Item, call: pytest.CallInfo[None]
+) -> Generator[None, Any, None]:
+    """A docs block's skip is reported at its page and line, not inside unittest."""
+    outcome = yield
+    report = outcome.get_result()
+    example = getattr(item, "example", None)
+    if example is not None and report.skipped and isinstance(report.longrepr, tuple):
+        report.longrepr = (example.path, example.line, report.longrepr[2])
