@@ -2,7 +2,8 @@
 #   make run   - the main job: reproduce the study, report in study-report/
 #   make test  - the whole test suite: ruff, mypy on src/, the import contracts, the
 #                documentation site built with warnings as errors (make docs), pytest with
-#                doctests (which also opens the built site in a browser, offline)
+#                doctests and the code blocks of README.md and docs/*.md (Sybil; it
+#                also opens the built site in a browser, offline)
 #                (make test-fast: the same without the tests marked slow and the docs)
 PYTHON ?= python3
 VENV   ?= .venv
@@ -26,23 +27,25 @@ run: $(STAMP)
 	$(BIN)/ballscrew study --out study-report
 
 test: $(STAMP) chromium
-	$(BIN)/ruff check src tests benchmarks examples scripts
-	$(BIN)/ruff format --check src tests benchmarks examples scripts
+	$(BIN)/ruff check src tests benchmarks examples scripts conftest.py
+	$(BIN)/ruff format --check src tests benchmarks examples scripts conftest.py
 	$(BIN)/mypy src
 	$(BIN)/lint-imports
 	$(MAKE) docs
 	$(BIN)/pytest -q
 
 # The documentation site in docs/_build/html: the API reference, the Markdown pages and
-# the gallery (examples/plot_*.py run); a warning fails the build.
-docs: $(STAMP)
+# the gallery (examples/plot_*.py run), the notebooks (run), and the pictures of docs/img
+# redrawn from this version (scripts/docs_figures.py, the web pages in Chromium); a
+# warning fails the build.
+docs: $(STAMP) chromium
 	rm -rf docs/_build docs/api docs/gallery docs/sg_execution_times.rst
 	$(BIN)/sphinx-build -W --keep-going -q -b html docs docs/_build/html
 	$(BIN)/python scripts/check_api_docs.py docs/_build/html
 	@echo "docs: docs/_build/html/index.html"
 
 test-fast: $(STAMP)
-	$(BIN)/ruff check src tests benchmarks examples scripts
+	$(BIN)/ruff check src tests benchmarks examples scripts conftest.py
 	$(BIN)/mypy src
 	$(BIN)/lint-imports
 	$(BIN)/pytest -q -m "not slow"

@@ -20,8 +20,9 @@ from ballscrew.io.case import load_case
 from ballscrew.report.contour import polar_figure
 from ballscrew.servo import run_contour
 
-here = Path(__file__).resolve().parent if "__file__" in globals() else Path("examples")
-case = load_case(here / "xy_table_32x10.toml")
+# The case beside this script (the gallery runs it from examples/, a user from the root).
+case = load_case(next(p for p in (Path("xy_table_32x10.toml"), Path("examples/xy_table_32x10.toml"))
+                      if p.exists()))  # fmt: skip
 result = run_contour([case], radius=0.02, feed=2.0 / 60.0, directions=("CCW",))
 for run in result.circles:
     label = "with compensation" if run.compensated else "without compensation"

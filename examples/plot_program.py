@@ -21,7 +21,8 @@ from ballscrew.io.machine import load_machine
 from ballscrew.program import run_program
 
 warnings.simplefilter("ignore")  # the models' validity notes
-here = Path(__file__).parent if "__file__" in globals() else Path("examples")
+# The machine file beside this script (the gallery runs it from examples/, a user from the root).
+here = Path(".") if Path("machine_vmc.toml").exists() else Path("examples")
 machine = load_machine(here / "machine_vmc.toml")
 program = """G21 G90 G17
 G0 X300 Y200 Z-140

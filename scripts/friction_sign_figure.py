@@ -23,8 +23,8 @@ from ballscrew.kinematics import rad_s_to_rpm
 from ballscrew.report.plotting import figure_bytes
 
 
-def main() -> None:
-    """Draw and write the figure."""
+def draw() -> Figure:
+    """The figure (scripts/docs_figures.py writes it with the version at each docs build)."""
     case = load_case(None)
     load = 2000.0
     m = friction_map(case, "complete", speeds=np.geomspace(1.0, 300.0, 40),
@@ -57,8 +57,13 @@ def main() -> None:
         ax.grid(alpha=0.3)
     left.legend(fontsize=7, loc="lower right")
     right.legend(fontsize=7, loc="lower right", bbox_to_anchor=(1.0, 0.15))
+    return fig
+
+
+def main() -> None:
+    """Draw and write the figure."""
     out = Path(__file__).resolve().parents[1] / "docs" / "img" / "friction_signs.png"
-    out.write_bytes(figure_bytes(fig, "png"))
+    out.write_bytes(figure_bytes(draw(), "png"))
     print(f"wrote {out}")
 
 

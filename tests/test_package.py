@@ -86,6 +86,12 @@ def _venv(where: Path, requirement: str) -> Path:
     return bin_
 
 
+def test_twine_accepts_the_wheel_and_the_sdist(dist: tuple[Path, Path]) -> None:
+    # What PyPI would check on upload: the metadata and that the README renders.
+    out = _ok([sys.executable, "-m", "twine", "check", "--strict", *dist], ROOT)
+    assert out.count("PASSED") == 2, out
+
+
 def test_wheel_and_sdist_hold_every_file_of_the_package(dist: tuple[Path, Path]) -> None:
     wheel, sdist = dist
     assert wheel.name == f"ballscrew-{__version__}-py3-none-any.whl"
