@@ -108,6 +108,10 @@ def web_pages() -> None:
         shown = page.text_content("body") or ""
         if SOFTWARE not in shown:
             raise SystemExit(f"docs_figures: the page does not show {SOFTWARE!r}")
+        # The status line's timings change from run to run: left out of the picture, so that
+        # a rebuild redraws the same bytes.
+        page.evaluate("""() => { const s = document.getElementById('status');
+            s.textContent = s.textContent.replace(/: computed in .*$/, ''); }""")
         _save_png(page.screenshot(full_page=True), "web-calculator.png")
         page.click("#program_run")
         page.wait_for_selector('#program_table tr[data-quantity="screw friction [J]"]')
