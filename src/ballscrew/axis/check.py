@@ -56,6 +56,7 @@ from ..design.sizing import (
     nominal_life,
     preloaded_loads,
     reflected_inertia,
+    reliability_factor,
     static_safety,
     thermal_elongation,
 )
@@ -77,6 +78,10 @@ from .energy import CycleResult
 from .thermal import nut_length
 
 __all__ = ["CHECK_FROM", "AxisCheck", "Criterion", "run_check", "verdict"]
+
+DEFAULT_LOAD_FACTOR = 1.0
+"""Load factor f_w of the life when the case gives none [-]: ISO 3408-5's own life (the
+lowest of THK's smooth-running range 1.0 to 1.2, A15-40); said in the row and the notes."""
 
 CHECK_FROM = 0.9
 """Utilisation from which a criterion is flagged CHECK rather than OK [-]."""
@@ -276,8 +281,24 @@ def _life_rows(
     run: EnergyRun, force: FloatArray, turns: FloatArray, notes: list[str]
 ) -> tuple[list[Criterion], dict[str, Any]]:
     case, screw = run.case, run.case.screw
-    source = "ISO 3408-5:2006 cl. 7: L10 = a1 (Ca/Fm)^3 1e6, halves in series (10/9)"
     reliability = float(case.check.get("reliability", 0.9))
+    f_w = case.check.get("load_factor")
+    f_w_origin = "given"
+    if f_w is None:
+        f_w, f_w_origin = DEFAULT_LOAD_FACTOR, "default"
+        notes.append(
+            f"load factor f_w = {DEFAULT_LOAD_FACTOR:g} (default: ISO 3408-5's life, smooth "
+            "running without impact); THK, HIWIN and NSK size with 1.2 to 1.5 for normal "
+            "running and 1.5 to 3 with impact or vibration (THK A15-40): give check.load_factor"
+        )
+    elif any(a.field == "check.load_factor" for a in case.assumptions):
+        f_w_origin = "assumed"
+    f_w = float(f_w)
+    source = (
+        "ISO 3408-5:2006 cl. 7 with the makers' load factor: L10 = a1 (Ca/(f_w Fm))^3 1e6, "
+        f"f_w = {f_w:g} ({f_w_origin}; THK A15-40: 1.0-1.2 smooth, 1.2-1.5 normal running), "
+        f"a1 = {reliability_factor(reliability):g} ({reliability:.0%}), halves in series (10/9)"
+    )
     if screw.nut == "single":
         half_1, half_2 = np.maximum(force, 0.0), np.maximum(-force, 0.0)
     else:
@@ -296,6 +317,8 @@ def _life_rows(
         "turns_per_cycle": total_turns / run.cycles,
         "mean_speed_rpm": turns_per_second * 60.0,
         "reliability": reliability,
+        "load_factor": f_w,
+        "load_factor_source": f_w_origin,
         "dynamic_load_rating_N": ca,
         "static_load_rating_N": case.static_load_rating,
     }
@@ -308,18 +331,19 @@ def _life_rows(
         req = DEFAULT_LIFE_HOURS * 3600.0
         notes.append("required life 20000 h (THK's and NSK's figure for machine tools; give "
                      "check.required_life)")  # fmt: skip
-    revs = float(combined_life(nominal_life(ca, fm1, reliability),
-                               nominal_life(ca, fm2, reliability)))  # fmt: skip
+    revs = float(combined_life(nominal_life(ca, fm1, reliability, f_w),
+                               nominal_life(ca, fm2, reliability, f_w)))  # fmt: skip
     hours = float(life_hours(revs, turns_per_second * 60.0))
     km = float(life_distance(revs, screw.lead)) / 1e3
     life |= {"L10_revolutions": revs, "L10_hours": hours, "L10_km": km}
-    return [
-        _at_least(
-            "fatigue life L10", hours, req / 3600.0, "h", source,
-            "a nut with a higher C_a (more circuits, larger balls or diameter), a lower "
-            "preload, lighter moves, or a longer lead (fewer turns per metre)",
-        )
-    ], life  # fmt: skip
+    advice = (
+        "a nut with a higher C_a (more circuits, larger balls or diameter), a lower "
+        "preload, lighter moves, or a longer lead (fewer turns per metre)"
+    )
+    if f_w_origin == "default":
+        advice += (f"; the life is ISO's with f_w = {DEFAULT_LOAD_FACTOR:g}: give "
+                   "check.load_factor for the running conditions")  # fmt: skip
+    return [_at_least("fatigue life L10", hours, req / 3600.0, "h", source, advice)], life
 
 
 def _load_rows(run: EnergyRun, force: FloatArray, d_r: float, span: float) -> list[Criterion]:

@@ -433,6 +433,12 @@ def _check(data: CaseFile, si: Callable[[str, str, Any, str], float]) -> dict[st
             "one of 90, 95, 96, 97, 98 or 99 % (ISO 3408-5's a1)",
         )  # fmt: skip
     out["reliability"] = levels[0]
+    if "load_factor" in out and not (1.0 <= out["load_factor"] <= 3.0):
+        raise BallScrewInputError(
+            "check.load_factor", c.load_factor,
+            "a factor from 1 to 3 (THK A15-40: 1.0 to 1.2 smooth, 1.2 to 1.5 normal running, "
+            "1.5 to 3 with impact or vibration)",
+        )  # fmt: skip
     if not (math.isfinite(out["pretension_temperature"]) and out["pretension_temperature"] >= 0):
         raise BallScrewInputError(
             "check.pretension_temperature", c.pretension_temperature, "a temperature rise >= 0 K"

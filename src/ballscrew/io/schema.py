@@ -396,6 +396,15 @@ class CheckSection(BaseModel):
     reliability: Value = _f(
         "90 %", "-", "reliability of the life (90 to 99 %, ISO 3408-5 a1)", si=""
     )
+    load_factor: Value | None = _f(
+        None,
+        "-",
+        "load factor f_w of the life, 1 to 3: the mean load times f_w (THK A15-40: 1.0 to "
+        "1.2 smooth running without impact, 1.2 to 1.5 normal running, 1.5 to 3 with impact "
+        "or vibration; none: 1.0, ISO 3408-5's life, and said so)",
+        1.2,
+        si="",
+    )
     static_safety: Value = _f(
         2.0,
         "-",
