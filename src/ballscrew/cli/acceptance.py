@@ -6,13 +6,13 @@ import sys
 
 import click
 
-from .common import case_option, stdout, write_result
+from .common import own_case_option, require_case, stdout, write_result
 
 __all__ = ["acceptance_command"]
 
 
 @click.command("acceptance")
-@case_option
+@own_case_option
 @click.option("--torque", "torque_text", default=None,
               help="Measured drag torque(s), e.g. '0.86 N*m' or "
               "'0.80, 0.92, 0.86 N*m'.")  # fmt: skip
@@ -50,7 +50,8 @@ def acceptance_command(
     if (torque_text is None) == (measured_file is None):
         raise BallScrewInputError("--torque", torque_text or "(none)",
                                   "either --torque or --measured, not both")  # fmt: skip
-    case = load_case(case_file)
+    why = "the band is the case's preload on the case's screw"
+    case = load_case(require_case(case_file, "acceptance", why))
     if torque_text is not None:
         torque = np.asarray(parse_range("--torque", torque_text, "N*m"), dtype=float)
     else:

@@ -11,7 +11,7 @@ from rich.console import Console
 from rich.table import Table
 
 from .._version import __version__
-from .common import case_option, stdout, write_result, writing
+from .common import case_option, require_case, stdout, write_result, writing
 
 if TYPE_CHECKING:
     from ..fit.controller import FrictionForm
@@ -111,6 +111,9 @@ def export_friction_command(
     def si(flag: str, text: str | None, unit: str) -> float | None:
         return to_si(flag, text, unit) if text else None
 
+    if measured_file is not None:
+        require_case(case_file, "export-friction --measured",
+                     "a measured torque is turned into forces with the case's lead")  # fmt: skip
     case = load_case(case_file)
     temps = parse_range("--temperature", temperature, "degC") if temperature else None
     if form == "load-map":  # signed loads; the options of a fitted form do not apply
