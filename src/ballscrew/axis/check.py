@@ -73,6 +73,7 @@ from ..design.stiffness import (
 )
 from ..errors import BallScrewInputError, FloatArray
 from ..kinematics import rad_s_to_rpm
+from ..loads import LIFT_OFF_RATIO
 from .duty import EnergyRun, ModelEnergy
 from .energy import CycleResult
 from .thermal import nut_length
@@ -96,6 +97,10 @@ servo makers, e.g. Siemens and Yaskawa: 10 or less; not a standard)."""
 YIELD_STRESS = 147e6
 """Permissible tensile/compressive stress of the screw shaft [Pa] (THK General Catalog,
 Permissible Axial Load, A15-30, equation 6)."""
+
+DEFAULT_AXIAL_PLAY = 20e-6
+"""Axial play of a nut without preload when the case gives none [m]: THK's clearance G2 of a
+precision ball screw, 0.02 mm or less (General Catalog, "Axial Clearance", A15-19)."""
 
 CREEP_SPEED = 0.1
 """Screw speed of a reversal's friction [rad/s] (the drag without a fast move's film)."""
@@ -262,6 +267,7 @@ def run_check(run: EnergyRun, model: str | None = None) -> AxisCheck:
     rows += life_rows
     rows += _load_rows(run, force, d_r, span)
     rows += _speed_rows(run, omega, d_r, span)
+    rows += _lift_off_row(run, force)
     stiff_rows, stiffness = _stiffness_rows(run, name, force, d_r, span, stroke, nut, notes)
     rows += stiff_rows
     thermal_rows, thermal = _thermal_rows(run, name, energy, stroke, notes)
@@ -398,6 +404,24 @@ def _speed_rows(run: EnergyRun, omega: FloatArray, d_r: float, span: float) -> l
     ]  # fmt: skip
 
 
+def _lift_off_row(run: EnergyRun, force: FloatArray) -> list[Criterion]:
+    """The relieved half of a preloaded nut against lift-off at 2^1.5 F_pr (ISO 3408-5)."""
+    screw = run.case.screw
+    if screw.nut == "single" or screw.preload <= 0.0:
+        return []
+    f_max = float(np.max(np.abs(force)))
+    lift = LIFT_OFF_RATIO * screw.preload
+    return [_at_most(
+        "lift-off F_max / (2^1.5 F_pr)", f_max, lift, "N",
+        f"ISO 3408-5:2006 (the preloaded halves, F2 = 0 at |F| = 2^1.5 F_pr = {lift:.4g} N "
+        f"with F_pr = {screw.preload:.4g} N); THK A15-20: a preload holds up to about three "
+        "times itself",
+        f"a preload of at least F_max / 2^1.5 = {f_max / LIFT_OFF_RATIO:.4g} N, or a lower peak "
+        "load (process force, acceleration, weight); past lift-off the nut is one half: the "
+        "stiffness, lost motion and eigenfrequency rows below are the lifted-off state's",
+    )]  # fmt: skip
+
+
 def _stiffness_rows(
     run: EnergyRun, model: str, force: FloatArray, d_r: float, span: float, stroke: float,
     nut: float, notes: list[str],
@@ -406,18 +430,43 @@ def _stiffness_rows(
     notes.append("the stroke lies in the middle of the span")
     position = np.linspace(0.5 * (span - stroke), 0.5 * (span + stroke), 21)
     k_shaft = shaft_axial_stiffness(d_r, span, position, axis.support)
+    peak = float(np.max(np.abs(force)))
+    play = 0.0
+    lifted = False
     if screw.nut == "single":
-        load = float(np.max(np.abs(force)))
-        if load <= 0.0:
+        if peak <= 0.0:
             raise BallScrewInputError(
                 "screw.nut", "single", "a load on the nut: a single nut without preload and "
                 "without load has no stiffness (give a move with a force or a preloaded nut)",
             )  # fmt: skip
-        k_nut = design_nut_stiffness(screw, load)
-        notes.append(f"single nut: stiffness at the cycle's peak load {load:.4g} N; "
-                     "its axial play is not counted")  # fmt: skip
+        k_nut = design_nut_stiffness(screw, peak)
+        given = case.check.get("axial_play")
+        play = DEFAULT_AXIAL_PLAY if given is None else float(given)
+        origin = "default" if given is None else "given"
+        notes.append(
+            f"single nut: stiffness at the cycle's peak load {peak:.4g} N; its axial play "
+            f"{play * 1e6:.3g} um ({origin}) is added to the lost motion"
+        )
+        if given is None:
+            notes.append(
+                f"axial play {DEFAULT_AXIAL_PLAY * 1e6:g} um (default: THK's clearance G2 of a "
+                "precision nut without preload, 0.02 mm or less, General Catalog A15-19; give "
+                "check.axial_play from the nut's catalogue)"
+            )
     else:
         k_nut = design_nut_stiffness(screw)
+        if screw.preload > 0.0 and peak > LIFT_OFF_RATIO * screw.preload:
+            # Past lift-off one half carries the load alone: its tangent stiffness at the peak.
+            lifted = True
+            k_lifted = design_nut_stiffness(screw, peak)
+            notes.append(
+                f"lift-off: the peak load {peak:.4g} N is {peak / screw.preload:.3g} times the "
+                f"preload (past 2^1.5 = {LIFT_OFF_RATIO:.3g}); the nut's stiffness in that state "
+                f"is one half's at the peak load, {k_lifted / 1e6:.4g} N/um against "
+                f"{k_nut / 1e6:.4g} N/um preloaded, and the stiffness, lost motion and "
+                "eigenfrequency rows take it"
+            )
+            k_nut_preloaded, k_nut = k_nut, min(k_nut, k_lifted)
     notes.append(
         "nut stiffness: the Hertz contacts' (all balls sharing the load) over "
         f"{CATALOGUE_RIGIDITY_RATIO:g}, the level of THK's and HIWIN's printed rigidity "
@@ -433,38 +482,45 @@ def _stiffness_rows(
     f_f = _creep_drag(run, model)
     mass = axis.moving_mass
     freq = axial_eigenfrequency(k_axis, mass) if mass > 0.0 else None
-    play = lost_motion(f_f, k_axis)
+    elastic = lost_motion(f_f, k_axis)
+    lost = elastic + play
     # The drag torque also twists the shaft between the drive (at the thrust end) and the nut.
     twist = lost_motion(f_f, torsional_axial_stiffness(d_r, position, screw.lead))
     figures: dict[str, Any] = {
         "position_mm": (position * 1e3).tolist(),
         "shaft_N_per_um": (k_shaft / 1e6).tolist(),
         "nut_N_per_um": k_nut / 1e6,
+        "lifted_off": lifted,
         "bearings_N_per_um": None if k_bearing is None else k_bearing / 1e6,
         "axis_N_per_um": (k_axis / 1e6).tolist(),
         "eigenfrequency_Hz": None if freq is None else freq.tolist(),
         "friction_force_N": f_f,
-        "lost_motion_um": (play * 1e6).tolist(),
+        "axial_play_um": play * 1e6,
+        "lost_motion_um": (lost * 1e6).tolist(),
         "lost_motion_torsion_um": (twist * 1e6).tolist(),
         "nut_length_mm": nut * 1e3,
     }
+    if lifted:
+        figures["nut_preloaded_N_per_um"] = k_nut_preloaded / 1e6
+    state = ", lifted off" if lifted else ""
     source = (
         "ISO 3408-4; shaft EA/a or EAL/(a(L-a)) (THK, Axial Rigidity of the Feed Screw "
         "System, A15-43); nut: Hertz at the preload, at the makers' printed level, x 0.8 "
-        "(THK A-709)"
+        "(THK A-709)" + ("; past lift-off one half at the peak load" if lifted else "")
     )
+    play_text = f" + the axial play {play * 1e6:.3g} um" if screw.nut == "single" else ""
     rows = [
-        _info("axis stiffness (least over the stroke)", float(np.min(k_axis)) / 1e6, "N/um",
-              source + f"; nut {k_nut / 1e6:.4g} N/um"),
-        _info("lost motion at reversal (most)", float(np.max(play)) * 1e6, "um",
-              f"2 F_f / k, F_f = 2 pi T_f / l = {f_f:.3g} N (drag at creep speed); the "
-              f"shaft's torsion adds up to {float(np.max(twist)) * 1e6:.2g} um"),
+        _info(f"axis stiffness (least over the stroke{state})", float(np.min(k_axis)) / 1e6,
+              "N/um", source + f"; nut {k_nut / 1e6:.4g} N/um"),
+        _info(f"lost motion at reversal (most{state})", float(np.max(lost)) * 1e6, "um",
+              f"2 F_f / k{play_text}, F_f = 2 pi T_f / l = {f_f:.3g} N (drag at creep speed); "
+              f"the shaft's torsion adds up to {float(np.max(twist)) * 1e6:.2g} um"),
     ]  # fmt: skip
     if freq is None:
         rows.append(_missing("axial eigenfrequency", "Hz", "sqrt(k/m) / 2 pi",
                              "give axis.moving_mass"))  # fmt: skip
     else:
-        rows.append(_info("axial eigenfrequency (least)", float(np.min(freq)), "Hz",
+        rows.append(_info(f"axial eigenfrequency (least{state})", float(np.min(freq)), "Hz",
                           "sqrt(k/m) / 2 pi with the moving mass"))  # fmt: skip
     return rows, figures
 

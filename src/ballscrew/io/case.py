@@ -433,6 +433,11 @@ def _check(data: CaseFile, si: Callable[[str, str, Any, str], float]) -> dict[st
             "one of 90, 95, 96, 97, 98 or 99 % (ISO 3408-5's a1)",
         )  # fmt: skip
     out["reliability"] = levels[0]
+    if "axial_play" in out and not (0.0 <= out["axial_play"] <= 1e-3):
+        raise BallScrewInputError(
+            "check.axial_play", c.axial_play, "a play from 0 to 1 mm (THK A15-19: 0 to 0.05 mm "
+            "for precision nuts, up to 0.2 mm for rolled screws)",
+        )  # fmt: skip
     if "load_factor" in out and not (1.0 <= out["load_factor"] <= 3.0):
         raise BallScrewInputError(
             "check.load_factor", c.load_factor,

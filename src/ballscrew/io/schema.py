@@ -427,6 +427,14 @@ class CheckSection(BaseModel):
         "750 N/um",
         si="N/m",
     )
+    axial_play: Value | None = _f(
+        None,
+        "length",
+        "axial play of a nut without preload, added to its lost motion (none: 0.02 mm, THK's "
+        "clearance G2 of a precision nut, General Catalog A15-19, and said so)",
+        "0.01 mm",
+        si="m",
+    )
     pretension_temperature: Value = _f(
         "0 K",
         "temperature difference",
