@@ -37,13 +37,18 @@ from __future__ import annotations
 
 import math
 import warnings
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
 
 from .._moved import renamed
 from ..chain import friction_torque
+from ..design.catalog_formulas import (
+    DRAG_TORQUE_TOLERANCE,
+    drag_torque_tolerance,
+    preload_torque,
+)
 from ..design.limits import SAFETY_FACTOR, critical_speed, root_diameter
 from ..design.sizing import (
     STEEL_EXPANSION,
@@ -77,6 +82,7 @@ from ..loads import LIFT_OFF_RATIO
 from .duty import EnergyRun, ModelEnergy
 from .energy import CycleResult
 from .thermal import nut_length
+from .uncertainty import SAMPLES, SEED, VerdictUncertainty, draws, judge, model_error
 
 __all__ = ["CHECK_FROM", "AxisCheck", "Criterion", "run_check", "verdict"]
 
@@ -125,9 +131,12 @@ class Criterion:
     verdict: str
     source: str
     advice: str = ""
+    uncertainty: VerdictUncertainty | None = None
+    """P(NOT OK), the utilisation's 95 % interval and the guarded verdict (rows with a limit)."""
 
     def as_dict(self) -> dict[str, Any]:
-        """The row as JSON-ready values."""
+        """The row as JSON-ready values (the uncertainty's keys null for a row without a limit)."""
+        u = self.uncertainty
         return {
             "name": self.name,
             "value": self.value,
@@ -135,6 +144,9 @@ class Criterion:
             "unit": self.unit,
             "utilisation": self.utilisation,
             "verdict": self.verdict,
+            "p_not_ok": None if u is None else u.p_not_ok,
+            "utilisation_95": None if u is None else [u.low, u.high],
+            "guarded_verdict": None if u is None else u.guarded,
             "source": self.source,
             "advice": self.advice,
         }
@@ -278,6 +290,7 @@ def run_check(run: EnergyRun, model: str | None = None) -> AxisCheck:
         "axial loads: inertia, gravity and the process force of the move; no guideway "
         "friction (not in the case)"
     )
+    rows = _with_uncertainty(run, name, energy, force, turns, rows, stiffness, notes)
     marked = [f"{a.field} = {a.value} ({a.reason})" for a in case.assumptions]
     return AxisCheck(case.title, name, rows, marked + list(run.assumptions) + notes, life,
                      stiffness, motor, thermal)  # fmt: skip
@@ -641,3 +654,151 @@ def _motor_rows(run: EnergyRun, cycle: CycleResult) -> tuple[list[Criterion], di
 def __getattr__(name: str) -> Any:
     """The entry point's name before 0.3.0, kept for one release with a DeprecationWarning."""
     return renamed(__name__, name, {"axis_check": run_check})
+
+
+def _tolerances(run: EnergyRun, notes: list[str]) -> tuple[float, float, float, float]:
+    """The case's tolerances of mass, process force, preload and ratings (shares, ±)."""
+    case, screw = run.case, run.case.screw
+    check = case.check
+    given = {k: check.get(f"{k}_tolerance") for k in ("mass", "force", "preload", "rating")}
+    preload = given["preload"]
+    if preload is None and screw.preload > 0.0:
+        rows = DRAG_TORQUE_TOLERANCE["C3"]
+        torque = float(preload_torque(screw.preload, screw.lead, screw.lead_angle))
+        inside = min(max(torque, rows[0][0]), rows[-1][1])
+        preload = drag_torque_tolerance(inside)[2]
+        notes.append(
+            f"preload tolerance +-{preload:.0%} (default: the makers' drag-torque band of grade "
+            f"C3 at the catalogue drag torque {torque:.3g} N*m, THK A-688 Table 13; give "
+            "check.preload_tolerance)"
+        )
+    names = {"mass": "moving mass", "force": "process force", "rating": "load ratings"}
+    missing = [k for k in names if given[k] is None]
+    if missing:
+        keys = ", ".join(f"check.{k}_tolerance" for k in missing)
+        notes.append(f"no tolerance given for the {', '.join(names[k] for k in missing)}: "
+                     f"taken as exact (give {keys})")  # fmt: skip
+    return (float(given["mass"] or 0.0), float(given["force"] or 0.0), float(preload or 0.0),
+            float(given["rating"] or 0.0))  # fmt: skip
+
+
+def _with_uncertainty(
+    run: EnergyRun, model: str, energy: ModelEnergy, force: FloatArray, turns: FloatArray,
+    rows: list[Criterion], stiffness: dict[str, Any], notes: list[str],
+) -> list[Criterion]:  # fmt: skip
+    """Every row with a limit, with its P(NOT OK) and interval (:mod:`.uncertainty`)."""
+    screw = run.case.screw
+    t_mass, t_force, t_pre, t_rating = _tolerances(run, notes)
+    creep_torque = float(stiffness.get("friction_force_N", 0.0)) * screw.lead / (2.0 * math.pi)
+    sigma, origin = model_error(model, screw.nut, creep_torque)
+    notes.append(origin)
+    if math.isnan(sigma):
+        sigma = 0.0
+    d = draws(t_mass, t_force, t_pre, t_rating, sigma)
+    notes.append(
+        f"uncertainty: Monte Carlo over {SAMPLES} draws (seed {SEED}): mass +-{t_mass:.0%}, "
+        f"process force +-{t_force:.0%}, preload +-{t_pre:.0%}, load ratings +-{t_rating:.0%} "
+        f"(uniform), the model's friction x exp(N(0, {sigma:.3g})); the friction factor scales "
+        "the heat and the motor's friction torque, not the preload's share of it; P(NOT OK) "
+        "beside each verdict, 'OK (95 %)' when P <= 5 %, 'NOT OK (95 %)' when P >= 95 %, "
+        "else 'undecided'"
+    )
+    process = np.asarray(run.profile.process_force, dtype=float)
+    mass_part = force - process
+    samples = _row_samples(run, energy, mass_part, process, turns, rows, d)
+    out = []
+    for row in rows:
+        u = samples.get(row.name)
+        if u is None and row.utilisation is not None:
+            u = np.full(SAMPLES, row.utilisation)  # no uncertain input in its formula
+        out.append(row if u is None else replace(row, uncertainty=judge(u)))
+    return out
+
+
+def _row_samples(
+    run: EnergyRun, energy: ModelEnergy, mass_part: FloatArray, process: FloatArray,
+    turns: FloatArray, rows: list[Criterion], d: Any, chunk: int = 250,
+) -> dict[str, FloatArray]:  # fmt: skip
+    """The utilisation of each row with an uncertain input, one per draw."""
+    case, axis, screw = run.case, run.axis, run.case.screw
+    by_name = {r.name: r for r in rows if r.utilisation is not None}
+    cycle = energy.cycle
+    n = d.mass.size
+    out: dict[str, FloatArray] = {name: np.empty(n) for name in by_name}
+    weights = _weights(run.profile.time)
+    lead, i = screw.lead, axis.gear_ratio
+    omega = np.asarray(cycle.screw_speed, dtype=float)
+    t_motor = np.asarray(cycle.motor_torque, dtype=float)
+    t_fric = np.sign(omega) * np.asarray(cycle.friction_torque, dtype=float) / i
+    preloaded = screw.nut != "single" and screw.preload > 0.0
+    for start in range(0, n, chunk):
+        sl = slice(start, min(start + chunk, n))
+        km, kf, kp = d.mass[sl, None], d.force[sl, None], d.preload[sl, None]
+        kr, kfr = d.ratings[sl], d.friction[sl]
+        f = km * mass_part + kf * process
+        peak = np.max(np.abs(f), axis=1)
+        pre = screw.preload * kp[:, 0]
+        for name, row in by_name.items():
+            u: FloatArray | None = None
+            if name.startswith("fatigue life") and case.dynamic_load_rating is not None:
+                u = _life_samples(run, f, pre, kr, turns, row)
+            elif name.startswith("static safety") and case.static_load_rating is not None:
+                half = preloaded_loads(peak, pre if preloaded else 0.0)[0]
+                u = np.asarray(row.limit, dtype=float) * half / (case.static_load_rating * kr)
+            elif name.startswith("lift-off"):
+                u = peak / (LIFT_OFF_RATIO * pre)
+            elif name.startswith(("buckling load", "axial load, root section")):
+                u = peak / 1e3 / float(row.limit or math.inf)
+            elif name.startswith("thermal lead error") and row.limit:
+                u = _thermal_samples(run, energy, kfr, row)
+            elif name.startswith("inertia ratio"):
+                j = reflected_inertia(1.0, lead) * axis.moving_mass * km[:, 0]
+                j = (j + (axis.screw_inertia + axis.coupling_inertia) / i**2) / axis.motor_inertia
+                u = j / float(row.limit or math.inf)
+            elif name.startswith(("peak torque", "RMS torque")):
+                t = (t_motor + ((km - 1.0) * mass_part + (kf - 1.0) * process) * lead
+                     / (2.0 * math.pi * i) + (kfr[:, None] - 1.0) * t_fric)  # fmt: skip
+                if name.startswith("peak"):
+                    value = np.max(np.abs(t), axis=1)
+                else:
+                    value = np.sqrt(np.sum(weights * t**2, axis=1) / run.profile.duration)
+                u = value / float(row.limit or math.inf)
+            if u is not None:
+                out[name][sl] = u
+            else:
+                out[name][sl] = float(row.utilisation)  # type: ignore[arg-type]
+    return out
+
+
+def _life_samples(
+    run: EnergyRun, f: FloatArray, pre: FloatArray, kr: FloatArray, turns: FloatArray,
+    row: Criterion,
+) -> FloatArray:  # fmt: skip
+    """Required over computed life for each draw of forces, preload and rating."""
+    case, screw = run.case, run.case.screw
+    assert case.dynamic_load_rating is not None
+    if screw.nut == "single":
+        h1, h2 = np.maximum(f, 0.0), np.maximum(-f, 0.0)
+    else:
+        loaded, relieved = preloaded_loads(f, pre[:, None])
+        h1 = np.where(f >= 0.0, loaded, relieved)
+        h2 = np.where(f >= 0.0, relieved, loaded)
+    ca = case.dynamic_load_rating * kr
+    f_w = float(run.case.check.get("load_factor") or DEFAULT_LOAD_FACTOR)
+    rel = float(case.check.get("reliability", 0.9))
+    revs = combined_life(nominal_life(ca, cubic_mean_load(h1, turns), rel, f_w),
+                         nominal_life(ca, cubic_mean_load(h2, turns), rel, f_w))  # fmt: skip
+    rpm = float(np.sum(turns)) / run.profile.duration * 60.0
+    hours = np.asarray(revs, dtype=float) / (60.0 * rpm)
+    return np.asarray(float(row.limit or 0.0) / hours, dtype=float)
+
+
+def _thermal_samples(
+    run: EnergyRun, energy: ModelEnergy, kfr: FloatArray, row: Criterion
+) -> FloatArray:
+    """The lead error's utilisation with the temperature rise scaled by the friction factor."""
+    assert energy.final_temperature is not None
+    rise = float(energy.final_temperature) - float(run.node.ambient)
+    pre = float(run.case.check.get("pretension_temperature", 0.0))
+    error = thermal_elongation(np.maximum(rise * kfr - pre, 0.0), 0.3) * 1e6
+    return np.asarray(error / float(row.limit or math.inf), dtype=float)

@@ -103,11 +103,16 @@ def _verdict_table(result: AxisCheck) -> Table:
     missing = f", {len(result.not_checked)} not checked" if result.not_checked else ""
     table = Table(title=f"{result.title}: axis check ({result.model}): {result.verdict}{missing}")
     for column, justify in (("criterion", "left"), ("value", "right"), ("limit", "right"),
-                            ("unit", "left"), ("use", "right"), ("verdict", "left"),
-                            ("source", "left"), ("what to change", "left")):  # fmt: skip
+                            ("unit", "left"), ("use", "right"), ("use, 95 %", "right"),
+                            ("verdict", "left"), ("P(NOT OK)", "right"),
+                            ("95 % confidence", "left"), ("source", "left"),
+                            ("what to change", "left")):  # fmt: skip
         table.add_column(column, justify=justify)  # type: ignore[arg-type]
     for c in result.criteria:
         use = "-" if c.utilisation is None else f"{c.utilisation:.0%}"
-        table.add_row(c.name, _number(c.value), _number(c.limit), c.unit, use, c.verdict,
-                      c.source, c.advice)  # fmt: skip
+        u = c.uncertainty
+        spread = "-" if u is None else f"{u.low:.0%}-{u.high:.0%}"
+        p = "-" if u is None else f"{u.p_not_ok:.0%}"
+        table.add_row(c.name, _number(c.value), _number(c.limit), c.unit, use, spread, c.verdict,
+                      p, "-" if u is None else u.guarded, c.source, c.advice)  # fmt: skip
     return table

@@ -433,6 +433,11 @@ def _check(data: CaseFile, si: Callable[[str, str, Any, str], float]) -> dict[st
             "one of 90, 95, 96, 97, 98 or 99 % (ISO 3408-5's a1)",
         )  # fmt: skip
     out["reliability"] = levels[0]
+    for name in ("preload_tolerance", "rating_tolerance", "mass_tolerance", "force_tolerance"):
+        if name in out and not (0.0 <= out[name] < 1.0):
+            raise BallScrewInputError(
+                f"check.{name}", getattr(c, name), "a share from 0 to less than 100 %"
+            )
     if "axial_play" in out and not (0.0 <= out["axial_play"] <= 1e-3):
         raise BallScrewInputError(
             "check.axial_play", c.axial_play, "a play from 0 to 1 mm (THK A15-19: 0 to 0.05 mm "

@@ -435,6 +435,36 @@ class CheckSection(BaseModel):
         "0.01 mm",
         si="m",
     )
+    preload_tolerance: Value | None = _f(
+        None,
+        "-",
+        "tolerance of the preload, +- as a share, read as a uniform range (none: the makers' "
+        "drag-torque band of grade C3 at the case's catalogue drag torque, THK A-688 Table 13)",
+        "20 %",
+        si="",
+    )
+    rating_tolerance: Value | None = _f(
+        None,
+        "-",
+        "tolerance of the load ratings C_a and C_0a, +- as a share, uniform (none: 0, the "
+        "catalogue's values as printed, and said so)",
+        "10 %",
+        si="",
+    )
+    mass_tolerance: Value | None = _f(
+        None,
+        "-",
+        "tolerance of the moving mass, +- as a share, uniform (none: 0, and said so)",
+        "10 %",
+        si="",
+    )
+    force_tolerance: Value | None = _f(
+        None,
+        "-",
+        "tolerance of the move's process force, +- as a share, uniform (none: 0, and said so)",
+        "20 %",
+        si="",
+    )
     pretension_temperature: Value = _f(
         "0 K",
         "temperature difference",

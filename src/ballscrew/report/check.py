@@ -24,7 +24,7 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure as MplFigure
 
 from .._version import __version__
-from ..axis.check import AxisCheck
+from ..axis.check import AxisCheck, Criterion
 from ..io.files import atomic_write
 from .document import Block, html_page, markdown
 from .outputs import csv_bytes
@@ -33,7 +33,17 @@ from .plotting import write_figures
 __all__ = ["write_check_report"]
 
 _COLOURS = {"OK": "#3a7d44", "CHECK": "#c58b00", "NOT OK": "#b00020"}
-_HEADER = ["criterion", "value", "limit", "unit", "use", "verdict", "source", "what to change"]
+_HEADER = ["criterion", "value", "limit", "unit", "use", "use, 95 %", "verdict", "P(NOT OK)",
+           "with 95 % confidence", "source", "what to change"]  # fmt: skip
+
+
+def _use_interval(c: Criterion) -> str:
+    u = c.uncertainty
+    return "-" if u is None else f"{u.low:.0%} to {u.high:.0%}"
+
+
+def _probability(c: Criterion) -> str:
+    return "-" if c.uncertainty is None else f"{c.uncertainty.p_not_ok:.0%}"
 
 
 def _number(value: Any) -> str:
@@ -99,8 +109,14 @@ def _thermal_figure(check: AxisCheck) -> MplFigure:
 def _data(check: AxisCheck) -> dict[str, bytes]:
     s, t = check.stiffness, check.thermal
     criteria = csv_bytes(
-        ["criterion", "value", "limit", "unit", "utilisation [-]", "verdict", "source", "advice"],
-        [[c.name, c.value, c.limit, c.unit, c.utilisation, c.verdict, c.source, c.advice]
+        ["criterion", "value", "limit", "unit", "utilisation [-]", "utilisation 2.5 % [-]",
+         "utilisation 97.5 % [-]", "verdict", "P(NOT OK) [-]", "verdict with 95 % confidence",
+         "source", "advice"],
+        [[c.name, c.value, c.limit, c.unit, c.utilisation,
+          None if c.uncertainty is None else c.uncertainty.low,
+          None if c.uncertainty is None else c.uncertainty.high, c.verdict,
+          None if c.uncertainty is None else c.uncertainty.p_not_ok,
+          "" if c.uncertainty is None else c.uncertainty.guarded, c.source, c.advice]
          for c in check.criteria],
     )  # fmt: skip
     stiffness = csv_bytes(
@@ -120,8 +136,9 @@ def _data(check: AxisCheck) -> dict[str, bytes]:
 def _blocks(check: AxisCheck, captions: dict[str, str]) -> list[Block]:
     missing = f", {len(check.not_checked)} not checked" if check.not_checked else ""
     rows = [[c.name, _number(c.value), _number(c.limit), c.unit,
-             "-" if c.utilisation is None else f"{c.utilisation:.0%}", c.verdict, c.source,
-             c.advice] for c in check.criteria]  # fmt: skip
+             "-" if c.utilisation is None else f"{c.utilisation:.0%}", _use_interval(c),
+             c.verdict, _probability(c), "-" if c.uncertainty is None else c.uncertainty.guarded,
+             c.source, c.advice] for c in check.criteria]  # fmt: skip
     blocks = [
         Block("h1", f"Axis check: {check.title}"),
         Block(
