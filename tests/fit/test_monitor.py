@@ -162,9 +162,13 @@ def test_bands_and_crossings_against_an_independent_regression(
     y_th = np.log(force)
     assert r.crossing == pytest.approx((y_th - fit.intercept) / fit.slope, rel=1e-10)
 
+    # An absolute threshold adds the model level's 95 % (1.96 sigma(ln F)) in quadrature.
+    level = 1.96 * r.level_sd
+    assert r.level_sd > 0.0
+
     def edge(t: float) -> float:
         mean_se = np.sqrt(s**2 / n + (t - TIME.mean()) ** 2 * fit.stderr**2)
-        return abs(fit.intercept + fit.slope * t - y_th) - q * mean_se
+        return abs(fit.intercept + fit.slope * t - y_th) - np.hypot(q * mean_se, level)
 
     low = brentq(edge, TIME[0] - 1e4, r.crossing)
     high = brentq(edge, r.crossing, TIME[-1] + 1e5)
