@@ -79,12 +79,12 @@ from ..design.stiffness import (
 from ..errors import BallScrewInputError, FloatArray
 from ..kinematics import rad_s_to_rpm
 from ..loads import LIFT_OFF_RATIO
-from .duty import EnergyRun, ModelEnergy
+from .duty import EnergyRun, ModelEnergy, run_inputs
 from .energy import CycleResult
 from .thermal import nut_length
 from .uncertainty import SAMPLES, SEED, VerdictUncertainty, draws, judge, model_error
 
-__all__ = ["CHECK_FROM", "AxisCheck", "Criterion", "run_check", "verdict"]
+__all__ = ["CHECK_FROM", "AxisCheck", "Criterion", "check_inputs", "run_check", "verdict"]
 
 DEFAULT_LOAD_FACTOR = 1.0
 """Load factor f_w of the life when the case gives none [-]: ISO 3408-5's own life (the
@@ -188,6 +188,8 @@ class AxisCheck:
     stiffness: dict[str, Any] = field(default_factory=dict)
     motor: dict[str, Any] = field(default_factory=dict)
     thermal: dict[str, Any] = field(default_factory=dict)
+    inputs: dict[str, Any] = field(default_factory=dict)
+    """What the verdicts were computed from (:func:`check_inputs`); the face adds the command."""
 
     @property
     def verdict(self) -> str:
@@ -218,6 +220,7 @@ class AxisCheck:
             "motor": self.motor,
             "thermal": self.thermal,
             "assumptions": self.assumptions,
+            "inputs": self.inputs,
         }
 
 
@@ -293,7 +296,15 @@ def run_check(run: EnergyRun, model: str | None = None) -> AxisCheck:
     rows = _with_uncertainty(run, name, energy, force, turns, rows, stiffness, notes)
     marked = [f"{a.field} = {a.value} ({a.reason})" for a in case.assumptions]
     return AxisCheck(case.title, name, rows, marked + list(run.assumptions) + notes, life,
-                     stiffness, motor, thermal)  # fmt: skip
+                     stiffness, motor, thermal, check_inputs(run, name))  # fmt: skip
+
+
+def check_inputs(run: EnergyRun, model: str) -> dict[str, Any]:
+    """The inputs of a check, enough to compute it again (:func:`~.duty.run_inputs`).
+
+    With the draws of the uncertainty (their number and seed).
+    """
+    return {**run_inputs(run, model), "uncertainty": {"samples": SAMPLES, "seed": SEED}}
 
 
 def _life_rows(

@@ -55,6 +55,7 @@ __all__ = [
     "profile_from_file",
     "profile_from_move",
     "run_energy",
+    "run_inputs",
 ]
 
 
@@ -163,6 +164,8 @@ class EnergyRun:
     results: dict[str, ModelEnergy] = field(default_factory=dict)
     findings: list[Finding] = field(default_factory=list)
     """Plausibility warnings: the motion's loads and stroke against the screw (errors raise)."""
+    run_time: float = 3600.0
+    """How long the cycle repeats for the temperature reached [s]."""
 
     @property
     def cycles_by_model(self) -> dict[str, CycleResult]:
@@ -205,7 +208,59 @@ class EnergyRun:
             "assumptions": self.assumptions,
             "plausibility": [str(f) for f in self.findings],
             "models": models,
+            "inputs": run_inputs(self, first_name),
         }
+
+
+def run_inputs(run: EnergyRun, model: str) -> dict[str, Any]:
+    """The inputs of a run (``energy``, ``check``), enough to compute it again.
+
+    The case as written (its text and SHA-256) and as read (each key's SI value
+    and source), the move, the model and the run time. The values of
+    the screw, ``[axis]``, ``[motor]`` and ``[check]`` are SI; a key's
+    source is ``given``, ``catalogue``, ``default`` or ``assumed``
+    (:attr:`ballscrew.io.case.Case.sources`).
+    """
+    import dataclasses
+    import hashlib
+
+    case = run.case
+    screw = dataclasses.asdict(case.screw)
+    axis = dataclasses.asdict(run.axis)
+    values: list[dict[str, Any]] = []
+    for key, source in sorted(case.sources.items()):
+        section, name = key.split(".", 1)
+        value: Any = None
+        if section == "screw":
+            value = screw.get(name)
+            if name == "dynamic_load_rating" and case.ratings is not None:
+                value, source = case.ratings.dynamic, case.ratings.dynamic_source
+            elif name == "static_load_rating" and case.ratings is not None:
+                value, source = case.ratings.static, case.ratings.static_source
+        elif section == "axis":
+            value = axis.get(name)
+        elif section in ("motor", "check"):
+            value = getattr(case, section).get(name)
+        if isinstance(value, float | int | str | bool) or value is None:
+            values.append({"key": key, "value": value, "source": source})
+    ratings = case.ratings
+    return {
+        "case": {
+            "title": case.title,
+            "text": case.text,
+            "sha256": hashlib.sha256(case.text.encode("utf-8")).hexdigest(),
+            "values": values,
+            "ratings_source": None if ratings is None else {
+                "dynamic": ratings.dynamic_source, "static": ratings.static_source},
+        },
+        "move": dict(run.move),
+        "profile": None if run.move else {
+            "samples": int(run.profile.time.size), "duration_s": run.profile.duration},
+        "cycles": run.cycles,
+        "run_time_s": run.run_time,
+        "temperature_C": run.temperature,
+        "model": model,
+    }  # fmt: skip
 
 
 MAX_RUN_TIME = 100_000 * 3600.0
@@ -288,7 +343,7 @@ def run_energy(
         case, profile, cycles, temp, setup.axis, node,
         {k: getattr(node, k) for k in ("screw_length", "ambient", "machine_resistance",
                                        "nut_mass")},
-        list(setup.notes), m, findings=found,
+        list(setup.notes), m, findings=found, run_time=run_time,
     )  # fmt: skip
     results = {
         name: _one_model(run, name, run_time, steady_speeds, thermal_failure)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import TYPE_CHECKING
 
 import click
@@ -77,6 +78,14 @@ def check_command(
     run = run_energy(case, profile, [model_name], cycles=cycles, temperature=temp,
                      run_time=to_si("--run-time", run_time, "s"), move=m)  # fmt: skip
     result = run_check(run, model_name)
+    command = ["ballscrew", "check", "--case", case_file or "(bundled)"]
+    for flag, value in (("--move", move_text), ("--profile", profile_file),
+                        ("--cycles", str(cycles)), ("--model", model_name),
+                        ("--temperature", temperature), ("--run-time", run_time)):  # fmt: skip
+        if value is not None:
+            command += [flag, value]
+    result = replace(result, inputs={**result.inputs, "command": command,
+                                     "case_file": case_file})  # fmt: skip
     out = stdout(json_file)
     out.print(_verdict_table(result))
     for line in result.assumptions:

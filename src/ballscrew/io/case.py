@@ -217,6 +217,10 @@ class Case:
     motor: dict[str, float] = field(default_factory=dict)
     check: dict[str, Any] = field(default_factory=dict)
     axis_given: frozenset[str] = frozenset()
+    sources: dict[str, str] = field(default_factory=dict)
+    """Where each key's value comes from, by ``section.key``: ``given`` (written in the
+    file), ``catalogue`` (the designation's row), ``default`` (the schema's or the
+    command's), ``assumed`` (marked so, with its reason in :attr:`assumptions`)."""
 
     def load_ratings(self) -> Ratings:
         """The screw's load ratings: the case's, else C_0a estimated from the geometry."""
@@ -371,6 +375,7 @@ def parse_case(text: str, *, source: str = "case") -> Case:
         motor=motor,
         check=check,
         axis_given=frozenset(data.axis.model_fields_set),
+        sources=_sources(data, notes),
     )
 
 
@@ -460,6 +465,36 @@ def _check(data: CaseFile, si: Callable[[str, str, Any, str], float]) -> dict[st
                 "check.accuracy_grade", c.accuracy_grade, f"one of {list(TRAVEL_VARIATION_300)}"
             )
         out["accuracy_grade"] = grade
+    return out
+
+
+def _sources(data: CaseFile, notes: list[Assumption]) -> dict[str, str]:
+    """Where each key of the case comes from (:attr:`Case.sources`)."""
+    s = data.screw
+    base: set[str] = set()
+    if s.designation is not None:
+        raw = s.designation.value if isinstance(s.designation, Assumed) else s.designation
+        base = set(resolve(str(raw)).geometry)
+    given = s.model_fields_set
+    out: dict[str, str] = {}
+    for name in [*SCREW_UNITS, "nut"]:
+        out[f"screw.{name}"] = ("given" if name in given else "catalogue" if name in base
+                                else "default")  # fmt: skip
+    for way in ("preload", "preload_drag_torque", "preload_share"):
+        if way in given:
+            out["screw.preload"] = "given" if way == "preload" else f"given as {way}"
+            out[f"screw.{way}"] = "given"
+    for name in ("dynamic_load_rating", "static_load_rating"):
+        out[f"screw.{name}"] = ("given" if name in given else "catalogue" if s.designation
+                                else "estimated or missing")  # fmt: skip
+    for section in (data.operation, data.axis, data.motor, data.check):
+        key = {id(data.operation): "operation", id(data.axis): "axis", id(data.motor): "motor",
+               id(data.check): "check"}[id(section)]  # fmt: skip
+        for name in type(section).model_fields:
+            out[f"{key}.{name}"] = "given" if name in section.model_fields_set else "default"
+    for a in notes:
+        if a.field in out or "." in a.field:
+            out[a.field] = "assumed"
     return out
 
 

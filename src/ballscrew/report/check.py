@@ -150,7 +150,38 @@ def _blocks(check: AxisCheck, captions: dict[str, str]) -> list[Block]:
     ]
     blocks += [Block("img", (key, caption)) for key, caption in captions.items()]
     blocks += [Block("h2", "Assumptions"), Block("ul", list(check.assumptions) or ["none"])]
+    blocks += _input_blocks(check)
     return blocks
+
+
+def _input_blocks(check: AxisCheck) -> list[Block]:
+    """The inputs the verdicts were computed from: run, move, the case's values and text."""
+    inputs = check.inputs
+    if not inputs:
+        return []
+    case = inputs["case"]
+    move = ", ".join(f"{k}={v:g}" for k, v in inputs.get("move", {}).items()) or "a profile"
+    run = [
+        f"command: {' '.join(inputs['command'])}" if inputs.get("command") else "command: -",
+        f"model: {inputs['model']}; move (SI): {move}; cycles: {inputs['cycles']}; run time: "
+        f"{inputs['run_time_s']:g} s; lubricant temperature: {inputs['temperature_C']:g} degC",
+        f"case: {case['title']}, SHA-256 {case['sha256']}"
+        + (f" ({inputs['case_file']})" if inputs.get("case_file") else ""),
+        f"uncertainty: {inputs['uncertainty']['samples']} draws, seed "
+        f"{inputs['uncertainty']['seed']}",
+    ]
+    rows = [[v["key"], "-" if v["value"] is None else str(v["value"]), v["source"]]
+            for v in case["values"] if v["value"] is not None]  # fmt: skip
+    return [
+        Block("h2", "Inputs"),
+        Block("ul", run),
+        Block("table", (["key", "value (SI)", "source"], rows)),
+        Block(
+            "p",
+            "The whole check with these inputs (the case file's text, every value) is "
+            "data/check.json: it computes the same table again.",
+        ),
+    ]
 
 
 def write_check_report(out: str | Path, check: AxisCheck) -> list[Path]:
@@ -169,6 +200,12 @@ def write_check_report(out: str | Path, check: AxisCheck) -> list[Path]:
     for key, content in _data(check).items():
         path = folder / "data" / f"{key}.csv"
         atomic_write(path, content)
+        written.append(path)
+    if check.inputs:
+        from .outputs import result_json
+
+        path = folder / "data" / "check.json"
+        atomic_write(path, result_json(check).encode("utf-8"))
         written.append(path)
     blocks = _blocks(check, {k: caption for k, (_, caption) in figures.items()})
     page = html_page(blocks, f"Axis check: {check.title}", images)
