@@ -212,6 +212,18 @@ class EnergyRun:
         }
 
 
+def _unreliable_fit_notes(case: Case) -> list[str]:
+    """A warning for a case written from an unreliable fit (``fitted-case.toml``)."""
+    mark = "UNRELIABLE FIT"  # ballscrew.fit.calibration.UNRELIABLE_FIT (a wing above this one)
+    fitted = [a.field for a in case.assumptions if a.reason.startswith(mark)]
+    if not (fitted or case.description.startswith(mark)):
+        return []
+    where = ", ".join(fitted) if fitted else "its model parameters"
+    return [f"WARNING: this case comes from an unreliable fit ({where}): "
+            f"{case.description or 'see the file'}; the results that use those values are "
+            "not established"]  # fmt: skip
+
+
 def run_inputs(run: EnergyRun, model: str) -> dict[str, Any]:
     """The inputs of a run (``energy``, ``check``), enough to compute it again.
 
@@ -339,11 +351,12 @@ def run_energy(
     setup = axis_setup(case.screw, case.axis, case.thermal, float(np.ptp(profile.position)))
     node = setup.node
     found = motion_plausibility(case, profile, setup.axis, motion_field)
+    setup_notes = _unreliable_fit_notes(case) + list(setup.notes)
     run = EnergyRun(
         case, profile, cycles, temp, setup.axis, node,
         {k: getattr(node, k) for k in ("screw_length", "ambient", "machine_resistance",
                                        "nut_mass")},
-        list(setup.notes), m, findings=found, run_time=run_time,
+        setup_notes, m, findings=found, run_time=run_time,
     )  # fmt: skip
     results = {
         name: _one_model(run, name, run_time, steady_speeds, thermal_failure)
