@@ -13,8 +13,8 @@ from rich.console import Console
 from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 
 __all__ = [
-    "case_option", "file_option", "motion", "own_case_option", "progress", "require_case",
-    "stdout", "write_json", "write_result", "writing",
+    "case_option", "file_option", "folder_only", "motion", "own_case_option", "progress",
+    "require_case", "stdout", "write_json", "write_result", "writing",
 ]  # fmt: skip
 
 F = TypeVar("F", bound=Callable[..., Any])
@@ -121,6 +121,22 @@ def require_case(case_file: str | None, command: str, why: str) -> str:
             "writes a case to fill in)"
         )
     return case_file
+
+
+def folder_only(ctx: click.Context, param: click.Parameter, value: str | None) -> str | None:
+    """A click callback: a report folder option refuses ``-`` (standard output is one file).
+
+    Every single-file option (``--json``, ``--csv``, a file's ``--out``, ``--plot``)
+    takes ``-`` for standard output; a report is a folder of files and has none.
+    """
+    del ctx
+    if value is not None and value.strip() == "-":
+        raise click.BadParameter(
+            "'-' is standard output, which takes one file; this option writes a report "
+            "folder (figures, CSV, Markdown, HTML): give a folder name",
+            param=param,
+        )
+    return value
 
 
 def file_option(flag: str, dest: str, text: str) -> Callable[[F], F]:

@@ -9,7 +9,7 @@ from rich.table import Table
 
 from .._version import __version__
 from ..io.files import atomic_folder
-from .common import own_case_option, require_case, stdout, write_json, writing
+from .common import folder_only, own_case_option, require_case, stdout, write_json, writing
 
 __all__ = ["fit_command"]
 
@@ -41,6 +41,7 @@ __all__ = ["fit_command"]
     help="Axial load where the CSV has none (default: the case's first).",
 )
 @click.option("--out", "out_dir", type=click.Path(file_okay=False), default=None,
+              callback=folder_only,
               help="Write the fitted case, residuals (CSV, plot) and a report here.")  # fmt: skip
 @click.option("--json", "json_file", default=None,
               help="Write the fit as JSON to FILE ('-' for standard output).")  # fmt: skip

@@ -8,7 +8,7 @@ import click
 from rich.console import Console
 
 from ..io.files import atomic_folder
-from .common import case_option, file_option, progress, writing
+from .common import case_option, file_option, folder_only, progress, writing
 
 __all__ = ["study"]
 
@@ -19,6 +19,7 @@ __all__ = ["study"]
     "--out",
     "out_dir",
     type=click.Path(file_okay=False),
+    callback=folder_only,
     default="study-report",
     show_default=True,
     help="Folder for figures, CSV, report and run record.",
