@@ -138,3 +138,34 @@ def test_a_tolerance_of_100_percent_or_more_is_refused(key: str) -> None:
     text = X_AXIS.read_text(encoding="utf-8").replace("[check]\n", f'[check]\n{key} = "100 %"\n')
     with pytest.raises(BallScrewInputError, match=rf"check\.{key}"):
         parse_case(text)
+
+
+def test_an_assumed_value_carries_its_own_range() -> None:
+    # The fixture's C_0a is assumed; given a range there, it stands in for rating_tolerance.
+    text = X_AXIS.read_text(encoding="utf-8")
+    ranged = text.replace('assumed = "twice BIF3210A-5', 'tolerance = "10 %", assumed = "twice '
+                          "BIF3210A-5")  # fmt: skip
+    ranged = ranged.replace('moving_mass = "500 kg"', 'moving_mass = { value = "500 kg", '
+                            'assumed = "slide and vice", tolerance = "20 %" }')  # fmt: skip
+    stated = text.replace("[check]\n", '[check]\nrating_tolerance = "10 %"\n'
+                          'mass_tolerance = "20 %"\n')  # fmt: skip
+    results = []
+    for case_text in (ranged, stated):
+        run = run_energy(parse_case(case_text), profile_from_move(X_MOVE, 1), ["catalog"],
+                         run_time=600.0, move=X_MOVE)  # fmt: skip
+        results.append(run_check(run, "catalog"))
+    for name in ("fatigue life", "static safety", "lift-off"):
+        a, b = (_row(r, name).uncertainty for r in results)
+        assert (a.p_not_ok, a.low, a.high) == (b.p_not_ok, b.low, b.high), name
+    assert any("rating tolerance +-10% from the range of the assumed screw.static_load_rating"
+               in n for n in results[0].assumptions)  # fmt: skip
+    wide, narrow = _row(results[0], "static safety").uncertainty, _row(_x(), "static safety")
+    assert wide.high - wide.low > narrow.uncertainty.high - narrow.uncertainty.low
+
+
+def test_an_assumed_range_of_100_percent_is_refused() -> None:
+    text = X_AXIS.read_text(encoding="utf-8").replace(
+        'assumed = "twice BIF3210A-5', 'tolerance = "100 %", assumed = "twice BIF3210A-5'
+    )
+    with pytest.raises(BallScrewInputError, match=r"screw\.static_load_rating\.tolerance"):
+        parse_case(text)

@@ -672,6 +672,17 @@ def _tolerances(run: EnergyRun, notes: list[str]) -> tuple[float, float, float, 
     case, screw = run.case, run.case.screw
     check = case.check
     given = {k: check.get(f"{k}_tolerance") for k in ("mass", "force", "preload", "rating")}
+    # An assumed value's own range stands in for a tolerance [check] does not state.
+    ranges = {a.field: a.tolerance for a in case.assumptions if a.tolerance is not None}
+    preloads = ("screw.preload", "screw.preload_share", "screw.preload_drag_torque")
+    ratings = ("screw.dynamic_load_rating", "screw.static_load_rating")
+    for key, fields in (("mass", ("axis.moving_mass",)), ("preload", preloads),
+                        ("rating", ratings)):  # fmt: skip
+        found = [(ranges[f], f) for f in fields if f in ranges]
+        if given[key] is None and found:
+            given[key], where = max(found)
+            notes.append(f"{key} tolerance +-{given[key]:.0%} from the range of the assumed "
+                         f"{where}")  # fmt: skip
     preload = given["preload"]
     if preload is None and screw.preload > 0.0:
         rows = DRAG_TORQUE_TOLERANCE["C3"]

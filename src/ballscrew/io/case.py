@@ -128,11 +128,27 @@ class Assumption:
     field: str
     value: str
     reason: str
+    tolerance: float | None = None
+    """The range it may lie in, +- as a share (``tolerance = "10 %"`` beside ``assumed``)."""
+
+
+def _share(field: str, text: str) -> float:
+    """An assumed value's tolerance, '10 %' -> 0.1: from 0 to less than 100 %."""
+    raw = text.strip()
+    try:
+        value = float(raw.removesuffix("%").strip()) / 100.0
+    except ValueError:
+        value = math.nan
+    if not (raw.endswith("%") and 0.0 <= value < 1.0):
+        raise BallScrewInputError(f"{field}.tolerance", text, "a share from 0 to 100 %, e.g. "
+                                  "'10 %'")  # fmt: skip
+    return value
 
 
 def _unwrap(field: str, raw: Any, notes: list[Assumption]) -> Any:
     if isinstance(raw, Assumed):
-        notes.append(Assumption(field, str(raw.value), raw.assumed))
+        tol = None if raw.tolerance is None else _share(field, raw.tolerance)
+        notes.append(Assumption(field, str(raw.value), raw.assumed, tol))
         return raw.value
     return raw
 

@@ -36,6 +36,10 @@ class Assumed(BaseModel):
     model_config = ConfigDict(extra="forbid")
     value: str | float | int
     assumed: str = Field(min_length=1)
+    tolerance: str | None = None
+    """A range the assumed value may lie in, +- as a share (``"10 %"``): ``ballscrew check``
+    draws the moving mass, the preload and the load ratings from it when ``[check]`` states
+    no tolerance of its own."""
 
 
 Value = str | float | int | Assumed
