@@ -746,6 +746,9 @@ def _row_samples(
     by_name = {r.name: r for r in rows if r.utilisation is not None}
     cycle = energy.cycle
     n = d.mass.size
+    # Draws at a time: about 2 million (draw, sample) pairs per array, whatever the cycle's
+    # length, so that a long profile does not hold gigabytes.
+    chunk = max(1, min(chunk, 2_000_000 // max(int(run.profile.time.size), 1)))
     out: dict[str, FloatArray] = {name: np.empty(n) for name in by_name}
     weights = _weights(run.profile.time)
     lead, i = screw.lead, axis.gear_ratio
