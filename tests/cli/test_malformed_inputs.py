@@ -111,9 +111,10 @@ def in_the_way(tmp_path: Path) -> Path:
         (["sweep", "{sweep}", "--out", "{x}/s.zarr"], "--out"),
         (["validate", "--model", "catalog", "--out", "{x}/v"], "--out"),
         (["study", "--case", "{small}", "--out", "{x}/r"], "--out"),  # before it computes
-        (["fit", "--measured", "{measured}", "--free", "preload", "--json", "{x}/f.json"],
-         "--json"),
-        (["fit", "--measured", "{measured}", "--free", "preload", "--out", "{x}/f"], "--out"),
+        (["fit", "--case", "{small}", "--measured", "{measured}", "--free", "preload", "--json",
+          "{x}/f.json"], "--json"),
+        (["fit", "--case", "{small}", "--measured", "{measured}", "--free", "preload", "--out",
+          "{x}/f"], "--out"),
     ],
 )  # fmt: skip
 def test_an_output_that_cannot_be_written_names_its_option_and_path(

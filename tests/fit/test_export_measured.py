@@ -13,7 +13,7 @@ from ballscrew import friction_torque
 from ballscrew.errors import BallScrewInputError
 from ballscrew.fit.controller import MOTOR_SIDE, stribeck_torque
 from ballscrew.fit.export import export_friction
-from ballscrew.io.case import Case, load_case, parse_case
+from ballscrew.io.case import Case, default_case_path, load_case, parse_case
 from ballscrew.io.measured import MeasuredCurve
 from cli_runner import run
 
@@ -95,6 +95,7 @@ def test_cli_measured(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> Non
     torque = stribeck_torque(SPEEDS, **TRUTH)
     data.write_text("speed [rpm],torque [N*m]\n" + "".join(
         f"{a},{b}\n" for a, b in zip(rpm, torque, strict=True)), encoding="utf-8")  # fmt: skip
-    code, out, err = run(["export-friction", "--measured", str(data), "--form", "stribeck"], capsys)
+    code, out, err = run(["export-friction", "--case", str(default_case_path()), "--measured",
+                          str(data), "--form", "stribeck"], capsys)  # fmt: skip
     assert code == 0, err
     assert "measured curve m.csv" in " ".join(out.split()) and "95 % interval" in out

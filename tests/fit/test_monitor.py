@@ -12,7 +12,7 @@ import pytest
 from ballscrew import friction_torque
 from ballscrew.errors import BallScrewInputError
 from ballscrew.fit.monitor import PreloadCurves, invert, preload_curves, run_monitor, threshold
-from ballscrew.io.case import load_case
+from ballscrew.io.case import default_case_path, load_case
 from ballscrew.io.series import CATALOGUE_SPEED, TorqueSeries, parse_series
 from ballscrew.loads import LIFT_OFF_RATIO
 from cli_runner import run
@@ -122,12 +122,11 @@ def test_bad_series_name_the_row() -> None:
 def test_cli_monitor(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     data = Path(__file__).resolve().parents[2] / "examples" / "drag_torque_series.csv"
     plot = tmp_path / "p.png"
-    code, out, err = run(["monitor", "--measured", str(data), "--threshold", "50 %",
-                          "--plot", str(plot)], capsys)  # fmt: skip
+    own = ["monitor", "--case", str(default_case_path()), "--measured", str(data)]
+    code, out, err = run([*own, "--threshold", "50 %", "--plot", str(plot)], capsys)
     assert code == 0, err
     assert "threshold 50 % of the initial" in out and plot.read_bytes()[:4] == b"\x89PNG"
-    code, _, err = run(["monitor", "--measured", str(data), "--plot", str(tmp_path / "p.gif")],
-                       capsys)  # fmt: skip
+    code, _, err = run([*own, "--plot", str(tmp_path / "p.gif")], capsys)
     assert code == 2 and "--plot" in err
 
 
@@ -163,9 +162,13 @@ def test_bands_and_crossings_against_an_independent_regression(
     y_th = np.log(force)
     assert r.crossing == pytest.approx((y_th - fit.intercept) / fit.slope, rel=1e-10)
 
+    # An absolute threshold adds the model level's 95 % (1.96 sigma(ln F)) in quadrature.
+    level = 1.96 * r.level_sd
+    assert r.level_sd > 0.0
+
     def edge(t: float) -> float:
         mean_se = np.sqrt(s**2 / n + (t - TIME.mean()) ** 2 * fit.stderr**2)
-        return abs(fit.intercept + fit.slope * t - y_th) - q * mean_se
+        return abs(fit.intercept + fit.slope * t - y_th) - np.hypot(q * mean_se, level)
 
     low = brentq(edge, TIME[0] - 1e4, r.crossing)
     high = brentq(edge, r.crossing, TIME[-1] + 1e5)

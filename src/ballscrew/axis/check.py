@@ -37,13 +37,18 @@ from __future__ import annotations
 
 import math
 import warnings
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
 
 from .._moved import renamed
 from ..chain import friction_torque
+from ..design.catalog_formulas import (
+    DRAG_TORQUE_TOLERANCE,
+    drag_torque_tolerance,
+    preload_torque,
+)
 from ..design.limits import SAFETY_FACTOR, critical_speed, root_diameter
 from ..design.sizing import (
     STEEL_EXPANSION,
@@ -56,6 +61,7 @@ from ..design.sizing import (
     nominal_life,
     preloaded_loads,
     reflected_inertia,
+    reliability_factor,
     static_safety,
     thermal_elongation,
 )
@@ -72,11 +78,17 @@ from ..design.stiffness import (
 )
 from ..errors import BallScrewInputError, FloatArray
 from ..kinematics import rad_s_to_rpm
-from .duty import EnergyRun, ModelEnergy
+from ..loads import LIFT_OFF_RATIO
+from .duty import EnergyRun, ModelEnergy, run_inputs
 from .energy import CycleResult
 from .thermal import nut_length
+from .uncertainty import SAMPLES, SEED, VerdictUncertainty, draws, judge, model_error
 
-__all__ = ["CHECK_FROM", "AxisCheck", "Criterion", "run_check", "verdict"]
+__all__ = ["CHECK_FROM", "AxisCheck", "Criterion", "check_inputs", "run_check", "verdict"]
+
+DEFAULT_LOAD_FACTOR = 1.0
+"""Load factor f_w of the life when the case gives none [-]: ISO 3408-5's own life (the
+lowest of THK's smooth-running range 1.0 to 1.2, A15-40); said in the row and the notes."""
 
 CHECK_FROM = 0.9
 """Utilisation from which a criterion is flagged CHECK rather than OK [-]."""
@@ -91,6 +103,10 @@ servo makers, e.g. Siemens and Yaskawa: 10 or less; not a standard)."""
 YIELD_STRESS = 147e6
 """Permissible tensile/compressive stress of the screw shaft [Pa] (THK General Catalog,
 Permissible Axial Load, A15-30, equation 6)."""
+
+DEFAULT_AXIAL_PLAY = 20e-6
+"""Axial play of a nut without preload when the case gives none [m]: THK's clearance G2 of a
+precision ball screw, 0.02 mm or less (General Catalog, "Axial Clearance", A15-19)."""
 
 CREEP_SPEED = 0.1
 """Screw speed of a reversal's friction [rad/s] (the drag without a fast move's film)."""
@@ -115,9 +131,12 @@ class Criterion:
     verdict: str
     source: str
     advice: str = ""
+    uncertainty: VerdictUncertainty | None = None
+    """P(NOT OK), the utilisation's 95 % interval and the guarded verdict (rows with a limit)."""
 
     def as_dict(self) -> dict[str, Any]:
-        """The row as JSON-ready values."""
+        """The row as JSON-ready values (the uncertainty's keys null for a row without a limit)."""
+        u = self.uncertainty
         return {
             "name": self.name,
             "value": self.value,
@@ -125,6 +144,9 @@ class Criterion:
             "unit": self.unit,
             "utilisation": self.utilisation,
             "verdict": self.verdict,
+            "p_not_ok": None if u is None else u.p_not_ok,
+            "utilisation_95": None if u is None else [u.low, u.high],
+            "guarded_verdict": None if u is None else u.guarded,
             "source": self.source,
             "advice": self.advice,
         }
@@ -166,6 +188,8 @@ class AxisCheck:
     stiffness: dict[str, Any] = field(default_factory=dict)
     motor: dict[str, Any] = field(default_factory=dict)
     thermal: dict[str, Any] = field(default_factory=dict)
+    inputs: dict[str, Any] = field(default_factory=dict)
+    """What the verdicts were computed from (:func:`check_inputs`); the face adds the command."""
 
     @property
     def verdict(self) -> str:
@@ -196,6 +220,7 @@ class AxisCheck:
             "motor": self.motor,
             "thermal": self.thermal,
             "assumptions": self.assumptions,
+            "inputs": self.inputs,
         }
 
 
@@ -257,6 +282,7 @@ def run_check(run: EnergyRun, model: str | None = None) -> AxisCheck:
     rows += life_rows
     rows += _load_rows(run, force, d_r, span)
     rows += _speed_rows(run, omega, d_r, span)
+    rows += _lift_off_row(run, force)
     stiff_rows, stiffness = _stiffness_rows(run, name, force, d_r, span, stroke, nut, notes)
     rows += stiff_rows
     thermal_rows, thermal = _thermal_rows(run, name, energy, stroke, notes)
@@ -267,17 +293,42 @@ def run_check(run: EnergyRun, model: str | None = None) -> AxisCheck:
         "axial loads: inertia, gravity and the process force of the move; no guideway "
         "friction (not in the case)"
     )
+    rows = _with_uncertainty(run, name, energy, force, turns, rows, stiffness, notes)
     marked = [f"{a.field} = {a.value} ({a.reason})" for a in case.assumptions]
     return AxisCheck(case.title, name, rows, marked + list(run.assumptions) + notes, life,
-                     stiffness, motor, thermal)  # fmt: skip
+                     stiffness, motor, thermal, check_inputs(run, name))  # fmt: skip
+
+
+def check_inputs(run: EnergyRun, model: str) -> dict[str, Any]:
+    """The inputs of a check, enough to compute it again (:func:`~.duty.run_inputs`).
+
+    With the draws of the uncertainty (their number and seed).
+    """
+    return {**run_inputs(run, model), "uncertainty": {"samples": SAMPLES, "seed": SEED}}
 
 
 def _life_rows(
     run: EnergyRun, force: FloatArray, turns: FloatArray, notes: list[str]
 ) -> tuple[list[Criterion], dict[str, Any]]:
     case, screw = run.case, run.case.screw
-    source = "ISO 3408-5:2006 cl. 7: L10 = a1 (Ca/Fm)^3 1e6, halves in series (10/9)"
     reliability = float(case.check.get("reliability", 0.9))
+    f_w = case.check.get("load_factor")
+    f_w_origin = "given"
+    if f_w is None:
+        f_w, f_w_origin = DEFAULT_LOAD_FACTOR, "default"
+        notes.append(
+            f"load factor f_w = {DEFAULT_LOAD_FACTOR:g} (default: ISO 3408-5's life, smooth "
+            "running without impact); THK, HIWIN and NSK size with 1.2 to 1.5 for normal "
+            "running and 1.5 to 3 with impact or vibration (THK A15-40): give check.load_factor"
+        )
+    elif any(a.field == "check.load_factor" for a in case.assumptions):
+        f_w_origin = "assumed"
+    f_w = float(f_w)
+    source = (
+        "ISO 3408-5:2006 cl. 7 with the makers' load factor: L10 = a1 (Ca/(f_w Fm))^3 1e6, "
+        f"f_w = {f_w:g} ({f_w_origin}; THK A15-40: 1.0-1.2 smooth, 1.2-1.5 normal running), "
+        f"a1 = {reliability_factor(reliability):g} ({reliability:.0%}), halves in series (10/9)"
+    )
     if screw.nut == "single":
         half_1, half_2 = np.maximum(force, 0.0), np.maximum(-force, 0.0)
     else:
@@ -296,6 +347,8 @@ def _life_rows(
         "turns_per_cycle": total_turns / run.cycles,
         "mean_speed_rpm": turns_per_second * 60.0,
         "reliability": reliability,
+        "load_factor": f_w,
+        "load_factor_source": f_w_origin,
         "dynamic_load_rating_N": ca,
         "static_load_rating_N": case.static_load_rating,
     }
@@ -308,18 +361,19 @@ def _life_rows(
         req = DEFAULT_LIFE_HOURS * 3600.0
         notes.append("required life 20000 h (THK's and NSK's figure for machine tools; give "
                      "check.required_life)")  # fmt: skip
-    revs = float(combined_life(nominal_life(ca, fm1, reliability),
-                               nominal_life(ca, fm2, reliability)))  # fmt: skip
+    revs = float(combined_life(nominal_life(ca, fm1, reliability, f_w),
+                               nominal_life(ca, fm2, reliability, f_w)))  # fmt: skip
     hours = float(life_hours(revs, turns_per_second * 60.0))
     km = float(life_distance(revs, screw.lead)) / 1e3
     life |= {"L10_revolutions": revs, "L10_hours": hours, "L10_km": km}
-    return [
-        _at_least(
-            "fatigue life L10", hours, req / 3600.0, "h", source,
-            "a nut with a higher C_a (more circuits, larger balls or diameter), a lower "
-            "preload, lighter moves, or a longer lead (fewer turns per metre)",
-        )
-    ], life  # fmt: skip
+    advice = (
+        "a nut with a higher C_a (more circuits, larger balls or diameter), a lower "
+        "preload, lighter moves, or a longer lead (fewer turns per metre)"
+    )
+    if f_w_origin == "default":
+        advice += (f"; the life is ISO's with f_w = {DEFAULT_LOAD_FACTOR:g}: give "
+                   "check.load_factor for the running conditions")  # fmt: skip
+    return [_at_least("fatigue life L10", hours, req / 3600.0, "h", source, advice)], life
 
 
 def _load_rows(run: EnergyRun, force: FloatArray, d_r: float, span: float) -> list[Criterion]:
@@ -374,6 +428,24 @@ def _speed_rows(run: EnergyRun, omega: FloatArray, d_r: float, span: float) -> l
     ]  # fmt: skip
 
 
+def _lift_off_row(run: EnergyRun, force: FloatArray) -> list[Criterion]:
+    """The relieved half of a preloaded nut against lift-off at 2^1.5 F_pr (ISO 3408-5)."""
+    screw = run.case.screw
+    if screw.nut == "single" or screw.preload <= 0.0:
+        return []
+    f_max = float(np.max(np.abs(force)))
+    lift = LIFT_OFF_RATIO * screw.preload
+    return [_at_most(
+        "lift-off F_max / (2^1.5 F_pr)", f_max, lift, "N",
+        f"ISO 3408-5:2006 (the preloaded halves, F2 = 0 at |F| = 2^1.5 F_pr = {lift:.4g} N "
+        f"with F_pr = {screw.preload:.4g} N); THK A15-20: a preload holds up to about three "
+        "times itself",
+        f"a preload of at least F_max / 2^1.5 = {f_max / LIFT_OFF_RATIO:.4g} N, or a lower peak "
+        "load (process force, acceleration, weight); past lift-off the nut is one half: the "
+        "stiffness, lost motion and eigenfrequency rows below are the lifted-off state's",
+    )]  # fmt: skip
+
+
 def _stiffness_rows(
     run: EnergyRun, model: str, force: FloatArray, d_r: float, span: float, stroke: float,
     nut: float, notes: list[str],
@@ -382,18 +454,43 @@ def _stiffness_rows(
     notes.append("the stroke lies in the middle of the span")
     position = np.linspace(0.5 * (span - stroke), 0.5 * (span + stroke), 21)
     k_shaft = shaft_axial_stiffness(d_r, span, position, axis.support)
+    peak = float(np.max(np.abs(force)))
+    play = 0.0
+    lifted = False
     if screw.nut == "single":
-        load = float(np.max(np.abs(force)))
-        if load <= 0.0:
+        if peak <= 0.0:
             raise BallScrewInputError(
                 "screw.nut", "single", "a load on the nut: a single nut without preload and "
                 "without load has no stiffness (give a move with a force or a preloaded nut)",
             )  # fmt: skip
-        k_nut = design_nut_stiffness(screw, load)
-        notes.append(f"single nut: stiffness at the cycle's peak load {load:.4g} N; "
-                     "its axial play is not counted")  # fmt: skip
+        k_nut = design_nut_stiffness(screw, peak)
+        given = case.check.get("axial_play")
+        play = DEFAULT_AXIAL_PLAY if given is None else float(given)
+        origin = "default" if given is None else "given"
+        notes.append(
+            f"single nut: stiffness at the cycle's peak load {peak:.4g} N; its axial play "
+            f"{play * 1e6:.3g} um ({origin}) is added to the lost motion"
+        )
+        if given is None:
+            notes.append(
+                f"axial play {DEFAULT_AXIAL_PLAY * 1e6:g} um (default: THK's clearance G2 of a "
+                "precision nut without preload, 0.02 mm or less, General Catalog A15-19; give "
+                "check.axial_play from the nut's catalogue)"
+            )
     else:
         k_nut = design_nut_stiffness(screw)
+        if screw.preload > 0.0 and peak > LIFT_OFF_RATIO * screw.preload:
+            # Past lift-off one half carries the load alone: its tangent stiffness at the peak.
+            lifted = True
+            k_lifted = design_nut_stiffness(screw, peak)
+            notes.append(
+                f"lift-off: the peak load {peak:.4g} N is {peak / screw.preload:.3g} times the "
+                f"preload (past 2^1.5 = {LIFT_OFF_RATIO:.3g}); the nut's stiffness in that state "
+                f"is one half's at the peak load, {k_lifted / 1e6:.4g} N/um against "
+                f"{k_nut / 1e6:.4g} N/um preloaded, and the stiffness, lost motion and "
+                "eigenfrequency rows take it"
+            )
+            k_nut_preloaded, k_nut = k_nut, min(k_nut, k_lifted)
     notes.append(
         "nut stiffness: the Hertz contacts' (all balls sharing the load) over "
         f"{CATALOGUE_RIGIDITY_RATIO:g}, the level of THK's and HIWIN's printed rigidity "
@@ -409,38 +506,45 @@ def _stiffness_rows(
     f_f = _creep_drag(run, model)
     mass = axis.moving_mass
     freq = axial_eigenfrequency(k_axis, mass) if mass > 0.0 else None
-    play = lost_motion(f_f, k_axis)
+    elastic = lost_motion(f_f, k_axis)
+    lost = elastic + play
     # The drag torque also twists the shaft between the drive (at the thrust end) and the nut.
     twist = lost_motion(f_f, torsional_axial_stiffness(d_r, position, screw.lead))
     figures: dict[str, Any] = {
         "position_mm": (position * 1e3).tolist(),
         "shaft_N_per_um": (k_shaft / 1e6).tolist(),
         "nut_N_per_um": k_nut / 1e6,
+        "lifted_off": lifted,
         "bearings_N_per_um": None if k_bearing is None else k_bearing / 1e6,
         "axis_N_per_um": (k_axis / 1e6).tolist(),
         "eigenfrequency_Hz": None if freq is None else freq.tolist(),
         "friction_force_N": f_f,
-        "lost_motion_um": (play * 1e6).tolist(),
+        "axial_play_um": play * 1e6,
+        "lost_motion_um": (lost * 1e6).tolist(),
         "lost_motion_torsion_um": (twist * 1e6).tolist(),
         "nut_length_mm": nut * 1e3,
     }
+    if lifted:
+        figures["nut_preloaded_N_per_um"] = k_nut_preloaded / 1e6
+    state = ", lifted off" if lifted else ""
     source = (
         "ISO 3408-4; shaft EA/a or EAL/(a(L-a)) (THK, Axial Rigidity of the Feed Screw "
         "System, A15-43); nut: Hertz at the preload, at the makers' printed level, x 0.8 "
-        "(THK A-709)"
+        "(THK A-709)" + ("; past lift-off one half at the peak load" if lifted else "")
     )
+    play_text = f" + the axial play {play * 1e6:.3g} um" if screw.nut == "single" else ""
     rows = [
-        _info("axis stiffness (least over the stroke)", float(np.min(k_axis)) / 1e6, "N/um",
-              source + f"; nut {k_nut / 1e6:.4g} N/um"),
-        _info("lost motion at reversal (most)", float(np.max(play)) * 1e6, "um",
-              f"2 F_f / k, F_f = 2 pi T_f / l = {f_f:.3g} N (drag at creep speed); the "
-              f"shaft's torsion adds up to {float(np.max(twist)) * 1e6:.2g} um"),
+        _info(f"axis stiffness (least over the stroke{state})", float(np.min(k_axis)) / 1e6,
+              "N/um", source + f"; nut {k_nut / 1e6:.4g} N/um"),
+        _info(f"lost motion at reversal (most{state})", float(np.max(lost)) * 1e6, "um",
+              f"2 F_f / k{play_text}, F_f = 2 pi T_f / l = {f_f:.3g} N (drag at creep speed); "
+              f"the shaft's torsion adds up to {float(np.max(twist)) * 1e6:.2g} um"),
     ]  # fmt: skip
     if freq is None:
         rows.append(_missing("axial eigenfrequency", "Hz", "sqrt(k/m) / 2 pi",
                              "give axis.moving_mass"))  # fmt: skip
     else:
-        rows.append(_info("axial eigenfrequency (least)", float(np.min(freq)), "Hz",
+        rows.append(_info(f"axial eigenfrequency (least{state})", float(np.min(freq)), "Hz",
                           "sqrt(k/m) / 2 pi with the moving mass"))  # fmt: skip
     return rows, figures
 
@@ -561,3 +665,165 @@ def _motor_rows(run: EnergyRun, cycle: CycleResult) -> tuple[list[Criterion], di
 def __getattr__(name: str) -> Any:
     """The entry point's name before 0.3.0, kept for one release with a DeprecationWarning."""
     return renamed(__name__, name, {"axis_check": run_check})
+
+
+def _tolerances(run: EnergyRun, notes: list[str]) -> tuple[float, float, float, float]:
+    """The case's tolerances of mass, process force, preload and ratings (shares, ±)."""
+    case, screw = run.case, run.case.screw
+    check = case.check
+    given = {k: check.get(f"{k}_tolerance") for k in ("mass", "force", "preload", "rating")}
+    # An assumed value's own range stands in for a tolerance [check] does not state.
+    ranges = {a.field: a.tolerance for a in case.assumptions if a.tolerance is not None}
+    preloads = ("screw.preload", "screw.preload_share", "screw.preload_drag_torque")
+    ratings = ("screw.dynamic_load_rating", "screw.static_load_rating")
+    for key, fields in (("mass", ("axis.moving_mass",)), ("preload", preloads),
+                        ("rating", ratings)):  # fmt: skip
+        found = [(ranges[f], f) for f in fields if f in ranges]
+        if given[key] is None and found:
+            given[key], where = max(found)
+            notes.append(f"{key} tolerance +-{given[key]:.0%} from the range of the assumed "
+                         f"{where}")  # fmt: skip
+    preload = given["preload"]
+    if preload is None and screw.preload > 0.0:
+        rows = DRAG_TORQUE_TOLERANCE["C3"]
+        torque = float(preload_torque(screw.preload, screw.lead, screw.lead_angle))
+        inside = min(max(torque, rows[0][0]), rows[-1][1])
+        preload = drag_torque_tolerance(inside)[2]
+        notes.append(
+            f"preload tolerance +-{preload:.0%} (default: the makers' drag-torque band of grade "
+            f"C3 at the catalogue drag torque {torque:.3g} N*m, THK A-688 Table 13; give "
+            "check.preload_tolerance)"
+        )
+    names = {"mass": "moving mass", "force": "process force", "rating": "load ratings"}
+    missing = [k for k in names if given[k] is None]
+    if missing:
+        keys = ", ".join(f"check.{k}_tolerance" for k in missing)
+        notes.append(f"no tolerance given for the {', '.join(names[k] for k in missing)}: "
+                     f"taken as exact (give {keys})")  # fmt: skip
+    return (float(given["mass"] or 0.0), float(given["force"] or 0.0), float(preload or 0.0),
+            float(given["rating"] or 0.0))  # fmt: skip
+
+
+def _with_uncertainty(
+    run: EnergyRun, model: str, energy: ModelEnergy, force: FloatArray, turns: FloatArray,
+    rows: list[Criterion], stiffness: dict[str, Any], notes: list[str],
+) -> list[Criterion]:  # fmt: skip
+    """Every row with a limit, with its P(NOT OK) and interval (:mod:`.uncertainty`)."""
+    screw = run.case.screw
+    t_mass, t_force, t_pre, t_rating = _tolerances(run, notes)
+    creep_torque = float(stiffness.get("friction_force_N", 0.0)) * screw.lead / (2.0 * math.pi)
+    sigma, origin = model_error(model, screw.nut, creep_torque)
+    notes.append(origin)
+    if math.isnan(sigma):
+        sigma = 0.0
+    d = draws(t_mass, t_force, t_pre, t_rating, sigma)
+    notes.append(
+        f"uncertainty: Monte Carlo over {SAMPLES} draws (seed {SEED}): mass +-{t_mass:.0%}, "
+        f"process force +-{t_force:.0%}, preload +-{t_pre:.0%}, load ratings +-{t_rating:.0%} "
+        f"(uniform), the model's friction x exp(N(0, {sigma:.3g})); the friction factor scales "
+        "the heat and the motor's friction torque, not the preload's share of it; P(NOT OK) "
+        "beside each verdict, 'OK (95 %)' when P <= 5 %, 'NOT OK (95 %)' when P >= 95 %, "
+        "else 'undecided'"
+    )
+    process = np.asarray(run.profile.process_force, dtype=float)
+    mass_part = force - process
+    samples = _row_samples(run, energy, mass_part, process, turns, rows, d)
+    out = []
+    for row in rows:
+        u = samples.get(row.name)
+        if u is None and row.utilisation is not None:
+            u = np.full(SAMPLES, row.utilisation)  # no uncertain input in its formula
+        out.append(row if u is None else replace(row, uncertainty=judge(u)))
+    return out
+
+
+def _row_samples(
+    run: EnergyRun, energy: ModelEnergy, mass_part: FloatArray, process: FloatArray,
+    turns: FloatArray, rows: list[Criterion], d: Any, chunk: int = 250,
+) -> dict[str, FloatArray]:  # fmt: skip
+    """The utilisation of each row with an uncertain input, one per draw."""
+    case, axis, screw = run.case, run.axis, run.case.screw
+    by_name = {r.name: r for r in rows if r.utilisation is not None}
+    cycle = energy.cycle
+    n = d.mass.size
+    # Draws at a time: about 2 million (draw, sample) pairs per array, whatever the cycle's
+    # length, so that a long profile does not hold gigabytes.
+    chunk = max(1, min(chunk, 2_000_000 // max(int(run.profile.time.size), 1)))
+    out: dict[str, FloatArray] = {name: np.empty(n) for name in by_name}
+    weights = _weights(run.profile.time)
+    lead, i = screw.lead, axis.gear_ratio
+    omega = np.asarray(cycle.screw_speed, dtype=float)
+    t_motor = np.asarray(cycle.motor_torque, dtype=float)
+    t_fric = np.sign(omega) * np.asarray(cycle.friction_torque, dtype=float) / i
+    preloaded = screw.nut != "single" and screw.preload > 0.0
+    for start in range(0, n, chunk):
+        sl = slice(start, min(start + chunk, n))
+        km, kf, kp = d.mass[sl, None], d.force[sl, None], d.preload[sl, None]
+        kr, kfr = d.ratings[sl], d.friction[sl]
+        f = km * mass_part + kf * process
+        peak = np.max(np.abs(f), axis=1)
+        pre = screw.preload * kp[:, 0]
+        for name, row in by_name.items():
+            u: FloatArray | None = None
+            if name.startswith("fatigue life") and case.dynamic_load_rating is not None:
+                u = _life_samples(run, f, pre, kr, turns, row)
+            elif name.startswith("static safety") and case.static_load_rating is not None:
+                half = preloaded_loads(peak, pre if preloaded else 0.0)[0]
+                u = np.asarray(row.limit, dtype=float) * half / (case.static_load_rating * kr)
+            elif name.startswith("lift-off"):
+                u = peak / (LIFT_OFF_RATIO * pre)
+            elif name.startswith(("buckling load", "axial load, root section")):
+                u = peak / 1e3 / float(row.limit or math.inf)
+            elif name.startswith("thermal lead error") and row.limit:
+                u = _thermal_samples(run, energy, kfr, row)
+            elif name.startswith("inertia ratio"):
+                j = reflected_inertia(1.0, lead) * axis.moving_mass * km[:, 0]
+                j = (j + (axis.screw_inertia + axis.coupling_inertia) / i**2) / axis.motor_inertia
+                u = j / float(row.limit or math.inf)
+            elif name.startswith(("peak torque", "RMS torque")):
+                t = (t_motor + ((km - 1.0) * mass_part + (kf - 1.0) * process) * lead
+                     / (2.0 * math.pi * i) + (kfr[:, None] - 1.0) * t_fric)  # fmt: skip
+                if name.startswith("peak"):
+                    value = np.max(np.abs(t), axis=1)
+                else:
+                    value = np.sqrt(np.sum(weights * t**2, axis=1) / run.profile.duration)
+                u = value / float(row.limit or math.inf)
+            if u is not None:
+                out[name][sl] = u
+            else:
+                out[name][sl] = float(row.utilisation)  # type: ignore[arg-type]
+    return out
+
+
+def _life_samples(
+    run: EnergyRun, f: FloatArray, pre: FloatArray, kr: FloatArray, turns: FloatArray,
+    row: Criterion,
+) -> FloatArray:  # fmt: skip
+    """Required over computed life for each draw of forces, preload and rating."""
+    case, screw = run.case, run.case.screw
+    assert case.dynamic_load_rating is not None
+    if screw.nut == "single":
+        h1, h2 = np.maximum(f, 0.0), np.maximum(-f, 0.0)
+    else:
+        loaded, relieved = preloaded_loads(f, pre[:, None])
+        h1 = np.where(f >= 0.0, loaded, relieved)
+        h2 = np.where(f >= 0.0, relieved, loaded)
+    ca = case.dynamic_load_rating * kr
+    f_w = float(run.case.check.get("load_factor") or DEFAULT_LOAD_FACTOR)
+    rel = float(case.check.get("reliability", 0.9))
+    revs = combined_life(nominal_life(ca, cubic_mean_load(h1, turns), rel, f_w),
+                         nominal_life(ca, cubic_mean_load(h2, turns), rel, f_w))  # fmt: skip
+    rpm = float(np.sum(turns)) / run.profile.duration * 60.0
+    hours = np.asarray(revs, dtype=float) / (60.0 * rpm)
+    return np.asarray(float(row.limit or 0.0) / hours, dtype=float)
+
+
+def _thermal_samples(
+    run: EnergyRun, energy: ModelEnergy, kfr: FloatArray, row: Criterion
+) -> FloatArray:
+    """The lead error's utilisation with the temperature rise scaled by the friction factor."""
+    assert energy.final_temperature is not None
+    rise = float(energy.final_temperature) - float(run.node.ambient)
+    pre = float(run.case.check.get("pretension_temperature", 0.0))
+    error = thermal_elongation(np.maximum(rise * kfr - pre, 0.0), 0.3) * 1e6
+    return np.asarray(error / float(row.limit or math.inf), dtype=float)

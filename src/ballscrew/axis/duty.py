@@ -55,6 +55,7 @@ __all__ = [
     "profile_from_file",
     "profile_from_move",
     "run_energy",
+    "run_inputs",
 ]
 
 
@@ -156,6 +157,8 @@ class EnergyRun:
     results: dict[str, ModelEnergy] = field(default_factory=dict)
     findings: list[Finding] = field(default_factory=list)
     """Plausibility warnings: the motion's loads and stroke against the screw (errors raise)."""
+    run_time: float = 3600.0
+    """How long the cycle repeats for the temperature reached [s]."""
 
     @property
     def cycles_by_model(self) -> dict[str, CycleResult]:
@@ -198,7 +201,71 @@ class EnergyRun:
             "assumptions": self.assumptions,
             "plausibility": [str(f) for f in self.findings],
             "models": models,
+            "inputs": run_inputs(self, first_name),
         }
+
+
+def _unreliable_fit_notes(case: Case) -> list[str]:
+    """A warning for a case written from an unreliable fit (``fitted-case.toml``)."""
+    mark = "UNRELIABLE FIT"  # ballscrew.fit.calibration.UNRELIABLE_FIT (a wing above this one)
+    fitted = [a.field for a in case.assumptions if a.reason.startswith(mark)]
+    if not (fitted or case.description.startswith(mark)):
+        return []
+    where = ", ".join(fitted) if fitted else "its model parameters"
+    return [f"WARNING: this case comes from an unreliable fit ({where}): "
+            f"{case.description or 'see the file'}; the results that use those values are "
+            "not established"]  # fmt: skip
+
+
+def run_inputs(run: EnergyRun, model: str) -> dict[str, Any]:
+    """The inputs of a run (``energy``, ``check``), enough to compute it again.
+
+    The case as written (its text and SHA-256) and as read (each key's SI value
+    and source), the move, the model and the run time. The values of
+    the screw, ``[axis]``, ``[motor]`` and ``[check]`` are SI; a key's
+    source is ``given``, ``catalogue``, ``default`` or ``assumed``
+    (:attr:`ballscrew.io.case.Case.sources`).
+    """
+    import dataclasses
+    import hashlib
+
+    case = run.case
+    screw = dataclasses.asdict(case.screw)
+    axis = dataclasses.asdict(run.axis)
+    values: list[dict[str, Any]] = []
+    for key, source in sorted(case.sources.items()):
+        section, name = key.split(".", 1)
+        value: Any = None
+        if section == "screw":
+            value = screw.get(name)
+            if name == "dynamic_load_rating" and case.ratings is not None:
+                value, source = case.ratings.dynamic, case.ratings.dynamic_source
+            elif name == "static_load_rating" and case.ratings is not None:
+                value, source = case.ratings.static, case.ratings.static_source
+        elif section == "axis":
+            value = axis.get(name)
+        elif section in ("motor", "check"):
+            value = getattr(case, section).get(name)
+        if isinstance(value, float | int | str | bool) or value is None:
+            values.append({"key": key, "value": value, "source": source})
+    ratings = case.ratings
+    return {
+        "case": {
+            "title": case.title,
+            "text": case.text,
+            "sha256": hashlib.sha256(case.text.encode("utf-8")).hexdigest(),
+            "values": values,
+            "ratings_source": None if ratings is None else {
+                "dynamic": ratings.dynamic_source, "static": ratings.static_source},
+        },
+        "move": dict(run.move),
+        "profile": None if run.move else {
+            "samples": int(run.profile.time.size), "duration_s": run.profile.duration},
+        "cycles": run.cycles,
+        "run_time_s": run.run_time,
+        "temperature_C": run.temperature,
+        "model": model,
+    }  # fmt: skip
 
 
 MAX_RUN_TIME = 100_000 * 3600.0
@@ -277,11 +344,12 @@ def run_energy(
     setup = axis_setup(case.screw, case.axis, case.thermal, float(np.ptp(profile.position)))
     node = setup.node
     found = motion_plausibility(case, profile, setup.axis, motion_field)
+    setup_notes = _unreliable_fit_notes(case) + list(setup.notes)
     run = EnergyRun(
         case, profile, cycles, temp, setup.axis, node,
         {k: getattr(node, k) for k in ("screw_length", "ambient", "machine_resistance",
                                        "nut_mass")},
-        list(setup.notes), m, findings=found,
+        setup_notes, m, findings=found, run_time=run_time,
     )  # fmt: skip
     results = {
         name: _one_model(run, name, run_time, steady_speeds, thermal_failure)

@@ -52,7 +52,8 @@ def case_command(
         if out_file:
             with writing("--out", out_file):
                 atomic_write(Path(out_file), text.encode("utf-8"))
-            click.echo(f"wrote {out_file}", err=True)
+            if out_file.strip() != "-":
+                click.echo(f"wrote {out_file}", err=True)
         else:
             click.echo(text, nl=False)
         return

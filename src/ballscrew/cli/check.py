@@ -2,12 +2,13 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import TYPE_CHECKING
 
 import click
 from rich.table import Table
 
-from .common import motion, stdout, write_json, writing
+from .common import folder_only, motion, stdout, write_json, writing
 
 if TYPE_CHECKING:
     from ..axis.check import AxisCheck
@@ -39,6 +40,7 @@ __all__ = ["check_command"]
 @click.option("--json", "json_file", default=None,
               help="Write the verdicts as JSON to FILE ('-' for standard output).")  # fmt: skip
 @click.option("--out", "out_dir", type=click.Path(file_okay=False), default=None,
+              callback=folder_only,
               help="Write a report here: the verdicts, utilisation bars, stiffness and lost "
               "motion over the stroke, temperature and lead error over time (figures, CSV, "
               "Markdown, HTML).")  # fmt: skip
@@ -77,6 +79,14 @@ def check_command(
     run = run_energy(case, profile, [model_name], cycles=cycles, temperature=temp,
                      run_time=to_si("--run-time", run_time, "s"), move=m)  # fmt: skip
     result = run_check(run, model_name)
+    command = ["ballscrew", "check", "--case", case_file or "(bundled)"]
+    for flag, value in (("--move", move_text), ("--profile", profile_file),
+                        ("--cycles", str(cycles)), ("--model", model_name),
+                        ("--temperature", temperature), ("--run-time", run_time)):  # fmt: skip
+        if value is not None:
+            command += [flag, value]
+    result = replace(result, inputs={**result.inputs, "command": command,
+                                     "case_file": case_file})  # fmt: skip
     out = stdout(json_file)
     out.print(_verdict_table(result))
     for line in result.assumptions:
@@ -103,11 +113,16 @@ def _verdict_table(result: AxisCheck) -> Table:
     missing = f", {len(result.not_checked)} not checked" if result.not_checked else ""
     table = Table(title=f"{result.title}: axis check ({result.model}): {result.verdict}{missing}")
     for column, justify in (("criterion", "left"), ("value", "right"), ("limit", "right"),
-                            ("unit", "left"), ("use", "right"), ("verdict", "left"),
-                            ("source", "left"), ("what to change", "left")):  # fmt: skip
+                            ("unit", "left"), ("use", "right"), ("use, 95 %", "right"),
+                            ("verdict", "left"), ("P(NOT OK)", "right"),
+                            ("95 % confidence", "left"), ("source", "left"),
+                            ("what to change", "left")):  # fmt: skip
         table.add_column(column, justify=justify)  # type: ignore[arg-type]
     for c in result.criteria:
         use = "-" if c.utilisation is None else f"{c.utilisation:.0%}"
-        table.add_row(c.name, _number(c.value), _number(c.limit), c.unit, use, c.verdict,
-                      c.source, c.advice)  # fmt: skip
+        u = c.uncertainty
+        spread = "-" if u is None else f"{u.low:.0%}-{u.high:.0%}"
+        p = "-" if u is None else f"{u.p_not_ok:.0%}"
+        table.add_row(c.name, _number(c.value), _number(c.limit), c.unit, use, spread, c.verdict,
+                      p, "-" if u is None else u.guarded, c.source, c.advice)  # fmt: skip
     return table

@@ -13,8 +13,8 @@ from rich.console import Console
 from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 
 __all__ = [
-    "case_option", "file_option", "motion", "progress", "stdout", "write_json", "write_result",
-    "writing",
+    "case_option", "file_option", "folder_only", "motion", "own_case_option", "progress",
+    "require_case", "stdout", "write_json", "write_result", "writing",
 ]  # fmt: skip
 
 F = TypeVar("F", bound=Callable[..., Any])
@@ -95,6 +95,48 @@ case_option = click.option(
     default=None,
     help="Case file (TOML with units); the bundled study case when omitted.",
 )
+
+
+own_case_option = click.option(
+    "--case",
+    "case_file",
+    type=click.Path(dir_okay=False),
+    default=None,
+    help="Case file (TOML with units) of YOUR screw: required, the command judges or fits it.",
+)
+"""``--case`` of a command that judges or fits the user's own screw (no bundled default)."""
+
+
+def require_case(case_file: str | None, command: str, why: str) -> str:
+    """``case_file``, or a usage error (exit status 2) naming ``--case`` when it is missing.
+
+    A command that judges or fits the user's screw must not fall back on the
+    bundled study screw (20 mm lead): its lead, preload and ratings would give
+    another screw's numbers without a word.
+    """
+    if case_file is None:
+        raise click.UsageError(
+            f"{command} needs --case FILE: {why}; without it the bundled study screw "
+            "(20 mm lead) would be judged instead of yours (`ballscrew case --template` "
+            "writes a case to fill in)"
+        )
+    return case_file
+
+
+def folder_only(ctx: click.Context, param: click.Parameter, value: str | None) -> str | None:
+    """A click callback: a report folder option refuses ``-`` (standard output is one file).
+
+    Every single-file option (``--json``, ``--csv``, a file's ``--out``, ``--plot``)
+    takes ``-`` for standard output; a report is a folder of files and has none.
+    """
+    del ctx
+    if value is not None and value.strip() == "-":
+        raise click.BadParameter(
+            "'-' is standard output, which takes one file; this option writes a report "
+            "folder (figures, CSV, Markdown, HTML): give a folder name",
+            param=param,
+        )
+    return value
 
 
 def file_option(flag: str, dest: str, text: str) -> Callable[[F], F]:

@@ -9,7 +9,7 @@ import click
 from rich.console import Console
 from rich.table import Table
 
-from .common import stdout, write_json, writing
+from .common import folder_only, stdout, write_json, writing
 
 if TYPE_CHECKING:
     from ..servo.contour import ContourResult
@@ -46,6 +46,7 @@ __all__ = ["contour_command"]
 @click.option("--json", "json_file", default=None,
               help="Write the results as JSON to FILE ('-' for standard output).")  # fmt: skip
 @click.option("--out", "out_dir", type=click.Path(file_okay=False), default=None,
+              callback=folder_only,
               help="Write a report here: polar plot, reversal, tables (figures, CSV, Markdown, "
               "HTML, JSON).")  # fmt: skip
 def contour_command(

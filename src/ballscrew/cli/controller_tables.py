@@ -45,7 +45,7 @@ def write_controller_table(
         torque_constant=(to_si("--torque-constant", torque_constant, "N*m/A")
                          if torque_constant else None),
     )  # fmt: skip
-    console = stdout(json_file)
+    console = stdout("-" if out_file == "-" else json_file)
     table = Table(title=f"{case.title}: {target} table of {result.model} at "
                   f"{result.axial_load:.4g} N, {result.temperature:g} degC")  # fmt: skip
     for column in ("point", "speed [mm/s]", "force [N]", "motor torque [N*m]"):

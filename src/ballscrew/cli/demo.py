@@ -45,6 +45,8 @@ def demo(lubricant_name: str, temperature: float) -> None:
     console = Console(width=110, markup=False)
     screw = reference_screw()
     oil = lubricants.get(lubricant_name)
+    console.print("demo: the bundled reference screw (the study's, not yours: `ballscrew torque "
+                  "--case FILE` computes your case)")  # fmt: skip
     console.print(_geometry_table(screw))
     console.print(_hertz_table(screw, oil, temperature))
     console.print(_viscosity_table())

@@ -11,7 +11,7 @@ from rich.console import Console
 from rich.table import Table
 
 from .._version import __version__
-from .common import case_option, stdout, write_result, writing
+from .common import case_option, require_case, stdout, write_result, writing
 
 if TYPE_CHECKING:
     from ..fit.controller import FrictionForm
@@ -111,6 +111,9 @@ def export_friction_command(
     def si(flag: str, text: str | None, unit: str) -> float | None:
         return to_si(flag, text, unit) if text else None
 
+    if measured_file is not None:
+        require_case(case_file, "export-friction --measured",
+                     "a measured torque is turned into forces with the case's lead")  # fmt: skip
     case = load_case(case_file)
     temps = parse_range("--temperature", temperature, "degC") if temperature else None
     if form == "load-map":  # signed loads; the options of a fitted form do not apply
@@ -140,14 +143,14 @@ def _print_export(
     from ..io.files import atomic_write
     from ..report.outputs import csv_text
 
-    console = stdout(json_file)
+    console = stdout("-" if "-" in (out_file, json_file) else None)
     for temp, fitted in result.fitted:
         _print_fit(console, result, temp, fitted)
     for note in result.notes:
         click.echo(f"note: {note}", err=True)
     if form == "table":
         click.echo(f"lookup table: {len(result.rows)} rows over {len(result.temperatures)} "
-                   "temperature(s)", err=json_file == "-")  # fmt: skip
+                   "temperature(s)", err="-" in (out_file, json_file))  # fmt: skip
     if out_file:
         with writing("--out", out_file):
             atomic_write(Path(out_file), csv_text(result.rows).encode("utf-8"))
@@ -199,7 +202,7 @@ def _print_map(m: FrictionMap, out_file: str | None, json_file: str | None) -> N
 
     from ..report.friction_files import write_map
 
-    console = stdout(json_file)
+    console = stdout("-" if "-" in (out_file, json_file) else None)
     fit = m.form.as_drive_dict(m.lead, m.gear_ratio)
     table = Table(title=f"{m.case_title}: load map of {m.model}, {m.speeds.size} speeds x "
                   f"{m.loads.size} loads x {m.temperatures.size} temperatures")  # fmt: skip

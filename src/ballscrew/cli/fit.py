@@ -9,13 +9,13 @@ from rich.table import Table
 
 from .._version import __version__
 from ..io.files import atomic_folder
-from .common import case_option, stdout, write_json, writing
+from .common import folder_only, own_case_option, require_case, stdout, write_json, writing
 
 __all__ = ["fit_command"]
 
 
 @click.command("fit")
-@case_option
+@own_case_option
 @click.option("--measured", "measured_file", required=True, type=click.Path(dir_okay=False),
               help="Measured torque CSV (units in the header; optional temperature and "
               "axial load columns).")  # fmt: skip
@@ -41,6 +41,7 @@ __all__ = ["fit_command"]
     help="Axial load where the CSV has none (default: the case's first).",
 )
 @click.option("--out", "out_dir", type=click.Path(file_okay=False), default=None,
+              callback=folder_only,
               help="Write the fitted case, residuals (CSV, plot) and a report here.")  # fmt: skip
 @click.option("--json", "json_file", default=None,
               help="Write the fit as JSON to FILE ('-' for standard output).")  # fmt: skip
@@ -69,7 +70,8 @@ def fit_command(
     from ..io.measured import read_measured
     from ..io.units import to_si
 
-    case = load_case(case_file)
+    case = load_case(require_case(case_file, "fit",
+                                  "the measurement is fitted on the case's screw"))  # fmt: skip
     model = get_model(model_name).name
     measured = read_measured(measured_file, case.screw)
     free = [f.strip() for f in free_text.split(",") if f.strip()]

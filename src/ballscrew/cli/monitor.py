@@ -9,13 +9,13 @@ from pathlib import Path
 import click
 from rich.table import Table
 
-from .common import case_option, stdout, write_result, writing
+from .common import own_case_option, require_case, stdout, write_result, writing
 
 __all__ = ["monitor_command"]
 
 
 @click.command("monitor")
-@case_option
+@own_case_option
 @click.option("--measured", "measured_file", required=True, type=click.Path(dir_okay=False),
               help="Series CSV: time and torque columns with units, optional speed and "
               "temperature, e.g. 'time [h],torque [N*m]'.")  # fmt: skip
@@ -51,7 +51,8 @@ def monitor_command(
 
     if plot_file and Path(plot_file).suffix.lower() not in (".png", ".svg"):
         raise BallScrewInputError("--plot", plot_file, "a file ending in .png or .svg")
-    case = load_case(case_file)
+    why = "a drag torque is read as a preload of the case's screw"
+    case = load_case(require_case(case_file, "monitor", why))
     series = read_series(measured_file, case.screw)
     r = run_monitor(case, series, model=model_name, trend=trend, limit=limit)
     console = stdout(json_file)

@@ -7,7 +7,7 @@ from pathlib import Path
 import click
 
 from ..io.files import atomic_folder, read_input_text
-from .common import progress, stdout, write_json, writing
+from .common import folder_only, progress, stdout, write_json, writing
 
 __all__ = ["program_command"]
 
@@ -17,6 +17,7 @@ __all__ = ["program_command"]
 @click.option("--machine", "machine_file", required=True, type=click.Path(dir_okay=False),
               help="Machine file: the axes by program letter, their cases and limits.")  # fmt: skip
 @click.option("--out", "out_dir", type=click.Path(file_okay=False), default=None,
+              callback=folder_only,
               help="Write a report (Markdown, HTML, plots, CSV) into this folder.")  # fmt: skip
 @click.option("--json", "json_file", default=None,
               help="Write the results as JSON to FILE ('-' for standard output).")  # fmt: skip
@@ -58,7 +59,7 @@ def program_command(
         click.echo(f"note: {note}", err=True)
     from rich.table import Table
 
-    out = stdout(json_file)
+    out = stdout("-" if csv_file == "-" else json_file)
     table = Table(
         title=f"{machine.title}: {result.program.size} blocks, "
         f"{result.motion.duration:.4g} s (nominal {result.motion.nominal_time:.4g} s)"

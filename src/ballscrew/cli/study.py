@@ -8,7 +8,7 @@ import click
 from rich.console import Console
 
 from ..io.files import atomic_folder
-from .common import case_option, file_option, progress, writing
+from .common import case_option, file_option, folder_only, progress, writing
 
 __all__ = ["study"]
 
@@ -19,6 +19,7 @@ __all__ = ["study"]
     "--out",
     "out_dir",
     type=click.Path(file_okay=False),
+    callback=folder_only,
     default="study-report",
     show_default=True,
     help="Folder for figures, CSV, report and run record.",
@@ -42,7 +43,7 @@ def study(
       ballscrew study --case my_screw.toml --measured friction.csv --out my_report
       ballscrew study --record report/run.json --out report-again
     """  # noqa: D301 - click needs the literal \b to keep the example lines
-    from ..io.case import load_case
+    from ..io.case import default_case_path, load_case
     from ..io.measured import read_measured
     from ..report.study import load_record, write_report
     from ..study.reproduce import run_study
@@ -53,6 +54,10 @@ def study(
             raise click.UsageError("--record replaces --case and --measured")
         case, measured, measured_text = load_record(record_file)
     else:
+        if case_file is None:
+            console.print("study: the bundled case (the study's screw, "
+                          f"{default_case_path().name}); give --case FILE for yours",
+                          markup=False)  # fmt: skip
         case = load_case(case_file)
         measured, measured_text = None, None
         if measured_file is not None:

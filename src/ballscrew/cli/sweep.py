@@ -12,7 +12,7 @@ from rich.console import Console
 from rich.table import Table
 
 from ..io.extras import require
-from .common import file_option, progress, stdout, write_json, writing
+from .common import file_option, folder_only, progress, stdout, write_json, writing
 
 __all__ = ["sweep_command"]
 
@@ -108,6 +108,7 @@ def _figures(out: Path, report: Any) -> list[Path]:
     "out",
     type=click.Path(),
     required=True,
+    callback=folder_only,
     help="Zarr store to write (an earlier sweep store there is replaced when done).",
 )
 @click.option(

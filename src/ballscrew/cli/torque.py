@@ -139,13 +139,17 @@ def torque(
     run = TorqueRun(case, table)
     for line in run.warning_lines():
         click.echo(line, err=True)
-    _print_table(run, table_kind, json_file)
+    _print_table(run, table_kind, "-" if csv_file == "-" else json_file)
     command = ["ballscrew", *sys.argv[1:]]
     if csv_file:
         with writing("--csv", csv_file):
             atomic_write(Path(csv_file), run.csv(layout=csv_layout, dialect=csv_dialect).encode())
-            meta = json_text([], run.provenance(command))
-            atomic_write(Path(csv_file + ".meta.json"), meta.encode("utf-8"))
+            if csv_file.strip() == "-":  # standard output takes one file: no FILE.meta.json
+                click.echo("note: the CSV went to standard output, its provenance nowhere "
+                           "(--json carries it)", err=True)  # fmt: skip
+            else:
+                meta = json_text([], run.provenance(command))
+                atomic_write(Path(csv_file + ".meta.json"), meta.encode("utf-8"))
     if json_file:
         write_json(json_file, run.json(command))
 

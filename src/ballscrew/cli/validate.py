@@ -9,7 +9,7 @@ from rich.console import Console
 from rich.table import Table
 
 from ..io.files import atomic_folder
-from .common import progress, stdout, writing
+from .common import folder_only, progress, stdout, writing
 
 __all__ = ["validate"]
 
@@ -19,6 +19,7 @@ __all__ = ["validate"]
     "--out",
     "out_dir",
     type=click.Path(file_okay=False),
+    callback=folder_only,
     default="validation",
     show_default=True,
     help="Folder for validation.csv, summary.csv, the figure and report.md/.html.",

@@ -806,6 +806,11 @@ def _t_quantile(dof: int) -> float:
     return float(t.ppf(0.975, max(dof, 1)))
 
 
+UNRELIABLE_FIT = "UNRELIABLE FIT"
+"""The mark a fitted case file carries when its fit was absurd (:attr:`FitResult.reliable`):
+in its description, in each fitted screw value's ``assumed`` reason and in its header."""
+
+
 def fitted_case_toml(case_text: str, result: FitResult, *, note: str = "") -> str:
     """The case file's TOML with the fitted values written in (comments kept).
 
@@ -813,13 +818,22 @@ def fitted_case_toml(case_text: str, result: FitResult, *, note: str = "") -> st
     ``preload_share`` or ``preload_drag_torque``); fitted model parameters go
     to ``[study.model_parameters.<model>]`` in SI. Each carries its 95 %
     interval as a comment; parameters the data could not identify are left
-    as they were.
+    as they were. An unreliable fit (:attr:`FitResult.reliable` False) is
+    written as such: a warning in the file's header, the :data:`UNRELIABLE_FIT`
+    mark in its description, and each fitted screw value marked ``assumed``
+    with the reason, so that ``check`` and ``energy`` repeat it when they read
+    the file.
     """
     import tomlkit
 
     doc = tomlkit.parse(case_text)
     if "title" in doc:
         doc["title"] = f"{doc['title']} (fitted)"
+    why = "; ".join(result.warnings) or "the fit is absurd"
+    if not result.reliable:
+        text = f"{UNRELIABLE_FIT} ({result.model}): {why}"
+        old = str(doc.get("description", "")).strip()
+        doc["description"] = text + (f" | {old}" if old else "")
     for name, e in result.estimates.items():
         if not e.identified:
             continue
@@ -827,6 +841,8 @@ def fitted_case_toml(case_text: str, result: FitResult, *, note: str = "") -> st
         unit = "" if spec.unit == "-" else f" {spec.unit}"
         span = f"95 % interval {e.low:.4g} to {e.high:.4g}{unit}" if e.low is not None else ""
         comment = f"fitted by ballscrew fit ({result.model}); {span}{note}"
+        if not result.reliable:
+            comment += f"; {UNRELIABLE_FIT}"
         if spec.where == "screw":
             screw = doc["screw"]
             assert isinstance(screw, dict)
@@ -834,7 +850,15 @@ def fitted_case_toml(case_text: str, result: FitResult, *, note: str = "") -> st
                 for other in ("preload_share", "preload_drag_torque"):
                     if other in screw:
                         del screw[other]
-            item = tomlkit.item(f"{e.value:.6g} {spec.unit}")
+            item: Any
+            if result.reliable:
+                item = tomlkit.item(f"{e.value:.6g} {spec.unit}")
+            else:
+                flagged = tomlkit.inline_table()
+                flagged.update({"value": f"{e.value:.6g} {spec.unit}",
+                                "assumed": f"{UNRELIABLE_FIT} by ballscrew fit "
+                                f"({result.model}): {why}"})  # fmt: skip
+                item = flagged
             item.comment(comment)
             screw[name] = item
         else:
@@ -844,4 +868,11 @@ def fitted_case_toml(case_text: str, result: FitResult, *, note: str = "") -> st
             number = tomlkit.item(float(f"{e.value:.6g}"))
             number.comment(comment)
             table[name] = number
-    return tomlkit.dumps(doc)
+    body = tomlkit.dumps(doc)
+    if result.reliable:
+        return body
+    header = "".join(f"# {line}\n" for line in (
+        f"WARNING: {UNRELIABLE_FIT}. This file was written by ballscrew fit from a fit whose "
+        "intervals do not hold:", *(f"  {w}" for w in result.warnings),
+        "Its fitted values are marked assumed; check and energy repeat this warning."))  # fmt: skip
+    return header + body

@@ -24,9 +24,18 @@ series of it over operating hours shows the preload going.
    prediction" interval). It may be open-ended when the data cannot
    exclude late times.
 
-The model's level carries its own uncertainty (the makers' band of the drag
-torque, ±25 to 45 %): the preloads are those of the model, and their trend is
-what a series measures best.
+The model's level carries its own uncertainty: the preloads are those of the
+model, and their trend is what a series measures best. A share of the initial
+preload does not depend on that level; **an absolute threshold** (a force, a
+lift-off) does, so its crossing interval adds the level's uncertainty to the
+trend's band (in quadrature, 95 %): the model's error from the scorecard
+(:func:`ballscrew.axis.uncertainty.model_error`, a standard uncertainty of
+:math:`\ln T`) divided by the torque's elasticity to the preload at the
+series' start, :math:`\partial\ln T/\partial\ln F`, read off the model's
+curves. **A first reading** outside the case's preload by more than the
+makers' drag-torque band of grade C3 at the case's catalogue torque (THK A-688
+Table 13; ±25 to 45 %) gets a note: the screw, the case or the model is not
+what the other two say.
 """
 
 from __future__ import annotations
@@ -197,6 +206,8 @@ class MonitorResult:
     crossing_low: float
     crossing_high: float
     notes: list[str] = field(default_factory=list)
+    level_sd: float = 0.0
+    """Standard uncertainty of the model's preload level, in ln N (absolute thresholds)."""
 
     def band(self, time: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:
         """The trend and its 95 % band [N] at ``time`` [h]."""
@@ -221,7 +232,7 @@ class MonitorResult:
             "threshold": None if self.limit is None else {
                 "preload_N": self.limit.value, "given": self.limit.text,
                 "crossing_h": self.crossing, "crossing_low_h": self.crossing_low,
-                "crossing_high_h": self.crossing_high},
+                "crossing_high_h": self.crossing_high, "level_sd_ln": self.level_sd},
             "points": rows, "notes": list(self.notes),
         }  # fmt: skip
 
@@ -307,8 +318,11 @@ def run_monitor(
     result.trend, result.trend_low, result.trend_high = result.band(series.time)
     if b >= 0.0:
         notes.append("the preload does not fall over the series: no crossing time")
+    _first_reading(case, result)
     if limit is not None:
         result.limit = threshold(limit, float(_value(trend, a)))
+        if result.limit.share is None:
+            result.level_sd = _level_sd(case, curves, series, preload, notes)
         _crossing(result)
     if n < 6:
         notes.append(f"{n} measurements: the intervals are wide (t quantile {q:.3g})")
@@ -324,6 +338,63 @@ def monitor_preload(*args: Any, **kwargs: Any) -> MonitorResult:
         stacklevel=2,
     )
     return run_monitor(*args, **kwargs)
+
+
+def _with_level(r: MonitorResult, y: FloatArray, half: FloatArray) -> tuple[FloatArray, FloatArray]:
+    """The trend's 95 % half-width with the model level's 95 % added in quadrature."""
+    if r.level_sd <= 0.0:
+        return y, half
+    # ln F for the exponential trend; F itself for the linear one (first order: F sigma).
+    level = 1.96 * r.level_sd * (1.0 if r.trend_kind == "exponential" else np.abs(y))
+    return y, np.sqrt(half**2 + level**2)
+
+
+def _first_reading(case: Case, r: MonitorResult) -> None:
+    """A note when the first preload lies outside the case's by more than the makers' band."""
+    from ..design.catalog_formulas import (
+        DRAG_TORQUE_TOLERANCE,
+        drag_torque_tolerance,
+        preload_torque,
+    )
+
+    screw = case.screw
+    if screw.preload <= 0.0:
+        return
+    rows = DRAG_TORQUE_TOLERANCE["C3"]
+    torque = float(preload_torque(screw.preload, screw.lead, screw.lead_angle))
+    band = drag_torque_tolerance(min(max(torque, rows[0][0]), rows[-1][1]))[2]
+    first = float(r.preload[0])
+    if abs(first / screw.preload - 1.0) > band:
+        r.notes.append(
+            f"the first reading gives {first:.4g} N, {first / screw.preload - 1.0:+.0%} from the "
+            f"case's preload {screw.preload:.4g} N, outside the makers' band of +-{band:.0%} "
+            f"(C3 at {torque:.3g} N*m, THK A-688 Table 13): check the case's preload, the "
+            "screw, or the model's level"
+        )
+
+
+def _level_sd(
+    case: Case, curves: PreloadCurves, series: TorqueSeries, preload: FloatArray,
+    notes: list[str],
+) -> float:  # fmt: skip
+    """The model level's standard uncertainty in ln of the preload read (module docstring)."""
+    from ..axis.uncertainty import model_error
+
+    sigma, origin = model_error(curves.model, case.screw.nut, float(series.torque[0]))
+    if math.isnan(sigma):
+        notes.append(origin + ": the crossing's interval leaves the level out")
+        return 0.0
+    # Elasticity d ln T / d ln F at the first reading, from the model's curves.
+    f0 = float(preload[0])
+    k = int(np.clip(np.searchsorted(curves.preloads, f0), 2, curves.preloads.size - 1))
+    lo, hi = curves.preloads[k - 1], curves.preloads[k]
+    t_lo, t_hi = curves.torque[k - 1, 0], curves.torque[k, 0]
+    slope = math.log(t_hi / t_lo) / math.log(hi / lo)
+    level = sigma / slope
+    notes.append(f"an absolute threshold depends on the model's level: {origin}; over the "
+                 f"torque's elasticity to the preload {slope:.3g}, sigma(ln F) = {level:.3g}, "
+                 "added to the crossing's interval")  # fmt: skip
+    return float(level)
 
 
 def _crossing(r: MonitorResult) -> None:
@@ -351,7 +422,8 @@ def _crossing(r: MonitorResult) -> None:
         return
     span = float(r.series.time[-1] - r.series.time[0])
     grid = np.linspace(r.series.time[0] - span, r.series.time[-1] + 20.0 * span, 40001)
-    y, half = _mean_band(r.series.time, r.intercept, r.slope, r.residual_sd, grid)
+    y, half = _with_level(r, *_mean_band(r.series.time, r.intercept, r.slope, r.residual_sd,
+                                         grid))  # fmt: skip
     inside = np.abs(y - y_th) <= half
     if not np.any(inside):
         r.crossing_low = r.crossing_high = math.nan
@@ -359,8 +431,8 @@ def _crossing(r: MonitorResult) -> None:
     idx = np.flatnonzero(inside)
 
     def edge(t: float) -> float:  # the band's edge crosses the threshold where this is 0
-        mean, half_width = _mean_band(r.series.time, r.intercept, r.slope, r.residual_sd,
-                                      np.array([t]))  # fmt: skip
+        mean, half_width = _with_level(r, *_mean_band(
+            r.series.time, r.intercept, r.slope, r.residual_sd, np.array([t])))  # fmt: skip
         return float(abs(mean[0] - y_th) - half_width[0])
 
     # Each edge found on the grid is refined to the root between its two nodes.

@@ -131,11 +131,27 @@ class Assumption:
     field: str
     value: str
     reason: str
+    tolerance: float | None = None
+    """The range it may lie in, +- as a share (``tolerance = "10 %"`` beside ``assumed``)."""
+
+
+def _share(field: str, text: str) -> float:
+    """An assumed value's tolerance, '10 %' -> 0.1: from 0 to less than 100 %."""
+    raw = text.strip()
+    try:
+        value = float(raw.removesuffix("%").strip()) / 100.0
+    except ValueError:
+        value = math.nan
+    if not (raw.endswith("%") and 0.0 <= value < 1.0):
+        raise BallScrewInputError(f"{field}.tolerance", text, "a share from 0 to 100 %, e.g. "
+                                  "'10 %'")  # fmt: skip
+    return value
 
 
 def _unwrap(field: str, raw: Any, notes: list[Assumption]) -> Any:
     if isinstance(raw, Assumed):
-        notes.append(Assumption(field, str(raw.value), raw.assumed))
+        tol = None if raw.tolerance is None else _share(field, raw.tolerance)
+        notes.append(Assumption(field, str(raw.value), raw.assumed, tol))
         return raw.value
     return raw
 
@@ -220,6 +236,10 @@ class Case:
     motor: dict[str, float] = field(default_factory=dict)
     check: dict[str, Any] = field(default_factory=dict)
     axis_given: frozenset[str] = frozenset()
+    sources: dict[str, str] = field(default_factory=dict)
+    """Where each key's value comes from, by ``section.key``: ``given`` (written in the
+    file), ``catalogue`` (the designation's row), ``default`` (the schema's or the
+    command's), ``assumed`` (marked so, with its reason in :attr:`assumptions`)."""
 
     def load_ratings(self) -> Ratings:
         """The screw's load ratings: the case's, else C_0a estimated from the geometry."""
@@ -375,6 +395,7 @@ def parse_case(text: str, *, source: str = "case") -> Case:
         motor=motor,
         check=check,
         axis_given=frozenset(data.axis.model_fields_set),
+        sources=_sources(data, notes),
     )
 
 
@@ -437,6 +458,22 @@ def _check(data: CaseFile, si: Callable[[str, str, Any, str], float]) -> dict[st
             "one of 90, 95, 96, 97, 98 or 99 % (ISO 3408-5's a1)",
         )  # fmt: skip
     out["reliability"] = levels[0]
+    for name in ("preload_tolerance", "rating_tolerance", "mass_tolerance", "force_tolerance"):
+        if name in out and not (0.0 <= out[name] < 1.0):
+            raise BallScrewInputError(
+                f"check.{name}", getattr(c, name), "a share from 0 to less than 100 %"
+            )
+    if "axial_play" in out and not (0.0 <= out["axial_play"] <= 1e-3):
+        raise BallScrewInputError(
+            "check.axial_play", c.axial_play, "a play from 0 to 1 mm (THK A15-19: 0 to 0.05 mm "
+            "for precision nuts, up to 0.2 mm for rolled screws)",
+        )  # fmt: skip
+    if "load_factor" in out and not (1.0 <= out["load_factor"] <= 3.0):
+        raise BallScrewInputError(
+            "check.load_factor", c.load_factor,
+            "a factor from 1 to 3 (THK A15-40: 1.0 to 1.2 smooth, 1.2 to 1.5 normal running, "
+            "1.5 to 3 with impact or vibration)",
+        )  # fmt: skip
     if not (math.isfinite(out["pretension_temperature"]) and out["pretension_temperature"] >= 0):
         raise BallScrewInputError(
             "check.pretension_temperature", c.pretension_temperature, "a temperature rise >= 0 K"
@@ -448,6 +485,36 @@ def _check(data: CaseFile, si: Callable[[str, str, Any, str], float]) -> dict[st
                 "check.accuracy_grade", c.accuracy_grade, f"one of {list(TRAVEL_VARIATION_300)}"
             )
         out["accuracy_grade"] = grade
+    return out
+
+
+def _sources(data: CaseFile, notes: list[Assumption]) -> dict[str, str]:
+    """Where each key of the case comes from (:attr:`Case.sources`)."""
+    s = data.screw
+    base: set[str] = set()
+    if s.designation is not None:
+        raw = s.designation.value if isinstance(s.designation, Assumed) else s.designation
+        base = set(resolve(str(raw)).geometry)
+    given = s.model_fields_set
+    out: dict[str, str] = {}
+    for name in [*SCREW_UNITS, "nut"]:
+        out[f"screw.{name}"] = ("given" if name in given else "catalogue" if name in base
+                                else "default")  # fmt: skip
+    for way in ("preload", "preload_drag_torque", "preload_share"):
+        if way in given:
+            out["screw.preload"] = "given" if way == "preload" else f"given as {way}"
+            out[f"screw.{way}"] = "given"
+    for name in ("dynamic_load_rating", "static_load_rating"):
+        out[f"screw.{name}"] = ("given" if name in given else "catalogue" if s.designation
+                                else "estimated or missing")  # fmt: skip
+    for section in (data.operation, data.axis, data.motor, data.check):
+        key = {id(data.operation): "operation", id(data.axis): "axis", id(data.motor): "motor",
+               id(data.check): "check"}[id(section)]  # fmt: skip
+        for name in type(section).model_fields:
+            out[f"{key}.{name}"] = "given" if name in section.model_fields_set else "default"
+    for a in notes:
+        if a.field in out or "." in a.field:
+            out[a.field] = "assumed"
     return out
 
 

@@ -36,6 +36,10 @@ class Assumed(BaseModel):
     model_config = ConfigDict(extra="forbid")
     value: str | float | int
     assumed: str = Field(min_length=1)
+    tolerance: str | None = None
+    """A range the assumed value may lie in, +- as a share (``"10 %"``): ``ballscrew check``
+    draws the moving mass, the preload and the load ratings from it when ``[check]`` states
+    no tolerance of its own."""
 
 
 Value = str | float | int | Assumed
@@ -396,6 +400,15 @@ class CheckSection(BaseModel):
     reliability: Value = _f(
         "90 %", "-", "reliability of the life (90 to 99 %, ISO 3408-5 a1)", si=""
     )
+    load_factor: Value | None = _f(
+        None,
+        "-",
+        "load factor f_w of the life, 1 to 3: the mean load times f_w (THK A15-40: 1.0 to "
+        "1.2 smooth running without impact, 1.2 to 1.5 normal running, 1.5 to 3 with impact "
+        "or vibration; none: 1.0, ISO 3408-5's life, and said so)",
+        1.2,
+        si="",
+    )
     static_safety: Value = _f(
         2.0,
         "-",
@@ -417,6 +430,44 @@ class CheckSection(BaseModel):
         "and said so)",
         "750 N/um",
         si="N/m",
+    )
+    axial_play: Value | None = _f(
+        None,
+        "length",
+        "axial play of a nut without preload, added to its lost motion (none: 0.02 mm, THK's "
+        "clearance G2 of a precision nut, General Catalog A15-19, and said so)",
+        "0.01 mm",
+        si="m",
+    )
+    preload_tolerance: Value | None = _f(
+        None,
+        "-",
+        "tolerance of the preload, +- as a share, read as a uniform range (none: the makers' "
+        "drag-torque band of grade C3 at the case's catalogue drag torque, THK A-688 Table 13)",
+        "20 %",
+        si="",
+    )
+    rating_tolerance: Value | None = _f(
+        None,
+        "-",
+        "tolerance of the load ratings C_a and C_0a, +- as a share, uniform (none: 0, the "
+        "catalogue's values as printed, and said so)",
+        "10 %",
+        si="",
+    )
+    mass_tolerance: Value | None = _f(
+        None,
+        "-",
+        "tolerance of the moving mass, +- as a share, uniform (none: 0, and said so)",
+        "10 %",
+        si="",
+    )
+    force_tolerance: Value | None = _f(
+        None,
+        "-",
+        "tolerance of the move's process force, +- as a share, uniform (none: 0, and said so)",
+        "20 %",
+        si="",
     )
     pretension_temperature: Value = _f(
         "0 K",

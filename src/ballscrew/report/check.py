@@ -23,7 +23,8 @@ import numpy as np
 from matplotlib.figure import Figure as MplFigure
 
 from .._version import __version__
-from ..axis.check import AxisCheck
+from ..axis.check import AxisCheck, Criterion
+from ..io.files import atomic_write
 from .document import Block, write_data, write_pages
 from .outputs import csv_bytes
 from .plotting import new_figure, write_figures
@@ -31,7 +32,17 @@ from .plotting import new_figure, write_figures
 __all__ = ["write_check_report"]
 
 _COLOURS = {"OK": "#3a7d44", "CHECK": "#c58b00", "NOT OK": "#b00020"}
-_HEADER = ["criterion", "value", "limit", "unit", "use", "verdict", "source", "what to change"]
+_HEADER = ["criterion", "value", "limit", "unit", "use", "use, 95 %", "verdict", "P(NOT OK)",
+           "with 95 % confidence", "source", "what to change"]  # fmt: skip
+
+
+def _use_interval(c: Criterion) -> str:
+    u = c.uncertainty
+    return "-" if u is None else f"{u.low:.0%} to {u.high:.0%}"
+
+
+def _probability(c: Criterion) -> str:
+    return "-" if c.uncertainty is None else f"{c.uncertainty.p_not_ok:.0%}"
 
 
 def _number(value: Any) -> str:
@@ -94,8 +105,14 @@ def _thermal_figure(check: AxisCheck) -> MplFigure:
 def _data(check: AxisCheck) -> dict[str, bytes]:
     s, t = check.stiffness, check.thermal
     criteria = csv_bytes(
-        ["criterion", "value", "limit", "unit", "utilisation [-]", "verdict", "source", "advice"],
-        [[c.name, c.value, c.limit, c.unit, c.utilisation, c.verdict, c.source, c.advice]
+        ["criterion", "value", "limit", "unit", "utilisation [-]", "utilisation 2.5 % [-]",
+         "utilisation 97.5 % [-]", "verdict", "P(NOT OK) [-]", "verdict with 95 % confidence",
+         "source", "advice"],
+        [[c.name, c.value, c.limit, c.unit, c.utilisation,
+          None if c.uncertainty is None else c.uncertainty.low,
+          None if c.uncertainty is None else c.uncertainty.high, c.verdict,
+          None if c.uncertainty is None else c.uncertainty.p_not_ok,
+          "" if c.uncertainty is None else c.uncertainty.guarded, c.source, c.advice]
          for c in check.criteria],
     )  # fmt: skip
     stiffness = csv_bytes(
@@ -115,8 +132,9 @@ def _data(check: AxisCheck) -> dict[str, bytes]:
 def _blocks(check: AxisCheck, captions: dict[str, str]) -> list[Block]:
     missing = f", {len(check.not_checked)} not checked" if check.not_checked else ""
     rows = [[c.name, _number(c.value), _number(c.limit), c.unit,
-             "-" if c.utilisation is None else f"{c.utilisation:.0%}", c.verdict, c.source,
-             c.advice] for c in check.criteria]  # fmt: skip
+             "-" if c.utilisation is None else f"{c.utilisation:.0%}", _use_interval(c),
+             c.verdict, _probability(c), "-" if c.uncertainty is None else c.uncertainty.guarded,
+             c.source, c.advice] for c in check.criteria]  # fmt: skip
     blocks = [
         Block("h1", f"Axis check: {check.title}"),
         Block(
@@ -128,7 +146,38 @@ def _blocks(check: AxisCheck, captions: dict[str, str]) -> list[Block]:
     ]
     blocks += [Block("img", (key, caption)) for key, caption in captions.items()]
     blocks += [Block("h2", "Assumptions"), Block("ul", list(check.assumptions) or ["none"])]
+    blocks += _input_blocks(check)
     return blocks
+
+
+def _input_blocks(check: AxisCheck) -> list[Block]:
+    """The inputs the verdicts were computed from: run, move, the case's values and text."""
+    inputs = check.inputs
+    if not inputs:
+        return []
+    case = inputs["case"]
+    move = ", ".join(f"{k}={v:g}" for k, v in inputs.get("move", {}).items()) or "a profile"
+    run = [
+        f"command: {' '.join(inputs['command'])}" if inputs.get("command") else "command: -",
+        f"model: {inputs['model']}; move (SI): {move}; cycles: {inputs['cycles']}; run time: "
+        f"{inputs['run_time_s']:g} s; lubricant temperature: {inputs['temperature_C']:g} degC",
+        f"case: {case['title']}, SHA-256 {case['sha256']}"
+        + (f" ({inputs['case_file']})" if inputs.get("case_file") else ""),
+        f"uncertainty: {inputs['uncertainty']['samples']} draws, seed "
+        f"{inputs['uncertainty']['seed']}",
+    ]
+    rows = [[v["key"], "-" if v["value"] is None else str(v["value"]), v["source"]]
+            for v in case["values"] if v["value"] is not None]  # fmt: skip
+    return [
+        Block("h2", "Inputs"),
+        Block("ul", run),
+        Block("table", (["key", "value (SI)", "source"], rows)),
+        Block(
+            "p",
+            "The whole check with these inputs (the case file's text, every value) is "
+            "data/check.json: it computes the same table again.",
+        ),
+    ]
 
 
 def write_check_report(out: str | Path, check: AxisCheck) -> list[Path]:
@@ -145,5 +194,11 @@ def write_check_report(out: str | Path, check: AxisCheck) -> list[Path]:
     }  # fmt: skip
     written, images = write_figures(folder, {k: fig for k, (fig, _) in figures.items()})
     written += write_data(folder, _data(check).items())
+    if check.inputs:
+        from .outputs import result_json
+
+        path = folder / "data" / "check.json"
+        atomic_write(path, result_json(check).encode("utf-8"))
+        written.append(path)
     blocks = _blocks(check, {k: caption for k, (_, caption) in figures.items()})
     return written + write_pages(folder, blocks, f"Axis check: {check.title}", images)

@@ -210,6 +210,26 @@ def _blocks(
     return blocks
 
 
+def _input_blocks(run: EnergyRun) -> list[Block]:
+    """The move, the run and the case the report was computed from."""
+    from ..axis.duty import run_inputs
+
+    inputs = run_inputs(run, next(iter(run.results)))
+    move = ", ".join(f"{k}={v:g}" for k, v in inputs["move"].items()) or "a profile file"
+    case = inputs["case"]
+    rows = [[v["key"], str(v["value"]), v["source"]]
+            for v in case["values"] if v["value"] is not None]  # fmt: skip
+    return [
+        Block("h2", "Inputs"),
+        Block("ul", [
+            f"move (SI): {move}; cycles: {inputs['cycles']}; run time: "
+            f"{inputs['run_time_s']:g} s; lubricant temperature: {inputs['temperature_C']:g} degC",
+            f"case: {case['title']}, SHA-256 {case['sha256']}",
+        ]),
+        Block("table", (["key", "value (SI)", "source"], rows)),
+    ]  # fmt: skip
+
+
 def write_energy_report(out: str | Path, run: EnergyRun) -> list[Path]:
     """Write the report of ``run`` (:func:`ballscrew.axis.duty.run_energy`) into ``out``.
 
@@ -233,6 +253,7 @@ def write_energy_report(out: str | Path, run: EnergyRun) -> list[Path]:
                                                for n, v in summary.items()])  # fmt: skip
     written += write_data(folder, data.items())
     blocks = _blocks(title, profile, summary, {k: caption for k, (_, caption) in figures.items()})
+    blocks += _input_blocks(run)
     return written + write_pages(folder, blocks, f"Feed axis energy: {title}", images)
 
 

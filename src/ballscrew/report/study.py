@@ -111,10 +111,11 @@ def _input_rows(result: StudyResult) -> list[tuple[str, str, str]]:
 
 
 def _inputs(result: StudyResult) -> list[Block]:
-    """The inputs, each given or assumed (with the reason), and the lubricant's data."""
+    """The inputs, each given, from the catalogue, a default or assumed (with the reason)."""
     assumed = {a.field: a.reason for a in result.case.assumptions}
+    sources = result.case.sources
     rows = [
-        (q, v, "assumed: " + assumed[f] if f in assumed else "given")
+        (q, v, "assumed: " + assumed[f] if f in assumed else sources.get(f, "given"))
         for q, v, f in _input_rows(result)
     ]
     oil = result.case.lubricant

@@ -389,12 +389,15 @@
     }
     const missing = c.not_checked.length ? `, ${c.not_checked.length} not checked` : "";
     $("check_verdict").textContent = `verdict: ${c.verdict}${missing}`;
-    const head = "<thead><tr><th>criterion</th><th>value</th><th>limit</th><th>unit</th><th>use</th><th>verdict</th><th>what to change</th></tr></thead>";
+    const head = "<thead><tr><th>criterion</th><th>value</th><th>limit</th><th>unit</th><th>use</th><th>use, 95 %</th><th>verdict</th><th>P(NOT OK)</th><th>95 % confidence</th><th>what to change</th></tr></thead>";
+    const pct = (v) => `${Math.round(100 * v)} %`;
     const rows = c.criteria.map((r) => {
-      const use = r.utilisation === null ? "-" : `${Math.round(100 * r.utilisation)} %`;
-      return `<tr class="verdict" data-verdict="${esc(r.verdict)}"><th title="${esc(r.source)}">${esc(r.name)}</th><td>${num(r.value)}</td><td>${num(r.limit)}</td><td>${esc(r.unit)}</td><td>${use}</td><td>${esc(r.verdict)}</td><td>${esc(r.advice)}</td></tr>`;
+      const use = r.utilisation === null ? "-" : pct(r.utilisation);
+      const spread = r.utilisation_95 ? `${pct(r.utilisation_95[0])} to ${pct(r.utilisation_95[1])}` : "-";
+      const p = r.p_not_ok === null || r.p_not_ok === undefined ? "-" : pct(r.p_not_ok);
+      return `<tr class="verdict" data-verdict="${esc(r.verdict)}"><th title="${esc(r.source)}">${esc(r.name)}</th><td>${num(r.value)}</td><td>${num(r.limit)}</td><td>${esc(r.unit)}</td><td>${use}</td><td>${spread}</td><td>${esc(r.verdict)}</td><td>${p}</td><td>${esc(r.guarded_verdict ?? "-")}</td><td>${esc(r.advice)}</td></tr>`;
     });
-    const assumed = c.assumptions.map((a) => `<tr><td colspan="7" class="assumed">assumed: ${esc(a)}</td></tr>`);
+    const assumed = c.assumptions.map((a) => `<tr><td colspan="10" class="assumed">assumed: ${esc(a)}</td></tr>`);
     $("check_table").innerHTML = `${head}<tbody>${rows.join("")}${assumed.join("")}</tbody>`;
   }
 

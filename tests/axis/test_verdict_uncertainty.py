@@ -1,0 +1,171 @@
+"""How sure a verdict is: P(NOT OK), the utilisation's interval, the guarded verdict."""
+
+from __future__ import annotations
+
+import csv
+import itertools
+import math
+from importlib import resources
+from pathlib import Path
+
+import numpy as np
+import pytest
+from scipy.stats import norm
+
+from ballscrew.axis.check import run_check
+from ballscrew.axis.duty import profile_from_move, run_energy
+from ballscrew.axis.uncertainty import SAMPLES, judge, model_error
+from ballscrew.errors import BallScrewInputError
+from ballscrew.io.case import parse_case
+
+X_AXIS = Path(__file__).resolve().parents[1] / "data" / "x_axis_bnfn3210a5.toml"
+X_MOVE = {"stroke": 0.8, "feed": 20.0 / 60.0, "acceleration": 2.0, "force": 3000.0,
+          "dwell": 0.85}  # fmt: skip
+# The standard error of a probability from SAMPLES draws is at most sqrt(0.25 / 4000) = 0.008;
+# three of them: 0.024.
+MC = 3.0 * math.sqrt(0.25 / SAMPLES)
+
+
+def _x(check_lines: str = "", model: str = "catalog"):  # type: ignore[no-untyped-def]
+    text = X_AXIS.read_text(encoding="utf-8").replace('required_life = "20000 h"\n', check_lines)
+    run = run_energy(parse_case(text), profile_from_move(X_MOVE, 1), [model], run_time=600.0,
+                     move=X_MOVE)  # fmt: skip
+    return run_check(run, model)
+
+
+def _row(result, name: str):  # type: ignore[no-untyped-def]
+    return next(c for c in result.criteria if c.name.startswith(name))
+
+
+NOMINAL_HOURS = _row(_x(), "fatigue life").value
+
+
+def test_decision_rule() -> None:
+    assert judge(np.full(100, 0.5)).guarded == "OK (95 %)"
+    assert judge(np.full(100, 1.5)).guarded == "NOT OK (95 %)"
+    u = np.r_[np.full(94, 0.5), np.full(6, 2.0)]
+    r = judge(u)
+    assert r.p_not_ok == pytest.approx(0.06) and r.guarded == "undecided"
+    assert judge(np.r_[np.full(95, 0.5), np.full(5, 2.0)]).guarded == "OK (95 %)"
+    assert judge(np.array([math.nan, 0.5])).p_not_ok == 0.5  # NaN fails, never a silent pass
+
+
+def test_half_at_a_nominal_utilisation_of_one_and_monotonic() -> None:
+    # The life is monotonic in the preload and the rating; with a required life equal to the
+    # nominal life the median draw sits at the limit: P(NOT OK) = 0.5 up to the Monte Carlo.
+    probs = []
+    for factor in (0.3, 0.6, 0.95, 1.0, 1.05, 1.6, 3.0):
+        lines = (f'required_life = "{NOMINAL_HOURS * factor:.6f} h"\n'
+                 'rating_tolerance = "10 %"\n')  # fmt: skip
+        row = _row(_x(lines), "fatigue life")
+        assert row.utilisation == pytest.approx(factor, rel=1e-6)
+        probs.append(row.uncertainty.p_not_ok)
+    assert probs[3] == pytest.approx(0.5, abs=MC)
+    assert all(a < b for a, b in itertools.pairwise(probs))  # strictly growing
+    assert probs[0] < 0.05 and probs[-1] > 0.95
+
+
+def test_monte_carlo_against_the_closed_form_of_a_uniform_rating() -> None:
+    # Only the rating uncertain, k uniform on [0.9, 1.1]: u = u0 / k^3, so
+    # P(u > 1) = P(k < u0^(1/3)) = (u0^(1/3) - 0.9) / 0.2, and the utilisation's 2.5 % and
+    # 97.5 % quantiles are u0 / k(97.5 %)^3 and u0 / k(2.5 %)^3.
+    u0 = 1.1
+    lines = (f'required_life = "{NOMINAL_HOURS * u0:.6f} h"\nrating_tolerance = "10 %"\n'
+             'preload_tolerance = "0 %"\n')  # fmt: skip
+    row = _row(_x(lines), "fatigue life")
+    exact = (u0 ** (1 / 3) - 0.9) / 0.2
+    assert row.uncertainty.p_not_ok == pytest.approx(exact, abs=MC)
+    k = 0.9 + 0.2 * np.array([0.975, 0.025])
+    low, high = u0 / k**3
+    # 1 %: the quantiles of 4000 draws of a smooth distribution.
+    assert row.uncertainty.low == pytest.approx(low, rel=1e-2)
+    assert row.uncertainty.high == pytest.approx(high, rel=1e-2)
+
+
+def test_the_model_error_reaches_the_thermal_verdict_as_a_log_normal() -> None:
+    # The lead error is alpha dT 300 mm with dT scaled by the friction factor exp(N(0, s)):
+    # P(u > 1) = Phi(ln u0 / s) exactly (no pre-tension).
+    result = _x('required_life = "20000 h"\naccuracy_grade = "C5"\n', model="complete")
+    row = _row(result, "thermal lead error")
+    sigma, _ = model_error("complete", "double", 0.3)
+    assert any("sigma(ln T) = " + f"{sigma:.3g}" in a for a in result.assumptions)
+    exact = norm.cdf(math.log(row.utilisation) / sigma)
+    assert row.uncertainty.p_not_ok == pytest.approx(exact, abs=MC)
+    lo, hi = row.utilisation * np.exp(norm.ppf([0.025, 0.975]) * sigma)
+    assert row.uncertainty.low == pytest.approx(lo, rel=3e-2)  # tails of 4000 draws
+    assert row.uncertainty.high == pytest.approx(hi, rel=3e-2)
+
+
+def test_every_row_with_a_limit_carries_its_probability_in_json() -> None:
+    doc = _x().as_dict()
+    for c in doc["criteria"]:
+        if c["utilisation"] is None:
+            assert c["p_not_ok"] is None and c["guarded_verdict"] is None
+        else:
+            assert 0.0 <= c["p_not_ok"] <= 1.0
+            low, high = c["utilisation_95"]
+            assert low <= high
+            assert c["guarded_verdict"] in ("OK (95 %)", "NOT OK (95 %)", "undecided")
+    speed = next(c for c in doc["criteria"] if c["name"].startswith("speed"))
+    assert speed["utilisation_95"] == [speed["utilisation"]] * 2  # no uncertain input
+
+
+def test_the_shipped_model_error_is_the_scorecards() -> None:
+    # Provenance: the data file's row is the scorecard's own test rows, recomputed here.
+    from ballscrew.study.validation import score
+
+    rows = [r for r in score(["complete"], trends=False)
+            if r.kind == "jungnickel" and r.reference < 1.0 and not r.training]  # fmt: skip
+    logs = np.log10([r.predicted / r.reference for r in rows])
+    text = resources.files("ballscrew").joinpath("data/model_scatter.csv").read_text("utf-8")
+    data = list(csv.DictReader(line for line in text.splitlines() if not line.startswith("#")))
+    shipped = next(d for d in data if d["model"] == "complete" and d["reference"] == "measured"
+                   and d["level"] == "below 1 N*m" and d["role"] == "test")  # fmt: skip
+    assert int(shipped["rows"]) == logs.size
+    assert float(shipped["rms_log10"]) == pytest.approx(np.sqrt(np.mean(logs**2)), abs=1e-4)
+    sigma, text = model_error("complete", "double", 0.3)
+    assert sigma == pytest.approx(float(shipped["rms_log10"]) * math.log(10))
+    assert "measured test rows" in text
+    # A 4-point nut has catalogue rows only: the catalogue's own +-30 % band is added.
+    s4, text4 = model_error("complete", "single-4point", 0.3)
+    assert "catalogue's own" in text4 and s4 > 0.3 / math.sqrt(3)
+    assert math.isnan(model_error("olaru", "double", 0.3)[0])
+
+
+@pytest.mark.parametrize("key", ["preload_tolerance", "rating_tolerance", "mass_tolerance",
+                                 "force_tolerance"])  # fmt: skip
+def test_a_tolerance_of_100_percent_or_more_is_refused(key: str) -> None:
+    text = X_AXIS.read_text(encoding="utf-8").replace("[check]\n", f'[check]\n{key} = "100 %"\n')
+    with pytest.raises(BallScrewInputError, match=rf"check\.{key}"):
+        parse_case(text)
+
+
+def test_an_assumed_value_carries_its_own_range() -> None:
+    # The fixture's C_0a is assumed; given a range there, it stands in for rating_tolerance.
+    text = X_AXIS.read_text(encoding="utf-8")
+    ranged = text.replace('assumed = "twice BIF3210A-5', 'tolerance = "10 %", assumed = "twice '
+                          "BIF3210A-5")  # fmt: skip
+    ranged = ranged.replace('moving_mass = "500 kg"', 'moving_mass = { value = "500 kg", '
+                            'assumed = "slide and vice", tolerance = "20 %" }')  # fmt: skip
+    stated = text.replace("[check]\n", '[check]\nrating_tolerance = "10 %"\n'
+                          'mass_tolerance = "20 %"\n')  # fmt: skip
+    results = []
+    for case_text in (ranged, stated):
+        run = run_energy(parse_case(case_text), profile_from_move(X_MOVE, 1), ["catalog"],
+                         run_time=600.0, move=X_MOVE)  # fmt: skip
+        results.append(run_check(run, "catalog"))
+    for name in ("fatigue life", "static safety", "lift-off"):
+        a, b = (_row(r, name).uncertainty for r in results)
+        assert (a.p_not_ok, a.low, a.high) == (b.p_not_ok, b.low, b.high), name
+    assert any("rating tolerance +-10% from the range of the assumed screw.static_load_rating"
+               in n for n in results[0].assumptions)  # fmt: skip
+    wide, narrow = _row(results[0], "static safety").uncertainty, _row(_x(), "static safety")
+    assert wide.high - wide.low > narrow.uncertainty.high - narrow.uncertainty.low
+
+
+def test_an_assumed_range_of_100_percent_is_refused() -> None:
+    text = X_AXIS.read_text(encoding="utf-8").replace(
+        'assumed = "twice BIF3210A-5', 'tolerance = "100 %", assumed = "twice BIF3210A-5'
+    )
+    with pytest.raises(BallScrewInputError, match=r"screw\.static_load_rating\.tolerance"):
+        parse_case(text)
