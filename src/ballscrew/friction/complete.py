@@ -665,7 +665,9 @@ def _ball_train(
     by_name = {c.name: c for c in state.contacts}
     # A 4-point ball is one ball of one train with both contact pairs: its stiffness is
     # the two pairs' together. A double nut has a train per circuit of each half-nut.
+    # A single 2-point nut has balls in one family only.
     pairs = [[1, 2]] if screw.nut == "single-4point" else [[1], [2]]
+    pairs = [p for p in pairs if by_name[f"screw-{p[0]}"].balls]
     ball_ball: FloatArray = np.zeros(shape)
     recirculation: FloatArray = np.zeros(shape)
     for families in pairs:
@@ -673,10 +675,9 @@ def _ball_train(
         for f in families:
             c_s = _creep_coefficient(by_name[f"screw-{f}"], mu[f"screw-{f}"], spin["screw"])
             c_n = _creep_coefficient(by_name[f"nut-{f}"], mu[f"nut-{f}"], spin["nut"])
-            total = c_s + c_n
-            stiffness = stiffness + np.where(
-                total > 0.0, 4.0 * c_s * c_n / np.where(total > 0.0, total, 1.0), 0.0
-            )
+            total = c_s + c_n  # 0 only on a lifted-off half-nut
+            series = np.divide(4.0 * c_s * c_n, total, out=np.zeros(shape), where=total > 0.0)
+            stiffness = stiffness + series
         means = expected_train(stiffness, spread, n)
         contact = by_name[f"screw-{families[0]}"]
         if screw.ball_separation == "cage":  # each ball's own traction, in its pocket
@@ -709,11 +710,11 @@ def _creep_coefficient(contact: ContactState, mu: FloatArray, spin: float) -> Fl
     :math:`c\omega = \mu QG_x'(\beta)/(|\omega_s/\omega|a)`
     (:func:`ballscrew.ball_train.creep_slope`); 0 where the contact carries no load.
     """
-    a = contact.hertz.a
+    a = np.broadcast_to(contact.hertz.a, np.shape(contact.load))
     aspect = 1.0 / float(np.max(contact.hertz.ellipticity))
-    safe = np.where(a > 0.0, a, 1.0)
-    result: FloatArray = np.where(
-        a > 0.0, mu * contact.load * float(creep_slope(aspect)) / (abs(spin) * safe), 0.0
+    capacity = mu * contact.load * float(creep_slope(aspect))
+    result: FloatArray = np.divide(
+        capacity, abs(spin) * a, out=np.zeros(np.broadcast(capacity, a).shape), where=a > 0.0
     )
     return result
 
