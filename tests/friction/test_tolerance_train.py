@@ -218,7 +218,7 @@ def test_model_train_term_is_the_mean_of_ball_by_ball_trains(separation: str) ->
     screw = reference_screw().replace(ball_separation=separation)
     oil = get_lubricant(OIL)
     omega = 100.0 * RPM
-    st = operating_state(screw, oil, speed=omega, temperature=40.0)
+    st = operating_state(screw, oil, speed=omega, temperature=40.0, hertz_method="exact")
     unit = kinematics(screw, 1.0)
     spin = {"screw": abs(float(unit.spin_screw)), "nut": abs(float(unit.spin_nut))}
     contacts = []
@@ -252,3 +252,49 @@ def test_model_train_term_is_the_mean_of_ball_by_ball_trains(separation: str) ->
     error = trains * np.std(per_train) / math.sqrt(len(per_train))
     model = float(_train(screw, speed=omega)["ball_ball"])
     assert model == pytest.approx(reference, abs=4.0 * error + 0.01 * reference)
+
+
+def test_touching_balls_add_the_ball_ball_sliding_of_the_push() -> None:
+    # Over the spacer-ball nut's push, touching balls slide on each other under the push's
+    # mean compression, F_r / 2 over the circuit's N balls, at omega_b D_w and the
+    # ball-ball coefficient of the train's mean compression (the spacer nut's train has
+    # the same balls and forces; only the sliding differs).
+    from ballscrew.ball_train import creep_slope, expected_train, orbital_sensitivity
+    from ballscrew.friction.complete import ball_ball_friction
+    from ballscrew.kinematics import kinematics
+    from ballscrew.materials import STEEL_DENSITY
+    from ballscrew.rolling_losses import (
+        limiting_traction_coefficient,
+        mixed_friction_coefficient,
+    )
+    from ballscrew.state import operating_state
+
+    s = reference_screw()
+    oil = get_lubricant(OIL)
+    omega = 3000.0 * RPM
+    full = float(_train(s, speed=omega)["recirculation"])
+    spacer = float(_train(s.replace(ball_separation="spacer-balls"), speed=omega)["recirculation"])
+    st = operating_state(s, oil, speed=omega, temperature=40.0, hertz_method="exact")
+    unit = kinematics(s, 1.0)
+    spin = {"screw": abs(float(unit.spin_screw)), "nut": abs(float(unit.spin_nut))}
+    coefficients = []
+    for c in st.contacts[:2]:
+        limit = limiting_traction_coefficient(
+            oil.limiting_shear_stress, oil.limiting_shear_coefficient, 2.0 / 3.0 * c.hertz.p_max
+        )
+        mu = float(mixed_friction_coefficient(c.asperity_share, 0.1, limit))
+        slope = float(creep_slope(1.0 / float(c.hertz.ellipticity)))
+        coefficients.append(mu * float(c.load) * slope / (spin[c.side] * float(c.hertz.a)))
+    c_s, c_n = coefficients
+    v_c = float(unit.orbital_speed) * s.pitch_diameter / 2.0 / math.cos(s.lead_angle)
+    k = orbital_sensitivity(s.ball_diameter, s.pitch_diameter, s.contact_angle)
+    n = s.balls_per_circuit
+    mean = expected_train(4.0 * c_s * c_n / (c_s + c_n), v_c * k * CONTACT_ANGLE_SCATTER, n)
+    mu_bb = float(ball_ball_friction(st, st.contacts[0], mean.compression, 0.1,
+                                     oil.limiting_shear_stress, oil.limiting_shear_coefficient,
+                                     asperity_b=1.42, asperity_c=0.8))  # fmt: skip
+    mass = STEEL_DENSITY * math.pi / 6.0 * s.ball_diameter**3
+    push = 0.1 * mass * (v_c * omega) ** 2 * 2.0 * math.pi / s.ball_diameter  # F_r [N]
+    sliding = float(unit.ball_speed) * omega * s.ball_diameter
+    extra = 2 * s.circuits * mu_bb * 0.5 * push * n * sliding / omega
+    assert full - spacer == pytest.approx(extra, rel=1e-9)

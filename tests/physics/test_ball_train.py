@@ -178,3 +178,42 @@ def test_ball_by_ball_train_pushes_only_and_balances() -> None:
     assert sol.compression[0] == pytest.approx(sol.traction[0], rel=1e-9)
     assert sol.compression[1] == pytest.approx(sol.traction[0] + sol.traction[1], abs=1e-12)
     assert np.all(sol.compression >= 0.0)
+
+
+def test_input_checks() -> None:
+    with pytest.raises(ValueError):
+        creep_slope(0.0)
+    with pytest.raises(ValueError):
+        bridge_maximum(0)
+
+
+def test_bridge_maximum_is_elementwise() -> None:
+    many = bridge_maximum([2, 7, 30])
+    assert [float(v) for v in many] == [float(bridge_maximum(n)) for n in (2, 7, 30)]
+
+
+@pytest.mark.parametrize("creep", [2e-3, 1e-4])
+def test_two_ball_train_in_the_linear_regime(creep: float) -> None:
+    # Two balls whose natural speeds are m + d and m - d, with unlike contacts (a slender
+    # and a round ellipse, different capacities and spin scales): the train runs at m,
+    # each ball is held off by d, its contacts share the creep 2d so that their forces
+    # mu Q G_x'(beta) dv / (omega_s a) are equal (springs in series), the traction is
+    # K d, K = 4 c_s c_n / (c_s + c_n), the compression between them K d, and the creep
+    # dissipates 1/2 K d^2 per ball. ``creep`` sets the screw contact's creep ratio: the
+    # quadrature's G_x/sigma there matches the closed-form slope within 5e-4 (the rule's
+    # kink line), so the forces within 1e-3; the tables' linear interpolation of J
+    # (node spacing 2.5e-4, J quadratic) errs by h^2/(4 sigma^2), 0.4 % at 2e-3, so the
+    # dissipation within 0.8 % (at 1e-4, below one node, only the forces are checked).
+    screw_contact, nut_contact = (3.0, 2e-4, 0.05), (2.0, 1e-4, 1.0)
+    c_s, c_n = (q * float(creep_slope(b)) / s for q, s, b in (screw_contact, nut_contact))
+    stiffness = 4.0 * c_s * c_n / (c_s + c_n)
+    shift = 2.0 * stiffness / c_s  # the screw contact's creep per unit d (its share of 2d)
+    d = creep * screw_contact[1] / shift
+    m = 3.0 * d
+    sol = train_by_ball(np.array([m + d, m - d]), (screw_contact, nut_contact))
+    assert sol.speed == pytest.approx(0.0, abs=1e-9 * d)
+    assert sol.traction[0] == pytest.approx(stiffness * d, rel=1e-3)
+    assert sol.traction[1] == pytest.approx(-stiffness * d, rel=1e-3)
+    assert sol.compression[0] == pytest.approx(stiffness * d, rel=1e-3)
+    if creep > 1e-3:
+        assert sol.creep_power == pytest.approx(stiffness * d * d, rel=8e-3)
