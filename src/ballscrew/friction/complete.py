@@ -46,6 +46,21 @@ each a named component of the result, each from a published law
     which turn the other way and roll on their neighbours, or a cage, whose
     conformal oil-filled pockets carry the train's force in a thick film) do
     not have it, nor the recirculation term's ball-ball part.
+
+    With ``ball_train="tolerance"`` the force is not a ratio but follows from
+    a product tolerance (:mod:`ballscrew.ball_train`): balls whose contact
+    angles scatter by :math:`\sigma_\alpha` (:data:`CONTACT_ANGLE_SCATTER`)
+    want different orbital speeds, the train moves at one, and each ball's
+    groove traction, from the creep of its spinning contacts at their own
+    mixed-film coefficients, adds up along the train into the compressions
+    between neighbours (their expected values in closed form). The term is
+    then :math:`\mu_{BB}\sum\bar P\,\omega_bD_w` over the contacts of
+    each circuit's loaded train, plus the balls' creep. Spacer balls keep the
+    push but roll on their neighbours (only the creep is left); a cage takes
+    each ball's own traction in its pocket, slid at :math:`\omega_bD_w/2`
+    under the ball-ball contact's coefficient (an upper bound: the pocket's
+    conformal oil film is thicker). A 4-point ball is one ball of one train
+    whose stiffness to creep is that of both its contact pairs.
 ``"recirculation"``
     The push that carries the ball train round its return path. In the bends
     of the return (total turning angle :math:`\Theta`) each ball presses
@@ -89,6 +104,7 @@ import numpy as np
 
 from .. import ehl
 from .. import rolling_losses as rl
+from ..ball_train import creep_slope, expected_train, orbital_sensitivity
 from ..contact import hertz
 from ..errors import FloatArray, check_choice, check_nonnegative
 from ..geometry import BallScrew
@@ -102,8 +118,11 @@ from ._common import limiting_shear, model_state
 from ._registry import register
 
 __all__ = [
+    "BALL_TRAINS",
     "BALL_TRAIN_CONSTANT",
     "BALL_TRAIN_SCATTER",
+    "CONTACT_ANGLE_SCATTER",
+    "CONTACT_ANGLE_SCATTER_RANGE",
     "HYSTERESIS_LOSS_FACTOR",
     "RETURN_TURNING_ANGLE",
     "ball_ball_friction",
@@ -126,6 +145,27 @@ value matching each training case alone spreads over 0.031 to 0.047 (16 to
 BALL_TRAIN_SCATTER: tuple[float, float] = (0.0312, 0.0465)
 """16th and 84th percentiles of the per-case values of :data:`BALL_TRAIN_CONSTANT` [-]:
 the constant that would match each training case alone (``scripts/fit_ball_train.py``)."""
+
+CONTACT_ANGLE_SCATTER: float = 0.004997
+r"""Standard deviation of the balls' effective contact angles, :math:`\sigma_\alpha` [rad].
+
+The product tolerance behind the ``ball_train="tolerance"`` model
+(:mod:`ballscrew.ball_train`): 0.286°. Fitted once (``scripts/fit_ball_train.py``)
+on the same training cases as :data:`BALL_TRAIN_CONSTANT`, with every other
+mechanism in place; no published tolerance gives it directly. The value matching
+each training case alone spreads over 0.22° to 0.47° (16 to 84 %, median 0.40°).
+On the reference screw (6.35 mm balls, conformity 0.55) it is the angle a
+scatter of 4.5 µm in the grooves' axial positions gives
+(:func:`ballscrew.ball_train.angle_scatter`), of the order of the lead variation
+within one revolution that the precision grades of ISO 3408-3 allow.
+"""
+
+CONTACT_ANGLE_SCATTER_RANGE: tuple[float, float] = (0.003882, 0.008238)
+"""16th and 84th percentiles of the per-case values of :data:`CONTACT_ANGLE_SCATTER` [rad]."""
+
+BALL_TRAINS = ("ratio", "tolerance")
+"""The ball-train models of :func:`complete`: the fitted ratio :math:`F_B = c_BQ`
+(default) or the train's compatibility from a contact-angle tolerance."""
 
 HYSTERESIS_LOSS_FACTOR: float = 0.007
 r"""Hysteresis loss factor :math:`\alpha_h` of hardened bearing steel [-].
@@ -403,7 +443,9 @@ def complete(
     boundary_friction: float = 0.1,
     limiting_shear_stress: float | None = None,
     limiting_shear_coefficient: float | None = None,
+    ball_train: str = "ratio",
     ball_train_constant: float = BALL_TRAIN_CONSTANT,
+    contact_angle_scatter: float = CONTACT_ANGLE_SCATTER,
     return_turning_angle: float = RETURN_TURNING_ANGLE,
     hysteresis_loss_factor: float = HYSTERESIS_LOSS_FACTOR,
     lubrication: str = "oil",
@@ -427,8 +469,15 @@ def complete(
     limiting_shear_stress, limiting_shear_coefficient : float, optional
         :math:`\tau_0` [Pa] and :math:`\gamma_L` of the full-film traction;
         default: the lubricant's.
+    ball_train : {"ratio", "tolerance"}
+        How the ball-train force is found: ``"ratio"`` (default) :math:`F_B = c_BQ`;
+        ``"tolerance"`` from the train's compatibility with scattered contact
+        angles (:mod:`ballscrew.ball_train`).
     ball_train_constant : float
-        :math:`c_B = F_B/Q` [-]; default :data:`BALL_TRAIN_CONSTANT`.
+        :math:`c_B = F_B/Q` [-] of ``"ratio"``; default :data:`BALL_TRAIN_CONSTANT`.
+    contact_angle_scatter : float
+        :math:`\sigma_\alpha` [rad] of ``"tolerance"``: the standard deviation of the
+        balls' effective contact angles; default :data:`CONTACT_ANGLE_SCATTER`.
     return_turning_angle : float
         :math:`\Theta` [rad]; default :data:`RETURN_TURNING_ANGLE`.
     hysteresis_loss_factor : float
@@ -454,7 +503,9 @@ def complete(
     """
     check_choice("lubrication", lubrication, tuple(_K_RS))
     mu_bl = float(check_nonnegative("boundary_friction", boundary_friction))
+    check_choice("ball_train", ball_train, BALL_TRAINS)
     c_b = float(check_nonnegative("ball_train_constant", ball_train_constant))
+    scatter = float(check_nonnegative("contact_angle_scatter", contact_angle_scatter, "rad"))
     theta = float(check_nonnegative("return_turning_angle", return_turning_angle, "rad"))
     alpha_h = float(check_nonnegative("hysteresis_loss_factor", hysteresis_loss_factor))
     seal = float(check_nonnegative("seal_torque", seal_torque, "N·m"))
@@ -471,9 +522,14 @@ def complete(
     )
     spin = per_speed.spin4 if four else per_speed.spin
     parts["helix_slip"] = _helix_slip(state, mu, spin)
-    parts["ball_ball"], parts["recirculation"] = _ball_train(
-        state, c_b, mu_bl, tau0, gamma_l, theta, asperity_b, asperity_c
-    )
+    if ball_train == "ratio":
+        parts["ball_ball"], parts["recirculation"] = _ratio_train(
+            state, c_b, mu_bl, tau0, gamma_l, theta, asperity_b, asperity_c
+        )
+    else:
+        parts["ball_ball"], parts["recirculation"] = _ball_train(
+            state, mu, spin, scatter, mu_bl, tau0, gamma_l, theta, asperity_b, asperity_c
+        )
     parts["seals"] = np.full(state.shape, seal)
     order = ("rolling", "sliding", "helix_slip", "hysteresis", "ball_ball", "recirculation",
              "four_point", "seals")  # fmt: skip
@@ -569,6 +625,97 @@ def _groove_losses(
 
 def _ball_train(
     state: OperatingState,
+    mu: dict[str, FloatArray],
+    spin: dict[str, float],
+    scatter: float,
+    mu_bl: float,
+    tau0: float,
+    gamma_l: float,
+    theta: float,
+    asperity_b: float,
+    asperity_c: float,
+) -> tuple[FloatArray, FloatArray]:
+    """Ball-ball (or spacer, or cage pocket) and recirculation torques of the ball train [N·m].
+
+    Per circuit, the expected forces of :func:`ballscrew.ball_train.expected_train`: each
+    ball's stiffness to creep from its contacts' mixed-film coefficients, the spread of
+    the natural speeds from the contact-angle scatter ``scatter`` [rad].
+    """
+    screw = state.screw
+    shape = state.shape
+    unit = kinematics(screw, 1.0)
+    # Neighbouring balls slide at omega_b * D_w; per unit screw speed:
+    sliding = float(unit.ball_speed) * screw.ball_diameter
+    centre = float(unit.orbital_speed) * 0.5 * screw.pitch_diameter / math.cos(screw.lead_angle)
+    spread = (
+        centre
+        * scatter
+        * orbital_sensitivity(screw.ball_diameter, screw.pitch_diameter, screw.contact_angle)
+    )
+    mass = STEEL_DENSITY * math.pi * screw.ball_diameter**3 / 6.0
+    omega2 = state.kinematics.screw_speed**2
+    # Push per circuit over omega^2 [N s^2]: mu_bl m v_c^2 Theta / D_w.
+    push = mu_bl * mass * centre**2 * theta / screw.ball_diameter
+    n = screw.balls_per_circuit
+    by_name = {c.name: c for c in state.contacts}
+    # A 4-point ball is one ball of one train with both contact pairs: its stiffness is
+    # the two pairs' together. A double nut has a train per circuit of each half-nut.
+    # A single 2-point nut has balls in one family only.
+    pairs = [[1, 2]] if screw.nut == "single-4point" else [[1], [2]]
+    pairs = [p for p in pairs if by_name[f"screw-{p[0]}"].balls]
+    ball_ball: FloatArray = np.zeros(shape)
+    recirculation: FloatArray = np.zeros(shape)
+    for families in pairs:
+        stiffness: FloatArray = np.zeros(shape)
+        for f in families:
+            c_s = _creep_coefficient(by_name[f"screw-{f}"], mu[f"screw-{f}"], spin["screw"])
+            c_n = _creep_coefficient(by_name[f"nut-{f}"], mu[f"nut-{f}"], spin["nut"])
+            total = c_s + c_n  # 0 only on a lifted-off half-nut
+            series = np.divide(4.0 * c_s * c_n, total, out=np.zeros(shape), where=total > 0.0)
+            stiffness = stiffness + series
+        means = expected_train(stiffness, spread, n)
+        contact = by_name[f"screw-{families[0]}"]
+        if screw.ball_separation == "cage":  # each ball's own traction, in its pocket
+            pocket = ball_ball_friction(
+                state, contact, means.traction, mu_bl, tau0, gamma_l,
+                asperity_b=asperity_b, asperity_c=asperity_c,
+            )  # fmt: skip
+            per_circuit = n * pocket * means.traction * 0.5 * sliding
+            mu_bb: FloatArray = np.zeros(shape)
+        elif screw.ball_separation == "spacer-balls":  # the push stays, the balls roll
+            per_circuit = np.zeros(shape)
+            mu_bb = np.zeros(shape)
+        else:
+            mu_bb = ball_ball_friction(
+                state, contact, means.compression, mu_bl, tau0, gamma_l,
+                asperity_b=asperity_b, asperity_c=asperity_c,
+            )  # fmt: skip
+            per_circuit = (n - 1) * mu_bb * means.compression * sliding
+        ball_ball = ball_ball + screw.circuits * (per_circuit + n * means.creep_power)
+        # The grooves drive the train only where its balls carry load (sign 0: a lifted-off
+        # half-nut's balls are not pushed round).
+        recirc = push * (centre + 0.5 * n * mu_bb * sliding)
+        recirculation = recirculation + screw.circuits * recirc * omega2 * np.sign(contact.load)
+    return ball_ball, recirculation
+
+
+def _creep_coefficient(contact: ContactState, mu: FloatArray, spin: float) -> FloatArray:
+    r"""A contact's rolling-direction creep coefficient times the screw speed [N].
+
+    :math:`c\omega = \mu QG_x'(\beta)/(|\omega_s/\omega|a)`
+    (:func:`ballscrew.ball_train.creep_slope`); 0 where the contact carries no load.
+    """
+    a = np.broadcast_to(contact.hertz.a, np.shape(contact.load))
+    aspect = 1.0 / float(np.max(contact.hertz.ellipticity))
+    capacity = mu * contact.load * float(creep_slope(aspect))
+    result: FloatArray = np.divide(
+        capacity, abs(spin) * a, out=np.zeros(np.broadcast(capacity, a).shape), where=a > 0.0
+    )
+    return result
+
+
+def _ratio_train(
+    state: OperatingState,
     c_b: float,
     mu_bl: float,
     tau0: float,
@@ -577,7 +724,7 @@ def _ball_train(
     asperity_b: float,
     asperity_c: float,
 ) -> tuple[FloatArray, FloatArray]:
-    """Ball-ball sliding and recirculation torques of the ball train [N·m]."""
+    """Ball-ball sliding and recirculation torques of the ball train, :math:`F_B = c_BQ` [N·m]."""
     screw = state.screw
     shape = state.shape
     touching = screw.ball_separation == "none"  # else no surfaces of the train slide

@@ -197,6 +197,9 @@ class Case:
     thermal : dict
         ``[axis]``'s thermal keys in SI (m, kg, K/W, °C), those given: the
         keywords of :class:`ballscrew.axis.thermal.ThermalNode`.
+    contact_angle_scatter : float or None
+        ``[screw] contact_angle_scatter`` [rad]; :meth:`parameters_for` hands it to
+        the complete model with ``ball_train="tolerance"``; None when not given.
     wiper_drag : float
         ``[screw] wiper_drag``: drag torque of the nut's wipers or seals [N·m],
         0 when not given; :meth:`parameters_for` hands it to the models of
@@ -240,6 +243,7 @@ class Case:
     """Where each key's value comes from, by ``section.key``: ``given`` (written in the
     file), ``catalogue`` (the designation's row), ``default`` (the schema's or the
     command's), ``assumed`` (marked so, with its reason in :attr:`assumptions`)."""
+    contact_angle_scatter: float | None = None
 
     def load_ratings(self) -> Ratings:
         """The screw's load ratings: the case's, else C_0a estimated from the geometry."""
@@ -267,6 +271,9 @@ class Case:
         params = dict(self.model_parameters.get(model, {}))
         if self.wiper_drag and model in WIPER_PARAMETERS:
             params[WIPER_PARAMETERS[model]] = self.wiper_drag
+        if self.contact_angle_scatter is not None and model == "complete":
+            params.setdefault("ball_train", "tolerance")
+            params.setdefault("contact_angle_scatter", self.contact_angle_scatter)
         return params
 
     def with_wiper_drag(self, value: Any, *, field: str = "screw.wiper_drag") -> Case:
@@ -345,6 +352,14 @@ def parse_case(text: str, *, source: str = "case") -> Case:
     if s.wiper_drag is not None:
         raw = _unwrap("screw.wiper_drag", s.wiper_drag, notes)
         wiper = _wiper_drag("screw.wiper_drag", raw, st.model_parameters)
+    scatter = None
+    if s.contact_angle_scatter is not None:
+        scatter = si("screw", "contact_angle_scatter", s.contact_angle_scatter, "rad")
+        if not (math.isfinite(scatter) and 0.0 <= scatter < 0.2):
+            raise BallScrewInputError(
+                "screw.contact_angle_scatter", s.contact_angle_scatter,
+                "an angle from 0 to 0.2 rad (11 deg) with its unit, e.g. '0.3 deg'",
+            )  # fmt: skip
     drag = tuple(si("study", f"drag_torques[{i}]", v, "N*m") for i, v in enumerate(st.drag_torques))
     band = tuple(
         si("study", f"measured_range[{i}]", v, "N*m") for i, v in enumerate(st.measured_range)
@@ -396,6 +411,7 @@ def parse_case(text: str, *, source: str = "case") -> Case:
         check=check,
         axis_given=frozenset(data.axis.model_fields_set),
         sources=_sources(data, notes),
+        contact_angle_scatter=scatter,
     )
 
 

@@ -184,6 +184,14 @@ class ScrewSection(BaseModel):
         "catalogue drag torques are measured)",
         "0.05 N*m",
     )
+    contact_angle_scatter: Value | None = _f(
+        None,
+        "angle",
+        "standard deviation of the balls' effective contact angles (a product tolerance); given, "
+        "the complete model takes its ball train from it (ball_train 'tolerance'); default: "
+        "the fitted ratio of the ball-train force to the ball load",
+        "0.3 deg",
+    )
 
 
 class LubricantSection(BaseModel):
