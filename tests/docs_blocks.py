@@ -22,8 +22,8 @@ Skipping is Sybil's ``skip`` directive, visible in the Markdown (``% skip: next 
 or ``<!-- skip: next "why" -->`` where ``%`` would show, as on GitHub's README). The
 expensive blocks carry ``% skip: next if(not slow, reason="slow: why")``: ``slow`` is
 false when pytest runs with ``-m "not slow"`` (``make test-fast``), true otherwise.
-The folder ``examples/`` of the repository is linked into the temporary folder, so the
-commands naming ``examples/...`` find it.
+The folders ``examples/`` and ``src/`` of the repository are linked into the temporary
+folder, so the commands naming ``examples/...`` or the bundled data find them.
 """
 
 from __future__ import annotations
@@ -182,7 +182,8 @@ def _setup(namespace: dict[str, Any]) -> None:
 
     matplotlib.use("Agg")
     folder = tempfile.mkdtemp(prefix="ballscrew-docs-")
-    (Path(folder) / "examples").symlink_to(ROOT / "examples")
+    for name in ("examples", "src"):  # the commands name examples/ and the bundled data
+        (Path(folder) / name).symlink_to(ROOT / name)
     namespace[CWD] = folder
     namespace["_docs_old_cwd"] = os.getcwd()
     namespace.setdefault("slow", True)
