@@ -15,6 +15,7 @@ from ballscrew.errors import BallScrewInputError
 from ballscrew.fit.friction_map import friction_map
 from ballscrew.io.case import load_case
 from ballscrew.report.controller_tables import TABLE_WRITERS
+from ballscrew.report.friction_files import c_header
 from ballscrew.report.friction_fmu import fmu_bytes
 from ballscrew.servo.tables import controller_table
 from shared import ROOT
@@ -92,7 +93,7 @@ def test_the_fmu_equals_the_map_at_its_nodes(case, tmp_path: Path) -> None:  # t
     m = friction_map(case, "complete", speeds=np.geomspace(1.0, 300.0, 6),
                      loads=[-2000.0, 0.0, 2000.0], temperatures=[20.0, 40.0])  # fmt: skip
     folder = tmp_path / "fmu"
-    with zipfile.ZipFile(io.BytesIO(fmu_bytes(m, "test"))) as z:
+    with zipfile.ZipFile(io.BytesIO(fmu_bytes(m, "test", c_header(m, "test")))) as z:
         z.extractall(folder)
     (tmp_path / "build").mkdir()
     build_platform_binary(folder, build_dir=tmp_path / "build")

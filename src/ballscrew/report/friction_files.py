@@ -197,7 +197,7 @@ def fmu_file(m: FrictionMap, version: str) -> bytes:
     """A C-source FMU (FMI 2.0) around :func:`c_header` (:mod:`ballscrew.report.friction_fmu`)."""
     from .friction_fmu import fmu_bytes
 
-    return fmu_bytes(m, version)
+    return fmu_bytes(m, version, c_header(m, version))
 
 
 FORMATS: dict[str, Callable[[FrictionMap, str], bytes]] = {

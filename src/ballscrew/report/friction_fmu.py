@@ -17,7 +17,6 @@ import zipfile
 from xml.sax.saxutils import escape
 
 from ..fit.friction_map import FrictionMap
-from .friction_files import c_header
 
 __all__ = ["MODEL_IDENTIFIER", "fmu_bytes"]
 
@@ -190,9 +189,12 @@ def _entry(archive: zipfile.ZipFile, name: str, data: bytes) -> None:
     archive.writestr(info, data)
 
 
-def fmu_bytes(m: FrictionMap, version: str) -> bytes:
-    """The FMU archive of the map (module docstring), reproducibly."""
-    header = c_header(m, version)
+def fmu_bytes(m: FrictionMap, version: str, header: bytes) -> bytes:
+    """The FMU archive of the map (module docstring) around its C ``header``, reproducibly.
+
+    ``header`` is :func:`ballscrew.report.friction_files.c_header` of the map, handed
+    in so that this module does not import the one that imports it.
+    """
     digest = hashlib.sha256(header).hexdigest()
     guid = f"{{{digest[:8]}-{digest[8:12]}-{digest[12:16]}-{digest[16:20]}-{digest[20:32]}}}"
     source = _SOURCE.replace("@GUID@", guid).replace("@T0@", repr(float(m.temperatures[0])))
