@@ -86,9 +86,11 @@ from .uncertainty import SAMPLES, SEED, VerdictUncertainty, draws, judge, model_
 
 __all__ = ["CHECK_FROM", "AxisCheck", "Criterion", "check_inputs", "run_check", "verdict"]
 
-DEFAULT_LOAD_FACTOR = 1.0
-"""Load factor f_w of the life when the case gives none [-]: ISO 3408-5's own life (the
-lowest of THK's smooth-running range 1.0 to 1.2, A15-40); said in the row and the notes."""
+DEFAULT_LOAD_FACTOR = 1.2
+"""Load factor f_w of the life when the case gives none [-]: 1.2, where THK's normal
+running (1.2 to 1.5, A15-40) begins and its smooth running (1.0 to 1.2) ends, as HIWIN
+and NSK size a machine-tool feed axis; ISO 3408-5's own life (f_w = 1) would be the
+optimistic one. Said in the row and the notes."""
 
 CHECK_FROM = 0.9
 """Utilisation from which a criterion is flagged CHECK rather than OK [-]."""
@@ -317,9 +319,9 @@ def _life_rows(
     if f_w is None:
         f_w, f_w_origin = DEFAULT_LOAD_FACTOR, "default"
         notes.append(
-            f"load factor f_w = {DEFAULT_LOAD_FACTOR:g} (default: ISO 3408-5's life, smooth "
-            "running without impact); THK, HIWIN and NSK size with 1.2 to 1.5 for normal "
-            "running and 1.5 to 3 with impact or vibration (THK A15-40): give check.load_factor"
+            f"load factor f_w = {DEFAULT_LOAD_FACTOR:g} (default: the start of normal running; "
+            "THK A15-40: 1.0 to 1.2 smooth without impact, 1.2 to 1.5 normal, 1.5 to 3 with "
+            "impact or vibration; 1 is ISO 3408-5's own life): give check.load_factor"
         )
     elif any(a.field == "check.load_factor" for a in case.assumptions):
         f_w_origin = "assumed"

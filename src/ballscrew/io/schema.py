@@ -413,7 +413,8 @@ class CheckSection(BaseModel):
         "-",
         "load factor f_w of the life, 1 to 3: the mean load times f_w (THK A15-40: 1.0 to "
         "1.2 smooth running without impact, 1.2 to 1.5 normal running, 1.5 to 3 with impact "
-        "or vibration; none: 1.0, ISO 3408-5's life, and said so)",
+        "or vibration; none: 1.2, where normal running begins, and said so; 1 is ISO 3408-5's "
+        "own life)",
         1.2,
         si="",
     )
