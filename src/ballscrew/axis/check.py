@@ -77,6 +77,7 @@ from ..design.stiffness import (
     torsional_axial_stiffness,
 )
 from ..errors import BallScrewInputError, FloatArray
+from ..io.case import Case
 from ..kinematics import rad_s_to_rpm
 from ..loads import LIFT_OFF_RATIO
 from .duty import EnergyRun, ModelEnergy, run_inputs
@@ -457,42 +458,8 @@ def _stiffness_rows(
     position = np.linspace(0.5 * (span - stroke), 0.5 * (span + stroke), 21)
     k_shaft = shaft_axial_stiffness(d_r, span, position, axis.support)
     peak = float(np.max(np.abs(force)))
-    play = 0.0
-    lifted = False
-    if screw.nut == "single":
-        if peak <= 0.0:
-            raise BallScrewInputError(
-                "screw.nut", "single", "a load on the nut: a single nut without preload and "
-                "without load has no stiffness (give a move with a force or a preloaded nut)",
-            )  # fmt: skip
-        k_nut = design_nut_stiffness(screw, peak)
-        given = case.check.get("axial_play")
-        play = DEFAULT_AXIAL_PLAY if given is None else float(given)
-        origin = "default" if given is None else "given"
-        notes.append(
-            f"single nut: stiffness at the cycle's peak load {peak:.4g} N; its axial play "
-            f"{play * 1e6:.3g} um ({origin}) is added to the lost motion"
-        )
-        if given is None:
-            notes.append(
-                f"axial play {DEFAULT_AXIAL_PLAY * 1e6:g} um (default: THK's clearance G2 of a "
-                "precision nut without preload, 0.02 mm or less, General Catalog A15-19; give "
-                "check.axial_play from the nut's catalogue)"
-            )
-    else:
-        k_nut = design_nut_stiffness(screw)
-        if screw.preload > 0.0 and peak > LIFT_OFF_RATIO * screw.preload:
-            # Past lift-off one half carries the load alone: its tangent stiffness at the peak.
-            lifted = True
-            k_lifted = design_nut_stiffness(screw, peak)
-            notes.append(
-                f"lift-off: the peak load {peak:.4g} N is {peak / screw.preload:.3g} times the "
-                f"preload (past 2^1.5 = {LIFT_OFF_RATIO:.3g}); the nut's stiffness in that state "
-                f"is one half's at the peak load, {k_lifted / 1e6:.4g} N/um against "
-                f"{k_nut / 1e6:.4g} N/um preloaded, and the stiffness, lost motion and "
-                "eigenfrequency rows take it"
-            )
-            k_nut_preloaded, k_nut = k_nut, min(k_nut, k_lifted)
+    k_nut, k_nut_preloaded, play = _nut_state(case, peak, notes)
+    lifted = k_nut_preloaded is not None
     notes.append(
         "nut stiffness: the Hertz contacts' (all balls sharing the load) over "
         f"{CATALOGUE_RIGIDITY_RATIO:g}, the level of THK's and HIWIN's printed rigidity "
@@ -526,7 +493,7 @@ def _stiffness_rows(
         "lost_motion_torsion_um": (twist * 1e6).tolist(),
         "nut_length_mm": nut * 1e3,
     }
-    if lifted:
+    if k_nut_preloaded is not None:
         figures["nut_preloaded_N_per_um"] = k_nut_preloaded / 1e6
     state = ", lifted off" if lifted else ""
     source = (
@@ -549,6 +516,50 @@ def _stiffness_rows(
         rows.append(_info(f"axial eigenfrequency (least{state})", float(np.min(freq)), "Hz",
                           "sqrt(k/m) / 2 pi with the moving mass"))  # fmt: skip
     return rows, figures
+
+
+def _nut_state(case: Case, peak: float, notes: list[str]) -> tuple[float, float | None, float]:
+    """The nut's stiffness [N/m] as the cycle leaves it, its preloaded one past lift-off.
+
+    Returns the stiffness, the preloaded stiffness where the nut lifts off (else None)
+    and the axial play [m] of a nut without preload.
+    """
+    screw = case.screw
+    play, k_nut_preloaded = 0.0, None
+    if screw.nut == "single":
+        if peak <= 0.0:
+            raise BallScrewInputError(
+                "screw.nut", "single", "a load on the nut: a single nut without preload and "
+                "without load has no stiffness (give a move with a force or a preloaded nut)",
+            )  # fmt: skip
+        k_nut = design_nut_stiffness(screw, peak)
+        given = case.check.get("axial_play")
+        play = DEFAULT_AXIAL_PLAY if given is None else float(given)
+        origin = "default" if given is None else "given"
+        notes.append(
+            f"single nut: stiffness at the cycle's peak load {peak:.4g} N; its axial play "
+            f"{play * 1e6:.3g} um ({origin}) is added to the lost motion"
+        )
+        if given is None:
+            notes.append(
+                f"axial play {DEFAULT_AXIAL_PLAY * 1e6:g} um (default: THK's clearance G2 of a "
+                "precision nut without preload, 0.02 mm or less, General Catalog A15-19; give "
+                "check.axial_play from the nut's catalogue)"
+            )
+    else:
+        k_nut = design_nut_stiffness(screw)
+        if screw.preload > 0.0 and peak > LIFT_OFF_RATIO * screw.preload:
+            # Past lift-off one half carries the load alone: its tangent stiffness at the peak.
+            k_lifted = design_nut_stiffness(screw, peak)
+            notes.append(
+                f"lift-off: the peak load {peak:.4g} N is {peak / screw.preload:.3g} times the "
+                f"preload (past 2^1.5 = {LIFT_OFF_RATIO:.3g}); the nut's stiffness in that state "
+                f"is one half's at the peak load, {k_lifted / 1e6:.4g} N/um against "
+                f"{k_nut / 1e6:.4g} N/um preloaded, and the stiffness, lost motion and "
+                "eigenfrequency rows take it"
+            )
+            k_nut_preloaded, k_nut = k_nut, min(k_nut, k_lifted)
+    return k_nut, k_nut_preloaded, play
 
 
 def _creep_drag(run: EnergyRun, model: str) -> float:

@@ -63,16 +63,16 @@ def fit_command(
       ballscrew fit --case my_screw.toml --measured run.csv \\
         --free preload,ball_train_constant --out fit
     """  # noqa: D301 - click needs the literal \b to keep the example lines
+    from ..chain import model_named
     from ..errors import BallScrewInputError
     from ..fit.calibration import FITTABLE, run_fit
-    from ..friction import get_model
     from ..io.case import load_case
     from ..io.measured import read_measured
     from ..io.units import to_si
 
     case = load_case(require_case(case_file, "fit",
                                   "the measurement is fitted on the case's screw"))  # fmt: skip
-    model = get_model(model_name).name
+    model = model_named(model_name).name
     measured = read_measured(measured_file, case.screw)
     free = [f.strip() for f in free_text.split(",") if f.strip()]
     start: dict[str, float] = {}

@@ -377,15 +377,7 @@ def parse_case(text: str, *, source: str = "case") -> Case:
         else si("study", "temperature", st.temperature, "degC")
     )
     axis, thermal = _axis(data, si), _given_si(data, si, _THERMAL_UNITS)
-    motor = {
-        name: si("motor", name, getattr(data.motor, name), unit)
-        for name, unit in _MOTOR_UNITS
-        if getattr(data.motor, name) is not None
-    }
-    for name, value in motor.items():
-        if not (math.isfinite(value) and value > 0.0):
-            raise BallScrewInputError(f"motor.{name}", getattr(data.motor, name), "a value > 0")
-    check = _check(data, si)
+    motor, check = _motor(data, si), _check(data, si)
     notes.extend(Assumption(r.field, r.text, f"read as {r.reading}") for r in read)
     return Case(
         title=data.title,
@@ -413,6 +405,19 @@ def parse_case(text: str, *, source: str = "case") -> Case:
         sources=_sources(data, notes),
         contact_angle_scatter=scatter,
     )
+
+
+def _motor(data: CaseFile, si: Callable[[str, str, Any, str], float]) -> dict[str, float]:
+    """``[motor]``'s given keys in SI, each more than 0."""
+    motor = {
+        name: si("motor", name, getattr(data.motor, name), unit)
+        for name, unit in _MOTOR_UNITS
+        if getattr(data.motor, name) is not None
+    }
+    for name, value in motor.items():
+        if not (math.isfinite(value) and value > 0.0):
+            raise BallScrewInputError(f"motor.{name}", getattr(data.motor, name), "a value > 0")
+    return motor
 
 
 def _case_file(text: str, source: str) -> CaseFile:
