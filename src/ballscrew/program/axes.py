@@ -45,7 +45,7 @@ from typing import Any
 
 import numpy as np
 
-from ..axis.energy import STANDARD_GRAVITY, axis_cycle
+from ..axis.energy import STANDARD_GRAVITY, CycleResult, axis_cycle
 from ..axis.motion import Profile
 from ..axis.setup import AxisSetup, axis_setup
 from ..axis.thermal import ThermalNode, convection_coefficient
@@ -474,19 +474,10 @@ def _one_axis(
     power0 = first.friction_torque * np.abs(omega)
     temp = _temperatures(time, power0 + first.bearing_torque * np.abs(omega), node,
                          case.screw.pitch_diameter, omega, machine.ambient, t0, case)  # fmt: skip
-    t_f = first.friction_torque
-    t_m = first.motor_torque
     top = float(np.max(temp))
-    if top - t0 > 0.05:  # the friction at each instant's temperature
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            warm = axis_cycle(profile, case.screw, case.lubricant, axis, temperature=top,
-                              model=machine.model, **params)  # fmt: skip
-        share = (temp - t0) / (top - t0)
-        t_f = first.friction_torque + share * (warm.friction_torque -
-                                                  first.friction_torque)  # fmt: skip
-        t_m = first.motor_torque + np.sign(omega) * (t_f - first.friction_torque) \
-            / axis.gear_ratio  # fmt: skip
+    t_f, t_m = _torques_at(temp, first, lambda: axis_cycle(
+        profile, case.screw, case.lubricant, axis, temperature=top, model=machine.model,
+        **params), axis.gear_ratio)  # fmt: skip
     power = t_f * np.abs(omega)
     shaft = t_m * first.motor_speed
     dt = np.diff(time)
@@ -501,9 +492,7 @@ def _one_axis(
     g_axial = STANDARD_GRAVITY * math.sin(axis.incline)
     duration = motion.duration
     motor = case.motor
-    notes = list(setup.notes)
-    for text in first.speed_warnings:
-        notes.append(text)
+    notes = [*setup.notes, *first.speed_warnings]
     result = AxisResult(
         letter=letter,
         title=case.title,
@@ -540,6 +529,28 @@ def _one_axis(
         "motor_speed": first.motor_speed,
     }
     return result, series
+
+
+def _torques_at(
+    temp: FloatArray, first: CycleResult, warm_cycle: Callable[[], CycleResult], gear: float
+) -> tuple[FloatArray, FloatArray]:
+    """Friction and motor torque at each instant's temperature [N·m].
+
+    ``first`` is the cycle at the start temperature; where the program warms the screw
+    by more than 0.05 K, the friction is interpolated linearly in temperature between it
+    and the cycle at the top temperature (``warm_cycle``), and the motor torque follows
+    the friction's change through the gear.
+    """
+    t0, top = float(temp[0]), float(np.max(temp))
+    if top - t0 <= 0.05:
+        return first.friction_torque, first.motor_torque
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        warm = warm_cycle()
+    share = (temp - t0) / (top - t0)
+    t_f = first.friction_torque + share * (warm.friction_torque - first.friction_torque)
+    t_m = first.motor_torque + np.sign(first.screw_speed) * (t_f - first.friction_torque) / gear
+    return t_f, t_m
 
 
 def _temperatures(

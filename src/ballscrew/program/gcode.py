@@ -264,15 +264,12 @@ def read_program(text: str, *, arc_tolerance: float = 2e-6, start: Any = (0.0, 0
     )
 
 
-def _apply(
-    state: _State, parsed: dict[str, Any], number: int, rows: list[tuple[Any, ...]],
-    notes: dict[str, str], used: set[str], arc_tolerance: float,
-) -> bool:  # fmt: skip
-    """Apply one line's codes and words to the state; add its block; True at the end."""
-    params: dict[str, float] = dict(parsed["params"])
-    dwell = False
-    ended = False
-    for letter, code in parsed["codes"]:
+def _codes(
+    state: _State, codes: list[tuple[str, int]], number: int, notes: dict[str, str]
+) -> tuple[bool, bool]:
+    """A line's G, M and T codes into the state; (a dwell, the program's end)."""
+    dwell = ended = False
+    for letter, code in codes:
         word = f"{letter}{code}"
         if letter == "T":
             notes.setdefault("T", f"T (tool select, line {number}): skipped, no motion")
@@ -304,6 +301,16 @@ def _apply(
             what = _REFUSED_G.get(code, "a code the reader does not support")
             raise _error(number, word, f"G0-G4, G17-G21, G40, G49, G54, G80, G90, G91, G94 "
                          f"({word} is {what})")  # fmt: skip
+    return dwell, ended
+
+
+def _apply(
+    state: _State, parsed: dict[str, Any], number: int, rows: list[tuple[Any, ...]],
+    notes: dict[str, str], used: set[str], arc_tolerance: float,
+) -> bool:  # fmt: skip
+    """Apply one line's codes and words to the state; add its block; True at the end."""
+    params: dict[str, float] = dict(parsed["params"])
+    dwell, ended = _codes(state, parsed["codes"], number, notes)
     unit = INCH if state.inch else 1e-3
     for key in ("S",):
         if params.pop(key, None) is not None:

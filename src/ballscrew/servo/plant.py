@@ -198,6 +198,42 @@ def frictionless(axis: AxisDynamics) -> AxisDynamics:
                    guide_viscous=0.0)  # fmt: skip
 
 
+def _axis_spring(case: Case, axis: Any, nut_load: float, notes: list[str]) -> tuple[float, float]:
+    """The axis spring between motor and table and the nut's part of it [N/m].
+
+    Shaft tension and torsion with the nut at mid-span, the nut (at ``nut_load`` [N] for
+    a single nut), the thrust bearings: in series, as ``ballscrew check`` adds them.
+    """
+    screw = case.screw
+    lead = screw.lead
+    span: float | None = axis.bearing_span or case.thermal.get("screw_length")
+    d_r = root_diameter(screw) if axis.root_diameter is None else float(axis.root_diameter)
+    position = 0.5 * span if span else None
+    if screw.nut == "single":
+        if nut_load == 0.0:
+            raise BallScrewInputError(
+                "screw.nut", "single", "a preloaded nut or an axial load: a single nut "
+                "without either has no stiffness",
+            )  # fmt: skip
+        k_nut = design_nut_stiffness(screw, abs(nut_load))
+    else:
+        k_nut = design_nut_stiffness(screw)
+    k_bearing = case.check.get("support_stiffness")
+    k_shaft: float | None = None
+    k_twist: float | None = None
+    if position is None or span is None:
+        notes.append("no span: the shaft taken as rigid (give axis.bearing_span)")
+    else:
+        k_shaft = float(shaft_axial_stiffness(d_r, span, position, axis.support))
+        k_twist = float(torsional_axial_stiffness(d_r, position, lead))
+        notes.append(f"nut at mid-span ({position * 1e3:.0f} mm from the thrust bearing): "
+                     "shaft tension and torsion there")  # fmt: skip
+    if k_bearing is None:
+        notes.append("thrust bearings rigid (give check.support_stiffness)")
+    k = float(series_stiffness(k_shaft, k_twist, k_nut, k_bearing))
+    return k, k_nut
+
+
 def axis_dynamics(
     case: Case,
     model: str = "complete",
@@ -246,33 +282,9 @@ def axis_dynamics(
     if not axis.motor_inertia:
         notes.append("no motor inertia in the case (axis.motor_inertia): the motor side is the "
                      "screw and coupling only")  # fmt: skip
-    span: float | None = axis.bearing_span or case.thermal.get("screw_length")
-    d_r = root_diameter(screw) if axis.root_diameter is None else float(axis.root_diameter)
-    position = 0.5 * span if span else None
     weight = -m2 * STANDARD_GRAVITY * math.sin(axis.incline)
     load = float(case.axial_load.flat[0]) if axial_load is None else float(axial_load)
-    if screw.nut == "single":
-        if load + weight == 0.0:
-            raise BallScrewInputError(
-                "screw.nut", "single", "a preloaded nut or an axial load: a single nut "
-                "without either has no stiffness",
-            )  # fmt: skip
-        k_nut = design_nut_stiffness(screw, abs(load + weight))
-    else:
-        k_nut = design_nut_stiffness(screw)
-    k_bearing = case.check.get("support_stiffness")
-    k_shaft: float | None = None
-    k_twist: float | None = None
-    if position is None or span is None:
-        notes.append("no span: the shaft taken as rigid (give axis.bearing_span)")
-    else:
-        k_shaft = float(shaft_axial_stiffness(d_r, span, position, axis.support))
-        k_twist = float(torsional_axial_stiffness(d_r, position, lead))
-        notes.append(f"nut at mid-span ({position * 1e3:.0f} mm from the thrust bearing): "
-                     "shaft tension and torsion there")  # fmt: skip
-    if k_bearing is None:
-        notes.append("thrust bearings rigid (give check.support_stiffness)")
-    k = float(series_stiffness(k_shaft, k_twist, k_nut, k_bearing))
+    k, k_nut = _axis_spring(case, axis, load + weight, notes)
     reduced = m1 * m2 / (m1 + m2)
     damping = 2.0 * STRUCTURAL_DAMPING * math.sqrt(k * reduced)
     notes.append(f"structural damping ratio {STRUCTURAL_DAMPING:g} of the axial mode (assumed)")
