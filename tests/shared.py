@@ -46,3 +46,31 @@ speed = "{speed}"
 temperature = "40 degC"
 axial_load = "{axial_load}"
 {more}"""
+
+
+# A 32 x 10 mm nut (C_a 20 kN, C_0a 50 kN) on a 200 kg horizontal axis, 1.2 m
+# between the supports: the axis check's tests fill in nut, preload, support and sections.
+AXIS_CASE = """
+title = "check test"
+[screw]
+pitch_diameter = "32 mm"
+lead = "10 mm"
+ball_diameter = "6.35 mm"
+loaded_turns = 2.5
+circuits = 2
+nut = "{nut}"
+preload = "{preload}"
+dynamic_load_rating = "20 kN"
+static_load_rating = "50 kN"
+[lubricant]
+name = "PAO ISO VG 68"
+[operation]
+temperature = "20 degC"
+[axis]
+moving_mass = "200 kg"
+bearing_span = "1200 mm"
+root_diameter = "26 mm"
+support = "{support}"
+{axis_extra}
+{sections}
+"""

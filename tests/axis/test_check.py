@@ -14,31 +14,9 @@ from ballscrew.design.sizing import STEEL_EXPANSION, TRAVEL_VARIATION_300
 from ballscrew.design.stiffness import SHAFT_MODULUS, nut_axial_stiffness
 from ballscrew.errors import BallScrewInputError
 from ballscrew.io.case import Case, parse_case
+from shared import AXIS_CASE
 
-BASE = """
-title = "check test"
-[screw]
-pitch_diameter = "32 mm"
-lead = "10 mm"
-ball_diameter = "6.35 mm"
-loaded_turns = 2.5
-circuits = 2
-nut = "{nut}"
-preload = "{preload}"
-dynamic_load_rating = "20 kN"
-static_load_rating = "50 kN"
-[lubricant]
-name = "PAO ISO VG 68"
-[operation]
-temperature = "20 degC"
-[axis]
-moving_mass = "200 kg"
-bearing_span = "1200 mm"
-root_diameter = "26 mm"
-support = "{support}"
-{axis_extra}
-{sections}
-"""
+BASE = AXIS_CASE  # a 32 x 10 mm nut on a 200 kg horizontal axis (tests/shared.py)
 
 MOVE = {"stroke": 0.4, "feed": 0.5, "acceleration": 2.0}
 

@@ -13,6 +13,7 @@ from ballscrew.design.stiffness import design_nut_stiffness
 from ballscrew.errors import BallScrewInputError
 from ballscrew.io.case import load_case, parse_case
 from ballscrew.loads import LIFT_OFF_RATIO
+from shared import AXIS_CASE
 
 Z_AXIS = Path(__file__).resolve().parents[1] / "data" / "z_axis_bnfn2505_5.toml"
 Z_MOVE = {"stroke": 0.3, "feed": 5.0 / 60.0, "acceleration": 2.5, "force": 1000.0}
@@ -66,29 +67,9 @@ def test_below_lift_off_the_row_is_ok_and_the_nut_preloaded() -> None:
         design_nut_stiffness(case.screw) / 1e6)  # fmt: skip
 
 
-SINGLE = """
-title = "single nut"
-[screw]
-pitch_diameter = "32 mm"
-lead = "10 mm"
-ball_diameter = "6.35 mm"
-loaded_turns = 2.5
-circuits = 2
-nut = "single"
-preload = "0 N"
-dynamic_load_rating = "20 kN"
-static_load_rating = "50 kN"
-[lubricant]
-name = "PAO ISO VG 68"
-[operation]
-temperature = "20 degC"
-[axis]
-moving_mass = "200 kg"
-bearing_span = "1200 mm"
-root_diameter = "26 mm"
-support = "fixed-supported"
-{check}
-"""
+SINGLE = AXIS_CASE.format(
+    nut="single", preload="0 N", support="fixed-supported", axis_extra="", sections="{check}"
+)
 
 
 def test_a_nut_without_preload_counts_its_axial_play() -> None:
