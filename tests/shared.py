@@ -74,3 +74,13 @@ support = "{support}"
 {axis_extra}
 {sections}
 """
+
+# THK's worked acceptance example: BNFN4010-5, 3 kN preload (reference 865 N*mm).
+BNFN4010 = """title = "THK BNFN4010-5"
+[screw]
+designation = "40x10 double 2.5x2 6.35"
+pitch_diameter = "41.75 mm"
+preload = "3 kN"
+[lubricant]
+name = "mineral ISO VG 68"
+"""

@@ -11,15 +11,7 @@ from ballscrew.design.catalog_formulas import drag_torque_tolerance, preload_tor
 from ballscrew.errors import BallScrewInputError
 from ballscrew.fit.acceptance import accept_drag_torque
 from cli_runner import run
-
-BNFN4010 = """title = "THK BNFN4010-5"
-[screw]
-designation = "40x10 double 2.5x2 6.35"
-pitch_diameter = "41.75 mm"
-preload = "3 kN"
-[lubricant]
-name = "mineral ISO VG 68"
-"""
+from shared import BNFN4010
 
 
 def test_thk_worked_example() -> None:

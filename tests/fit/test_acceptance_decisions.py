@@ -13,15 +13,7 @@ from ballscrew.errors import BallScrewInputError
 from ballscrew.fit.acceptance import DECISIONS, accept_drag_torque, decide
 from ballscrew.kinematics import rpm_to_rad_s
 from cli_runner import run
-
-BNFN4010 = """title = "THK BNFN4010-5"
-[screw]
-designation = "40x10 double 2.5x2 6.35"
-pitch_diameter = "41.75 mm"
-preload = "3 kN"
-[lubricant]
-name = "mineral ISO VG 68"
-"""
+from shared import BNFN4010
 
 
 def test_iso_14253_zones_on_thks_example() -> None:
