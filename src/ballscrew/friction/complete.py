@@ -628,13 +628,9 @@ def _ball_train(
     mu: dict[str, FloatArray],
     spin: dict[str, float],
     scatter: float,
-    mu_bl: float,
-    tau0: float,
-    gamma_l: float,
-    theta: float,
-    asperity_b: float,
+    mu_bl: float, tau0: float, gamma_l: float, theta: float, asperity_b: float,
     asperity_c: float,
-) -> tuple[FloatArray, FloatArray]:
+) -> tuple[FloatArray, FloatArray]:  # fmt: skip
     """Ball-ball (or spacer, or cage pocket) and recirculation torques of the ball train [N·m].
 
     Per circuit, the expected forces of :func:`ballscrew.ball_train.expected_train`: each
@@ -717,13 +713,9 @@ def _creep_coefficient(contact: ContactState, mu: FloatArray, spin: float) -> Fl
 def _ratio_train(
     state: OperatingState,
     c_b: float,
-    mu_bl: float,
-    tau0: float,
-    gamma_l: float,
-    theta: float,
-    asperity_b: float,
+    mu_bl: float, tau0: float, gamma_l: float, theta: float, asperity_b: float,
     asperity_c: float,
-) -> tuple[FloatArray, FloatArray]:
+) -> tuple[FloatArray, FloatArray]:  # fmt: skip
     """Ball-ball sliding and recirculation torques of the ball train, :math:`F_B = c_BQ` [N·m]."""
     screw = state.screw
     shape = state.shape
