@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
+import warnings
 from pathlib import Path
 
-from ballscrew import lubricants, models
+import numpy as np
+
+from ballscrew import friction_torque, lubricants, models, reference_screw
 
 #: The project's root (the folder holding ``pyproject.toml``).
 ROOT = Path(__file__).resolve().parents[1]
@@ -84,3 +87,19 @@ preload = "3 kN"
 [lubricant]
 name = "mineral ISO VG 68"
 """
+
+
+def synthetic_drag_curve(
+    preload: float = 1500.0, ball_train_constant: float = 0.03
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The complete model's torque on the reference screw at 12 speeds from 10 to 3000 rpm
+    and 20 and 40 degC in PAO ISO VG 68: (speed [rad/s], temperature [degC], torque [N*m]),
+    the "measurement" whose true parameters the fits' tests know."""
+    w, t = (a.ravel() for a in np.meshgrid(np.geomspace(10.0, 3000.0, 12) * np.pi / 30,
+                                           np.array([20.0, 40.0])))  # fmt: skip
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        screw = reference_screw().replace(preload=preload)
+        torque = friction_torque(screw, PAO, speed=w, temperature=t,
+                                 ball_train_constant=ball_train_constant).total  # fmt: skip
+    return w, t, np.asarray(torque)

@@ -24,6 +24,7 @@ from ballscrew.fit.calibration import (
     runs_test,
 )
 from ballscrew.io.measured import MeasuredCurve
+from shared import synthetic_drag_curve
 
 OIL = "PAO ISO VG 68"
 W = np.geomspace(10.0, 3000.0, 12) * np.pi / 30
@@ -31,12 +32,7 @@ TEMPS = np.array([20.0, 40.0])
 
 
 def _truth() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    w, t = (a.ravel() for a in np.meshgrid(W, TEMPS))
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        torque = friction_torque(reference_screw().replace(preload=1500.0), OIL, speed=w,
-                                 temperature=t, ball_train_constant=0.03).total  # fmt: skip
-    return w, t, np.asarray(torque)
+    return synthetic_drag_curve()
 
 
 def _fit(torque: np.ndarray) -> object:

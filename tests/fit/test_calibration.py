@@ -14,6 +14,7 @@ from ballscrew.errors import BallScrewInputError
 from ballscrew.fit.calibration import fit_parameters, fitted_case_toml
 from ballscrew.io.case import parse_case
 from ballscrew.io.measured import MeasuredCurve, parse_measured
+from shared import synthetic_drag_curve
 
 OIL = "PAO ISO VG 68"
 TRUE_PRELOAD, TRUE_CB = 1500.0, 0.03
@@ -22,12 +23,7 @@ TEMPS = np.array([20.0, 40.0])
 
 
 def _truth() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    w, t = (a.ravel() for a in np.meshgrid(W, TEMPS))
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        torque = friction_torque(reference_screw().replace(preload=TRUE_PRELOAD), OIL, speed=w,
-                                 temperature=t, ball_train_constant=TRUE_CB).total  # fmt: skip
-    return w, t, np.asarray(torque)
+    return synthetic_drag_curve(TRUE_PRELOAD, TRUE_CB)
 
 
 def _fit(torque: np.ndarray, free: list[str] | None = None) -> object:
