@@ -27,8 +27,6 @@ from ballscrew.io.measured import MeasuredCurve
 from shared import synthetic_drag_curve
 
 OIL = "PAO ISO VG 68"
-W = np.geomspace(10.0, 3000.0, 12) * np.pi / 30
-TEMPS = np.array([20.0, 40.0])
 
 
 def _truth() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
