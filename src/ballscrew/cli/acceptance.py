@@ -6,7 +6,7 @@ import sys
 
 import click
 
-from .common import own_case_option, require_case, stdout, write_result, writing
+from .common import json_option, own_case_option, require_case, stdout, write_result, writing
 
 __all__ = ["acceptance_command"]
 
@@ -36,8 +36,7 @@ __all__ = ["acceptance_command"]
               "below 0.2 N*m, another grade).")  # fmt: skip
 @click.option("--plot", "plot_file", type=click.Path(dir_okay=False), default=None,
               help="Write the readings against their band (.png or .svg).")  # fmt: skip
-@click.option("--json", "json_file", default=None,
-              help="Write the verdict as JSON to FILE ('-' for standard output).")  # fmt: skip
+@json_option("Write the verdict as JSON to FILE ('-' for standard output).")
 def acceptance_command(
     case_file: str | None, torque_text: str | None, measured_file: str | None,
     reference_text: str, model_name: str, grade: str, uncertainty_text: str | None,

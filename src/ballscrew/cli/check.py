@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING
 import click
 from rich.table import Table
 
-from .common import folder_only, motion, stdout, write_json, writing
+from .common import folder_option, json_option, motion, stdout, write_json, writing
 
 if TYPE_CHECKING:
     from ..axis.check import AxisCheck
@@ -37,13 +37,12 @@ __all__ = ["check_command"]
 @click.option("--run-time", default="1 h", show_default=True,
               help="How long the cycle repeats, for the temperature and the thermal "
               "error.")  # fmt: skip
-@click.option("--json", "json_file", default=None,
-              help="Write the verdicts as JSON to FILE ('-' for standard output).")  # fmt: skip
-@click.option("--out", "out_dir", type=click.Path(file_okay=False), default=None,
-              callback=folder_only,
-              help="Write a report here: the verdicts, utilisation bars, stiffness and lost "
-              "motion over the stroke, temperature and lead error over time (figures, CSV, "
-              "Markdown, HTML).")  # fmt: skip
+@json_option("Write the verdicts as JSON to FILE ('-' for standard output).")
+@folder_option(
+    "Write a report here: the verdicts, utilisation bars, stiffness and lost "
+    "motion over the stroke, temperature and lead error over time (figures, CSV, "
+    "Markdown, HTML)."
+)
 def check_command(
     case_file: str | None,
     move_text: str | None,

@@ -139,6 +139,20 @@ def folder_only(ctx: click.Context, param: click.Parameter, value: str | None) -
     return value
 
 
+def folder_option(text: str, default: str | None = None) -> Callable[[F], F]:
+    """``--out FOLDER``: a report folder (``-`` refused: standard output takes one file)."""
+    return click.option("--out", "out_dir", type=click.Path(file_okay=False),
+                        callback=folder_only, default=default, show_default=default is not None,
+                        metavar="FOLDER", help=text)  # fmt: skip
+
+
+def json_option(text: str = "Write the result as JSON to FILE ('-' for standard output).") -> (
+    Callable[[F], F]
+):  # fmt: skip
+    """``--json FILE|-``: the result as JSON, to a file or standard output."""
+    return click.option("--json", "json_file", default=None, metavar="FILE|-", help=text)
+
+
 def file_option(flag: str, dest: str, text: str) -> Callable[[F], F]:
     """A ``--flag FILE`` option for an output or input file."""
     return click.option(flag, dest, type=click.Path(dir_okay=False), default=None, help=text)

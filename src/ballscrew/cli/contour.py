@@ -9,7 +9,7 @@ import click
 from rich.console import Console
 from rich.table import Table
 
-from .common import folder_only, stdout, write_json, writing
+from .common import folder_option, json_option, stdout, write_json, writing
 
 if TYPE_CHECKING:
     from ..servo.contour import ContourResult
@@ -43,12 +43,10 @@ __all__ = ["contour_command"]
     help="Coulomb friction of each axis' guideways, e.g. '40 N' (default: left out).",
 )
 @click.option("--rigid", is_flag=True, help="One-mass axes (no spring between motor and table).")
-@click.option("--json", "json_file", default=None,
-              help="Write the results as JSON to FILE ('-' for standard output).")  # fmt: skip
-@click.option("--out", "out_dir", type=click.Path(file_okay=False), default=None,
-              callback=folder_only,
-              help="Write a report here: polar plot, reversal, tables (figures, CSV, Markdown, "
-              "HTML, JSON).")  # fmt: skip
+@json_option("Write the results as JSON to FILE ('-' for standard output).")
+@folder_option(
+    "Write a report here: polar plot, reversal, tables (figures, CSV, Markdown, HTML, JSON)."
+)
 def contour_command(
     case_files: tuple[str, ...],
     radius: str,

@@ -11,7 +11,7 @@ from rich.console import Console
 from rich.table import Table
 
 from ..io.files import atomic_folder
-from .common import folder_only, motion, stdout, write_json, writing
+from .common import folder_option, json_option, motion, stdout, write_json, writing
 
 if TYPE_CHECKING:
     from ..axis.duty import EnergyRun
@@ -44,11 +44,8 @@ __all__ = ["energy_command"]
 @click.option("--steady-speeds", default=None,
               help="Also the steady temperature and torque of continuous running at these "
               "speeds, e.g. '500..3000:6 rpm' (under the move's process force).")  # fmt: skip
-@click.option("--out", "out_dir", type=click.Path(file_okay=False), default=None,
-              callback=folder_only,
-              help="Write a report (Markdown, HTML, plots, CSV) into this folder.")  # fmt: skip
-@click.option("--json", "json_file", default=None,
-              help="Write the results as JSON to FILE ('-' for standard output).")  # fmt: skip
+@folder_option("Write a report (Markdown, HTML, plots, CSV) into this folder.")
+@json_option("Write the results as JSON to FILE ('-' for standard output).")
 def energy_command(
     case_file: str | None,
     move_text: str | None,

@@ -9,7 +9,15 @@ from rich.table import Table
 
 from .._version import __version__
 from ..io.files import atomic_folder
-from .common import folder_only, own_case_option, require_case, stdout, write_json, writing
+from .common import (
+    folder_option,
+    json_option,
+    own_case_option,
+    require_case,
+    stdout,
+    write_json,
+    writing,
+)
 
 __all__ = ["fit_command"]
 
@@ -40,11 +48,8 @@ __all__ = ["fit_command"]
     default=None,
     help="Axial load where the CSV has none (default: the case's first).",
 )
-@click.option("--out", "out_dir", type=click.Path(file_okay=False), default=None,
-              callback=folder_only,
-              help="Write the fitted case, residuals (CSV, plot) and a report here.")  # fmt: skip
-@click.option("--json", "json_file", default=None,
-              help="Write the fit as JSON to FILE ('-' for standard output).")  # fmt: skip
+@folder_option("Write the fitted case, residuals (CSV, plot) and a report here.")
+@json_option("Write the fit as JSON to FILE ('-' for standard output).")
 def fit_command(
     case_file: str | None,
     measured_file: str,

@@ -9,7 +9,7 @@ from pathlib import Path
 import click
 from rich.table import Table
 
-from .common import own_case_option, require_case, stdout, write_result, writing
+from .common import json_option, own_case_option, require_case, stdout, write_result, writing
 
 __all__ = ["monitor_command"]
 
@@ -28,8 +28,7 @@ __all__ = ["monitor_command"]
               "'lift-off 3 kN' (the preload below which 3 kN lifts a half-nut off).")  # fmt: skip
 @click.option("--plot", "plot_file", type=click.Path(dir_okay=False), default=None,
               help="Write the figure (.png or .svg).")  # fmt: skip
-@click.option("--json", "json_file", default=None,
-              help="Write the result as JSON to FILE ('-' for standard output).")  # fmt: skip
+@json_option("Write the result as JSON to FILE ('-' for standard output).")
 def monitor_command(
     case_file: str | None, measured_file: str, model_name: str, trend: str,
     limit: str | None, plot_file: str | None, json_file: str | None,

@@ -7,7 +7,7 @@ from pathlib import Path
 import click
 
 from ..io.files import atomic_folder, read_input_text
-from .common import folder_only, progress, stdout, write_json, writing
+from .common import folder_option, json_option, progress, stdout, write_json, writing
 
 __all__ = ["program_command"]
 
@@ -16,11 +16,8 @@ __all__ = ["program_command"]
 @click.argument("program_file", type=click.Path(dir_okay=False))
 @click.option("--machine", "machine_file", required=True, type=click.Path(dir_okay=False),
               help="Machine file: the axes by program letter, their cases and limits.")  # fmt: skip
-@click.option("--out", "out_dir", type=click.Path(file_okay=False), default=None,
-              callback=folder_only,
-              help="Write a report (Markdown, HTML, plots, CSV) into this folder.")  # fmt: skip
-@click.option("--json", "json_file", default=None,
-              help="Write the results as JSON to FILE ('-' for standard output).")  # fmt: skip
+@folder_option("Write a report (Markdown, HTML, plots, CSV) into this folder.")
+@json_option("Write the results as JSON to FILE ('-' for standard output).")
 @click.option("--csv", "csv_file", default=None,
               help="Write the time series (every axis, units in the header) to FILE.")  # fmt: skip
 def program_command(

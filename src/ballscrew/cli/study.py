@@ -8,22 +8,14 @@ import click
 from rich.console import Console
 
 from ..io.files import atomic_folder
-from .common import case_option, file_option, folder_only, progress, writing
+from .common import case_option, file_option, folder_option, progress, writing
 
 __all__ = ["study"]
 
 
 @click.command()
 @case_option
-@click.option(
-    "--out",
-    "out_dir",
-    type=click.Path(file_okay=False),
-    callback=folder_only,
-    default="study-report",
-    show_default=True,
-    help="Folder for figures, CSV, report and run record.",
-)
+@folder_option("Folder for figures, CSV, report and run record.", default="study-report")
 @file_option(
     "--measured",
     "measured_file",

@@ -9,20 +9,14 @@ from rich.console import Console
 from rich.table import Table
 
 from ..io.files import atomic_folder
-from .common import folder_only, progress, stdout, writing
+from .common import folder_option, progress, stdout, writing
 
 __all__ = ["validate"]
 
 
 @click.command()
-@click.option(
-    "--out",
-    "out_dir",
-    type=click.Path(file_okay=False),
-    callback=folder_only,
-    default="validation",
-    show_default=True,
-    help="Folder for validation.csv, summary.csv, the figure and report.md/.html.",
+@folder_option(
+    "Folder for validation.csv, summary.csv, the figure and report.md/.html.", default="validation"
 )
 @click.option(
     "--model", "model_names", multiple=True, help="Model to score; repeat (default: all)."
