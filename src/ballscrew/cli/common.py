@@ -88,21 +88,16 @@ def progress(console: Console) -> Progress:
     )
 
 
-case_option = click.option(
-    "--case",
-    "case_file",
-    type=click.Path(dir_okay=False),
-    default=None,
-    help="Case file (TOML with units); the bundled study case when omitted.",
-)
+def _case_option(text: str) -> Callable[[F], F]:
+    return click.option("--case", "case_file", type=click.Path(dir_okay=False), default=None,
+                        metavar="FILE", help=text)  # fmt: skip
 
 
-own_case_option = click.option(
-    "--case",
-    "case_file",
-    type=click.Path(dir_okay=False),
-    default=None,
-    help="Case file (TOML with units) of YOUR screw: required, the command judges or fits it.",
+case_option = _case_option("Case file (TOML with units); the bundled study case when omitted.")
+"""``--case`` of a command that may show the bundled study case."""
+
+own_case_option = _case_option(
+    "Case file (TOML with units) of YOUR screw: required, the command judges or fits it."
 )
 """``--case`` of a command that judges or fits the user's own screw (no bundled default)."""
 
