@@ -521,3 +521,26 @@ def test_uploads_the_toml_parser_cannot_take_and_points_no_model_solves_are_refu
     response = client.post("/api/torque", json={**CASE, "model": "viscoelastic",
                                                  "speed": "1.7e6 rpm"})  # fmt: skip
     assert response.status_code == 422 and response.json()["error"].startswith("speed = ")
+
+
+def test_a_preload_typed_as_a_force_is_judged_against_an_estimated_rating() -> None:
+    # Issue 34: 25 kN on a 40 x 10 mm screw given by its dimensions was computed silently
+    # (efficiency 11 %, 1.5 kW of loss), while the same preload with a designation was
+    # refused. Without a C_a the largest it could be is taken (C_0a's estimate over the
+    # least C_0a/C_a of the catalogue rows, 1.10): 112.6 kN, of which 25 kN is 22 %.
+    from starlette.testclient import TestClient
+
+    from ballscrew.web import create_app
+
+    fields = {"screw": {"pitch_diameter": "40 mm", "lead": "10 mm", "ball_diameter": "6.35 mm",
+                        "nut": "double", "loaded_turns": 2.5, "circuits": 2,
+                        "preload": "25 kN"},
+              "lubricant": {"name": "mineral ISO VG 68"},
+              "operation": {"speed": "100 rpm"}}  # fmt: skip
+    with TestClient(create_app(allowed_hosts=["testserver"])) as client:
+        answer = client.post("/api/torque", json={**fields, "model": "complete"})
+        assert answer.status_code == 422, answer.text
+        assert answer.json()["field"] == "screw.preload"
+        assert "estimated as the largest it could be" in answer.json()["error"]
+        fields["screw"]["preload"] = "6 kN"  # 5 % of it: computed
+        assert client.post("/api/torque", json={**fields, "model": "complete"}).status_code == 200
