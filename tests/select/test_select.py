@@ -148,9 +148,11 @@ def test_an_unknown_objective_is_refused_with_a_hint() -> None:
 
 def test_a_duty_no_candidate_survives_names_what_fails_them() -> None:
     m = parse_move(MOVE)
-    with pytest.raises(BallScrewInputError, match=r"closest: HIWIN R25-05K4-FSC.*fatigue life"):
+    failing = r"closest: HIWIN R25-05K4-FSC.*fatigue life"
+    with pytest.raises(BallScrewInputError, match=failing) as info:
         run_select(load_case(CASE), profile_from_move(m, 1), diameter=(0.025, 0.025),
                    lead=(0.005, 0.005), preloads=["light"], move=m)  # fmt: skip
+    assert info.value.field == "--move"
 
 
 def test_the_dataset_holds_every_candidate(selection: SelectResult) -> None:
@@ -183,3 +185,10 @@ def test_the_command_prints_the_front_and_writes_its_report(
     code, _, err = run(["select", "--case", str(CASE), "--move", MOVE, "--objective", "price"],
                        capsys)  # fmt: skip
     assert code == 2 and "--objective" in err
+
+
+def test_an_unknown_oil_is_refused_before_any_candidate_runs() -> None:
+    m = parse_move(MOVE)
+    with pytest.raises(BallScrewInputError, match="PAO ISO VG 68") as info:
+        run_select(load_case(CASE), profile_from_move(m, 1), oils=["olive oil"], move=m)
+    assert info.value.field == "--oil"

@@ -113,6 +113,7 @@ def select_command(
         preloads=preloads or DEFAULT_PRELOADS, oils=oils, model=model_name, cycles=cycles,
         temperature=to_si("--temperature", temperature, "degC") if temperature else None,
         run_time=to_si("--run-time", run_time, "s"), move=m,
+        motion_field="--move" if move_text is not None else "--profile",
     )  # fmt: skip
     command = ["ballscrew", "select", "--case", case_file or ""]
     for flag, value in (("--move", move_text), ("--profile", profile_file),

@@ -27,6 +27,7 @@ from typing import Any
 
 import numpy as np
 
+from .. import lubricants
 from ..axis.check import AxisCheck, run_check
 from ..axis.duty import run_energy
 from ..axis.motion import Profile
@@ -286,6 +287,7 @@ def run_select(
     temperature: float | None = None,
     run_time: float = 3600.0,
     move: dict[str, float] | None = None,
+    motion_field: str = "--move",
 ) -> SelectResult:
     """Choose the screw for ``case``'s axis over ``profile`` (module docstring).
 
@@ -302,8 +304,9 @@ def run_select(
     makers, preloads, oils : sequence of str
         Makers to keep, preload classes (:data:`~.candidates.PRELOAD_CLASSES`) and
         oils to try (default: the case's).
-    model, cycles, temperature, run_time, move
-        As for :func:`~ballscrew.axis.duty.run_energy`.
+    model, cycles, temperature, run_time, move, motion_field
+        As for :func:`~ballscrew.axis.duty.run_energy` (``motion_field`` is what
+        the duty was given as, named by the error when no candidate survives).
 
     Raises
     ------
@@ -312,6 +315,11 @@ def run_select(
         candidate survives (naming the closest candidates and what fails them).
     """
     chosen = _check_objectives(objectives)
+    for oil in oils:
+        try:
+            lubricants.get(oil)
+        except BallScrewInputError as exc:
+            raise BallScrewInputError("--oil", oil, exc.allowed) from None
     found = candidates(case.text, diameter=diameter, lead=lead, makers=makers,
                        preloads=preloads, oils=list(oils) or [None],
                        default_oil=case.lubricant.name)  # fmt: skip
@@ -326,7 +334,7 @@ def run_select(
                         if not math.isnan(e.figures["max_utilisation"]) else math.inf)  # fmt: skip
         closest = "; ".join(f"{e.name}: {e.binding}" for e in ranked[:3])
         raise BallScrewInputError(
-            "--move", f"the duty ({len(evaluated)} candidates, none passes)",
+            motion_field, f"the duty ({len(evaluated)} candidates, none passes)",
             f"a duty some candidate survives; closest: {closest}",
         )  # fmt: skip
     columns = [OBJECTIVES[o] for o in chosen]
