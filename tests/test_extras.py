@@ -43,8 +43,9 @@ def test_the_extras_of_pyproject_are_those_the_package_checks_for() -> None:
     assert _names(extras["fast"]) == {m.lower() for m in EXTRAS["fast"]}
     assert _names(extras["program"]) == {m.lower() for m in EXTRAS["program"]}
     assert _names(extras["servo"]) == {m.lower() for m in EXTRAS["servo"]}
+    assert _names(extras["select"]) == {m.lower() for m in EXTRAS["select"]}
     assert not _names(extras["core"]) & {m.lower() for m in OPTIONAL}
-    assert extras["all"] == ["ballscrew[sweep,web,fast,program,servo]"]
+    assert extras["all"] == ["ballscrew[sweep,web,fast,program,servo,select]"]
     assert "ballscrew[all]" in extras["test"]  # the README's two commands install everything
 
 

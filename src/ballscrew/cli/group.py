@@ -30,6 +30,7 @@ from .models import models_command
 from .monitor import monitor_command
 from .program import program_command
 from .screws import screws_command
+from .select import select_command
 from .serve import serve_command
 from .study import study
 from .sweep import sweep_command
@@ -57,6 +58,7 @@ def cli() -> None:
       ballscrew monitor --case my_screw.toml --measured drag_torque.csv --threshold "50 %"
       ballscrew sweep examples/sweep_preload.toml --out preload.zarr --workers 2
       ballscrew program part.nc --machine examples/machine_vmc.toml --out part-report
+      ballscrew select --case my_axis.toml --move "stroke=0.3 m, feed=0.5 m/s" --objective energy
       ballscrew models
       ballscrew lubricants
       ballscrew serve                       # the web calculator on http://127.0.0.1:8050/
@@ -66,7 +68,8 @@ def cli() -> None:
 for command in (demo, study, validate, models_command, lubricants_command, torque,
                 case_command, screws_command, energy_command, check_command, fit_command,
                 export_friction_command, monitor_command, acceptance_command,
-                serve_command, sweep_command, program_command, contour_command):  # fmt: skip
+                serve_command, sweep_command, program_command, contour_command,
+                select_command):  # fmt: skip
     cli.add_command(command)
 
 

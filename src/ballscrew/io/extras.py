@@ -32,6 +32,7 @@ EXTRAS: dict[str, tuple[str, ...]] = {
     "fast": ("numba",),
     "program": ("gcodeparser", "ruckig", "xarray"),
     "servo": ("control",),
+    "select": ("pymoo",),
 }
 """The top-level modules each extra installs (the import names, not the distributions')."""
 

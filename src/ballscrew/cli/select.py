@@ -1,0 +1,175 @@
+"""``ballscrew select``: choose the screw for an axis and its duty (a Pareto front)."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+import click
+from rich.table import Table
+
+from .common import folder_only, motion, own_case_option, require_case, stdout, writing
+
+if TYPE_CHECKING:
+    from ..select import SelectResult
+
+__all__ = ["select_command"]
+
+
+def _bounds(option: str, text: str | None) -> tuple[float, float] | None:
+    """``"25..40 mm"`` (or one value) as (low, high) [m]; None when not given."""
+    if text is None:
+        return None
+    from ..errors import BallScrewInputError
+    from ..io.units import parse_range
+
+    values = parse_range(option, text, "m", default_points=2)
+    low, high = min(values), max(values)
+    if not 0.0 < low <= high:
+        raise BallScrewInputError(option, text, "lengths > 0, e.g. '25..40 mm'")
+    return low, high
+
+
+@click.command("select")
+@own_case_option
+@click.option("--move", "move_text", default=None,
+              help="The duty, as for check: 'stroke=300 mm, feed=30 m/min, acceleration=2 "
+              "m/s^2, force=2 kN'.")  # fmt: skip
+@click.option("--profile", "profile_file", type=click.Path(dir_okay=False), default=None,
+              help="A trajectory CSV instead of --move (as for check).")  # fmt: skip
+@click.option("--cycles", default=1, show_default=True, type=click.IntRange(1, 100_000),
+              help="Back-and-forth cycles.")  # fmt: skip
+@click.option("--objective", "objectives", multiple=True,
+              help="An objective of the front (repeat): energy, life, stiffness, lost_motion, "
+              "thermal_error, motor_margin (default: energy and life).")  # fmt: skip
+@click.option("--diameter", default=None, help="Nominal diameters to try, e.g. '25..40 mm'.")
+@click.option("--lead", default=None, help="Leads to try, e.g. '5..20 mm'.")
+@click.option("--maker", "makers", multiple=True, help="Keep this maker's nuts (repeat).")
+@click.option("--preload", "preloads", multiple=True,
+              help="Preload classes to try (repeat): none, light (3 % of C_a), medium (5 %), "
+              "heavy (8 %); default light, medium and heavy.")  # fmt: skip
+@click.option("--oil", "oils", multiple=True,
+              help="Lubricants to try by name (repeat; default the case's).")  # fmt: skip
+@click.option("--model", "model_name", default="complete", show_default=True,
+              help="Friction model of every candidate.")  # fmt: skip
+@click.option("--temperature", default=None, help="Lubricant temperature (default: the case's).")
+@click.option("--run-time", default="1 h", show_default=True,
+              help="How long the cycle repeats (temperature, thermal error).")  # fmt: skip
+@click.option(
+    "--json",
+    "json_file",
+    default=None,
+    help="Write every candidate's figures as JSON to FILE ('-' for standard output).",
+)
+@click.option("--out", "out_dir", type=click.Path(file_okay=False), default=None,
+              callback=folder_only,
+              help="Write a report here: the front's 2-D projections, every candidate's "
+              "figures (CSV) and the recommended candidate's case file.")  # fmt: skip
+def select_command(
+    case_file: str | None,
+    move_text: str | None,
+    profile_file: str | None,
+    cycles: int,
+    objectives: tuple[str, ...],
+    diameter: str | None,
+    lead: str | None,
+    makers: tuple[str, ...],
+    preloads: tuple[str, ...],
+    oils: tuple[str, ...],
+    model_name: str,
+    temperature: str | None,
+    run_time: str,
+    json_file: str | None,
+    out_dir: str | None,
+) -> None:
+    """Choose the screw: every catalogue nut x preload class x oil on YOUR axis and duty.
+
+    Each candidate runs through the whole axis check (as `ballscrew check`);
+    the feasible ones (no NOT OK row) form a Pareto front over the
+    objectives, and one is recommended: the least energy among those with
+    every utilisation at most 80 %, else the least largest utilisation.
+
+    \b
+    Example:
+      ballscrew select --case examples/vertical_32x5.toml --diameter "25..40 mm" \\
+        --move "stroke=500 mm, feed=12 m/min, acceleration=3 m/s^2, force=1.5 kN, dwell=3 s" \\
+        --objective energy --objective life --objective stiffness
+    """  # noqa: D301 - click needs the literal \b to keep the example lines
+    import time
+
+    from ..io.case import load_case
+    from ..io.extras import require
+    from ..io.units import to_si
+    from ..select import run_select
+    from ..select.candidates import DEFAULT_PRELOADS
+
+    require("select", "ballscrew select", modules=("pymoo",))
+    start = time.process_time()
+    case = load_case(require_case(case_file, "ballscrew select", "the axis, motor and limits "
+                                  "the candidates are checked against"))  # fmt: skip
+    profile, m = motion(move_text, profile_file, cycles)
+    result = run_select(
+        case, profile, objectives=objectives or ("energy", "life"),
+        diameter=_bounds("--diameter", diameter), lead=_bounds("--lead", lead), makers=makers,
+        preloads=preloads or DEFAULT_PRELOADS, oils=oils, model=model_name, cycles=cycles,
+        temperature=to_si("--temperature", temperature, "degC") if temperature else None,
+        run_time=to_si("--run-time", run_time, "s"), move=m,
+        motion_field="--move" if move_text is not None else "--profile",
+    )  # fmt: skip
+    command = ["ballscrew", "select", "--case", case_file or ""]
+    for flag, value in (("--move", move_text), ("--profile", profile_file),
+                        ("--diameter", diameter), ("--lead", lead)):  # fmt: skip
+        if value is not None:
+            command += [flag, value]
+    for flag, values in (("--objective", objectives), ("--maker", makers),
+                         ("--preload", preloads), ("--oil", oils)):  # fmt: skip
+        for v in values:
+            command += [flag, v]
+    result.inputs.update({"command": command, "case_file": case_file})
+    out = stdout(json_file)
+    out.print(_front_table(result))
+    best = result.evaluated[result.recommended]
+    out.print(f"recommended: {best.name}")
+    out.print(f"why: {result.reason}")
+    seconds = time.process_time() - start
+    out.print(f"{len(result.evaluated)} candidates ({len(result.feasible)} feasible, "
+              f"{len(result.front)} on the front) in {seconds:.1f} s of CPU "
+              f"({seconds / len(result.evaluated):.2f} s per candidate)")  # fmt: skip
+    if json_file:
+        from ..report.outputs import result_json
+        from .common import write_json
+
+        write_json(json_file, result_json(result))
+    if out_dir:
+        from pathlib import Path
+
+        from ..io.files import atomic_folder
+        from ..report.select import write_select_report
+
+        with writing("--out", out_dir), atomic_folder(Path(out_dir)) as folder:
+            files = write_select_report(folder, result)
+        click.echo(f"report: {Path(out_dir) / 'report.html'} ({len(files)} files)", err=True)
+
+
+def _number(value: float) -> str:
+    return "-" if value != value else f"{value:.4g}"  # NaN is not equal to itself
+
+
+def _front_table(result: SelectResult) -> Table:
+    """The front: one row per non-dominated feasible candidate, its figures."""
+    from ..select import OBJECTIVES
+
+    table = Table(title=f"{result.title}: Pareto front over {', '.join(result.objectives)} "
+                  f"({len(result.front)} of {len(result.feasible)} feasible, "
+                  f"{len(result.evaluated)} candidates)")  # fmt: skip
+    keys = [OBJECTIVES[o][0] for o in result.objectives]
+    extra = [k for k in ("energy_J", "L10_h", "stiffness_N_per_um", "max_utilisation",
+                         "p_not_ok") if k not in keys]  # fmt: skip
+    table.add_column("candidate")
+    for k in keys + extra:
+        table.add_column(k, justify="right")
+    table.add_column("largest utilisation")
+    for i in result.front:
+        e = result.evaluated[i]
+        mark = " *" if i == result.recommended else ""
+        table.add_row(e.name + mark, *(_number(e.figures[k]) for k in keys + extra), e.binding)
+    return table

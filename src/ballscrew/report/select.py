@@ -1,0 +1,127 @@
+"""The report of ``ballscrew select --out DIR``: the front, its projections, every candidate.
+
+:func:`write_select_report` writes into one folder, every file atomically:
+
+* ``figures/front.png``/``.svg``: the 2-D projections of the objectives, each
+  pair in a panel: feasible candidates, rejected ones (crosses), the front
+  (ringed) and the recommended one (a star);
+* ``data/front.csv``: every candidate's figures (units in the headers), its
+  verdict, binding constraint and whether it is on the front;
+* ``data/select.json``: the result with its inputs;
+* ``recommended.toml``: the recommended candidate's case file, for
+  ``ballscrew check --case recommended.toml`` with the same move;
+* ``report.md`` and ``report.html``.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from pathlib import Path
+
+import numpy as np
+from matplotlib.figure import Figure as MplFigure
+
+from .._version import __version__
+from ..io.files import atomic_write
+from ..select.run import FIGURES, OBJECTIVES, SelectResult
+from .document import Block, write_data, write_pages
+from .outputs import csv_bytes, result_json
+from .plotting import new_figure, write_figures
+
+__all__ = ["write_select_report"]
+
+
+def _number(value: float) -> str:
+    return "-" if not math.isfinite(value) else f"{value:.4g}"
+
+
+def _pairs(result: SelectResult) -> list[tuple[str, str]]:
+    chosen = list(result.objectives)
+    if len(chosen) == 1:
+        chosen.append("stiffness" if chosen[0] != "stiffness" else "energy")
+    return list(itertools.combinations(chosen, 2))
+
+
+def _front_figure(result: SelectResult) -> MplFigure:
+    pairs = _pairs(result)
+    columns = min(len(pairs), 3)
+    rows = math.ceil(len(pairs) / columns)
+    fig = new_figure(4.2 * columns, 3.6 * rows, layout="constrained")
+    front = set(result.front)
+    for k, (a, b) in enumerate(pairs):
+        ax = fig.add_subplot(rows, columns, k + 1)
+        (ka, la, _), (kb, lb, _) = OBJECTIVES[a], OBJECTIVES[b]
+
+        def xy(indices: list[int], ka: str = ka, kb: str = kb) -> tuple[list[float], list[float]]:
+            return ([result.evaluated[i].figures[ka] for i in indices],
+                    [result.evaluated[i].figures[kb] for i in indices])  # fmt: skip
+
+        everyone = range(len(result.evaluated))
+        ok = [i for i in everyone if result.evaluated[i].feasible]
+        bad = [i for i in everyone if not result.evaluated[i].feasible]
+        ax.scatter(*xy(bad), marker="x", color="#b00020", alpha=0.6, label="rejected")
+        ax.scatter(*xy(ok), marker="o", color="#3a7d44", alpha=0.7, label="feasible")
+        ax.scatter(*xy(sorted(front)), marker="o", s=90, facecolors="none",
+                   edgecolors="black", label="Pareto front")  # fmt: skip
+        ax.scatter(*xy([result.recommended]), marker="*", s=220, color="#c58b00",
+                   edgecolors="black", label="recommended", zorder=5)  # fmt: skip
+        ax.set_xlabel(la)
+        ax.set_ylabel(lb)
+        if k == 0:
+            ax.legend(fontsize="small")
+    return fig
+
+
+def _table(result: SelectResult) -> bytes:
+    keys = list(FIGURES)
+    header = ["candidate", "designation", "nut", "preload class", "preload share [-]", "oil",
+              "feasible", "on front", "binding constraint",
+              *(f"{k} [{FIGURES[k]}]" for k in keys)]  # fmt: skip
+    front = set(result.front)
+    rows = [[e.name, e.candidate.row.name, e.candidate.nut, e.candidate.preload_class,
+             e.candidate.preload_share, e.candidate.oil, e.feasible, i in front, e.binding,
+             *(None if not np.isfinite(e.figures[k]) else e.figures[k] for k in keys)]
+            for i, e in enumerate(result.evaluated)]  # fmt: skip
+    return csv_bytes(header, rows)
+
+
+def _blocks(result: SelectResult, caption: str) -> list[Block]:
+    keys = [OBJECTIVES[o][0] for o in result.objectives]
+    rows = [[result.evaluated[i].name + (" (recommended)" if i == result.recommended else ""),
+             *(_number(result.evaluated[i].figures[k]) for k in keys),
+             _number(result.evaluated[i].figures["max_utilisation"]),
+             result.evaluated[i].binding] for i in result.front]  # fmt: skip
+    rejected = [[e.name, e.binding] for e in result.rejected]
+    best = result.evaluated[result.recommended]
+    return [
+        Block("h1", f"Choose the screw: {result.title}"),
+        Block("p", f"Computed by ballscrew {__version__} with the {result.model} model: "
+              f"{len(result.evaluated)} candidates, {len(result.feasible)} feasible, "
+              f"{len(result.front)} on the front over {', '.join(result.objectives)}."),
+        Block("p", f"Recommended: {best.name}. Why: {result.reason}. Its case file is "
+              "recommended.toml (`ballscrew check --case recommended.toml` with the same "
+              "move gives the same numbers)."),
+        Block("h2", "The Pareto front"),
+        Block("table", (["candidate", *keys, "largest utilisation", "binding row"], rows)),
+        Block("img", ("front", caption)),
+        Block("h2", "Rejected candidates and what fails them"),
+        Block("table", (["candidate", "binding constraint"], rejected or [["none", "-"]])),
+    ]  # fmt: skip
+
+
+def write_select_report(out: str | Path, result: SelectResult) -> list[Path]:
+    """Write the report files into ``out``; returns the paths written."""
+    folder = Path(out)
+    (folder / "data").mkdir(parents=True, exist_ok=True)
+    caption = ("Each pair of objectives: feasible candidates (dots), rejected ones (crosses), "
+               "the Pareto front (ringed) and the recommended candidate (star).")  # fmt: skip
+    written, images = write_figures(folder, {"front": _front_figure(result)})
+    written += write_data(folder, [("front", _table(result))])
+    for path, text in ((folder / "data" / "select.json", result_json(result)),
+                       (folder / "recommended.toml",
+                        result.evaluated[result.recommended].candidate.text)):  # fmt: skip
+        atomic_write(path, text.encode("utf-8"))
+        written.append(path)
+    blocks = _blocks(result, caption)
+    return written + write_pages(folder, blocks, f"Choose the screw: {result.title}", images)

@@ -1,0 +1,351 @@
+"""``ballscrew select``: every candidate through the axis check, the Pareto front, one pick.
+
+Each candidate (:mod:`.candidates`) is its own case: the user's axis, motor,
+check limits and duty with the screw replaced. It runs through
+:func:`~ballscrew.axis.duty.run_energy` and :func:`~ballscrew.axis.check.run_check`
+exactly as ``ballscrew check`` runs it, so a candidate's figures are those
+``ballscrew check --case CANDIDATE.toml`` prints. A candidate is feasible when
+no row of its check is NOT OK (every utilisation at most 1); a rejected one
+names its binding constraint, the row with the largest utilisation (or the
+input error that stopped it, e.g. a load above its rating).
+
+The front is the non-dominated set of the feasible candidates over the
+objectives picked (:data:`OBJECTIVES`), sorted by pymoo's non-dominated
+sorting. The recommendation rule: the least energy per cycle among the
+feasible candidates whose every utilisation is at most 0.8; when there is
+none, the least largest utilisation.
+"""
+
+from __future__ import annotations
+
+import difflib
+import math
+import time
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from .. import lubricants
+from ..axis.check import AxisCheck, run_check
+from ..axis.duty import run_energy
+from ..axis.motion import Profile
+from ..errors import BallScrewInputError, FloatArray
+from ..io.case import Case, parse_case
+from .candidates import DEFAULT_PRELOADS, Candidate, candidates
+
+__all__ = [
+    "FIGURES",
+    "OBJECTIVES",
+    "RECOMMEND_BELOW",
+    "Evaluated",
+    "SelectResult",
+    "evaluate",
+    "non_dominated",
+    "run_select",
+]
+
+OBJECTIVES: dict[str, tuple[str, str, int]] = {
+    "energy": ("energy_J", "friction energy per cycle [J]", 1),
+    "life": ("L10_h", "L10 life [h]", -1),
+    "stiffness": ("stiffness_N_per_um", "least axis stiffness [N/um]", -1),
+    "lost_motion": ("lost_motion_um", "largest lost motion at reversal [um]", 1),
+    "thermal_error": ("thermal_error_um", "thermal lead error per 300 mm [um]", 1),
+    "motor_margin": ("motor_margin", "motor margin, 1 - largest motor utilisation", -1),
+}
+"""Each objective: its figure, label and sense (1 = less is better, -1 = more is better)."""
+
+FIGURES: dict[str, str] = {
+    "energy_J": "J",
+    "friction_share": "-",
+    "temperature_rise_K": "K",
+    "thermal_error_um": "um",
+    "L10_h": "h",
+    "stiffness_N_per_um": "N/um",
+    "lost_motion_um": "um",
+    "motor_margin": "-",
+    "max_utilisation": "-",
+    "p_not_ok": "-",
+    "seconds": "s",
+}
+"""The figures kept per candidate, with their units (``p_not_ok``: the worst row's)."""
+
+RECOMMEND_BELOW = 0.8
+"""The largest utilisation of a recommended candidate, if any candidate stays below it."""
+
+_MOTOR_ROWS = ("inertia ratio", "peak torque", "RMS torque", "motor speed")
+
+
+@dataclass(frozen=True)
+class Evaluated:
+    """One candidate's figures (:data:`FIGURES`, NaN where not computed) and verdict."""
+
+    candidate: Candidate
+    figures: dict[str, float]
+    feasible: bool
+    binding: str
+    """The row with the largest utilisation, e.g. ``"fatigue life L10 (273 %)"``."""
+
+    @property
+    def name(self) -> str:
+        """The candidate's name."""
+        return self.candidate.name
+
+    def as_dict(self) -> dict[str, Any]:
+        """The candidate, its figures and verdict as plain values."""
+        c = self.candidate
+        return {
+            "name": c.name,
+            "designation": c.row.name,
+            "nut": c.nut,
+            "preload_class": c.preload_class,
+            "preload_share": c.preload_share,
+            "oil": c.oil,
+            "feasible": self.feasible,
+            "binding": self.binding,
+            **{k: (None if math.isnan(v) else v) for k, v in self.figures.items()},
+        }
+
+
+@dataclass(frozen=True)
+class SelectResult:
+    """A selection: every candidate evaluated, the front, the recommendation and why."""
+
+    title: str
+    objectives: tuple[str, ...]
+    evaluated: tuple[Evaluated, ...]
+    front: tuple[int, ...]
+    """Indices into :attr:`evaluated` of the non-dominated feasible candidates."""
+    recommended: int
+    reason: str
+    model: str
+    inputs: dict[str, Any] = field(default_factory=dict)
+
+    @property
+    def feasible(self) -> list[Evaluated]:
+        """The candidates with no NOT OK row."""
+        return [e for e in self.evaluated if e.feasible]
+
+    @property
+    def rejected(self) -> list[Evaluated]:
+        """The candidates with a NOT OK row or an input error."""
+        return [e for e in self.evaluated if not e.feasible]
+
+    def as_dict(self) -> dict[str, Any]:
+        """The selection as plain values (``ballscrew select --json``)."""
+        return {
+            "title": self.title,
+            "model": self.model,
+            "objectives": list(self.objectives),
+            "recommended": self.evaluated[self.recommended].name,
+            "reason": self.reason,
+            "front": [self.evaluated[i].name for i in self.front],
+            "candidates": [e.as_dict() for e in self.evaluated],
+            "units": dict(FIGURES),
+            "inputs": self.inputs,
+        }
+
+    def dataset(self) -> Any:
+        """Every candidate's figures as an xarray Dataset over ``candidate`` (needs xarray)."""
+        import xarray as xr
+
+        names = [e.name for e in self.evaluated]
+        data: dict[str, Any] = {
+            k: ("candidate", np.array([e.figures[k] for e in self.evaluated]), {"units": u})
+            for k, u in FIGURES.items()
+        }
+        data["feasible"] = ("candidate", np.array([e.feasible for e in self.evaluated]))
+        data["on_front"] = ("candidate", np.isin(np.arange(len(names)), self.front))
+        data["binding"] = ("candidate", np.array([e.binding for e in self.evaluated]))
+        return xr.Dataset(
+            data,
+            coords={"candidate": names},
+            attrs={"objectives": ", ".join(self.objectives), "recommended": names[
+                self.recommended], "reason": self.reason},
+        )  # fmt: skip
+
+
+def _figures(check: AxisCheck, run: Any, model: str, seconds: float) -> dict[str, float]:
+    """The figures of one candidate from its check and energy run."""
+    energy = run.results[model]
+    friction = float(energy.cycle.friction_energy) / energy.cycles
+    load = abs(float(energy.as_dict()["load_work_J"])) / energy.cycles
+    rows = [c for c in check.criteria if c.utilisation is not None]
+    motor = [float(c.utilisation or 0.0) for c in rows if c.name.startswith(_MOTOR_ROWS)]
+    p = [c.uncertainty.p_not_ok for c in rows if c.uncertainty is not None]
+    stiff = check.stiffness.get("axis_N_per_um")
+    lost = check.stiffness.get("lost_motion_um")
+    nan = math.nan
+    return {
+        "energy_J": friction,
+        "friction_share": friction / (friction + load) if friction + load > 0 else nan,
+        "temperature_rise_K": float(check.thermal.get("temperature_rise_K", nan)),
+        "thermal_error_um": float(check.thermal.get("error_per_300mm_um", nan)),
+        "L10_h": float(check.life.get("L10_hours", nan)),
+        "stiffness_N_per_um": float(np.min(stiff)) if stiff is not None else nan,
+        "lost_motion_um": float(np.max(lost)) if lost is not None else nan,
+        "motor_margin": 1.0 - max(motor) if motor else nan,
+        "max_utilisation": max((float(c.utilisation or 0.0) for c in rows), default=nan),
+        "p_not_ok": max(p, default=nan),
+        "seconds": seconds,
+    }
+
+
+def _binding(check: AxisCheck) -> str:
+    rows = [c for c in check.criteria if c.utilisation is not None]
+    worst = max(rows, key=lambda c: float(c.utilisation or 0.0))
+    return f"{worst.name} ({float(worst.utilisation or 0.0):.0%})"
+
+
+def evaluate(
+    candidate: Candidate,
+    profile: Profile,
+    *,
+    model: str = "complete",
+    cycles: int = 1,
+    temperature: float | None = None,
+    run_time: float = 3600.0,
+    move: dict[str, float] | None = None,
+) -> tuple[Evaluated, AxisCheck | None]:
+    """One candidate through ``run_energy`` and ``run_check`` as ``ballscrew check`` runs it.
+
+    An input error of the candidate (a load above its rating, a stroke longer
+    than its span) rejects it with the error as its binding constraint.
+    """
+    start = time.process_time()
+    nan = {k: math.nan for k in FIGURES}
+    try:
+        case = parse_case(candidate.text, source=candidate.name)
+        run = run_energy(case, profile, [model], cycles=cycles, temperature=temperature,
+                         run_time=run_time, move=move)  # fmt: skip
+        check = run_check(run, model)
+    except BallScrewInputError as exc:
+        nan["seconds"] = time.process_time() - start
+        return Evaluated(candidate, nan, False, f"{exc.field}: {exc.allowed}"), None
+    figures = _figures(check, run, model, time.process_time() - start)
+    feasible = check.verdict != "NOT OK"
+    return Evaluated(candidate, figures, feasible, _binding(check)), check
+
+
+def non_dominated(values: FloatArray) -> FloatArray:
+    """Indices of the rows of ``values`` (n x m, all minimised) no other row dominates.
+
+    pymoo's non-dominated sorting (Deb et al. 2002, NSGA-II), its first front.
+    """
+    from pymoo.util.nds.non_dominated_sorting import NonDominatedSorting
+
+    f = np.asarray(values, dtype=float)
+    if len(f) == 0:
+        return np.array([], dtype=int)
+    front = NonDominatedSorting().do(f, only_non_dominated_front=True)
+    return np.sort(np.asarray(front, dtype=int))
+
+
+def _check_objectives(objectives: Sequence[str]) -> tuple[str, ...]:
+    if not objectives:
+        raise BallScrewInputError(
+            "--objective", "(none)", f"one or more of {', '.join(OBJECTIVES)}"
+        )
+    for o in objectives:
+        if o not in OBJECTIVES:
+            close = difflib.get_close_matches(o, list(OBJECTIVES), n=1)
+            hint = f" (did you mean {close[0]}?)" if close else ""
+            raise BallScrewInputError("--objective", o, f"one of {', '.join(OBJECTIVES)}{hint}")
+    return tuple(dict.fromkeys(objectives))
+
+
+def _recommend(evaluated: Sequence[Evaluated], feasible: list[int]) -> tuple[int, str]:
+    below = [i for i in feasible if evaluated[i].figures["max_utilisation"] <= RECOMMEND_BELOW]
+    if below:
+        best = min(below, key=lambda i: evaluated[i].figures["energy_J"])
+        f = evaluated[best].figures
+        return best, (
+            f"least friction energy per cycle ({f['energy_J']:.4g} J) among the {len(below)} "
+            f"feasible candidates whose every utilisation is at most {RECOMMEND_BELOW:.0%} "
+            f"(its largest: {evaluated[best].binding})"
+        )
+    best = min(feasible, key=lambda i: evaluated[i].figures["max_utilisation"])
+    return best, (
+        f"no feasible candidate keeps every utilisation at most {RECOMMEND_BELOW:.0%}: the one "
+        f"with the least largest utilisation, {evaluated[best].binding}"
+    )
+
+
+def run_select(
+    case: Case,
+    profile: Profile,
+    *,
+    objectives: Sequence[str] = ("energy", "life"),
+    diameter: tuple[float, float] | None = None,
+    lead: tuple[float, float] | None = None,
+    makers: Sequence[str] = (),
+    preloads: Sequence[str] = DEFAULT_PRELOADS,
+    oils: Sequence[str] = (),
+    model: str = "complete",
+    cycles: int = 1,
+    temperature: float | None = None,
+    run_time: float = 3600.0,
+    move: dict[str, float] | None = None,
+    motion_field: str = "--move",
+) -> SelectResult:
+    """Choose the screw for ``case``'s axis over ``profile`` (module docstring).
+
+    Parameters
+    ----------
+    case : Case
+        The axis (its ``[axis]``, ``[motor]``, ``[check]``); its screw is replaced.
+    profile : Profile
+        The duty, as ``ballscrew check`` takes it.
+    objectives : sequence of str
+        Keys of :data:`OBJECTIVES` the front is taken over.
+    diameter, lead : (float, float), optional
+        Ranges of the nominal diameter and the lead [m].
+    makers, preloads, oils : sequence of str
+        Makers to keep, preload classes (:data:`~.candidates.PRELOAD_CLASSES`) and
+        oils to try (default: the case's).
+    model, cycles, temperature, run_time, move, motion_field
+        As for :func:`~ballscrew.axis.duty.run_energy` (``motion_field`` is what
+        the duty was given as, named by the error when no candidate survives).
+
+    Raises
+    ------
+    BallScrewInputError
+        For an unknown objective, an empty candidate set, or a duty no
+        candidate survives (naming the closest candidates and what fails them).
+    """
+    chosen = _check_objectives(objectives)
+    for oil in oils:
+        try:
+            lubricants.get(oil)
+        except BallScrewInputError as exc:
+            raise BallScrewInputError("--oil", oil, exc.allowed) from None
+    found = candidates(case.text, diameter=diameter, lead=lead, makers=makers,
+                       preloads=preloads, oils=list(oils) or [None],
+                       default_oil=case.lubricant.name)  # fmt: skip
+    evaluated = tuple(
+        evaluate(c, profile, model=model, cycles=cycles, temperature=temperature,
+                 run_time=run_time, move=move)[0]
+        for c in found
+    )  # fmt: skip
+    feasible = [i for i, e in enumerate(evaluated) if e.feasible]
+    if not feasible:
+        ranked = sorted(evaluated, key=lambda e: e.figures["max_utilisation"]
+                        if not math.isnan(e.figures["max_utilisation"]) else math.inf)  # fmt: skip
+        closest = "; ".join(f"{e.name}: {e.binding}" for e in ranked[:3])
+        raise BallScrewInputError(
+            motion_field, f"the duty ({len(evaluated)} candidates, none passes)",
+            f"a duty some candidate survives; closest: {closest}",
+        )  # fmt: skip
+    columns = [OBJECTIVES[o] for o in chosen]
+    f = np.array([[sense * evaluated[i].figures[key] for key, _, sense in columns]
+                  for i in feasible])  # fmt: skip
+    f = np.where(np.isnan(f), np.inf, f)
+    front = tuple(int(feasible[j]) for j in non_dominated(f))
+    best, reason = _recommend(evaluated, feasible)
+    inputs = {"case": case.title, "model": model, "cycles": cycles, "temperature": temperature,
+              "run_time_s": run_time, "move": dict(move or {}), "objectives": list(chosen),
+              "diameter_m": list(diameter) if diameter else None,
+              "lead_m": list(lead) if lead else None, "makers": list(makers),
+              "preloads": list(preloads), "oils": list(oils), "case_text": case.text}  # fmt: skip
+    return SelectResult(case.title, chosen, evaluated, front, best, reason, model, inputs)

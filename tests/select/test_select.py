@@ -1,0 +1,194 @@
+"""Choosing the screw: the candidates, their checks, the front, the recommendation, the errors.
+
+Every candidate is the example's vertical axis with its screw replaced; the
+checks are those ``ballscrew check`` computes, so a front member run alone
+through the command must give the same numbers (same code, same seed: equal to
+1e-12 relative, the rounding of a repeated computation).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from ballscrew.axis.duty import profile_from_move
+from ballscrew.axis.motion import parse_move
+from ballscrew.errors import BallScrewInputError
+from ballscrew.io.case import load_case, parse_case
+from ballscrew.io.designation import find
+from ballscrew.select import SelectResult, candidates, evaluate, non_dominated, run_select
+from cli_runner import run
+from shared import ROOT
+
+pytest.importorskip("pymoo")
+
+CASE = ROOT / "examples" / "vertical_32x5.toml"
+MOVE = ("stroke=500 mm, feed=12 m/min, acceleration=3 m/s^2, force=1.5 kN, force_from=100 mm, "
+        "force_to=400 mm, dwell=3 s")  # fmt: skip
+
+
+@pytest.fixture(scope="module")
+def selection() -> SelectResult:
+    """The 32 mm nuts of 10 to 20 mm lead at a light preload (six candidates)."""
+    m = parse_move(MOVE)
+    return run_select(load_case(CASE), profile_from_move(m, 1), diameter=(0.032, 0.032),
+                      lead=(0.010, 0.020), preloads=["light"],
+                      objectives=["energy", "life", "stiffness"], move=m)  # fmt: skip
+
+
+def test_a_front_member_checked_alone_gives_the_same_numbers(
+    selection: SelectResult, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    assert selection.front, "the example's duty leaves a front"
+    member = selection.evaluated[selection.front[0]]
+    case = tmp_path / "member.toml"
+    case.write_text(member.candidate.text, encoding="utf-8")
+    code, _, err = run(["check", "--case", str(case), "--move", MOVE, "--json",
+                        str(tmp_path / "c.json")], capsys)  # fmt: skip
+    assert code == 0, err
+    doc = json.loads((tmp_path / "c.json").read_text(encoding="utf-8"))
+    f = member.figures
+    alone = {
+        "L10_h": doc["life"]["L10_hours"],
+        "stiffness_N_per_um": min(doc["stiffness"]["axis_N_per_um"]),
+        "lost_motion_um": max(doc["stiffness"]["lost_motion_um"]),
+        "thermal_error_um": doc["thermal"]["error_per_300mm_um"],
+        "temperature_rise_K": doc["thermal"]["temperature_rise_K"],
+        "max_utilisation": max(
+            c["utilisation"] for c in doc["criteria"] if c["utilisation"] is not None
+        ),
+    }
+    for key, value in alone.items():
+        assert f[key] == pytest.approx(value, rel=1e-12), key
+    assert doc["verdict"] != "NOT OK"
+
+
+def test_every_rejected_candidate_names_its_binding_constraint(selection: SelectResult) -> None:
+    rejected = selection.rejected
+    assert rejected, "the example's filters leave rejected candidates"
+    for e in rejected:
+        assert e.binding, e.name
+        _, check = evaluate(e.candidate, profile_from_move(parse_move(MOVE), 1),
+                                move=parse_move(MOVE))  # fmt: skip
+        if check is None:  # stopped by an input error: the error is the constraint
+            assert ":" in e.binding and math.isnan(e.figures["energy_J"])
+            continue
+        failing = [c for c in check.criteria if c.verdict == "NOT OK"]
+        assert failing, e.name
+        worst = max(failing, key=lambda c: float(c.utilisation or 0.0))
+        assert e.binding.startswith(worst.name), (e.binding, worst.name)
+
+
+def test_feasible_candidates_have_no_row_above_its_limit(selection: SelectResult) -> None:
+    for e in selection.feasible:
+        assert e.figures["max_utilisation"] <= 1.0, e.name
+    for i in selection.front:
+        assert selection.evaluated[i].feasible
+    best = selection.evaluated[selection.recommended]
+    assert best.feasible and "least" in selection.reason
+
+
+def test_the_front_is_not_dominated_and_dominates_the_rest(selection: SelectResult) -> None:
+    keys = [("energy_J", 1), ("L10_h", -1), ("stiffness_N_per_um", -1)]
+    feasible = [i for i, e in enumerate(selection.evaluated) if e.feasible]
+    points = {i: np.array([s * selection.evaluated[i].figures[k] for k, s in keys])
+              for i in feasible}  # fmt: skip
+    for i in feasible:
+        dominated = any(np.all(points[j] <= points[i]) and np.any(points[j] < points[i])
+                        for j in feasible)  # fmt: skip
+        assert dominated == (i not in selection.front), selection.evaluated[i].name
+
+
+def _brute_force(f: np.ndarray) -> list[int]:
+    """Indices no other row dominates (<= in every column and < in one), pair by pair."""
+    n = len(f)
+    return [i for i in range(n) if not any(
+        np.all(f[j] <= f[i]) and np.any(f[j] < f[i]) for j in range(n) if j != i)]  # fmt: skip
+
+
+@pytest.mark.parametrize(("n", "m", "seed"), [(60, 2, 1), (80, 3, 2), (50, 4, 3), (40, 2, 4)])
+def test_non_dominated_matches_a_pairwise_check(n: int, m: int, seed: int) -> None:
+    rng = np.random.default_rng(seed)
+    f = rng.random((n, m))
+    if seed == 4:  # ties and repeated points on a coarse grid
+        f = np.round(f * 4) / 4
+    assert non_dominated(f).tolist() == _brute_force(f)
+
+
+def test_a_candidate_is_the_catalogue_row_at_its_preload_share() -> None:
+    found = candidates(CASE.read_text(encoding="utf-8"), diameter=(0.032, 0.032),
+                       lead=(0.005, 0.005), preloads=["light", "heavy"])  # fmt: skip
+    assert [c.preload_class for c in found] == ["light", "heavy"]
+    row = find("HIWIN R32-05K4-FSC")
+    for c in found:
+        case = parse_case(c.text, source="candidate")
+        assert case.screw.nut == "single-4point"
+        assert case.screw.lead == pytest.approx(0.005)
+        # the share of the catalogue's printed C_a (18.4 kN): 3 % and 8 %
+        assert case.screw.preload == pytest.approx(c.preload_share * 18400.0)
+        assert row.dynamic_load_rating == 18400.0
+        assert case.axis == load_case(CASE).axis  # the axis is the user's, untouched
+
+
+def test_an_empty_candidate_set_names_the_closest_rows() -> None:
+    with pytest.raises(BallScrewInputError, match=r"closest: .*R63") as info:
+        candidates(CASE.read_text(encoding="utf-8"), diameter=(0.07, 0.09))
+    assert info.value.field == "--diameter/--lead/--maker"
+
+
+def test_an_unknown_objective_is_refused_with_a_hint() -> None:
+    m = parse_move(MOVE)
+    with pytest.raises(BallScrewInputError, match="did you mean energy"):
+        run_select(load_case(CASE), profile_from_move(m, 1), objectives=["enrgy"], move=m)
+
+
+def test_a_duty_no_candidate_survives_names_what_fails_them() -> None:
+    m = parse_move(MOVE)
+    failing = r"closest: HIWIN R25-05K4-FSC.*fatigue life"
+    with pytest.raises(BallScrewInputError, match=failing) as info:
+        run_select(load_case(CASE), profile_from_move(m, 1), diameter=(0.025, 0.025),
+                   lead=(0.005, 0.005), preloads=["light"], move=m)  # fmt: skip
+    assert info.value.field == "--move"
+
+
+def test_the_dataset_holds_every_candidate(selection: SelectResult) -> None:
+    pytest.importorskip("xarray")
+    ds = selection.dataset()
+    assert ds.sizes["candidate"] == len(selection.evaluated)
+    assert int(ds["on_front"].sum()) == len(selection.front)
+    doc = selection.as_dict()
+    assert doc["recommended"] in doc["front"] or doc["recommended"] in [
+        c["name"] for c in doc["candidates"] if c["feasible"]
+    ]
+
+
+def test_the_command_prints_the_front_and_writes_its_report(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    out = tmp_path / "report"
+    code, text, err = run(["select", "--case", str(CASE), "--move", MOVE, "--diameter", "25 mm",
+                           "--lead", "10 mm", "--preload", "medium", "--objective", "energy",
+                           "--objective", "lost_motion", "--json", str(tmp_path / "s.json"),
+                           "--out", str(out)], capsys)  # fmt: skip
+    assert code == 0, err
+    assert "recommended: HIWIN R25-10K4-FDC double medium" in text and "why:" in text
+    for name in ("report.html", "report.md", "figures/front.png", "data/front.csv",
+                 "recommended.toml"):  # fmt: skip
+        assert (out / name).is_file(), name
+    doc = json.loads((tmp_path / "s.json").read_text(encoding="utf-8"))
+    assert doc["objectives"] == ["energy", "lost_motion"]
+    assert doc["front"] and doc["inputs"]["command"][1] == "select"
+    code, _, err = run(["select", "--case", str(CASE), "--move", MOVE, "--objective", "price"],
+                       capsys)  # fmt: skip
+    assert code == 2 and "--objective" in err
+
+
+def test_an_unknown_oil_is_refused_before_any_candidate_runs() -> None:
+    m = parse_move(MOVE)
+    with pytest.raises(BallScrewInputError, match="PAO ISO VG 68") as info:
+        run_select(load_case(CASE), profile_from_move(m, 1), oils=["olive oil"], move=m)
+    assert info.value.field == "--oil"
