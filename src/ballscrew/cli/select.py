@@ -100,7 +100,7 @@ def select_command(
     from ..io.extras import require
     from ..io.units import to_si
     from ..select import run_select
-    from ..select.candidates import DEFAULT_PRELOADS
+    from ..select.pool import DEFAULT_PRELOADS
 
     require("select", "ballscrew select", modules=("pymoo",))
     start = time.process_time()

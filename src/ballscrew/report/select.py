@@ -24,7 +24,7 @@ from matplotlib.figure import Figure as MplFigure
 
 from .._version import __version__
 from ..io.files import atomic_write
-from ..select.run import FIGURES, OBJECTIVES, SelectResult
+from ..select.choose import FIGURES, OBJECTIVES, SelectResult
 from .document import Block, write_data, write_pages
 from .outputs import csv_bytes, result_json
 from .plotting import new_figure, write_figures

@@ -4,11 +4,11 @@
 filters leave, at each preload class and oil, on the user's axis and duty,
 and returns a :class:`SelectResult`: every candidate's figures, the
 non-dominated feasible ones over the objectives picked, and one recommended
-by a stated rule (:mod:`.run`).
+by a stated rule (:mod:`.choose`).
 """
 
-from .candidates import PRELOAD_CLASSES, Candidate, candidates
-from .run import OBJECTIVES, Evaluated, SelectResult, evaluate, non_dominated, run_select
+from .choose import OBJECTIVES, Evaluated, SelectResult, evaluate, non_dominated, run_select
+from .pool import PRELOAD_CLASSES, Candidate, candidates
 
 __all__ = [
     "OBJECTIVES",

@@ -1,6 +1,6 @@
 """``ballscrew select``: every candidate through the axis check, the Pareto front, one pick.
 
-Each candidate (:mod:`.candidates`) is its own case: the user's axis, motor,
+Each candidate (:mod:`.pool`) is its own case: the user's axis, motor,
 check limits and duty with the screw replaced. It runs through
 :func:`~ballscrew.axis.duty.run_energy` and :func:`~ballscrew.axis.check.run_check`
 exactly as ``ballscrew check`` runs it, so a candidate's figures are those
@@ -33,7 +33,7 @@ from ..axis.duty import run_energy
 from ..axis.motion import Profile
 from ..errors import BallScrewInputError, FloatArray
 from ..io.case import Case, parse_case
-from .candidates import DEFAULT_PRELOADS, Candidate, candidates
+from .pool import DEFAULT_PRELOADS, Candidate, candidates
 
 __all__ = [
     "FIGURES",
