@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING
 import click
 from rich.table import Table
 
-from .common import folder_option, json_option, motion, stdout, write_json, writing
+from .common import folder_option, json_option, motion, stdout, write_json, write_report
 
 if TYPE_CHECKING:
     from ..axis.check import AxisCheck
@@ -93,14 +93,9 @@ def check_command(
     if json_file:
         write_json(json_file, result_json(result))
     if out_dir:
-        from pathlib import Path
-
-        from ..io.files import atomic_folder
         from ..report.check import write_check_report
 
-        with writing("--out", out_dir), atomic_folder(Path(out_dir)) as folder:
-            files = write_check_report(folder, result)
-        click.echo(f"report: {Path(out_dir) / 'report.html'} ({len(files)} files)", err=True)
+        write_report(out_dir, lambda folder: write_check_report(folder, result))
 
 
 def _number(value: float | None) -> str:

@@ -148,6 +148,19 @@ def json_option(text: str = "Write the result as JSON to FILE ('-' for standard 
     return click.option("--json", "json_file", default=None, metavar="FILE|-", help=text)
 
 
+def write_report(out_dir: str, write: Callable[[Path], list[Path]]) -> None:
+    """A command's report written whole into ``out_dir`` (``--out``) by ``write(folder)``.
+
+    The folder is swapped in when every file is written (:func:`ballscrew.io.files.
+    atomic_folder`); an error names ``--out``; the report's page is said on stderr.
+    """
+    from ..io.files import atomic_folder
+
+    with writing("--out", out_dir), atomic_folder(Path(out_dir)) as folder:
+        files = write(folder)
+    click.echo(f"report: {Path(out_dir) / 'report.html'} ({len(files)} files)", err=True)
+
+
 def file_option(flag: str, dest: str, text: str) -> Callable[[F], F]:
     """A ``--flag FILE`` option for an output or input file."""
     return click.option(flag, dest, type=click.Path(dir_okay=False), default=None, help=text)

@@ -3,15 +3,13 @@
 from __future__ import annotations
 
 import math
-from pathlib import Path
 from typing import TYPE_CHECKING
 
 import click
 from rich.console import Console
 from rich.table import Table
 
-from ..io.files import atomic_folder
-from .common import folder_option, json_option, motion, stdout, write_json, writing
+from .common import folder_option, json_option, motion, stdout, write_json, write_report
 
 if TYPE_CHECKING:
     from ..axis.duty import EnergyRun
@@ -97,9 +95,7 @@ def energy_command(
     if out_dir:
         from ..report.energy import write_energy_report
 
-        with writing("--out", out_dir), atomic_folder(Path(out_dir)) as folder:
-            files = write_energy_report(folder, run)
-        click.echo(f"report: {Path(out_dir) / 'report.html'} ({len(files)} files)", err=True)
+        write_report(out_dir, lambda folder: write_energy_report(folder, run))
     if json_file:
         write_json(json_file, result_json(run))
 

@@ -6,8 +6,8 @@ from pathlib import Path
 
 import click
 
-from ..io.files import atomic_folder, read_input_text
-from .common import folder_option, json_option, progress, stdout, write_json, writing
+from ..io.files import read_input_text
+from .common import folder_option, json_option, progress, stdout, write_json, write_report, writing
 
 __all__ = ["program_command"]
 
@@ -82,8 +82,6 @@ def program_command(
     if out_dir:
         from ..report.program import write_program_report
 
-        with writing("--out", out_dir), atomic_folder(Path(out_dir)) as folder:
-            files = write_program_report(folder, result)
-        click.echo(f"report: {Path(out_dir) / 'report.html'} ({len(files)} files)", err=True)
+        write_report(out_dir, lambda folder: write_program_report(folder, result))
     if json_file:
         write_json(json_file, json_document(result.as_dict()))

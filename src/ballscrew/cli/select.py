@@ -7,7 +7,14 @@ from typing import TYPE_CHECKING
 import click
 from rich.table import Table
 
-from .common import folder_only, motion, own_case_option, require_case, stdout, writing
+from .common import (
+    folder_only,
+    motion,
+    own_case_option,
+    require_case,
+    stdout,
+    write_report,
+)
 
 if TYPE_CHECKING:
     from ..select import SelectResult
@@ -140,14 +147,9 @@ def select_command(
 
         write_json(json_file, result_json(result))
     if out_dir:
-        from pathlib import Path
-
-        from ..io.files import atomic_folder
         from ..report.select import write_select_report
 
-        with writing("--out", out_dir), atomic_folder(Path(out_dir)) as folder:
-            files = write_select_report(folder, result)
-        click.echo(f"report: {Path(out_dir) / 'report.html'} ({len(files)} files)", err=True)
+        write_report(out_dir, lambda folder: write_select_report(folder, result))
 
 
 def _number(value: float) -> str:
