@@ -172,3 +172,53 @@ def test_a_sweep_asking_for_absurd_workers_is_refused(workers: int) -> None:
 
     with pytest.raises(BallScrewInputError, match="--workers"):
         run_sweep(ROOT / "examples" / "sweep_preload.toml", "unused.zarr", workers=workers)
+
+
+def _case_with(section: str, lines: str) -> str:
+    from shared import AXIS_CASE
+
+    text = AXIS_CASE.format(nut="double", preload="1 kN", support="fixed-supported",
+                            axis_extra="", sections="")  # fmt: skip
+    return text.replace(f"[{section}]\n", f"[{section}]\n{lines}\n") if f"[{section}]" in text \
+        else text + f"\n[{section}]\n{lines}\n"  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    ("section", "lines", "field", "why"),
+    [
+        ("screw", 'static_load_rating = "10 kN"', "screw.static_load_rating", "swapped"),
+        ("motor", 'rated_torque = "6 N*m"\npeak_torque = "2 N*m"', "motor.peak_torque",
+         "swapped"),
+        ("axis", 'screw_length = "1000 mm"', "axis.screw_length", "bearing span 1200 mm"),
+    ],
+)  # fmt: skip
+def test_inputs_that_contradict_each_other_are_refused(
+    section: str, lines: str, field: str, why: str
+) -> None:
+    # 0.2.0 used each as given: C_0a below C_a (the case's C_a is 20 kN), a peak torque
+    # below the rated one, a screw shorter than the span between its supports.
+    from ballscrew.io.case import parse_case
+
+    text = _case_with(section, lines)
+    if section == "screw":  # the base case states C_0a; this one replaces it
+        text = text.replace('static_load_rating = "50 kN"\n', "")
+    with pytest.raises(BallScrewInputError, match=field) as err:
+        parse_case(text)
+    assert why in str(err.value)
+
+
+def test_grad_is_refused_for_it_is_two_units() -> None:
+    # 0.2.0: contact_angle = "45 grad" gave 40.5 deg (pint's gradian; 'Grad' is a degree).
+    with pytest.raises(BallScrewInputError, match="gon"):
+        to_si("screw.contact_angle", "45 grad", "rad")
+    assert to_si("screw.contact_angle", "50 gon", "rad") == pytest.approx(np.pi / 4)
+
+
+def test_a_negative_drag_torque_is_refused(capsys: pytest.CaptureFixture[str]) -> None:
+    # 0.2.0 took 'acceptance --torque "-1 N*m"' as +1 N*m.
+    from cli_runner import run
+    from shared import ROOT
+
+    case = ROOT / "src" / "ballscrew" / "data" / "kamalzadeh_stage.toml"
+    code, _, err = run(["acceptance", "--case", str(case), "--torque", "-1 N*m"], capsys)
+    assert code == 2 and "--torque" in err and "0 N*m or more" in err

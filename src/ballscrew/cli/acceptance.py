@@ -69,6 +69,11 @@ def acceptance_command(
     speed = None
     if torque_text is not None:
         torque = np.asarray(parse_range("--torque", torque_text, "N*m"), dtype=float)
+        if np.any(torque < 0.0):  # a drag torque is a magnitude; 0.2.0 took -1 as +1
+            raise BallScrewInputError(
+                "--torque", torque_text,
+                "drag torques of 0 N*m or more (magnitudes; --measured reads a trace's signs)",
+            )  # fmt: skip
     else:
         curve = read_measured(measured_file, case.screw)  # type: ignore[arg-type]
         torque, speed = curve.torque, curve.speed

@@ -377,6 +377,12 @@ def parse_case(text: str, *, source: str = "case") -> Case:
         else si("study", "temperature", st.temperature, "degC")
     )
     axis, thermal = _axis(data, si), _given_si(data, si, _THERMAL_UNITS)
+    if thermal.get("screw_length", math.inf) < axis.get("bearing_span", 0.0):
+        raise BallScrewInputError(
+            "axis.screw_length", data.axis.screw_length,
+            f"at least the bearing span {axis['bearing_span'] * 1e3:g} mm (the screw runs "
+            "through both supports)",
+        )  # fmt: skip
     motor, check = _motor(data, si), _check(data, si)
     notes.extend(Assumption(r.field, r.text, f"read as {r.reading}") for r in read)
     return Case(
@@ -417,6 +423,12 @@ def _motor(data: CaseFile, si: Callable[[str, str, Any, str], float]) -> dict[st
     for name, value in motor.items():
         if not (math.isfinite(value) and value > 0.0):
             raise BallScrewInputError(f"motor.{name}", getattr(data.motor, name), "a value > 0")
+    if motor.get("peak_torque", math.inf) < motor.get("rated_torque", 0.0):
+        raise BallScrewInputError(
+            "motor.peak_torque", data.motor.peak_torque,
+            f"at least the rated torque {motor['rated_torque']:g} N*m (a servo motor's peak is "
+            "3 to 5 times its rated torque); were the two swapped?",
+        )  # fmt: skip
     return motor
 
 
@@ -687,6 +699,12 @@ def _ratings(
             raise BallScrewInputError(
                 f"screw.{name}", getattr(s, name), "a force > 0 and <= 100 MN"
             )
+    if rating is not None and static is not None and static < rating:
+        raise BallScrewInputError(
+            "screw.static_load_rating", s.static_load_rating or catalogue.static,
+            f"at least C_a = {rating / 1e3:.4g} kN: no catalogue nut has C_0a below C_a (the "
+            "bundled rows: C_0a/C_a 1.10 to 3.84); were the two ratings swapped?",
+        )  # fmt: skip
 
     def ratings_of(screw: BallScrew) -> Ratings:
         if static is None:

@@ -348,7 +348,16 @@ def parse_unit(field: str, text: str) -> Any:
     return _pint_unit(field, text, _unit_text(field, text, raw))
 
 
+_TWO_WAY_UNITS = {
+    "grad": "'grad' is a gradian (0.9 deg) to pint but a degree in German (Grad): write "
+    "'deg' for degrees or 'gon' for gradians",
+}
+"""Unit names that are one unit to pint and another to people who type them: refused."""
+
+
 def _pint_unit(field: str, text: str, unit: str) -> Any:
+    if unit.strip() in _TWO_WAY_UNITS:
+        raise BallScrewInputError(field, text, _TWO_WAY_UNITS[unit.strip()])
     try:
         return registry().parse_units(unit) if unit else registry().dimensionless
     except (pint.errors.PintError, ValueError, TypeError, AttributeError, AssertionError,
