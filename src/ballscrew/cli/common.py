@@ -148,6 +148,12 @@ def json_option(text: str = "Write the result as JSON to FILE ('-' for standard 
     return click.option("--json", "json_file", default=None, metavar="FILE|-", help=text)
 
 
+def verbose() -> bool:
+    """Whether ``ballscrew --verbose`` asked for the validity notes in full."""
+    ctx = click.get_current_context(silent=True)
+    return bool(ctx is not None and ctx.find_root().params.get("verbose"))
+
+
 def write_report(out_dir: str, write: Callable[[Path], list[Path]]) -> None:
     """A command's report written whole into ``out_dir`` (``--out``) by ``write(folder)``.
 

@@ -9,7 +9,7 @@ import click
 from rich.console import Console
 from rich.table import Table
 
-from .common import folder_option, json_option, motion, stdout, write_json, write_report
+from .common import folder_option, json_option, motion, stdout, verbose, write_json, write_report
 
 if TYPE_CHECKING:
     from ..axis.duty import EnergyRun
@@ -82,7 +82,8 @@ def energy_command(
         click.echo(f"warning: {finding}", err=True)
     for line in run.speed_warnings:
         click.echo(f"warning: {line}", err=True)
-    for line in warning_lines({n: c.friction for n, c in run.cycles_by_model.items()}):
+    frictions = {n: c.friction for n, c in run.cycles_by_model.items()}
+    for line in warning_lines(frictions, verbose=verbose()):
         click.echo(line, err=True)  # the models' validity issues: lift-off, film, temperature
     for line in run.assumptions:
         click.echo(f"note: {line}", err=True)

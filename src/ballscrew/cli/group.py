@@ -42,7 +42,9 @@ __all__ = ["main"]
 
 @click.group(context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, prog_name="ballscrew")
-def cli() -> None:
+@click.option("--verbose", is_flag=True, default=False,
+              help="Validity notes in full: each range left, its formulas and why.")  # fmt: skip
+def cli(verbose: bool = False) -> None:
     """Ball screw friction torque, efficiency and power loss.
 
     \b

@@ -13,7 +13,7 @@ from rich.console import Console
 from rich.table import Table
 
 from ..errors import BallScrewInputError
-from .common import case_option, file_option, progress, stdout, write_json, writing
+from .common import case_option, file_option, progress, stdout, verbose, write_json, writing
 
 MAX_POINTS = 2_000_000
 """The most operating points ``ballscrew torque`` computes without ``--max-points``."""
@@ -137,7 +137,7 @@ def torque(
             wiper_drag=case.wiper_drag, wiper_models=WIPER_PARAMETERS, on_model=advance,
         )  # fmt: skip
     run = TorqueRun(case, table)
-    for line in run.warning_lines():
+    for line in run.warning_lines(verbose=verbose()):
         click.echo(line, err=True)
     _print_table(run, table_kind, "-" if csv_file == "-" else json_file)
     command = ["ballscrew", *sys.argv[1:]]

@@ -61,9 +61,10 @@ class TorqueRun:
         """The rows as CSV text (see :func:`ballscrew.report.outputs.csv_text`)."""
         return csv_text(self.rows, layout=layout, dialect=dialect)
 
-    def warning_lines(self) -> list[str]:
+    def warning_lines(self, *, verbose: bool = False) -> list[str]:
         """The plausibility warnings and the validity issues as ``ballscrew torque`` prints them."""
-        return [f"warning: {f}" for f in self.findings] + warning_lines(self.results)
+        found = [f"warning: {f}" for f in self.findings]
+        return found + warning_lines(self.results, verbose=verbose)
 
 
 def plausibility_record(case: Case, findings: Sequence[Finding]) -> dict[str, Any]:
@@ -79,14 +80,15 @@ def plausibility_record(case: Case, findings: Sequence[Finding]) -> dict[str, An
     }
 
 
-def warning_lines(results: Mapping[str, FrictionResult]) -> list[str]:
+def warning_lines(results: Mapping[str, FrictionResult], *, verbose: bool = False) -> list[str]:
     """Each model's validity issues as the lines ``ballscrew torque`` prints.
 
-    One ``warning:`` line per issue; issues every ordinary ball screw has
-    (``ValidityIssue.routine``) become one ``note:`` per quantity, naming the
-    models, after the warnings; a routine statement (an issue with no range,
-    such as a grease's note, :func:`ballscrew.validity.grease_note`) is told
-    as it reads.
+    One ``warning:`` line per issue. Issues every ordinary ball screw has
+    (``ValidityIssue.routine``) are notes: by default one short line per set of
+    formulas they leave, naming the models and the values (the ranges and the
+    reason with ``verbose``, as ``ballscrew --verbose`` prints them); a routine
+    statement (an issue with no range, such as a grease's note,
+    :func:`ballscrew.validity.grease_note`) is told as it reads.
     """
     lines: list[str] = []
     routine: dict[str, list[Any]] = {}
@@ -96,6 +98,7 @@ def warning_lines(results: Mapping[str, FrictionResult]) -> list[str]:
                 routine.setdefault(issue.quantity, []).append(issue)
             else:
                 lines.append(f"warning: {issue}")
+    short: dict[tuple[str, str], list[str]] = {}  # (formulas, models) -> the values
     for quantity, found in routine.items():
         worst = max(found, key=lambda i: i.excess)
         names = ", ".join(i.model for i in found)
@@ -103,9 +106,16 @@ def warning_lines(results: Mapping[str, FrictionResult]) -> list[str]:
             text = str(replace(worst, model=""))
             lines.append(f"note: {text} (for {names}; {worst.routine})")
             continue
-        lines.append(
-            f"note: {quantity} up to {worst.value:.3g}, outside {worst.low:.3g} to "
-            f"{worst.high:.3g} ({worst.applies_to}) for {names}: usual for ball screws, "
-            f"{worst.routine}"
-        )
+        if verbose:
+            lines.append(
+                f"note: {quantity} up to {worst.value:.3g}, outside {worst.low:.3g} to "
+                f"{worst.high:.3g} ({worst.applies_to}) for {names}: usual for ball screws, "
+                f"{worst.routine}"
+            )
+            continue
+        symbol = quantity.rsplit(" ", 1)[-1] if len(quantity.rsplit(" ", 1)[-1]) <= 3 else quantity
+        short.setdefault((worst.applies_to, names), []).append(f"{symbol} {worst.value:.3g}")
+    for (formulas, names), values in short.items():
+        lines.append(f"note: {names} extrapolates {formulas} ({', '.join(values)}), as for "
+                     "most ball screws (--verbose says why)")  # fmt: skip
     return lines
