@@ -8,7 +8,15 @@ from typing import TYPE_CHECKING
 import click
 from rich.table import Table
 
-from .common import folder_option, json_option, motion, stdout, write_json, write_report
+from .common import (
+    folder_option,
+    json_option,
+    motion,
+    motion_options,
+    stdout,
+    write_json,
+    write_report,
+)
 
 if TYPE_CHECKING:
     from ..axis.check import AxisCheck
@@ -20,16 +28,7 @@ __all__ = ["check_command"]
 @click.option("--case", "case_file", type=click.Path(dir_okay=False), default=None,
               help="Case file with [axis], and [motor] and [check] (default: the bundled "
               "case).")  # fmt: skip
-@click.option(
-    "--move",
-    "move_text",
-    default=None,
-    help="e.g. 'stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2, force=2 kN' (as for energy).",
-)
-@click.option("--profile", "profile_file", type=click.Path(dir_okay=False), default=None,
-              help="A trajectory CSV instead of --move (as for energy).")  # fmt: skip
-@click.option("--cycles", default=1, show_default=True, type=click.IntRange(1, 100_000),
-              help="Back-and-forth cycles (out, dwell, back, dwell).")  # fmt: skip
+@motion_options
 @click.option("--model", "model_name", default="complete", show_default=True,
               help="Friction model of the torques, the heat and the lost motion.")  # fmt: skip
 @click.option("--temperature", default=None, help="Lubricant temperature, e.g. '40 degC' "

@@ -167,6 +167,23 @@ def write_report(out_dir: str, write: Callable[[Path], list[Path]]) -> None:
     click.echo(f"report: {Path(out_dir) / 'report.html'} ({len(files)} files)", err=True)
 
 
+def motion_options(function: F) -> F:
+    """``--move TEXT``, ``--profile FILE`` and ``--cycles N``: the duty of an axis command."""
+    options = [
+        click.option("--move", "move_text", default=None, metavar="TEXT",
+                     help="e.g. 'stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2, force=2 kN, "
+                     "force_from=50 mm, force_to=250 mm' (also jerk, dwell)."),
+        click.option("--profile", "profile_file", type=click.Path(dir_okay=False), default=None,
+                     metavar="FILE", help="A trajectory CSV (time, position or speed, force; "
+                     "units in the header) instead of --move."),
+        click.option("--cycles", default=1, show_default=True, type=click.IntRange(1, 100_000),
+                     help="Back-and-forth cycles (out, dwell, back, dwell)."),
+    ]  # fmt: skip
+    for option in reversed(options):
+        function = option(function)
+    return function
+
+
 def file_option(flag: str, dest: str, text: str) -> Callable[[F], F]:
     """A ``--flag FILE`` option for an output or input file."""
     return click.option(flag, dest, type=click.Path(dir_okay=False), default=None, help=text)

@@ -9,7 +9,16 @@ import click
 from rich.console import Console
 from rich.table import Table
 
-from .common import folder_option, json_option, motion, stdout, verbose, write_json, write_report
+from .common import (
+    folder_option,
+    json_option,
+    motion,
+    motion_options,
+    stdout,
+    verbose,
+    write_json,
+    write_report,
+)
 
 if TYPE_CHECKING:
     from ..axis.duty import EnergyRun
@@ -21,22 +30,11 @@ __all__ = ["energy_command"]
 @click.command("energy")
 @click.option("--case", "case_file", type=click.Path(dir_okay=False), default=None,
               help="Case file with an [axis] section (default: the bundled case).")  # fmt: skip
-@click.option(
-    "--move",
-    "move_text",
-    default=None,
-    help="e.g. 'stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2, force=2 kN, "
-    "force_from=50 mm, force_to=250 mm' (also jerk, dwell).",
-)
-@click.option("--cycles", default=1, show_default=True, type=click.IntRange(1, 100_000),
-              help="Back-and-forth cycles (out, dwell, back, dwell).")  # fmt: skip
+@motion_options
 @click.option("--model", "model_names", multiple=True, default=["complete"], show_default=True,
               help="Friction model; repeat for several.")  # fmt: skip
 @click.option("--temperature", default=None, help="Lubricant temperature, e.g. '40 degC' "
               "(default: the case's first).")  # fmt: skip
-@click.option("--profile", "profile_file", type=click.Path(dir_okay=False), default=None,
-              help="A trajectory CSV (time, position or speed, force; units in the header) "
-              "instead of --move.")  # fmt: skip
 @click.option("--run-time", default="1 h", show_default=True,
               help="How long the cycle repeats, for the temperature reached.")  # fmt: skip
 @click.option("--steady-speeds", default=None,

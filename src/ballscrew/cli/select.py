@@ -8,8 +8,10 @@ import click
 from rich.table import Table
 
 from .common import (
-    folder_only,
+    folder_option,
+    json_option,
     motion,
+    motion_options,
     own_case_option,
     require_case,
     stdout,
@@ -38,13 +40,7 @@ def _bounds(option: str, text: str | None) -> tuple[float, float] | None:
 
 @click.command("select")
 @own_case_option
-@click.option("--move", "move_text", default=None,
-              help="The duty, as for check: 'stroke=300 mm, feed=30 m/min, acceleration=2 "
-              "m/s^2, force=2 kN'.")  # fmt: skip
-@click.option("--profile", "profile_file", type=click.Path(dir_okay=False), default=None,
-              help="A trajectory CSV instead of --move (as for check).")  # fmt: skip
-@click.option("--cycles", default=1, show_default=True, type=click.IntRange(1, 100_000),
-              help="Back-and-forth cycles.")  # fmt: skip
+@motion_options
 @click.option("--objective", "objectives", multiple=True,
               help="An objective of the front (repeat): energy, life, stiffness, lost_motion, "
               "thermal_error, motor_margin (default: energy and life).")  # fmt: skip
@@ -61,16 +57,11 @@ def _bounds(option: str, text: str | None) -> tuple[float, float] | None:
 @click.option("--temperature", default=None, help="Lubricant temperature (default: the case's).")
 @click.option("--run-time", default="1 h", show_default=True,
               help="How long the cycle repeats (temperature, thermal error).")  # fmt: skip
-@click.option(
-    "--json",
-    "json_file",
-    default=None,
-    help="Write every candidate's figures as JSON to FILE ('-' for standard output).",
+@json_option("Write every candidate's figures as JSON to FILE ('-' for standard output).")
+@folder_option(
+    "Write a report here: the front's 2-D projections, every candidate's figures (CSV) and "
+    "the recommended candidate's case file."
 )
-@click.option("--out", "out_dir", type=click.Path(file_okay=False), default=None,
-              callback=folder_only,
-              help="Write a report here: the front's 2-D projections, every candidate's "
-              "figures (CSV) and the recommended candidate's case file.")  # fmt: skip
 def select_command(
     case_file: str | None,
     move_text: str | None,
