@@ -25,7 +25,13 @@ from pathlib import Path
 from ballscrew.design.catalog_formulas import preload_torque
 from ballscrew.io.files import atomic_write
 from ballscrew.lubricants import get
-from ballscrew.study.validation import acceptance_band, jungnickel_loss_torque, screw_from_row
+from ballscrew.study.validation import (
+    FOUR_POINT_RATIO,
+    FOUR_POINT_SOURCE,
+    acceptance_band,
+    jungnickel_loss_torque,
+    screw_from_row,
+)
 
 ROOT = Path(__file__).resolve().parents[1] / "src" / "ballscrew" / "data"
 PRELOADS = (0.02, 0.05, 0.10)
@@ -103,6 +109,10 @@ def main() -> None:
             for share in PRELOADS:
                 fpr = round(share * float(g["dynamic_load_rating_kN"]) * 1e3, 1)
                 tp = float(preload_torque(fpr, lead * 1e-3, beta))
+                source = CATALOG_SOURCE
+                if nut == "single-4point":  # the rule times the measured 4-point ratio
+                    tp *= FOUR_POINT_RATIO
+                    source = f"{CATALOG_SOURCE}; {FOUR_POINT_SOURCE}"
                 band = acceptance_band(tp)
                 rows.append(
                     base
@@ -118,7 +128,7 @@ def main() -> None:
                         "reference_Nm": round(tp, 5),
                         "reference_low_Nm": round((1.0 - band) * tp, 5),
                         "reference_high_Nm": round((1.0 + band) * tp, 5),
-                        "source": f"{CATALOG_SOURCE}; geometry: {g['source']}",
+                        "source": f"{source}; geometry: {g['source']}",
                     }
                 )  # fmt: skip
         fpr = round(0.05 * float(g["dynamic_load_rating_kN"]) * 1e3, 1)

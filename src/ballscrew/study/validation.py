@@ -73,6 +73,8 @@ from ..lubricants import get as get_lubricant
 
 __all__ = [
     "ACCEPTANCE_BANDS",
+    "FOUR_POINT_RATIO",
+    "FOUR_POINT_SOURCE",
     "ModelScore",
     "ReferenceCase",
     "ScoreRow",
@@ -320,10 +322,39 @@ def _vogel_cameron(lubricant: Lubricant) -> tuple[float, float, float]:
     return a, b, nu40
 
 
+FOUR_POINT_RATIO = 1.25
+r"""Drag torque of a 4-point single nut over a double nut's at equal preload [-].
+
+The makers print one preload drag-torque rule for every way of preloading
+(THK General Catalog A-688; HIWIN), but THK says that preload by oversize
+balls raises the torque through the balls' differential slip and spin
+(A-768). Two published figures put a number on it:
+
+- SKF's constant friction coefficients for bearings under normal conditions
+  are 0.0024 for a four-point contact ball bearing and 0.0020 for a
+  single-row angular contact ball bearing (SKF, *Rolling bearings*, the
+  frictional-moment chapter): 1.2;
+- Jungnickel's loss law fitted to measured ball screw losses (TU Dresden
+  2010, eq. 9.49) gives a 4-point nut 1.25 to 1.32 times what one set of
+  preloaded balls of a double nut loses, over the scorecard's sizes at
+  1000 rpm (its separate exponents for 4-point contact; this package counts
+  both halves of a double nut, :func:`jungnickel_loss_torque`, which halves
+  that figure).
+
+So the scorecard judges a 4-point nut against 1.25 times the rule, inside
+the makers' band at that level, and a double nut against the rule itself.
+"""
+
+FOUR_POINT_SOURCE = (
+    "4-point nuts: 1.25 x the rule (THK A-768: oversize-ball preload adds differential slip "
+    "and spin; SKF's constant friction coefficients 0.0024/0.0020 = 1.2 for four-point over "
+    "angular contact bearings; Jungnickel's law 1.25-1.32 per preloaded ball set)"
+)
+
 TREND_SOURCE = (
     "measured drag torque rises with speed and falls with temperature (Jungnickel 2010: "
     "T ~ (eta n)^0.5; T20/T40 of his law about 1.8); roughly linear in preload (Zhou et al. "
-    "2016; catalogue formula); 4-point/double from Jungnickel's law about 1.3"
+    "2016; catalogue formula); 4-point/double: FOUR_POINT_RATIO's sources, 1.2 to 1.32"
 )
 EXPONENT_SOURCE = (
     "Jungnickel (2010) loss law (as implemented in Thermca): torque ~ (eta n)^0.512 and "
@@ -366,7 +397,7 @@ def _trend_rows(model: str) -> list[ScoreRow]:
         ("trend: speed exponent 100-1000 rpm", 0.3, 0.05, 0.6, exponent(t1000, t100, 10.0)),
         ("trend: speed exponent 1000-3000 rpm", 0.5, 0.1, 0.7, exponent(t3000, t1000, 3.0)),
         ("trend: preload exponent 1-4 kN", 0.8, 0.5, 1.1, exponent(hi, lo, 4.0)),
-        ("trend: 4-point/double nut", 1.3, 1.0, 1.6, ratio(four, t1000)),
+        ("trend: 4-point/double nut", FOUR_POINT_RATIO, 1.0, 1.6, ratio(four, t1000)),
     ]
     return [
         ScoreRow(name, "trend", TREND_SOURCE, ref, low, high, "-", model, value, False)
@@ -459,6 +490,41 @@ def trend_slopes(screws: list[BallScrew], ratios: npt.ArrayLike) -> tuple[FloatA
     return slopes, half
 
 
+RATIO_SOURCE = (
+    "4-point over double nut at equal preload, size by size on the catalogue cases (100 rpm, "
+    "20 C): each within 1.0-1.6, their median within 1.15-1.40 (SKF 1.2; Jungnickel's law "
+    "1.25-1.32 per preloaded ball set; THK A-768)"
+)
+
+
+def _four_point_rows(model: str, cases: list[ReferenceCase], torque: list[float]) -> list[ScoreRow]:
+    """The model's 4-point over double nut of every catalogue size and preload, and their median."""
+    double = {c.case: v for c, v in zip(cases, torque, strict=True)
+              if c.kind == "catalog" and c.screw.nut == "double"}  # fmt: skip
+    rows = []
+    for case, value in zip(cases, torque, strict=True):
+        if case.kind != "catalog" or case.screw.nut != "single-4point":
+            continue
+        partner = double.get(case.case.replace(" single-4point ", " double "))
+        if partner is None:
+            continue
+        r = value / partner if partner > 0 else math.nan
+        rows.append(
+            ScoreRow(f"{case.case.replace(' single-4point', '')}: 4-point/double", "ratio",
+                     RATIO_SOURCE, FOUR_POINT_RATIO, 1.0, 1.6, "-", model, r, False,
+                     nut="single-4point")
+        )  # fmt: skip
+    if rows:
+        values = [r.predicted for r in rows]
+        median = float(np.median(values)) if all(map(math.isfinite, values)) else math.nan
+        rows.append(
+            ScoreRow("median 4-point/double over the catalogue sizes", "ratio-median",
+                     RATIO_SOURCE, FOUR_POINT_RATIO, 1.15, 1.40, "-", model, median, False,
+                     nut="single-4point")
+        )  # fmt: skip
+    return rows
+
+
 def _slope_rows(model: str, cases: list[ReferenceCase], torque: list[float]) -> list[ScoreRow]:
     rows = []
     for nut, label in (("double", "double nuts"), ("single-4point", "4-point nuts")):
@@ -504,6 +570,7 @@ def score(
         if trends:
             rows.extend(_exponent_rows(name, cases, torque))
             rows.extend(_slope_rows(name, cases, torque))
+            rows.extend(_four_point_rows(name, cases, torque))
             rows.extend(_trend_rows(name))
         if progress is not None:
             progress(name)
@@ -515,6 +582,8 @@ SCORE_GROUPS: tuple[tuple[str, Callable[[ScoreRow], bool]], ...] = (
     ("of which training rows", lambda r: r.kind == "catalog" and r.nut == "double" and r.training),
     ("of which test rows", lambda r: r.kind == "catalog" and r.nut == "double" and not r.training),
     ("4-point nuts in makers' band", lambda r: r.kind == "catalog" and r.nut == "single-4point"),
+    ("4-point/double per size (1.0-1.6)", lambda r: r.kind == "ratio"),
+    ("median 4-point/double (1.15-1.40)", lambda r: r.kind == "ratio-median"),
     ("Jungnickel level (factor 2)", lambda r: r.kind == "jungnickel"),
     ("Jungnickel exponents (factor 1.5)", lambda r: r.kind == "exponent"),
     ("no trend (|slope| < 0.2)", lambda r: r.kind == "no-trend"),
