@@ -409,3 +409,17 @@ def test_four_point_ratio_rows_are_the_models_own_ratio_size_by_size() -> None:
     median = next(r for r in rows if r.kind == "ratio-median")
     assert median.predicted == pytest.approx(float(np.median([r.predicted for r in ratios])))
     assert (median.low, median.high) == (1.15, 1.40)
+    # the reference ratio lies inside the published ones: SKF's 0.0024/0.0020 = 1.2 and
+    # Jungnickel's law per preloaded ball set, 2 x 0.624 to 2 x 0.659 over these sizes
+    assert 1.2 <= row.reference <= 1.32 and median.reference == row.reference
+
+
+def test_four_point_ratio_of_a_zero_double_torque_is_not_a_number() -> None:
+    # A model that gives a double nut no torque has no ratio (not a division error).
+    from ballscrew.study import validation
+
+    four = next(c for c in CASES if c.kind == "catalog" and c.screw.nut == "single-4point")
+    double = next(c for c in CASES if c.case == four.case.replace(" single-4point ", " double "))
+    rows = validation._four_point_rows("m", [double, four], [0.0, 0.5])
+    assert math.isnan(rows[0].predicted) and not rows[0].within
+    assert math.isnan(rows[-1].predicted)
