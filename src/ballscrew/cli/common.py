@@ -14,7 +14,7 @@ from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeEl
 
 __all__ = [
     "case_option", "file_option", "folder_only", "motion", "own_case_option", "progress",
-    "require_case", "stdout", "write_json", "write_result", "writing",
+    "require_case", "stdout", "units_option", "write_json", "write_result", "writing",
 ]  # fmt: skip
 
 F = TypeVar("F", bound=Callable[..., Any])
@@ -100,6 +100,15 @@ own_case_option = _case_option(
     "Case file (TOML with units) of YOUR screw: required, the command judges or fits it."
 )
 """``--case`` of a command that judges or fits the user's own screw (no bundled default)."""
+
+
+units_option = click.option(
+    "--units", "units", type=click.Choice(["si", "imperial"], case_sensitive=False),
+    default=None, metavar="si|imperial",
+    help="Units of the printed results: si, or imperial (lbf, in, lbf*in, in/min, degF; rpm, "
+    "W and J kept). Default: the case's [output] units, else si. JSON and CSV stay SI.",
+)  # fmt: skip
+"""``--units``: the unit system of a command's printed results (:mod:`ballscrew.io.display`)."""
 
 
 def require_case(case_file: str | None, command: str, why: str) -> str:

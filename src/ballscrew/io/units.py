@@ -467,7 +467,7 @@ _COMMON_UNITS = (
 """The units suggested for a unit name that is none (close spellings, any case)."""
 
 
-def _unknown_unit(unit: str) -> str:
+def _unknown_unit(unit: str, example: str, target: str | None = None) -> str:
     """Why the unit text is no unit: the first name pint does not know, and a close one."""
     import difflib
 
@@ -477,21 +477,32 @@ def _unknown_unit(unit: str) -> str:
     if unknown is None:
         return _UNIT_HELP + " (not a known unit)"
     lower = {u.lower(): u for u in _COMMON_UNITS}
-    close = [lower[unknown.lower()]] if unknown.lower() in lower else difflib.get_close_matches(
-        unknown, _COMMON_UNITS, n=2, cutoff=0.6
-    )  # fmt: skip
+    if unknown.lower() in lower:  # 'KN', 'MPA': the case is wrong
+        close = [lower[unknown.lower()]]
+    elif unknown.lower() in ureg:  # 'Newton'
+        close = [unknown.lower()]
+    else:
+        close = difflib.get_close_matches(unknown, _COMMON_UNITS, n=5, cutoff=0.6)
+        if target:  # the field's own kind first: '20 mn' on a length is 'mm' before 'min'
+            wanted = kind_of(target)
+            close.sort(key=lambda c: kind_of(_ALIASES.get(c, c)) != wanted)
+        close = close[:2]
     guess = f"; did you mean {' or '.join(repr(c) for c in close)}?" if close else ""
-    return f"'{unknown}' is not a known unit{guess} (e.g. 'mm', 'kN', 'rpm', 'N*m', 'degC')"
+    return f"'{unknown}' is not a known unit{guess} ({example})"
 
 
-def _pint_unit(field: str, text: str, unit: str) -> Any:
+def _pint_unit(
+    field: str, text: str, unit: str, number: Any = None, target: str | None = None
+) -> Any:
     if unit.strip() in _TWO_WAY_UNITS:
         raise BallScrewInputError(field, text, _TWO_WAY_UNITS[unit.strip()])
     try:
         return registry().parse_units(unit) if unit else registry().dimensionless
     except (pint.errors.PintError, ValueError, TypeError, AttributeError, AssertionError,
             ArithmeticError, LookupError, SyntaxError):  # fmt: skip
-        raise BallScrewInputError(field, text, _unknown_unit(unit)) from None
+        example = (f"write e.g. '{_shown(number)} {_example(target)}'" if target
+                   else "e.g. 'mm', 'kN', 'rpm', 'N*m', 'degC'")  # fmt: skip
+        raise BallScrewInputError(field, text, _unknown_unit(unit, example, target)) from None
 
 
 # --- conversion ------------------------------------------------------------------------------
@@ -764,7 +775,7 @@ def _convert(
     ureg = registry()
     if unit:
         unit_text = _shop_unit(field, text, number, unit_text, unit, notes)
-    have = _pint_unit(field, text, unit_text)
+    have = _pint_unit(field, text, unit_text, number, unit)
     try:
         if unit is None:
             return ureg.Quantity(number, have).to_base_units().magnitude
