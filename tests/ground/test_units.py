@@ -150,6 +150,9 @@ SLIPS: list[tuple[str, str, float | None]] = [
     ("N", "5 lb", REFUSED),  # a mass: 'lbf' is the force
     ("N*m", "10 lbf*in", 10 * 0.45359237 * 9.80665 * 0.0254),
     ("degC", "104 F", 40.0),  # farad to pint: read as degF on a temperature, with a note
+    ("degC", "40 ° C", 40.0),  # a degree sign, a space, C: on a temperature only degC
+    ("degC", "40 deg C", 40.0),
+    ("degC", "104 deg F", 40.0),
     ("degC", "40 c", REFUSED),  # the speed of light
     ("degC", "40 °", REFUSED),  # an angle
     ("delta_degC", "5 C", 5.0),  # a difference of 5 K (issue 35)

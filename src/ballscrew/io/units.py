@@ -572,10 +572,15 @@ def kind_of(unit: Any) -> str:
     >>> kind_of("C"), kind_of("m/turn"), kind_of("delta_degC")
     ('an electric charge', 'a length', 'a temperature')
     """
-    ureg = registry()
-    parsed = ureg.parse_units(unit) if isinstance(unit, str) else unit
-    dims = parsed.dimensionality
+    if isinstance(unit, str):
+        return _kind_of_text(unit)
+    dims = unit.dimensionality
     return _kind_names().get(dims, f"a quantity of dimension {dims}")
+
+
+@functools.cache
+def _kind_of_text(unit: str) -> str:
+    return kind_of(registry().parse_units(unit))
 
 
 def _wrong_dimension(
@@ -607,6 +612,7 @@ def _shown(number: Any) -> str:
 
 
 _ACCELERATION_G = re.compile(r"(?<!\w)[gG](?!\w)")
+_SPACED_DEGREES = re.compile(r"(?:°|deg|degree|degrees)\*([CF])")
 _TEMPERATURE_LETTERS = {"C": ("degC", "°C", "the coulomb, a unit of charge"),
                         "F": ("degF", "°F", "the farad, a unit of capacitance")}  # fmt: skip
 
@@ -624,6 +630,8 @@ def _shop_unit(
     kind = kind_of(unit)
     if kind == "an acceleration" and _ACCELERATION_G.search(unit_text):
         return _ACCELERATION_G.sub("standard_gravity", unit_text)
+    if kind == "a temperature" and (spaced := _SPACED_DEGREES.fullmatch(unit_text)):
+        return "deg" + spaced.group(1)  # '40 ° C', '40 deg C': degrees Celsius, nothing else
     if kind == "a temperature" and unit_text in _TEMPERATURE_LETTERS:
         written, symbol, pint_name = _TEMPERATURE_LETTERS[unit_text]
         n = _shown(number) + " "
