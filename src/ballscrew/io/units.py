@@ -405,7 +405,8 @@ def _unit_text(field: str, text: str, rest: str) -> str:
     while position < len(rest):
         token = _UNIT_TOKEN.match(rest, position)
         if not token or token.end() == position:
-            raise BallScrewInputError(field, text, _UNIT_HELP)
+            shown = rest[position : position + 12].strip()
+            raise BallScrewInputError(field, text, f"'{shown}' is not part of a unit: {_UNIT_HELP}")
         position = token.end()
         if token.group("word") or token.group("one"):
             if not expect_unit:
@@ -413,26 +414,32 @@ def _unit_text(field: str, text: str, rest: str) -> str:
             word = token.group("word") or "1"
             power = token.group("power") or token.group("attached")
             if len(word) > _MAX_WORD or (power and abs(int(power)) > _MAX_POWER):
-                raise BallScrewInputError(field, text, _UNIT_HELP)
+                why = (f"no unit has a name of {len(word)} letters" if len(word) > _MAX_WORD
+                       else f"a power of at most {_MAX_POWER}")  # fmt: skip
+                raise BallScrewInputError(field, text, f"{why}: {_UNIT_HELP}")
             out.append(_ALIASES.get(word, word) + (f"**{int(power)}" if power else ""))
             expect_unit = False
         elif token.group("op"):
             if expect_unit:
-                raise BallScrewInputError(field, text, _UNIT_HELP)
+                why = f"'{token.group('op')}' needs a unit name on each side"
+                raise BallScrewInputError(field, text, f"{why}: {_UNIT_HELP}")
             out.append("/" if token.group("op") == "/" else "*")
             expect_unit = True
         elif token.group("paren") == "(":
             if not expect_unit or depth >= 2:
-                raise BallScrewInputError(field, text, _UNIT_HELP)
+                why = "brackets two deep at most" if depth >= 2 else "'(' after a unit name"
+                raise BallScrewInputError(field, text, f"{why}: {_UNIT_HELP}")
             depth += 1
             out.append("(")
         else:
             if expect_unit or depth == 0:
-                raise BallScrewInputError(field, text, _UNIT_HELP)
+                why = "')' without its '('" if depth == 0 else "'()' around no unit"
+                raise BallScrewInputError(field, text, f"{why}: {_UNIT_HELP}")
             depth -= 1
             out.append(")")
     if depth or (out and expect_unit):
-        raise BallScrewInputError(field, text, _UNIT_HELP)
+        why = "a bracket left open" if depth else "the unit ends with an operator"
+        raise BallScrewInputError(field, text, f"{why}: {_UNIT_HELP}")
     return "".join(out)
 
 
