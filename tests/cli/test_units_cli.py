@@ -246,3 +246,20 @@ def test_the_web_api_refuses_with_the_reason(
     response = client.post("/api/torque", json={**WEB_CASE, **change})
     assert response.status_code == 422
     assert words in response.json()["error"], response.json()
+
+
+def test_a_case_files_temperature_in_c_is_noted_once_naming_the_key(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    case = tmp_path / "case.toml"
+    case.write_text(reference_case_toml("C", speed="100 rpm", axial_load="1 kN")
+                    .replace('temperature = "40 degC"', 'temperature = "40 C"'))  # fmt: skip
+    code, out, err = run(["torque", "--case", str(case), "--model", "catalog", "--json", "-",
+                          "--table", "none"], capsys)  # fmt: skip
+    assert code == 0, err
+    notes = [line for line in err.splitlines() if "coulomb" in line]
+    assert notes == [
+        "note: operation.temperature = '40 C' is read as °C: 'C' alone is the coulomb, a unit "
+        "of charge; write '40 degC'"
+    ]
+    assert json.loads(out)["rows"][0]["temperature [degC]"] == 40.0

@@ -13,7 +13,8 @@ from rich.console import Console
 from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 
 __all__ = [
-    "case_option", "file_option", "folder_only", "motion", "own_case_option", "progress",
+    "case_option", "echo_readings", "file_option", "folder_only", "motion", "own_case_option",
+    "progress",
     "require_case", "stdout", "units_option", "write_json", "write_result", "writing",
 ]  # fmt: skip
 
@@ -109,6 +110,17 @@ units_option = click.option(
     "W and J kept). Default: the case's [output] units, else si. JSON and CSV stay SI.",
 )  # fmt: skip
 """``--units``: the unit system of a command's printed results (:mod:`ballscrew.io.display`)."""
+
+
+def echo_readings(case: Any) -> None:
+    """Say on standard error how the case file's texts that read two ways were read.
+
+    A speed in Hz, a temperature in ``C`` (coulomb to pint): one ``note:`` line each,
+    naming the field, as the command line's own options get (their warnings).
+    """
+    for a in case.assumptions:
+        if a.reason.startswith("read as "):
+            click.echo(f"note: {a.field} = {a.value!r} is {a.reason}", err=True)
 
 
 def require_case(case_file: str | None, command: str, why: str) -> str:

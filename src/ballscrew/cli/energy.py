@@ -10,6 +10,7 @@ from rich.console import Console
 from rich.table import Table
 
 from .common import (
+    echo_readings,
     folder_option,
     json_option,
     motion,
@@ -73,6 +74,7 @@ def energy_command(
     from ..report.torque import warning_lines
 
     case = load_case(case_file)
+    echo_readings(case)
     system = unit_system("--units", units, case.output_units)
     profile, m = motion(move_text, profile_file, cycles)
     speeds = None if steady_speeds is None else parse_range("--steady-speeds", steady_speeds,

@@ -15,6 +15,7 @@ from rich.table import Table
 from ..errors import BallScrewInputError
 from .common import (
     case_option,
+    echo_readings,
     file_option,
     progress,
     stdout,
@@ -129,6 +130,7 @@ def torque(
     from ..report.torque import TorqueRun
 
     case = load_case(case_file)
+    echo_readings(case)
     system = unit_system("--units", units, case.output_units)
     if wiper_drag is not None:
         case = case.with_wiper_drag(wiper_drag, field="--wiper-drag")
