@@ -21,6 +21,7 @@ import warnings
 from collections import Counter
 from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 from ballscrew import BallScrewInputError, reference_screw
 from ballscrew.errors import BallScrewReadingWarning
@@ -68,6 +69,20 @@ ODD_VALUES = [
     '"triple"',
     '{ value = "1 mm" }',
     '{ assumed = "x" }',
+    # shop-floor notation (issue 40): fractions, inch marks, g, C and F
+    '"1/4 in"',
+    "'3/8\"'",
+    "'1.329\"'",
+    '"1 1/4 in"',
+    '"1-1/4 in"',
+    '"1/0 in"',
+    '"2\'"',
+    '"0.3 g"',
+    '"40 C"',
+    '"104 F"',
+    '"5 lbf"',
+    '"10 lbf*in"',
+    '"5 KN"',
 ]
 ODD_CELLS = [
     "",
@@ -138,6 +153,65 @@ def mutate_case(rng: random.Random) -> str:
     return text
 
 
+# (section, key, TOML value, how to read it from the case, the SI value meant or None for a
+# refusal, words the value or the refusal must carry). The value meant is worked out from
+# the definitions (1 in = 25.4 mm, 1 lbf = 4.4482216152605 N), not by the code under test.
+SHOP_FLOOR: list[tuple[str, str, str, Callable[[Any], float], float | None, str]] = [
+    ("screw", "ball_diameter", "'5/32\"'", lambda c: c.screw.ball_diameter, 5 / 32 * 0.0254, ""),
+    ("screw", "ball_diameter", '"0.15625 in"', lambda c: c.screw.ball_diameter,
+     0.15625 * 0.0254, ""),
+    ("screw", "ball_diameter", "'0.156\"'", lambda c: c.screw.ball_diameter, 0.156 * 0.0254, ""),
+    ("screw", "pitch_diameter", '"1 1/4 in"', lambda c: c.screw.pitch_diameter, 1.25 * 0.0254, ""),
+    ("screw", "pitch_diameter", '"1\u00bc in"', lambda c: c.screw.pitch_diameter, 1.25 * 0.0254,
+     ""),
+    ("screw", "lead", "'0.787\"'", lambda c: c.screw.lead, 0.787 * 0.0254, ""),
+    ("operation", "temperature", '"68 F"', lambda c: c.temperature[0], 20.0, "farad"),
+    ("operation", "temperature", '"20 C"', lambda c: c.temperature[0], 20.0, "coulomb"),
+    ("operation", "axial_load", '"1/4 kN"', lambda c: c.axial_load[0], 250.0, ""),
+    ("operation", "axial_load", '"50 lbf"', lambda c: c.axial_load[0], 50 * 4.4482216152605, ""),
+    ("screw", "ball_diameter", "\"0.15'\"", lambda c: 0.0, None, "a foot to some"),
+    ("screw", "ball_diameter", '"4 g"', lambda c: 0.0, None,
+     "'g' (gram) is a mass; this field is a length"),
+    ("operation", "temperature", '"20 c"', lambda c: 0.0, None, "speed of light"),
+    ("screw", "pitch_diameter", '"1-1/4 in"', lambda c: 0.0, None, "in shop notation"),
+    ("screw", "pitch_diameter", '"32 MM"', lambda c: 0.0, None, "did you mean 'mm'?"),
+    ("operation", "axial_load", '"50 lb"', lambda c: 0.0, None, "'lbf'"),
+    ("screw", "lead", '"20 mn"', lambda c: 0.0, None, "did you mean"),
+    ("screw", "lead", '"20"', lambda c: 0.0, None, "a bare number has no unit"),
+]  # fmt: skip
+
+
+def shop_floor_case(section: str, key: str, value: str) -> str:
+    """The base case with ``section.key`` set to the TOML ``value``."""
+    start = BASE_CASE.index(f"[{section}]")
+    head, tail = BASE_CASE[:start], BASE_CASE[start:]
+    tail, n = re.subn(rf"(?m)^{key} = .*$", lambda _: f"{key} = {value}", tail, count=1)
+    assert n == 1, (section, key)
+    return head + tail
+
+
+def shop_floor_findings() -> list[str]:
+    """Each SHOP_FLOOR value read as meant (with its note) or refused with the reason."""
+    import math
+
+    findings = []
+    for section, key, value, read, meant, words in SHOP_FLOOR:
+        text = shop_floor_case(section, key, value)
+        try:
+            case = parse_case(text)
+        except BallScrewInputError as exc:
+            if meant is not None or words not in str(exc) or f"{section}.{key}" not in str(exc):
+                findings.append(f"{section}.{key} = {value}: {exc}")
+            continue
+        notes = " ".join(str(a) for a in case.assumptions)
+        # The conversions are exact rationals times pint's defined factors: 1e-12.
+        if meant is None or not math.isclose(read(case), meant, rel_tol=1e-12):
+            findings.append(f"{section}.{key} = {value}: read as {read(case)!r}, meant {meant}")
+        elif words and words not in notes:
+            findings.append(f"{section}.{key} = {value}: no note saying {words!r}")
+    return findings
+
+
 def mutate_csv(rng: random.Random) -> str:
     """One randomly generated or mutated measured-data CSV."""
     header = rng.choice(ODD_HEADERS) if rng.random() < 0.3 else "speed [rpm],torque [N*m]"
@@ -195,6 +269,11 @@ def main() -> None:
     for key, value in sorted(counts.items()):
         print(f"{value:>7}  {key}")
     failures = sum(v for k, v in counts.items() if "FAIL" in k)
+    shop = shop_floor_findings()
+    print(f"shop-floor notation: {len(SHOP_FLOOR) - len(shop)} of {len(SHOP_FLOOR)} as meant")
+    for line in shop:
+        print(f"  {line}")
+    failures += len(shop)
     print(f"findings: {failures}")
     raise SystemExit(1 if failures else 0)
 

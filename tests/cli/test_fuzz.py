@@ -13,7 +13,7 @@ from ballscrew import BallScrewInputError, friction_torque
 from ballscrew.cli import main
 from ballscrew.io.case import load_case, parse_case
 from ballscrew.io.measured import read_measured
-from fuzz_inputs import campaign, mutate_case
+from fuzz_inputs import SHOP_FLOOR, campaign, mutate_case, shop_floor_findings
 from shared import SMALL_CASE
 
 
@@ -24,6 +24,12 @@ def test_loaders_only_succeed_or_raise_the_input_error() -> None:
     # Both outcomes occur: the mutations reach past the parser.
     assert counts["case ok"] > 0 and counts["case input-error"] > 0
     assert counts["csv ok"] > 0 and counts["csv input-error"] > 0
+
+
+def test_shop_floor_notation_in_case_files_is_read_as_meant_or_refused_with_the_reason() -> None:
+    # issue 40: fractions, inch marks, C and F on temperatures, pounds; each refusal says why.
+    assert len(SHOP_FLOOR) >= 15
+    assert shop_floor_findings() == []
 
 
 def test_accepted_mutated_cases_compute_finite_torques() -> None:

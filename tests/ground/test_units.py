@@ -83,8 +83,8 @@ SLIPS: list[tuple[str, str, float | None]] = [
     ("N", "2,5e3 N", 2500.0),
     ("N", "2 kN*m", REFUSED),  # a torque for a force
     ("N", "2 kgf", 2 * 9.80665),
-    ("N", "1/2 kN", REFUSED),
-    ("N", "½ kN", REFUSED),
+    ("N", "1/2 kN", 500.0),  # a fraction is one number (issue 40)
+    ("N", "½ kN", 500.0),
     ("N", "2 k N", REFUSED),  # k alone is no unit... of force
     # torques
     ("N*m", "0,5 Nm", 0.5),
@@ -100,7 +100,7 @@ SLIPS: list[tuple[str, str, float | None]] = [
     ("degC", "40 degC", 40.0),
     ("degC", "313,15 K", 40.0),
     ("degC", "104 degF", 40.0),
-    ("degC", "40 C", REFUSED),  # coulomb
+    ("degC", "40 C", 40.0),  # coulomb to pint: read as degC on a temperature, with a note
     ("m**2/s", "68 cSt", 68e-6),
     ("m**2/s", "68 mm²/s", 68e-6),
     ("m**2/s", "68 mm2/s", 68e-6),
@@ -117,6 +117,47 @@ SLIPS: list[tuple[str, str, float | None]] = [
     ("m", "mm", REFUSED),
     ("kg*m**2", "1.9e-3 kg·m²", 1.9e-3),
     ("kg*m**2", "1,9 kg*cm^2", 1.9e-4),
+    # shop-floor notation (issue 40): an inch is 25.4 mm exactly, g_n 9.80665 m/s^2 exactly
+    ("m", "1/4 in", 0.25 * 0.0254),
+    ("m", '1.329"', 1.329 * 0.0254),  # a point before three digits: decimal with inches
+    ("m", "1.329''", 1.329 * 0.0254),
+    ("m", "1.329\u2033", 1.329 * 0.0254),  # double prime
+    ("m", "0.25 inch", 0.25 * 0.0254),
+    ("m", "1 1/4 in", 1.25 * 0.0254),
+    ("m", '3/8"', 0.375 * 0.0254),
+    ("m", "5/32 in", 5 / 32 * 0.0254),  # the bundled case's ball
+    ("m", "1½ in", 1.5 * 0.0254),
+    ("m", "⅜ in", 0.375 * 0.0254),
+    ("m", "1/4in", 0.25 * 0.0254),
+    ("m", "2 ft", 2 * 12 * 0.0254),
+    ("m", "1-1/4 in", REFUSED),  # 1.25 to a machinist, 0.75 to arithmetic
+    ("m", "1 5/4 in", REFUSED),  # a whole number and an improper fraction
+    ("m", "1/0 in", REFUSED),
+    ("m", "1.5/2 in", REFUSED),
+    ("m", "1/2/3 in", REFUSED),
+    ("m", "2'", REFUSED),  # a foot, an arcminute or a thousands mark
+    ("m", "2\u2032", REFUSED),
+    ("m", '1,329"', REFUSED),  # a comma before three digits stays ambiguous
+    ("m", "1.329 mm", REFUSED),  # ... and a point, in millimetres
+    ("m/s", "39.370 in/min", 39.37 * 0.0254 / 60),
+    ("m/s", "40 in/min", 40 * 0.0254 / 60),
+    ("m/s**2", "0.3 g", 0.3 * 9.80665),  # standard gravity on an acceleration
+    ("m/s**2", "0.3 G", 0.3 * 9.80665),  # (pint: gauss)
+    ("m/s**2", "2 m/s^2", 2.0),
+    ("kg", "300 g", 0.3),  # a mass keeps its grams
+    ("m", "5 g", REFUSED),  # a gram is no length
+    ("N", "5 lbf", 5 * 0.45359237 * 9.80665),
+    ("N", "5 lb", REFUSED),  # a mass: 'lbf' is the force
+    ("N*m", "10 lbf*in", 10 * 0.45359237 * 9.80665 * 0.0254),
+    ("degC", "104 F", 40.0),  # farad to pint: read as degF on a temperature, with a note
+    ("degC", "40 ° C", 40.0),  # a degree sign, a space, C: on a temperature only degC
+    ("degC", "40 deg C", 40.0),
+    ("degC", "104 deg F", 40.0),
+    ("degC", "40 c", REFUSED),  # the speed of light
+    ("degC", "40 °", REFUSED),  # an angle
+    ("delta_degC", "5 C", 5.0),  # a difference of 5 K (issue 35)
+    ("delta_degC", "9 F", 5.0),
+    ("m", "32 C", REFUSED),  # a coulomb is no length
 ]
 
 

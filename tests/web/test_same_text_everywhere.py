@@ -37,6 +37,13 @@ LOADS = [  # texts for a list field (axial load), with the loads meant [N] or No
     ("1 20 N", None),
     ("10**10**8 N", None),
     ("2 kN*m", None),
+    # shop-floor notation (issue 40): a fraction is one number; 1 lbf = 4.4482216152605 N
+    ("1/4 kN", [250.0]),
+    ("1/4, 1/2 kN", [250.0, 500.0]),
+    ("1 1/2 kN", [1500.0]),
+    ("100 lbf", [444.82216152605]),
+    ("1-1/2 kN", None),  # 1.5 to a machinist, 0.5 to arithmetic
+    ("100 lb", None),  # a mass: 'lbf' is the force
 ]
 PRELOADS = [  # a single value: a comma is a decimal comma
     ("1,2 kN", 1200.0),

@@ -14,6 +14,7 @@ from .common import (
     motion,
     motion_options,
     stdout,
+    units_option,
     write_json,
     write_report,
 )
@@ -42,6 +43,7 @@ __all__ = ["check_command"]
     "motion over the stroke, temperature and lead error over time (figures, CSV, "
     "Markdown, HTML)."
 )
+@units_option
 def check_command(
     case_file: str | None,
     move_text: str | None,
@@ -52,6 +54,7 @@ def check_command(
     run_time: str,
     json_file: str | None,
     out_dir: str | None,
+    units: str | None = None,
 ) -> None:
     """Check the case's axis over a motion cycle: every criterion against its limit.
 
@@ -68,10 +71,12 @@ def check_command(
     """  # noqa: D301 - click needs the literal \b to keep the example lines
     from ..axis import run_check, run_energy
     from ..io.case import load_case
+    from ..io.display import system_note, unit_system
     from ..io.units import to_si
     from ..report.outputs import result_json
 
     case = load_case(case_file)
+    system = unit_system("--units", units, case.output_units)
     profile, m = motion(move_text, profile_file, cycles)
     temp = to_si("--temperature", temperature, "degC") if temperature else None
     run = run_energy(case, profile, [model_name], cycles=cycles, temperature=temp,
@@ -86,7 +91,9 @@ def check_command(
     result = replace(result, inputs={**result.inputs, "command": command,
                                      "case_file": case_file})  # fmt: skip
     out = stdout(json_file)
-    out.print(_verdict_table(result))
+    out.print(_verdict_table(result, system))
+    if system != "si":
+        out.print(system_note(system))
     for line in result.assumptions:
         out.print(f"assumed: {line}")
     if json_file:
@@ -101,8 +108,13 @@ def _number(value: float | None) -> str:
     return "-" if value is None else f"{value:.4g}"
 
 
-def _verdict_table(result: AxisCheck) -> Table:
-    """One row per criterion: value, limit, utilisation, verdict, source, advice."""
+def _verdict_table(result: AxisCheck, system: str = "si") -> Table:
+    """One row per criterion: value, limit, utilisation, verdict, source, advice.
+
+    Values and limits in ``system``'s units (:func:`ballscrew.io.display.to_display`).
+    """
+    from ..io.display import to_display
+
     missing = f", {len(result.not_checked)} not checked" if result.not_checked else ""
     table = Table(title=f"{result.title}: axis check ({result.model}): {result.verdict}{missing}")
     for column, justify in (("criterion", "left"), ("value", "right"), ("limit", "right"),
@@ -116,6 +128,8 @@ def _verdict_table(result: AxisCheck) -> Table:
         u = c.uncertainty
         spread = "-" if u is None else f"{u.low:.0%}-{u.high:.0%}"
         p = "-" if u is None else f"{u.p_not_ok:.0%}"
-        table.add_row(c.name, _number(c.value), _number(c.limit), c.unit, use, spread, c.verdict,
+        value, unit = to_display(c.value, c.unit, system)
+        limit, _ = to_display(c.limit, c.unit, system)
+        table.add_row(c.name, _number(value), _number(limit), unit, use, spread, c.verdict,
                       p, "-" if u is None else u.guarded, c.source, c.advice)  # fmt: skip
     return table

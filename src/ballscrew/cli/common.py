@@ -13,8 +13,9 @@ from rich.console import Console
 from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 
 __all__ = [
-    "case_option", "file_option", "folder_only", "motion", "own_case_option", "progress",
-    "require_case", "stdout", "write_json", "write_result", "writing",
+    "case_option", "echo_readings", "file_option", "folder_only", "motion", "own_case_option",
+    "progress",
+    "require_case", "stdout", "units_option", "write_json", "write_result", "writing",
 ]  # fmt: skip
 
 F = TypeVar("F", bound=Callable[..., Any])
@@ -100,6 +101,26 @@ own_case_option = _case_option(
     "Case file (TOML with units) of YOUR screw: required, the command judges or fits it."
 )
 """``--case`` of a command that judges or fits the user's own screw (no bundled default)."""
+
+
+units_option = click.option(
+    "--units", "units", type=click.Choice(["si", "imperial"], case_sensitive=False),
+    default=None, metavar="si|imperial",
+    help="Units of the printed results: si, or imperial (lbf, in, lbf*in, in/min, degF; rpm, "
+    "W and J kept). Default: the case's [output] units, else si. JSON and CSV stay SI.",
+)  # fmt: skip
+"""``--units``: the unit system of a command's printed results (:mod:`ballscrew.io.display`)."""
+
+
+def echo_readings(case: Any) -> None:
+    """Say on standard error how the case file's texts that read two ways were read.
+
+    A speed in Hz, a temperature in ``C`` (coulomb to pint): one ``note:`` line each,
+    naming the field, as the command line's own options get (their warnings).
+    """
+    for a in case.assumptions:
+        if a.reason.startswith("read as "):
+            click.echo(f"note: {a.field} = {a.value!r} is {a.reason}", err=True)
 
 
 def require_case(case_file: str | None, command: str, why: str) -> str:

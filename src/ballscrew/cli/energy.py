@@ -10,11 +10,13 @@ from rich.console import Console
 from rich.table import Table
 
 from .common import (
+    echo_readings,
     folder_option,
     json_option,
     motion,
     motion_options,
     stdout,
+    units_option,
     verbose,
     write_json,
     write_report,
@@ -42,6 +44,7 @@ __all__ = ["energy_command"]
               "speeds, e.g. '500..3000:6 rpm' (under the move's process force).")  # fmt: skip
 @folder_option("Write a report (Markdown, HTML, plots, CSV) into this folder.")
 @json_option("Write the results as JSON to FILE ('-' for standard output).")
+@units_option
 def energy_command(
     case_file: str | None,
     move_text: str | None,
@@ -53,6 +56,7 @@ def energy_command(
     out_dir: str | None,
     json_file: str | None,
     steady_speeds: str | None = None,
+    units: str | None = None,
 ) -> None:
     """Friction energy and motor torques of the case's axis over back-and-forth cycles.
 
@@ -64,11 +68,14 @@ def energy_command(
     """  # noqa: D301 - click needs the literal \b to keep the example lines
     from ..axis import run_energy
     from ..io.case import load_case
+    from ..io.display import system_note, to_display, unit_system
     from ..io.units import parse_range, to_si
     from ..report.outputs import result_json
     from ..report.torque import warning_lines
 
     case = load_case(case_file)
+    echo_readings(case)
+    system = unit_system("--units", units, case.output_units)
     profile, m = motion(move_text, profile_file, cycles)
     speeds = None if steady_speeds is None else parse_range("--steady-speeds", steady_speeds,
                                                               "rad/s")  # fmt: skip
@@ -85,12 +92,18 @@ def energy_command(
         click.echo(line, err=True)  # the models' validity issues: lift-off, film, temperature
     for line in run.assumptions:
         click.echo(f"note: {line}", err=True)
-    title = f"{case.title}: {cycles} cycle(s), {profile.duration:.4g} s, {run.temperature:g} °C"
+    temp_shown, temp_unit = to_display(run.temperature, "degC", system)
+    title = (f"{case.title}: {cycles} cycle(s), {profile.duration:.4g} s, {temp_shown:g} "
+             f"{'°C' if temp_unit == 'degC' else temp_unit}")  # fmt: skip
     out = stdout(json_file)
-    out.print(_results_table(title, run, run_time))
+    out.print(_results_table(title, run, run_time, system))
     _print_weight_verdicts(out, run)
+    force, force_unit = to_display(m.get("force", 0.0), "N", system)
     for name, at in run.steady.items():
-        out.print(_steady_table(f"{name}: continuous running at {m.get('force', 0.0):g} N", at))
+        out.print(_steady_table(f"{name}: continuous running at {force:g} {force_unit}", at,
+                                system))  # fmt: skip
+    if system != "si":
+        out.print(system_note(system))
     if out_dir:
         from ..report.energy import write_energy_report
 
@@ -99,13 +112,20 @@ def energy_command(
         write_json(json_file, result_json(run))
 
 
-def _results_table(title: str, run: EnergyRun, run_time: str) -> Table:
-    """The results of each model over the cycles: energies, efficiencies, motor torques."""
+def _results_table(title: str, run: EnergyRun, run_time: str, system: str = "si") -> Table:
+    """The results of each model over the cycles: energies, efficiencies, motor torques.
+
+    Torques and temperatures in ``system``'s units; energies in J in every system.
+    """
+    from ..io.display import to_display
+
+    _, torque = to_display(1.0, "N*m", system)
+    _, degrees = to_display(1.0, "degC", system)
     table = Table(title=title)
     for column in ("model", "friction energy [J]", "per cycle [J]", "catalogue rule [J]",
-                   "bearings [J]", "efficiency fwd / back", "peak motor torque [N*m]",
-                   "RMS motor torque [N*m]",
-                   f"temperature after {run_time} [degC]"):  # fmt: skip
+                   "bearings [J]", "efficiency fwd / back", f"peak motor torque [{torque}]",
+                   f"RMS motor torque [{torque}]",
+                   f"temperature after {run_time} [{degrees}]"):  # fmt: skip
         table.add_column(column, justify="right")
     for name, r in run.results.items():
         c = r.cycle
@@ -116,9 +136,9 @@ def _results_table(title: str, run: EnergyRun, run_time: str) -> Table:
             f"{c.constant_efficiency_energy:.4g}",
             f"{c.bearing_energy:.4g}",
             f"{c.forward_efficiency:.3f} / {c.reverse_efficiency:.3f}",
-            f"{c.peak_motor_torque:.4g}",
-            f"{c.rms_motor_torque:.4g}",
-            f"{r.final_temperature:.3g}",
+            f"{to_display(c.peak_motor_torque, 'N*m', system)[0]:.4g}",
+            f"{to_display(c.rms_motor_torque, 'N*m', system)[0]:.4g}",
+            f"{to_display(r.final_temperature, 'degC', system)[0]:.3g}",
         )
     return table
 
@@ -145,13 +165,17 @@ def _print_weight_verdicts(out: Console, run: EnergyRun) -> None:
             )
 
 
-def _steady_table(title: str, at: SteadyAtSpeed) -> Table:
+def _steady_table(title: str, at: SteadyAtSpeed, system: str = "si") -> Table:
     """Steady temperature, torque and power of continuous running, one row per speed."""
+    from ..io.display import to_display
     from ..kinematics import rad_s_to_rpm
 
+    temps, degrees = to_display(at.temperature, "degC", system)
+    torques, torque = to_display(at.torque, "N*m", system)
     table = Table(title=title)
-    for column in ("speed [rpm]", "steady temperature [degC]", "torque [N*m]", "power [W]"):
+    for column in ("speed [rpm]", f"steady temperature [{degrees}]", f"torque [{torque}]",
+                   "power [W]"):  # fmt: skip
         table.add_column(column, justify="right")
-    for w, tc, tq, pw in zip(at.speed, at.temperature, at.torque, at.power, strict=True):
+    for w, tc, tq, pw in zip(at.speed, temps, torques, at.power, strict=True):
         table.add_row(f"{rad_s_to_rpm(w):.4g}", f"{tc:.3g}", f"{tq:.4g}", f"{pw:.4g}")
     return table

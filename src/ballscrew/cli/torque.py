@@ -13,7 +13,17 @@ from rich.console import Console
 from rich.table import Table
 
 from ..errors import BallScrewInputError
-from .common import case_option, file_option, progress, stdout, verbose, write_json, writing
+from .common import (
+    case_option,
+    echo_readings,
+    file_option,
+    progress,
+    stdout,
+    units_option,
+    verbose,
+    write_json,
+    writing,
+)
 
 MAX_POINTS = 2_000_000
 """The most operating points ``ballscrew torque`` computes without ``--max-points``."""
@@ -85,6 +95,7 @@ __all__ = ["torque"]
     show_default=True,
     help="The most operating points (speeds x temperatures x loads x models) computed.",
 )
+@units_option
 def torque(
     case_file: str | None,
     model_names: tuple[str, ...],
@@ -98,6 +109,7 @@ def torque(
     json_file: str | None,
     table_kind: str,
     max_points: int,
+    units: str | None = None,
 ) -> None:
     """Friction torque, power loss and efficiency of one case over speeds, temperatures, loads.
 
@@ -106,16 +118,20 @@ def torque(
       ballscrew torque --speed "0..3000:7 rpm"
       ballscrew torque --model olaru --model catalog --temperature "20, 45 degC" --csv t.csv
       ballscrew torque --case my_screw.toml --axial-load "0, 2 kN" --json t.json
+      ballscrew torque --speed "100, 1000 rpm" --units imperial
       ballscrew torque --model complete --model catalog --csv t.csv --csv-layout wide \\
           --csv-dialect semicolon-decimal-comma
     """  # noqa: D301 - click needs the literal \b to keep the example lines
     from ..chain import model_named, torque_table
     from ..io.case import WIPER_PARAMETERS, load_case
+    from ..io.display import unit_system
     from ..io.files import atomic_write
     from ..report.outputs import json_text
     from ..report.torque import TorqueRun
 
     case = load_case(case_file)
+    echo_readings(case)
+    system = unit_system("--units", units, case.output_units)
     if wiper_drag is not None:
         case = case.with_wiper_drag(wiper_drag, field="--wiper-drag")
     for name in model_names:
@@ -139,7 +155,7 @@ def torque(
     run = TorqueRun(case, table)
     for line in run.warning_lines(verbose=verbose()):
         click.echo(line, err=True)
-    _print_table(run, table_kind, "-" if csv_file == "-" else json_file)
+    _print_table(run, table_kind, "-" if csv_file == "-" else json_file, system)
     command = ["ballscrew", *sys.argv[1:]]
     if csv_file:
         with writing("--csv", csv_file):
@@ -179,13 +195,15 @@ def _points(
     return w, t, f
 
 
-def _print_table(run: Any, kind: str, json_file: str | None) -> None:
-    """The terminal table ``kind`` asks for (auto: by the number of rows)."""
-    rows = run.rows
+def _print_table(run: Any, kind: str, json_file: str | None, system: str = "si") -> None:
+    """The terminal table ``kind`` asks for (auto: by the number of rows), in ``system``'s units."""
+    from ..io.display import display_row, system_note
+
+    rows = [display_row(r, system) for r in run.rows]
     if kind == "none":
         return
-    pivot_rows = len({(r["temperature [degC]"], r["axial load [N]"], r["speed [rpm]"])
-                      for r in rows})  # fmt: skip
+    pivot_rows = len({(r[_label("temperature [degC]", rows)], r[_label("axial load [N]", rows)],
+                       r["speed [rpm]"]) for r in rows})  # fmt: skip
     if kind == "auto":
         kind = "full" if len(rows) <= 40 else ("pivot" if pivot_rows <= 400 else "summary")
         if kind != "full":
@@ -197,20 +215,30 @@ def _print_table(run: Any, kind: str, json_file: str | None) -> None:
             )
     table = {"full": _full_table, "pivot": _pivot_table, "summary": _summary_table}[kind]
     stdout(json_file).print(table(run.case.title, rows))
+    if system != "si":
+        stdout(json_file).print(system_note(system))
+
+
+def _label(si_label: str, rows: list[dict[str, Any]]) -> str:
+    """The key of the rows' column that ``si_label`` ('torque [N*m]') names, in their units."""
+    name = si_label.split(" [")[0] + " ["
+    return next((k for k in rows[0] if k.startswith(name)), si_label) if rows else si_label
 
 
 def _summary_table(title: str, rows: list[dict[str, Any]]) -> Table:
     """Per model: the number of points and the range of torque, power loss and efficiency."""
     table = Table(title=f"{title}: friction torque, summary")
-    for column in ("model", "points", "torque min [N*m]", "torque max [N*m]",
+    torque = _label("torque [N*m]", rows)
+    unit = torque.split(" [")[1]
+    for column in ("model", "points", f"torque min [{unit}", f"torque max [{unit}",
                    "at speed [rpm]", "power loss max [W]", "efficiency min [-]"):  # fmt: skip
         table.add_column(column, justify="right")
     for model in dict.fromkeys(str(r["model"]) for r in rows):
         mine = [r for r in rows if r["model"] == model]
-        top = max(mine, key=lambda r: r["torque [N*m]"])
+        top = max(mine, key=lambda r: r[torque])
         table.add_row(
             model, f"{len(mine):,}",
-            _show(min(r["torque [N*m]"] for r in mine)), _show(top["torque [N*m]"]),
+            _show(min(r[torque] for r in mine)), _show(top[torque]),
             _show(top["speed [rpm]"]), _show(max(r["power loss [W]"] for r in mine)),
             _show(min(r["efficiency [-]"] for r in mine)),
         )  # fmt: skip
@@ -218,7 +246,8 @@ def _summary_table(title: str, rows: list[dict[str, Any]]) -> Table:
 
 
 def _full_table(title: str, rows: list[dict[str, Any]]) -> Table:
-    keys = [k for k in rows[0] if k in _MAIN_COLUMNS]
+    main = {_label(c, rows) for c in _MAIN_COLUMNS}
+    keys = [k for k in rows[0] if k in main]
     table = Table(title=f"{title}: friction torque", show_lines=False)
     for key in keys:
         table.add_column(key, justify="right", overflow="fold")
@@ -243,14 +272,16 @@ def _show(value: object) -> str:
 
 
 def _pivot_table(title: str, rows: list[dict[str, Any]]) -> Table:
-    """Torque [N·m] as rows of (temperature, load, speed) and a column per model."""
+    """Torque as rows of (temperature, load, speed) and a column per model, in the rows' units."""
     models = list(dict.fromkeys(str(r["model"]) for r in rows))
     cells: dict[tuple[Any, ...], dict[str, float]] = {}
+    temp, load, torque = (_label(c, rows) for c in
+                          ("temperature [degC]", "axial load [N]", "torque [N*m]"))  # fmt: skip
     for r in rows:
-        key = (r["temperature [degC]"], r["axial load [N]"], r["speed [rpm]"])
-        cells.setdefault(key, {})[str(r["model"])] = r["torque [N*m]"]
-    table = Table(title=f"{title}: friction torque [N*m]")
-    for column in ("temperature [degC]", "axial load [N]", "speed [rpm]", *models):
+        key = (r[temp], r[load], r["speed [rpm]"])
+        cells.setdefault(key, {})[str(r["model"])] = r[torque]
+    table = Table(title=f"{title}: friction torque [{torque.split(' [')[1]}")
+    for column in (temp, load, "speed [rpm]", *models):
         table.add_column(column, justify="right", overflow="fold")
     for (temp, load, rpm), by_model in sorted(cells.items()):
         table.add_row(

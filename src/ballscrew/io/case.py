@@ -215,6 +215,9 @@ class Case:
         or defaulted by the schema.
     axis_given : frozenset of str
         The ``[axis]`` keys the file wrote (a default is not a given value).
+    output_units : str
+        ``[output] units``: the unit system of printed results, ``"si"`` or
+        ``"imperial"`` (:mod:`ballscrew.io.display`).
     """
 
     title: str
@@ -244,6 +247,7 @@ class Case:
     file), ``catalogue`` (the designation's row), ``default`` (the schema's or the
     command's), ``assumed`` (marked so, with its reason in :attr:`assumptions`)."""
     contact_angle_scatter: float | None = None
+    output_units: str = "si"
 
     def load_ratings(self) -> Ratings:
         """The screw's load ratings: the case's, else C_0a estimated from the geometry."""
@@ -410,6 +414,7 @@ def parse_case(text: str, *, source: str = "case") -> Case:
         axis_given=frozenset(data.axis.model_fields_set),
         sources=_sources(data, notes),
         contact_angle_scatter=scatter,
+        output_units=data.output.units,
     )
 
 
@@ -450,8 +455,9 @@ def _operation(
         "operation.speed", _unwrap("operation.speed", op.speed, notes), "rad/s", notes=read
     )
     temperature = parse_range(
-        "operation.temperature", _unwrap("operation.temperature", op.temperature, notes), "degC"
-    )
+        "operation.temperature", _unwrap("operation.temperature", op.temperature, notes), "degC",
+        notes=read,
+    )  # fmt: skip
     axial = parse_range(
         "operation.axial_load", _unwrap("operation.axial_load", op.axial_load, notes), "N"
     )

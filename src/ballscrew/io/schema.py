@@ -526,6 +526,20 @@ class StudySection(BaseModel):
     )
 
 
+class OutputSection(BaseModel):
+    """``[output]``: how results are printed (files and JSON stay SI)."""
+
+    model_config = ConfigDict(extra="forbid")
+    units: Literal["si", "imperial"] = _f(
+        "si",
+        "-",
+        "units of printed results: si, or imperial (lbf, in, lbf*in, in/min, degF; speeds "
+        "stay in rpm, powers in W, energies in J); JSON and CSV stay SI; the command line's "
+        "--units overrides it",
+        "imperial",
+    )
+
+
 class CaseFile(BaseModel):
     """A case file: one ball screw, its lubricant, operating range and study settings."""
 
@@ -539,6 +553,7 @@ class CaseFile(BaseModel):
     motor: MotorSection = Field(default_factory=MotorSection)
     check: CheckSection = Field(default_factory=CheckSection)
     study: StudySection = Field(default_factory=StudySection)
+    output: OutputSection = Field(default_factory=OutputSection)
 
 
 SECTIONS: dict[str, type[BaseModel]] = {
@@ -549,6 +564,7 @@ SECTIONS: dict[str, type[BaseModel]] = {
     "motor": MotorSection,
     "check": CheckSection,
     "study": StudySection,
+    "output": OutputSection,
 }
 
 

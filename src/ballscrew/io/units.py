@@ -41,6 +41,23 @@ are the same lead.
 **Other spellings.** ``Nm``, ``Ncm``, ``Nmm``, ``kNm`` are newton metres,
 centimetres and millimetres (not pint's reading of ``Nm``); ``U`` is a
 revolution (``U/min``), not an enzyme unit; ``RPM`` is ``rpm``.
+
+**Shop-floor notation.** A fraction of whole numbers is one number, alone or
+after a whole number and a space: ``1/4 in``, ``1 1/4 in``, ``5/32 in``, ``½ kN``,
+``1½ in``. ``1-1/4`` is refused (one and a quarter to a machinist, three quarters
+to arithmetic). A double quote, a double prime or two apostrophes after a number
+is the inch (``1.329"``, ``3/8"``); with the inch a point before three digits is
+a decimal point (inch sizes are written to thousandths and no one groups them),
+a comma there stays ambiguous. A single apostrophe or prime is refused: a foot
+to some, an arcminute to others, and a thousands mark in ``1'200``; write
+``ft``. On an acceleration ``g`` and ``G`` are the standard gravity (``0.3 g`` is
+2.942 m/s², not 0.3 gram); a mass keeps its grams. On a temperature ``C`` and
+``F`` alone are °C and °F (pint's coulomb and farad), read with a note naming
+the field; on a temperature difference they are a difference (``5 C`` is 5 K).
+
+**Refusals** name the field and the text, say why (``'g' (gram) is a mass;
+this field is a length``, ``'KN' is not a known unit; did you mean 'kN'?``) and
+show a form that works (``write e.g. '5 mm'``).
 """
 
 from __future__ import annotations
@@ -50,8 +67,10 @@ import importlib
 import math
 import re
 import sys
+import unicodedata
 import warnings
 from dataclasses import dataclass
+from fractions import Fraction
 from types import ModuleType
 from typing import TYPE_CHECKING, Any
 
@@ -88,6 +107,7 @@ else:
 __all__ = [
     "MAX_TEXT",
     "Reading",
+    "kind_of",
     "parse_range",
     "parse_unit",
     "range_size",
@@ -237,7 +257,10 @@ def split_quantity(field: str, text: str) -> tuple[float, str]:
     >>> split_quantity("torque", "0,25 Nm")
     (0.25, '(N*m)')
     """
-    raw = _clean(field, text)
+    raw = _clean(field, text).translate(_VULGAR)
+    fraction = _fraction(field, text, raw)
+    if fraction is not None:
+        return fraction
     match = _NUMBER.match(raw)
     if not match:
         if re.match(r"[-+]?(nan|inf)", raw, re.IGNORECASE):
@@ -250,6 +273,11 @@ def split_quantity(field: str, text: str) -> tuple[float, str]:
     try:
         plain = _digits_value(digits)
     except _NotOneNumberError as exc:
+        if len(exc.readings) == 2 and "." in digits and _in_inches(field, text, rest):
+            # Inches are written with a decimal point and to thousandths ('1.329"'); no one
+            # groups the thousands of an inch size with a point.
+            sign, exponent = match.group("sign"), match.group("exponent") or ""
+            return float(sign + exc.readings[1] + exponent), _unit_text(field, text, rest)
         if not exc.readings:
             raise BallScrewInputError(field, text, f"one number: {exc.why}") from None
         shown = " or ".join(f"'{float(r):g}{(' ' + rest.strip()) if rest.strip() else ''}'"
@@ -261,6 +289,61 @@ def split_quantity(field: str, text: str) -> tuple[float, str]:
         ) from None  # fmt: skip
     number = float(match.group("sign") + plain + (match.group("exponent") or ""))
     return number, _unit_text(field, text, rest)
+
+
+_VULGAR = {
+    ord(c): f" {Fraction(unicodedata.numeric(c)).limit_denominator(10)}" for c in "½⅓⅔¼¾⅕⅖⅗⅘⅙⅚⅛⅜⅝⅞"
+}
+"""The vulgar-fraction characters as a space and 'n/d': '1½ in' is '1 1/2 in'."""
+_FRACTION = re.compile(
+    r"(?P<sign>[-+]?)\s*(?:(?P<whole>\d{1,9})(?P<joint>\s+|-))?"
+    r"(?P<num>\d{1,9})\s*[/\u2044]\s*(?P<den>\d{1,9})(?![\d.,/\u2044])(?!\s*[eE][-+]?\d)"
+)
+_SLASHED_DIGITS = re.compile(r"\d\s*[/\u2044]\s*[-+]?\d")
+_FRACTION_HELP = (
+    "a fraction of whole numbers, alone or after a whole number and a space: "
+    "'1/4 in', '3/8\"', '1 1/4 in' (or a decimal: '0.25 in')"
+)
+
+
+def _fraction(field: str, text: str, raw: str) -> tuple[float, str] | None:
+    """A number written as a fraction ('1/4 in', '1 1/4 in', '3/8 in'), or None if it is none.
+
+    Fractions are how inch sizes are written (a 5/32 in ball, a 1 1/4 in screw), and a
+    fraction is one number in any unit. '1-1/4' is refused: one and a quarter to a
+    machinist, three quarters to arithmetic.
+    """
+    match = _FRACTION.match(raw)
+    if not match:
+        if _SLASHED_DIGITS.search(raw):
+            raise BallScrewInputError(field, text, _FRACTION_HELP)
+        return None
+    num, den = int(match.group("num")), int(match.group("den"))
+    whole = match.group("whole")
+    if den == 0:
+        raise BallScrewInputError(field, text, "a fraction whose denominator is not 0")
+    if whole is not None and match.group("joint") == "-":
+        w = int(whole)
+        raise BallScrewInputError(
+            field, text,
+            f"'{w}-{num}/{den}' is {w} {num}/{den} ({w + num / den:g}) in shop notation but "
+            f"{w} minus {num}/{den} ({w - num / den:g}) in arithmetic: write "
+            f"'{w} {num}/{den}' or '{w + num / den:g}' with the unit",
+        )  # fmt: skip
+    if whole is not None and num >= den:
+        raise BallScrewInputError(
+            field, text, f"a whole number and a proper fraction ('{whole} {num}/{den}' is none): "
+            + _FRACTION_HELP,
+        )  # fmt: skip
+    value = Fraction(int(whole or 0)) + Fraction(num, den)
+    number = float(-value if match.group("sign") == "-" else value)
+    return number, _unit_text(field, text, raw[match.end() :])
+
+
+def _in_inches(field: str, text: str, rest: str) -> bool:
+    """Whether the unit is the inch, or the inch per a time ('1.329"', '39.370 in/min')."""
+    words = re.findall(r"[^\W\d_][^\W\d]*", _unit_text(field, text, rest))
+    return bool(words) and words[0] in ("inch", "in", "inches")
 
 
 def _clean(field: str, text: str) -> str:
@@ -295,15 +378,35 @@ _UNIT_HELP = (
 )
 
 
+_INCH_MARKS = ("''", "\u2032\u2032", "\u2019\u2019", '"', "\u2033", "\u201d")
+"""Marks read as the inch: a double quote, a double prime, a closing quote, two primes."""
+_FOOT_MARKS = "'\u2032\u2019"
+_FOOT_HELP = (
+    "a single mark (') after a number is a foot to some and an arcminute to others, and "
+    "groups thousands in 1'200: it is no unit here; write 'ft' for feet (e.g. '2 ft' or "
+    "'24 in') or 'arcmin'"
+)
+
+
+def _marks(field: str, text: str, rest: str) -> str:
+    """The inch marks of ``rest`` written as 'inch'; a foot or minute mark refused."""
+    for mark in _INCH_MARKS:
+        rest = rest.replace(mark, " inch ")
+    if any(mark in rest for mark in _FOOT_MARKS):
+        raise BallScrewInputError(field, text, _FOOT_HELP)
+    return rest
+
+
 def _unit_text(field: str, text: str, rest: str) -> str:
     """The unit part checked against the grammar and rewritten for pint ("" for none)."""
-    rest = rest.translate(_SUPERSCRIPTS).strip()
+    rest = _marks(field, text, rest.translate(_SUPERSCRIPTS)).strip()
     out: list[str] = []
     depth, position, expect_unit = 0, 0, True
     while position < len(rest):
         token = _UNIT_TOKEN.match(rest, position)
         if not token or token.end() == position:
-            raise BallScrewInputError(field, text, _UNIT_HELP)
+            shown = rest[position : position + 12].strip()
+            raise BallScrewInputError(field, text, f"'{shown}' is not part of a unit: {_UNIT_HELP}")
         position = token.end()
         if token.group("word") or token.group("one"):
             if not expect_unit:
@@ -311,26 +414,32 @@ def _unit_text(field: str, text: str, rest: str) -> str:
             word = token.group("word") or "1"
             power = token.group("power") or token.group("attached")
             if len(word) > _MAX_WORD or (power and abs(int(power)) > _MAX_POWER):
-                raise BallScrewInputError(field, text, _UNIT_HELP)
+                why = (f"no unit has a name of {len(word)} letters" if len(word) > _MAX_WORD
+                       else f"a power of at most {_MAX_POWER}")  # fmt: skip
+                raise BallScrewInputError(field, text, f"{why}: {_UNIT_HELP}")
             out.append(_ALIASES.get(word, word) + (f"**{int(power)}" if power else ""))
             expect_unit = False
         elif token.group("op"):
             if expect_unit:
-                raise BallScrewInputError(field, text, _UNIT_HELP)
+                why = f"'{token.group('op')}' needs a unit name on each side"
+                raise BallScrewInputError(field, text, f"{why}: {_UNIT_HELP}")
             out.append("/" if token.group("op") == "/" else "*")
             expect_unit = True
         elif token.group("paren") == "(":
             if not expect_unit or depth >= 2:
-                raise BallScrewInputError(field, text, _UNIT_HELP)
+                why = "brackets two deep at most" if depth >= 2 else "'(' after a unit name"
+                raise BallScrewInputError(field, text, f"{why}: {_UNIT_HELP}")
             depth += 1
             out.append("(")
         else:
             if expect_unit or depth == 0:
-                raise BallScrewInputError(field, text, _UNIT_HELP)
+                why = "')' without its '('" if depth == 0 else "'()' around no unit"
+                raise BallScrewInputError(field, text, f"{why}: {_UNIT_HELP}")
             depth -= 1
             out.append(")")
     if depth or (out and expect_unit):
-        raise BallScrewInputError(field, text, _UNIT_HELP)
+        why = "a bracket left open" if depth else "the unit ends with an operator"
+        raise BallScrewInputError(field, text, f"{why}: {_UNIT_HELP}")
     return "".join(out)
 
 
@@ -355,14 +464,52 @@ _TWO_WAY_UNITS = {
 """Unit names that are one unit to pint and another to people who type them: refused."""
 
 
-def _pint_unit(field: str, text: str, unit: str) -> Any:
+_COMMON_UNITS = (
+    "mm", "cm", "m", "um", "µm", "in", "inch", "ft", "N", "kN", "lbf", "kgf", "N*m", "Nm",
+    "Nmm", "lbf*in", "rpm", "rev/min", "rad/s", "deg", "rad", "degC", "degF", "K", "kg", "g",
+    "lb", "s", "min", "h", "Pa", "MPa", "GPa", "psi", "cSt", "mm**2/s", "mPa*s", "cP", "W",
+    "kW", "hp", "J", "kJ", "Wh", "kWh", "m/s", "m/min", "mm/min", "in/min", "m/s**2", "Hz",
+    "kg/m**3", "%",
+)  # fmt: skip
+"""The units suggested for a unit name that is none (close spellings, any case)."""
+
+
+def _unknown_unit(unit: str, example: str, target: str | None = None) -> str:
+    """Why the unit text is no unit: the first name pint does not know, and a close one."""
+    import difflib
+
+    ureg = registry()
+    words = re.findall(r"[^\W\d_][^\W\d]*", unit)
+    unknown = next((w for w in words if w not in ureg), None)
+    if unknown is None:
+        return _UNIT_HELP + " (not a known unit)"
+    lower = {u.lower(): u for u in _COMMON_UNITS}
+    if unknown.lower() in lower:  # 'KN', 'MPA': the case is wrong
+        close = [lower[unknown.lower()]]
+    elif unknown.lower() in ureg:  # 'Newton'
+        close = [unknown.lower()]
+    else:
+        close = difflib.get_close_matches(unknown, _COMMON_UNITS, n=5, cutoff=0.6)
+        if target:  # the field's own kind first: '20 mn' on a length is 'mm' before 'min'
+            wanted = kind_of(target)
+            close.sort(key=lambda c: kind_of(_ALIASES.get(c, c)) != wanted)
+        close = close[:2]
+    guess = f"; did you mean {' or '.join(repr(c) for c in close)}?" if close else ""
+    return f"'{unknown}' is not a known unit{guess} ({example})"
+
+
+def _pint_unit(
+    field: str, text: str, unit: str, number: Any = None, target: str | None = None
+) -> Any:
     if unit.strip() in _TWO_WAY_UNITS:
         raise BallScrewInputError(field, text, _TWO_WAY_UNITS[unit.strip()])
     try:
         return registry().parse_units(unit) if unit else registry().dimensionless
     except (pint.errors.PintError, ValueError, TypeError, AttributeError, AssertionError,
             ArithmeticError, LookupError, SyntaxError):  # fmt: skip
-        raise BallScrewInputError(field, text, _UNIT_HELP + " (not a known unit)") from None
+        example = (f"write e.g. '{_shown(number)} {_example(target)}'" if target
+                   else "e.g. 'mm', 'kN', 'rpm', 'N*m', 'degC'")  # fmt: skip
+        raise BallScrewInputError(field, text, _unknown_unit(unit, example, target)) from None
 
 
 # --- conversion ------------------------------------------------------------------------------
@@ -379,7 +526,7 @@ def _target(unit: str) -> tuple[Any, int]:
     return parsed, _angle_power(parsed)
 
 
-def _per_turn(field: str, text: str, unit: Any, target: str) -> Any:
+def _per_turn(field: str, text: str, unit: Any, target: str, number: Any = None) -> Any:
     """The factor that reads a frequency as revolutions, or a length as one per revolution.
 
     Pint counts the radian as 1, so without this "10 mm/rev" would become a lead
@@ -399,11 +546,107 @@ def _per_turn(field: str, text: str, unit: Any, target: str) -> Any:
         or wanted.dimensionless
         or not (unit * factor).is_compatible_with(wanted)
     ):
-        raise BallScrewInputError(
-            field, text, f"a quantity convertible to {target} (incompatible unit), "
-            f"e.g. '1 {_example(target)}'",
-        )  # fmt: skip
+        raise _wrong_dimension(field, text, number, unit, target)
     return factor
+
+
+_KINDS = (
+    ("m", "a length"), ("kg", "a mass"), ("s", "a time"), ("N", "a force"),
+    ("N*m", "a torque or an energy"), ("Pa", "a pressure or a stress"),
+    ("m/s", "a linear speed"), ("m/s**2", "an acceleration"), ("K", "a temperature"),
+    ("C", "an electric charge"), ("F", "a capacitance"), ("A", "an electric current"),
+    ("V", "a voltage"), ("gauss", "a magnetic flux density"),
+    ("Hz", "a frequency or a speed of rotation"), ("W", "a power"), ("m**2", "an area"),
+    ("m**3", "a volume"), ("m**2/s", "a kinematic viscosity"), ("Pa*s", "a dynamic viscosity"),
+    ("kg/m**3", "a density"), ("N/m", "a stiffness"), ("kg*m**2", "a moment of inertia"),
+    ("1/Pa", "a pressure-viscosity coefficient"), ("", "a plain number (an angle or a ratio)"),
+)  # fmt: skip
+"""Names of dimensions, for refusals: '0.3 g' is a mass; this field is an acceleration."""
+
+
+@functools.cache
+def _kind_names() -> dict[Any, str]:
+    ureg = registry()
+    return {ureg.parse_units(u).dimensionality if u else ureg.dimensionless.dimensionality: k
+            for u, k in _KINDS}  # fmt: skip
+
+
+def kind_of(unit: Any) -> str:
+    """What a unit measures, in words: 'a length', 'a force', 'an electric charge'.
+
+    Examples
+    --------
+    >>> kind_of("C"), kind_of("m/turn"), kind_of("delta_degC")
+    ('an electric charge', 'a length', 'a temperature')
+    """
+    if isinstance(unit, str):
+        return _kind_of_text(unit)
+    dims = unit.dimensionality
+    return _kind_names().get(dims, f"a quantity of dimension {dims}")
+
+
+@functools.cache
+def _kind_of_text(unit: str) -> str:
+    return kind_of(registry().parse_units(unit))
+
+
+def _wrong_dimension(
+    field: str, text: str, number: Any, have: Any, target: str
+) -> BallScrewInputError:
+    """The refusal of a unit of another dimension: what the unit is, what the field is."""
+    example = _example(target)
+    name = str(have).replace("_", " ")
+    symbol = f"{have:~}".replace(" ", "")
+    wanted = kind_of(target)
+    if kind_of(have) == wanted:  # the same dimension, another power of the angle
+        per = "per revolution" if _angle_power(have) else "not per revolution"
+        why = f"'{symbol}' ({name}) is {per}, which this field is not"
+    else:
+        why = f"'{symbol}' ({name}) is {kind_of(have)}; this field is {wanted}"
+    close = {u.lower(): u for u in _COMMON_UNITS}.get(symbol.lower())
+    if close and close != symbol and kind_of(close) == wanted:  # '5 MM': megamolar, or mm?
+        why += f" (did you mean '{close}'?)"
+    elif kind_of(have) == "a mass" and wanted == "a force":
+        why += " (a force in pounds is 'lbf', in kilograms 'kgf')"
+    if wanted == "a temperature":
+        example = "degC"
+    return BallScrewInputError(field, text, f"{why}: write e.g. '{_shown(number)} {example}'")
+
+
+def _shown(number: Any) -> str:
+    """A scalar as typed in an example ('40'); for a column of numbers (or none), 1."""
+    return f"{float(number):g}" if isinstance(number, int | float) else "1"
+
+
+_ACCELERATION_G = re.compile(r"(?<!\w)[gG](?!\w)")
+_SPACED_DEGREES = re.compile(r"(?:°|deg|degree|degrees)\*([CF])")
+_TEMPERATURE_LETTERS = {"C": ("degC", "°C", "the coulomb, a unit of charge"),
+                        "F": ("degF", "°F", "the farad, a unit of capacitance")}  # fmt: skip
+
+
+def _shop_unit(
+    field: str, text: str, number: Any, unit_text: str, unit: str, notes: list[Reading] | None
+) -> str:
+    """Unit text as shop floors mean it where the field's dimension settles it.
+
+    ``g`` (or ``G``) on an acceleration is the standard gravity, 9.80665 m/s² (to
+    pint a gram, or a gauss); ``C`` and ``F`` alone on a temperature are degrees
+    Celsius and Fahrenheit (to pint a coulomb and a farad), read with a note. Any
+    other field keeps pint's reading (a mass in ``g`` stays grams).
+    """
+    kind = kind_of(unit)
+    if kind == "an acceleration" and _ACCELERATION_G.search(unit_text):
+        return _ACCELERATION_G.sub("standard_gravity", unit_text)
+    if kind == "a temperature" and (spaced := _SPACED_DEGREES.fullmatch(unit_text)):
+        return "deg" + spaced.group(1)  # '40 ° C', '40 deg C': degrees Celsius, nothing else
+    if kind == "a temperature" and unit_text in _TEMPERATURE_LETTERS:
+        written, symbol, pint_name = _TEMPERATURE_LETTERS[unit_text]
+        n = _shown(number) + " "
+        what = "a difference in " if unit == "delta_degC" else ""
+        _tell([Reading(field, text, f"{what}{symbol}: '{unit_text}' alone is {pint_name}; "
+                                    f"write '{n}{written}'")], notes)  # fmt: skip
+        return written
+    return unit_text
 
 
 @dataclass(frozen=True)
@@ -545,7 +788,9 @@ def _convert(
 ) -> Any:
     """``number`` in ``unit_text`` converted to ``unit`` (a scalar or an array)."""
     ureg = registry()
-    have = _pint_unit(field, text, unit_text)
+    if unit:
+        unit_text = _shop_unit(field, text, number, unit_text, unit, notes)
+    have = _pint_unit(field, text, unit_text, number, unit)
     try:
         if unit is None:
             return ureg.Quantity(number, have).to_base_units().magnitude
@@ -553,16 +798,14 @@ def _convert(
             return ureg.Quantity(number, have).to("").magnitude
         if unit == "delta_degC":  # a difference: 5 degC (or degF) is 5 K (9 degF 5 K) of it
             have = _as_difference(have)
-        factor = _per_turn(field, text, have, unit)
+        factor = _per_turn(field, text, have, unit, number)
         if unit == "rad/s" and (note := _frequency_note(field, text, number, have)):
             _tell([note], notes)
         return (ureg.Quantity(number, have) * factor).to(unit).magnitude
     except BallScrewInputError:
         raise
     except pint.errors.DimensionalityError:
-        example = _example(unit or "")
-        wanted = f"a quantity convertible to {unit} (incompatible unit), e.g. '1 {example}'"
-        raise BallScrewInputError(field, text, wanted) from None
+        raise _wrong_dimension(field, text, number, have, unit or "") from None
     except (pint.errors.PintError, ValueError, TypeError, ArithmeticError):
         raise BallScrewInputError(field, text, _UNIT_HELP) from None
 
