@@ -524,6 +524,21 @@ ScrewGeometry = BallScrew | ScrewArray
 """One screw, or many of one nut arrangement as broadcast arrays (:class:`ScrewArray`)."""
 
 
+def cos(x: Any) -> Any:
+    """Cosine of a screw's angle: the math module's for one screw (a number), numpy's else."""
+    return math.cos(x) if isinstance(x, float) else np.cos(x)
+
+
+def sin(x: Any) -> Any:
+    """Sine of a screw's angle: the math module's for one screw (a number), numpy's else."""
+    return math.sin(x) if isinstance(x, float) else np.sin(x)
+
+
+def tan(x: Any) -> Any:
+    """Tangent of a screw's angle: the math module's for one screw (a number), numpy's else."""
+    return math.tan(x) if isinstance(x, float) else np.tan(x)
+
+
 def reference_screw() -> BallScrew:
     """A 40 mm x 10 mm lead double-nut ball screw with 6.35 mm balls and 2 kN preload.
 

@@ -80,7 +80,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .errors import FloatArray, check_finite
-from .geometry import ScrewGeometry
+from .geometry import ScrewGeometry, cos, sin, tan
 
 __all__ = [
     "Kinematics",
@@ -193,9 +193,9 @@ def kinematics(screw: ScrewGeometry, speed: npt.ArrayLike) -> Kinematics:
     w = check_finite("speed", speed)
     g = screw.gamma
     lam = screw.lead_angle
-    cos_l, sin_l = np.cos(lam), np.sin(lam)
+    cos_l, sin_l = cos(lam), sin(lam)
     g_l = g * cos_l**2  # gamma cos^2(lambda)
-    sin_a = np.sin(screw.contact_angle)
+    sin_a = sin(screw.contact_angle)
     roll = 1.0 - g_l * g_l  # 1 - gamma^2 cos^4(lambda)
     orbital = 0.5 * w * (1.0 - g_l)
     to_roll = screw.ball_diameter * sin_a * cos_l**2 / (screw.pitch_diameter * roll)
@@ -258,7 +258,7 @@ def differential_sliding(
     (52793, 42197)
     """
     kin = kinematics(screw, speed)
-    cos_a = np.cos(screw.contact_angle) * np.cos(screw.lead_angle)
+    cos_a = cos(screw.contact_angle) * cos(screw.lead_angle)
     c_s = (kin.ball_speed + (kin.screw_speed - kin.orbital_speed) * cos_a) / (
         2.0 * screw.deformed_radius_screw
     )
@@ -299,5 +299,5 @@ def four_point_spin(screw: ScrewGeometry, speed: npt.ArrayLike) -> tuple[FloatAr
     True
     """
     kin = kinematics(screw, speed)
-    extra = kin.ball_speed * np.tan(screw.contact_angle)
+    extra = kin.ball_speed * tan(screw.contact_angle)
     return extra + kin.spin_screw, extra - kin.spin_nut

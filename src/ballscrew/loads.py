@@ -44,7 +44,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .errors import FloatArray, check_finite, check_nonnegative
-from .geometry import ScrewGeometry
+from .geometry import ScrewGeometry, cos, sin
 
 __all__ = ["LIFT_OFF_RATIO", "BallLoads", "ball_loads", "preload_split"]
 
@@ -169,7 +169,7 @@ def ball_loads(screw: ScrewGeometry, axial_load: npt.ArrayLike = 0.0) -> BallLoa
     """
     fa = check_finite("axial_load", axial_load)
     z = screw.balls_per_nut
-    per_ball = 1.0 / (z * np.sin(screw.contact_angle) * np.cos(screw.lead_angle))
+    per_ball = 1.0 / (z * sin(screw.contact_angle) * cos(screw.lead_angle))
     if screw.nut == "single":
         f1 = np.abs(fa)
         f2 = np.zeros_like(f1)

@@ -108,7 +108,7 @@ from .. import rolling_losses as rl
 from ..ball_train import creep_slope, expected_train, orbital_sensitivity
 from ..contact import hertz
 from ..errors import FloatArray, check_choice, check_nonnegative
-from ..geometry import ScrewArray, ScrewGeometry
+from ..geometry import ScrewArray, ScrewGeometry, cos
 from ..helix import SlipContact, transverse_slip_loss
 from ..kinematics import differential_sliding, four_point_spin, kinematics, rad_s_to_rpm
 from ..lubricant import Lubricant
@@ -792,7 +792,7 @@ def _ratio_train(
     unit = kinematics(screw, 1.0)
     # Neighbouring balls slide at omega_b * D_w; per unit screw speed:
     sliding = _number(unit.ball_speed) * screw.ball_diameter
-    centre = _number(unit.orbital_speed) * 0.5 * screw.pitch_diameter / np.cos(screw.lead_angle)
+    centre = _number(unit.orbital_speed) * 0.5 * screw.pitch_diameter / cos(screw.lead_angle)
     mass = STEEL_DENSITY * math.pi * screw.ball_diameter**3 / 6.0
     omega2 = state.kinematics.screw_speed**2
     # Push per circuit over omega^2 [N s^2]: mu_bl m v_c^2 Theta / D_w.
