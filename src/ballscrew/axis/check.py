@@ -784,6 +784,7 @@ def _row_samples(
         f = km * mass_part + kf * process
         peak = np.max(np.abs(f), axis=1)
         pre = screw.preload * kp[:, 0]
+        t: FloatArray | None = None  # the motor torques of the draws, for both torque rows
         for name, row in by_name.items():
             u: FloatArray | None = None
             if name.startswith("fatigue life") and case.dynamic_load_rating is not None:
@@ -802,8 +803,9 @@ def _row_samples(
                 j = (j + (axis.screw_inertia + axis.coupling_inertia) / i**2) / axis.motor_inertia
                 u = j / float(row.limit or math.inf)
             elif name.startswith(("peak torque", "RMS torque")):
-                t = (t_motor + ((km - 1.0) * t_mass + (kf - 1.0) * t_process) * lead
-                     / (2.0 * math.pi * i) + (kfr[:, None] - 1.0) * t_fric)  # fmt: skip
+                if t is None:
+                    t = (t_motor + ((km - 1.0) * t_mass + (kf - 1.0) * t_process) * lead
+                         / (2.0 * math.pi * i) + (kfr[:, None] - 1.0) * t_fric)  # fmt: skip
                 if name.startswith("peak"):
                     value = np.max(np.abs(t), axis=1)
                 else:
