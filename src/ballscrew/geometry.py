@@ -475,7 +475,7 @@ class ScrewArray:
     >>> base = reference_screw()
     >>> arr = ScrewArray.of([base, base.replace(lead=0.02)], ndim=2)
     >>> arr.lead.shape, arr.balls_per_nut.ravel().tolist()
-    ((2, 1), [98, 98])
+    ((2, 1), [98, 100])
     """
 
     screws: tuple[BallScrew, ...]
