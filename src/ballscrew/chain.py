@@ -222,7 +222,11 @@ def friction_torques(
     them (a design space, a Monte Carlo sample over the geometry, a catalogue
     series): the inputs are checked once, each screw is evaluated on the
     operating points, and the results are stacked along a first axis, one
-    entry per screw.
+    entry per screw. A model that takes many screws at once (``ModelSpec.batches``:
+    the complete model with its ``"ratio"`` ball train) evaluates the screws of one
+    nut arrangement together, their geometry as broadcast arrays in every layer
+    (:class:`~ballscrew.geometry.ScrewArray`), equal to one call per screw within
+    1e-12 relative; the other models take one screw at a time.
 
     Parameters
     ----------
@@ -230,8 +234,9 @@ def friction_torques(
         The screws, at least one; their order is the first axis of every
         result.
     lubricant, speed, temperature, axial_load, model, chunk_size, warn, components, **parameters
-        As for :func:`friction_torque`; the chunks bound the points of one
-        screw at a time.
+        As for :func:`friction_torque`; a chunk bounds the points evaluated at once,
+        screws times points (whole screws; a screw with more points than a chunk is
+        evaluated alone, in chunks of its points).
     paired : bool
         False (default): every screw at every operating point; the points
         broadcast against each other to a shape P and the results have shape
