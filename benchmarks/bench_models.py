@@ -26,10 +26,15 @@ FILE`` writes this run's figures; ``--readme`` writes the performance table of
 ``README.md`` and ``docs/guide.md`` (between their ``perf-table`` markers)
 from this run, ``--table-from FILE`` from a recorded run.
 
+``benchmarks/bench_many_screws.py`` then times 1000 new screws of every size
+(diameters, leads, balls, preloads, a third of them 4-point nuts) x 1000 speeds,
+per CPU-second and per wall-second (issue 39).
+
 Targets: on the grid (issues 3 and 8) catalog >= 1e7 pt/s, harris-simplified
 and olaru >= 1e6, viscoelastic >= 1e5, harris-full >= 1e4, complete >= 1e5,
 and (issue 25) complete >= 3e6; scattered (issue 25) complete, olaru and
-harris-simplified >= 1e6; many screws (issue 25) >= 5e5 pt/s; one point
+harris-simplified >= 1e6; many screws (issue 25) >= 5e5 pt/s, new screws of every
+size x 1000 speeds (issue 39) >= 1e6 pt per CPU-second; one point
 (issue 25) complete < 0.5 ms, catalog < 0.2 ms; the one-point command < 0.5 s
 CPU; a move's energy with its temperature < 0.2 s per cycle; a 1e7-point call
 (total only) < 400 MB.
@@ -283,6 +288,20 @@ def _many_screws(figures: Figures, count: int) -> None:
         f"{count * 1000 / cpu:.3e} pt/s ({count * 1000 / wall:.2e} wall)"
         + _against(figures, "many_screws", MANY_SCREWS_TARGET)
     )
+    if batch is None:
+        return
+    # Issue 39: new screws of every size (diameters, leads, balls, preloads, 4-point nuts
+    # among them) x 1000 speeds, benchmarks/bench_many_screws.py.
+    from bench_many_screws import TARGET, measure
+
+    m = measure(count, 1000)
+    figures["many_new_screws"] = m["per_cpu_s"]
+    figures["many_new_screws_wall"] = m["per_wall_s"]
+    print(
+        f"{count} new screws of every size x 1000 speeds (bench_many_screws.py): "
+        f"{m['per_cpu_s']:.3e} pt per CPU-s ({m['cpu_s']:.2f} s CPU), {m['per_wall_s']:.2e} "
+        f"per wall-s ({m['wall_s']:.2f} s)" + _against(figures, "many_new_screws", TARGET)
+    )
 
 
 TABLE_ROWS: tuple[tuple[str, str, str, str], ...] = (
@@ -290,6 +309,8 @@ TABLE_ROWS: tuple[tuple[str, str, str, str], ...] = (
     ("complete, scattered [points/s]", "complete_scattered", "1e6", "{:.3g}"),
     ("complete, one point [ms]", "complete_one_point_ms", "0.5", "{:.2f}"),
     ("complete, 1000 screws × 1000 points [points/s]", "many_screws", "5e5", "{:.3g}"),
+    ("complete, 1000 new screws of every size × 1000 speeds [points/CPU-s]",
+     "many_new_screws", "1e6", "{:.3g}"),
     ("olaru, scattered [points/s]", "olaru_scattered", "1e6", "{:.3g}"),
     ("harris-simplified, scattered [points/s]", "harris-simplified_scattered", "1e6", "{:.3g}"),
     ("catalog, one point [ms]", "catalog_one_point_ms", "0.2", "{:.3f}"),

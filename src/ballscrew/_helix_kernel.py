@@ -39,6 +39,7 @@ def shares(
     screw_side: Any,
     g_nodes: FloatArray,
     j_nodes: FloatArray,
+    table: Any,
     tolerance: float,
     max_iter: int,
     x: FloatArray,
@@ -54,8 +55,9 @@ def shares(
     per_share : (K, n) slip ratio per unit share, :math:`s_\perp/(|\omega_s|a)` [-] (0
         for an unloaded contact); scale : (K, n) :math:`|\omega_s|a` per unit screw
         speed [m];
-    screw_side : (K,) true for a screw contact; g_nodes, j_nodes : (K, M + 1) the
-        tables of :math:`G` and :math:`J/(1+\sigma)`;
+    screw_side : (K,) true for a screw contact; g_nodes, j_nodes : (T, K, M + 1) the
+        tables of :math:`G` and :math:`J/(1+\sigma)`, one set per screw geometry;
+    table : (n,) the set of tables of each point (all 0 for one screw);
     tolerance : the stopping tolerance on the share (and, times the total
         capacity, on the force residual); max_iter : residual evaluations at most;
     x, power, force : (n,) outputs, written in place.
@@ -66,7 +68,7 @@ def shares(
     the other, with the same steps and bits).
     """
     k_count, n = capacity.shape
-    intervals = g_nodes.shape[1] - 1
+    intervals = g_nodes.shape[2] - 1
     lo = np.empty(BLOCK)
     hi = np.empty(BLOCK)
     share = np.empty(BLOCK)
@@ -77,6 +79,7 @@ def shares(
         for j in range(m):
             # The residual (screw force - nut force) at both ends of [0, 1].
             p = start + j
+            tab = table[p]
             total = 0.0
             f_lo = 0.0
             f_hi = 0.0
@@ -85,7 +88,9 @@ def shares(
                 ratio = per_share[k, p]
                 t = ratio / (1.0 + ratio) * intervals
                 i = min(int(t), intervals - 1)
-                g_full = g_nodes[k, i] + (t - i) * (g_nodes[k, i + 1] - g_nodes[k, i])
+                g_full = g_nodes[tab, k, i] + (t - i) * (
+                    g_nodes[tab, k, i + 1] - g_nodes[tab, k, i]
+                )
                 if screw_side[k]:
                     f_hi += capacity[k, p] * g_full
                 else:
@@ -103,6 +108,7 @@ def shares(
                 if not active[j]:
                     continue
                 p = start + j
+                tab = table[p]
                 x_j = share[j]
                 f = 0.0
                 slope = 0.0
@@ -113,8 +119,8 @@ def shares(
                     sigma = own * ratio
                     t = sigma / (1.0 + sigma) * intervals
                     i = min(int(t), intervals - 1)
-                    rise = g_nodes[k, i + 1] - g_nodes[k, i]
-                    g = g_nodes[k, i] + (t - i) * rise
+                    rise = g_nodes[tab, k, i + 1] - g_nodes[tab, k, i]
+                    g = g_nodes[tab, k, i] + (t - i) * rise
                     f += sign * capacity[k, p] * g
                     slope += capacity[k, p] * rise * intervals / (1.0 + sigma) ** 2 * ratio
                 if f > 0.0:
@@ -141,6 +147,7 @@ def shares(
                 break
         for j in range(m):
             p = start + j
+            tab = table[p]
             x_j = share[j]
             x[p] = x_j
             extra = 0.0
@@ -151,13 +158,15 @@ def shares(
                 t = sigma / (1.0 + sigma) * intervals
                 i = min(int(t), intervals - 1)
                 frac = t - i
-                j_slip = (j_nodes[k, i] + frac * (j_nodes[k, i + 1] - j_nodes[k, i])) * (
-                    1.0 + sigma
+                j_slip = (
+                    j_nodes[tab, k, i] + frac * (j_nodes[tab, k, i + 1] - j_nodes[tab, k, i])
+                ) * (1.0 + sigma)
+                extra += (
+                    capacity[k, p] * 1.5 / math.pi * scale[k, p] * (j_slip - j_nodes[tab, k, 0])
                 )
-                extra += capacity[k, p] * 1.5 / math.pi * scale[k, p] * (j_slip - j_nodes[k, 0])
                 if screw_side[k]:
                     side_force += capacity[k, p] * (
-                        g_nodes[k, i] + frac * (g_nodes[k, i + 1] - g_nodes[k, i])
+                        g_nodes[tab, k, i] + frac * (g_nodes[tab, k, i + 1] - g_nodes[tab, k, i])
                     )
             power[p] = extra
             force[p] = side_force
@@ -197,19 +206,26 @@ def run(
     max_iter: int,
     *,
     compiled: bool = True,
+    table: Any = None,
 ) -> tuple[FloatArray, FloatArray, FloatArray]:
     """Shares, extra powers and forces of every point, by the compiled kernel.
 
     With ``compiled=False``, by :func:`shares` as plain Python (for a few points).
+    ``g_nodes`` and ``j_nodes`` are (K, M + 1) tables shared by every point, or
+    (T, K, M + 1) sets of them with ``table`` (n,) naming each point's set.
     """
     kernel = _compiled() if compiled else shares
     assert kernel is not None
     n = capacity.shape[1]
+    if table is None:
+        g_nodes, j_nodes = g_nodes[None], j_nodes[None]
+        table = np.zeros(n, dtype=np.intp)
     x, power, force = np.empty(n), np.empty(n), np.empty(n)
     kernel(
         np.ascontiguousarray(capacity), np.ascontiguousarray(per_share),
         np.ascontiguousarray(scale), np.asarray(screw_side, dtype=np.bool_),
         np.ascontiguousarray(g_nodes), np.ascontiguousarray(j_nodes),
-        float(tolerance), int(max_iter), x, power, force,
+        np.ascontiguousarray(table, dtype=np.intp), float(tolerance), int(max_iter),
+        x, power, force,
     )  # fmt: skip
     return x, power, force

@@ -26,7 +26,7 @@ from .errors import (
     FloatArray,
 )
 from .friction import MODELS, ModelSpec, get_model
-from .geometry import BallScrew
+from .geometry import BallScrew, ScrewArray
 from .helix import JIT_LOAD_POINTS, load_kernel
 from .kinematics import rad_s_to_rpm
 from .lubricant import Lubricant
@@ -222,7 +222,11 @@ def friction_torques(
     them (a design space, a Monte Carlo sample over the geometry, a catalogue
     series): the inputs are checked once, each screw is evaluated on the
     operating points, and the results are stacked along a first axis, one
-    entry per screw.
+    entry per screw. A model that takes many screws at once (``ModelSpec.batches``:
+    the complete model with its ``"ratio"`` ball train) evaluates the screws of one
+    nut arrangement together, their geometry as broadcast arrays in every layer
+    (:class:`~ballscrew.geometry.ScrewArray`), equal to one call per screw within
+    1e-12 relative; the other models take one screw at a time.
 
     Parameters
     ----------
@@ -230,8 +234,9 @@ def friction_torques(
         The screws, at least one; their order is the first axis of every
         result.
     lubricant, speed, temperature, axial_load, model, chunk_size, warn, components, **parameters
-        As for :func:`friction_torque`; the chunks bound the points of one
-        screw at a time.
+        As for :func:`friction_torque`; a chunk bounds the points evaluated at once,
+        screws times points (whole screws; a screw with more points than a chunk is
+        evaluated alone, in chunks of its points).
     paired : bool
         False (default): every screw at every operating point; the points
         broadcast against each other to a shape P and the results have shape
@@ -287,7 +292,19 @@ def friction_torques(
     total = np.empty(shape)
     kept: dict[str, FloatArray] = {}
     worst: dict[tuple[str, str], ValidityIssue] = {}
-    for i, screw in enumerate(screws):
+
+    def store(rows: Any, out: dict[str, FloatArray], issues: list[ValidityIssue]) -> None:
+        for key, value in out.items():
+            if key not in kept:
+                kept[key] = np.zeros(shape)  # a component another screw lacks is 0 there
+            kept[key][rows] = value
+        for issue in issues:
+            known = worst.get((issue.quantity, issue.model))
+            if known is None or issue.excess > known.excess:
+                worst[(issue.quantity, issue.model)] = issue
+
+    def one(i: int) -> None:
+        screw = screws[i]
         points = (w0, t0, fa0) if per_screw is None else per_screw(i)
         try:
             out, total[i], _ = _evaluate(
@@ -297,17 +314,97 @@ def friction_torques(
             if exc.field != "operating point":  # a model parameter: not this screw's doing
                 raise
             raise BallScrewInputError(f"screws[{i}]: {exc.field}", exc.value, exc.allowed) from None
-        for key, value in out.items():
-            if key not in kept:
-                kept[key] = np.zeros(shape)  # a component another screw lacks is 0 there
-            kept[key][i] = value
-        for issue in validity.check(screw, lubricant, *points, spec.name, used, spec.checks):
-            known = worst.get((issue.quantity, issue.model))
-            if known is None or issue.excess > known.excess:
-                worst[(issue.quantity, issue.model)] = issue
+        store(i, out, validity.check(screw, lubricant, *points, spec.name, used, spec.checks))
+
+    per_points = math.prod(shape[1:])
+    if spec.batches is None or not spec.batches(used) or per_points > chunk:
+        for i in range(n):
+            one(i)
+    else:
+        # Every layer takes the geometry as arrays: the screws of one nut arrangement go
+        # through the model together, as many at a time as the chunk holds.
+        rows_points = _rows_points(n, (w0, t0, fa0), len(shape), paired)
+        step = max(1, chunk // max(per_points, 1))
+        for kind in dict.fromkeys((s.nut, s.ball_separation) for s in screws):
+            group = [i for i, s in enumerate(screws) if (s.nut, s.ball_separation) == kind]
+            for start in range(0, len(group), step):
+                part = group[start : start + step]
+                done = _evaluate_rows(
+                    spec, [screws[i] for i in part], lubricant, rows_points(part), used,
+                    parameters, components, len(shape),
+                )  # fmt: skip
+                if done is None:  # a point a model cannot solve: found and named screw by screw
+                    for i in part:
+                        one(i)
+                    continue
+                out, part_total, issues = done
+                total[part] = part_total
+                store(part, out, issues)
     leads = np.array([s.lead for s in screws]).reshape((n,) + (1,) * (len(shape) - 1))
     w, t, fa = (np.broadcast_to(x, shape) for x in (w0, t0, fa0))
     return _result(spec, used, kept, total, (w, t, fa), leads, list(worst.values()), warn)
+
+
+def _rows_points(
+    n: int, points: tuple[FloatArray, FloatArray, FloatArray], ndim: int, paired: bool
+) -> Callable[[list[int]], tuple[FloatArray, FloatArray, FloatArray]]:
+    """The points of the screws ``part`` with a first axis for the screws (or 1: shared).
+
+    Not paired, every screw has every point: a leading axis of 1 is put on. Paired, the
+    points' first axis is the screws' (or 1): the rows of ``part`` are taken.
+    """
+    if not paired:
+        lifted = [x.reshape((1,) * (ndim - x.ndim) + x.shape) for x in points]
+        return lambda part: (lifted[0], lifted[1], lifted[2])
+    aligned = [x.reshape((1,) * (ndim - x.ndim) + x.shape) for x in points]
+
+    def rows(part: list[int]) -> tuple[FloatArray, FloatArray, FloatArray]:
+        w, t, fa = (x[part] if x.shape[0] > 1 else x for x in aligned)
+        return w, t, fa
+
+    return rows
+
+
+def _evaluate_rows(
+    spec: ModelSpec,
+    screws: list[BallScrew],
+    lubricant: Lubricant,
+    points: tuple[FloatArray, FloatArray, FloatArray],
+    used: dict[str, Any],
+    parameters: dict[str, Any],
+    keep: bool,
+    ndim: int,
+) -> tuple[dict[str, FloatArray], FloatArray, list[ValidityIssue]] | None:
+    """Components (if ``keep``), totals and validity issues of many screws in one evaluation.
+
+    The screws (one nut arrangement) become a :class:`~ballscrew.geometry.ScrewArray`
+    of ``ndim`` axes, the first theirs, against the points of :func:`_rows_points`;
+    None where a point is not solved, so that the caller names it screw by screw.
+    """
+    arr = ScrewArray.of(screws, ndim)
+    w, t, fa = points
+    try:
+        state = None
+        if spec.uses_state:
+            state = operating_state(
+                arr, lubricant, speed=w, temperature=t, axial_load=fa,
+                hertz_method=used["hertz_method"], asperity_b=used["asperity_b"],
+                asperity_c=used["asperity_c"], broadcast=False,
+            )  # fmt: skip
+        out = spec(arr, lubricant, w, t, fa, state, **parameters)
+        _check_solved(spec.name, out, w, t, fa)
+    except BallScrewInputError as exc:
+        if exc.field != "operating point":
+            raise
+        return None
+    except _UNSOLVED:
+        return None
+    shape = (len(screws), *np.broadcast_shapes(w.shape, t.shape, fa.shape)[1:])
+    total = np.zeros(shape)
+    for value in out.values():
+        total += value
+    kept = {k: np.array(v, dtype=float) for k, v in out.items()} if keep else {}
+    return kept, total, validity.check(arr, lubricant, w, t, fa, spec.name, used, spec.checks)
 
 
 def _prepared(

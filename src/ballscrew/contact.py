@@ -179,7 +179,9 @@ def ellipticity_exact(radius_ratio: ArrayLike) -> FloatArray:
        integrals", Numer. Algorithms 10 (1995) 13-26, doi:10.1007/BF02198293.
     """
     ratio_in = check_in_range("radius_ratio", radius_ratio, 1.0, np.inf, inclusive=(True, False))
-    if ratio_in.size == 1:  # one geometry: solved once per process (a ball screw has two)
+    if ratio_in.size == 1 or (ratio_in.size and np.all(ratio_in == ratio_in.flat[0])):
+        # One geometry (a ball screw has two; many screws' circular ball-ball contacts
+        # are one): solved once per process.
         single: FloatArray = np.full(ratio_in.shape, _ellipticity_one(float(ratio_in.flat[0])))
         return single
     return _ellipticity_solve(ratio_in)

@@ -36,10 +36,12 @@ from __future__ import annotations
 
 import functools
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, fields, replace
 from typing import Any, Literal, get_args
 
 import numpy as np
+import numpy.typing as npt
 
 from .errors import BallScrewInputError, check_in_range, check_nonnegative, check_positive
 from .materials import (
@@ -56,6 +58,8 @@ __all__ = [
     "BallScrew",
     "BallSeparation",
     "NutArrangement",
+    "ScrewArray",
+    "ScrewGeometry",
     "check_buildable",
     "reference_screw",
 ]
@@ -435,6 +439,104 @@ class BallScrew:
     def composite_roughness_nut(self) -> float:
         r"""Composite RMS roughness, ball-nut contact, :math:`\sqrt{\sigma_b^2+\sigma_n^2}` [m]."""
         return float(composite_roughness(self.roughness_ball, self.roughness_nut))
+
+
+_ARRAY_FIELDS: tuple[str, ...] = (
+    "pitch_diameter", "lead", "ball_diameter", "contact_angle", "conformity_screw",
+    "conformity_nut", "loaded_turns", "preload", "youngs_modulus_ball", "youngs_modulus_races",
+    "poisson_ratio_ball", "poisson_ratio_races", "roughness_ball", "roughness_screw",
+    "roughness_nut",
+)  # fmt: skip
+"""The numeric fields of :class:`BallScrew` that :class:`ScrewArray` holds as arrays."""
+
+_DERIVED: tuple[str, ...] = (
+    "lead_angle", "gamma", "contact_radius_screw", "contact_radius_nut", "rx_screw", "rx_nut",
+    "ry_screw", "ry_nut", "deformed_radius_screw", "deformed_radius_nut", "reduced_modulus",
+    "composite_roughness_screw", "composite_roughness_nut",
+)  # fmt: skip
+"""The derived quantities of :class:`BallScrew` that :class:`ScrewArray` holds as arrays."""
+
+
+@dataclass(frozen=True, eq=False)
+class ScrewArray:
+    r"""Many screws of one nut arrangement, their geometry as broadcast arrays.
+
+    What a :class:`BallScrew` gives as numbers, for a table of screws: every
+    numeric field and derived quantity is an array whose first axis runs over
+    the screws and whose other axes have length 1 (``shape`` ``(n, 1, ..., 1)``),
+    so that it broadcasts against operating points of ``ndim - 1`` axes and
+    every physics layer works on all screws at once. The values are read from
+    the validated screws themselves (:meth:`of`), so each screw's entry has the
+    same bits as the screw's own attribute. The categorical fields (``nut``,
+    ``ball_separation``) are shared by all screws of an array.
+
+    Examples
+    --------
+    >>> base = reference_screw()
+    >>> arr = ScrewArray.of([base, base.replace(lead=0.02)], ndim=2)
+    >>> arr.lead.shape, arr.balls_per_nut.ravel().tolist()
+    ((2, 1), [98, 100])
+    """
+
+    screws: tuple[BallScrew, ...]
+    nut: NutArrangement
+    ball_separation: BallSeparation
+    values: dict[str, npt.NDArray[Any]]
+
+    @classmethod
+    def of(cls, screws: Sequence[BallScrew], ndim: int = 1) -> ScrewArray:
+        """The screws (one nut arrangement and ball separation) as arrays of ``ndim`` axes."""
+        screws = tuple(screws)
+        if not screws:
+            raise BallScrewInputError("screws", screws, "at least one BallScrew")
+        kinds = {(s.nut, s.ball_separation) for s in screws}
+        if len(kinds) != 1:
+            raise BallScrewInputError(
+                "screws", sorted(kinds), "screws of one nut arrangement and ball separation"
+            )
+        shape = (len(screws),) + (1,) * (max(ndim, 1) - 1)
+        values: dict[str, npt.NDArray[Any]] = {}
+        for name in _ARRAY_FIELDS + _DERIVED:
+            values[name] = np.array([getattr(s, name) for s in screws], dtype=float).reshape(shape)
+        for name in ("circuits", "balls_per_circuit", "balls_per_nut"):
+            values[name] = np.array([getattr(s, name) for s in screws], dtype=np.intp).reshape(
+                shape
+            )
+        return cls(screws, screws[0].nut, screws[0].ball_separation, values)
+
+    def __len__(self) -> int:
+        return len(self.screws)
+
+    def with_ndim(self, ndim: int) -> ScrewArray:
+        """The same screws, their arrays shaped ``(n, 1, ..., 1)`` with ``ndim`` axes."""
+        shape = (len(self.screws),) + (1,) * (max(ndim, 1) - 1)
+        values = {k: v.reshape(shape) for k, v in self.values.items()}
+        return ScrewArray(self.screws, self.nut, self.ball_separation, values)
+
+    def __getattr__(self, name: str) -> Any:
+        values = self.__dict__.get("values")
+        if values is not None and name in values:
+            return values[name]
+        raise AttributeError(name)
+
+
+ScrewGeometry = BallScrew | ScrewArray
+"""One screw, or many of one nut arrangement as broadcast arrays (:class:`ScrewArray`)."""
+
+
+def cos(x: Any) -> Any:
+    """Cosine of a screw's angle: the math module's for one screw (a number), numpy's else."""
+    return math.cos(x) if isinstance(x, float) else np.cos(x)
+
+
+def sin(x: Any) -> Any:
+    """Sine of a screw's angle: the math module's for one screw (a number), numpy's else."""
+    return math.sin(x) if isinstance(x, float) else np.sin(x)
+
+
+def tan(x: Any) -> Any:
+    """Tangent of a screw's angle: the math module's for one screw (a number), numpy's else."""
+    return math.tan(x) if isinstance(x, float) else np.tan(x)
 
 
 def reference_screw() -> BallScrew:

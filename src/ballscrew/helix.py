@@ -105,6 +105,8 @@ __all__ = [
     "transverse_slip_loss",
 ]
 
+IntArray = npt.NDArray[np.intp]
+
 TABLE_NODES: int = 513
 """Nodes of the tables of :math:`J` and :math:`G` over :math:`t = \\sigma/(1+\\sigma)`."""
 
@@ -160,10 +162,10 @@ class SlipContact:
         Normal load :math:`Q` [N].
     semi_axis : array_like
         Hertz semi-axis across the groove :math:`a` [m].
-    aspect : float
-        :math:`\beta = b/a` [-], in (0, 1].
-    spin : float
-        Spin over screw speed :math:`|\omega_s/\omega|` [-], > 0.
+    aspect : float or numpy.ndarray
+        :math:`\beta = b/a` [-], in (0, 1] (one per screw, for many screws at once).
+    spin : float or numpy.ndarray
+        Spin over screw speed :math:`|\omega_s/\omega|` [-], > 0 (one per screw).
     curvature : float
         Heathcote coefficient over spin and semi-axis, :math:`C/\omega_s` [1/m]
         (:math:`\kappa = Ca/\omega_s`); used only by :func:`ball_slip_balance`.
@@ -173,8 +175,8 @@ class SlipContact:
     friction: npt.ArrayLike
     load: npt.ArrayLike
     semi_axis: npt.ArrayLike
-    aspect: float
-    spin: float
+    aspect: float | FloatArray
+    spin: float | FloatArray
     curvature: float = 0.0
 
 
@@ -360,7 +362,7 @@ def _stacked(
     stacked_scale = np.stack(scale)
     per_share = slip / np.where(stacked_scale > 0.0, stacked_scale, np.inf)
     sides, g_nodes, j_nodes = _stacked_tables(
-        tuple(c.side == "screw" for c in contacts), tuple(c.aspect for c in contacts)
+        tuple(c.side == "screw" for c in contacts), tuple(float(c.aspect) for c in contacts)
     )
     return np.stack(capacity), per_share, stacked_scale, sides, g_nodes, j_nodes
 
@@ -380,13 +382,134 @@ def _stacked_tables(
 
 def _kernel_inputs(
     contacts: Sequence[SlipContact], slip: float
-) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray, FloatArray, FloatArray]:
-    """The compiled kernel's inputs for ``contacts`` (flattened points) and ``slip``."""
+) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray, FloatArray, FloatArray, IntArray]:
+    """The compiled kernel's inputs for ``contacts`` (flattened points) and ``slip``.
+
+    One set of tables, shared by every point (the kernel's ``table`` all 0).
+    """
     _, capacity, scale = _contact_arrays(contacts)
-    return _stacked(contacts, capacity, scale, slip)
+    cap, per_share, stacked_scale, sides, g_nodes, j_nodes = _stacked(
+        contacts, capacity, scale, slip
+    )
+    table = np.zeros(cap.shape[1], dtype=np.intp)
+    return cap, per_share, stacked_scale, sides, g_nodes[None], j_nodes[None], table
 
 
-def transverse_slip_loss(contacts: Sequence[SlipContact], slip: float) -> SlipShare:
+def _tables_many(aspects: FloatArray) -> tuple[FloatArray, FloatArray]:
+    """:func:`_tables`' J/(1+sigma) and G at each of ``aspects`` (A,), as (A, nodes) arrays.
+
+    The same cubic interpolation across the aspect nodes, written on whole arrays, term
+    for term in the same order (the same bits as :func:`_tables`); an aspect outside
+    [0.02, 1] gets its own tables.
+    """
+    aspects = np.asarray(aspects, dtype=float).reshape(-1)
+    inside = (aspects >= 0.02) & (aspects <= 1.0)
+    j = np.zeros((aspects.size, TABLE_NODES))
+    g = np.zeros((aspects.size, TABLE_NODES))
+    if inside.any():
+        a = aspects[inside]
+        intervals = ASPECT_NODES - 1
+        first = np.clip((a * intervals).astype(np.intp) - 1, 0, intervals - 3)
+        u = a * intervals - first
+        weights = (
+            -(u - 1.0) * (u - 2.0) * (u - 3.0) / 6.0,
+            u * (u - 2.0) * (u - 3.0) / 2.0,
+            -u * (u - 1.0) * (u - 3.0) / 2.0,
+            u * (u - 1.0) * (u - 2.0) / 6.0,
+        )
+        stored = _stored_tables()
+        if stored is None:
+            nodes = [_node_tables(i) for i in range(ASPECT_NODES)]
+            stored = (np.stack([n[0] for n in nodes]), np.stack([n[1] for n in nodes]))
+        j_in, g_in = j[inside], g[inside]
+        for k, weight in enumerate(weights):
+            j_in += weight[:, None] * stored[0][first + k]
+            g_in += weight[:, None] * stored[1][first + k]
+        j[inside], g[inside] = j_in, g_in
+        j[:, -1], g[:, -1] = 2.0 * math.pi / 3.0, 1.0
+    for i in np.flatnonzero(~inside):
+        _, j[i], g[i] = _tables(float(aspects[i]))
+    return j, g
+
+
+def _rows_slip_loss(contacts: Sequence[SlipContact], slip: npt.ArrayLike) -> SlipShare:
+    """:func:`transverse_slip_loss` of many screws at once: first axis the screws.
+
+    Each contact's ``aspect`` and ``spin`` and the ``slip`` hold one value per screw
+    (shape (S,) or (S, 1, ...)); its arrays have the screws on their first axis. With
+    the compiled kernel every point runs the same steps on its own screw's tables as
+    in a call for that screw alone; without it, one call per screw.
+    """
+    count = max(int(np.size(c.aspect)) for c in contacts)
+    aspects = [np.broadcast_to(np.asarray(c.aspect, dtype=float).reshape(-1), (count,))
+               for c in contacts]  # fmt: skip
+    spins = [np.broadcast_to(np.asarray(c.spin, dtype=float).reshape(-1), (count,))
+             for c in contacts]  # fmt: skip
+    slips = np.broadcast_to(np.asarray(slip, dtype=float).reshape(-1), (count,))
+    for c, spin, aspect in zip(contacts, spins, aspects, strict=True):
+        check_choice("side", c.side, ("screw", "nut"))
+        check_positive("spin", spin)
+        check_positive("aspect", aspect)
+    check_nonnegative("slip", slips, "m")
+    shape = np.broadcast_shapes(
+        *(np.broadcast_shapes(np.shape(c.friction), np.shape(c.load), np.shape(c.semi_axis))
+          for c in contacts),
+    )  # fmt: skip
+    shape = (count, *shape[1:]) if shape else (count,)
+    n = math.prod(shape)
+    per_screw = n // count
+    if not (n >= JIT_MIN_POINTS and _helix_kernel.enabled(load=n >= JIT_LOAD_POINTS)):
+        rows = [
+            transverse_slip_loss(
+                [SlipContact(c.side, _row(c.friction, i, shape), _row(c.load, i, shape),
+                             _row(c.semi_axis, i, shape), float(aspects[k][i]),
+                             float(spins[k][i]))
+                 for k, c in enumerate(contacts)],
+                float(slips[i]),
+            )
+            for i in range(count)
+        ]  # fmt: skip
+        return SlipShare(
+            power=np.stack([r.power for r in rows]).reshape(shape),
+            screw_share=np.stack([r.screw_share for r in rows]).reshape(shape),
+            force=np.stack([r.force for r in rows]).reshape(shape),
+        )
+    capacity = np.stack([
+        np.broadcast_to(np.asarray(c.friction, dtype=float) * np.asarray(c.load, dtype=float),
+                        shape).reshape(-1)
+        for c in contacts
+    ])  # fmt: skip
+    column = (count,) + (1,) * (len(shape) - 1)
+    scale = np.stack([
+        np.broadcast_to(spin.reshape(column) * np.asarray(c.semi_axis, dtype=float),
+                        shape).reshape(-1)
+        for c, spin in zip(contacts, spins, strict=True)
+    ])  # fmt: skip
+    per_point_slip = np.repeat(slips, per_screw)
+    per_share = per_point_slip / np.where(scale > 0.0, scale, np.inf)
+    j_all, g_all = _tables_many(np.stack(aspects, axis=1).reshape(-1))
+    g_nodes = g_all.reshape(count, len(contacts), TABLE_NODES)
+    j_nodes = j_all.reshape(count, len(contacts), TABLE_NODES)
+    sides = np.array([c.side == "screw" for c in contacts])
+    table = np.repeat(np.arange(count, dtype=np.intp), per_screw)
+    x, power, force = _helix_kernel.run(
+        capacity, per_share, scale, sides, g_nodes, j_nodes, SHARE_TOLERANCE, MAX_ITERATIONS,
+        compiled=True, table=table,
+    )  # fmt: skip
+    return SlipShare(
+        power=power.reshape(shape), screw_share=x.reshape(shape), force=force.reshape(shape)
+    )
+
+
+def _row(value: npt.ArrayLike, i: int, shape: tuple[int, ...]) -> FloatArray:
+    """Screw ``i``'s values of an array whose first axis is the screws' (or 1: shared)."""
+    x = np.asarray(value, dtype=float)
+    x = x.reshape((1,) * (len(shape) - x.ndim) + x.shape)
+    row: FloatArray = x[i if x.shape[0] > 1 else 0]
+    return row
+
+
+def transverse_slip_loss(contacts: Sequence[SlipContact], slip: npt.ArrayLike) -> SlipShare:
     r"""Dissipation of the transverse slip of one ball, shared by its moment balance.
 
     Vectorised over the operating points (the arrays of the contacts
@@ -398,8 +521,10 @@ def transverse_slip_loss(contacts: Sequence[SlipContact], slip: float) -> SlipSh
     contacts : sequence of SlipContact
         The ball's contacts: one screw and one nut contact (2-point), or two
         of each (4-point).
-    slip : float
+    slip : float or array_like
         Transverse slip per unit screw speed, :math:`s_\perp/\omega = R\sin\lambda` [m].
+        Many screws at once: ``slip`` and each contact's ``aspect`` and ``spin`` hold one
+        value per screw, and the contacts' arrays have the screws on their first axis.
 
     Returns
     -------
@@ -414,6 +539,8 @@ def transverse_slip_loss(contacts: Sequence[SlipContact], slip: float) -> SlipSh
     >>> round(float(r.screw_share), 6), round(float(r.force), 3)
     (0.5, 2.29)
     """
+    if np.ndim(slip) or any(np.ndim(c.aspect) or np.ndim(c.spin) for c in contacts):
+        return _rows_slip_loss(contacts, slip)
     _check_contacts(contacts)
     s = float(check_nonnegative("slip", slip, "m"))
     shape, capacity, scale = _contact_arrays(contacts)
@@ -433,7 +560,7 @@ def transverse_slip_loss(contacts: Sequence[SlipContact], slip: float) -> SlipSh
         for k, c in enumerate(contacts):
             if c.side == side:
                 per_share = ratio(s, k, index)  # d sigma / d share
-                g, slope = _lookup_g(c.aspect, share * per_share)
+                g, slope = _lookup_g(float(c.aspect), share * per_share)
                 total = total + capacity[k][index] * g
                 rate = rate + sign * capacity[k][index] * slope * per_share
         return total, rate
@@ -474,8 +601,8 @@ def transverse_slip_loss(contacts: Sequence[SlipContact], slip: float) -> SlipSh
     power = np.zeros(n)
     for k, c in enumerate(contacts):
         share = x if c.side == "screw" else 1.0 - x
-        j_slip = _lookup_j(c.aspect, ratio(share * s, k, everything))
-        j_spin = _tables(c.aspect)[1][0]  # J at sigma = 0: the spin alone
+        j_slip = _lookup_j(float(c.aspect), ratio(share * s, k, everything))
+        j_spin = _tables(float(c.aspect))[1][0]  # J at sigma = 0: the spin alone
         power += capacity[k] * 1.5 / math.pi * scale[k] * (j_slip - j_spin)
     force = side_force(x, "screw", everything)[0]
     return SlipShare(
@@ -541,13 +668,13 @@ def ball_slip_balance(contacts: Sequence[SlipContact], slip: float) -> BallSlip:
     mu = [float(np.asarray(c.friction)) for c in contacts]
     semi = [float(check_positive("semi_axis", c.semi_axis, "m")) for c in contacts]
     values = [
-        (m * float(np.asarray(c.load)), c.spin * a)
+        (m * float(np.asarray(c.load)), float(c.spin) * a)
         for m, c, a in zip(mu, contacts, semi, strict=True)
     ]
 
     def integrals(k: int, speed: float) -> tuple[float, float]:
         c = contacts[k]
-        return _fine_integrals(c.curvature * semi[k], c.aspect, speed / values[k][1])
+        return _fine_integrals(c.curvature * semi[k], float(c.aspect), speed / values[k][1])
 
     def force(x: float, side: str) -> float:
         share = x if side == "screw" else 1.0 - x

@@ -80,7 +80,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .errors import FloatArray, check_finite
-from .geometry import BallScrew
+from .geometry import ScrewGeometry, cos, sin, tan
 
 __all__ = [
     "Kinematics",
@@ -161,13 +161,13 @@ class Kinematics:
     spin_to_roll_nut: float
 
 
-def kinematics(screw: BallScrew, speed: npt.ArrayLike) -> Kinematics:
+def kinematics(screw: ScrewGeometry, speed: npt.ArrayLike) -> Kinematics:
     r"""Rolling speeds and the transverse slip for a screw turning at ``speed``.
 
     Parameters
     ----------
-    screw : BallScrew
-        Geometry.
+    screw : BallScrew or ScrewArray
+        Geometry (many screws as broadcast arrays: :class:`ballscrew.geometry.ScrewArray`).
     speed : array_like
         Angular speed of the screw :math:`\omega` [rad/s].
 
@@ -193,9 +193,9 @@ def kinematics(screw: BallScrew, speed: npt.ArrayLike) -> Kinematics:
     w = check_finite("speed", speed)
     g = screw.gamma
     lam = screw.lead_angle
-    cos_l, sin_l = math.cos(lam), math.sin(lam)
+    cos_l, sin_l = cos(lam), sin(lam)
     g_l = g * cos_l**2  # gamma cos^2(lambda)
-    sin_a = math.sin(screw.contact_angle)
+    sin_a = sin(screw.contact_angle)
     roll = 1.0 - g_l * g_l  # 1 - gamma^2 cos^4(lambda)
     orbital = 0.5 * w * (1.0 - g_l)
     to_roll = screw.ball_diameter * sin_a * cos_l**2 / (screw.pitch_diameter * roll)
@@ -213,7 +213,9 @@ def kinematics(screw: BallScrew, speed: npt.ArrayLike) -> Kinematics:
     )
 
 
-def differential_sliding(screw: BallScrew, speed: npt.ArrayLike) -> tuple[FloatArray, FloatArray]:
+def differential_sliding(
+    screw: ScrewGeometry, speed: npt.ArrayLike
+) -> tuple[FloatArray, FloatArray]:
     r"""Curvature coefficients of the differential (Heathcote) sliding at both contacts.
 
     Across the groove the pressed contact surface is curved with the deformed
@@ -256,7 +258,7 @@ def differential_sliding(screw: BallScrew, speed: npt.ArrayLike) -> tuple[FloatA
     (52793, 42197)
     """
     kin = kinematics(screw, speed)
-    cos_a = math.cos(screw.contact_angle) * math.cos(screw.lead_angle)
+    cos_a = cos(screw.contact_angle) * cos(screw.lead_angle)
     c_s = (kin.ball_speed + (kin.screw_speed - kin.orbital_speed) * cos_a) / (
         2.0 * screw.deformed_radius_screw
     )
@@ -264,7 +266,7 @@ def differential_sliding(screw: BallScrew, speed: npt.ArrayLike) -> tuple[FloatA
     return c_s, c_n
 
 
-def four_point_spin(screw: BallScrew, speed: npt.ArrayLike) -> tuple[FloatArray, FloatArray]:
+def four_point_spin(screw: ScrewGeometry, speed: npt.ArrayLike) -> tuple[FloatArray, FloatArray]:
     r"""Spin at the screw and nut contacts of a ball with four-point contact [rad/s].
 
     A ball of a 2-point nut rolls about an axis perpendicular to its contact
@@ -297,5 +299,5 @@ def four_point_spin(screw: BallScrew, speed: npt.ArrayLike) -> tuple[FloatArray,
     True
     """
     kin = kinematics(screw, speed)
-    extra = kin.ball_speed * math.tan(screw.contact_angle)
+    extra = kin.ball_speed * tan(screw.contact_angle)
     return extra + kin.spin_screw, extra - kin.spin_nut

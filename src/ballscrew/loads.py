@@ -38,14 +38,13 @@ References
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
 import numpy.typing as npt
 
 from .errors import FloatArray, check_finite, check_nonnegative
-from .geometry import BallScrew
+from .geometry import ScrewGeometry, cos, sin
 
 __all__ = ["LIFT_OFF_RATIO", "BallLoads", "ball_loads", "preload_split"]
 
@@ -134,13 +133,13 @@ class BallLoads:
     axial_force_2: FloatArray
     normal_load_1: FloatArray
     normal_load_2: FloatArray
-    balls_1: int
-    balls_2: int
-    contact_angle: float
+    balls_1: int | npt.NDArray[np.intp]
+    balls_2: int | npt.NDArray[np.intp]
+    contact_angle: float | FloatArray
     lifted_off: npt.NDArray[np.bool_]
 
 
-def ball_loads(screw: BallScrew, axial_load: npt.ArrayLike = 0.0) -> BallLoads:
+def ball_loads(screw: ScrewGeometry, axial_load: npt.ArrayLike = 0.0) -> BallLoads:
     r"""Normal load per ball contact for the screw's nut arrangement and preload.
 
     Parameters
@@ -170,12 +169,12 @@ def ball_loads(screw: BallScrew, axial_load: npt.ArrayLike = 0.0) -> BallLoads:
     """
     fa = check_finite("axial_load", axial_load)
     z = screw.balls_per_nut
-    per_ball = 1.0 / (z * math.sin(screw.contact_angle) * math.cos(screw.lead_angle))
+    per_ball = 1.0 / (z * sin(screw.contact_angle) * cos(screw.lead_angle))
     if screw.nut == "single":
         f1 = np.abs(fa)
         f2 = np.zeros_like(f1)
         lifted = np.zeros(f1.shape, dtype=bool)
-        balls_2 = 0
+        balls_2 = 0 * z
     else:
         f1, f2 = preload_split(fa, screw.preload)
         lifted = (f2 <= 0.0) & (screw.preload > 0.0)

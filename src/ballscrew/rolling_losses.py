@@ -132,8 +132,8 @@ def inlet_shear_heating_factor(
 def replenishment_factor(
     speed_rpm: npt.ArrayLike,
     viscosity_mm2_s: npt.ArrayLike,
-    bore_mm: float,
-    outside_mm: float,
+    bore_mm: float | FloatArray,
+    outside_mm: float | FloatArray,
     *,
     k_rs: float = 3e-8,
     k_z: float = 4.4,
@@ -164,14 +164,14 @@ def replenishment_factor(
     n = np.abs(np.asarray(speed_rpm, dtype=float))
     nu = np.asarray(viscosity_mm2_s, dtype=float)
     exponent = (
-        k_rs * nu * n * (bore_mm + outside_mm) * math.sqrt(k_z / (2.0 * (outside_mm - bore_mm)))
+        k_rs * nu * n * (bore_mm + outside_mm) * np.sqrt(k_z / (2.0 * (outside_mm - bore_mm)))
     )
     result: FloatArray = np.exp(-exponent)
     return result
 
 
 def hysteresis_rolling_force(
-    load: npt.ArrayLike, semi_axis: npt.ArrayLike, rx: float, loss_factor: float
+    load: npt.ArrayLike, semi_axis: npt.ArrayLike, rx: float | FloatArray, loss_factor: float
 ) -> FloatArray:
     r"""Elastic hysteresis rolling resistance of a ball contact [N].
 

@@ -32,7 +32,7 @@ from . import ehl
 from .contact import HertzContact, hertz
 from .design.limits import check_operating_bounds
 from .errors import FloatArray, broadcast_inputs
-from .geometry import BallScrew
+from .geometry import ScrewGeometry
 from .kinematics import Kinematics, kinematics
 from .loads import BallLoads, ball_loads
 from .lubricant import Lubricant
@@ -50,13 +50,14 @@ class ContactState:
         Which member the ball touches.
     family : {1, 2}
         Contact-line family of :mod:`ballscrew.loads` (1 = loaded by a positive axial load).
-    balls : int
-        Number of balls with this contact [-].
+    balls : int or numpy.ndarray
+        Number of balls with this contact [-] (one per screw for many screws,
+        :class:`~ballscrew.geometry.ScrewArray`).
     load : numpy.ndarray
         Normal load per contact :math:`Q` [N].
-    rx, ry : float
+    rx, ry : float or numpy.ndarray
         Effective radii of curvature, rolling direction and across the groove [m].
-    radius : float
+    radius : float or numpy.ndarray
         Distance of the contact from the screw axis [m].
     hertz : HertzContact
         Contact ellipse and pressure.
@@ -81,11 +82,11 @@ class ContactState:
 
     side: Literal["screw", "nut"]
     family: int
-    balls: int
+    balls: int | npt.NDArray[np.intp]
     load: FloatArray
-    rx: float
-    ry: float
-    radius: float
+    rx: float | FloatArray
+    ry: float | FloatArray
+    radius: float | FloatArray
     hertz: HertzContact
     entrainment_speed: FloatArray
     viscosity: FloatArray
@@ -93,7 +94,7 @@ class ContactState:
     materials_parameter: FloatArray
     load_parameter: FloatArray
     film_minimum: FloatArray
-    roughness: float
+    roughness: float | FloatArray
     film_parameter: FloatArray
     asperity_share: FloatArray
 
@@ -129,7 +130,7 @@ class OperatingState:
     state was built with ``broadcast=False``, every array has it.
     """
 
-    screw: BallScrew
+    screw: ScrewGeometry
     lubricant: Lubricant
     temperature: FloatArray
     kinematics: Kinematics
@@ -166,7 +167,7 @@ def operating_points(
 
 
 def operating_state(
-    screw: BallScrew,
+    screw: ScrewGeometry,
     lubricant: Lubricant,
     *,
     speed: npt.ArrayLike,
@@ -181,8 +182,10 @@ def operating_state(
 
     Parameters
     ----------
-    screw : BallScrew
-        Geometry, preload, materials and roughness.
+    screw : BallScrew or ScrewArray
+        Geometry, preload, materials and roughness; many screws of one nut
+        arrangement as broadcast arrays (:class:`ballscrew.geometry.ScrewArray`,
+        first axis the screws) give a state whose arrays carry the screw axis first.
     lubricant : Lubricant
         The oil.
     speed : array_like
@@ -225,11 +228,11 @@ def operating_state(
         kinematics=kin,
         loads=bl,
         contacts=tuple(contacts),
-        shape=np.broadcast_shapes(w.shape, t.shape, fa.shape),
+        shape=np.broadcast_shapes(w.shape, t.shape, fa.shape, np.shape(screw.lead)),
     )
 
 
-def _sides(screw: BallScrew) -> dict[str, tuple[float, float, float, float]]:
+def _sides(screw: ScrewGeometry) -> dict[str, tuple[float, float, float, float]]:
     """Each side's radii of curvature, contact radius and composite roughness [m]."""
     return {
         "screw": (
@@ -251,7 +254,7 @@ def _contact_state(
     side: str,
     family: int,
     q: FloatArray,
-    balls: int,
+    balls: int | npt.NDArray[np.intp],
     curvature: tuple[float, float, float, float],
     kin: Kinematics,
     eta: FloatArray,

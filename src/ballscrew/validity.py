@@ -35,7 +35,7 @@ import numpy as np
 from .contact import ellipticity_exact
 from .ehl import dimensionless_load, dimensionless_speed
 from .errors import BallScrewValidityWarning, FloatArray
-from .geometry import BallScrew
+from .geometry import BallScrew, ScrewArray, ScrewGeometry
 from .kinematics import kinematics, rad_s_to_rpm
 from .loads import LIFT_OFF_RATIO, ball_loads
 from .lubricant import Lubricant
@@ -318,7 +318,7 @@ def grease_note(lubricant: Lubricant) -> list[ValidityIssue]:
 
 
 def check(
-    screw: BallScrew, lubricant: Lubricant, speed: FloatArray, temperature: FloatArray,
+    screw: ScrewGeometry, lubricant: Lubricant, speed: FloatArray, temperature: FloatArray,
     axial_load: FloatArray,
     model: str,
     parameters: dict[str, Any],
@@ -329,7 +329,10 @@ def check(
     Parameters
     ----------
     screw, lubricant, speed, temperature, axial_load
-        The call's inputs (speed [rad/s], temperature [°C], axial load [N]).
+        The call's inputs (speed [rad/s], temperature [°C], axial load [N]). Many
+        screws as a :class:`~ballscrew.geometry.ScrewArray`: the points' first axis is
+        the screws' (or 1, shared by all), and each quantity's worst value over all
+        screws is reported.
     model : str
         The friction model's name (recorded in each issue).
     parameters : dict
@@ -343,18 +346,49 @@ def check(
     issues: list[ValidityIssue] = []
     if speed.size == 0:
         return issues
-    n_max = float(rad_s_to_rpm(np.max(np.abs(speed))))
-    issues += outside("speed factor d_m*n [mm*rpm]", [screw.pitch_diameter * 1e3 * n_max])
-    if screw.nut != "single" and screw.preload > 0.0:
-        issues += outside(
-            "axial load / preload", [float(np.max(np.abs(axial_load))) / screw.preload]
-        )
+    if isinstance(screw, ScrewArray):
+        issues += _common_many(screw, speed, axial_load)
+    else:
+        n_max = float(rad_s_to_rpm(np.max(np.abs(speed))))
+        issues += outside("speed factor d_m*n [mm*rpm]", [screw.pitch_diameter * 1e3 * n_max])
+        if screw.nut != "single" and screw.preload > 0.0:
+            issues += outside(
+                "axial load / preload", [float(np.max(np.abs(axial_load))) / screw.preload]
+            )
     t_extremes = [float(np.min(temperature)), float(np.max(temperature))]
     for limit in lubricant_limits(lubricant):
         issues += outside(limit, t_extremes)
     for model_check in checks:
-        issues += model_check(screw, lubricant, speed, temperature, axial_load, parameters)
+        # Many screws (a ScrewArray) reach only the models that take them, whose checks
+        # take them too (film_checks).
+        run: Any = model_check
+        issues += run(screw, lubricant, speed, temperature, axial_load, parameters)
     return [replace(issue, model=model) for issue in issues]
+
+
+def _per_screw(x: FloatArray, count: int, reduce: Any) -> FloatArray:
+    """``reduce`` of ``x`` over each screw's points (first axis the screws', or 1: shared)."""
+    x = np.asarray(x, dtype=float)
+    rows = x.reshape(1, -1) if x.ndim == 0 or x.shape[0] == 1 else x.reshape(x.shape[0], -1)
+    result: FloatArray = np.broadcast_to(reduce(rows, axis=1), (count,))
+    return result
+
+
+def _common_many(
+    screws: ScrewArray, speed: FloatArray, axial_load: FloatArray
+) -> list[ValidityIssue]:
+    """The speed factor and load-over-preload issues of many screws: the worst of all."""
+    count = len(screws)
+    n_max = rad_s_to_rpm(_per_screw(np.abs(speed), count, np.max))
+    issues = outside(
+        "speed factor d_m*n [mm*rpm]", (screws.pitch_diameter.reshape(-1) * 1e3 * n_max).tolist()
+    )
+    preload = screws.preload.reshape(-1)
+    held = preload > 0.0
+    if screws.nut != "single" and held.any():
+        fa_max = _per_screw(np.abs(axial_load), count, np.max)
+        issues += outside("axial load / preload", (fa_max[held] / preload[held]).tolist())
+    return issues
 
 
 def lubricant_checks(
@@ -367,7 +401,7 @@ def lubricant_checks(
 
 
 def film_checks(
-    screw: BallScrew, lubricant: Lubricant, speed: FloatArray, temperature: FloatArray,
+    screw: ScrewGeometry, lubricant: Lubricant, speed: FloatArray, temperature: FloatArray,
     axial_load: FloatArray, parameters: dict[str, Any],
 ) -> list[ValidityIssue]:  # fmt: skip
     """Ranges of the EHL film formulas and of the Hertz fits, for models built on them.
@@ -377,6 +411,11 @@ def film_checks(
     so their result is cached on those (a loop over single points repeats the
     same extremes).
     """
+    if isinstance(screw, ScrewArray):
+        return _film_issues_many(
+            screw, lubricant, parameters.get("hertz_method") == "houpert", speed, temperature,
+            axial_load,
+        )  # fmt: skip
     w_abs = np.abs(speed)
     moving = w_abs[w_abs > 0.0]
     return list(
@@ -391,6 +430,59 @@ def film_checks(
             float(np.max(np.abs(axial_load))),
         )
     )
+
+
+def _film_issues_many(
+    screws: ScrewArray, lubricant: Lubricant, houpert: bool, speed: FloatArray,
+    temperature: FloatArray, axial_load: FloatArray,
+) -> list[ValidityIssue]:  # fmt: skip
+    """:func:`_film_issues` of many screws at once, each at its own points: the worst of all.
+
+    The same corners of each screw's operating range, evaluated on the screws' arrays.
+    """
+    count = len(screws)
+    t_lo = _per_screw(temperature, count, np.min)
+    t_hi = _per_screw(temperature, count, np.max)
+    w_abs = np.abs(speed)
+    w_max = _per_screw(w_abs, count, np.max)
+    w_min = _per_screw(np.where(w_abs > 0.0, w_abs, np.inf), count, np.min)
+    w_min = np.where(np.isfinite(w_min), w_min, 0.0)
+    fa_max = _per_screw(np.abs(axial_load), count, np.max)
+    issues = outside("temperature [degC]", [float(t_lo.min()), float(t_hi.max())])
+    issues += grease_note(lubricant)
+    ratios = [screws.ry_screw / screws.rx_screw, screws.ry_nut / screws.rx_nut]
+    ratios = [np.maximum(r, 1.0 / r).reshape(-1) for r in ratios]
+    issues += outside(
+        "ellipticity k (Hamrock-Dowson)",
+        np.concatenate([ellipticity_exact(r) for r in ratios]).tolist(),
+    )
+    if houpert:
+        issues += outside("radius ratio Ry/Rx (Houpert fits)", np.concatenate(ratios).tolist())
+    column = (count, 1)
+    eta = np.stack([lubricant.dynamic_viscosity(t_lo), lubricant.dynamic_viscosity(t_hi)], axis=1)
+    ep = screws.reduced_modulus.reshape(column)
+    radii = (screws.rx_screw.reshape(column), screws.rx_nut.reshape(column))
+    u_values: list[float] = []
+    moving = w_max > 0.0
+    if moving.any():
+        flat = screws.with_ndim(2)
+        u = kinematics(flat, np.stack([w_max, w_min], axis=1)).entrainment_speed
+        u_values = [
+            float(v) for rx in radii for v in dimensionless_speed(eta, u, ep, rx)[moving].ravel()
+        ]
+    loads = ball_loads(screws.with_ndim(2), np.stack([0.0 * fa_max, fa_max], 1))
+    q = np.concatenate([loads.normal_load_1, loads.normal_load_2], axis=1)
+    loaded = q > 0.0
+    some = loaded.any(axis=1)
+    extremes = np.stack(
+        [np.where(loaded, q, np.inf).min(axis=1), np.where(loaded, q, 0.0).max(axis=1)], axis=1
+    )[some]
+    w_values = [
+        float(v) for rx in radii for v in dimensionless_load(extremes, ep[some], rx[some]).ravel()
+    ]
+    issues += outside("dimensionless speed U", u_values)
+    issues += outside("dimensionless load W", w_values)
+    return issues
 
 
 @functools.lru_cache(maxsize=256)

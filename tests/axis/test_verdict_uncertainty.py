@@ -169,3 +169,38 @@ def test_an_assumed_range_of_100_percent_is_refused() -> None:
     )
     with pytest.raises(BallScrewInputError, match=r"screw\.static_load_rating\.tolerance"):
         parse_case(text)
+
+
+def test_the_distinct_samples_give_the_sample_by_sample_probabilities(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # The Monte Carlo takes the samples that share their forces (or torques) once, with
+    # their turns (or weights) added: the cruise, the dwell and each constant
+    # acceleration of the move. Against every sample taken on its own (the grouping
+    # switched off), with tolerances on every input: the same probabilities, the
+    # intervals equal to the rounding of sums taken in another order.
+    from ballscrew.axis import check as check_module
+
+    lines = ('required_life = "20000 h"\nrating_tolerance = "10 %"\nmass_tolerance = "20 %"\n'
+             'force_tolerance = "15 %"\n')  # fmt: skip
+    grouped = _x(lines, model="complete")
+
+    def every_sample(keys, sums):  # type: ignore[no-untyped-def]
+        return (*(np.asarray(k, dtype=float).reshape(-1) for k in keys),
+                *(np.asarray(w, dtype=float).reshape(-1) for w in sums))  # fmt: skip
+
+    monkeypatch.setattr(check_module, "_distinct_samples", every_sample)
+    alone = _x(lines, model="complete")
+    compared = 0
+    for a, b in zip(grouped.criteria, alone.criteria, strict=True):
+        assert a.name == b.name
+        if a.uncertainty is None:
+            assert b.uncertainty is None
+            continue
+        assert b.uncertainty is not None
+        assert a.uncertainty.p_not_ok == b.uncertainty.p_not_ok, a.name
+        assert a.uncertainty.guarded == b.uncertainty.guarded
+        np.testing.assert_allclose([a.uncertainty.low, a.uncertainty.high],
+                                   [b.uncertainty.low, b.uncertainty.high], rtol=1e-12)  # fmt: skip
+        compared += 1
+    assert compared >= 5  # life, static safety, torques, inertia, thermal error at least

@@ -1,9 +1,13 @@
 """Many screws in one call (issue 25): ``friction_torques`` is ``friction_torque`` per screw.
 
 The reference is independent of the batch: one ``friction_torque`` call per
-screw on the same points. The batch runs the same evaluation per screw, so the
-numbers are equal to the bit; the efficiency is recomputed with each screw's own
-lead, so it is held to 1e-15 (one rounding of the lead's broadcast product).
+screw on the same points. The complete model takes the screws together, their
+geometry as arrays in every layer (issue 39): the same equations on the same
+numbers, but whole-array functions (numpy's sine, a secant iteration that stops
+when every screw has converged, a Chebyshev series per row) may round the last
+bit otherwise, so the torques are held to 1e-12 relative (what issue 39 asks);
+the models that loop over the screws give the same bits. The efficiency is
+recomputed with each screw's own lead.
 """
 
 from __future__ import annotations
@@ -32,7 +36,7 @@ def _screws() -> list[BallScrew]:
 
 
 def _same(batch: np.ndarray, single: np.ndarray) -> None:
-    np.testing.assert_allclose(batch, single, rtol=1e-15, atol=0.0)
+    np.testing.assert_allclose(batch, single, rtol=1e-12, atol=0.0)
 
 
 @pytest.mark.parametrize("model", ["complete", "olaru", "catalog"])
@@ -49,9 +53,9 @@ def test_every_screw_at_every_point_is_its_own_call(model: str) -> None:
         one = friction_torque(
             screw, MINERAL, speed=speed, temperature=35.0, axial_load=load, model=model, warn=False
         )
-        np.testing.assert_array_equal(batch.total[i], one.total)
+        _same(batch.total[i], one.total)
         for name, value in one.components.items():
-            np.testing.assert_array_equal(batch.components[name][i], value)
+            _same(batch.components[name][i], value)
         _same(batch.efficiency[i], one.efficiency)
         _same(batch.power_loss[i], one.power_loss)
     assert set(batch.components) == set(one.components)
@@ -79,7 +83,7 @@ def test_paired_points_give_each_screw_its_own() -> None:
     for i, screw in enumerate(screws):
         one = friction_torque(screw, PAO, speed=speed[i], temperature=40.0,
                               axial_load=load[i], warn=False)  # fmt: skip
-        np.testing.assert_array_equal(batch.total[i], one.total)
+        _same(batch.total[i], one.total)
         _same(batch.efficiency[i], one.efficiency)
     # Own speeds (6, 1) against loads shared by all (1, 4): a (6, 4) result.
     grid = friction_torques(
@@ -89,7 +93,7 @@ def test_paired_points_give_each_screw_its_own() -> None:
     assert grid.total.shape == (6, 4)
     one = friction_torque(screws[2], PAO, speed=speed[2], temperature=40.0,
                           axial_load=[-1e3, 0.0, 1e3, 2e3], warn=False)  # fmt: skip
-    np.testing.assert_array_equal(grid.total[2], one.total)
+    _same(grid.total[2], one.total)
 
 
 def test_paired_points_shared_by_all_screws_give_one_value_per_screw() -> None:
@@ -99,13 +103,13 @@ def test_paired_points_shared_by_all_screws_give_one_value_per_screw() -> None:
     assert batch.total.shape == (3,)
     for i, screw in enumerate(screws):
         one = friction_torque(screw, PAO, speed=50.0, temperature=40.0, warn=False)
-        np.testing.assert_array_equal(batch.total[i], one.total)
+        _same(batch.total[i], one.total)
     # A first axis of 1 shared by all, against the screws' own speeds: (3, 2).
     own = friction_torques(screws, PAO, speed=[[10.0], [20.0], [30.0]],
                            temperature=[[30.0, 50.0]], paired=True, warn=False)  # fmt: skip
     assert own.total.shape == (3, 2)
     one = friction_torque(screws[1], PAO, speed=20.0, temperature=[30.0, 50.0], warn=False)
-    np.testing.assert_array_equal(own.total[1], one.total)
+    _same(own.total[1], one.total)
 
 
 def test_paired_points_of_the_wrong_length_are_refused_by_name() -> None:
@@ -169,7 +173,7 @@ def test_paired_points_shared_by_all_screws_give_one_entry_per_screw() -> None:
         for i, screw in enumerate(screws):
             one = friction_torque(screw, PAO, speed=100.0, temperature=40.0, axial_load=500.0,
                                   warn=False)  # fmt: skip
-            np.testing.assert_array_equal(batch.total[i], one.total)
+            _same(batch.total[i], one.total)
             _same(batch.efficiency[i], one.efficiency)
     # Shared along the first axis, own points along the second: (screws, 3).
     grid = friction_torques(
@@ -188,7 +192,7 @@ def test_without_an_axial_load_there_is_none() -> None:
     assert np.all(batch.axial_load == 0.0) and np.all(batch.efficiency == 0.0)
     one = friction_torque(_screws()[1], PAO, speed=[10.0, 100.0], temperature=40.0,
                           axial_load=0.0, warn=False)  # fmt: skip
-    np.testing.assert_array_equal(batch.total[1], one.total)
+    _same(batch.total[1], one.total)
 
 
 def test_chunks_of_one_point_give_the_same_torques_and_none_is_refused() -> None:

@@ -752,22 +752,30 @@ def _with_uncertainty(
 
 def _row_samples(
     run: EnergyRun, energy: ModelEnergy, mass_part: FloatArray, process: FloatArray,
-    turns: FloatArray, rows: list[Criterion], d: Any, chunk: int = 250,
+    turns: FloatArray, rows: list[Criterion], d: Any,
 ) -> dict[str, FloatArray]:  # fmt: skip
     """The utilisation of each row with an uncertain input, one per draw."""
     case, axis, screw = run.case, run.axis, run.case.screw
     by_name = {r.name: r for r in rows if r.utilisation is not None}
     cycle = energy.cycle
     n = d.mass.size
-    # Draws at a time: about 2 million (draw, sample) pairs per array, whatever the cycle's
-    # length, so that a long profile does not hold gigabytes.
-    chunk = max(1, min(chunk, 2_000_000 // max(int(run.profile.time.size), 1)))
     out: dict[str, FloatArray] = {name: np.empty(n) for name in by_name}
     weights = _weights(run.profile.time)
     lead, i = screw.lead, axis.gear_ratio
     omega = np.asarray(cycle.screw_speed, dtype=float)
     t_motor = np.asarray(cycle.motor_torque, dtype=float)
     t_fric = np.sign(omega) * np.asarray(cycle.friction_torque, dtype=float) / i
+    # Every formula below takes a sample through its forces (mass part, process force)
+    # and turns, or its torques (and weight), alone: the samples that share them (a
+    # cruise, a dwell, a constant acceleration) are taken once, with their turns or
+    # weights added up. The same sums, in another order: equal to rounding.
+    t_mass, t_process, t_motor, t_fric, weights = _distinct_samples(
+        (mass_part, process, t_motor, t_fric), (weights,)
+    )
+    mass_part, process, turns = _distinct_samples((mass_part, process), (turns,))
+    # Draws at a time: about 2 million (draw, distinct sample) pairs per array, whatever
+    # the cycle's length, so that a long profile does not hold gigabytes.
+    chunk = max(1, min(n, 2_000_000 // max(int(t_mass.size), 1)))
     preloaded = screw.nut != "single" and screw.preload > 0.0
     for start in range(0, n, chunk):
         sl = slice(start, min(start + chunk, n))
@@ -776,6 +784,7 @@ def _row_samples(
         f = km * mass_part + kf * process
         peak = np.max(np.abs(f), axis=1)
         pre = screw.preload * kp[:, 0]
+        t: FloatArray | None = None  # the motor torques of the draws, for both torque rows
         for name, row in by_name.items():
             u: FloatArray | None = None
             if name.startswith("fatigue life") and case.dynamic_load_rating is not None:
@@ -794,8 +803,9 @@ def _row_samples(
                 j = (j + (axis.screw_inertia + axis.coupling_inertia) / i**2) / axis.motor_inertia
                 u = j / float(row.limit or math.inf)
             elif name.startswith(("peak torque", "RMS torque")):
-                t = (t_motor + ((km - 1.0) * mass_part + (kf - 1.0) * process) * lead
-                     / (2.0 * math.pi * i) + (kfr[:, None] - 1.0) * t_fric)  # fmt: skip
+                if t is None:
+                    t = (t_motor + ((km - 1.0) * t_mass + (kf - 1.0) * t_process) * lead
+                         / (2.0 * math.pi * i) + (kfr[:, None] - 1.0) * t_fric)  # fmt: skip
                 if name.startswith("peak"):
                     value = np.max(np.abs(t), axis=1)
                 else:
@@ -806,6 +816,32 @@ def _row_samples(
             else:
                 out[name][sl] = float(row.utilisation)  # type: ignore[arg-type]
     return out
+
+
+def _distinct_samples(
+    keys: tuple[FloatArray, ...], sums: tuple[FloatArray, ...]
+) -> tuple[FloatArray, ...]:
+    """The distinct rows of the columns ``keys``, and the columns ``sums`` added up by row.
+
+    Each output column has one entry per distinct row of ``keys`` (in sorted order);
+    the values of ``sums`` of the samples that share it are added, in the samples'
+    order.
+    """
+    columns = [np.asarray(k, dtype=float).reshape(-1) for k in keys]
+    order = np.lexsort(columns[::-1])
+    ordered = [c[order] for c in columns]
+    starts = np.ones(order.size, dtype=bool)
+    for c in ordered:
+        starts[1:] &= c[1:] == c[:-1]
+    starts = ~starts
+    starts[:1] = True
+    group = np.cumsum(starts) - 1
+    inverse = np.empty(order.size, dtype=np.intp)
+    inverse[order] = group
+    count = int(group[-1]) + 1 if group.size else 0
+    added = [np.bincount(inverse, weights=np.asarray(w, dtype=float).reshape(-1),
+                         minlength=count) for w in sums]  # fmt: skip
+    return (*(c[starts] for c in ordered), *added)
 
 
 def _life_samples(

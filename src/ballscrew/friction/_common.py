@@ -11,7 +11,7 @@ import numpy.typing as npt
 
 from .. import rheology
 from ..errors import BallScrewInputError, FloatArray, check_choice, check_nonnegative
-from ..geometry import BallScrew
+from ..geometry import BallScrew, ScrewGeometry
 from ..kinematics import kinematics
 from ..lubricant import Lubricant, pressure_viscosity_unchecked
 from ..state import OperatingState, operating_state
@@ -58,6 +58,7 @@ def torque_from_contact_forces(
         radius"), kept to reproduce it.
     """
     screw = state.screw
+    assert isinstance(screw, BallScrew)  # the models that take many screws do not come here
     levers = lever_arms(screw, arm)
     lever = [levers[c.side] for c in state.contacts]
     total: FloatArray = np.zeros(np.shape(forces[0]))
@@ -147,7 +148,7 @@ def local_viscosity(
 
 
 def model_state(
-    screw: BallScrew, lubricant: Lubricant, speed: FloatArray, temperature: FloatArray,
+    screw: ScrewGeometry, lubricant: Lubricant, speed: FloatArray, temperature: FloatArray,
     axial_load: FloatArray, *,
     hertz_method: str,
     asperity_b: float,

@@ -10,7 +10,7 @@ from typing import Any, Protocol, TypeVar
 import numpy as np
 
 from ..errors import BallScrewInputError, FloatArray
-from ..geometry import BallScrew
+from ..geometry import BallScrew, ScrewGeometry
 from ..lubricant import Lubricant
 from ..validity import ValidityCheck
 
@@ -80,6 +80,10 @@ class ModelSpec:
         chain builds it once, with the model's ``hertz_method``,
         ``asperity_b`` and ``asperity_c``, passes it in and keeps it on the
         result.
+    batches : callable, optional
+        Given the parameters as used, whether the model takes many screws at once as a
+        :class:`ballscrew.geometry.ScrewArray` (every layer with the geometry as
+        broadcast arrays, first axis the screws); None: one screw at a time.
     """
 
     name: str
@@ -92,6 +96,7 @@ class ModelSpec:
     chunk: int = 1 << 17
     checks: tuple[ValidityCheck, ...] = ()
     uses_state: bool = False
+    batches: Callable[[dict[str, Any]], bool] | None = None
 
     def check_names(self, given: dict[str, Any]) -> None:
         """Raise if ``given`` holds a parameter the model does not have."""
@@ -114,15 +119,20 @@ class ModelSpec:
             _check_value(key, value, self.parameters[key])
 
     def __call__(
-        self, screw: BallScrew, lubricant: Lubricant, speed: FloatArray, temperature: FloatArray,
-        axial_load: FloatArray, state: Any = None, **params: Any,
+        self, screw: ScrewGeometry, lubricant: Lubricant, speed: FloatArray,
+        temperature: FloatArray, axial_load: FloatArray, state: Any = None, **params: Any,
     ) -> dict[str, FloatArray]:  # fmt: skip
         """Evaluate the model (parameters checked first), with the contact state if given."""
         self.check_parameters(params)
         if state is not None and self.uses_state:
             params = {**params, "state": state}
-        out = self.function(screw, lubricant, speed, temperature, axial_load, **params)
-        shape = np.broadcast_shapes(speed.shape, temperature.shape, axial_load.shape)
+        # Many screws (a ScrewArray) reach only the models that take them (``batches``).
+        function: Any = self.function
+        out = function(screw, lubricant, speed, temperature, axial_load, **params)
+        # Many screws (a ScrewArray): their geometry's axes count among the points'.
+        shape = np.broadcast_shapes(
+            speed.shape, temperature.shape, axial_load.shape, np.shape(screw.lead)
+        )
         return {k: np.broadcast_to(np.asarray(v, dtype=float), shape) for k, v in out.items()}
 
 
@@ -199,6 +209,7 @@ def register(
     purpose: str = "",
     chunk: int = 1 << 17,
     checks: tuple[ValidityCheck, ...] = (),
+    batches: Callable[[dict[str, Any]], bool] | None = None,
 ) -> Callable[[M], M]:
     """Register a model function under ``name`` (decorator).
 
@@ -218,7 +229,7 @@ def register(
         }
         MODELS[name] = ModelSpec(
             name, func, title, reference, validity, params, purpose, chunk, checks,
-            uses_state="state" in sig.parameters,
+            uses_state="state" in sig.parameters, batches=batches,
         )  # fmt: skip
         return func
 

@@ -110,13 +110,14 @@ import math
 from typing import Any, NamedTuple
 
 import numpy as np
+import numpy.typing as npt
 
 from .. import ehl
 from .. import rolling_losses as rl
 from ..ball_train import creep_slope, expected_train, orbital_sensitivity
 from ..contact import hertz
 from ..errors import FloatArray, check_choice, check_nonnegative
-from ..geometry import BallScrew
+from ..geometry import ScrewArray, ScrewGeometry, cos
 from ..helix import SlipContact, transverse_slip_loss
 from ..kinematics import differential_sliding, four_point_spin, kinematics, rad_s_to_rpm
 from ..lubricant import Lubricant
@@ -248,6 +249,51 @@ def _unique_integral(kappa: FloatArray, aspect: FloatArray) -> FloatArray:
     return result
 
 
+def _rows_integral(kappa: FloatArray, aspect: FloatArray) -> FloatArray:
+    """:func:`_unique_integral` of many screws at once, each row (first axis) its own.
+
+    A screw's contacts have one aspect and few distinct kappa (kappa follows the load
+    alone). Rows of up to :data:`DIRECT_INTEGRALS` values are evaluated directly;
+    longer rows within :data:`SMOOTH_KAPPA` by each row's own Chebyshev interpolation
+    over its own span, computed for all rows together (the interpolation of
+    :func:`_interpolated_integral`, to a relative 2e-13 of the rule); any other row
+    by :func:`_unique_integral` on its own.
+    """
+    kappa, aspect = np.broadcast_arrays(kappa, aspect)
+    count = kappa.shape[0] if kappa.ndim else 1
+    k = kappa.reshape(count, -1)
+    b = aspect.reshape(count, -1)
+    if k.shape[1] <= DIRECT_INTEGRALS:
+        direct: FloatArray = rl.spin_sliding_integral(kappa, aspect)
+        return direct
+    result = np.empty(k.shape)
+    k_lo, k_hi = k.min(axis=1), k.max(axis=1)
+    b_lo, b_hi = b.min(axis=1), b.max(axis=1)
+    smooth = (k_hi <= SMOOTH_KAPPA) & (k_hi > k_lo) & (b_hi - b_lo <= 1e-12 * b_hi)
+    if smooth.any():
+        from numpy.polynomial import chebyshev
+
+        lo, span = k_lo[smooth, None], (k_hi - k_lo)[smooth, None]
+        aspect_0 = 0.5 * (b_lo + b_hi)[smooth, None]
+        order = CHEBYSHEV_DEGREE + 1
+        x_nodes = chebyshev.chebpts1(order)
+        values = rl.spin_sliding_integral(lo + 0.5 * (x_nodes + 1.0) * span, aspect_0)
+        coefficients = values @ chebyshev.chebvander(x_nodes, CHEBYSHEV_DEGREE)
+        coefficients[:, 0] /= order
+        coefficients[:, 1:] /= 0.5 * order
+        x = (k[smooth] - lo) * (2.0 / span) - 1.0
+        # Clenshaw's recurrence, as numpy's chebval, one series per row.
+        c0, c1 = coefficients[:, -2, None], coefficients[:, -1, None]
+        x2 = 2.0 * x
+        for i in range(3, order + 1):
+            c0, c1 = coefficients[:, -i, None] - c1, c0 + c1 * x2
+        result[smooth] = c0 + c1 * x
+    for row in np.flatnonzero(~smooth):
+        result[row] = _unique_integral(k[row], b[row])
+    rows: FloatArray = result.reshape(kappa.shape)
+    return rows
+
+
 def _distinct_or_none(x: FloatArray) -> FloatArray | None:
     """The sorted distinct values of ``x``, or None if there are more than :data:`DIRECT_INTEGRALS`.
 
@@ -322,16 +368,20 @@ def _interpolated_integral(kappa: FloatArray, aspect: FloatArray) -> FloatArray:
 
 
 def _sliding_per_speed(
-    contact: ContactState, mu: FloatArray, spin: float, curvature: float
+    contact: ContactState, mu: FloatArray, spin: Number, curvature: Number, rows: bool = False
 ) -> FloatArray:
-    """Spin + differential sliding power of one contact per unit screw speed [N·m]."""
+    """Spin + differential sliding power of one contact per unit screw speed [N·m].
+
+    ``rows``: the contact's arrays hold many screws along their first axis
+    (:func:`_rows_integral`).
+    """
     a = contact.hertz.a
     b = contact.hertz.b
     safe_a = np.where(a > 0.0, a, 1.0)
-    kappa = abs(curvature) * safe_a / max(abs(spin), 1e-300)
-    integral = _unique_integral(kappa, b / safe_a)
+    kappa = np.abs(curvature) * safe_a / np.maximum(np.abs(spin), 1e-300)
+    integral = _rows_integral(kappa, b / safe_a) if rows else _unique_integral(kappa, b / safe_a)
     result: FloatArray = np.where(
-        a > 0.0, mu * 1.5 / math.pi * contact.load * abs(spin) * a * integral, 0.0
+        a > 0.0, mu * 1.5 / math.pi * contact.load * np.abs(spin) * a * integral, 0.0
     )
     return result
 
@@ -404,26 +454,31 @@ def ball_ball_friction(
 
 
 def _helix_slip(
-    state: OperatingState, mu: dict[str, FloatArray], spin: dict[str, float]
+    state: OperatingState, mu: dict[str, FloatArray], spin: dict[str, Number]
 ) -> FloatArray:
     """Torque of the transverse slip, summed over the balls of every family [N·m]."""
     screw = state.screw
-    slip = float(kinematics(screw, 1.0).transverse_slip)
+    slip = _number(kinematics(screw, 1.0).transverse_slip)
     by_name = {c.name: c for c in state.contacts}
+    rows = isinstance(screw, ScrewArray)
 
     def slip_contact(c: ContactState) -> SlipContact:
         # b/a = 1/k: Hertz's ellipticity depends on the curvatures alone, not on the load.
-        aspect = 1.0 / float(np.max(c.hertz.ellipticity))
+        if rows:  # one aspect per screw
+            k = np.asarray(c.hertz.ellipticity)
+            aspect: Number = 1.0 / np.max(k.reshape(k.shape[0], -1), axis=1)
+        else:
+            aspect = 1.0 / float(np.max(c.hertz.ellipticity))
         return SlipContact(c.side, mu[c.name], c.load, c.hertz.a, aspect, spin[c.side])
 
-    groups: list[tuple[tuple[str, ...], int]]
+    groups: list[tuple[tuple[str, ...], int | npt.NDArray[np.intp]]]
     if screw.nut == "single-4point":  # each ball touches both families' contacts
         groups = [(("screw-1", "screw-2", "nut-1", "nut-2"), by_name["screw-1"].balls)]
     else:
         groups = [((f"screw-{f}", f"nut-{f}"), by_name[f"screw-{f}"].balls) for f in (1, 2)]
     total: FloatArray = np.zeros(state.shape)
     for names, balls in groups:
-        if not balls:
+        if not np.any(balls):
             continue
         share = transverse_slip_loss([slip_contact(by_name[n]) for n in names], slip)
         total = total + balls * share.power
@@ -445,9 +500,10 @@ def _helix_slip(
     purpose="to predict (the default): every loss mechanism, scored against public numbers "
     "(ballscrew validate)",
     checks=(film_checks,),
+    batches=lambda parameters: parameters.get("ball_train", "ratio") == "ratio",
 )
 def complete(
-    screw: BallScrew, lubricant: Lubricant, speed: FloatArray, temperature: FloatArray,
+    screw: ScrewGeometry, lubricant: Lubricant, speed: FloatArray, temperature: FloatArray,
     axial_load: FloatArray, *, state: OperatingState | None = None,
     boundary_friction: float = 0.1,
     limiting_shear_stress: float | None = None,
@@ -536,8 +592,10 @@ def complete(
             state, c_b, mu_bl, tau0, gamma_l, theta, asperity_b, asperity_c
         )
     else:
+        # One screw at a time (the chain batches only the ratio train): numbers, not arrays.
+        one_spin = {side: float(value) for side, value in spin.items()}
         parts["ball_ball"], parts["recirculation"] = _ball_train(
-            state, mu, spin, scatter, mu_bl, tau0, gamma_l, theta, asperity_b, asperity_c
+            state, mu, one_spin, scatter, mu_bl, tau0, gamma_l, theta, asperity_b, asperity_c
         )
     parts["seals"] = np.full(state.shape, seal)
     order = ("rolling", "sliding", "helix_slip", "hysteresis", "ball_ball", "recirculation",
@@ -546,7 +604,7 @@ def complete(
 
 
 def _thermal_reduction(
-    screw: BallScrew, lubricant: Lubricant, state: OperatingState, lubrication: str,
+    screw: ScrewGeometry, lubricant: Lubricant, state: OperatingState, lubrication: str,
     thermal_correction: bool,
 ) -> FloatArray:  # fmt: skip
     """SKF's inlet shear heating times replenishment factor (ones without the correction)."""
@@ -562,30 +620,39 @@ def _thermal_reduction(
     return reduction
 
 
+Number = float | FloatArray
+"""A geometric quantity: a number for one screw, an array for a :class:`ScrewArray`."""
+
+
 class _PerSpeed(NamedTuple):
-    """Kinematics per unit screw speed, by side where it differs."""
+    """Kinematics per unit screw speed, by side where it differs (arrays: one per screw)."""
 
-    rolling_lever: float  # u / |omega| [m]
-    curvature: dict[str, float]  # Heathcote's C / omega
-    spin: dict[str, float]  # omega_s / omega, 2-point contact
-    spin4: dict[str, float]  # |omega_s| / |omega|, 4-point contact
+    rolling_lever: Number  # u / |omega| [m]
+    curvature: dict[str, Number]  # Heathcote's C / omega
+    spin: dict[str, Number]  # omega_s / omega, 2-point contact
+    spin4: dict[str, Number]  # |omega_s| / |omega|, 4-point contact
 
 
-def _per_speed(screw: BallScrew) -> _PerSpeed:
+def _number(x: Any) -> Number:
+    """``x`` as a float (one screw) or an array (one value per screw of a ScrewArray)."""
+    return float(x) if np.ndim(x) == 0 else np.asarray(x, dtype=float)
+
+
+def _per_speed(screw: ScrewGeometry) -> _PerSpeed:
     """The screw's rolling lever, sliding curvature and spins per unit screw speed."""
     unit = kinematics(screw, 1.0)
     c_s, c_n = differential_sliding(screw, 1.0)
     s4, n4 = four_point_spin(screw, 1.0)
     return _PerSpeed(
-        rolling_lever=float(unit.entrainment_speed),
-        curvature={"screw": float(c_s), "nut": float(c_n)},
-        spin={"screw": float(unit.spin_screw), "nut": float(unit.spin_nut)},
-        spin4={"screw": float(abs(s4)), "nut": float(abs(n4))},
+        rolling_lever=_number(unit.entrainment_speed),
+        curvature={"screw": _number(c_s), "nut": _number(c_n)},
+        spin={"screw": _number(unit.spin_screw), "nut": _number(unit.spin_nut)},
+        spin4={"screw": _number(np.abs(s4)), "nut": _number(np.abs(n4))},
     )
 
 
 def _groove_losses(
-    screw: BallScrew,
+    screw: ScrewGeometry,
     state: OperatingState,
     per_speed: _PerSpeed,
     four: bool,
@@ -603,8 +670,9 @@ def _groove_losses(
     curvature, spin, spin4 = per_speed.curvature, per_speed.spin, per_speed.spin4
     parts = {k: np.zeros(state.shape) for k in ("rolling", "sliding", "hysteresis", "four_point")}
     mu: dict[str, FloatArray] = {}
+    rows = isinstance(screw, ScrewArray)
     for c in state.contacts:
-        if not c.balls:
+        if not np.any(c.balls):
             continue
         z = c.balls
         f_r = rl.rolling_force_houpert(
@@ -620,11 +688,12 @@ def _groove_losses(
         mu[c.name] = rl.mixed_friction_coefficient(
             c.asperity_share, mu_bl, rl.limiting_traction_coefficient(tau0, gamma_l, mean_pressure)
         )
-        two_point = _sliding_per_speed(c, mu[c.name], spin[c.side], curvature[c.side])
+        two_point = _sliding_per_speed(c, mu[c.name], spin[c.side], curvature[c.side], rows)
         parts["sliding"] += z * two_point
         if four:
             parts["four_point"] += z * (
-                _sliding_per_speed(c, mu[c.name], spin4[c.side], curvature[c.side]) - two_point
+                _sliding_per_speed(c, mu[c.name], spin4[c.side], curvature[c.side], rows)
+                - two_point
             )
         parts["hysteresis"] += (
             z * rl.hysteresis_rolling_force(c.load, c.hertz.b, c.rx, alpha_h) * rolling_lever
@@ -731,8 +800,8 @@ def _ratio_train(
     touching = screw.ball_separation == "none"  # else no surfaces of the train slide
     unit = kinematics(screw, 1.0)
     # Neighbouring balls slide at omega_b * D_w; per unit screw speed:
-    sliding = float(unit.ball_speed) * screw.ball_diameter
-    centre = float(unit.orbital_speed) * 0.5 * screw.pitch_diameter / math.cos(screw.lead_angle)
+    sliding = _number(unit.ball_speed) * screw.ball_diameter
+    centre = _number(unit.orbital_speed) * 0.5 * screw.pitch_diameter / cos(screw.lead_angle)
     mass = STEEL_DENSITY * math.pi * screw.ball_diameter**3 / 6.0
     omega2 = state.kinematics.screw_speed**2
     # Push per circuit over omega^2 [N s^2]: mu_bl m v_c^2 Theta / D_w.

@@ -335,7 +335,7 @@ def _ball_forces(
     m_er: FloatArray = np.zeros(shape)
     pivot_power_per_speed: FloatArray = np.zeros(shape)
     for side, c in pair.items():
-        ratio = c.ry / c.rx
+        ratio = float(c.ry) / float(c.rx)  # one screw: this model takes no ScrewArray
         f_r = f_r + rolling_force_houpert(
             screw.reduced_modulus,
             c.rx,

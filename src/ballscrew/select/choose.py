@@ -288,6 +288,7 @@ def run_select(
     run_time: float = 3600.0,
     move: dict[str, float] | None = None,
     motion_field: str = "--move",
+    pool: Sequence[Candidate] | None = None,
 ) -> SelectResult:
     """Choose the screw for ``case``'s axis over ``profile`` (module docstring).
 
@@ -307,6 +308,9 @@ def run_select(
     model, cycles, temperature, run_time, move, motion_field
         As for :func:`~ballscrew.axis.duty.run_energy` (``motion_field`` is what
         the duty was given as, named by the error when no candidate survives).
+    pool : sequence of Candidate, optional
+        The candidates to evaluate, built by the caller (a size series, a design
+        space); the filters ``diameter`` to ``oils`` then do not apply.
 
     Raises
     ------
@@ -320,9 +324,14 @@ def run_select(
             lubricants.get(oil)
         except BallScrewInputError as exc:
             raise BallScrewInputError("--oil", oil, exc.allowed) from None
-    found = candidates(case.text, diameter=diameter, lead=lead, makers=makers,
-                       preloads=preloads, oils=list(oils) or [None],
-                       default_oil=case.lubricant.name)  # fmt: skip
+    if pool is not None:
+        found = list(pool)
+        if not found:
+            raise BallScrewInputError("pool", "(empty)", "at least one candidate")
+    else:
+        found = candidates(case.text, diameter=diameter, lead=lead, makers=makers,
+                           preloads=preloads, oils=list(oils) or [None],
+                           default_oil=case.lubricant.name)  # fmt: skip
     evaluated = tuple(
         evaluate(c, profile, model=model, cycles=cycles, temperature=temperature,
                  run_time=run_time, move=move)[0]
