@@ -85,12 +85,12 @@ def energy_command(
         click.echo(line, err=True)  # the models' validity issues: lift-off, film, temperature
     for line in run.assumptions:
         click.echo(f"note: {line}", err=True)
-    title = f"{case.title}: {cycles} cycle(s), {profile.duration:.4g} s, {run.temperature:g} °C"
+    title = f"{case.title}: {cycles} cycle(s), {profile.duration:.4g} s, {run.temperature:.4g} °C"
     out = stdout(json_file)
     out.print(_results_table(title, run, run_time))
     _print_weight_verdicts(out, run)
     for name, at in run.steady.items():
-        out.print(_steady_table(f"{name}: continuous running at {m.get('force', 0.0):g} N", at))
+        out.print(_steady_table(f"{name}: continuous running at {m.get('force', 0.0):.4g} N", at))
     if out_dir:
         from ..report.energy import write_energy_report
 
