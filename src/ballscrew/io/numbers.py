@@ -15,7 +15,9 @@ The rule (docs/guide.md, "Numbers in outputs"):
   powers, energies, efficiencies, temperatures, errors in um, ...) 4. The column's
   unit, in square brackets in its header (``speed [rpm]``), says which
   (:func:`column_digits`); a file with its own rule (the friction map's lookup
-  table) says so.
+  table) says so;
+* the Markdown and HTML reports give results to 4 and echo the case's inputs (in SI)
+  to :data:`INPUT_DIGITS` (6).
 
 Trailing zeros are not written (``3000``, not ``3000.0``), so a number never shows
 more digits than it has. The functions are for imperial output too: convert, then
@@ -30,6 +32,7 @@ from typing import Any
 
 __all__ = [
     "CSV_DIGITS",
+    "INPUT_DIGITS",
     "TERMINAL_DIGITS",
     "UNIT_QUANTITY",
     "column_digits",
@@ -40,6 +43,9 @@ __all__ = [
 
 TERMINAL_DIGITS = 4
 """Significant digits of every number printed on the terminal."""
+
+INPUT_DIGITS = 6
+"""Significant digits of an input a report echoes (its case's values in SI)."""
 
 CSV_DIGITS: dict[str, int] = {
     "time": 7,

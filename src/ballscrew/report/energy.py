@@ -29,7 +29,7 @@ from ..axis.energy import CycleResult
 from ..axis.motion import Profile
 from ..axis.thermal import SteadyAtSpeed
 from ..errors import FloatArray
-from ..io.numbers import text
+from ..io.numbers import INPUT_DIGITS, text
 from ..kinematics import rad_s_to_rpm
 from .document import Block, write_data, write_pages
 from .outputs import csv_bytes
@@ -298,7 +298,7 @@ def _input_blocks(run: EnergyRun) -> list[Block]:
     inputs = run_inputs(run, next(iter(run.results)))
     move = ", ".join(f"{k}={v:g}" for k, v in inputs["move"].items()) or "a profile file"
     case = inputs["case"]
-    rows = [[v["key"], str(v["value"]), v["source"]]
+    rows = [[v["key"], text(v["value"], INPUT_DIGITS), v["source"]]
             for v in case["values"] if v["value"] is not None]  # fmt: skip
     return [
         Block("h2", "Inputs"),
