@@ -31,3 +31,22 @@ def test_the_listing_shows_units_and_no_bare_none(
     assert "(the lubricant's) [Pa]" in line and "limiting shear stress" in line
     assert re.search(r"seal_torque = 0 \[N\*m\]: drag torque", out)
     assert re.search(r"stiffness = 2\.1e\+18 \[N/m\^3\]", out)
+
+
+def test_the_units_agree_with_the_models_page() -> None:
+    # docs/models.md gives each model's parameters in a table written from the papers
+    # (| `name` | default | unit | meaning |): the listing's units must be the page's.
+    from pathlib import Path
+
+    page = (Path(__file__).resolve().parents[2] / "docs" / "models.md").read_text("utf-8")
+    rows = re.findall(r"^\| ((?:`[a-z_0-9]+`(?:, )?)+) \| [^|]* \| ([^|]*) \|", page, re.M)
+    checked = set()
+    for names, units in rows:
+        keys = re.findall(r"`([a-z_0-9]+)`", names)
+        shown = [u.strip() for u in units.split(",")]
+        shown = shown if len(shown) == len(keys) else shown[:1] * len(keys)
+        for key, unit in zip(keys, shown, strict=True):
+            doc = unit.replace("·", "*").replace("³", "^3").replace("²", "^2")
+            assert (PARAMETER_UNITS[key][0] or "-") == doc, key
+            checked.add(key)
+    assert checked == {k for spec in models() for k in spec.parameters}
