@@ -228,6 +228,19 @@ def test_energy_report_files_are_complete_and_reproducible(
     assert steady[0] == "model,speed [rpm],steady temperature [degC],torque [N*m],power [W]"
     assert len(steady) == 3
     assert "{" not in report and "{" not in outputs[0][Path("data/summary.csv")].decode()
+    # Issue 40: the steady running is in the report too, as a table and a figure.
+    assert "## Continuous running" in report and "figures/steady.png" in names
+    assert report.count("| complete | 1000 |") == 1 and report.count("| complete | 2000 |") == 1
+    # The summary names its quantities in words with units: no key, no nan, no False.
+    from ballscrew.report.energy import SUMMARY
+
+    summary = report[report.index("| quantity |") : report.index("![")]
+    for key, label, _ in SUMMARY:
+        assert key not in summary and label in summary, key
+    assert "peak motor torque [N*m]" in summary
+    assert not re.search(r"\bnan\b|\bNone\b|\bTrue\b|\bFalse\b", summary), summary
+    # A horizontal axis has no weight to hold: said in words.
+    assert "not applicable (no weight to hold" in summary
 
 
 def _energy_json(

@@ -106,8 +106,8 @@ def test_check_out_writes_a_report_whose_files_match_the_json(
     assert [r["verdict"] for r in rows] == [c["verdict"] for c in doc["criteria"]]
     stiffness = list(csv.DictReader(io.StringIO(text_of("stiffness.csv"))))
     assert [float(r["lost motion [um]"]) for r in stiffness] == pytest.approx(
-        doc["stiffness"]["lost_motion_um"], rel=1e-6
-    )  # the CSV's significant digits
+        doc["stiffness"]["lost_motion_um"], rel=5e-4
+    )  # the CSV's 4 significant digits: within half a unit of the 4th, 5e-4 of the value
     assert f"Verdict: {doc['verdict']}" in md and "report.html" in err
     code, _, err = run(["check", "--case", str(VERTICAL), "--move", MOVE, *FAST,
                         "--out", str(out / "report.md")], capsys)  # fmt: skip

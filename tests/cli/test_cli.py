@@ -90,8 +90,9 @@ def test_torque_outputs_agree_with_the_library(
             axial_load=float(row["axial load [N]"]),
             model=row["model"],
         )
-        # Results are written to 7 significant digits.
-        assert float(row["torque [N*m]"]) == pytest.approx(float(r.total), rel=6e-7)
+        # Results are written to 4 significant digits (docs/guide.md, "Numbers in outputs"):
+        # rounding moves a value by at most half a unit of the 4th digit, 5e-4 of it.
+        assert float(row["torque [N*m]"]) == pytest.approx(float(r.total), rel=5e-4)
 
 
 @pytest.mark.slow
@@ -233,10 +234,11 @@ def test_torque_csv_for_a_decimal_comma_spreadsheet_and_a_pivot(
                       "torque complete [N*m]", "torque catalog [N*m]"]  # fmt: skip
     assert len(lines) == 1 + 31 * 2
     first = lines[3].split(";")  # 100 rpm, 20 degC, 0 N: rounded at output, decimal comma
-    assert first[:3] == ["100,0", "20,0", "0,0"]
+    assert first[:3] == ["100", "20", "0"] and "," in first[3] and "." not in first[3]
     case = load_case(SMALL)
     api = friction_torque(case.screw, case.lubricant, speed=100 * math.pi / 30, temperature=20.0)
-    assert float(first[3].replace(",", ".")) == pytest.approx(float(api.total), rel=6e-7)
+    # 4 significant digits: at most half a unit of the 4th digit off, 5e-4 of the value.
+    assert float(first[3].replace(",", ".")) == pytest.approx(float(api.total), rel=5e-4)
 
 
 def test_a_large_torque_grid_prints_a_summary_and_a_huge_one_is_refused(

@@ -36,7 +36,7 @@ def test_template_round_trips_through_check_and_torque(
     api = friction_torque(
         case.screw, case.lubricant, speed=[100 * 0.10471975511965977], temperature=20.0
     )
-    assert f"{float(api.total[0]):.5g}" in out
+    assert f"{float(api.total[0]):.4g}" in out  # the terminal's 4 significant digits
 
 
 def test_every_schema_key_is_in_the_template_and_the_reference() -> None:

@@ -165,19 +165,19 @@ def test_the_downloaded_csv_is_the_librarys_result(page: sync_api.Page) -> None:
         model="complete",
     )
     complete = [r for r in rows if r["model"] == "complete"]
-    # Speeds are written to 12 significant digits.
+    # The CSV's digits (docs/guide.md, "Numbers in outputs"): speeds 6 significant
+    # digits, results 4; each within half a unit of its last digit.
     np.testing.assert_allclose(
-        [float(r["speed [rpm]"]) for r in complete], np.linspace(10, 3000, 50), rtol=5e-12
-    )
-    # The CSV writes results to 7 significant digits: within half a unit of the 7th.
-    np.testing.assert_allclose(
-        [float(r["torque [N*m]"]) for r in complete], expected.total, rtol=5e-7
+        [float(r["speed [rpm]"]) for r in complete], np.linspace(10, 3000, 50), rtol=5e-6
     )
     np.testing.assert_allclose(
-        [float(r["efficiency [-]"]) for r in complete], expected.efficiency, rtol=5e-7
+        [float(r["torque [N*m]"]) for r in complete], expected.total, rtol=5e-4
     )
-    assert {r["temperature [degC]"] for r in rows} == {"40.0"}
-    assert {r["axial load [N]"] for r in rows} == {"1000.0"}
+    np.testing.assert_allclose(
+        [float(r["efficiency [-]"]) for r in complete], expected.efficiency, rtol=5e-4
+    )
+    assert {r["temperature [degC]"] for r in rows} == {"40"}
+    assert {r["axial load [N]"] for r in rows} == {"1000"}
     assert {r["model"] for r in rows} == {"complete", "catalog"}
     # The level a maker accepts: at 100 rpm within THK's tolerance of the catalogue drag
     # torque (grade C3, +-35 % at 0.4-0.6 N*m), the catalogue rule taken at no axial load.

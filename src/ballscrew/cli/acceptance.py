@@ -92,7 +92,7 @@ def acceptance_command(
     console = stdout(json_file)
     lo, hi, tol = a.row
     console.print(f"reference {a.reference:.4g} N*m ({a.reference_source}); grade {a.grade}, "
-                  f"row {lo:g} to {hi:g} N*m: +-{tol:.0%} -> {a.low:.4g} to {a.high:.4g} N*m "
+                  f"row {lo:.4g} to {hi:.4g} N*m: +-{tol:.0%} -> {a.low:.4g} to {a.high:.4g} N*m "
                   "(THK A-688 Table 13, JIS B 1192 / ISO 3408-3)")  # fmt: skip
     console.print(f"measured: mean {a.mean:.4g} N*m over {a.points} reading(s), fluctuation "
                   f"{a.fluctuation:.3g} N*m")  # fmt: skip

@@ -208,7 +208,7 @@ def _check_rows(case: Any) -> list[tuple[str, str, str]]:
     life = c.get("required_life")
     rows += [
         ("check", "required life",
-         "20000 h (default)" if life is None else f"{life / 3600:.6g} h"),
+         "20000 h (default)" if life is None else f"{life / 3600:.4g} h"),
         ("check", "reliability, least static safety",
          f"{c['reliability']:.0%}, {c['static_safety']:g}"),
         ("check", "accuracy grade", c.get("accuracy_grade", "none (thermal error not judged)")),

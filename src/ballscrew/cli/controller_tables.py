@@ -52,10 +52,10 @@ def write_controller_table(
         table.add_column(column, justify="right")
     torque = result.motor_torque()
     for k, (v, f) in enumerate(zip(result.table.speed, result.table.force, strict=True)):
-        table.add_row(str(k), f"{v * 1e3:.5g}", f"{f:.5g}", f"{torque[k]:.5g}")
+        table.add_row(str(k), f"{v * 1e3:.4g}", f"{f:.4g}", f"{torque[k]:.4g}")
     console.print(table)
     tab = result.table
-    console.print(f"interpolation error against the model over +-{top * 1e3:g} mm/s: RMS "
+    console.print(f"interpolation error against the model over +-{top * 1e3:.4g} mm/s: RMS "
                   f"{tab.rms_error:.3g} N, largest {tab.max_error:.3g} N")  # fmt: skip
     if out_file:
         with writing("--out", out_file):

@@ -57,14 +57,14 @@ def _geometry_table(screw: BallScrew) -> Table:
     """The screw's dimensions, preload, loaded balls and reduced modulus."""
     geo = Table(title="Reference ball screw (bundled example)", show_header=False)
     rows = [
-        ("pitch diameter", f"{screw.pitch_diameter * 1e3:.2f} mm"),
-        ("lead / lead angle", f"{screw.lead * 1e3:.2f} mm / {math.degrees(screw.lead_angle):.3f}°"),
-        ("ball diameter", f"{screw.ball_diameter * 1e3:.3f} mm"),
+        ("pitch diameter", f"{screw.pitch_diameter * 1e3:.4g} mm"),
+        ("lead / lead angle", f"{screw.lead * 1e3:.4g} mm / {math.degrees(screw.lead_angle):.4g}°"),
+        ("ball diameter", f"{screw.ball_diameter * 1e3:.4g} mm"),
         ("contact angle", f"{math.degrees(screw.contact_angle):.1f}°"),
-        ("conformity screw / nut", f"{screw.conformity_screw:.3f} / {screw.conformity_nut:.3f}"),
+        ("conformity screw / nut", f"{screw.conformity_screw:.4g} / {screw.conformity_nut:.4g}"),
         ("nut / preload", f"{screw.nut} / {screw.preload:.0f} N"),
         ("loaded balls per (half-)nut", f"{screw.balls_per_nut}"),
-        ("reduced modulus E'", f"{screw.reduced_modulus / 1e9:.2f} GPa"),
+        ("reduced modulus E'", f"{screw.reduced_modulus / 1e9:.4g} GPa"),
     ]
     for key, value in rows:
         geo.add_row(key, value)
@@ -78,7 +78,7 @@ def _hertz_table(screw: BallScrew, oil: Lubricant, temperature: float) -> Table:
 
     state0 = operating_state(screw, oil, speed=0.0, temperature=temperature)
     q = float(state0.loads.normal_load_1)
-    ht = Table(title=f"Hertz contact at the preload, Q = {q:.2f} N per ball")
+    ht = Table(title=f"Hertz contact at the preload, Q = {q:.4g} N per ball")
     for col in ("contact", "method", "a [mm]", "b [mm]", "a/b", "p_max [GPa]", "approach [µm]"):
         ht.add_column(col, justify="right")
     for side, rx, ry in (
@@ -90,11 +90,11 @@ def _hertz_table(screw: BallScrew, oil: Lubricant, temperature: float) -> Table:
             ht.add_row(
                 side,
                 method,
-                f"{float(c.a) * 1e3:.4f}",
-                f"{float(c.b) * 1e3:.4f}",
-                f"{float(c.ellipticity):.3f}",
-                f"{float(c.p_max) / 1e9:.3f}",
-                f"{float(c.approach) * 1e6:.3f}",
+                f"{float(c.a) * 1e3:.4g}",
+                f"{float(c.b) * 1e3:.4g}",
+                f"{float(c.ellipticity):.4g}",
+                f"{float(c.p_max) / 1e9:.4g}",
+                f"{float(c.approach) * 1e6:.4g}",
             )
     return ht
 
@@ -113,7 +113,7 @@ def _viscosity_table() -> Table:
     vt.add_column("α [1/GPa]", justify="right")
     for lub in lubricants.all_lubricants():
         nu = lub.kinematic_viscosity(temps) * 1e6
-        vt.add_row(lub.name, *(f"{v:.1f}" for v in nu), f"{lub.pressure_viscosity * 1e9:.1f}")
+        vt.add_row(lub.name, *(f"{v:.4g}" for v in nu), f"{lub.pressure_viscosity * 1e9:.3g}")
     return vt
 
 
@@ -134,10 +134,10 @@ def _film_table(screw: BallScrew, oil: Lubricant, temperature: float) -> Table:
             ft.add_row(
                 contact.name,
                 f"{n:g}",
-                f"{contact.entrainment_speed[i]:.4f}",
-                f"{contact.film_minimum[i] * 1e6:.4f}",
-                f"{contact.film_central[i] * 1e6:.4f}",
-                f"{contact.film_parameter[i]:.3f}",
-                f"{contact.asperity_share[i]:.3f}",
+                f"{contact.entrainment_speed[i]:.4g}",
+                f"{contact.film_minimum[i] * 1e6:.4g}",
+                f"{contact.film_central[i] * 1e6:.4g}",
+                f"{contact.film_parameter[i]:.4g}",
+                f"{contact.asperity_share[i]:.4g}",
             )
     return ft

@@ -93,14 +93,14 @@ def energy_command(
     for line in run.assumptions:
         click.echo(f"note: {line}", err=True)
     temp_shown, temp_unit = to_display(run.temperature, "degC", system)
-    title = (f"{case.title}: {cycles} cycle(s), {profile.duration:.4g} s, {temp_shown:g} "
+    title = (f"{case.title}: {cycles} cycle(s), {profile.duration:.4g} s, {temp_shown:.4g} "
              f"{'°C' if temp_unit == 'degC' else temp_unit}")  # fmt: skip
     out = stdout(json_file)
     out.print(_results_table(title, run, run_time, system))
     _print_weight_verdicts(out, run)
     force, force_unit = to_display(m.get("force", 0.0), "N", system)
     for name, at in run.steady.items():
-        out.print(_steady_table(f"{name}: continuous running at {force:g} {force_unit}", at,
+        out.print(_steady_table(f"{name}: continuous running at {force:.4g} {force_unit}", at,
                                 system))  # fmt: skip
     if system != "si":
         out.print(system_note(system))

@@ -165,7 +165,7 @@ def _print_fit(console: Console, result: FrictionExport, temp: float, fitted: Fr
 
     lo, hi = rad_s_to_rpm(result.speeds[0]), rad_s_to_rpm(result.speeds[-1])
     source = (f"the measured curve {Path(result.measured).name}" if result.measured
-              else f"{result.model} at {temp:g} degC, {result.axial_load:g} N")  # fmt: skip
+              else f"{result.model} at {temp:g} degC, {result.axial_load:.4g} N")  # fmt: skip
     table = Table(title=f"{result.case.title}: {result.form} fit of {source}")
     columns = ["parameter", "screw side", "unit", "table side", "unit "]
     intervals = fitted.intervals or {}
@@ -180,13 +180,13 @@ def _print_fit(console: Console, result: FrictionExport, temp: float, fitted: Fr
     for name, value in fitted.parameters.items():
         t_name = TABLE_SIDE.get(name, (None,))[0]
         t_val = side.get(t_name) if t_name else None
-        shown = [f"{t_val['value']:.5g}", t_val["unit"]] if t_val else ["", ""]
-        cells = [name, f"{value:.5g}", UNITS[name], *shown]
+        shown = [f"{t_val['value']:.4g}", t_val["unit"]] if t_val else ["", ""]
+        cells = [name, f"{value:.4g}", UNITS[name], *shown]
         if fitted.intervals is not None:
             lo_hi = intervals.get(name)
             cells.insert(2, f"{lo_hi[0]:.4g} to {lo_hi[1]:.4g}" if lo_hi else "")
         if result.gear_ratio != 1.0:
-            cells.append(f"{doc['motor_side'][name]['value']:.5g}")
+            cells.append(f"{doc['motor_side'][name]['value']:.4g}")
         table.add_row(*cells)
     console.print(table)
     what = "of the measured curve" if result.measured else "both ways"
@@ -209,7 +209,7 @@ def _print_map(m: FrictionMap, out_file: str | None, json_file: str | None) -> N
     for column in ("parameter", "screw side", "table side", "motor side"):
         table.add_column(column, justify="right")
     for key in ("c0", "c1", "c2", "b"):
-        table.add_row(key, *(f"{fit[side][key]['value']:.5g} {fit[side][key]['unit']}"
+        table.add_row(key, *(f"{fit[side][key]['value']:.4g} {fit[side][key]['unit']}"
                              for side in ("screw_side", "table_side", "motor_side")))  # fmt: skip
     for key in ("k_c", "k_b"):
         table.add_row(key, f"{fit[key]['value']:.4g} {fit[key]['unit']}", "", "")

@@ -7,7 +7,7 @@ from rich.table import Table
 
 from .common import stdout
 
-__all__ = ["models_command"]
+__all__ = ["models_command", "parameter_line"]
 
 
 @click.command(name="models")
@@ -40,6 +40,28 @@ def models_command() -> None:
         console.print(f"\n{spec.name}: {spec.title}", highlight=False)
         console.print(f"  reference: {spec.reference}", highlight=False)
         console.print(f"  validity: {spec.validity}", highlight=False)
-        console.print("  parameters:", highlight=False)
+        console.print("  parameters (name = default [unit]: meaning):", highlight=False)
         for k, v in spec.parameters.items():
-            console.print(f"    {k} = {v!r}", highlight=False)
+            console.print(f"    {parameter_line(k, v)}", highlight=False, soft_wrap=True)
+
+
+def parameter_line(name: str, default: object) -> str:
+    """One parameter as ``ballscrew models`` lists it: default, unit and meaning.
+
+    A default None says what it stands for (``(the lubricant's)``); numbers to 4
+    significant digits.
+    """
+    from ..friction import NONE_MEANS, PARAMETER_UNITS
+    from ..io.numbers import text
+
+    unit, meaning = PARAMETER_UNITS.get(name, ("", ""))
+    if default is None:
+        shown = f"({NONE_MEANS.get(name, 'not set')})"
+    elif isinstance(default, str):
+        shown = repr(default)
+    elif isinstance(default, tuple):
+        shown = "(" + ", ".join(text(v) for v in default) + ")"
+    else:
+        shown = text(default)
+    tail = f" [{unit}]" if unit else ""
+    return f"{name} = {shown}{tail}: {meaning}" if meaning else f"{name} = {shown}{tail}"

@@ -59,7 +59,7 @@ def monitor_command(
     for column in ("time [h]", "torque [N*m]", "preload [N]", "95 % interval [N]", "trend [N]"):
         table.add_column(column, justify="right")
     for i in range(series.time.size):
-        table.add_row(f"{series.time[i]:.5g}", f"{series.torque[i]:.4g}", f"{r.preload[i]:.4g}",
+        table.add_row(f"{series.time[i]:.4g}", f"{series.torque[i]:.4g}", f"{r.preload[i]:.4g}",
                       f"{r.preload_low[i]:.4g} to {r.preload_high[i]:.4g}",
                       f"{r.trend[i]:.4g}")  # fmt: skip
     console.print(table)

@@ -157,9 +157,11 @@ def _front_table(result: SelectResult) -> Table:
     keys = [OBJECTIVES[o][0] for o in result.objectives]
     extra = [k for k in ("energy_J", "L10_h", "stiffness_N_per_um", "max_utilisation",
                          "p_not_ok") if k not in keys]  # fmt: skip
+    labels = {key: label for key, label, _ in OBJECTIVES.values()}
+    labels |= {"max_utilisation": "largest utilisation [-]", "p_not_ok": "P(NOT OK) [-]"}
     table.add_column("candidate")
     for k in keys + extra:
-        table.add_column(k, justify="right")
+        table.add_column(labels.get(k, k), justify="right")
     table.add_column("largest utilisation")
     for i in result.front:
         e = result.evaluated[i]

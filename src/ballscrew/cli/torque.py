@@ -268,7 +268,10 @@ _MAIN_COLUMNS = (
 
 
 def _show(value: object) -> str:
-    return value if isinstance(value, str) else f"{value:.5g}"
+    """A cell as shown: text as it is, a number to 4 significant digits (io.numbers)."""
+    from ..io.numbers import text
+
+    return text(value)
 
 
 def _pivot_table(title: str, rows: list[dict[str, Any]]) -> Table:

@@ -25,9 +25,25 @@ from __future__ import annotations
 import importlib
 import pkgutil
 
-from ._registry import MODELS, FrictionModel, ModelSpec, get_model, register
+from ._registry import (
+    MODELS,
+    NONE_MEANS,
+    PARAMETER_UNITS,
+    FrictionModel,
+    ModelSpec,
+    get_model,
+    register,
+)
 
-__all__ = ["MODELS", "FrictionModel", "ModelSpec", "get_model", "register"]
+__all__ = [
+    "MODELS",
+    "NONE_MEANS",
+    "PARAMETER_UNITS",
+    "FrictionModel",
+    "ModelSpec",
+    "get_model",
+    "register",
+]
 
 _SHIPPED = ("catalog", "complete", "harris_simplified", "harris_full", "olaru", "viscoelastic")
 _OTHERS = sorted(m.name for m in pkgutil.iter_modules(__path__) if m.name not in _SHIPPED)

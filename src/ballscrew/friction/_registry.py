@@ -16,7 +16,9 @@ from ..validity import ValidityCheck
 
 __all__ = [
     "MODELS",
+    "NONE_MEANS",
     "PARAMETER_RANGES",
+    "PARAMETER_UNITS",
     "FrictionModel",
     "ModelFunction",
     "ModelSpec",
@@ -166,6 +168,64 @@ PARAMETER_RANGES: dict[str, tuple[float, float, str]] = {
 A value outside is refused by :meth:`ModelSpec.check_parameters`: a parameter of 1e10 or
 more gave torques up to 2e301 N·m in 0.2.0. Other numeric parameters (the viscoelastic
 bed's constants per unit area) must be finite and non-negative."""
+
+
+PARAMETER_UNITS: dict[str, tuple[str, str]] = {
+    # name: (unit, meaning). Unit "-" is a pure number; "" a name or a truth value.
+    "preload_coefficient": ("-", "c in the catalogue's preload drag K = c / sqrt(tan(lead angle))"),
+    "friction_coefficient": ("-", "friction coefficient of the catalogue efficiency"),
+    "boundary_friction": ("-", "friction coefficient of asperity contact (ball-groove, "
+                          "ball-ball, return path)"),
+    "limiting_shear_stress": ("Pa", "limiting shear stress tau_0 of the full-film traction"),
+    "limiting_shear_coefficient": ("-", "limiting shear stress over pressure, gamma_L"),
+    "ball_train": ("", "how the ball-train force is found: 'ratio' (F_B = c_B Q) or "
+                   "'tolerance' (from scattered contact angles)"),
+    "ball_train_constant": ("-", "c_B = F_B / Q, ball-train force over ball load ('ratio')"),
+    "contact_angle_scatter": ("rad", "standard deviation of the balls' contact angles "
+                              "('tolerance')"),
+    "return_turning_angle": ("rad", "angle the balls turn through in the return path"),
+    "hysteresis_loss_factor": ("-", "share of the rolling strain energy lost (steel: ~0.01)"),
+    "lubrication": ("", "'oil' or 'grease': SKF's replenishment constant"),
+    "thermal_correction": ("", "apply the inlet shear heating and replenishment factors"),
+    "seal_torque": ("N*m", "drag torque of wipers or seals"),
+    "asperity_b": ("-", "B of the asperity share A_c/A_0 against the film parameter"),
+    "asperity_c": ("-", "C of the asperity share A_c/A_0 against the film parameter"),
+    "hertz_method": ("", "Hertz solution: 'exact', 'houpert', ..."),
+    "mu0": ("-", "boundary friction coefficient mu_0"),
+    "sliding_coefficient": ("-", "c_v, the share of the contact slipping against rolling"),
+    "sliding_sign_on_lubricant": ("", "apply c_v to the lubricant's shear too"),
+    "shear_velocity": ("", "speed of the film's shear: 'rolling' or 'sliding'"),
+    "rheology_model": ("", "shear law: 'harmonic', 'general', 'eyring' or 'bair-winer'"),
+    "rheology_exponent": ("-", "exponent n of the 'general' shear law"),
+    "eyring_stress": ("Pa", "Eyring stress tau_E of the 'eyring' shear law"),
+    "pressure_viscosity_model": ("", "viscosity against pressure: 'roelands' or 'barus'"),
+    "torque_arm": ("", "lever arm of the contact forces: 'energy', 'contact-radius' or "
+                   "'ball-radius'"),
+    "nodes": ("-", "quadrature nodes"),
+    "film": ("", "film thickness of the shear rate: 'central' or 'minimum'"),
+    "sliding_friction": ("", "how the sliding friction coefficient is found: 'asperity' or "
+                         "'speed-fit'"),
+    "kappa": ("-", "kappa of the radius R_a = (D_w/2)(1 + kappa)/(1 + kappa/2) of the "
+              "sliding moment (0.02 to 0.1)"),
+    "ball_ball_force": ("N", "force between neighbouring balls F_B"),
+    "ball_ball_friction": ("-", "friction coefficient between balls mu_b"),
+    "include_pivoting": ("", "add the spin power of the pivoting moment"),
+    "hysteresis_units": ("", "units the elastic hysteresis moment's coefficient is read in: "
+                         "'SI' or 'N·mm'"),
+    "stiffness": ("N/m^3", "stiffness of the viscoelastic bed per unit area"),
+    "mass": ("kg/m^2", "mass of the viscoelastic bed per unit area"),
+    "damping": ("N*s/m^3", "damping of the viscoelastic bed per unit area"),
+    "leading_edge": ("", "include the leading edge's force and power"),
+    "edge_power": ("", "the leading edge's power: 'kinetic' or 'work'"),
+}  # fmt: skip
+"""Each model parameter's unit and meaning, as ``ballscrew models`` lists them."""
+
+NONE_MEANS: dict[str, str] = {
+    "limiting_shear_stress": "the lubricant's",
+    "limiting_shear_coefficient": "the lubricant's",
+    "eyring_stress": "none: needed only with rheology_model 'eyring'",
+}
+"""What a parameter's default None stands for."""
 
 
 def _check_value(key: str, value: Any, default: Any) -> None:

@@ -25,6 +25,7 @@ from matplotlib.figure import Figure as MplFigure
 from .._version import __version__
 from ..axis.check import AxisCheck, Criterion
 from ..io.files import atomic_write
+from ..io.numbers import INPUT_DIGITS, text
 from .document import Block, write_data, write_pages
 from .outputs import csv_bytes
 from .plotting import new_figure, write_figures
@@ -166,7 +167,7 @@ def _input_blocks(check: AxisCheck) -> list[Block]:
         f"uncertainty: {inputs['uncertainty']['samples']} draws, seed "
         f"{inputs['uncertainty']['seed']}",
     ]
-    rows = [[v["key"], "-" if v["value"] is None else str(v["value"]), v["source"]]
+    rows = [[v["key"], "-" if v["value"] is None else text(v["value"], INPUT_DIGITS), v["source"]]
             for v in case["values"] if v["value"] is not None]  # fmt: skip
     return [
         Block("h2", "Inputs"),

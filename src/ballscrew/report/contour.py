@@ -202,7 +202,7 @@ def write_contour_report(out: str | Path, result: ContourResult) -> list[Path]:
         )
         columns.append(dict(zip(angle.round(3).tolist(), (dev * 1e6).tolist(), strict=True)))
     angles = sorted({a for col in columns for a in col})
-    rows = [[f"{a:g}", *(f"{col.get(a, float('nan')):.6g}" for col in columns)] for a in angles]
+    rows = [[a, *(col.get(a, float("nan")) for col in columns)] for a in angles]
     data["polar"] = csv_bytes(header, rows)
     rev = result.reversals
     data["reversal"] = csv_bytes(
@@ -215,8 +215,8 @@ def write_contour_report(out: str | Path, result: ContourResult) -> list[Path]:
         ],
         [
             [
-                f"{float(t):.6g}",
-                *(f"{float((r.trace.error - r.reference.error)[i]) * 1e6:.6g}" for r in rev),
+                float(t),
+                *(float((r.trace.error - r.reference.error)[i]) * 1e6 for r in rev),
             ]
             for i, t in enumerate(rev[0].trace.time)
         ],
@@ -224,7 +224,7 @@ def write_contour_report(out: str | Path, result: ContourResult) -> list[Path]:
     data["table"] = csv_bytes(
         ["axis", "table speed [m/s]", "force [N]"],
         [
-            [name, f"{float(v):.6g}", f"{float(f):.6g}"]
+            [name, float(v), float(f)]
             for name, t in zip("xy", result.tables, strict=True)
             for v, f in zip(t.speed, t.force, strict=True)
         ],

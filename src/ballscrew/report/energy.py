@@ -7,15 +7,18 @@
 * ``figures/energy.png``/``.svg``: energy per model by component (screw out,
   screw back, support bearings) beside the catalogue rule's;
 * ``figures/temperature.png``/``.svg`` when a temperature history is given;
-* ``data/time_series.csv`` with units in the header, ``data/summary.csv``;
+* ``figures/steady.png``/``.svg`` and ``data/steady.csv`` with ``--steady-speeds``
+  (also a table in the report);
+* ``data/time_series.csv`` with units in the header, ``data/summary.csv`` (the
+  summary's quantities in words with units, a row per model);
 * ``report.md`` and ``report.html``.
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 from matplotlib.figure import Figure as MplFigure
@@ -24,7 +27,10 @@ from .._version import __version__
 from ..axis.duty import EnergyRun
 from ..axis.energy import CycleResult
 from ..axis.motion import Profile
+from ..axis.thermal import SteadyAtSpeed
 from ..errors import FloatArray
+from ..io.numbers import INPUT_DIGITS, text
+from ..kinematics import rad_s_to_rpm
 from .document import Block, write_data, write_pages
 from .outputs import csv_bytes
 from .plotting import new_figure, write_figures
@@ -97,10 +103,27 @@ def _temperature_figure(history: Mapping[str, tuple[FloatArray, FloatArray]]) ->
     return fig
 
 
+def _steady_figure(steady: Mapping[str, SteadyAtSpeed]) -> MplFigure:
+    """Steady temperature and friction torque of continuous running against speed."""
+    fig = new_figure(7.0, 5.5)
+    top, bottom = fig.subplots(2, 1, sharex=True)
+    for name, at in steady.items():
+        rpm = rad_s_to_rpm(at.speed)
+        top.plot(rpm, at.temperature, marker="o", label=name)
+        bottom.plot(rpm, at.torque, marker="o", label=name)
+    top.set_ylabel("steady temperature [°C]")
+    bottom.set_ylabel("friction torque [N·m]")
+    bottom.set_xlabel("screw speed [rpm]")
+    top.legend()
+    fig.tight_layout()
+    return fig
+
+
 def _figures(
     profile: Profile,
     results: Mapping[str, CycleResult],
     history: Mapping[str, tuple[FloatArray, FloatArray]] | None,
+    steady: Mapping[str, SteadyAtSpeed] | None = None,
 ) -> dict[str, tuple[MplFigure, str]]:
     """The report's figures by key, each with its caption."""
     figures = {
@@ -110,6 +133,11 @@ def _figures(
     }
     if history:
         figures["temperature"] = (_temperature_figure(history), "Temperature over time")
+    if steady:
+        figures["steady"] = (
+            _steady_figure(steady),
+            "Continuous running: steady temperature and friction torque by speed",
+        )
     return figures
 
 
@@ -123,7 +151,7 @@ def _time_series_csv(profile: Profile, results: Mapping[str, CycleResult]) -> by
         header += [f"friction torque {name} [N*m]", f"motor torque {name} [N*m]",
                    f"friction power {name} [W]"]  # fmt: skip
         columns += [r.friction_torque, r.motor_torque, r.friction_power]
-    rows = [[f"{float(v):.7g}" for v in values] for values in zip(*columns, strict=True)]
+    rows = [[float(v) for v in values] for values in zip(*columns, strict=True)]
     return csv_bytes(header, rows)
 
 
@@ -137,51 +165,98 @@ def _figure_csvs(
     data: dict[str, bytes] = {}
     data["motion"] = csv_bytes(
         ["time [s]", "table speed [m/min]", *(f"motor torque {n} [N*m]" for n in names)],
-        [[f"{float(t):.7g}", f"{float(v) * 60:.7g}",
-          *(f"{float(results[n].motor_torque[i]):.7g}" for n in names)]
+        [[float(t), float(v) * 60, *(float(results[n].motor_torque[i]) for n in names)]
          for i, (t, v) in enumerate(zip(profile.time, profile.speed, strict=True))],
     )  # fmt: skip
     data["power"] = csv_bytes(
         ["time [s]", *(f"friction power {n} [W]" for n in names)],
-        [[f"{float(t):.7g}", *(f"{float(results[n].friction_power[i]):.7g}" for n in names)]
+        [[float(t), *(float(results[n].friction_power[i]) for n in names)]
          for i, t in enumerate(profile.time)],
     )  # fmt: skip
     data["energy"] = csv_bytes(
         ["model", "screw out [J]", "screw back [J]", "support bearings [J]",
          "catalogue rule [J]"],
-        [[n, f"{r.friction_energy_out:.7g}", f"{r.friction_energy_back:.7g}",
-          f"{r.bearing_energy:.7g}", f"{r.constant_efficiency_energy:.7g}"]
+        [[n, r.friction_energy_out, r.friction_energy_back, r.bearing_energy,
+          r.constant_efficiency_energy]
          for n, r in results.items()],
     )  # fmt: skip
     if history:
         data["temperature"] = csv_bytes(
             ["model", "time [s]", "temperature [degC]"],
-            [[n, f"{float(t):.7g}", f"{float(v):.7g}"]
+            [[n, float(t), float(v)]
              for n, (ts, vs) in history.items() for t, v in zip(ts, vs, strict=True)],
         )  # fmt: skip
     return data
 
 
-def _steady_csv(summary: Mapping[str, Mapping[str, object]]) -> bytes | None:
-    """The steady running of each model that has it, by speed; None when none has."""
-    steady: dict[str, Any] = {
-        n: v["steady_at_speed"] for n, v in summary.items() if "steady_at_speed" in v
-    }
-    if not steady:
-        return None
+def _steady_csv(steady: Mapping[str, SteadyAtSpeed]) -> bytes:
+    """The steady running of each model that has it, by speed."""
     return csv_bytes(
-        ["model", "speed [rpm]", "steady temperature [degC]", "torque [N*m]", "power [W]"],
-        [[n, *(f"{float(x):.7g}" for x in row)]
-         for n, st in steady.items()
-         for row in zip(st["speed_rpm"], st["temperature_C"], st["torque_Nm"],
-                        st["power_W"], strict=True)],
+        ["model", *STEADY_COLUMNS],
+        [[n, float(rad_s_to_rpm(w)), float(tc), float(tq), float(pw)]
+         for n, at in steady.items()
+         for w, tc, tq, pw in zip(at.speed, at.temperature, at.torque, at.power, strict=True)],
     )  # fmt: skip
 
 
-def _scalar_keys(summary: Mapping[str, Mapping[str, object]]) -> list[str]:
-    """The summary's scalar keys, sorted: the tables of each model have their own CSV."""
-    return sorted({k for v in summary.values() for k in v
-                   if not isinstance(v[k], dict | list | tuple)})  # fmt: skip
+STEADY_COLUMNS = ("speed [rpm]", "steady temperature [degC]", "torque [N*m]", "power [W]")
+"""The columns of the steady running's table (report and ``data/steady.csv``)."""
+
+NO_WEIGHT = "not applicable (no weight to hold: the axis is horizontal or carries no mass)"
+NO_LOAD = "not applicable (no axial load at the working point)"
+NOT_COMPUTED = "not computed (the heat balance did not solve: see the warnings)"
+
+SUMMARY: tuple[tuple[str, str, str], ...] = (
+    ("friction_energy_J", "screw friction energy over all cycles [J]", NOT_COMPUTED),
+    ("friction_energy_per_cycle_J", "screw friction energy per cycle [J]", NOT_COMPUTED),
+    ("friction_energy_out_J", "screw friction energy, moving out [J]", NOT_COMPUTED),
+    ("friction_energy_back_J", "screw friction energy, moving back [J]", NOT_COMPUTED),
+    ("constant_efficiency_energy_J",
+     "screw friction energy by the catalogue's constant-efficiency rule [J]", NOT_COMPUTED),
+    ("bearing_energy_J", "support bearings' friction energy [J]", NOT_COMPUTED),
+    ("load_work_J", "work done on the load (process force, weight, speed change) [J]",
+     NOT_COMPUTED),
+    ("peak_motor_torque_Nm", "peak motor torque [N*m]", NOT_COMPUTED),
+    ("rms_motor_torque_Nm", "RMS motor torque [N*m]", NOT_COMPUTED),
+    ("forward_efficiency", "efficiency, motor driving the load, at the working point [-]",
+     NO_LOAD),
+    ("reverse_efficiency", "efficiency, load back-driving the screw, at the working point [-]",
+     NO_LOAD),
+    ("back_drives_at_working_point", "the load back-drives the screw at the working point",
+     NO_LOAD),
+    ("weight_reverse_efficiency",
+     "efficiency, the axis's weight back-driving the screw with the motor off [-]", NO_WEIGHT),
+    ("self_locking", "self-locking (no axial load, however large, turns the screw)",
+     NOT_COMPUTED),
+    ("duration_s", "duration of the cycles [s]", NOT_COMPUTED),
+    ("steady_temperature_C", "steady temperature of screw and nut, the cycle repeated [degC]",
+     NOT_COMPUTED),
+    ("final_temperature_C", "temperature of screw and nut after the run time [degC]",
+     NOT_COMPUTED),
+    ("friction_energy_at_final_temperature_J",
+     "screw friction energy of the cycles at that temperature [J]", NOT_COMPUTED),
+)  # fmt: skip
+"""The summary's quantities: the key in ``--json``, the name with its unit, what a
+missing value (None or NaN) means."""
+
+
+def summary_value(value: object, missing: str) -> str:
+    """A summary value as shown: 4 significant digits, yes/no, or what its absence means."""
+    if isinstance(value, bool | np.bool_):
+        return "yes" if value else "no"
+    if value is None or (isinstance(value, float) and math.isnan(value)):
+        return missing
+    return text(value)
+
+
+def _summary_table(
+    summary: Mapping[str, Mapping[str, object]],
+) -> tuple[list[str], list[list[str]]]:
+    """The summary as a table: a row per quantity (in words, with its unit), a column per model."""
+    rows = [[label, *(summary_value(v.get(key), missing) for v in summary.values())]
+            for key, label, missing in SUMMARY
+            if any(key in v for v in summary.values())]  # fmt: skip
+    return ["quantity", *summary], rows
 
 
 def _blocks(
@@ -189,22 +264,28 @@ def _blocks(
     profile: Profile,
     summary: Mapping[str, Mapping[str, object]],
     captions: Mapping[str, str],
+    steady: Mapping[str, SteadyAtSpeed] | None = None,
 ) -> list[Block]:
     """The report's document: the summary table, the figures and the validity warnings."""
-    keys = _scalar_keys(summary)
     blocks = [
         Block("h1", f"Feed axis energy: {title}"),
-        Block("p", f"Computed by ballscrew {__version__}; {profile.duration:.4g} s of motion."),
-        Block(
-            "table",
-            (
-                ["quantity", *summary],
-                [[k, *(_fmt(v.get(k)) for v in summary.values())] for k in keys],
-            ),
-        ),
+        Block("p", f"Computed by ballscrew {__version__}; {text(profile.duration)} s of motion."),
+        Block("table", _summary_table(summary)),
     ]
     for key, caption in captions.items():
-        blocks.append(Block("img", (key, caption)))
+        if key != "steady":
+            blocks.append(Block("img", (key, caption)))
+    if steady:
+        blocks.append(Block("h2", "Continuous running"))
+        blocks.append(Block("p", "The steady temperature of screw and nut when the axis runs "
+                                 "without stopping at each speed, under the move's process "
+                                 "force, and the friction torque and power there."))  # fmt: skip
+        rows = [[n, text(rad_s_to_rpm(w)), text(tc), text(tq), text(pw)]
+                for n, at in steady.items()
+                for w, tc, tq, pw in zip(at.speed, at.temperature, at.torque, at.power,
+                                         strict=True)]  # fmt: skip
+        blocks.append(Block("table", (["model", *STEADY_COLUMNS], rows)))
+        blocks.append(Block("img", ("steady", captions["steady"])))
     warnings = sorted({w for v in summary.values() for w in v.get("warnings", [])})  # type: ignore[attr-defined]
     blocks += [Block("h2", "Validity"), Block("ul", warnings or ["none"])]
     return blocks
@@ -217,7 +298,7 @@ def _input_blocks(run: EnergyRun) -> list[Block]:
     inputs = run_inputs(run, next(iter(run.results)))
     move = ", ".join(f"{k}={v:g}" for k, v in inputs["move"].items()) or "a profile file"
     case = inputs["case"]
-    rows = [[v["key"], str(v["value"]), v["source"]]
+    rows = [[v["key"], text(v["value"], INPUT_DIGITS), v["source"]]
             for v in case["values"] if v["value"] is not None]  # fmt: skip
     return [
         Block("h2", "Inputs"),
@@ -241,23 +322,19 @@ def write_energy_report(out: str | Path, run: EnergyRun) -> list[Path]:
     folder = Path(out)
     (folder / "figures").mkdir(parents=True, exist_ok=True)
     (folder / "data").mkdir(parents=True, exist_ok=True)
-    figures = _figures(profile, results, history)
+    steady = run.steady or None
+    figures = _figures(profile, results, history, steady)
     written, images = write_figures(folder, {k: fig for k, (fig, _) in figures.items()})
     data = {"time_series": _time_series_csv(profile, results)}
     data.update(_figure_csvs(profile, results, history))
-    steady = _steady_csv(summary)
-    if steady is not None:
-        data["steady"] = steady
-    keys = _scalar_keys(summary)
-    data["summary"] = csv_bytes(["model", *keys], [[n, *(v.get(k, "") for k in keys)]
-                                               for n, v in summary.items()])  # fmt: skip
+    if steady:
+        data["steady"] = _steady_csv(steady)
+    _, table = _summary_table(summary)
+    data["summary"] = csv_bytes(["model", *(row[0] for row in table)],
+                                [[n, *(row[k + 1] for row in table)]
+                                 for k, n in enumerate(summary)])  # fmt: skip
     written += write_data(folder, data.items())
-    blocks = _blocks(title, profile, summary, {k: caption for k, (_, caption) in figures.items()})
+    captions = {k: caption for k, (_, caption) in figures.items()}
+    blocks = _blocks(title, profile, summary, captions, steady)
     blocks += _input_blocks(run)
     return written + write_pages(folder, blocks, f"Feed axis energy: {title}", images)
-
-
-def _fmt(value: object) -> str:
-    if isinstance(value, float):
-        return f"{value:.4g}"
-    return "" if value is None else str(value)

@@ -11,9 +11,12 @@ one row per model and operating point, in user units) and written as
 Every CSV has a ``.meta.json`` file beside it with the provenance
 (:func:`provenance`): package version, the case as read, the resolved screw
 and lubricant in SI, each model's parameters and reference, and the validity
-warnings. Numbers are rounded at output only (inputs to 12 significant
-digits, so 100 rpm is not written 99.99999999999999; results to 7), and the
-bytes are reproducible (no time stamps).
+warnings. Numbers are rounded at output only: a CSV cell to the significant
+digits :func:`ballscrew.io.numbers.column_digits` gives its column (4 for
+results, more for times, positions, speeds and temperatures); the JSON rows
+carry inputs to 12 significant digits (100 rpm is not written
+99.99999999999999) and results to 7. The bytes are reproducible (no time
+stamps).
 """
 
 from __future__ import annotations
@@ -31,6 +34,7 @@ import numpy as np
 from .._version import __version__
 from ..chain import FrictionResult
 from ..io.case import Case
+from ..io.numbers import column_digits, text
 from ..kinematics import rad_s_to_rpm
 
 __all__ = [
@@ -104,23 +108,46 @@ def _wide(rows: Sequence[Mapping[str, Any]]) -> list[dict[str, Any]]:
     return [{c: p.get(c, "") for c in columns} for p in points.values()]
 
 
-def csv_bytes(header: Sequence[str], rows: Sequence[Sequence[object]]) -> bytes:
+def csv_bytes(
+    header: Sequence[str], rows: Sequence[Sequence[object]], *, digits: int | None = None
+) -> bytes:
     r"""A header and rows as CSV (comma, ``\n`` line ends), UTF-8 bytes for a report file.
 
-    >>> csv_bytes(["a", "b"], [[1, "x"]])
-    b'a,b\n1,x\n'
+    Each number is rounded to its column's significant digits
+    (:func:`ballscrew.io.numbers.column_digits`), or to ``digits`` if given.
+
+    >>> csv_bytes(["a", "speed [rpm]", "torque [N*m]"], [[1, -3000.0000000000005, 0.302597903]])
+    b'a,speed [rpm],torque [N*m]\n1,-3000,0.3026\n'
     """
+    places = [column_digits(h) if digits is None else digits for h in header]
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
     writer.writerow(header)
-    writer.writerows(rows)
+    for row in rows:
+        writer.writerow([_number(v, d) for v, d in zip(row, places, strict=False)]
+                        + list(row[len(places):]))  # fmt: skip
     return buffer.getvalue().encode("utf-8")
 
 
+def _number(value: object, digits: int) -> object:
+    """A float (Python's or numpy's) as text to ``digits`` significant digits, others as given."""
+    if isinstance(value, float | np.floating):
+        return text(float(value), digits)
+    return value
+
+
 def csv_text(
-    rows: Sequence[Mapping[str, Any]], *, layout: str = "long", dialect: str = "comma"
+    rows: Sequence[Mapping[str, Any]],
+    *,
+    layout: str = "long",
+    dialect: str = "comma",
+    digits: int | None = None,
 ) -> str:
-    """The rows as CSV text; ``layout`` "long" or "wide", ``dialect`` one of :data:`DIALECTS`."""
+    """The rows as CSV text; ``layout`` "long" or "wide", ``dialect`` one of :data:`DIALECTS`.
+
+    Numbers to their column's significant digits
+    (:func:`ballscrew.io.numbers.column_digits`), or to ``digits`` if given.
+    """
     table = list(rows) if layout == "long" else _wide(rows)
     columns = list(dict.fromkeys(k for r in table for k in r))
     buffer = io.StringIO()
@@ -130,14 +157,17 @@ def csv_text(
     )
     writer.writeheader()
     for r in table:
-        writer.writerow({k: _cell(v, dialect) for k, v in r.items()})
+        writer.writerow({
+            k: _cell(v, dialect, column_digits(k) if digits is None else digits)
+            for k, v in r.items()
+        })  # fmt: skip
     return buffer.getvalue()
 
 
-def _cell(value: Any, dialect: str) -> Any:
-    if isinstance(value, float):
-        text = repr(value)
-        return text.replace(".", ",") if dialect == "semicolon-decimal-comma" else text
+def _cell(value: Any, dialect: str, digits: int) -> Any:
+    if isinstance(value, float | np.floating):
+        shown = text(float(value), digits)
+        return shown.replace(".", ",") if dialect == "semicolon-decimal-comma" else shown
     return value
 
 

@@ -15,9 +15,7 @@ renamed), so an interrupted run leaves each file either complete or as it was.
 
 from __future__ import annotations
 
-import csv
 import inspect
-import io
 import json
 import math
 import re
@@ -38,6 +36,7 @@ from ..kinematics import rad_s_to_rpm, rpm_to_rad_s
 from ..loads import ball_loads
 from ..study.reproduce import StudyResult, StudySensitivity, run_study
 from .document import Block, html_page, markdown
+from .outputs import csv_bytes
 from .plotting import figure_bytes, render, sensitivity_figure
 
 __all__ = ["regenerate", "write_report"]
@@ -340,20 +339,16 @@ def _sensitivity_blocks(s: StudySensitivity) -> list[Block]:
 
 
 def _sensitivity_csv(s: StudySensitivity) -> bytes:
-    buffer = io.StringIO()
-    writer = csv.writer(buffer, lineterminator="\n")
-    writer.writerow(["input", "field", "distribution (SI)", "S_T [-]", "S_T 95 % half-width [-]",
-                     "S_1 [-]", "S_1 95 % half-width [-]", "source"])  # fmt: skip
+    header = ["input", "field", "distribution (SI)", "S_T [-]", "S_T 95 % half-width [-]",
+              "S_1 [-]", "S_1 95 % half-width [-]", "source"]  # fmt: skip
     idx = s.indices
+    rows: list[list[object]] = []
     for i in idx.ranking():
         u = s.inputs[i]
         numbers = (idx.total[i], idx.total_conf[i], idx.first[i], idx.first_conf[i])
-        writer.writerow(
-            [u.label, u.distribution.name, u.distribution.describe()]
-            + [repr(float(x)) for x in numbers]
-            + [u.source]
-        )
-    return buffer.getvalue().encode("utf-8")
+        rows.append([u.label, u.distribution.name, u.distribution.describe(),
+                     *(float(x) for x in numbers), u.source])  # fmt: skip
+    return csv_bytes(header, rows)
 
 
 def _pick_speeds(speed_rpm: np.ndarray) -> list[int]:
@@ -367,18 +362,14 @@ def _pick_speeds(speed_rpm: np.ndarray) -> list[int]:
 
 
 def _csv(fig_series: Any) -> bytes:
-    buffer = io.StringIO()
-    writer = csv.writer(buffer, lineterminator="\n")
     first = fig_series[0]
-    writer.writerow(
-        ["speed [rpm]", "speed [rad/s]"] + [f"{s.label}: torque [N*m]" for s in fig_series]
-    )
-    for i in range(first.speed_rpm.size):
-        writer.writerow(
-            [repr(float(first.speed_rpm[i])), repr(float(rpm_to_rad_s(first.speed_rpm[i])))]
-            + [repr(float(s.torque[i])) for s in fig_series]
-        )
-    return buffer.getvalue().encode("utf-8")
+    header = ["speed [rpm]", "speed [rad/s]", *(f"{s.label}: torque [N*m]" for s in fig_series)]
+    rows = [
+        [float(first.speed_rpm[i]), float(rpm_to_rad_s(first.speed_rpm[i])),
+         *(float(s.torque[i]) for s in fig_series)]
+        for i in range(first.speed_rpm.size)
+    ]  # fmt: skip
+    return csv_bytes(header, rows)
 
 
 def _write_figure(folder: Path, key: str, drawing: Any, table: bytes, written: list[Path]) -> bytes:

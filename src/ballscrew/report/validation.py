@@ -52,6 +52,7 @@ _LINES = ("-", "--", "-.", ":", (0, (5, 1)), (0, (3, 1, 1, 1, 1, 1)))
 
 
 def _g(x: float, digits: int = 4) -> str:
+    """A value to the CSV's 4 significant digits (the row's unit is in its own column)."""
     return "nan" if not math.isfinite(x) else f"{x:.{digits}g}"
 
 
@@ -64,8 +65,8 @@ def _rows_csv(rows: list[ScoreRow]) -> bytes:
         header,
         [
             [
-                r.case, r.kind, r.nut, r.source, _g(r.reference, 6), _g(r.low, 6),
-                _g(r.high, 6), r.unit, r.model, _g(r.predicted, 6), _g(r.interval[0], 4),
+                r.case, r.kind, r.nut, r.source, _g(r.reference), _g(r.low),
+                _g(r.high), r.unit, r.model, _g(r.predicted), _g(r.interval[0], 4),
                 _g(r.interval[1], 4), _g(r.ratio, 4), "yes" if r.within else "no",
                 "yes" if r.training else "no",
             ]
@@ -143,7 +144,7 @@ def _predicted_figure(rows: list[ScoreRow]) -> tuple[Figure, bytes]:
     ax.legend(fontsize=7, loc="upper left")
     data = csv_bytes(
         ["model", "case", "kind", "reference [N*m]", "predicted [N*m]"],
-        [[r.model, r.case, r.kind, _g(r.reference, 6), _g(r.predicted, 6)] for r in torque_rows],
+        [[r.model, r.case, r.kind, r.reference, r.predicted] for r in torque_rows],
     )
     return fig, data
 
@@ -182,7 +183,7 @@ def _residual_figure(rows: list[ScoreRow]) -> tuple[Figure, bytes]:
                 centre = float(np.mean(np.log(y)))
                 ax.plot(scale * np.exp(xs), np.exp(centre + slope.predicted * (xs - x.mean())),
                         color="0.3", lw=1.0, ls=_LINES[i % len(_LINES)])  # fmt: skip
-            table += [[model, label, _g(scale * math.exp(a), 6), _g(float(b), 6)]
+            table += [[model, label, _g(scale * math.exp(a)), _g(float(b))]
                       for a, b in zip(x, y, strict=True)]  # fmt: skip
         ax.axhline(1.0, color="k", lw=0.8)
         ax.set_xscale("log")
