@@ -191,7 +191,7 @@ def write_report(out_dir: str, write: Callable[[Path], list[Path]]) -> None:
 def motion_options(function: F) -> F:
     """``--move TEXT``, ``--profile FILE`` and ``--cycles N``: the duty of an axis command."""
     options = [
-        click.option("--move", "move_text", default=None, metavar="TEXT",
+        click.option("--move", "move_text", default=None, metavar="KEY=VALUE,...",
                      help="e.g. 'stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2, force=2 kN, "
                      "force_from=50 mm, force_to=250 mm' (also jerk, dwell)."),
         click.option("--profile", "profile_file", type=click.Path(dir_okay=False), default=None,

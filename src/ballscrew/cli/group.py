@@ -75,6 +75,80 @@ for command in (demo, study, validate, models_command, lubricants_command, torqu
     cli.add_command(command)
 
 
+VALUE_NAMES: dict[str, str] = {
+    "--axial-load": "FORCE",
+    "--bristle-damping": "DAMPING",
+    "--bristle-stiffness": "STIFFNESS",
+    "--case": "FILE",
+    "--check": "FILE",
+    "--csv": "FILE|-",
+    "--cycles": "N",
+    "--diameter": "LENGTHS",
+    "--feed": "SPEED",
+    "--free": "NAME,...",
+    "--grade": "GRADE",
+    "--guide-friction": "FORCE",
+    "--host": "ADDRESS",
+    "--inertia": "INERTIA",
+    "--json": "FILE|-",
+    "--kv": "GAIN",
+    "--lead": "LENGTHS",
+    "--lubricant": "NAME",
+    "--machine": "FILE",
+    "--maker": "MAKER",
+    "--max-points": "N",
+    "--measured": "FILE",
+    "--model": "MODEL",
+    "--objective": "OBJECTIVE",
+    "--oil": "NAME",
+    "--out": "FILE|-",
+    "--phase-margin": "ANGLE",
+    "--plot": "FILE",
+    "--port": "PORT",
+    "--preload": "CLASS",
+    "--radius": "LENGTH",
+    "--record": "FILE",
+    "--reference": "TORQUE",
+    "--run-time": "TIME",
+    "--sampling-time": "TIME",
+    "--scheduler": "ADDRESS",
+    "--speed": "SPEEDS",
+    "--start": "NAME=VALUE,...",
+    "--steady-speeds": "SPEEDS",
+    "--temperature": "DEGC",
+    "--threshold": "SHARE|TORQUE",
+    "--tolerance": "SHARE",
+    "--torque": "TORQUE",
+    "--torque-constant": "TORQUE/CURRENT",
+    "--uncertainty": "TORQUE",
+    "--wiper-drag": "TORQUE",
+    "--workers": "N",
+}
+"""What each option's value means, shown in the help where click would say TEXT or FLOAT;
+an option that names its own (``--out FOLDER``, ``--json FILE|-``) keeps it."""
+
+STORE_OPTIONS = {("sweep", "--out"): "STORE"}
+"""Options whose value means something else in one command."""
+
+
+def _name_values(group: click.Group) -> None:
+    """Give every option and argument without a metavar the name of what it takes."""
+    for name, command in group.commands.items():
+        for param in command.params:
+            if param.metavar is not None or getattr(param, "is_flag", False):
+                continue
+            if isinstance(param, click.Argument):
+                param.metavar = f"{param.name.split('_')[0].upper()}_FILE" if param.name else None
+                continue
+            if isinstance(param.type, click.Choice):
+                continue  # click lists the choices
+            flag = param.opts[0]
+            param.metavar = STORE_OPTIONS.get((name, flag)) or VALUE_NAMES.get(flag)
+
+
+_name_values(cli)
+
+
 def _terminate(signum: int, frame: object) -> None:
     """Treat SIGTERM like Ctrl-C: unwind, keep only complete files, exit 130.
 
