@@ -94,10 +94,37 @@ class ApiError(Exception):
         return out
 
 
+class _TwiceError(Exception):
+    """A key given twice in one JSON object (``json`` would keep the last without a word)."""
+
+    def __init__(self, key: str) -> None:
+        super().__init__(key)
+        self.key = key
+
+
+def _once(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
+    """A JSON object's pairs as a dict, refusing a key given twice."""
+    out: dict[str, Any] = {}
+    for key, value in pairs:
+        if key in out:
+            raise _TwiceError(key)
+        out[key] = value
+    return out
+
+
 def read_json(body: bytes) -> dict[str, Any]:
-    """A request body as a JSON object (400 if it is not one)."""
+    """A request body as a JSON object (400 if it is not one; 422 if it gives a key twice).
+
+    A key given twice in one object (a move's ``stroke``, say) is refused, naming it, as
+    the command line refuses a ``--move`` key given twice: JSON readers keep the last.
+    """
     try:
-        data = json.loads(body.decode("utf-8"))
+        data = json.loads(body.decode("utf-8"), object_pairs_hook=_once)
+    except _TwiceError as twice:
+        raise ApiError.from_input(BallScrewInputError(
+            twice.key, "(given twice)",
+            "each key once in an object: which of the two is meant cannot be told",
+        )) from None  # fmt: skip
     except (UnicodeDecodeError, ValueError, RecursionError):
         raise ApiError(400, "the request body is not JSON (UTF-8)") from None
     if not isinstance(data, dict):
