@@ -561,6 +561,24 @@ def _refused_quickly(code: int, err: str, seconds: float, name: str) -> Outcome:
     return Outcome(held, f"exit {code} in {seconds:.2f} s: {last}"[:200])
 
 
+class NotTriedError(Exception):
+    """A probe this machine cannot run (a device node needs root to be made)."""
+
+
+def _device(folder: Path) -> Path:
+    """A character device like /dev/null (1, 3) in ``folder``: never the system's own.
+
+    0.2.0 replaced the path given to --csv by a regular file; run as root on /dev/null
+    itself, that broke the machine's /dev/null.
+    """
+    node = folder / "null"
+    try:
+        os.mknod(node, stat.S_IFCHR | 0o666, os.makedev(1, 3))
+    except (PermissionError, AttributeError) as exc:
+        raise NotTriedError("making a device node needs root") from exc
+    return node
+
+
 def _output_kept(kind: str) -> Callable[[Path, Any], Outcome]:
     """``--csv`` at a path that is no regular file: written there, the path left what it was."""
 
@@ -578,23 +596,26 @@ def _output_kept(kind: str) -> Callable[[Path, Any], Outcome]:
             reader = threading.Thread(target=read, daemon=True)
             reader.start()
         elif kind == "link to a device":
-            target.symlink_to("/dev/null")
+            target.symlink_to(_device(folder))
         elif kind == "link to a file":
             (folder / "real.csv").write_text("old\n", encoding="utf-8")
             target.symlink_to(folder / "real.csv")
-        path = "/dev/null" if kind == "device" else "-" if kind == "-" else str(target)
-        code, out, err, _ = _cli_in(folder, [*TORQUE, "--csv", path])
+        if kind == "device":
+            target = _device(folder)
+        path = "-" if kind == "-" else str(target)
+        with contextlib.chdir(folder):  # a file named '-' is made here, if at all
+            code, out, err, _ = _cli_in(folder, [*TORQUE, "--csv", path])
         if reader is not None:
             reader.join(timeout=5.0)
         if kind == "fifo":
             held = code == 0 and stat.S_ISFIFO(os.lstat(target).st_mode) and bool(got and got[0])
         elif kind == "link to a device":
-            held = code == 0 and target.is_symlink() and os.readlink(target) == "/dev/null"
+            held = code == 0 and target.is_symlink() and stat.S_ISCHR(os.stat(target).st_mode)
         elif kind == "link to a file":
             real = (folder / "real.csv").read_text(encoding="utf-8")
             held = code == 0 and target.is_symlink() and real != "old\n"
         elif kind == "device":
-            held = code == 0 and stat.S_ISCHR(os.stat("/dev/null").st_mode)
+            held = code == 0 and stat.S_ISCHR(os.lstat(target).st_mode)
         else:
             held = code == 0 and "," in out and not (folder / "-").exists()
         return Outcome(held, f"exit {code}: {(err.strip().splitlines() or [''])[-1]}"[:200])
@@ -733,8 +754,8 @@ def _sweep_file() -> str:
 
 HOSTILE: dict[str, tuple[str, Callable[[Path, Any], Outcome]]] = {
     "--csv to a named pipe": ("cli", _output_kept("fifo")),
-    "--csv to /dev/null": ("cli", _output_kept("device")),
-    "--csv to a link to /dev/null": ("cli", _output_kept("link to a device")),
+    "--csv to a device": ("cli", _output_kept("device")),
+    "--csv to a link to a device": ("cli", _output_kept("link to a device")),
     "--csv to a link to a file": ("cli", _output_kept("link to a file")),
     "--csv -": ("cli", _output_kept("-")),
     "65 kB key posted to /api/case": ("web", _long_key_web("/api/case", 65_000)),

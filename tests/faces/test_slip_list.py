@@ -13,7 +13,7 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from slips import FACES, HOSTILE, SLIPS, outcome, web_client
+from slips import FACES, HOSTILE, SLIPS, NotTriedError, outcome, web_client
 
 CASES = [
     pytest.param(name, face, id=f"{name} [{face}]")
@@ -65,5 +65,8 @@ def test_a_hostile_input_is_refused_or_written_where_pointed(
     name: str, tmp_path: Path, client: Any
 ) -> None:
     _, probe = HOSTILE[name]
-    got = probe(tmp_path, client)
+    try:
+        got = probe(tmp_path, client)
+    except NotTriedError as why:
+        pytest.skip(str(why))
     assert got.held, got
