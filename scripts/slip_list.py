@@ -33,7 +33,7 @@ def _one_hostile(name: str) -> None:
     """Run one hostile probe in this process and print its outcome as JSON."""
     import slips
 
-    face, probe = slips.HOSTILE[name]
+    face, probe = {**slips.HOSTILE, **slips.SLOW_HOSTILE}[name]
     with tempfile.TemporaryDirectory() as folder:
         try:
             if face == "web":
@@ -105,7 +105,7 @@ def main() -> int:
         print("  " + line)
     h_tried = h_held = 0
     h_broken: list[str] = []
-    for name in slips.HOSTILE:
+    for name in [*slips.HOSTILE, *slips.SLOW_HOSTILE]:
         ok, how = _hostile(name)
         if ok is None:
             print(f"  not tried: {name}: {how}")
