@@ -265,7 +265,7 @@ def friction_torques(
 
     >>> from ballscrew import reference_screw
     >>> base = reference_screw()
-    >>> screws = [base.replace(lead=lead) for lead in (0.005, 0.010, 0.020)]
+    >>> screws = [base.replace(lead=lead) for lead in (0.008, 0.010, 0.020)]
     >>> r = friction_torques(screws, "mineral ISO VG 68", speed=[10.0, 100.0],
     ...                      temperature=40.0, warn=False)
     >>> r.total.shape

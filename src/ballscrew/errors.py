@@ -15,6 +15,7 @@ import numpy.typing as npt
 
 __all__ = [
     "BallScrewInputError",
+    "BallScrewPlausibilityWarning",
     "BallScrewReadingWarning",
     "BallScrewValidityWarning",
     "broadcast_inputs",
@@ -70,6 +71,29 @@ class BallScrewSpeedWarning(UserWarning):
 
     See :mod:`ballscrew.limits`.
     """
+
+
+class BallScrewPlausibilityWarning(UserWarning):
+    """An input lies outside what makers build or sell, and is used as given.
+
+    A ball off the makers' series, loaded turns outside 1 to 5, an oil thicker
+    than ISO VG 3200 (see :mod:`ballscrew.plausible`). The message names the
+    field, the value, the typical range and its source; the four are kept as
+    attributes.
+    """
+
+    def __init__(self, field: str, value: str, allowed: str, source: str) -> None:
+        super().__init__(
+            f"{field} = {value} lies outside {allowed} ({source}); it is used as given"
+        )
+        self.field = field
+        self.value = value
+        self.allowed = allowed
+        self.source = source
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        """Pickled with its four parts, not its message."""
+        return (type(self), (self.field, self.value, self.allowed, self.source))
 
 
 class BallScrewReadingWarning(UserWarning):

@@ -50,6 +50,7 @@ from .materials import (
     composite_roughness,
     reduced_modulus,
 )
+from .plausible import check_ball_diameter, check_loaded_turns
 
 __all__ = [
     "BALL_SEPARATIONS",
@@ -60,7 +61,6 @@ __all__ = [
     "NutArrangement",
     "ScrewArray",
     "ScrewGeometry",
-    "check_buildable",
     "reference_screw",
 ]
 
@@ -129,25 +129,6 @@ designation's '25x2' read as 25 turns was a slip for 2.5)."""
 
 MAX_PRELOAD = 1e8
 """The largest preload a :class:`BallScrew` takes [N] (100 MN: far past any ball screw)."""
-
-
-def check_buildable(screw: BallScrew, field: str = "") -> None:
-    """Refuse a screw that cannot be built: a ball as large as the lead.
-
-    A ball of a single-start thread sits between neighbouring turns of the
-    groove, so it must be smaller than the lead (a multi-start thread's pitch
-    is smaller still). :class:`BallScrew` itself allows it, so that the
-    kinematics can be taken to the limit of a vanishing lead angle; the inputs
-    of case files, sweeps and the web page are held to it. ``field`` prefixes
-    the field named in the error (``"screw."``).
-    """
-    if screw.ball_diameter >= screw.lead:
-        raise BallScrewInputError(
-            f"{field}ball_diameter",
-            f"{screw.ball_diameter * 1e3:g} mm",
-            f"a ball smaller than the lead ({screw.lead * 1e3:g} mm): a larger ball does "
-            "not fit between neighbouring turns of the groove",
-        )
 
 
 @dataclass(frozen=True)
@@ -303,6 +284,14 @@ class BallScrew:
                 f"a ball smaller than the pitch diameter ({self.pitch_diameter!r} m); "
                 "a larger ball does not fit the pitch circle (no screw core would remain)",
             )
+        if self.ball_diameter >= self.lead:
+            raise BallScrewInputError(
+                "ball_diameter",
+                self.ball_diameter,
+                f"a ball smaller than the lead ({self.lead * 1e3:g} mm): a larger ball does not "
+                "fit between neighbouring turns of the groove (a multi-start thread's pitch is "
+                "smaller still)",
+            )
         if self.lead >= math.pi * self.pitch_diameter:
             raise BallScrewInputError(
                 "lead",
@@ -324,6 +313,9 @@ class BallScrew:
             raise BallScrewInputError(
                 "loaded_turns", self.loaded_turns, "enough turns to hold at least one ball"
             )
+        # Inside what can be built, but perhaps not what makers build: warned, used as given.
+        check_ball_diameter("ball_diameter", self.ball_diameter)
+        check_loaded_turns("loaded_turns", self.loaded_turns)
 
     def _scalar(self, name: str, check: Any) -> None:
         value = getattr(self, name)

@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import functools
 import re
+import warnings
 from dataclasses import dataclass, fields, replace
 from typing import Any, Literal, get_args
 
@@ -35,12 +36,14 @@ import numpy.typing as npt
 
 from .errors import (
     BallScrewInputError,
+    BallScrewPlausibilityWarning,
     FloatArray,
     check_finite,
     check_in_range,
     check_nonnegative,
     check_positive,
 )
+from .plausible import LUBRICANT_RANGES, check_lubricant_property
 
 __all__ = [
     "LUBRICANT_KINDS",
@@ -449,6 +452,12 @@ class Lubricant:
     pressure_viscosity : float
         Pressure-viscosity coefficient :math:`\alpha` [1/Pa], taken as
         independent of temperature.
+
+        ``nu40``, ``density15`` and ``pressure_viscosity`` are refused beyond
+        what a lubricant can be and warned of outside the typical range
+        (:data:`ballscrew.plausible.LUBRICANT_RANGES`, with their sources):
+        ``nu40`` of ISO VG 2 to VG 3200 (1.98 to 3520 mm²/s) is typical, above
+        20000 mm²/s refused.
     limiting_shear_stress : float
         :math:`\tau_0` of the limiting shear stress :math:`\tau_{lim} = \tau_0
         + \gamma_L p` [Pa].
@@ -515,6 +524,8 @@ class Lubricant:
             "thermal_expansion",
             lambda f, v: check_in_range(f, v, 0.0, 0.01, inclusive=(True, False), unit="1/K"),
         )
+        for field in LUBRICANT_RANGES:  # refused beyond what lubricants are, warned outside
+            check_lubricant_property(field, getattr(self, field))
         if self.nu100 >= self.nu40:
             raise BallScrewInputError(
                 "nu100", self.nu100, f"a value below nu40 ({self.nu40!r} m²/s)"
@@ -609,6 +620,14 @@ class Lubricant:
             check_positive("nu40", nu40, "m²/s")
             pressure_viscosity = float(pressure_viscosity_jungnickel(nu40))
             kwargs.setdefault("source", "pressure-viscosity estimated (Jungnickel)")
+            with warnings.catch_warnings():  # an estimate is not warned of: nu40 is, if at all
+                warnings.filterwarnings(
+                    "ignore", "pressure_viscosity", BallScrewPlausibilityWarning
+                )
+                return cls(
+                    name=name, nu40=nu40, nu100=nu100, density15=density15,
+                    pressure_viscosity=pressure_viscosity, **kwargs,
+                )  # fmt: skip
         return cls(
             name=name,
             nu40=nu40,

@@ -173,7 +173,9 @@ def test_self_locking_is_the_friction_angle_against_the_lead_angle(
     # exactly when rho = atan(mu) reaches the lead angle beta, whatever the preload.
     from ballscrew.axis.energy import self_locking
 
-    screw = reference_screw().replace(lead=lead_mm * 1e-3)
+    # A ball smaller than the lead (1/16 in on 2 mm, 1/8 in on 5 mm): the rule needs no ball.
+    ball = {2.0: 1.5875e-3, 5.0: 3.175e-3}.get(lead_mm, 6.35e-3)
+    screw = reference_screw().replace(lead=lead_mm * 1e-3, ball_diameter=ball)
     beta, rho = screw.lead_angle, math.atan(mu)
     got = self_locking(screw, "PAO ISO VG 68", model="catalog", friction_coefficient=mu)
     assert got == (rho >= beta)

@@ -137,7 +137,9 @@ def test_back_driving_decided_as_the_catalogue_does(lead_mm: float, mu: float) -
     # screw self-locking when the lead angle is below the friction angle.
     from ballscrew.axis.energy import reverse_efficiency
 
-    s = reference_screw().replace(nut="single", preload=0.0, lead=lead_mm * 1e-3)
+    ball = 3.175e-3 if lead_mm < 6.35 else 6.35e-3  # smaller than the lead
+    s = reference_screw().replace(nut="single", preload=0.0, lead=lead_mm * 1e-3,
+                                  ball_diameter=ball)  # fmt: skip
     r = friction_torque(s, OIL, speed=10.0, temperature=40.0, axial_load=3000.0,
                         model="catalog", friction_coefficient=mu)  # fmt: skip
     beta, rho = s.lead_angle, math.atan(mu)

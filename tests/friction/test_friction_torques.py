@@ -29,7 +29,7 @@ def _screws() -> list[BallScrew]:
     return [
         base,
         base.replace(lead=0.020, preload=1500.0),
-        base.replace(pitch_diameter=0.032, ball_diameter=5.556e-3, lead=0.005),
+        base.replace(pitch_diameter=0.032, ball_diameter=3.175e-3, lead=0.005),
         base.replace(nut="single-4point", preload=400.0),
         base.replace(nut="single", preload=0.0, conformity_nut=0.53),
     ]

@@ -92,10 +92,12 @@ FLUID_PART = {
 
 
 def _screw(dm: float, ratio: float, lead_ratio: float, f: float, preload: float) -> BallScrew:
+    # A ball smaller than the lead, as every screw is built: where the drawn ball would not
+    # fit between the turns, 0.8 of the lead.
     return BallScrew(
         pitch_diameter=dm,
         lead=lead_ratio * dm,
-        ball_diameter=ratio * dm,
+        ball_diameter=min(ratio * dm, 0.8 * lead_ratio * dm),
         contact_angle=math.radians(45),
         conformity_screw=f,
         conformity_nut=f,

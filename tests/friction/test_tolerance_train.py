@@ -50,7 +50,7 @@ def test_train_term_does_not_depend_on_the_lead() -> None:
     # tolerance mechanism holds no lead; only the helix's cos(lambda) moves the ball load
     # (1/cos), the spins and the ball count, which add up to under 10 %. (The catalogue rule
     # rises by sqrt(4) = 2 over the same leads.)
-    s = reference_screw()
+    s = reference_screw().replace(ball_diameter=3.969e-3)  # 5/32 in fits the 5 mm lead
     five = float(_train(s.replace(lead=5e-3))["ball_ball"])
     twenty = float(_train(s.replace(lead=20e-3))["ball_ball"])
     assert twenty / five == pytest.approx(1.0, abs=0.1)

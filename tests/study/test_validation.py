@@ -87,11 +87,16 @@ def test_acceptance_band_rows_at_their_edges(torque: float, tolerance: float) ->
     assert acceptance_band(torque) == tolerance
 
 
+# The trend screws' leads go down to 4 mm: 1/8 in balls fit between their turns (the ball is
+# no variable of the trend).
+SMALL_BALLS = reference_screw().replace(ball_diameter=3.175e-3)
+
+
 def test_trend_slopes_recover_exact_power_laws_and_cover_noisy_ones() -> None:
     # ratio = C tan^0.3 d0^-0.1 F^0.2 exactly: the partial slopes are those exponents, with
     # zero-width intervals (to round-off). With 5 % log-normal noise the 95 % intervals
     # cover the truth in about 95 % of seeded trials (binomial: 85 to 100 of 100).
-    screws = [reference_screw().replace(lead=lead, pitch_diameter=d, preload=f)
+    screws = [SMALL_BALLS.replace(lead=lead, pitch_diameter=d, preload=f)
               for lead in (5e-3, 10e-3, 20e-3) for d in (0.025, 0.04, 0.063)
               for f in (1e3, 3e3)]  # fmt: skip
     truth = np.array([0.3, -0.1, 0.2])
@@ -302,7 +307,7 @@ def test_trend_slopes_with_one_degree_of_freedom_and_a_zero_prediction() -> None
 
     sizes = ((5e-3, 0.03, 1e3), (1e-2, 0.04, 2e3), (2e-2, 0.05, 1e3), (4e-2, 0.04, 3e3),
              (1e-2, 0.063, 5e3))  # fmt: skip
-    screws = [reference_screw().replace(lead=l_, pitch_diameter=d, preload=p)
+    screws = [SMALL_BALLS.replace(lead=l_, pitch_diameter=d, preload=p)
               for l_, d, p in sizes]  # fmt: skip
     slopes, half = trend_slopes(screws, [1.0, 1.1, 0.9, 1.2, 1.05])
     assert np.all(np.isfinite(slopes)) and np.all(np.isfinite(half)) and np.all(half > 0)
@@ -339,7 +344,7 @@ def test_trend_slopes_and_intervals_by_frisch_waugh_lovell() -> None:
     from ballscrew.study.validation import SLOPE_VARIABLES, ScoreRow, _slope_rows
 
     rng = np.random.default_rng(7)
-    screws = [reference_screw().replace(lead=le, pitch_diameter=d, preload=p) for le, d, p in
+    screws = [SMALL_BALLS.replace(lead=le, pitch_diameter=d, preload=p) for le, d, p in
               zip(rng.uniform(4e-3, 4e-2, 12), rng.uniform(0.02, 0.06, 12),
                   rng.uniform(500, 5000, 12), strict=True)]  # fmt: skip
     ratios = (

@@ -122,6 +122,7 @@ from ..helix import SlipContact, transverse_slip_loss
 from ..kinematics import differential_sliding, four_point_spin, kinematics, rad_s_to_rpm
 from ..lubricant import Lubricant
 from ..materials import STEEL_DENSITY
+from ..plausible import check_wiper_drag
 from ..state import ContactState, OperatingState
 from ..validity import film_checks
 from ._common import limiting_shear, model_state
@@ -553,7 +554,9 @@ def complete(
     thermal_correction : bool
         Apply the inlet shear heating and replenishment factors (default True).
     seal_torque : float
-        Drag torque of wipers or seals [N·m], 0 by default.
+        Drag torque of wipers or seals [N·m], 0 by default; ten times the
+        typical drag of the screw's size is refused
+        (:func:`ballscrew.plausible.check_wiper_drag`).
     asperity_b, asperity_c : float
         :math:`B`, :math:`C` of :func:`ballscrew.ehl.asperity_share`.
     hertz_method : str
@@ -574,6 +577,7 @@ def complete(
     theta = float(check_nonnegative("return_turning_angle", return_turning_angle, "rad"))
     alpha_h = float(check_nonnegative("hysteresis_loss_factor", hysteresis_loss_factor))
     seal = float(check_nonnegative("seal_torque", seal_torque, "N·m"))
+    check_wiper_drag("seal_torque", seal, screw.pitch_diameter, warn_above=False)
     tau0, gamma_l = limiting_shear(lubricant, limiting_shear_stress, limiting_shear_coefficient)
     state = model_state(
         screw, lubricant, speed, temperature, axial_load, hertz_method=hertz_method,

@@ -24,6 +24,7 @@ import difflib
 import math
 import re
 import tomllib
+import warnings
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from importlib import resources
@@ -36,9 +37,10 @@ from pydantic import ValidationError
 from .. import lubricants
 from ..design.limits import check_operating_bounds
 from ..design.ratings import Ratings, static_rating_estimate
-from ..errors import BallScrewInputError, FloatArray
-from ..geometry import PLAUSIBLE_SIZES, BallScrew, check_buildable
+from ..errors import BallScrewInputError, BallScrewPlausibilityWarning, FloatArray
+from ..geometry import PLAUSIBLE_SIZES, BallScrew
 from ..lubricant import Lubricant
+from ..plausible import LUBRICANT_RANGES, check_wiper_drag
 from .designation import resolve
 from .files import read_input_text
 from .schema import (
@@ -248,6 +250,9 @@ class Case:
     command's), ``assumed`` (marked so, with its reason in :attr:`assumptions`)."""
     contact_angle_scatter: float | None = None
     output_units: str = "si"
+    warned: tuple[str, ...] = ()
+    """The plausibility warnings of its inputs, each once (a ball off the makers' series, an
+    oil outside its typical range: :mod:`ballscrew.plausible`); also warned when read."""
 
     def load_ratings(self) -> Ratings:
         """The screw's load ratings: the case's, else C_0a estimated from the geometry."""
@@ -282,7 +287,8 @@ class Case:
 
     def with_wiper_drag(self, value: Any, *, field: str = "screw.wiper_drag") -> Case:
         """The case with another wiper drag (a torque with its unit, e.g. ``"0.05 N*m"``)."""
-        return replace(self, wiper_drag=_wiper_drag(field, value, self.model_parameters))
+        drag = _wiper_drag(field, value, self.model_parameters, self.screw.pitch_diameter)
+        return replace(self, wiper_drag=drag)
 
 
 WIPER_PARAMETERS: dict[str, str] = {"complete": "seal_torque"}
@@ -294,11 +300,18 @@ and :func:`ballscrew.report.torque.run_models` says so with each result.
 """
 
 
-def _wiper_drag(field: str, raw: Any, model_parameters: dict[str, dict[str, Any]]) -> float:
-    """The wiper drag [N·m] from its text with unit: >= 0, not given twice for one model."""
+def _wiper_drag(
+    field: str, raw: Any, model_parameters: dict[str, dict[str, Any]], pitch_diameter: float
+) -> float:
+    """The wiper drag [N·m] from its text with unit: >= 0, not given twice for one model.
+
+    Held to the screw's size (:func:`ballscrew.plausible.check_wiper_drag`): ten
+    times the wipers' typical drag is refused, above it warned.
+    """
     value = to_si(field, raw, "N*m")
     if not (math.isfinite(value) and value >= 0.0):
         raise BallScrewInputError(field, raw, "a torque >= 0 with its unit, e.g. '0.05 N*m'")
+    check_wiper_drag(field, value, pitch_diameter)
     for model, parameter in WIPER_PARAMETERS.items():
         if value and parameter in model_parameters.get(model, {}):
             raise BallScrewInputError(
@@ -333,7 +346,36 @@ def _validation_error(exc: ValidationError) -> BallScrewInputError:
 
 
 def parse_case(text: str, *, source: str = "case") -> Case:
-    """Validate a case given as TOML text; see the module docstring for the format."""
+    """Validate a case given as TOML text; see the module docstring for the format.
+
+    A value outside what makers build or sell is warned of
+    (:class:`~ballscrew.errors.BallScrewPlausibilityWarning`) once, and kept in
+    :attr:`Case.warned` for the faces that answer with their warnings (the web).
+    """
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", BallScrewPlausibilityWarning)
+        case = _parse_case(text, source)
+    told: dict[str, None] = {}
+    for w in caught:
+        message = w.message
+        if isinstance(message, BallScrewPlausibilityWarning):
+            message = _named(message)
+            if str(message) in told:
+                continue
+            told[str(message)] = None
+        warnings.warn_explicit(message, w.category, w.filename, w.lineno)
+    return replace(case, warned=tuple(told)) if told else case
+
+
+def _named(w: BallScrewPlausibilityWarning) -> BallScrewPlausibilityWarning:
+    """The warning naming its field as the file does (``screw.ball_diameter``)."""
+    if "." in w.field:
+        return w
+    section = "lubricant" if w.field in LUBRICANT_RANGES else "screw"
+    return BallScrewPlausibilityWarning(f"{section}.{w.field}", w.value, w.allowed, w.source)
+
+
+def _parse_case(text: str, source: str) -> Case:
     data = _case_file(text, source)
     notes: list[Assumption] = []
     read: list[Reading] = []  # how texts that could be meant two ways were read
@@ -355,7 +397,7 @@ def parse_case(text: str, *, source: str = "case") -> Case:
     wiper = 0.0
     if s.wiper_drag is not None:
         raw = _unwrap("screw.wiper_drag", s.wiper_drag, notes)
-        wiper = _wiper_drag("screw.wiper_drag", raw, st.model_parameters)
+        wiper = _wiper_drag("screw.wiper_drag", raw, st.model_parameters, screw.pitch_diameter)
     scatter = None
     if s.contact_angle_scatter is not None:
         scatter = si("screw", "contact_angle_scatter", s.contact_angle_scatter, "rad")
@@ -616,7 +658,6 @@ def _screw(
         screw = BallScrew(preload=0.0, **geometry)
     except BallScrewInputError as exc:
         raise BallScrewInputError(f"screw.{exc.field}", exc.value, exc.allowed) from None
-    check_buildable(screw, "screw.")
     preload = _preload(s, si, screw, rating)
     try:
         screw = screw.replace(preload=preload)

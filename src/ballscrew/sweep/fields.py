@@ -17,7 +17,7 @@ from typing import Any
 from .. import lubricants
 from ..errors import BallScrewInputError
 from ..friction import MODELS
-from ..geometry import NUT_ARRANGEMENTS, BallScrew, check_buildable
+from ..geometry import NUT_ARRANGEMENTS, BallScrew
 from ..io.case import LUBRICANT_UNITS, SCREW_UNITS, Case
 from ..lubricant import Lubricant
 
@@ -113,7 +113,6 @@ def resolve(
         screw = case.screw.replace(**screw_changes) if screw_changes else case.screw
     except BallScrewInputError as exc:
         raise BallScrewInputError(f"screw.{exc.field}", exc.value, exc.allowed) from None
-    check_buildable(screw, "screw.")
     if scale != 1.0:
         lub_changes.setdefault("nu40", lubricant.nu40)
         lub_changes.setdefault("nu100", lubricant.nu100)

@@ -12,13 +12,14 @@ from __future__ import annotations
 
 import json
 import math
+import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
 import tomlkit
 
-from ..errors import BallScrewInputError
+from ..errors import BallScrewInputError, BallScrewPlausibilityWarning
 from ..io.case import Case, parse_case, parse_toml
 from ..io.units import range_size
 
@@ -93,10 +94,37 @@ class ApiError(Exception):
         return out
 
 
+class _TwiceError(Exception):
+    """A key given twice in one JSON object (``json`` would keep the last without a word)."""
+
+    def __init__(self, key: str) -> None:
+        super().__init__(key)
+        self.key = key
+
+
+def _once(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
+    """A JSON object's pairs as a dict, refusing a key given twice."""
+    out: dict[str, Any] = {}
+    for key, value in pairs:
+        if key in out:
+            raise _TwiceError(key)
+        out[key] = value
+    return out
+
+
 def read_json(body: bytes) -> dict[str, Any]:
-    """A request body as a JSON object (400 if it is not one)."""
+    """A request body as a JSON object (400 if it is not one; 422 if it gives a key twice).
+
+    A key given twice in one object (a move's ``stroke``, say) is refused, naming it, as
+    the command line refuses a ``--move`` key given twice: JSON readers keep the last.
+    """
     try:
-        data = json.loads(body.decode("utf-8"))
+        data = json.loads(body.decode("utf-8"), object_pairs_hook=_once)
+    except _TwiceError as twice:
+        raise ApiError.from_input(BallScrewInputError(
+            twice.key, "(given twice)",
+            "each key once in an object: which of the two is meant cannot be told",
+        )) from None  # fmt: skip
     except (UnicodeDecodeError, ValueError, RecursionError):
         raise ApiError(400, "the request body is not JSON (UTF-8)") from None
     if not isinstance(data, dict):
@@ -167,7 +195,9 @@ def load_case(fields: Mapping[str, Any], limits: Limits = LIMITS) -> Case:
         for key in ("speed", "temperature", "axial_load"):
             if operation.get(key) is not None:
                 check_points(f"operation.{key}", operation[key], limits)
-    return parse_case(case_toml(fields, limits), source="case")
+    with warnings.catch_warnings():  # the answer carries them (Case.warned), not the log
+        warnings.simplefilter("ignore", BallScrewPlausibilityWarning)
+        return parse_case(case_toml(fields, limits), source="case")
 
 
 def read_case_file(body: bytes) -> dict[str, Any]:

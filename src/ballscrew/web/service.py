@@ -175,7 +175,9 @@ def torque(payload: Mapping[str, Any], limits: Limits = LIMITS) -> dict[str, Any
         "power_loss_W": _floats(r.power_loss),
         "efficiency": _floats(r.efficiency),
         "components": {k: _floats(v) for k, v in r.components.items()},
-        "warnings": [f"warning: {r}" for r in read] + plausible + warning_lines(results),
+        "warnings": [f"warning: {x}" for x in [*case.warned, *read]]
+        + plausible
+        + warning_lines(results),
     }
 
 
@@ -359,7 +361,7 @@ def evaluate(payload: Mapping[str, Any], limits: Limits = LIMITS) -> dict[str, A
         "models": names,
         "curves": _curves(results),
         "budget": _budget(results[chosen]) if chosen != "catalog" else None,
-        "warnings": plausible + warning_lines(results),
+        "warnings": [f"warning: {x}" for x in case.warned] + plausible + warning_lines(results),
         "energy": energy,
         "case_toml": case.text,
         "csv": csv_text(rows),

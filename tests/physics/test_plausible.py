@@ -1,0 +1,211 @@
+"""The typical ranges of the inputs (ballscrew.plausible): refused beyond what can be, warned
+outside what makers build or sell, through the library classes every face builds (issue 35, 4).
+
+The bounds are outside numbers: ISO 3448's viscosity grades (VG 3200 ends at 3520 mm²/s), the
+ball sizes of ISO 3290-1 in inch fractions, and the bundled catalogue rows and oils, which are
+real parts and must pass without a word.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+
+import pytest
+
+from ballscrew import BallScrew, BallScrewInputError
+from ballscrew import lubricants as bundled
+from ballscrew.errors import BallScrewPlausibilityWarning
+from ballscrew.friction import get_model
+from ballscrew.io.case import parse_case
+from ballscrew.io.designation import catalog_screws
+from ballscrew.lubricant import Lubricant
+from ballscrew.plausible import BALL_SERIES_MM, wiper_drag_bound
+
+
+def _screw(**changes: object) -> BallScrew:
+    base: dict[str, object] = dict(
+        pitch_diameter=0.040, lead=0.010, ball_diameter=6.35e-3,
+        contact_angle=math.radians(45.0), conformity_screw=0.55, conformity_nut=0.55,
+        loaded_turns=2.5, circuits=2, nut="double", preload=2000.0,
+    )  # fmt: skip
+    base.update(changes)
+    return BallScrew(**base)  # type: ignore[arg-type]
+
+
+def _quiet(build: object) -> None:
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", BallScrewPlausibilityWarning)
+        build()  # type: ignore[operator]
+
+
+@pytest.mark.parametrize(("ball", "lead"), [(12e-3, 10e-3), (10e-3, 10e-3), (6.35e-3, 5e-3)])
+def test_a_ball_as_large_as_the_lead_is_refused_by_the_class(ball: float, lead: float) -> None:
+    # A ball of a single-start thread sits between neighbouring turns of the groove: it must
+    # be smaller than the lead (0.2.0 accepted a 12 mm ball on a 10 mm lead in the library).
+    with pytest.raises(BallScrewInputError, match="lead") as info:
+        _screw(ball_diameter=ball, lead=lead, pitch_diameter=0.063)
+    assert info.value.field == "ball_diameter"
+
+
+def test_a_case_file_names_the_screw_field_for_it() -> None:
+    text = CASE.format(
+        screw='pitch_diameter = "40 mm"\nlead = "10 mm"\nball_diameter = "12 mm"', lub=""
+    )
+    with pytest.raises(BallScrewInputError, match="smaller than the lead") as info:
+        parse_case(text)
+    assert info.value.field == "screw.ball_diameter"
+
+
+@pytest.mark.parametrize("mm", [1.5875, 2.381, 3.175, 3.969, 4.762, 6.35, 7.144, 9.525, 12.7, 5.0])
+def test_balls_of_the_series_pass_quietly(mm: float) -> None:
+    _quiet(lambda: _screw(ball_diameter=mm * 1e-3, lead=0.016))
+
+
+@pytest.mark.parametrize("mm", [0.25, 0.5, 6.2, 30.0])
+def test_a_ball_off_the_series_is_warned_naming_the_field(mm: float) -> None:
+    with pytest.warns(BallScrewPlausibilityWarning, match="ball_diameter") as record:
+        _screw(ball_diameter=mm * 1e-3, lead=0.032, pitch_diameter=0.080)
+    warning = record[0].message
+    assert isinstance(warning, BallScrewPlausibilityWarning)
+    assert warning.field == "ball_diameter" and "ISO 3290-1" in warning.source
+
+
+def test_the_series_holds_the_inch_fractions() -> None:
+    # 1/32 in steps from 1/16 to 1/2 in that ball screws use (25.4 mm per inch).
+    for n in (2, 3, 4, 5, 6, 7, 8, 9, 10, 12, 16):
+        assert any(abs(s - n * 25.4 / 32) < 1e-3 for s in BALL_SERIES_MM), n
+
+
+@pytest.mark.parametrize("turns", [0.5, 6.0, 9.5])
+def test_loaded_turns_outside_1_to_5_are_warned(turns: float) -> None:
+    with pytest.warns(BallScrewPlausibilityWarning, match="loaded_turns"):
+        _screw(loaded_turns=turns)
+
+
+@pytest.mark.parametrize("turns", [1.0, 1.5, 2.5, 3.5, 5.0])
+def test_loaded_turns_makers_build_pass_quietly(turns: float) -> None:
+    _quiet(lambda: _screw(loaded_turns=turns))
+
+
+def test_every_bundled_catalogue_nut_passes_quietly() -> None:
+    # Real parts: their balls and turns lie in the series (or the catalogue's assumption).
+    for row in catalog_screws():
+        if row.ball_diameter is None:  # the case would need it given
+            continue
+        text = CASE.format(screw=f'designation = "{row.designation}"', lub="").replace(
+            'preload = "2 kN"', 'preload = "0 N"'
+        )
+        _quiet(lambda text=text: parse_case(text))
+
+
+def test_every_bundled_lubricant_passes_quietly() -> None:
+    for name in bundled.names():
+        oil = bundled.get(name)
+        _quiet(lambda oil=oil: oil.replace(source="again"))
+
+
+@pytest.mark.parametrize(
+    ("field", "value"),
+    [("nu40", 3520e-6), ("nu40", 2e-6), ("density15", 750.0), ("density15", 1100.0),
+     ("pressure_viscosity", 10e-9), ("pressure_viscosity", 35e-9)],
+)  # fmt: skip
+def test_lubricant_properties_inside_their_typical_range_pass(field: str, value: float) -> None:
+    # VG 3200's upper limit (3520 mm²/s) and VG 2's lower one (1.98) are inside.
+    base = {"nu40": 68e-6, "nu100": 1e-6 if field == "nu40" else 8.6e-6, "density15": 880.0,
+            "pressure_viscosity": 2.2e-8}  # fmt: skip
+    _quiet(lambda: Lubricant(name="oil", **{**base, field: value}))
+
+
+@pytest.mark.parametrize(
+    ("field", "value"),
+    [("nu40", 6800e-6), ("nu40", 1e-2), ("density15", 1900.0), ("density15", 700.0),
+     ("pressure_viscosity", 50e-9), ("pressure_viscosity", 3e-9)],
+)  # fmt: skip
+def test_lubricant_properties_outside_their_typical_range_are_warned(
+    field: str, value: float
+) -> None:
+    # '68 St' is 6800 mm²/s, above ISO VG 3200's 3520: warned, used as given (a 10000 mm²/s
+    # oil is what tests/friction/test_edges.py takes to the edge on purpose).
+    base = {"nu40": 68e-6, "nu100": 8.6e-6, "density15": 880.0, "pressure_viscosity": 2.2e-8}
+    with pytest.warns(BallScrewPlausibilityWarning, match=field) as record:
+        oil = Lubricant(name="oil", **{**base, field: value})
+    assert getattr(oil, field) == value
+    message = record[0].message
+    assert isinstance(message, BallScrewPlausibilityWarning) and message.source
+
+
+@pytest.mark.parametrize(
+    ("field", "value"),
+    [("nu40", 0.03), ("density15", 8800.0), ("pressure_viscosity", 2.2e-7),
+     ("pressure_viscosity", 2.2e-10)],
+)  # fmt: skip
+def test_lubricant_properties_beyond_what_can_be_are_refused(field: str, value: float) -> None:
+    base = {"nu40": 68e-6, "nu100": 8.6e-6, "density15": 880.0, "pressure_viscosity": 2.2e-8}
+    with pytest.raises(BallScrewInputError) as info:
+        Lubricant(name="oil", **{**base, field: value})
+    assert info.value.field == field
+    assert " to " in info.value.allowed and "(" in info.value.allowed  # the range, its source
+
+
+SIZE = 'pitch_diameter = "40 mm"\nlead = "10 mm"\nball_diameter = "{ball}"'
+
+CASE = """
+[screw]
+{screw}
+preload = "2 kN"
+
+[lubricant]
+name = "mineral ISO VG 68"
+{lub}
+
+[operation]
+speed = "100 rpm"
+temperature = "40 degC"
+axial_load = "1 kN"
+"""
+
+
+def test_68_st_in_a_case_file_is_warned_and_kept_in_the_case() -> None:
+    lub = 'nu40 = "68 St"\nnu100 = "8.6 cSt"\ndensity15 = "880 kg/m**3"'
+    text = CASE.format(
+        screw='pitch_diameter = "40 mm"\nlead = "10 mm"\nball_diameter = "6.35 mm"', lub=lub
+    )
+    with pytest.warns(BallScrewPlausibilityWarning, match="lubricant.nu40 = 6800 mm²/s"):
+        case = parse_case(text)
+    assert case.lubricant.nu40 == pytest.approx(6.8e-3)
+    # Only what was typed: the pressure-viscosity coefficient estimated from it is not warned.
+    assert len(case.warned) == 1 and "ISO 3448" in case.warned[0]
+
+
+def test_wiper_drag_bound_grows_with_the_square_of_the_diameter() -> None:
+    # Lip length and radius each grow with the diameter.
+    assert wiper_drag_bound(0.080) == pytest.approx(4.0 * wiper_drag_bound(0.040))
+
+
+SCREW = 'pitch_diameter = "40 mm"\nlead = "10 mm"\nball_diameter = "6.35 mm"\nwiper_drag = "{drag}"'
+
+
+def test_a_50_nm_wiper_drag_is_refused_naming_the_field() -> None:
+    # 0.2.0 gave a 50.5 N*m drag torque for it; a wiper's lip cannot press that hard.
+    with pytest.raises(BallScrewInputError, match="N\\*mm or N\\*cm") as info:
+        parse_case(CASE.format(screw=SCREW.format(drag="50 N*m"), lub=""))
+    assert info.value.field == "screw.wiper_drag"
+
+
+def test_a_large_wiper_drag_is_warned_and_a_usual_one_is_not() -> None:
+    with pytest.warns(BallScrewPlausibilityWarning, match="screw.wiper_drag"):
+        parse_case(CASE.format(screw=SCREW.format(drag="2 N*m"), lub=""))
+    _quiet(lambda: parse_case(CASE.format(screw=SCREW.format(drag="0.05 N*m"), lub="")))
+
+
+def test_the_complete_models_seal_torque_is_refused_in_the_library() -> None:
+    screw = _screw()
+    oil = bundled.get("mineral ISO VG 68")
+    model = get_model("complete")
+    import numpy as np
+
+    one = np.asarray(100.0)
+    with pytest.raises(BallScrewInputError) as info:
+        model(screw, oil, one, np.asarray(40.0), np.asarray(1000.0), seal_torque=50.0)
+    assert info.value.field == "seal_torque"
