@@ -46,6 +46,9 @@ import math
 import warnings
 from typing import NamedTuple
 
+import numpy as np
+import numpy.typing as npt
+
 from .errors import BallScrewInputError, BallScrewPlausibilityWarning
 
 __all__ = [
@@ -211,7 +214,7 @@ def wiper_drag_bound(pitch_diameter: float) -> float:
 
 
 def check_wiper_drag(
-    field: str, torque: float, pitch_diameter: float, *, warn_above: bool = True
+    field: str, torque: npt.ArrayLike, pitch_diameter: npt.ArrayLike, *, warn_above: bool = True
 ) -> None:
     """Refuse a wiper drag [N·m] ten times the typical bound of the screw's size; warn above it.
 
@@ -225,14 +228,20 @@ def check_wiper_drag(
     ...     print(exc.field, exc.value)
     screw.wiper_drag 50 N*m
     """
-    typical = wiper_drag_bound(pitch_diameter)
-    size = f"a {pitch_diameter * 1e3:.4g} mm screw"
-    if not math.isfinite(torque) or torque > 10.0 * typical:
+    # Many screws at once (a ScrewArray's diameters): judged by the one furthest past its bound.
+    torques, diameters = np.broadcast_arrays(
+        np.ravel(np.asarray(torque, dtype=float)), np.ravel(np.asarray(pitch_diameter, dtype=float))
+    )
+    worst = int(np.argmax(torques / (WIPER_LIP_TORQUE * (diameters / 0.040) ** 2)))
+    value, diameter = float(torques[worst]), float(diameters[worst])
+    typical = wiper_drag_bound(diameter)
+    size = f"a {diameter * 1e3:.4g} mm screw"
+    if not math.isfinite(value) or value > 10.0 * typical:
         raise BallScrewInputError(
-            field, f"{torque:.4g} N*m",
+            field, f"{value:.4g} N*m",
             f"at most {10.0 * typical:.3g} N*m on {size}, ten times the wipers' typical "
             f"{typical:.2g} N*m ({WIPER_SOURCE}); a wiper drag in N*mm or N*cm given as N*m?",
         )  # fmt: skip
-    if warn_above and torque > typical:
-        warn(field, f"{torque:.4g} N*m", f"at most about {typical:.2g} N*m on {size}",
+    if warn_above and value > typical:
+        warn(field, f"{value:.4g} N*m", f"at most about {typical:.2g} N*m on {size}",
              WIPER_SOURCE)  # fmt: skip

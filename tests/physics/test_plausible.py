@@ -209,3 +209,17 @@ def test_the_complete_models_seal_torque_is_refused_in_the_library() -> None:
     with pytest.raises(BallScrewInputError) as info:
         model(screw, oil, one, np.asarray(40.0), np.asarray(1000.0), seal_torque=50.0)
     assert info.value.field == "seal_torque"
+
+
+def test_a_wiper_drag_on_many_screws_is_judged_by_the_screw_furthest_past_its_bound() -> None:
+    # Many screws at once (friction_torques' ScrewArray): 1 N*m is 2x the typical 0.5 N*m
+    # of a 40 mm screw but 50x the 0.0125 N*m of a 6.3 mm one (the bound scales as d^2), so
+    # the batch is refused and the message names the small screw.
+    import numpy as np
+
+    from ballscrew.plausible import check_wiper_drag
+
+    with pytest.raises(BallScrewInputError, match=r"6\.3 mm screw") as info:
+        check_wiper_drag("seal_torque", 1.0, np.array([[0.040], [0.0063]]), warn_above=False)
+    assert info.value.value == "1 N*m"
+    check_wiper_drag("seal_torque", 1.0, np.array([[0.040], [0.050]]), warn_above=False)
