@@ -19,6 +19,7 @@ from .common import (
 )
 
 if TYPE_CHECKING:
+    from ..io.motors import MotorRow
     from ..select import SelectResult
 
 __all__ = ["select_command"]
@@ -43,13 +44,22 @@ def _bounds(option: str, text: str | None) -> tuple[float, float] | None:
 @motion_options
 @click.option("--objective", "objectives", multiple=True,
               help="An objective of the front (repeat): energy, life, stiffness, lost_motion, "
-              "thermal_error, motor_margin (default: energy and life).")  # fmt: skip
+              "thermal_error, motor_margin, price (default: energy and life).")  # fmt: skip
 @click.option("--diameter", default=None, help="Nominal diameters to try, e.g. '25..40 mm'.")
 @click.option("--lead", default=None, help="Leads to try, e.g. '5..20 mm'.")
 @click.option("--maker", "makers", multiple=True, help="Keep this maker's nuts (repeat).")
 @click.option("--preload", "preloads", multiple=True,
               help="Preload classes to try (repeat): none, light (3 % of C_a), medium (5 %), "
               "heavy (8 %); default light, medium and heavy.")  # fmt: skip
+@click.option("--source", "sources", multiple=True, type=click.Choice(["catalogue", "iso"]),
+              help="Where the screws come from (repeat): the bundled catalogue rows, the "
+              "ISO 3408-2 sizes with estimated C_a and C_0a (default: catalogue).")  # fmt: skip
+@click.option("--nut", "nuts", multiple=True,
+              help="Nut kinds to keep (repeat): double, single-4point, spacer-balls, single "
+              "(default: every kind a screw allows).")  # fmt: skip
+@click.option("--motors", "motors_file", default=None,
+              help="A motor table (CSV, units in the header): every screw is tried with every "
+              "motor; a price column gives the price objective (examples/motors.csv).")  # fmt: skip
 @click.option("--oil", "oils", multiple=True,
               help="Lubricants to try by name (repeat; default the case's).")  # fmt: skip
 @click.option("--model", "model_name", default="complete", show_default=True,
@@ -72,6 +82,9 @@ def select_command(
     lead: str | None,
     makers: tuple[str, ...],
     preloads: tuple[str, ...],
+    sources: tuple[str, ...],
+    nuts: tuple[str, ...],
+    motors_file: str | None,
     oils: tuple[str, ...],
     model_name: str,
     temperature: str | None,
@@ -105,6 +118,11 @@ def select_command(
     case = load_case(require_case(case_file, "ballscrew select", "the axis, motor and limits "
                                   "the candidates are checked against"))  # fmt: skip
     profile, m = motion(move_text, profile_file, cycles)
+    motors: tuple[MotorRow, ...] = ()
+    if motors_file is not None:
+        from ..io.motors import read_motors
+
+        motors = read_motors(motors_file)
     result = run_select(
         case, profile, objectives=objectives or ("energy", "life"),
         diameter=_bounds("--diameter", diameter), lead=_bounds("--lead", lead), makers=makers,
@@ -112,14 +130,17 @@ def select_command(
         temperature=to_si("--temperature", temperature, "degC") if temperature else None,
         run_time=to_si("--run-time", run_time, "s"), move=m,
         motion_field="--move" if move_text is not None else "--profile",
+        sources=sources or ("catalogue",), nuts=nuts, motors=motors,
     )  # fmt: skip
     command = ["ballscrew", "select", "--case", case_file or ""]
     for flag, value in (("--move", move_text), ("--profile", profile_file),
-                        ("--diameter", diameter), ("--lead", lead)):  # fmt: skip
+                        ("--diameter", diameter), ("--lead", lead),
+                        ("--motors", motors_file)):  # fmt: skip
         if value is not None:
             command += [flag, value]
     for flag, values in (("--objective", objectives), ("--maker", makers),
-                         ("--preload", preloads), ("--oil", oils)):  # fmt: skip
+                         ("--preload", preloads), ("--oil", oils), ("--source", sources),
+                         ("--nut", nuts)):  # fmt: skip
         for v in values:
             command += [flag, v]
     result.inputs.update({"command": command, "case_file": case_file})
@@ -128,6 +149,9 @@ def select_command(
     best = result.evaluated[result.recommended]
     out.print(f"recommended: {best.name}")
     out.print(f"why: {result.reason}")
+    if result.inputs.get("rating_estimates"):
+        out.print("ISO sizes (marked 'estimated'): C_a and C_0a estimated from the geometry "
+                  f"(ballscrew.design.ratings); {result.inputs['rating_estimates']}")  # fmt: skip
     seconds = time.process_time() - start
     out.print(f"{len(result.evaluated)} candidates ({len(result.feasible)} feasible, "
               f"{len(result.front)} on the front) in {seconds:.1f} s of CPU "
@@ -157,12 +181,15 @@ def _front_table(result: SelectResult) -> Table:
     keys = [OBJECTIVES[o][0] for o in result.objectives]
     extra = [k for k in ("energy_J", "L10_h", "stiffness_N_per_um", "max_utilisation",
                          "p_not_ok") if k not in keys]  # fmt: skip
+    if any(result.evaluated[i].candidate.motor is not None for i in result.front):
+        extra += [k for k in ("motor_margin", "price") if k not in keys]
     table.add_column("candidate")
     for k in keys + extra:
         table.add_column(k, justify="right")
     table.add_column("largest utilisation")
     for i in result.front:
         e = result.evaluated[i]
-        mark = " *" if i == result.recommended else ""
+        mark = (" (estimated)" if e.candidate.estimated else "") + (
+            " *" if i == result.recommended else "")  # fmt: skip
         table.add_row(e.name + mark, *(_number(e.figures[k]) for k in keys + extra), e.binding)
     return table
