@@ -25,20 +25,6 @@ if TYPE_CHECKING:
 __all__ = ["select_command"]
 
 
-def _bounds(option: str, text: str | None) -> tuple[float, float] | None:
-    """``"25..40 mm"`` (or one value) as (low, high) [m]; None when not given."""
-    if text is None:
-        return None
-    from ..errors import BallScrewInputError
-    from ..io.units import parse_range
-
-    values = parse_range(option, text, "m", default_points=2)
-    low, high = min(values), max(values)
-    if not 0.0 < low <= high:
-        raise BallScrewInputError(option, text, "lengths > 0, e.g. '25..40 mm'")
-    return low, high
-
-
 @click.command("select")
 @own_case_option
 @motion_options
@@ -111,7 +97,7 @@ def select_command(
     from ..io.extras import require
     from ..io.units import to_si
     from ..select import run_select
-    from ..select.pool import DEFAULT_PRELOADS
+    from ..select.pool import DEFAULT_PRELOADS, length_range
 
     require("select", "ballscrew select", modules=("pymoo",))
     start = time.process_time()
@@ -125,7 +111,8 @@ def select_command(
         motors = read_motors(motors_file)
     result = run_select(
         case, profile, objectives=objectives or ("energy", "life"),
-        diameter=_bounds("--diameter", diameter), lead=_bounds("--lead", lead), makers=makers,
+        diameter=length_range("--diameter", diameter), lead=length_range("--lead", lead),
+        makers=makers,
         preloads=preloads or DEFAULT_PRELOADS, oils=oils, model=model_name, cycles=cycles,
         temperature=to_si("--temperature", temperature, "degC") if temperature else None,
         run_time=to_si("--run-time", run_time, "s"), move=m,

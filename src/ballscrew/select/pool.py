@@ -252,6 +252,19 @@ def _kinds(row: CatalogScrew, preload: str, estimated: bool) -> list[str]:
     return ["double"] if row.nut == "double" else ["single-4point"]
 
 
+def length_range(field: str, text: str | None) -> tuple[float, float] | None:
+    """``"25..40 mm"`` (or one length) as (low, high) [m]; None when not given."""
+    if text is None or not str(text).strip():
+        return None
+    from ..io.units import parse_range
+
+    values = parse_range(field, str(text), "m", default_points=2)
+    low, high = min(values), max(values)
+    if not 0.0 < low <= high:
+        raise BallScrewInputError(field, text, "lengths > 0, e.g. '25..40 mm'")
+    return low, high
+
+
 def _inside(value: float, bounds: tuple[float, float] | None) -> bool:
     return bounds is None or bounds[0] * (1 - 1e-9) <= value <= bounds[1] * (1 + 1e-9)
 
