@@ -73,14 +73,25 @@ def _front_figure(result: SelectResult) -> MplFigure:
     return fig
 
 
+def _unit(result: SelectResult, key: str) -> str:
+    """The unit of a figure; the price's is the motor table's currency."""
+    if key == "price":
+        motors = [e.candidate.motor for e in result.evaluated if e.candidate.motor is not None]
+        return next((m.currency for m in motors if m.currency), "-")
+    return FIGURES[key]
+
+
 def _table(result: SelectResult) -> bytes:
     keys = list(FIGURES)
     header = ["candidate", "designation", "nut", "preload class", "preload share [-]", "oil",
-              "feasible", "on front", "binding constraint",
-              *(f"{k} [{FIGURES[k]}]" for k in keys)]  # fmt: skip
+              "ratings", "motor", "feasible", "on front", "binding constraint",
+              *(f"{k} [{_unit(result, k)}]" for k in keys)]  # fmt: skip
     front = set(result.front)
     rows = [[e.name, e.candidate.row.name, e.candidate.nut, e.candidate.preload_class,
-             e.candidate.preload_share, e.candidate.oil, e.feasible, i in front, e.binding,
+             e.candidate.preload_share, e.candidate.oil,
+             "estimated" if e.candidate.estimated else "catalogue",
+             e.candidate.motor.name if e.candidate.motor is not None else "", e.feasible,
+             i in front, e.binding,
              *(None if not np.isfinite(e.figures[k]) else e.figures[k] for k in keys)]
             for i, e in enumerate(result.evaluated)]  # fmt: skip
     return csv_bytes(header, rows)
@@ -105,6 +116,10 @@ def _blocks(result: SelectResult, caption: str) -> list[Block]:
         Block("h2", "The Pareto front"),
         Block("table", (["candidate", *keys, "largest utilisation", "binding row"], rows)),
         Block("img", ("front", caption)),
+        *([Block("p", "ISO 3408-2 sizes (the names starting 'ISO') carry load ratings "
+                  "estimated from their geometry (ballscrew.design.ratings); "
+                  + str(result.inputs["rating_estimates"]) + ".")]
+          if result.inputs.get("rating_estimates") else []),
         Block("h2", "Rejected candidates and what fails them"),
         Block("table", (["candidate", "binding constraint"], rejected or [["none", "-"]])),
     ]  # fmt: skip

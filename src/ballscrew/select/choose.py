@@ -383,6 +383,6 @@ def run_select(
               "lead_m": list(lead) if lead else None, "makers": list(makers),
               "preloads": list(preloads), "oils": list(oils), "sources": list(sources),
               "nuts": list(nuts), "motors": [m.name for m in motors],
-              "rating_estimates": scatter_text() if "iso" in sources else None,
+              "rating_estimates": scatter_text() if any(c.estimated for c in found) else None,
               "case_text": case.text}  # fmt: skip
     return SelectResult(case.title, chosen, evaluated, front, best, reason, model, inputs)
