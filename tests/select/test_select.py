@@ -160,6 +160,7 @@ def test_the_dataset_holds_every_candidate(selection: SelectResult) -> None:
     ds = selection.dataset()
     assert ds.sizes["candidate"] == len(selection.evaluated)
     assert int(ds["on_front"].sum()) == len(selection.front)
+    assert not ds["estimated"].any() and set(ds["motor"].values) == {""}
     doc = selection.as_dict()
     assert doc["recommended"] in doc["front"] or doc["recommended"] in [
         c["name"] for c in doc["candidates"] if c["feasible"]

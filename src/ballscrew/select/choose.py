@@ -163,6 +163,9 @@ class SelectResult:
         data["feasible"] = ("candidate", np.array([e.feasible for e in self.evaluated]))
         data["on_front"] = ("candidate", np.isin(np.arange(len(names)), self.front))
         data["binding"] = ("candidate", np.array([e.binding for e in self.evaluated]))
+        data["estimated"] = ("candidate", np.array([e.candidate.estimated for e in self.evaluated]))
+        data["motor"] = ("candidate", np.array([e.candidate.motor.name if e.candidate.motor
+                                                else "" for e in self.evaluated]))  # fmt: skip
         return xr.Dataset(
             data,
             coords={"candidate": names},

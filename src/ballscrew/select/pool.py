@@ -3,7 +3,7 @@
 The screws come from two sources (``sources``): the bundled catalogue rows
 (``"catalogue"``), with their printed ratings, and the ISO 3408-2 size series
 (``"iso"``, :data:`ISO_SIZES`), whose C_a and C_0a no catalogue gives: they
-are estimated from the geometry by the standard's methods
+are estimated from the geometry by the methods the standard rests on
 (:func:`~ballscrew.design.ratings.dynamic_rating_estimate`,
 :func:`~ballscrew.design.ratings.static_rating_estimate`), and such a
 candidate is labelled ``estimated``. :func:`rating_scatter` states how far
@@ -29,13 +29,13 @@ A catalogue row is tried as the kind it is sold as (a single nut as 4-point;
 spacer balls only for the ISO sizes, whose ratings are estimated from the
 balls they hold); an ISO size as every kind.
 
-ISO 3408-2 gives the nominal diameters (6 to 200 mm) and leads (1 to 40 mm) of
-metric ball screws. Its table of preferred combinations was not at hand: the
-sizes here are the standard's diameters and leads in the combinations the
-makers build, with the ball diameter and circuits of HIWIN's catalogue where
-it has the size (BS-08-2-EN-1704-K, the rows bundled in
-``data/catalog_screws.csv``) and, where it does not, the ball of the nearest
-bundled size of the same lead (``ISO_SIZES``' note says which).
+ISO 3408-2 standardises the nominal diameters and leads of metric ball screws
+and their preferred combinations. Its table was not at hand: the sizes here
+are nominal diameters of 16 to 80 mm and leads of 5 to 40 mm in the
+combinations the makers build, with the ball diameter and circuits of HIWIN's
+catalogue where it has the size (BS-08-2-EN-1704-K, the rows bundled in
+``data/catalog_screws.csv``) and, where it does not, those of the nearest
+bundled size (each entry of ``ISO_SIZES`` names it).
 """
 
 from __future__ import annotations
@@ -83,7 +83,7 @@ ISO_SIZES: tuple[tuple[float, float, float, int, str], ...] = (
     (20, 20, 3.175, 2, "HIWIN R20-20K2"),
     (25, 5, 3.175, 4, "HIWIN R25-05K4"),
     (25, 10, 3.969, 4, "HIWIN R25-10K4"),
-    (25, 20, 3.969, 3, "nearest bundled size (HIWIN 25x10)"),
+    (25, 20, 3.969, 3, "nearest bundled size of that diameter (HIWIN 25x10)"),
     (25, 25, 3.175, 2, "HIWIN R25-25K2"),
     (32, 5, 3.175, 4, "HIWIN R32-05K4"),
     (32, 10, 6.35, 5, "HIWIN R32-10K5"),
@@ -101,8 +101,8 @@ ISO_SIZES: tuple[tuple[float, float, float, int, str], ...] = (
     (80, 10, 6.35, 5, "nearest bundled size (HIWIN 63x10)"),
     (80, 20, 9.525, 5, "nearest bundled size (HIWIN 63x20)"),
 )
-"""The ISO 3408-2 sizes tried (mm): diameters and leads of the standard's series (module
-docstring), each with its ball, its circuits (one loaded turn each) and the ball's source."""
+"""The ISO 3408-2 sizes tried (mm; module docstring), each with its ball, its circuits (one
+loaded turn each) and where the ball and circuits come from."""
 
 ESTIMATE_ANGLE = math.radians(45.0)
 """Contact angle of the estimates (the package's default; catalogues take 45 deg)."""
