@@ -20,7 +20,7 @@ from ballscrew.errors import BallScrewInputError
 from ballscrew.geometry import BallScrew
 from ballscrew.io.case import load_case, parse_case
 from ballscrew.io.designation import catalog_screws
-from ballscrew.io.motors import parse_motors, read_motors
+from ballscrew.io.motors import parse_motors, parse_prices, read_motors
 from ballscrew.select import run_select
 from ballscrew.select.pool import ISO_SIZES, candidates, iso_rows, rating_scatter
 from cli_runner import run
@@ -176,3 +176,60 @@ def test_motors_and_price_give_a_front_over_price(
     code, _, err = run(["select", "--case", str(CASE), "--move", MOVE, "--motors", str(bad)],
                        capsys)  # fmt: skip
     assert code == 2 and "line 2" in err and "rotor_inertia" in err
+
+
+def test_a_screw_price_table_adds_to_the_motor_and_names_what_it_misses() -> None:
+    prices, currency = parse_prices(
+        "designation, price [EUR]\nHIWIN R32-20K4-FSC, 310\nhiwin  r40-20k4-fsc, 420\n"
+    )
+    assert currency == "EUR"
+    text = CASE.read_text(encoding="utf-8")
+    motors = read_motors(MOTORS)
+    found = candidates(text, diameter=(0.032, 0.040), lead=(0.02, 0.02), preloads=["light"],
+                       makers=["HIWIN"], motors=motors[2:3], screw_prices=prices)  # fmt: skip
+    by_screw = {c.row.name: c.price for c in found}
+    assert by_screw == {"HIWIN R32-20K4-FSC": 310 + 890, "HIWIN R40-20K4-FSC": 420 + 890}
+    with pytest.raises(
+        BallScrewInputError, match="missing: HIWIN R32-10K5-FDC, HIWIN R32-10K5-FSC"
+    ) as info:
+        candidates(text, diameter=(0.032, 0.032), lead=(0.01, 0.02), preloads=["light"],
+                   makers=["HIWIN"], screw_prices=prices)  # fmt: skip
+    assert info.value.field == "--screw-prices"
+    m = parse_move(MOVE)
+    with pytest.raises(BallScrewInputError, match="motor table's currency, EUR"):
+        run_select(load_case(CASE), profile_from_move(m, 1), objectives=["price"],
+                   diameter=(0.032, 0.040), lead=(0.02, 0.02), makers=["HIWIN"], move=m,
+                   motors=motors[2:3], screw_prices=prices, currency="USD")  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    ("text", "where", "allowed"),
+    [
+        ("designation, price\nA, 3\n", "line 1, column 'price'", "currency in brackets"),
+        ("designation, price [EUR]\nA, free\n", "line 2, column 'price [EUR]'", "a number"),
+        ("designation, price [EUR]\nA, 3\na, 4\n", "line 3, column 'designation'", "no other"),
+        ("name, cost [EUR]\nA, 3\n", "line 1 (header)", "designation, price"),
+    ],
+)  # fmt: skip
+def test_a_bad_screw_price_row_names_its_line_and_column(
+    text: str, where: str, allowed: str
+) -> None:
+    with pytest.raises(BallScrewInputError, match=allowed) as info:
+        parse_prices(text, source="p.csv")
+    assert where in info.value.field
+
+
+def test_the_command_takes_a_screw_price_table(capsys: pytest.CaptureFixture[str]) -> None:
+    pytest.importorskip("pymoo")
+    prices = ROOT / "examples" / "screw_prices.csv"
+    code, text, err = run(["select", "--case", str(CASE), "--move", MOVE, "--diameter",
+                           "32..40 mm", "--lead", "20 mm", "--maker", "HIWIN", "--preload",
+                           "light", "--screw-prices", str(prices), "--objective", "energy",
+                           "--objective", "price"], capsys)  # fmt: skip
+    assert code == 0, err
+    # R32-20K4 (380 EUR) needs less energy than R40-20K4 (460 EUR): it alone is the front
+    # (its price printed in the table); the rule, blind to price, recommends the R40 for its
+    # lower largest utilisation (85 % against 91 %, both above 80 %)
+    table = text.split("recommended:")[0]
+    assert "HIWIN R32-20K4-FSC" in table and "380" in table and "R40-20K4" not in table
+    assert "recommended: HIWIN R40-20K4-FSC" in text

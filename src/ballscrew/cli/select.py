@@ -46,6 +46,9 @@ __all__ = ["select_command"]
 @click.option("--motors", "motors_file", default=None,
               help="A motor table (CSV, units in the header): every screw is tried with every "
               "motor; a price column gives the price objective (examples/motors.csv).")  # fmt: skip
+@click.option("--screw-prices", "prices_file", default=None,
+              help="A screw price table (CSV: designation, price [EUR]), added to the motor's "
+              "price for the price objective; every screw tried needs a row.")  # fmt: skip
 @click.option("--oil", "oils", multiple=True,
               help="Lubricants to try by name (repeat; default the case's).")  # fmt: skip
 @click.option("--model", "model_name", default="complete", show_default=True,
@@ -71,6 +74,7 @@ def select_command(
     sources: tuple[str, ...],
     nuts: tuple[str, ...],
     motors_file: str | None,
+    prices_file: str | None,
     oils: tuple[str, ...],
     model_name: str,
     temperature: str | None,
@@ -109,6 +113,12 @@ def select_command(
         from ..io.motors import read_motors
 
         motors = read_motors(motors_file)
+    prices: dict[str, float] | None = None
+    currency = ""
+    if prices_file is not None:
+        from ..io.motors import read_prices
+
+        prices, currency = read_prices(prices_file)
     result = run_select(
         case, profile, objectives=objectives or ("energy", "life"),
         diameter=length_range("--diameter", diameter), lead=length_range("--lead", lead),
@@ -117,12 +127,13 @@ def select_command(
         temperature=to_si("--temperature", temperature, "degC") if temperature else None,
         run_time=to_si("--run-time", run_time, "s"), move=m,
         motion_field="--move" if move_text is not None else "--profile",
-        sources=sources or ("catalogue",), nuts=nuts, motors=motors,
+        sources=sources or ("catalogue",), nuts=nuts, motors=motors, screw_prices=prices,
+        currency=currency,
     )  # fmt: skip
     command = ["ballscrew", "select", "--case", case_file or ""]
     for flag, value in (("--move", move_text), ("--profile", profile_file),
                         ("--diameter", diameter), ("--lead", lead),
-                        ("--motors", motors_file)):  # fmt: skip
+                        ("--motors", motors_file), ("--screw-prices", prices_file)):  # fmt: skip
         if value is not None:
             command += [flag, value]
     for flag, values in (("--objective", objectives), ("--maker", makers),
@@ -169,7 +180,9 @@ def _front_table(result: SelectResult) -> Table:
     extra = [k for k in ("energy_J", "L10_h", "stiffness_N_per_um", "max_utilisation",
                          "p_not_ok") if k not in keys]  # fmt: skip
     if any(result.evaluated[i].candidate.motor is not None for i in result.front):
-        extra += [k for k in ("motor_margin", "price") if k not in keys]
+        extra += [k for k in ("motor_margin",) if k not in keys]
+    if any(result.evaluated[i].candidate.price is not None for i in result.front):
+        extra += [k for k in ("price",) if k not in keys]
     table.add_column("candidate")
     for k in keys + extra:
         table.add_column(k, justify="right")

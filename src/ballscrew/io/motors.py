@@ -13,6 +13,9 @@ currency (any word; not converted). The units are converted to SI here, at the
 boundary (torques N*m, speed rad/s, inertia kg*m^2); a cell that is not a
 number, a value not above zero, a peak torque below the rated one or a column
 without its unit is refused naming the line and the column.
+
+A screw price table (:func:`parse_prices`) is two columns, ``designation,
+price [EUR]``: a selection adds a screw's price to its motor's.
 """
 
 from __future__ import annotations
@@ -27,7 +30,14 @@ from pathlib import Path
 from ..errors import BallScrewInputError
 from .units import to_si
 
-__all__ = ["MOTOR_COLUMNS", "MotorRow", "parse_motors", "read_motors"]
+__all__ = [
+    "MOTOR_COLUMNS",
+    "MotorRow",
+    "parse_motors",
+    "parse_prices",
+    "read_motors",
+    "read_prices",
+]
 
 MOTOR_COLUMNS: dict[str, str] = {
     "rated_torque": "N*m",
@@ -158,3 +168,68 @@ def read_motors(path: str | Path) -> tuple[MotorRow, ...]:
     except OSError as exc:
         raise BallScrewInputError("--motors", str(path), f"a readable CSV file ({exc})") from None
     return parse_motors(text, source=p.name)
+
+
+def parse_prices(text: str, source: str = "price table") -> tuple[dict[str, float], str]:
+    r"""The screw prices of a CSV table ``designation, price [EUR]``: name -> price, currency.
+
+    ``designation`` is a screw's name as ``ballscrew select`` names it: a
+    catalogue nut with its maker (``HIWIN R32-20K4-FSC``) or an ISO size
+    (``ISO 25x20-3.969``); case and blanks are ignored. A price that is not a
+    positive number, a name given twice or a price column without its currency
+    is refused naming the line and the column.
+
+    Examples
+    --------
+    >>> parse_prices("designation, price [EUR]\nHIWIN R32-20K4-FSC, 310\n")
+    ({'HIWIN R32-20K4-FSC': 310.0}, 'EUR')
+    """
+    rows = [r for r in csv.reader(io.StringIO(text.lstrip("\ufeff"))) if any(c.strip() for c in r)]
+    rows = [r for r in rows if not r[0].lstrip().startswith("#")]
+    if len(rows) < 2:
+        raise BallScrewInputError(source, "(no screws)", "a header line and one screw a line")
+    header = rows[0]
+    cells = [_HEADER.match(c) for c in header]
+    keys = [m.group("name").strip().lower() if m else c.strip() for m, c in zip(cells, header,
+            strict=True)]  # fmt: skip
+    if "designation" not in keys or "price" not in keys:
+        raise BallScrewInputError(f"{source}: line 1 (header)", ",".join(header),
+                                  "the columns designation, price [EUR]")  # fmt: skip
+    name_col, price_col = keys.index("designation"), keys.index("price")
+    match = cells[price_col]
+    currency = (match.group("unit") or "").strip() if match else ""
+    if not currency:
+        raise BallScrewInputError(f"{source}: line 1, column '{header[price_col].strip()}'",
+                                  header[price_col].strip(),
+                                  "the currency in brackets, e.g. 'price [EUR]'")  # fmt: skip
+    out: dict[str, float] = {}
+    seen: set[str] = set()
+    for line, row in enumerate(rows[1:], start=2):
+        name = " ".join(row[name_col].split()) if name_col < len(row) else ""
+        if not name or name.upper() in seen:
+            raise BallScrewInputError(
+                f"{source}: line {line}, column 'designation'", name or "(empty)",
+                "a designation no other row has",
+            )  # fmt: skip
+        seen.add(name.upper())
+        cell = row[price_col].strip() if price_col < len(row) else ""
+        where = f"{source}: line {line}, column '{header[price_col].strip()}'"
+        try:
+            price = float(cell)
+        except ValueError:
+            raise BallScrewInputError(where, cell or "(empty)", "a number") from None
+        if not math.isfinite(price) or price <= 0.0:
+            raise BallScrewInputError(where, cell, "a finite number > 0")
+        out[name] = price
+    return out, currency
+
+
+def read_prices(path: str | Path) -> tuple[dict[str, float], str]:
+    """The screw prices of the CSV file at ``path`` (:func:`parse_prices`)."""
+    p = Path(path)
+    try:
+        text = p.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise BallScrewInputError("--screw-prices", str(path),
+                                  f"a readable CSV file ({exc})") from None  # fmt: skip
+    return parse_prices(text, source=p.name)

@@ -76,8 +76,7 @@ def _front_figure(result: SelectResult) -> MplFigure:
 def _unit(result: SelectResult, key: str) -> str:
     """The unit of a figure; the price's is the motor table's currency."""
     if key == "price":
-        motors = [e.candidate.motor for e in result.evaluated if e.candidate.motor is not None]
-        return next((m.currency for m in motors if m.currency), "-")
+        return str(result.inputs.get("currency") or "-")
     return FIGURES[key]
 
 

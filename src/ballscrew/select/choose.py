@@ -21,7 +21,7 @@ from __future__ import annotations
 import difflib
 import math
 import time
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -54,7 +54,7 @@ OBJECTIVES: dict[str, tuple[str, str, int]] = {
     "lost_motion": ("lost_motion_um", "largest lost motion at reversal [um]", 1),
     "thermal_error": ("thermal_error_um", "thermal lead error per 300 mm [um]", 1),
     "motor_margin": ("motor_margin", "motor margin, 1 - largest motor utilisation", -1),
-    "price": ("price", "price of the motor (from the --motors table's price column)", 1),
+    "price": ("price", "price of the motor and the screw (their tables' price columns)", 1),
 }
 """Each objective: its figure, label and sense (1 = less is better, -1 = more is better)."""
 
@@ -301,6 +301,8 @@ def run_select(
     sources: Sequence[str] = ("catalogue",),
     nuts: Sequence[str] = (),
     motors: Sequence[MotorRow] = (),
+    screw_prices: Mapping[str, float] | None = None,
+    currency: str = "",
 ) -> SelectResult:
     """Choose the screw for ``case``'s axis over ``profile`` (module docstring).
 
@@ -326,6 +328,10 @@ def run_select(
     motors : sequence of MotorRow
         A motor table's rows (:func:`ballscrew.io.motors.read_motors`): every
         screw is tried with every motor; its price column gives ``price``.
+    screw_prices, currency : mapping, str
+        A screw price table (:func:`ballscrew.io.motors.read_prices`): screw
+        name -> price, added to the motor's, and its currency, which must be
+        the motor table's.
 
     Raises
     ------
@@ -339,16 +345,23 @@ def run_select(
             lubricants.get(oil)
         except BallScrewInputError as exc:
             raise BallScrewInputError("--oil", oil, exc.allowed) from None
-    if "price" in chosen and not any(m.price is not None for m in motors):
+    if "price" in chosen and not any(m.price is not None for m in motors) and not screw_prices:
         raise BallScrewInputError(
             "--objective", "price",
             "an objective the inputs give: price needs a price column in the --motors table "
-            "(e.g. 'price [EUR]')" + ("" if motors else " and no --motors table was given"),
+            "(e.g. 'price [EUR]') or a --screw-prices table"
+            + ("" if motors else "; neither was given"),
+        )  # fmt: skip
+    motor_currency = next((m.currency for m in motors if m.price is not None), "")
+    if screw_prices and motor_currency and currency != motor_currency:
+        raise BallScrewInputError(
+            "--screw-prices", currency or "(none)",
+            f"prices in the motor table's currency, {motor_currency}",
         )  # fmt: skip
     found = candidates(case.text, diameter=diameter, lead=lead, makers=makers,
                        preloads=preloads, oils=list(oils) or [None],
                        default_oil=case.lubricant.name, sources=sources, nuts=nuts,
-                       motors=motors)  # fmt: skip
+                       motors=motors, screw_prices=screw_prices)  # fmt: skip
     evaluated = tuple(
         evaluate(c, profile, model=model, cycles=cycles, temperature=temperature,
                  run_time=run_time, move=move)[0]
@@ -386,6 +399,7 @@ def run_select(
               "lead_m": list(lead) if lead else None, "makers": list(makers),
               "preloads": list(preloads), "oils": list(oils), "sources": list(sources),
               "nuts": list(nuts), "motors": [m.name for m in motors],
+              "currency": motor_currency or currency or None,
               "rating_estimates": scatter_text() if any(c.estimated for c in found) else None,
               "case_text": case.text}  # fmt: skip
     return SelectResult(case.title, chosen, evaluated, front, best, reason, model, inputs)

@@ -43,7 +43,7 @@ from __future__ import annotations
 import functools
 import math
 import re
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 from typing import Any
 
@@ -126,7 +126,8 @@ class Candidate:
 
     ``text`` is the whole case file of the candidate (TOML). ``estimated``:
     the screw's C_a and C_0a are estimates (an ISO size no catalogue row gives).
-    ``price``: the motor's price where the motor table gives one, else None.
+    ``price``: the motor's price (motor table) plus the screw's (``screw_price``,
+    a screw price table), None when neither is given.
     """
 
     row: CatalogScrew
@@ -137,6 +138,7 @@ class Candidate:
     text: str
     estimated: bool = False
     motor: MotorRow | None = None
+    screw_price: float | None = None
 
     @property
     def name(self) -> str:
@@ -146,8 +148,10 @@ class Candidate:
 
     @property
     def price(self) -> float | None:
-        """The motor's price, None without a price column."""
-        return self.motor.price if self.motor is not None else None
+        """The motor's and the screw's price, None when neither is given."""
+        parts = [p for p in (self.motor.price if self.motor else None, self.screw_price)
+                 if p is not None]  # fmt: skip
+        return sum(parts) if parts else None
 
 
 def _sections(text: str) -> list[tuple[str, list[str]]]:
@@ -395,12 +399,15 @@ def candidates(
     sources: Sequence[str] = ("catalogue",),
     nuts: Sequence[str] = (),
     motors: Sequence[MotorRow] = (),
+    screw_prices: Mapping[str, float] | None = None,
 ) -> list[Candidate]:
     """Every candidate of the filters on the case file ``text`` (module docstring).
 
     ``sources``: :data:`SOURCES` to draw the screws from; ``nuts``: the
     :data:`NUT_KINDS` to keep (all when empty); ``motors``: a motor table's
-    rows, each screw tried with each (the case's motor when empty).
+    rows, each screw tried with each (the case's motor when empty);
+    ``screw_prices``: a screw price table (screw name -> price), whose every
+    screw tried must be in it.
 
     Raises :class:`~ballscrew.errors.BallScrewInputError` for an unknown
     source, nut kind, preload class or maker, and when no screw passes the
@@ -426,6 +433,15 @@ def candidates(
             _shown(diameter, lead, makers),
             "filters some screw passes; closest: " + _closest(diameter, lead, sources),
         )
+    prices = {" ".join(k.split()).upper(): v for k, v in (screw_prices or {}).items()}
+    if screw_prices is not None:
+        missing = sorted({r.name for r, _ in found if r.name.upper() not in prices})
+        if missing:
+            raise BallScrewInputError(
+                "--screw-prices", f"{len(missing)} screws without a price",
+                "a price for every screw the filters leave; missing: " + ", ".join(missing[:5])
+                + (", ..." if len(missing) > 5 else ""),
+            )  # fmt: skip
     out = []
     for row, estimated in found:
         for p in preloads:
@@ -438,7 +454,8 @@ def candidates(
                         new = case_text(text, row, nut, PRELOAD_CLASSES[p], oil,
                                         estimated=estimated, motor=motor)  # fmt: skip
                         out.append(Candidate(row, nut, p, PRELOAD_CLASSES[p], oil or default_oil,
-                                             new, estimated, motor))  # fmt: skip
+                                             new, estimated, motor,
+                                             prices.get(row.name.upper())))  # fmt: skip
     if not out:
         raise BallScrewInputError(
             "--preload/--nut", ", ".join([*preloads, *nuts]),
