@@ -73,3 +73,16 @@ def test_bad_filters_and_objectives_are_named(client: TestClient) -> None:
     no_move = client.post("/api/select", json={k: v for k, v in BODY.items() if k != "move"},
                           headers=JSON)  # fmt: skip
     assert no_move.status_code == 422 and "--move" in no_move.json()["error"]
+
+
+def test_the_page_tries_iso_sizes_labelled_estimated(client: TestClient) -> None:
+    body = BODY | {"diameter": "25 mm", "lead": "20 mm", "makers": [], "sources": ["iso"],
+                   "preloads": ["light", "medium"]}  # fmt: skip
+    answer = client.post("/api/select", json=body, headers=JSON)
+    assert answer.status_code == 200, answer.text
+    data = answer.json()
+    assert data["candidates"] == 6  # ISO 25 x 20: three nut kinds at two preload classes
+    assert data["recommended"]["name"].startswith("ISO 25x20-3.969")
+    assert data["recommended"]["estimated"] is True
+    assert data["rating_estimates"].startswith("estimated/printed over 25 catalogue rows")
+    assert "--source iso" in data["command"]
