@@ -4,8 +4,9 @@ Choosing the screw: the Pareto front of energy against stiffness
 
 ``ballscrew select`` on the example vertical axis (``examples/vertical_32x5.toml``: a
 120 kg Z slide, fixed-supported over 900 mm, P5) over a 500 mm move at 12 m/min with
-1.5 kN of process force: HIWIN's 32 and 40 mm nuts of 10 and 20 mm lead, each at the
-light, medium and heavy preload classes (3, 5 and 8 % of C_a). Every candidate runs the
+1.5 kN of process force: HIWIN's 32 and 40 mm nuts of 10 and 20 mm lead at the light
+and medium preload classes (3 and 5 % of C_a), the double nuts also at the heavy one (8 %:
+HIWIN keeps single nuts within 5 %). Every candidate runs the
 whole axis check; the rejected ones are crossed, the front over friction energy per
 cycle and least axis stiffness is ringed, the recommendation starred. The same as
 ``ballscrew select --case examples/vertical_32x5.toml --move ... --diameter "32..40 mm"

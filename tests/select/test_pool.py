@@ -233,3 +233,15 @@ def test_the_command_takes_a_screw_price_table(capsys: pytest.CaptureFixture[str
     table = text.split("recommended:")[0]
     assert "HIWIN R32-20K4-FSC" in table and "380" in table and "R40-20K4" not in table
     assert "recommended: HIWIN R40-20K4-FSC" in text
+
+
+def test_the_heavy_class_is_tried_on_double_nuts_only() -> None:
+    # HIWIN keeps a single nut's preload within 5 % of C_a, a double nut's within 10 %:
+    # heavy (8 %) is a double nut's class only
+    text = CASE.read_text(encoding="utf-8")
+    iso = candidates(text, diameter=(0.025, 0.025), lead=(0.02, 0.02), preloads=["heavy"],
+                     sources=["iso"])  # fmt: skip
+    assert [c.nut for c in iso] == ["double"]
+    with pytest.raises(BallScrewInputError, match="'heavy' a double nut") as info:
+        candidates(text, diameter=(0.032, 0.032), lead=(0.005, 0.005), preloads=["heavy"])
+    assert "HIWIN R32-05K4-FSC" in info.value.allowed

@@ -36,7 +36,7 @@ __all__ = ["select_command"]
 @click.option("--maker", "makers", multiple=True, help="Keep this maker's nuts (repeat).")
 @click.option("--preload", "preloads", multiple=True,
               help="Preload classes to try (repeat): none, light (3 % of C_a), medium (5 %), "
-              "heavy (8 %); default light, medium and heavy.")  # fmt: skip
+              "heavy (8 %, double nuts only); default light, medium and heavy.")  # fmt: skip
 @click.option("--source", "sources", multiple=True, type=click.Choice(["catalogue", "iso"]),
               help="Where the screws come from (repeat): the bundled catalogue rows, the "
               "ISO 3408-2 sizes with estimated C_a and C_0a (default: catalogue).")  # fmt: skip

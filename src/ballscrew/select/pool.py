@@ -16,10 +16,13 @@ and give the same numbers.
 
 Preload classes are shares of the dynamic load rating C_a. The makers cap the
 preload at 10 % of C_a (THK General Catalog, ball screw technical description,
-"maximum preload"); within that the package takes three classes: light 3 %
-(the 2 to 5 % a light 4-point preload is sold at), medium 5 % and heavy 8 %.
-They are this package's round choices inside the makers' range, not one
-maker's table.
+"maximum preload"; HIWIN, Ballscrews & Accessories BS-08-2-EN-1704-K, 3.7.7),
+and HIWIN keeps a single nut's within 5 % and a double nut's within 10 %
+(same catalogue, 3.6.2 "Effects of preload" and 3.7.2, pp. 22 and 24). Within
+that the package takes three classes: light 3 %, medium 5 % and heavy 8 %, so
+that the heavy class is tried on double nuts only (:data:`SINGLE_NUT_LIMIT`).
+The shares are this package's round choices inside the makers' ranges, not
+one maker's table.
 
 Nut kinds (:data:`NUT_KINDS`): ``double`` (two preloaded half-nuts),
 ``single-4point`` (one nut, oversize balls, 4-point contact), ``spacer-balls``
@@ -103,6 +106,10 @@ ISO_SIZES: tuple[tuple[float, float, float, int, str], ...] = (
 )
 """The ISO 3408-2 sizes tried (mm; module docstring), each with its ball, its circuits (one
 loaded turn each) and where the ball and circuits come from."""
+
+SINGLE_NUT_LIMIT = 0.05
+"""The largest preload share tried on a single nut (4-point, spacer balls): HIWIN keeps a
+single nut's preload within 5 % of C_a, a double nut's within 10 % (BS-08-2-EN-1704-K, 3.6.2)."""
 
 ESTIMATE_ANGLE = math.radians(45.0)
 """Contact angle of the estimates (the package's default; catalogues take 45 deg)."""
@@ -251,9 +258,12 @@ def _kinds(row: CatalogScrew, preload: str, estimated: bool) -> list[str]:
     """The nut kinds a row allows at a preload class (module docstring)."""
     if preload == "none":
         return ["single"] if estimated or row.nut != "double" else []
+    single_ok = PRELOAD_CLASSES[preload] <= SINGLE_NUT_LIMIT
     if estimated:
-        return ["double", "single-4point", "spacer-balls"]
-    return ["double"] if row.nut == "double" else ["single-4point"]
+        return ["double", *(["single-4point", "spacer-balls"] if single_ok else [])]
+    if row.nut == "double":
+        return ["double"]
+    return ["single-4point"] if single_ok else []
 
 
 def length_range(field: str, text: str | None) -> tuple[float, float] | None:
@@ -459,8 +469,9 @@ def candidates(
     if not out:
         raise BallScrewInputError(
             "--preload/--nut", ", ".join([*preloads, *nuts]),
-            "a class and nut kind the screws allow ('none' needs a single nut; catalogue rows "
-            "come as sold, spacer balls only for ISO sizes): "
+            "a class and nut kind the screws allow ('none' needs a single nut, 'heavy' a double "
+            "nut: HIWIN keeps single nuts within 5 % of C_a; catalogue rows come as sold, "
+            "spacer balls only for ISO sizes): "
             + ", ".join(f"{r.name} ({r.nut})" for r, _ in found[:3]),
         )  # fmt: skip
     return out
