@@ -24,7 +24,7 @@ from ballscrew.io.motors import parse_motors, parse_prices, read_motors
 from ballscrew.select import run_select
 from ballscrew.select.pool import ISO_SIZES, candidates, iso_rows, rating_scatter
 from cli_runner import run
-from shared import ROOT
+from shared import ROOT, reference_case_toml
 
 CASE = ROOT / "examples" / "vertical_32x5.toml"
 MOTORS = ROOT / "examples" / "motors.csv"
@@ -245,3 +245,24 @@ def test_the_heavy_class_is_tried_on_double_nuts_only() -> None:
     with pytest.raises(BallScrewInputError, match="'heavy' a double nut") as info:
         candidates(text, diameter=(0.032, 0.032), lead=(0.005, 0.005), preloads=["heavy"])
     assert "HIWIN R32-05K4-FSC" in info.value.allowed
+
+
+def test_the_report_marks_the_iso_sizes_estimated(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    pytest.importorskip("pymoo")
+    case = tmp_path / "case.toml"
+    case.write_text(reference_case_toml("report", speed="100 rpm", axial_load="0 N",
+                                        more='[axis]\nmoving_mass = "200 kg"\n'),
+                    encoding="utf-8")  # fmt: skip
+    out = tmp_path / "report"
+    code, text, err = run(["select", "--case", str(case), "--move", "stroke=300 mm, "
+                           "feed=15 m/min, acceleration=2 m/s^2", "--diameter", "25 mm",
+                           "--lead", "20 mm", "--source", "iso", "--preload", "light",
+                           "--out", str(out)], capsys)  # fmt: skip
+    assert code == 0, err
+    assert "(estimated)" in text and "estimated/printed over 25 catalogue rows" in text
+    rows = (out / "data" / "front.csv").read_text(encoding="utf-8")
+    assert rows.count(",estimated,") == 3  # the ISO 25 x 20 size as three nut kinds
+    assert (out / "figures" / "front.png").is_file()
+    assert "estimated from their geometry" in (out / "report.md").read_text(encoding="utf-8")
