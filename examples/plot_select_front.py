@@ -39,6 +39,8 @@ for cls, marker in markers.items():
         pts = [e for e in result.evaluated
                if e.candidate.preload_class == cls and e.feasible == feasible
                and e.figures["energy_J"] == e.figures["energy_J"]]  # fmt: skip
+        if not pts:
+            continue
         ax.scatter([e.figures["energy_J"] for e in pts],
                    [e.figures["stiffness_N_per_um"] for e in pts], marker=marker,
                    facecolors=colour if feasible else "none", edgecolors=colour, alpha=0.8,
