@@ -43,10 +43,10 @@ __all__ = ["select_command"]
 @click.option("--nut", "nuts", multiple=True,
               help="Nut kinds to keep (repeat): double, single-4point, spacer-balls, single "
               "(default: every kind a screw allows).")  # fmt: skip
-@click.option("--motors", "motors_file", default=None,
+@click.option("--motors", "motors_file", default=None, metavar="FILE",
               help="A motor table (CSV, units in the header): every screw is tried with every "
               "motor; a price column gives the price objective (examples/motors.csv).")  # fmt: skip
-@click.option("--screw-prices", "prices_file", default=None,
+@click.option("--screw-prices", "prices_file", default=None, metavar="FILE",
               help="A screw price table (CSV: designation, price [EUR]), added to the motor's "
               "price for the price objective; every screw tried needs a row.")  # fmt: skip
 @click.option("--oil", "oils", multiple=True,
@@ -82,7 +82,9 @@ def select_command(
     json_file: str | None,
     out_dir: str | None,
 ) -> None:
-    """Choose the screw: every catalogue nut x preload class x oil on YOUR axis and duty.
+    """Choose the screw: catalogue nuts and ISO sizes x nut kind x preload x oil x motor.
+
+    Every candidate is YOUR axis and duty with the screw (and motor) replaced.
 
     Each candidate runs through the whole axis check (as `ballscrew check`);
     the feasible ones (no NOT OK row) form a Pareto front over the
