@@ -258,3 +258,27 @@ def test_the_circular_test_on_the_page_draws_its_polar_plot(page: sync_api.Page)
     assert page.locator("#chart_contour polygon").count() == 2
     summary = page.text_content("#contour_summary") or ""
     assert summary.startswith("G ") and "with compensation" in summary
+
+
+def test_choose_a_screw_lists_the_recommendation_first_with_why(page: sync_api.Page) -> None:
+    # The page's defaults (a back-and-forth move, the 40 mm HIWIN nuts of 10 to 20 mm lead at
+    # a light preload): the button asks /api/select and lists the recommendation first, the
+    # rest of the front and the closest rejected nuts with what fails them.
+    pytest.importorskip("pymoo")
+    settle(page)
+    page.click("#select_run")
+    page.locator("#select_table tr[data-candidate]").first.wait_for(timeout=60_000)
+    rows = page.locator("#select_table tr[data-candidate]")
+    first = rows.first.locator("td")
+    assert first.nth(1).text_content() == "recommended"
+    assert (first.nth(0).text_content() or "").startswith("HIWIN R40-")
+    reason = page.text_content("#select_reason") or ""
+    assert reason.startswith("Recommended: HIWIN R40-") and "Why: " in reason
+    summary = page.text_content("#select_summary") or ""
+    assert "candidates" in summary and "on the front over energy, life" in summary
+    page.locator("#select_section").screenshot(path=str(SHOTS / "web-select.png"))
+    # A filter no nut passes: the server's message, naming the closest nuts.
+    page.fill("#select_diameter", "90..100 mm")
+    page.click("#select_run")
+    page.locator("#select_summary", has_text="closest").wait_for(timeout=60_000)
+    assert page.locator("#select_table tr").count() == 0

@@ -19,23 +19,10 @@ from .common import (
 )
 
 if TYPE_CHECKING:
+    from ..io.motors import MotorRow
     from ..select import SelectResult
 
 __all__ = ["select_command"]
-
-
-def _bounds(option: str, text: str | None) -> tuple[float, float] | None:
-    """``"25..40 mm"`` (or one value) as (low, high) [m]; None when not given."""
-    if text is None:
-        return None
-    from ..errors import BallScrewInputError
-    from ..io.units import parse_range
-
-    values = parse_range(option, text, "m", default_points=2)
-    low, high = min(values), max(values)
-    if not 0.0 < low <= high:
-        raise BallScrewInputError(option, text, "lengths > 0, e.g. '25..40 mm'")
-    return low, high
 
 
 @click.command("select")
@@ -43,13 +30,25 @@ def _bounds(option: str, text: str | None) -> tuple[float, float] | None:
 @motion_options
 @click.option("--objective", "objectives", multiple=True,
               help="An objective of the front (repeat): energy, life, stiffness, lost_motion, "
-              "thermal_error, motor_margin (default: energy and life).")  # fmt: skip
+              "thermal_error, motor_margin, price (default: energy and life).")  # fmt: skip
 @click.option("--diameter", default=None, help="Nominal diameters to try, e.g. '25..40 mm'.")
 @click.option("--lead", default=None, help="Leads to try, e.g. '5..20 mm'.")
 @click.option("--maker", "makers", multiple=True, help="Keep this maker's nuts (repeat).")
 @click.option("--preload", "preloads", multiple=True,
               help="Preload classes to try (repeat): none, light (3 % of C_a), medium (5 %), "
-              "heavy (8 %); default light, medium and heavy.")  # fmt: skip
+              "heavy (8 %, double nuts only); default light, medium and heavy.")  # fmt: skip
+@click.option("--source", "sources", multiple=True, type=click.Choice(["catalogue", "iso"]),
+              help="Where the screws come from (repeat): the bundled catalogue rows, the "
+              "ISO 3408-2 sizes with estimated C_a and C_0a (default: catalogue).")  # fmt: skip
+@click.option("--nut", "nuts", multiple=True,
+              help="Nut kinds to keep (repeat): double, single-4point, spacer-balls, single "
+              "(default: every kind a screw allows).")  # fmt: skip
+@click.option("--motors", "motors_file", default=None, metavar="FILE",
+              help="A motor table (CSV, units in the header): every screw is tried with every "
+              "motor; a price column gives the price objective (examples/motors.csv).")  # fmt: skip
+@click.option("--screw-prices", "prices_file", default=None, metavar="FILE",
+              help="A screw price table (CSV: designation, price [EUR]), added to the motor's "
+              "price for the price objective; every screw tried needs a row.")  # fmt: skip
 @click.option("--oil", "oils", multiple=True,
               help="Lubricants to try by name (repeat; default the case's).")  # fmt: skip
 @click.option("--model", "model_name", default="complete", show_default=True,
@@ -72,6 +71,10 @@ def select_command(
     lead: str | None,
     makers: tuple[str, ...],
     preloads: tuple[str, ...],
+    sources: tuple[str, ...],
+    nuts: tuple[str, ...],
+    motors_file: str | None,
+    prices_file: str | None,
     oils: tuple[str, ...],
     model_name: str,
     temperature: str | None,
@@ -79,7 +82,9 @@ def select_command(
     json_file: str | None,
     out_dir: str | None,
 ) -> None:
-    """Choose the screw: every catalogue nut x preload class x oil on YOUR axis and duty.
+    """Choose the screw: catalogue nuts and ISO sizes x nut kind x preload x oil x motor.
+
+    Every candidate is YOUR axis and duty with the screw (and motor) replaced.
 
     Each candidate runs through the whole axis check (as `ballscrew check`);
     the feasible ones (no NOT OK row) form a Pareto front over the
@@ -98,28 +103,44 @@ def select_command(
     from ..io.extras import require
     from ..io.units import to_si
     from ..select import run_select
-    from ..select.pool import DEFAULT_PRELOADS
+    from ..select.pool import DEFAULT_PRELOADS, length_range
 
     require("select", "ballscrew select", modules=("pymoo",))
     start = time.process_time()
     case = load_case(require_case(case_file, "ballscrew select", "the axis, motor and limits "
                                   "the candidates are checked against"))  # fmt: skip
     profile, m = motion(move_text, profile_file, cycles)
+    motors: tuple[MotorRow, ...] = ()
+    if motors_file is not None:
+        from ..io.motors import read_motors
+
+        motors = read_motors(motors_file)
+    prices: dict[str, float] | None = None
+    currency = ""
+    if prices_file is not None:
+        from ..io.motors import read_prices
+
+        prices, currency = read_prices(prices_file)
     result = run_select(
         case, profile, objectives=objectives or ("energy", "life"),
-        diameter=_bounds("--diameter", diameter), lead=_bounds("--lead", lead), makers=makers,
+        diameter=length_range("--diameter", diameter), lead=length_range("--lead", lead),
+        makers=makers,
         preloads=preloads or DEFAULT_PRELOADS, oils=oils, model=model_name, cycles=cycles,
         temperature=to_si("--temperature", temperature, "degC") if temperature else None,
         run_time=to_si("--run-time", run_time, "s"), move=m,
         motion_field="--move" if move_text is not None else "--profile",
+        sources=sources or ("catalogue",), nuts=nuts, motors=motors, screw_prices=prices,
+        currency=currency,
     )  # fmt: skip
     command = ["ballscrew", "select", "--case", case_file or ""]
     for flag, value in (("--move", move_text), ("--profile", profile_file),
-                        ("--diameter", diameter), ("--lead", lead)):  # fmt: skip
+                        ("--diameter", diameter), ("--lead", lead),
+                        ("--motors", motors_file), ("--screw-prices", prices_file)):  # fmt: skip
         if value is not None:
             command += [flag, value]
     for flag, values in (("--objective", objectives), ("--maker", makers),
-                         ("--preload", preloads), ("--oil", oils)):  # fmt: skip
+                         ("--preload", preloads), ("--oil", oils), ("--source", sources),
+                         ("--nut", nuts)):  # fmt: skip
         for v in values:
             command += [flag, v]
     result.inputs.update({"command": command, "case_file": case_file})
@@ -128,6 +149,9 @@ def select_command(
     best = result.evaluated[result.recommended]
     out.print(f"recommended: {best.name}")
     out.print(f"why: {result.reason}")
+    if result.inputs.get("rating_estimates"):
+        out.print("ISO sizes (marked 'estimated'): C_a and C_0a estimated from the geometry "
+                  f"(ballscrew.design.ratings); {result.inputs['rating_estimates']}")  # fmt: skip
     seconds = time.process_time() - start
     out.print(f"{len(result.evaluated)} candidates ({len(result.feasible)} feasible, "
               f"{len(result.front)} on the front) in {seconds:.1f} s of CPU "
@@ -159,12 +183,17 @@ def _front_table(result: SelectResult) -> Table:
                          "p_not_ok") if k not in keys]  # fmt: skip
     labels = {key: label for key, label, _ in OBJECTIVES.values()}
     labels |= {"max_utilisation": "largest utilisation [-]", "p_not_ok": "P(NOT OK) [-]"}
+    if any(result.evaluated[i].candidate.motor is not None for i in result.front):
+        extra += [k for k in ("motor_margin",) if k not in keys]
+    if any(result.evaluated[i].candidate.price is not None for i in result.front):
+        extra += [k for k in ("price",) if k not in keys]
     table.add_column("candidate")
     for k in keys + extra:
         table.add_column(labels.get(k, k), justify="right")
     table.add_column("largest utilisation")
     for i in result.front:
         e = result.evaluated[i]
-        mark = " *" if i == result.recommended else ""
+        mark = (" (estimated)" if e.candidate.estimated else "") + (
+            " *" if i == result.recommended else "")  # fmt: skip
         table.add_row(e.name + mark, *(_number(e.figures[k]) for k in keys + extra), e.binding)
     return table

@@ -3,8 +3,9 @@
 :func:`write_select_report` writes into one folder, every file atomically:
 
 * ``figures/front.png``/``.svg``: the 2-D projections of the objectives, each
-  pair in a panel: feasible candidates, rejected ones (crosses), the front
-  (ringed) and the recommended one (a star);
+  pair in a panel: feasible candidates (ISO sizes with estimated ratings as
+  diamonds), rejected ones (crosses), the front (ringed) and the recommended
+  one (a star);
 * ``data/front.csv``: every candidate's figures (units in the headers), its
   verdict, binding constraint and whether it is on the front;
 * ``data/select.json``: the result with its inputs;
@@ -62,6 +63,10 @@ def _front_figure(result: SelectResult) -> MplFigure:
         bad = [i for i in everyone if not result.evaluated[i].feasible]
         ax.scatter(*xy(bad), marker="x", color="#b00020", alpha=0.6, label="rejected")
         ax.scatter(*xy(ok), marker="o", color="#3a7d44", alpha=0.7, label="feasible")
+        estimated = [i for i in ok if result.evaluated[i].candidate.estimated]
+        if estimated:
+            ax.scatter(*xy(estimated), marker="D", s=40, color="#1f77b4", alpha=0.8,
+                       label="feasible, ISO size (estimated ratings)")  # fmt: skip
         ax.scatter(*xy(sorted(front)), marker="o", s=90, facecolors="none",
                    edgecolors="black", label="Pareto front")  # fmt: skip
         ax.scatter(*xy([result.recommended]), marker="*", s=220, color="#c58b00",
@@ -73,14 +78,24 @@ def _front_figure(result: SelectResult) -> MplFigure:
     return fig
 
 
+def _unit(result: SelectResult, key: str) -> str:
+    """The unit of a figure; the price's is the motor table's currency."""
+    if key == "price":
+        return str(result.inputs.get("currency") or "-")
+    return FIGURES[key]
+
+
 def _table(result: SelectResult) -> bytes:
     keys = list(FIGURES)
     header = ["candidate", "designation", "nut", "preload class", "preload share [-]", "oil",
-              "feasible", "on front", "binding constraint",
-              *(f"{k} [{FIGURES[k]}]" for k in keys)]  # fmt: skip
+              "ratings", "motor", "feasible", "on front", "binding constraint",
+              *(f"{k} [{_unit(result, k)}]" for k in keys)]  # fmt: skip
     front = set(result.front)
     rows = [[e.name, e.candidate.row.name, e.candidate.nut, e.candidate.preload_class,
-             e.candidate.preload_share, e.candidate.oil, e.feasible, i in front, e.binding,
+             e.candidate.preload_share, e.candidate.oil,
+             "estimated" if e.candidate.estimated else "catalogue",
+             e.candidate.motor.name if e.candidate.motor is not None else "", e.feasible,
+             i in front, e.binding,
              *(None if not np.isfinite(e.figures[k]) else e.figures[k] for k in keys)]
             for i, e in enumerate(result.evaluated)]  # fmt: skip
     return csv_bytes(header, rows)
@@ -105,6 +120,10 @@ def _blocks(result: SelectResult, caption: str) -> list[Block]:
         Block("h2", "The Pareto front"),
         Block("table", (["candidate", *keys, "largest utilisation", "binding row"], rows)),
         Block("img", ("front", caption)),
+        *([Block("p", "ISO 3408-2 sizes (the names starting 'ISO') carry load ratings "
+                  "estimated from their geometry (ballscrew.design.ratings); "
+                  + str(result.inputs["rating_estimates"]) + ".")]
+          if result.inputs.get("rating_estimates") else []),
         Block("h2", "Rejected candidates and what fails them"),
         Block("table", (["candidate", "binding constraint"], rejected or [["none", "-"]])),
     ]  # fmt: skip
@@ -114,8 +133,9 @@ def write_select_report(out: str | Path, result: SelectResult) -> list[Path]:
     """Write the report files into ``out``; returns the paths written."""
     folder = Path(out)
     (folder / "data").mkdir(parents=True, exist_ok=True)
-    caption = ("Each pair of objectives: feasible candidates (dots), rejected ones (crosses), "
-               "the Pareto front (ringed) and the recommended candidate (star).")  # fmt: skip
+    caption = ("Each pair of objectives: feasible candidates (dots; ISO sizes, their ratings "
+               "estimated, as diamonds), rejected ones (crosses), the Pareto front (ringed) and "
+               "the recommended candidate (star).")  # fmt: skip
     written, images = write_figures(folder, {"front": _front_figure(result)})
     written += write_data(folder, [("front", _table(result))])
     for path, text in ((folder / "data" / "select.json", result_json(result)),

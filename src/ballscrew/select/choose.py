@@ -21,7 +21,7 @@ from __future__ import annotations
 import difflib
 import math
 import time
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -33,7 +33,8 @@ from ..axis.duty import run_energy
 from ..axis.motion import Profile
 from ..errors import BallScrewInputError, FloatArray
 from ..io.case import Case, parse_case
-from .pool import DEFAULT_PRELOADS, Candidate, candidates
+from ..io.motors import MotorRow
+from .pool import DEFAULT_PRELOADS, Candidate, candidates, scatter_text
 
 __all__ = [
     "FIGURES",
@@ -53,6 +54,7 @@ OBJECTIVES: dict[str, tuple[str, str, int]] = {
     "lost_motion": ("lost_motion_um", "largest lost motion at reversal [um]", 1),
     "thermal_error": ("thermal_error_um", "thermal lead error per 300 mm [um]", 1),
     "motor_margin": ("motor_margin", "motor margin, 1 - largest motor utilisation", -1),
+    "price": ("price", "price of the motor and the screw (their tables' price columns)", 1),
 }
 """Each objective: its figure, label and sense (1 = less is better, -1 = more is better)."""
 
@@ -67,6 +69,7 @@ FIGURES: dict[str, str] = {
     "motor_margin": "-",
     "max_utilisation": "-",
     "p_not_ok": "-",
+    "price": "currency of the table",
     "seconds": "s",
 }
 """The figures kept per candidate, with their units (``p_not_ok``: the worst row's)."""
@@ -102,6 +105,8 @@ class Evaluated:
             "preload_class": c.preload_class,
             "preload_share": c.preload_share,
             "oil": c.oil,
+            "estimated": c.estimated,
+            "motor": c.motor.name if c.motor is not None else None,
             "feasible": self.feasible,
             "binding": self.binding,
             **{k: (None if math.isnan(v) else v) for k, v in self.figures.items()},
@@ -158,6 +163,9 @@ class SelectResult:
         data["feasible"] = ("candidate", np.array([e.feasible for e in self.evaluated]))
         data["on_front"] = ("candidate", np.isin(np.arange(len(names)), self.front))
         data["binding"] = ("candidate", np.array([e.binding for e in self.evaluated]))
+        data["estimated"] = ("candidate", np.array([e.candidate.estimated for e in self.evaluated]))
+        data["motor"] = ("candidate", np.array([e.candidate.motor.name if e.candidate.motor
+                                                else "" for e in self.evaluated]))  # fmt: skip
         return xr.Dataset(
             data,
             coords={"candidate": names},
@@ -222,8 +230,10 @@ def evaluate(
         check = run_check(run, model)
     except BallScrewInputError as exc:
         nan["seconds"] = time.process_time() - start
+        nan["price"] = math.nan if candidate.price is None else candidate.price
         return Evaluated(candidate, nan, False, f"{exc.field}: {exc.allowed}"), None
     figures = _figures(check, run, model, time.process_time() - start)
+    figures["price"] = math.nan if candidate.price is None else candidate.price
     feasible = check.verdict != "NOT OK"
     return Evaluated(candidate, figures, feasible, _binding(check)), check
 
@@ -289,6 +299,11 @@ def run_select(
     move: dict[str, float] | None = None,
     motion_field: str = "--move",
     pool: Sequence[Candidate] | None = None,
+    sources: Sequence[str] = ("catalogue",),
+    nuts: Sequence[str] = (),
+    motors: Sequence[MotorRow] = (),
+    screw_prices: Mapping[str, float] | None = None,
+    currency: str = "",
 ) -> SelectResult:
     """Choose the screw for ``case``'s axis over ``profile`` (module docstring).
 
@@ -311,6 +326,16 @@ def run_select(
     pool : sequence of Candidate, optional
         The candidates to evaluate, built by the caller (a size series, a design
         space); the filters ``diameter`` to ``oils`` then do not apply.
+    sources, nuts : sequence of str
+        Where the screws come from (:data:`~.pool.SOURCES`: the catalogue, the
+        ISO 3408-2 sizes with estimated ratings) and the nut kinds to keep.
+    motors : sequence of MotorRow
+        A motor table's rows (:func:`ballscrew.io.motors.read_motors`): every
+        screw is tried with every motor; its price column gives ``price``.
+    screw_prices, currency : mapping, str
+        A screw price table (:func:`ballscrew.io.motors.read_prices`): screw
+        name -> price, added to the motor's, and its currency, which must be
+        the motor table's.
 
     Raises
     ------
@@ -324,6 +349,19 @@ def run_select(
             lubricants.get(oil)
         except BallScrewInputError as exc:
             raise BallScrewInputError("--oil", oil, exc.allowed) from None
+    if "price" in chosen and not any(m.price is not None for m in motors) and not screw_prices:
+        raise BallScrewInputError(
+            "--objective", "price",
+            "an objective the inputs give: price needs a price column in the --motors table "
+            "(e.g. 'price [EUR]') or a --screw-prices table"
+            + ("" if motors else "; neither was given"),
+        )  # fmt: skip
+    motor_currency = next((m.currency for m in motors if m.price is not None), "")
+    if screw_prices and motor_currency and currency != motor_currency:
+        raise BallScrewInputError(
+            "--screw-prices", currency or "(none)",
+            f"prices in the motor table's currency, {motor_currency}",
+        )  # fmt: skip
     if pool is not None:
         found = list(pool)
         if not found:
@@ -331,7 +369,8 @@ def run_select(
     else:
         found = candidates(case.text, diameter=diameter, lead=lead, makers=makers,
                            preloads=preloads, oils=list(oils) or [None],
-                           default_oil=case.lubricant.name)  # fmt: skip
+                           default_oil=case.lubricant.name, sources=sources, nuts=nuts,
+                           motors=motors, screw_prices=screw_prices)  # fmt: skip
     evaluated = tuple(
         evaluate(c, profile, model=model, cycles=cycles, temperature=temperature,
                  run_time=run_time, move=move)[0]
@@ -346,6 +385,17 @@ def run_select(
             motion_field, f"the duty ({len(evaluated)} candidates, none passes)",
             f"a duty some candidate survives; closest: {closest}",
         )  # fmt: skip
+    for o in chosen:
+        key = OBJECTIVES[o][0]
+        if all(math.isnan(evaluated[i].figures[key]) for i in feasible):
+            need = " (the case has no [motor] and no --motors table was given)" if (
+                o == "motor_margin") else ""  # fmt: skip
+            raise BallScrewInputError(
+                "--objective", o,
+                f"an objective computed for some feasible candidate{need}; computed: "
+                + ", ".join(k for k, (f, _, _) in OBJECTIVES.items()
+                            if any(not math.isnan(evaluated[i].figures[f]) for i in feasible)),
+            )  # fmt: skip
     columns = [OBJECTIVES[o] for o in chosen]
     f = np.array([[sense * evaluated[i].figures[key] for key, _, sense in columns]
                   for i in feasible])  # fmt: skip
@@ -356,5 +406,9 @@ def run_select(
               "run_time_s": run_time, "move": dict(move or {}), "objectives": list(chosen),
               "diameter_m": list(diameter) if diameter else None,
               "lead_m": list(lead) if lead else None, "makers": list(makers),
-              "preloads": list(preloads), "oils": list(oils), "case_text": case.text}  # fmt: skip
+              "preloads": list(preloads), "oils": list(oils), "sources": list(sources),
+              "nuts": list(nuts), "motors": [m.name for m in motors],
+              "currency": motor_currency or currency or None,
+              "rating_estimates": scatter_text() if any(c.estimated for c in found) else None,
+              "case_text": case.text}  # fmt: skip
     return SelectResult(case.title, chosen, evaluated, front, best, reason, model, inputs)

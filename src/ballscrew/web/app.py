@@ -16,6 +16,9 @@ Built on Starlette (an ASGI toolkit) and served by uvicorn
     An uploaded case file read as TOML data (:func:`service.read_case_file`, in a worker).
 ``POST /api/program``
     A short part program on the example machine (:func:`program.run`).
+``POST /api/select``
+    The screws the page's filters leave, checked on the page's move, their
+    front and one recommended (:func:`select.choose`).
 
 Safe to leave running: request bodies are capped (413 before the body is
 read when ``Content-Length`` says so, and while it streams otherwise), the
@@ -52,7 +55,7 @@ from starlette.types import ASGIApp, Message, Receive, Scope, Send
 from .. import lubricants
 from .._version import __version__
 from ..io.designation import catalog_screws
-from . import program, service
+from . import program, select, service
 from .service import LIMITS, ApiError, Limits
 from .worker import WorkerPool
 
@@ -143,6 +146,8 @@ def _page_context() -> dict[str, Any]:
         "models": service.model_choices(),
         "limits": LIMITS,
         "program_blocks": program.MAX_BLOCKS,
+        "select_candidates": select.MAX_CANDIDATES,
+        "select_makers": sorted({s.maker for s in catalog_screws()}),
     }
 
 
@@ -289,6 +294,7 @@ def create_app(
             Route("/api/case", _case_file(limits, compute), methods=["POST"]),
             Route("/api/program", _json_route("program", limits, compute), methods=["POST"]),
             Route("/api/contour", _json_route("contour", limits, compute), methods=["POST"]),
+            Route("/api/select", _json_route("select", limits, compute), methods=["POST"]),
         ],
         middleware=[
             Middleware(_Guard, limit=limits.body_bytes),

@@ -30,7 +30,7 @@ import anyio
 
 from ..errors import BallScrewInputError, BallScrewSpeedWarning, BallScrewValidityWarning
 from ..helix import load_kernel
-from . import contour, program, service
+from . import contour, program, select, service
 from .inputs import ApiError, Limits
 
 __all__ = ["FUNCTIONS", "WorkerPool"]
@@ -58,6 +58,7 @@ FUNCTIONS: dict[str, Callable[[bytes, Limits], dict[str, Any]]] = {
     "evaluate": _from_json(service.evaluate),
     "program": _from_json(program.run),
     "contour": _from_json(contour.contour),
+    "select": _from_json(select.choose),
     "case": _case_file,
 }
 """What a worker may be asked to run, by name: each takes the request's body (bytes) and

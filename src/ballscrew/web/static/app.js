@@ -607,8 +607,69 @@
     svg.innerHTML = parts.join("");
   }
 
+
+  // ---------------------------------------------------------------- choose a screw, on demand
+  const SELECT_COLUMNS = [
+    ["energy [J]", "energy_J", 4], ["L10 [h]", "L10_h", 3], ["stiffness [N/µm]", "stiffness_N_per_um", 3],
+    ["lost motion [µm]", "lost_motion_um", 3], ["thermal error [µm]", "thermal_error_um", 3],
+  ];
+
+  function selectRow(table, r, label) {
+    const row = table.insertRow();
+    row.dataset.candidate = r.name;
+    const name = row.insertCell();
+    name.textContent = r.name + (r.estimated ? " (estimated ratings)" : "");
+    row.insertCell().textContent = label;
+    for (const [, key, digits] of SELECT_COLUMNS) {
+      row.insertCell().textContent = r[key] === null ? "-" : Number(r[key].toPrecision(digits)).toString();
+    }
+    row.insertCell().textContent = r.binding;
+  }
+
+  async function runSelect() {
+    const table = $("select_table");
+    const request = buildRequest();
+    if (!request.move) {
+      $("select_summary").textContent = "tick the move above: the candidates are checked on it";
+      return;
+    }
+    const checked = (name) => [...document.querySelectorAll(`input[name="${name}"]:checked`)].map((e) => e.value);
+    const body = {
+      case: request.case, move: request.move, diameter: $("select_diameter").value,
+      lead: $("select_lead").value, makers: $("select_maker").value ? [$("select_maker").value] : [],
+      preloads: checked("select_preload"), objectives: checked("select_objective"),
+      sources: $("select_iso").checked ? ["catalogue", "iso"] : ["catalogue"],
+    };
+    $("select_summary").textContent = "computing...";
+    $("select_reason").textContent = "";
+    table.replaceChildren();
+    const response = await fetch("/api/select", {
+      method: "POST", headers: { "content-type": "application/json" }, body: JSON.stringify(body),
+    });
+    const data = await response.json();
+    if (!response.ok) {
+      $("select_summary").textContent = data.error || `refused (${response.status})`;
+      return;
+    }
+    $("select_summary").textContent =
+      `${data.candidates} candidates, ${data.feasible} feasible, ${data.front_size} on the front ` +
+      `over ${data.objectives.join(", ")}`;
+    $("select_reason").textContent = `Recommended: ${data.recommended.name}. Why: ${data.reason}.` +
+      (data.rating_estimates ? ` ISO sizes: ${data.rating_estimates}.` : "");
+    const head = table.insertRow();
+    for (const h of ["candidate", "", ...SELECT_COLUMNS.map((c) => c[0]), "largest utilisation"]) {
+      const th = document.createElement("th");
+      th.textContent = h;
+      head.appendChild(th);
+    }
+    if (!data.recommended.on_front) selectRow(table, data.recommended, "recommended");
+    data.front.forEach((r) => selectRow(table, r, r.name === data.recommended.name ? "recommended" : "front"));
+    data.rejected.forEach((r) => selectRow(table, r, "rejected"));
+  }
+
   function start() {
     $("contour_run").addEventListener("click", runContour);
+    $("select_run").addEventListener("click", runSelect);
     $("inputs").addEventListener("input", (ev) => {
       if (ev.target.id !== "upload") schedule();
     });
