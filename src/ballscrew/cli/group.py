@@ -96,6 +96,7 @@ VALUE_NAMES: dict[str, str] = {
     "--lubricant": "NAME",
     "--machine": "FILE",
     "--maker": "MAKER",
+    "--nut": "KIND",
     "--max-points": "N",
     "--measured": "FILE",
     "--model": "MODEL",
