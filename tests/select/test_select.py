@@ -90,6 +90,8 @@ def test_feasible_candidates_have_no_row_above_its_limit(selection: SelectResult
         assert selection.evaluated[i].feasible
     best = selection.evaluated[selection.recommended]
     assert best.feasible and "least" in selection.reason
+    # the recommendation is a member of the front, the rule's branch said in the reason
+    assert selection.recommended in selection.front and "of the front" in selection.reason
 
 
 def test_the_front_is_not_dominated_and_dominates_the_rest(selection: SelectResult) -> None:

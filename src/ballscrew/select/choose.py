@@ -11,9 +11,11 @@ input error that stopped it, e.g. a load above its rating).
 
 The front is the non-dominated set of the feasible candidates over the
 objectives picked (:data:`OBJECTIVES`), sorted by pymoo's non-dominated
-sorting. The recommendation rule: the least energy per cycle among the
-feasible candidates whose every utilisation is at most 0.8; when there is
-none, the least largest utilisation.
+sorting. The recommendation is a member of the front: the least energy per
+cycle among its members whose every utilisation is at most 0.8; when there is
+none, the member with the least largest utilisation. (A candidate off the
+front is beaten on every objective picked by another, so it is never
+recommended.)
 """
 
 from __future__ import annotations
@@ -265,20 +267,21 @@ def _check_objectives(objectives: Sequence[str]) -> tuple[str, ...]:
     return tuple(dict.fromkeys(objectives))
 
 
-def _recommend(evaluated: Sequence[Evaluated], feasible: list[int]) -> tuple[int, str]:
-    below = [i for i in feasible if evaluated[i].figures["max_utilisation"] <= RECOMMEND_BELOW]
+def _recommend(evaluated: Sequence[Evaluated], front: Sequence[int]) -> tuple[int, str]:
+    """The recommended member of the front, by the module's rule, and why."""
+    below = [i for i in front if evaluated[i].figures["max_utilisation"] <= RECOMMEND_BELOW]
     if below:
         best = min(below, key=lambda i: evaluated[i].figures["energy_J"])
         f = evaluated[best].figures
         return best, (
             f"least friction energy per cycle ({f['energy_J']:.4g} J) among the {len(below)} "
-            f"feasible candidates whose every utilisation is at most {RECOMMEND_BELOW:.0%} "
+            f"candidates of the front whose every utilisation is at most {RECOMMEND_BELOW:.0%} "
             f"(its largest: {evaluated[best].binding})"
         )
-    best = min(feasible, key=lambda i: evaluated[i].figures["max_utilisation"])
+    best = min(front, key=lambda i: evaluated[i].figures["max_utilisation"])
     return best, (
-        f"no feasible candidate keeps every utilisation at most {RECOMMEND_BELOW:.0%}: the one "
-        f"with the least largest utilisation, {evaluated[best].binding}"
+        f"no candidate of the front keeps every utilisation at most {RECOMMEND_BELOW:.0%}: the "
+        f"one with the least largest utilisation, {evaluated[best].binding}"
     )
 
 
@@ -401,7 +404,7 @@ def run_select(
                   for i in feasible])  # fmt: skip
     f = np.where(np.isnan(f), np.inf, f)
     front = tuple(int(feasible[j]) for j in non_dominated(f))
-    best, reason = _recommend(evaluated, feasible)
+    best, reason = _recommend(evaluated, front)
     inputs = {"case": case.title, "model": model, "cycles": cycles, "temperature": temperature,
               "run_time_s": run_time, "move": dict(move or {}), "objectives": list(chosen),
               "diameter_m": list(diameter) if diameter else None,
