@@ -190,7 +190,7 @@ def _front_table(result: SelectResult) -> Table:
     table.add_column("candidate")
     for k in keys + extra:
         table.add_column(labels.get(k, k), justify="right")
-    table.add_column("largest utilisation")
+    table.add_column("binding constraint (its utilisation)")
     for i in result.front:
         e = result.evaluated[i]
         mark = (" (estimated)" if e.candidate.estimated else "") + (
