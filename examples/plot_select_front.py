@@ -23,7 +23,7 @@ from ballscrew.axis.motion import parse_move
 from ballscrew.io.case import load_case
 from ballscrew.select import run_select
 
-here = Path(__file__).resolve().parent if "__file__" in globals() else Path("examples")
+here = Path(".") if Path("vertical_32x5.toml").exists() else Path("examples")
 move = parse_move("stroke=500 mm, feed=12 m/min, acceleration=3 m/s^2, force=1.5 kN, "
                   "force_from=100 mm, force_to=400 mm, dwell=3 s")  # fmt: skip
 result = run_select(
