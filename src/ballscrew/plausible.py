@@ -18,26 +18,59 @@ Two kinds of bound:
 =====================  ======================  ==========================  ==================
 quantity               warned outside          refused outside             source
 =====================  ======================  ==========================  ==================
-``nu40``               1.98 to 3520 mm²/s      up to 20 000 mm²/s          ISO 3448 (VG 2 to
-                                                                           VG 3200)
-``density15``          750 to 1100 kg/m³       300 to 2500 kg/m³           base oils [1]_
-``pressure_viscosity`` 5 to 45 /GPa            1 to 100 /GPa               [2]_
-``ball_diameter``      the ball series         (:data:`ballscrew.geometry  ISO 3290-1, the
-                                               .PLAUSIBLE_SIZES`)           bundled catalogue
+``nu40``               1.98 to 3520 mm²/s      up to 20 000 mm²/s          ISO 3448 [1]_ (VG 2
+                                                                           to VG 3200)
+``density15``          750 to 1100 kg/m³       300 to 2500 kg/m³           base oils [2]_
+                                                                           (not checked)
+``pressure_viscosity`` 5 to 45 /GPa            1 to 100 /GPa               [3]_, Table 2.3
+``ball_diameter``      the ball series         (:data:`ballscrew.geometry  ISO 3290 sizes [4]_,
+                                               .PLAUSIBLE_SIZES`)           the bundled catalogue
 ``loaded_turns``       1 to 5 per circuit      0 to 10 (``BallScrew``)     the makers' nuts
 wiper drag             :func:`wiper_drag_      10 x that                   an estimate (below)
                        bound`
 =====================  ======================  ==========================  ==================
 
+Which of these sources were read, and what each gives (issue 35, item 4):
+
+* ``nu40``: ISO 3448:1992 clause 3.2 (read in its British reprint, BS 4231:1992) sets 20
+  grades, each named after its mid-point viscosity at 40 °C and spanning ±10 % of it; its
+  Table 1 (read in a reproduction listing VG 2 to VG 1500) gives VG 2 as 1.98 to 2.42 mm²/s
+  (mid-point 2.2). VG 3200's 2880 to 3520 mm²/s follows from the ±10 % rule; ASTM D2422's
+  same twenty grades end there too.
+* ``density15``: the figures of [2]_ were written from memory and could not be checked
+  against the book; the mineral-oil end agrees with the bundled data-sheet oil (Mobil
+  Delvac 1320, 887 kg/m³). A perfluoropolyether (about 1900 kg/m³) is warned, not refused.
+* ``pressure_viscosity``: [3]_ Table 2.3 lists mineral oils (spindle to cylinder oils) at
+  13 to 42 /GPa between 30 and 100 °C, an ethylene-oxide/propylene-oxide copolymer (a
+  polyglycol) at about 18 /GPa at 30 °C, and water at 0. The typical range is widened to 5
+  and 45 /GPa for synthetics not in the table and for cold oils; the possible range (1 to
+  100 /GPa) is a judgement: below it no elastohydrodynamic film forms (water), above it
+  lies no tabulated lubricant.
+* ``ball_diameter``: ISO 3290-1's own table of nominal diameters could not be read; the
+  series is checked against a ball maker's list of ISO 3290 sizes [4]_ (1.5 to 25.4 mm:
+  metric sizes and 1/64- and 1/32-inch fractions), holds all of them and every ball of the
+  bundled catalogue (3.175, 3.969, 6.35, 9.525 mm). The miniature sizes 0.8 to 1.2 mm are
+  from memory of miniature ball screws, not checked.
+* wiper drag: no maker's seal torque table could be read. Bosch Rexroth's catalogue
+  RE 83 301 (2002-09) has a section "Friction Torques of Seals" (p. 106) whose figures
+  were not reachable here, so the bound stays an estimate (:data:`WIPER_SOURCE`).
+* the viscosity index is not checked: :class:`ballscrew.lubricant.Lubricant` takes no
+  index but ``nu40`` and ``nu100`` (``nu100 < nu40`` is refused), and an index computed
+  from them needs ASTM D2270's table, which no installed library provides.
+
 References
 ----------
-.. [1] T. Mang, W. Dresel (eds.), *Lubricants and Lubrication*, 2nd ed.,
+.. [1] ISO 3448:1992, *Industrial liquid lubricants - ISO viscosity classification*,
+   clause 3.2 and Table 1 (identical: BS 4231:1992); ASTM D2422 (the same 20 grades).
+.. [2] T. Mang, W. Dresel (eds.), *Lubricants and Lubrication*, 2nd ed.,
    Wiley-VCH, 2007, ch. 4 (base oils): mineral oils 0.82 to 0.92 g/cm³, PAO
    about 0.83, esters 0.90 to 1.0, polyglycols up to about 1.1, perfluoropolyethers
-   about 1.9.
-.. [2] B. J. Hamrock, S. R. Schmid, B. O. Jacobson, *Fundamentals of Fluid Film
-   Lubrication*, 2nd ed., Marcel Dekker, 2004, ch. 4: pressure-viscosity
-   coefficients of lubricating oils of about 10 to 35 /GPa at ordinary temperatures.
+   about 1.9 (not checked against the book).
+.. [3] G. W. Stachowiak, A. W. Batchelor, *Engineering Tribology*, 2nd ed.,
+   Butterworth-Heinemann, 2001, ch. 2, p. 21, Table 2.3 (pressure-viscosity coefficients of
+   commonly used lubricants at 30, 60 and 100 °C).
+.. [4] Technoball (Italy), precision steel balls to ISO 3290: nominal diameters 1.5 to
+   25.4 mm (www.technoball.it, "sfere di precisione").
 """
 
 from __future__ import annotations
@@ -85,9 +118,10 @@ LUBRICANT_RANGES: dict[str, TypicalRange] = {
         (0.0, 20000e-6),
         1e6,
         "mm²/s",
-        "ISO 3448's viscosity grades run from VG 2 (1.98 to 2.42 mm²/s at 40 °C) to VG 3200 "
-        "(2880 to 3520 mm²/s); beyond 20000 mm²/s no lubricating oil flows into a ball "
-        "screw's nut ('68 St' is 6800 mm²/s: 68 cSt was likely meant)",
+        "ISO 3448:1992 (clause 3.2, Table 1): 20 viscosity grades, each ±10 % of its mid-point "
+        "at 40 °C, from VG 2 (1.98 to 2.42 mm²/s) to VG 3200 (2880 to 3520 mm²/s); beyond "
+        "20000 mm²/s no lubricating oil flows into a ball screw's nut ('68 St' is 6800 mm²/s: "
+        "68 cSt was likely meant)",
     ),
     "density15": TypicalRange(
         (750.0, 1100.0),
@@ -95,17 +129,19 @@ LUBRICANT_RANGES: dict[str, TypicalRange] = {
         1.0,
         "kg/m³",
         "base oils: mineral 820 to 920, PAO about 830, esters 900 to 1000, polyglycols up to "
-        "about 1100, perfluoropolyethers about 1900 kg/m³ (Mang & Dresel, Lubricants and "
-        "Lubrication, 2007, ch. 4); no oil lies outside 300 to 2500 kg/m³",
+        "about 1100 kg/m³ (Mang & Dresel, Lubricants and Lubrication, 2007, ch. 4, as "
+        "recalled, not checked); a perfluoropolyether (about 1900) lies above and is used as "
+        "given; no oil lies outside 300 to 2500 kg/m³ ('0.88' is g/cm³)",
     ),
     "pressure_viscosity": TypicalRange(
         (5e-9, 45e-9),
         (1e-9, 100e-9),
         1e9,
         "/GPa",
-        "lubricating oils have 10 to 35 /GPa (Hamrock, Schmid & Jacobson, Fundamentals of "
-        "Fluid Film Lubrication, 2004, ch. 4); water-based fluids about 5, traction fluids "
-        "up to about 40; outside 1 to 100 /GPa no liquid lubricant lies",
+        "mineral oils have 13 to 42 /GPa between 30 and 100 °C, a polyglycol about 18 "
+        "(Stachowiak & Batchelor, Engineering Tribology, 2001, Table 2.3); widened to 5 to 45 "
+        "for synthetics and cold oils; below 1 /GPa (water: 0) no elastohydrodynamic film "
+        "forms, above 100 lies no tabulated lubricant",
     ),
 }
 """The lubricant properties held to a range: field -> :class:`TypicalRange` (SI)."""
@@ -114,19 +150,24 @@ LUBRICANT_RANGES: dict[str, TypicalRange] = {
 BALL_SERIES_MM: tuple[float, ...] = (
     0.8, 1.0, 1.2, 1.5, 1.5875, 2.0, 2.381, 2.5, 2.778, 3.0, 3.175, 3.5, 3.969, 4.0, 4.5,
     4.762, 5.0, 5.556, 6.0, 6.35, 7.0, 7.144, 7.5, 7.938, 8.0, 8.731, 9.0, 9.525, 10.0,
-    11.112, 12.0, 12.7, 14.0, 14.288, 15.0, 15.875, 16.0, 17.462, 19.05, 20.0, 22.225, 25.4,
+    10.319, 11.112, 11.906, 12.0, 12.7, 13.494, 14.0, 14.288, 15.0, 15.081, 15.875, 16.0,
+    16.669, 17.462, 19.05, 19.844, 20.0, 20.638, 22.225, 23.812, 25.0, 25.4,
 )  # fmt: skip
-"""Ball diameters [mm] makers put in ball screws: the metric sizes and the inch fractions
-(1/16 in = 1.5875 mm, 3/32, 7/64, 1/8, 5/32, 3/16, 7/32, 1/4, 9/32, 5/16, 11/32, 3/8,
-7/16, 1/2, 9/16, 5/8, 11/16, 3/4, 7/8, 1 in) of the ball grades of ISO 3290-1; the bundled
-catalogue rows (``data/catalog_screws.csv``) use 3.175, 3.969, 6.35 and 9.525 mm."""
+"""Ball diameters [mm] makers put in ball screws.
+
+Every ISO 3290 size of a ball maker's list (Technoball: 1.5 to 4.5 mm in half
+millimetres, 5, 6, 10, 12, 15, 16, 20 and 25 mm; 1/16, 3/32 and 7/64 in, 1/32-inch steps
+from 1/8 to 11/16 in, then 3/4, 25/32, 13/16, 15/16 and 1 in), with 7.0, 7.5, 8.0, 9.0
+and 14.0 mm and 7/8 in kept from the first list (not checked), and the miniature 0.8 to
+1.2 mm balls (not checked). The bundled catalogue rows (``data/catalog_screws.csv``) use
+3.175, 3.969, 6.35 and 9.525 mm."""
 
 _BALL_MATCH = 0.005
 """A ball within 0.5 % of a series size is that size (3.97 mm for 5/32 in = 3.969 mm)."""
 
 BALL_SERIES_SOURCE = (
-    "the ball sizes of ISO 3290-1 that makers use in ball screws, 0.8 to 25.4 mm "
-    "(1/32 in steps and whole millimetres)"
+    "the steel ball sizes of ISO 3290-1 as ball makers list them, 1.5 to 25.4 mm (whole and "
+    "half millimetres, 1/32 in steps), and 0.8 to 1.2 mm for miniature screws"
 )
 
 TYPICAL_TURNS = (1.0, 5.0)
@@ -140,13 +181,26 @@ TURNS_SOURCE = (
 )
 
 WIPER_LIP_TORQUE = 0.5
-"""Drag torque [N·m] of a nut's two contact wipers on a 40 mm screw, estimated below."""
+"""Drag torque [N·m] of a nut's two contact wipers on a 40 mm screw, estimated below.
+
+No maker's figure backs it: THK, HIWIN and NSK print their drag torques without wipers, and
+the one seal torque table found (Bosch Rexroth RE 83 301, 2002-09, "Friction Torques of
+Seals", p. 106) could not be read. A cross-check of the order of magnitude and of the
+growth with the diameter: SKF's model of the friction of rolling-bearing contact seals,
+:math:`M = K_{S1} d_s^{\beta} + K_{S2}` with :math:`\beta` = 2 to 2.25, gives about
+0.07 N·m for one lip on a 40 mm counterface (:math:`K_{S1}` = 0.018, :math:`\beta` = 2.25,
+as coded in the open-source Thermca library, ``thermca/lib/bearing.py``, after the SKF
+General Catalogue 2006; the catalogue itself was not read). A ball screw's wipers follow
+the thread profile, a longer lip than a bearing seal's, hence about 3.5 times two such
+lips, growing as :math:`d^2` like SKF's."""
 
 WIPER_SOURCE = (
     "an estimate of a nut's two contact wipers: each elastomer lip presses about 0.15 N per "
     "mm along some 1.5 pitch circumferences of the thread profile at a friction coefficient "
     "of about 0.4, about 0.5 N*m on a 40 mm screw, growing with the square of the diameter "
-    "(longer lip, larger radius); catalogue drag torques are measured without wipers"
+    "(longer lip, larger radius; SKF's lip-seal friction grows as d^2 to d^2.25); "
+    "catalogue drag torques are measured without wipers, and no maker's wiper torque "
+    "table was found"
 )
 
 

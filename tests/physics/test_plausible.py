@@ -2,8 +2,9 @@
 outside what makers build or sell, through the library classes every face builds (issue 35, 4).
 
 The bounds are outside numbers: ISO 3448's viscosity grades (VG 3200 ends at 3520 mm²/s), the
-ball sizes of ISO 3290-1 in inch fractions, and the bundled catalogue rows and oils, which are
-real parts and must pass without a word.
+ball sizes of ISO 3290 as a ball maker lists them, the pressure-viscosity coefficients of
+Stachowiak & Batchelor's Table 2.3, and the bundled catalogue rows and oils, which are real
+parts and must pass without a word.
 """
 
 from __future__ import annotations
@@ -20,7 +21,7 @@ from ballscrew.friction import get_model
 from ballscrew.io.case import parse_case
 from ballscrew.io.designation import catalog_screws
 from ballscrew.lubricant import Lubricant
-from ballscrew.plausible import BALL_SERIES_MM, wiper_drag_bound
+from ballscrew.plausible import BALL_SERIES_MM, LUBRICANT_RANGES, wiper_drag_bound
 
 
 def _screw(**changes: object) -> BallScrew:
@@ -77,6 +78,29 @@ def test_the_series_holds_the_inch_fractions() -> None:
         assert any(abs(s - n * 25.4 / 32) < 1e-3 for s in BALL_SERIES_MM), n
 
 
+# Technoball's list of ISO 3290 precision ball sizes [mm] (plausible.py, reference [4]): the
+# metric sizes, then 1/16, 3/32, 7/64 in and the 1/32-inch steps to 1 in that it prints.
+MAKERS_BALLS_MM = (
+    1.5, 2.0, 2.5, 3.0, 3.5, 4.0, 4.5, 5.0, 6.0, 10.0, 12.0, 15.0, 16.0, 20.0, 25.0,
+    *(25.4 * n / 64 for n in (4, 6, 7)),
+    *(25.4 * n / 32 for n in (4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19, 20,
+                               21, 22, 24, 25, 26, 30, 32)),
+)  # fmt: skip
+
+
+@pytest.mark.parametrize("mm", MAKERS_BALLS_MM)
+def test_every_size_of_a_ball_makers_iso_3290_list_passes_quietly(mm: float) -> None:
+    _quiet(lambda: _screw(ball_diameter=mm * 1e-3, lead=0.032, pitch_diameter=0.100))
+
+
+def test_every_ball_of_the_bundled_catalogue_is_a_series_size() -> None:
+    # The rows print 3.175, 3.969, 6.35 and 9.525 mm (1/8, 5/32, 1/4 and 3/8 in).
+    printed = {row.ball_diameter for row in catalog_screws() if row.ball_diameter is not None}
+    assert printed
+    for d in printed:
+        assert min(abs(s * 1e-3 - d) for s in BALL_SERIES_MM) < 1e-3 * d, d
+
+
 @pytest.mark.parametrize("turns", [0.5, 6.0, 9.5])
 def test_loaded_turns_outside_1_to_5_are_warned(turns: float) -> None:
     with pytest.warns(BallScrewPlausibilityWarning, match="loaded_turns"):
@@ -115,6 +139,33 @@ def test_lubricant_properties_inside_their_typical_range_pass(field: str, value:
     base = {"nu40": 68e-6, "nu100": 1e-6 if field == "nu40" else 8.6e-6, "density15": 880.0,
             "pressure_viscosity": 2.2e-8}  # fmt: skip
     _quiet(lambda: Lubricant(name="oil", **{**base, field: value}))
+
+
+def test_the_nu40_range_is_iso_3448s_rule_applied_to_its_end_grades() -> None:
+    # ISO 3448:1992 clause 3.2: each grade spans +-10 % of its mid-point at 40 °C; the first
+    # grade, VG 2, has the mid-point 2.2 mm²/s (Table 1: 1.98 to 2.42), the last is VG 3200.
+    low, high = LUBRICANT_RANGES["nu40"].typical
+    assert low == pytest.approx(0.9 * 2.2e-6, rel=1e-12)
+    assert high == pytest.approx(1.1 * 3200e-6, rel=1e-12)
+
+
+@pytest.mark.parametrize("per_gpa", [13.0, 13.4, 17.6, 25.0, 41.5])
+def test_tabulated_pressure_viscosity_coefficients_pass_quietly(per_gpa: float) -> None:
+    # Stachowiak & Batchelor, Engineering Tribology, Table 2.3: mineral oils from 13 (a spindle
+    # oil at 100 °C) to 41.5 /GPa (a cylinder oil at 30 °C); a polyglycol 17.6 at 30 °C.
+    base = {"nu40": 68e-6, "nu100": 8.6e-6, "density15": 880.0}
+    _quiet(lambda: Lubricant(name="oil", pressure_viscosity=per_gpa * 1e-9, **base))
+
+
+def test_a_perfluoropolyether_is_warned_not_refused() -> None:
+    # A PFPE oil weighs about 1.9 g/cm³: a real (vacuum, clean-room) lubricant, used as given.
+    with pytest.warns(BallScrewPlausibilityWarning, match="density15") as record:
+        oil = Lubricant(name="PFPE", nu40=68e-6, nu100=8.6e-6, density15=1900.0,
+                        pressure_viscosity=2.5e-8)  # fmt: skip
+    assert oil.density15 == 1900.0
+    message = record[0].message
+    assert isinstance(message, BallScrewPlausibilityWarning)
+    assert "perfluoropolyether" in message.source
 
 
 @pytest.mark.parametrize(
@@ -181,6 +232,17 @@ def test_68_st_in_a_case_file_is_warned_and_kept_in_the_case() -> None:
 def test_wiper_drag_bound_grows_with_the_square_of_the_diameter() -> None:
     # Lip length and radius each grow with the diameter.
     assert wiper_drag_bound(0.080) == pytest.approx(4.0 * wiper_drag_bound(0.040))
+
+
+def test_wiper_drag_bound_is_of_the_order_of_skfs_lip_seal_friction() -> None:
+    # SKF's model of a rolling bearing's contact seal, M = KS1 * ds**2.25 (+ KS2 = 0 for large
+    # bearings) [N*mm, ds in mm], KS1 = 0.018 (as coded in Thermca's bearing.py): 72 N*mm on a
+    # 40 mm counterface. A ball screw's two wipers follow the thread, a longer lip than two
+    # bearing seals: more than those, within a factor ten.
+    two_lips = 2 * 0.018 * 40.0**2.25 / 1e3
+    assert 1.0 < wiper_drag_bound(0.040) / two_lips < 10.0
+    # The growth with the diameter, d**2 here against SKF's d**2.25: within 20 % from 40 to 80.
+    assert wiper_drag_bound(0.080) / wiper_drag_bound(0.040) == pytest.approx(2**2.25, rel=0.2)
 
 
 SCREW = 'pitch_diameter = "40 mm"\nlead = "10 mm"\nball_diameter = "6.35 mm"\nwiper_drag = "{drag}"'
