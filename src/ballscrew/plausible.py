@@ -15,20 +15,15 @@ Two kinds of bound:
   value, the range and its source): the value is used as given, since a special
   part may be meant.
 
-=====================  ======================  ==========================  ==================
-quantity               warned outside          refused outside             source
-=====================  ======================  ==========================  ==================
-``nu40``               1.98 to 3520 mm²/s      up to 20 000 mm²/s          ISO 3448 [1]_ (VG 2
-                                                                           to VG 3200)
-``density15``          750 to 1100 kg/m³       300 to 2500 kg/m³           base oils [2]_
-                                                                           (not checked)
-``pressure_viscosity`` 5 to 45 /GPa            1 to 100 /GPa               [3]_, Table 2.3
-``ball_diameter``      the ball series         (:data:`ballscrew.geometry  ISO 3290 sizes [4]_,
-                                               .PLAUSIBLE_SIZES`)           the bundled catalogue
-``loaded_turns``       1 to 5 per circuit      0 to 10 (``BallScrew``)     the makers' nuts
-wiper drag             :func:`wiper_drag_      10 x that                   an estimate (below)
-                       bound`
-=====================  ======================  ==========================  ==================
+The bounds, quantity by quantity (warned outside / refused outside / source):
+
+* ``nu40``: 1.98 to 3520 mm²/s / above 20 000 mm²/s / ISO 3448 [1]_ (VG 2 to VG 3200);
+* ``density15``: 750 to 1100 kg/m³ / 300 to 2500 kg/m³ / base oils [2]_ (not checked);
+* ``pressure_viscosity``: 5 to 45 /GPa / 1 to 100 /GPa / [3]_, Table 2.3;
+* ``ball_diameter``: the ball series (:data:`ballscrew.geometry.PLAUSIBLE_SIZES`) /
+  as ``BallScrew`` refuses / ISO 3290 sizes [4]_ and the bundled catalogue;
+* ``loaded_turns``: 1 to 5 per circuit / 0 to 10 (``BallScrew``) / the makers' nuts;
+* wiper drag: :func:`wiper_drag_bound` / 10 times that / an estimate (below).
 
 Which of these sources were read, and what each gives (issue 35, item 4):
 
