@@ -70,6 +70,17 @@ class MotorRow:
     line: int = 0
 
 
+def _positive_number(where: str, cell: str) -> float:
+    """The table cell ``cell`` as a finite number above 0, else an error naming ``where``."""
+    try:
+        number = float(cell)
+    except ValueError:
+        raise BallScrewInputError(where, cell or "(empty)", "a number") from None
+    if not math.isfinite(number) or number <= 0.0:
+        raise BallScrewInputError(where, cell, "a finite number > 0")
+    return number
+
+
 def _columns(header: list[str], source: str) -> tuple[dict[str, tuple[int, str]], int]:
     """Index and unit of each known column, and the name column's index."""
     found: dict[str, tuple[int, str]] = {}
@@ -135,12 +146,7 @@ def parse_motors(text: str, source: str = "motor table") -> tuple[MotorRow, ...]
         for key, (col, unit) in columns.items():
             cell = row[col].strip() if col < len(row) else ""
             where = f"{source}: line {line}, column '{header[col].strip()}'"
-            try:
-                number = float(cell)
-            except ValueError:
-                raise BallScrewInputError(where, cell or "(empty)", "a number") from None
-            if not math.isfinite(number) or number <= 0.0:
-                raise BallScrewInputError(where, cell, "a finite number > 0")
+            number = _positive_number(where, cell)
             if key == "price":
                 values[key] = number
                 continue
@@ -214,13 +220,7 @@ def parse_prices(text: str, source: str = "price table") -> tuple[dict[str, floa
         seen.add(name.upper())
         cell = row[price_col].strip() if price_col < len(row) else ""
         where = f"{source}: line {line}, column '{header[price_col].strip()}'"
-        try:
-            price = float(cell)
-        except ValueError:
-            raise BallScrewInputError(where, cell or "(empty)", "a number") from None
-        if not math.isfinite(price) or price <= 0.0:
-            raise BallScrewInputError(where, cell, "a finite number > 0")
-        out[name] = price
+        out[name] = _positive_number(where, cell)
     return out, currency
 
 
