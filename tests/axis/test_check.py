@@ -283,7 +283,10 @@ def test_lost_motion_and_eigenfrequency_rows_by_hand() -> None:
     # The shaft's twist under T_p = 0.252313 N m from the drive to the far end of the
     # stroke, 0.8 m: G J_p = 79.3e9 * pi 0.026^4 / 32 = 3557.6 N m^2, 2 T_p a / G J_p
     # = 1.1348e-4 rad, times l / 2 pi: 0.18 um.
-    assert "the shaft's torsion adds up to 0.18 um" in play.source
+    assert "twists the shaft, up to 0.18 um" in play.source
+    # the nut's own share, 2 F_f / k_nut, by hand from the nut stiffness above
+    assert f"2 F_f / k_nut = {2 * 158.533 / (k_nut / 1e6):.2g} um" in play.source
+    assert "upper bound" in play.source
     # The nut's level as stated: contacts over 1.48, printed nuts 0.56 to 0.71 of theirs
     # (THK's and HIWIN's tables, tests/physics/test_stiffness.py), THK's allowance 0.8.
     notes = "\n".join(result.assumptions)

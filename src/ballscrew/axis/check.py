@@ -19,7 +19,11 @@ with the formulas of :mod:`ballscrew.sizing`, :mod:`ballscrew.stiffness` and
   rigidity and derated to 80 %) and thrust bearings in
   series over the stroke, the **axial eigenfrequency** with the moving mass
   and the **lost motion** at a reversal, :math:`2F_f/k`, with :math:`F_f` the
-  screw's drag torque at creep speed as an axial force, :math:`2\pi T_f/l`;
+  screw's drag torque at creep speed as an axial force, :math:`2\pi T_f/l`: an
+  upper bound, as if the whole axis carried the drag (the lumped two-mass model of
+  :mod:`ballscrew.servo`); the drag torque itself twists the shaft and strains
+  the nut's contacts before they roll (both printed beside it), and only a
+  guideway's friction loads the whole axis;
 * **thermal lead error**: :math:`\alpha\,\Delta T\cdot 300` mm, with
   :math:`\Delta T` the rise the heat balance reaches over the run time (less
   what a pre-tension absorbs), against the accuracy grade's :math:`v_{300p}`;
@@ -479,6 +483,7 @@ def _stiffness_rows(
     lost = elastic + play
     # The drag torque also twists the shaft between the drive (at the thrust end) and the nut.
     twist = lost_motion(f_f, torsional_axial_stiffness(d_r, position, screw.lead))
+    pre_rolling = float(lost_motion(f_f, k_nut))  # the nut's contacts, LuGre's bristles
     figures: dict[str, Any] = {
         "position_mm": (position * 1e3).tolist(),
         "shaft_N_per_um": (k_shaft / 1e6).tolist(),
@@ -506,8 +511,12 @@ def _stiffness_rows(
         _info(f"axis stiffness (least over the stroke{state})", float(np.min(k_axis)) / 1e6,
               "N/um", source + f"; nut {k_nut / 1e6:.4g} N/um"),
         _info(f"lost motion at reversal (most{state})", float(np.max(lost)) * 1e6, "um",
-              f"2 F_f / k{play_text}, F_f = 2 pi T_f / l = {f_f:.3g} N (drag at creep speed); "
-              f"the shaft's torsion adds up to {float(np.max(twist)) * 1e6:.2g} um"),
+              f"2 F_f / k{play_text}, F_f = 2 pi T_f / l = {f_f:.3g} N (drag at creep speed) "
+              "as if the whole axis carried it: an upper bound, the lumped model of "
+              "'ballscrew contour'. The drag torque itself loads no part axially: it twists "
+              f"the shaft, up to {float(np.max(twist)) * 1e6:.2g} um, and strains the nut's "
+              f"contacts before they roll, 2 F_f / k_nut = {pre_rolling * 1e6:.2g} um; a "
+              "guideway's friction would load the whole axis"),
     ]  # fmt: skip
     if freq is None:
         rows.append(_missing("axial eigenfrequency", "Hz", "sqrt(k/m) / 2 pi",
