@@ -6,6 +6,7 @@ import sys
 
 import click
 
+from ..io.numbers import text as num
 from .common import json_option, own_case_option, require_case, stdout, write_result, writing
 
 __all__ = ["acceptance_command"]
@@ -91,15 +92,16 @@ def acceptance_command(
                            speed=speed, tolerance=tolerance, uncertainty=u)  # fmt: skip
     console = stdout(json_file)
     lo, hi, tol = a.row
-    console.print(f"reference {a.reference:.4g} N*m ({a.reference_source}); grade {a.grade}, "
-                  f"row {lo:.4g} to {hi:.4g} N*m: +-{tol:.0%} -> {a.low:.4g} to {a.high:.4g} N*m "
+    console.print(f"reference {num(a.reference)} N*m ({a.reference_source}); grade {a.grade}, "
+                  f"row {num(lo)} to {num(hi)} N*m: +-{tol:.0%} -> {num(a.low)} to "
+                  f"{num(a.high)} N*m "
                   "(THK A-688 Table 13, JIS B 1192 / ISO 3408-3)")  # fmt: skip
-    console.print(f"measured: mean {a.mean:.4g} N*m over {a.points} reading(s), fluctuation "
+    console.print(f"measured: mean {num(a.mean)} N*m over {a.points} reading(s), fluctuation "
                   f"{a.fluctuation:.3g} N*m")  # fmt: skip
     for v in a.speeds if len(a.speeds) > 1 else ():
         rpm = v.speed * 30.0 / np.pi
-        console.print(f"  at {rpm:.4g} rpm: mean {v.mean:.4g} N*m over {v.points} reading(s), "
-                      f"band {v.low:.4g} to {v.high:.4g} N*m: {v.decision}")  # fmt: skip
+        console.print(f"  at {num(rpm)} rpm: mean {num(v.mean)} N*m over {v.points} reading(s), "
+                      f"band {num(v.low)} to {num(v.high)} N*m: {v.decision}")  # fmt: skip
     console.print(f"verdict: {'ACCEPTED' if a.accepted else 'NOT ACCEPTED'} "
                   f"({(a.mean / a.reference - 1):+.1%} from the reference)")  # fmt: skip
     u_text = (f"U = {a.uncertainty:.3g} N*m" if a.uncertainty > 0.0

@@ -9,6 +9,7 @@ from typing import Any
 import click
 from rich.table import Table
 
+from ..io.numbers import text as num
 from .common import stdout, writing
 
 __all__ = ["case_command"]
@@ -72,45 +73,45 @@ def _print_resolved(path: str) -> None:
     found = raise_errors(plausibility(s, ratings, case.axial_load))
     rows = [
         *([("screw", "designation", case.screw_source)] if case.screw_source else []),
-        ("screw", "pitch diameter", f"{s.pitch_diameter * 1e3:.4g} mm"),
-        ("screw", "lead", f"{s.lead * 1e3:.4g} mm"),
-        ("screw", "ball diameter", f"{s.ball_diameter * 1e3:.4g} mm"),
-        ("screw", "contact angle", f"{math.degrees(s.contact_angle):.4g} deg"),
-        ("screw", "conformity screw / nut", f"{s.conformity_screw:.4g} / {s.conformity_nut:.4g}"),
+        ("screw", "pitch diameter", f"{num(s.pitch_diameter * 1e3)} mm"),
+        ("screw", "lead", f"{num(s.lead * 1e3)} mm"),
+        ("screw", "ball diameter", f"{num(s.ball_diameter * 1e3)} mm"),
+        ("screw", "contact angle", f"{num(math.degrees(s.contact_angle))} deg"),
+        ("screw", "conformity screw / nut", f"{num(s.conformity_screw)} / {num(s.conformity_nut)}"),
         ("screw", "loaded turns x circuits", f"{s.loaded_turns:g} x {s.circuits}"),
         ("screw", "nut", s.nut),
         ("screw", "balls kept apart by", s.ball_separation),
-        ("screw", "preload", f"{s.preload:.4g} N"),
+        ("screw", "preload", f"{num(s.preload)} N"),
         (
             "screw",
             "dynamic load rating C_a",
             "not known (preload not checked against it)"
             if ratings.dynamic is None
-            else f"{ratings.dynamic / 1e3:.4g} kN ({ratings.dynamic_source})",
+            else f"{num(ratings.dynamic / 1e3)} kN ({ratings.dynamic_source})",
         ),
         (
             "screw",
             "static load rating C_0a",
-            f"{ratings.static / 1e3:.4g} kN ({ratings.static_source})",
+            f"{num(ratings.static / 1e3)} kN ({ratings.static_source})",
         ),
-        ("screw", "lead angle", f"{math.degrees(s.lead_angle):.4g} deg"),
+        ("screw", "lead angle", f"{num(math.degrees(s.lead_angle))} deg"),
         ("screw", "loaded balls per nut", f"{s.balls_per_nut}"),
-        ("screw", "gamma = D_w cos(alpha) / d_m", f"{s.gamma:.4g}"),
+        ("screw", "gamma = D_w cos(alpha) / d_m", f"{num(s.gamma)}"),
         (
             "screw",
             "roughness ball / screw / nut",
             f"{s.roughness_ball * 1e6:.3g} / {s.roughness_screw * 1e6:.3g} / "
             f"{s.roughness_nut * 1e6:.3g} um",
         ),
-        *([("screw", "wiper drag", f"{case.wiper_drag:.4g} N*m")] if case.wiper_drag else []),
+        *([("screw", "wiper drag", f"{num(case.wiper_drag)} N*m")] if case.wiper_drag else []),
         ("lubricant", "name", oil.name),
         *([("lubricant", "grease", _grease(oil))] if oil.kind == "grease" else []),
         (
             "lubricant",
             "viscosity at 40 / 100 degC",
-            f"{oil.nu40 * 1e6:.4g} / {oil.nu100 * 1e6:.4g} cSt",
+            f"{num(oil.nu40 * 1e6)} / {num(oil.nu100 * 1e6)} cSt",
         ),
-        ("lubricant", "pressure-viscosity alpha", f"{oil.pressure_viscosity * 1e9:.4g} 1/GPa"),
+        ("lubricant", "pressure-viscosity alpha", f"{num(oil.pressure_viscosity * 1e9)} 1/GPa"),
         ("operation", "speeds", _span(rad_s_to_rpm(case.speed), "rpm")),
         ("operation", "temperatures", _span(case.temperature, "degC")),
         ("operation", "axial loads", _span(case.axial_load, "N")),
@@ -146,12 +147,12 @@ def _axis_rows(case: Any) -> list[tuple[str, str, str]]:
     later = "(estimated by ballscrew energy)"
 
     def given(value: float | None, scale: float, unit: str, missing: str = later) -> str:
-        return missing if value is None else f"{value * scale:.4g} {unit}"
+        return missing if value is None else f"{num(value * scale)} {unit}"
 
     bearings = (
         "not counted (no bearing_bore)"
         if a.get("bearing_bore") is None
-        else f"{a['bearing_type']}, bore {a['bearing_bore'] * 1e3:.4g} mm: "
+        else f"{a['bearing_type']}, bore {num(a['bearing_bore'] * 1e3)} mm: "
         + (
             "SKF's simplified estimate"
             if a.get("bearing_outer_diameter") is None
@@ -166,12 +167,12 @@ def _axis_rows(case: Any) -> list[tuple[str, str, str]]:
         j = float(shaft_inertia(case.screw.pitch_diameter, length))
         inertia = f"{j:.3g} kg*m^2 (estimated: a solid steel shaft over {length * 1e3:.0f} mm)"
     return [
-        ("axis", "moving mass", f"{a['moving_mass']:.4g} kg"),
+        ("axis", "moving mass", f"{num(a['moving_mass'])} kg"),
         ("axis", "screw inertia", given(a.get("screw_inertia"), 1.0, "kg*m^2", inertia)),
         ("axis", "coupling / motor inertia",
-         f"{a['coupling_inertia']:.4g} / {a['motor_inertia']:.4g} kg*m^2"),
+         f"{num(a['coupling_inertia'])} / {num(a['motor_inertia'])} kg*m^2"),
         ("axis", "gear ratio", f"{a['gear_ratio']:g}"),
-        ("axis", "incline", f"{math.degrees(a['incline']):.4g} deg"),
+        ("axis", "incline", f"{num(math.degrees(a['incline']))} deg"),
         ("axis", "support bearings", bearings),
         ("axis", "span, mounting", given(a.get("bearing_span"), 1e3, "mm",
                                          "none (critical speed not checked)")
@@ -194,7 +195,9 @@ def _check_rows(case: Any) -> list[tuple[str, str, str]]:
     from ..kinematics import rad_s_to_rpm
 
     def kn(value: float | None, key: str) -> str:
-        return f"give screw.{key} for ballscrew check" if value is None else f"{value / 1e3:.4g} kN"
+        return (
+            f"give screw.{key} for ballscrew check" if value is None else f"{num(value / 1e3)} kN"
+        )
 
     c = case.check
     rows = [
@@ -204,17 +207,17 @@ def _check_rows(case: Any) -> list[tuple[str, str, str]]:
     for key, value in case.motor.items():
         rpm = key == "rated_speed"
         shown, unit = (float(rad_s_to_rpm(value)), "rpm") if rpm else (float(value), "N*m")
-        rows.append(("motor", key.replace("_", " "), f"{shown:.4g} {unit}"))
+        rows.append(("motor", key.replace("_", " "), f"{num(shown)} {unit}"))
     life = c.get("required_life")
     rows += [
         ("check", "required life",
-         "20000 h (default)" if life is None else f"{life / 3600:.4g} h"),
+         "20000 h (default)" if life is None else f"{num(life / 3600)} h"),
         ("check", "reliability, least static safety",
          f"{c['reliability']:.0%}, {c['static_safety']:g}"),
         ("check", "accuracy grade", c.get("accuracy_grade", "none (thermal error not judged)")),
         ("check", "thrust bearing stiffness",
          "rigid (not given)" if c.get("support_stiffness") is None
-         else f"{c['support_stiffness'] / 1e6:.4g} N/um"),
+         else f"{num(c['support_stiffness'] / 1e6)} N/um"),
         ("check", "pre-tension absorbs", f"{c['pretension_temperature']:g} K"),
     ]  # fmt: skip
     return rows
@@ -231,5 +234,5 @@ def _span(values: object, unit: str) -> str:
 
     v = np.asarray(values, dtype=float)
     if v.size == 1:
-        return f"{float(v[0]):.4g} {unit}"
-    return f"{v.size} values, {float(v.min()):.4g} to {float(v.max()):.4g} {unit}"
+        return f"{num(float(v[0]))} {unit}"
+    return f"{v.size} values, {num(float(v.min()))} to {num(float(v.max()))} {unit}"

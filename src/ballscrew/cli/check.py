@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING
 import click
 from rich.table import Table
 
+from ..io.numbers import text as num
 from .common import (
     folder_option,
     json_option,
@@ -105,7 +106,7 @@ def check_command(
 
 
 def _number(value: float | None) -> str:
-    return "-" if value is None else f"{value:.4g}"
+    return "-" if value is None else f"{num(value)}"
 
 
 def _verdict_table(result: AxisCheck, system: str = "si") -> Table:

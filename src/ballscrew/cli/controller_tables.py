@@ -11,6 +11,7 @@ from pathlib import Path
 import click
 from rich.table import Table
 
+from ..io.numbers import text as num
 from .common import stdout, write_json, writing
 
 __all__ = ["write_controller_table"]
@@ -47,15 +48,15 @@ def write_controller_table(
     )  # fmt: skip
     console = stdout("-" if out_file == "-" else json_file)
     table = Table(title=f"{case.title}: {target} table of {result.model} at "
-                  f"{result.axial_load:.4g} N, {result.temperature:g} degC")  # fmt: skip
+                  f"{num(result.axial_load)} N, {result.temperature:g} degC")  # fmt: skip
     for column in ("point", "speed [mm/s]", "force [N]", "motor torque [N*m]"):
         table.add_column(column, justify="right")
     torque = result.motor_torque()
     for k, (v, f) in enumerate(zip(result.table.speed, result.table.force, strict=True)):
-        table.add_row(str(k), f"{v * 1e3:.4g}", f"{f:.4g}", f"{torque[k]:.4g}")
+        table.add_row(str(k), f"{num(v * 1e3)}", f"{num(f)}", f"{num(torque[k])}")
     console.print(table)
     tab = result.table
-    console.print(f"interpolation error against the model over +-{top * 1e3:.4g} mm/s: RMS "
+    console.print(f"interpolation error against the model over +-{num(top * 1e3)} mm/s: RMS "
                   f"{tab.rms_error:.3g} N, largest {tab.max_error:.3g} N")  # fmt: skip
     if out_file:
         with writing("--out", out_file):

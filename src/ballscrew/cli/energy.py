@@ -9,6 +9,7 @@ import click
 from rich.console import Console
 from rich.table import Table
 
+from ..io.numbers import text as num
 from .common import (
     echo_readings,
     folder_option,
@@ -93,14 +94,14 @@ def energy_command(
     for line in run.assumptions:
         click.echo(f"note: {line}", err=True)
     temp_shown, temp_unit = to_display(run.temperature, "degC", system)
-    title = (f"{case.title}: {cycles} cycle(s), {profile.duration:.4g} s, {temp_shown:.4g} "
+    title = (f"{case.title}: {cycles} cycle(s), {num(profile.duration)} s, {num(temp_shown)} "
              f"{'°C' if temp_unit == 'degC' else temp_unit}")  # fmt: skip
     out = stdout(json_file)
     out.print(_results_table(title, run, run_time, system))
     _print_weight_verdicts(out, run)
     force, force_unit = to_display(m.get("force", 0.0), "N", system)
     for name, at in run.steady.items():
-        out.print(_steady_table(f"{name}: continuous running at {force:.4g} {force_unit}", at,
+        out.print(_steady_table(f"{name}: continuous running at {num(force)} {force_unit}", at,
                                 system))  # fmt: skip
     if system != "si":
         out.print(system_note(system))
@@ -131,13 +132,13 @@ def _results_table(title: str, run: EnergyRun, run_time: str, system: str = "si"
         c = r.cycle
         table.add_row(
             name,
-            f"{c.friction_energy:.4g}",
-            f"{c.friction_energy / r.cycles:.4g}",
-            f"{c.constant_efficiency_energy:.4g}",
-            f"{c.bearing_energy:.4g}",
+            f"{num(c.friction_energy)}",
+            f"{num(c.friction_energy / r.cycles)}",
+            f"{num(c.constant_efficiency_energy)}",
+            f"{num(c.bearing_energy)}",
             f"{c.forward_efficiency:.3f} / {c.reverse_efficiency:.3f}",
-            f"{to_display(c.peak_motor_torque, 'N*m', system)[0]:.4g}",
-            f"{to_display(c.rms_motor_torque, 'N*m', system)[0]:.4g}",
+            f"{num(to_display(c.peak_motor_torque, 'N*m', system)[0])}",
+            f"{num(to_display(c.rms_motor_torque, 'N*m', system)[0])}",
             f"{to_display(r.final_temperature, 'degC', system)[0]:.3g}",
         )
     return table
@@ -177,5 +178,5 @@ def _steady_table(title: str, at: SteadyAtSpeed, system: str = "si") -> Table:
                    "power [W]"):  # fmt: skip
         table.add_column(column, justify="right")
     for w, tc, tq, pw in zip(at.speed, temps, torques, at.power, strict=True):
-        table.add_row(f"{rad_s_to_rpm(w):.4g}", f"{tc:.3g}", f"{tq:.4g}", f"{pw:.4g}")
+        table.add_row(f"{num(rad_s_to_rpm(w))}", f"{tc:.3g}", f"{num(tq)}", f"{num(pw)}")
     return table

@@ -11,6 +11,7 @@ from rich.console import Console
 from rich.table import Table
 
 from .._version import __version__
+from ..io.numbers import text as num
 from .common import case_option, require_case, stdout, write_result, writing
 
 if TYPE_CHECKING:
@@ -165,7 +166,7 @@ def _print_fit(console: Console, result: FrictionExport, temp: float, fitted: Fr
 
     lo, hi = rad_s_to_rpm(result.speeds[0]), rad_s_to_rpm(result.speeds[-1])
     source = (f"the measured curve {Path(result.measured).name}" if result.measured
-              else f"{result.model} at {temp:g} degC, {result.axial_load:.4g} N")  # fmt: skip
+              else f"{result.model} at {temp:g} degC, {num(result.axial_load)} N")  # fmt: skip
     table = Table(title=f"{result.case.title}: {result.form} fit of {source}")
     columns = ["parameter", "screw side", "unit", "table side", "unit "]
     intervals = fitted.intervals or {}
@@ -180,18 +181,18 @@ def _print_fit(console: Console, result: FrictionExport, temp: float, fitted: Fr
     for name, value in fitted.parameters.items():
         t_name = TABLE_SIDE.get(name, (None,))[0]
         t_val = side.get(t_name) if t_name else None
-        shown = [f"{t_val['value']:.4g}", t_val["unit"]] if t_val else ["", ""]
-        cells = [name, f"{value:.4g}", UNITS[name], *shown]
+        shown = [f"{num(t_val['value'])}", t_val["unit"]] if t_val else ["", ""]
+        cells = [name, f"{num(value)}", UNITS[name], *shown]
         if fitted.intervals is not None:
             lo_hi = intervals.get(name)
-            cells.insert(2, f"{lo_hi[0]:.4g} to {lo_hi[1]:.4g}" if lo_hi else "")
+            cells.insert(2, f"{num(lo_hi[0])} to {num(lo_hi[1])}" if lo_hi else "")
         if result.gear_ratio != 1.0:
-            cells.append(f"{doc['motor_side'][name]['value']:.4g}")
+            cells.append(f"{num(doc['motor_side'][name]['value'])}")
         table.add_row(*cells)
     console.print(table)
     what = "of the measured curve" if result.measured else "both ways"
     console.print(f"fit error: RMS {fitted.rms_error:.3g} N*m, max {fitted.max_error:.3g} N*m "
-                  f"over {lo:.3g} to {hi:.4g} rpm {what}")  # fmt: skip
+                  f"over {lo:.3g} to {num(hi)} rpm {what}")  # fmt: skip
     for note in fitted.notes:
         click.echo(f"note: {note}", err=True)
 
@@ -209,10 +210,10 @@ def _print_map(m: FrictionMap, out_file: str | None, json_file: str | None) -> N
     for column in ("parameter", "screw side", "table side", "motor side"):
         table.add_column(column, justify="right")
     for key in ("c0", "c1", "c2", "b"):
-        table.add_row(key, *(f"{fit[side][key]['value']:.4g} {fit[side][key]['unit']}"
+        table.add_row(key, *(f"{num(fit[side][key]['value'])} {fit[side][key]['unit']}"
                              for side in ("screw_side", "table_side", "motor_side")))  # fmt: skip
     for key in ("k_c", "k_b"):
-        table.add_row(key, f"{fit[key]['value']:.4g} {fit[key]['unit']}", "", "")
+        table.add_row(key, f"{num(fit[key]['value'])} {fit[key]['unit']}", "", "")
     console.print(table)
     console.print(f"compact form: {fit['formula']}")
     console.print(f"fit error over the grid: RMS {m.form.rms_error:.3g} N*m, "

@@ -9,6 +9,7 @@ from rich.table import Table
 
 from .._version import __version__
 from ..io.files import atomic_folder
+from ..io.numbers import text as num
 from .common import (
     folder_option,
     json_option,
@@ -98,12 +99,12 @@ def fit_command(
     for column in ("parameter", "start", "fitted", "95 % interval", "unit"):
         table.add_column(column, justify="right")
     for name, e in result.estimates.items():
-        span = f"{e.low:.4g} .. {e.high:.4g}" if e.low is not None else "not identified"
+        span = f"{num(e.low)} .. {num(e.high)}" if e.low is not None else "not identified"
         span += "" if result.reliable or e.low is None else " (unreliable)"
-        table.add_row(name, f"{e.start:.4g}", f"{e.value:.4g}", span, e.unit)
+        table.add_row(name, f"{num(e.start)}", f"{num(e.value)}", span, e.unit)
     console = stdout(json_file)
     console.print(table)
-    console.print(f"RMS residual: {result.rms_residual:.4g} N*m")
+    console.print(f"RMS residual: {num(result.rms_residual)} N*m")
     for note in result.warnings:
         click.echo(f"warning: {note}", err=True)
     if not result.reliable:

@@ -9,6 +9,7 @@ from pathlib import Path
 import click
 from rich.table import Table
 
+from ..io.numbers import text as num
 from .common import json_option, own_case_option, require_case, stdout, write_result, writing
 
 __all__ = ["monitor_command"]
@@ -59,13 +60,13 @@ def monitor_command(
     for column in ("time [h]", "torque [N*m]", "preload [N]", "95 % interval [N]", "trend [N]"):
         table.add_column(column, justify="right")
     for i in range(series.time.size):
-        table.add_row(f"{series.time[i]:.4g}", f"{series.torque[i]:.4g}", f"{r.preload[i]:.4g}",
-                      f"{r.preload_low[i]:.4g} to {r.preload_high[i]:.4g}",
-                      f"{r.trend[i]:.4g}")  # fmt: skip
+        table.add_row(f"{num(series.time[i])}", f"{num(series.torque[i])}", f"{num(r.preload[i])}",
+                      f"{num(r.preload_low[i])} to {num(r.preload_high[i])}",
+                      f"{num(r.trend[i])}")  # fmt: skip
     console.print(table)
     unit = "1/h" if trend == "exponential" else "N/h"
-    console.print(f"trend ({trend}): initial {r.trend[0]:.4g} N "
-                  f"(95 % {r.trend_low[0]:.4g} to {r.trend_high[0]:.4g}), slope {r.slope:.4g} "
+    console.print(f"trend ({trend}): initial {num(r.trend[0])} N "
+                  f"(95 % {num(r.trend_low[0])} to {num(r.trend_high[0])}), slope {num(r.slope)} "
                   f"{unit}")  # fmt: skip
     if r.limit is not None:
 

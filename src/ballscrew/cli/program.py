@@ -7,6 +7,7 @@ from pathlib import Path
 import click
 
 from ..io.files import read_input_text
+from ..io.numbers import text as num
 from .common import folder_option, json_option, progress, stdout, write_json, write_report, writing
 
 __all__ = ["program_command"]
@@ -59,7 +60,7 @@ def program_command(
     out = stdout("-" if csv_file == "-" else json_file)
     table = Table(
         title=f"{machine.title}: {result.program.size} blocks, "
-        f"{result.motion.duration:.4g} s (nominal {result.motion.nominal_time:.4g} s)"
+        f"{num(result.motion.duration)} s (nominal {num(result.motion.nominal_time)} s)"
     )
     for column in ("quantity", *result.axes):
         table.add_column(column, justify="right")
@@ -69,9 +70,9 @@ def program_command(
     totals = result.as_dict()["machine_totals"]
     share = totals["friction_share"]
     out.print(
-        f"machine: {totals['supplied_energy_J']:.4g} J supplied to the feed axes, "
-        f"{totals['regenerated_energy_J']:.4g} J taken back, {totals['process_work_J']:.4g} J "
-        f"process work, {totals['friction_energy_J']:.4g} J screw friction "
+        f"machine: {num(totals['supplied_energy_J'])} J supplied to the feed axes, "
+        f"{num(totals['regenerated_energy_J'])} J taken back, {num(totals['process_work_J'])} J "
+        f"process work, {num(totals['friction_energy_J'])} J screw friction "
         f"({'-' if share is None else f'{share:.1%}'} with the bearings)"
     )  # fmt: skip
     if csv_file:

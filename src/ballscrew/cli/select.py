@@ -7,6 +7,7 @@ from typing import TYPE_CHECKING
 import click
 from rich.table import Table
 
+from ..io.numbers import text as num
 from .common import (
     folder_option,
     json_option,
@@ -168,7 +169,7 @@ def select_command(
 
 
 def _number(value: float) -> str:
-    return "-" if value != value else f"{value:.4g}"  # NaN is not equal to itself
+    return "-" if value != value else f"{num(value)}"  # NaN is not equal to itself
 
 
 def _front_table(result: SelectResult) -> Table:

@@ -12,6 +12,7 @@ from rich.console import Console
 from rich.table import Table
 
 from ..io.extras import require
+from ..io.numbers import text as num
 from .common import file_option, folder_only, progress, stdout, write_json, writing
 
 __all__ = ["sweep_command"]
@@ -24,7 +25,7 @@ def _point(where: dict[str, Any], units: dict[str, str]) -> str:
         if key == "speed":
             from ..kinematics import rad_s_to_rpm
 
-            parts.append(f"{rad_s_to_rpm(value):.4g} rpm")
+            parts.append(f"{num(rad_s_to_rpm(value))} rpm")
         elif key == "temperature":
             parts.append(f"{value:g} °C")
         elif key == "axial_load":
@@ -33,7 +34,7 @@ def _point(where: dict[str, Any], units: dict[str, str]) -> str:
             parts.append(f"sample {value}")
         elif isinstance(value, float):
             unit = units.get(key, "1")
-            parts.append(f"{key} {value:.4g}" + (f" {unit}" if unit not in ("1", "") else ""))
+            parts.append(f"{key} {num(value)}" + (f" {unit}" if unit not in ("1", "") else ""))
         else:
             parts.append(f"{key} {value}")
     return ", ".join(parts)
@@ -51,8 +52,8 @@ def _summary_table(report: Any) -> Table:
     for o in SCALAR_OUTPUTS:
         for model, s in report.summary.get(o.name, {}).items():
             table.add_row(
-                f"{o.name} [{o.shown_unit}]", model, f"{s['min']:.4g}", f"{s['mean']:.4g}",
-                f"{s['max']:.4g}", _point(s["max_at"], fields),
+                f"{o.name} [{o.shown_unit}]", model, f"{num(s['min'])}", f"{num(s['mean'])}",
+                f"{num(s['max'])}", _point(s["max_at"], fields),
             )  # fmt: skip
     return table
 
@@ -69,8 +70,8 @@ def _percentile_table(p: Any) -> Table:
     picks = sorted({0, len(speeds) // 2, len(speeds) - 1})
     for model, values in p.torque.items():
         for i in picks:
-            table.add_row(str(model), f"{rad_s_to_rpm(speeds[i]):.4g}",
-                          *(f"{v:.4g}" for v in values[i]))  # fmt: skip
+            table.add_row(str(model), f"{num(rad_s_to_rpm(speeds[i]))}",
+                          *(f"{num(v)}" for v in values[i]))  # fmt: skip
     return table
 
 
