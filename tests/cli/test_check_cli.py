@@ -112,3 +112,21 @@ def test_check_out_writes_a_report_whose_files_match_the_json(
     code, _, err = run(["check", "--case", str(VERTICAL), "--move", MOVE, *FAST,
                         "--out", str(out / "report.md")], capsys)  # fmt: skip
     assert code == 2 and "--out" in err
+
+
+@pytest.mark.parametrize("columns", [100, 240])
+def test_a_narrow_terminal_gets_the_sources_below_the_table(
+    columns: int, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # Below 200 columns the source and advice columns wrapped every row into 20-30 lines
+    # ('fatig...', '1.469...'): there they go below the table, one numbered line per row.
+    monkeypatch.setenv("COLUMNS", str(columns))
+    code, out, err = run(["check", "--case", str(VERTICAL), "--move", MOVE, *FAST], capsys)
+    assert code == 0, err
+    table = out.split("\n[1] ")[0]
+    if columns < 200:
+        assert "[1] fatigue life L10: ISO 3408-5" in out and "what to change" not in table
+        assert max(len(line) for line in table.splitlines()) <= columns
+        assert len(table.splitlines()) < 70  # was about 300 lines at 100 columns
+    else:
+        assert "what to change" in out and "\n[1] " not in out

@@ -92,7 +92,12 @@ def check_command(
     result = replace(result, inputs={**result.inputs, "command": command,
                                      "case_file": case_file})  # fmt: skip
     out = stdout(json_file)
-    out.print(_verdict_table(result, system))
+    wide = out.width >= WIDE_TABLE
+    out.print(_verdict_table(result, system, wide=wide))
+    if not wide:  # each row's source and advice below the table, where they can be read
+        for k, c in enumerate(result.criteria, start=1):
+            out.print(f"[{k}] {c.name}: {c.source}" + (f"; to change: {c.advice}"
+                                                     if c.advice else ""))  # fmt: skip
     if system != "si":
         out.print(system_note(system))
     for line in result.assumptions:
@@ -109,10 +114,16 @@ def _number(value: float | None) -> str:
     return "-" if value is None else f"{num(value)}"
 
 
-def _verdict_table(result: AxisCheck, system: str = "si") -> Table:
+WIDE_TABLE = 200
+"""Terminal columns from which the verdict table carries its source and advice columns;
+a narrower terminal gets them as numbered lines below the table."""
+
+
+def _verdict_table(result: AxisCheck, system: str = "si", *, wide: bool = True) -> Table:
     """One row per criterion: value, limit, utilisation, verdict, source, advice.
 
     Values and limits in ``system``'s units (:func:`ballscrew.io.display.to_display`).
+    Not ``wide``: the source and advice columns give way to the row's number.
     """
     from ..io.display import to_display
 
@@ -121,16 +132,18 @@ def _verdict_table(result: AxisCheck, system: str = "si") -> Table:
     for column, justify in (("criterion", "left"), ("value", "right"), ("limit", "right"),
                             ("unit", "left"), ("use", "right"), ("use, 95 %", "right"),
                             ("verdict", "left"), ("P(NOT OK)", "right"),
-                            ("95 % confidence", "left"), ("source", "left"),
-                            ("what to change", "left")):  # fmt: skip
-        table.add_column(column, justify=justify)  # type: ignore[arg-type]
-    for c in result.criteria:
+                            ("95 % confidence", "left"),
+                            *((("source", "left"), ("what to change", "left")) if wide
+                              else (("note", "right"),))):  # fmt: skip
+        table.add_column(column, justify=justify)
+    for k, c in enumerate(result.criteria, start=1):
         use = "-" if c.utilisation is None else f"{c.utilisation:.0%}"
         u = c.uncertainty
         spread = "-" if u is None else f"{u.low:.0%}-{u.high:.0%}"
         p = "-" if u is None else f"{u.p_not_ok:.0%}"
         value, unit = to_display(c.value, c.unit, system)
         limit, _ = to_display(c.limit, c.unit, system)
+        tail = (c.source, c.advice) if wide else (f"[{k}]",)
         table.add_row(c.name, _number(value), _number(limit), unit, use, spread, c.verdict,
-                      p, "-" if u is None else u.guarded, c.source, c.advice)  # fmt: skip
+                      p, "-" if u is None else u.guarded, *tail)  # fmt: skip
     return table
