@@ -117,5 +117,5 @@ def warning_lines(results: Mapping[str, FrictionResult], *, verbose: bool = Fals
         short.setdefault((worst.applies_to, names), []).append(f"{symbol} {worst.value:.3g}")
     for (formulas, names), values in short.items():
         lines.append(f"note: {names} extrapolates {formulas} ({', '.join(values)}), as for "
-                     "most ball screws (--verbose says why)")  # fmt: skip
+                     "most screws (ballscrew --verbose ... says why)")  # fmt: skip
     return lines
