@@ -34,7 +34,7 @@ G_N = 9.80665
         ("operation.temperature", "40 °", "degC", "(degree) is a plain number (an angle or a "
          "ratio); this field is a temperature", "'40 degC'"),
         ("screw.preload", "5 lb", "N", "'lb' (pound) is a mass; this field is a force (a force in "
-         "pounds is 'lbf'", "'5 kN'"),
+         "pounds is 'lbf'", "give a force in e.g. 'kN'"),  # not '5 kN': 5 lb is 22 N
         ("screw.ball_diameter", "6.35 mm/rev", "m", "is per revolution, which this field is not",
          "'6.35 mm'"),
         ("screw.pitch_diameter", "5 MM", "m", "(megamolar)", "did you mean 'mm'?"),
@@ -43,7 +43,7 @@ G_N = 9.80665
         ("speed", "3000 rmp", "rad/s", "'rmp' is not a known unit; did you mean 'rpm'?",
          "'3000 rpm'"),
         ("screw.lead", "20 mn", "m", "'mn' is not a known unit; did you mean 'm'", "'20 mm'"),
-        ("screw.preload", "5 Newton", "N", "did you mean 'newton'?", "'5 kN'"),
+        ("screw.preload", "5 Newton", "N", "did you mean 'newton'?", "'5 newton'"),  # not 5 kN
         # a bare number where a unit is required
         ("screw.pitch_diameter", "32", "m", "a bare number has no unit", "'32 mm'"),
         # notations refused because they read two ways

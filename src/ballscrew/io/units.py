@@ -474,7 +474,9 @@ _COMMON_UNITS = (
 """The units suggested for a unit name that is none (close spellings, any case)."""
 
 
-def _unknown_unit(unit: str, example: str, target: str | None = None) -> str:
+def _unknown_unit(
+    unit: str, example: str, target: str | None = None, number_text: str | None = None
+) -> str:
     """Why the unit text is no unit: the first name pint does not know, and a close one."""
     import difflib
 
@@ -484,6 +486,7 @@ def _unknown_unit(unit: str, example: str, target: str | None = None) -> str:
     if unknown is None:
         return _UNIT_HELP + " (not a known unit)"
     lower = {u.lower(): u for u in _COMMON_UNITS}
+    recased = unknown.lower() in lower or unknown.lower() in ureg
     if unknown.lower() in lower:  # 'KN', 'MPA': the case is wrong
         close = [lower[unknown.lower()]]
     elif unknown.lower() in ureg:  # 'Newton'
@@ -495,6 +498,8 @@ def _unknown_unit(unit: str, example: str, target: str | None = None) -> str:
             close.sort(key=lambda c: kind_of(_ALIASES.get(c, c)) != wanted)
         close = close[:2]
     guess = f"; did you mean {' or '.join(repr(c) for c in close)}?" if close else ""
+    if recased and number_text is not None and unknown == unit.strip():
+        example = f"write e.g. '{number_text} {close[0]}'"  # the same unit, not another scale
     return f"'{unknown}' is not a known unit{guess} ({example})"
 
 
@@ -509,7 +514,9 @@ def _pint_unit(
             ArithmeticError, LookupError, SyntaxError):  # fmt: skip
         example = (f"write e.g. '{_shown(number)} {_example(target)}'" if target
                    else "e.g. 'mm', 'kN', 'rpm', 'N*m', 'degC'")  # fmt: skip
-        raise BallScrewInputError(field, text, _unknown_unit(unit, example, target)) from None
+        shown = _shown(number) if target else None
+        why = _unknown_unit(unit, example, target, shown)
+        raise BallScrewInputError(field, text, why) from None
 
 
 # --- conversion ------------------------------------------------------------------------------
@@ -610,6 +617,8 @@ def _wrong_dimension(
         why += " (a force in pounds is 'lbf', in kilograms 'kgf')"
     if wanted == "a temperature":
         example = "degC"
+    if {kind_of(have), wanted} == {"a mass", "a force"}:  # 300 kg is 2.9 kN, not 300 kN
+        return BallScrewInputError(field, text, f"{why}: give {wanted} in e.g. '{example}'")
     return BallScrewInputError(field, text, f"{why}: write e.g. '{_shown(number)} {example}'")
 
 
