@@ -231,7 +231,8 @@ def check_in_range(
         left = "[" if inclusive[0] else "("
         right = "]" if inclusive[1] else ")"
         text = f"a value in {left}{low:g}, {high:g}{right} {unit}".rstrip()
-        return BallScrewInputError(field, bad_value, text)
+        # to 12 significant digits: a converted input shows as typed (1000, not 1000.0000000000001)
+        return BallScrewInputError(field, float(f"{bad_value:.12g}"), text)
 
     if arr.ndim == 0:
         v = float(arr)

@@ -474,6 +474,14 @@ _COMMON_UNITS = (
 """The units suggested for a unit name that is none (close spellings, any case)."""
 
 
+def _known(ureg: Any, word: str) -> bool:
+    """Whether pint knows ``word`` as a unit ('nan' makes pint's own test raise ValueError)."""
+    try:
+        return word in ureg
+    except (ValueError, TypeError, AttributeError, LookupError, ArithmeticError):
+        return False
+
+
 def _unknown_unit(
     unit: str, example: str, target: str | None = None, number_text: str | None = None
 ) -> str:
@@ -482,14 +490,14 @@ def _unknown_unit(
 
     ureg = registry()
     words = re.findall(r"[^\W\d_][^\W\d]*", unit)
-    unknown = next((w for w in words if w not in ureg), None)
+    unknown = next((w for w in words if not _known(ureg, w)), None)
     if unknown is None:
         return _UNIT_HELP + " (not a known unit)"
     lower = {u.lower(): u for u in _COMMON_UNITS}
-    recased = unknown.lower() in lower or unknown.lower() in ureg
+    recased = unknown.lower() in lower or _known(ureg, unknown.lower())
     if unknown.lower() in lower:  # 'KN', 'MPA': the case is wrong
         close = [lower[unknown.lower()]]
-    elif unknown.lower() in ureg:  # 'Newton'
+    elif _known(ureg, unknown.lower()):  # 'Newton'
         close = [unknown.lower()]
     else:
         close = difflib.get_close_matches(unknown, _COMMON_UNITS, n=5, cutoff=0.6)
