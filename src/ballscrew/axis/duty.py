@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import dataclasses
 import warnings
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -41,6 +41,7 @@ from .motion import Profile, back_and_forth, chain, check_force_window, read_tra
 from .setup import axis_setup
 from .thermal import (
     SteadyAtSpeed,
+    SteadyState,
     ThermalNode,
     nut_length,
     steady_at_speeds,
@@ -289,6 +290,7 @@ def run_energy(
     move: dict[str, float] | None = None,
     motion_field: str = "--move",
     thermal_failure: str = "raise",
+    steady: Mapping[str, SteadyState] | None = None,
 ) -> EnergyRun:
     """Each model's energy, torques and temperatures over ``profile`` (module docstring).
 
@@ -326,6 +328,11 @@ def run_energy(
         the screw cannot shed) raises its input error; "keep": the error is
         kept in each :class:`ModelEnergy` and the cycle's figures are returned
         (the web page shows the energy, and the check says why it cannot run).
+    steady : mapping, optional
+        Model name -> its :func:`~ballscrew.axis.thermal.steady_temperature` of
+        this case over ``profile``, already solved (``ballscrew select`` solves
+        many screws' together, :func:`~ballscrew.axis.thermal.steady_temperatures`);
+        a model not in it is solved here.
     """
     if thermal_failure not in ("raise", "keep"):
         raise BallScrewInputError("thermal_failure", thermal_failure, "'raise' or 'keep'")
@@ -352,7 +359,9 @@ def run_energy(
         setup_notes, m, findings=found, run_time=run_time,
     )  # fmt: skip
     results = {
-        name: _one_model(run, name, run_time, steady_speeds, thermal_failure)
+        name: _one_model(
+            run, name, run_time, steady_speeds, thermal_failure, (steady or {}).get(name)
+        )
         for name in model_names
     }
     return dataclasses.replace(run, results=results)
@@ -394,7 +403,7 @@ def _axis_limits(profile: Profile, axis: Axis, motion_field: str) -> list[Findin
 
 def _one_model(
     run: EnergyRun, name: str, run_time: float, steady_speeds: npt.ArrayLike | None,
-    thermal_failure: str,
+    thermal_failure: str, solved: SteadyState | None = None,
 ) -> ModelEnergy:  # fmt: skip
     """One model's cycle (run once), back-driving verdicts and temperatures."""
     case, profile, axis, node = run.case, run.profile, run.axis, run.node
@@ -411,8 +420,8 @@ def _one_model(
     )
     base = ModelEnergy(cycle, run.cycles, profile.duration, weight, locking)
     try:
-        steady = steady_temperature(profile, case.screw, case.lubricant, axis, node, model=name,
-                                    **params)  # fmt: skip
+        steady = solved or steady_temperature(profile, case.screw, case.lubricant, axis, node,
+                                              model=name, **params)  # fmt: skip
         times, history = temperature_history(profile, case.screw, case.lubricant, axis, node,
                                              run_time, model=name, points=50, steady=steady,
                                              **params)  # fmt: skip

@@ -33,7 +33,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from ..chain import friction_torque
+from ..chain import friction_torque, friction_torques
 from ..errors import (
     BallScrewInputError,
     BallScrewValidityWarning,
@@ -57,6 +57,7 @@ __all__ = [
     "mean_powers",
     "steady_at_speeds",
     "steady_temperature",
+    "steady_temperatures",
     "temperature_history",
 ]
 
@@ -321,6 +322,115 @@ def steady_temperature(
     g = _conductance(node, screw, speed, t)
     power = float(mean_power(t)[0])
     return SteadyState(t, power, g * (t - node.ambient), g)
+
+
+TABLE_STAGES = (5, 13)
+"""The table nodes :func:`steady_temperatures` evaluates first (up to the 5th, then the 13th,
+with the last), before the rest for the screws not yet balanced."""
+
+
+def steady_temperatures(
+    profile: Profile,
+    screws: list[BallScrew],
+    lubricant: Lubricant | str,
+    axes: list[Axis],
+    nodes: list[ThermalNode],
+    *,
+    model: str = "complete",
+    **parameters: Any,
+) -> list[SteadyState | None]:
+    """:func:`steady_temperature` of many screws on one lubricant and model, together.
+
+    The same balance, table and Illinois iteration, with the friction of every
+    screw in one call (:func:`~ballscrew.chain.friction_torques`, each screw at its
+    own distinct samples, padded with weightless repeats of its first). The
+    table is evaluated in stages (:data:`TABLE_STAGES`, and its last node, whose
+    sign decides the error): a screw whose balance changes sign early needs no
+    more of it, and the first sign change and the error are those of the whole
+    table. The temperatures equal the screw-by-screw ones to the rounding of the
+    friction and of the weighted sums (a relative 1e-13; the Illinois tolerance
+    is 1e-11 K). None for a screw whose balance does not close below 200 K
+    above the ambient, or for every screw when a point cannot be solved:
+    :func:`steady_temperature` then runs alone and raises its error.
+    """
+    n = len(screws)
+    if n == 0:
+        return []
+    for node in nodes:
+        check_positive("screw_length", node.screw_length, "m")
+    samples = [_CyclePowers(profile, s, lubricant, a, model, parameters)
+               for s, a in zip(screws, axes, strict=True)]  # fmt: skip
+    width = max(c.omega.size for c in samples)
+
+    def padded(values: list[FloatArray], fill: list[float]) -> FloatArray:
+        out = np.empty((n, width))
+        for i, (v, f) in enumerate(zip(values, fill, strict=True)):
+            out[i, : v.size], out[i, v.size :] = v, f
+        return out
+
+    omega = padded([c.omega for c in samples], [float(c.omega[0]) for c in samples])
+    force = padded([c.force for c in samples], [float(c.force[0]) for c in samples])
+    weight = padded([c.weight for c in samples], [0.0] * n)
+    speeds = [_rms_speed(profile, s) for s in screws]
+    ambient = np.array([node.ambient for node in nodes])
+
+    def powers(rows: npt.NDArray[np.intp], temps: FloatArray) -> FloatArray:
+        """Mean power of the screws ``rows`` at their temperatures ``temps`` (rows x k)."""
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            torque = friction_torques(
+                [screws[i] for i in rows], lubricant, speed=omega[rows, None, :],
+                temperature=temps[:, :, None], axial_load=force[rows, None, :], model=model,
+                paired=True, warn=False, components=False, **parameters,
+            ).total  # fmt: skip
+        out: FloatArray = np.einsum("rkp,rp->rk", torque * np.abs(omega[rows, None, :]),
+                                    weight[rows])  # fmt: skip
+        return out
+
+    def imbalance(rows: npt.NDArray[np.intp], temps: FloatArray) -> FloatArray:
+        heat = np.array([_conductances(nodes[i], screws[i], speeds[i], t) * (t - nodes[i].ambient)
+                         for i, t in zip(rows, temps, strict=True)])  # fmt: skip
+        out: FloatArray = powers(rows, temps) - heat
+        return out
+
+    count = round(200.0 / TABLE_STEP) + 1
+    grid = ambient[:, None] + np.linspace(0.0, 200.0, count)[None, :]
+    table = np.full((n, count), np.nan)
+    every = np.arange(n)
+    try:
+        first = [*range(TABLE_STAGES[0]), count - 1]
+        table[:, first] = imbalance(every, grid[:, first])
+        for lo, hi in ((TABLE_STAGES[0], TABLE_STAGES[1]), (TABLE_STAGES[1], count - 1)):
+            rows = every[~np.any(table[:, :lo] <= 0.0, axis=1) & (table[:, -1] <= 0.0)]
+            if rows.size:
+                table[np.ix_(rows, np.arange(lo, hi))] = imbalance(rows, grid[rows, lo:hi])
+        ok = table[:, -1] <= 0.0
+        j = np.where(ok, np.argmax(table <= 0.0, axis=1), 0)
+        at_node = ok & ((j == 0) | (table[every, j] == 0.0))
+        root = np.where(at_node, grid[every, j], np.nan)
+        solve = every[ok & ~at_node]
+        if solve.size:
+            js = j[solve]
+            root[solve] = illinois(
+                lambda x, idx: -imbalance(solve[idx], x[:, None])[:, 0],
+                grid[solve, js - 1], grid[solve, js], -table[solve, js - 1], -table[solve, js],
+                xtol=1e-11,
+            )  # fmt: skip
+        done = every[ok]
+        power = np.full(n, np.nan)
+        if done.size:
+            power[done] = powers(done, root[done, None])[:, 0]
+    except BallScrewInputError:
+        return [None] * n
+    out: list[SteadyState | None] = []
+    for i in range(n):
+        if not ok[i]:
+            out.append(None)
+            continue
+        t = float(root[i])
+        g = _conductance(nodes[i], screws[i], speeds[i], t)
+        out.append(SteadyState(t, float(power[i]), g * (t - nodes[i].ambient), g))
+    return out
 
 
 @dataclass(frozen=True)
