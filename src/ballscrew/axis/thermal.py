@@ -27,7 +27,8 @@ from __future__ import annotations
 
 import math
 import warnings
-from dataclasses import dataclass
+from collections.abc import Callable
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -43,6 +44,7 @@ from ..errors import (
     check_positive,
 )
 from ..geometry import BallScrew
+from ..helix import JIT_LOAD_POINTS
 from ..lubricant import Lubricant
 from ..materials import STEEL_DENSITY, STEEL_SPECIFIC_HEAT
 from ..numerics import illinois
@@ -157,7 +159,7 @@ def convection_coefficient(
     49.1
     """
     d = float(check_positive("diameter", diameter, "m"))
-    k, nu, pr = AIR["conductivity"], AIR["kinematic_viscosity"], AIR["prandtl"]
+    nu = AIR["kinematic_viscosity"]
     re = np.abs(np.asarray(speed, dtype=float)) * d**2 / nu
     if re.size and float(np.max(re)) > KREITH_REYNOLDS_LIMIT:
         warnings.warn(
@@ -167,14 +169,27 @@ def convection_coefficient(
             BallScrewValidityWarning,
             stacklevel=2,
         )
-    forced = 0.133 * re ** (2 / 3) * pr ** (1 / 3) * k / d
+    result: FloatArray = np.maximum(_forced(d, re), _natural(d, surface, ambient))
+    return result
+
+
+def _forced(d: float, re: FloatArray) -> FloatArray:
+    """Kreith's rotating cylinder, h [W/(m²·K)] at the rotational Reynolds number ``re``."""
+    k, pr = AIR["conductivity"], AIR["prandtl"]
+    forced: FloatArray = 0.133 * re ** (2 / 3) * pr ** (1 / 3) * k / d
+    return forced
+
+
+def _natural(d: float, surface: npt.ArrayLike, ambient: float) -> FloatArray:
+    """Churchill and Chu's horizontal cylinder, h [W/(m²·K)] at the surface temperature."""
+    k, nu, pr = AIR["conductivity"], AIR["kinematic_viscosity"], AIR["prandtl"]
     surf = np.asarray(surface, dtype=float)
     dt = np.maximum(np.abs(surf - ambient), 1e-9)
     film = 0.5 * (surf + ambient) + 273.15
     ra = 9.80665 * (1 / film) * dt * d**3 / (nu * nu / pr)
     natural = (0.60 + 0.387 * ra ** (1 / 6) / (1 + (0.559 / pr) ** (9 / 16)) ** (8 / 27)) ** 2
-    result: FloatArray = np.maximum(forced, natural * k / d)
-    return result
+    h: FloatArray = natural * k / d
+    return h
 
 
 def mean_powers(
@@ -252,6 +267,39 @@ def _conductances(
     return result
 
 
+def _node_conductance(
+    node: ThermalNode, screw: BallScrew, speed: float
+) -> Callable[[float], float]:
+    """:func:`_conductance` at one speed as a function of the temperature alone.
+
+    The same operations (the forced part once, its speed being fixed), without
+    the checks of every call: the heat balance's integrator asks for it at
+    every step.
+    """
+    _conductance(node, screw, speed, node.ambient)  # checks the inputs, warns once
+    d = screw.pitch_diameter
+    area = math.pi * d * node.screw_length
+    machine = 0.0 if node.machine_resistance is None else 1.0 / node.machine_resistance
+    forced = _forced(d, np.abs(np.asarray(speed, dtype=float)) * d**2 / AIR["kinematic_viscosity"])
+
+    def conductance(temperature: float) -> float:
+        h = np.maximum(forced, _natural(d, np.array([temperature]), node.ambient))
+        return float((h * area + machine)[0])
+
+    return conductance
+
+
+def history_grid(node: ThermalNode, steady: float) -> FloatArray:
+    """The temperatures [°C] at which :func:`temperature_history` tabulates the mean power.
+
+    Every 2 K or so from the ambient to 1 K past the steady temperature ``steady``.
+    """
+    grid: FloatArray = np.linspace(
+        node.ambient, steady + 1.0, max(3, int(steady - node.ambient) // 2 + 3)
+    )
+    return grid
+
+
 def _rms_speed(profile: Profile, screw: BallScrew) -> float:
     omega = 2 * math.pi * profile.speed / screw.lead
     dt = np.diff(profile.time)
@@ -267,6 +315,11 @@ class SteadyState:
     friction_power: float
     heat_out: float
     conductance: float
+    history_powers: tuple[FloatArray, FloatArray] | None = field(
+        default=None, repr=False, compare=False
+    )
+    """The mean friction power on :func:`temperature_history`'s grid (temperatures [°C],
+    powers [W]), where it was computed with the balance (:func:`steady_temperatures`)."""
 
 
 TABLE_STEP = 5.0
@@ -349,9 +402,10 @@ def steady_temperatures(
     more of it, and the first sign change and the error are those of the whole
     table. The temperatures equal the screw-by-screw ones to the rounding of the
     friction and of the weighted sums (a relative 1e-13; the Illinois tolerance
-    is 1e-11 K). None for a screw whose balance does not close below 200 K
-    above the ambient, or for every screw when a point cannot be solved:
-    :func:`steady_temperature` then runs alone and raises its error.
+    is 1e-11 K). Each carries the mean power on :func:`temperature_history`'s grid,
+    from the same call as its power at the root. None for a screw whose balance
+    does not close below 200 K above the ambient, or for every screw when a point
+    cannot be solved: :func:`steady_temperature` then runs alone and raises its error.
     """
     n = len(screws)
     if n == 0:
@@ -376,15 +430,21 @@ def steady_temperatures(
 
     def powers(rows: npt.NDArray[np.intp], temps: FloatArray) -> FloatArray:
         """Mean power of the screws ``rows`` at their temperatures ``temps`` (rows x k)."""
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            torque = friction_torques(
-                [screws[i] for i in rows], lubricant, speed=omega[rows, None, :],
-                temperature=temps[:, :, None], axial_load=force[rows, None, :], model=model,
-                paired=True, warn=False, components=False, **parameters,
-            ).total  # fmt: skip
-        out: FloatArray = np.einsum("rkp,rp->rk", torque * np.abs(omega[rows, None, :]),
-                                    weight[rows])  # fmt: skip
+        out: FloatArray = np.empty(temps.shape)
+        # Calls below JIT_LOAD_POINTS: the friction takes the path the screw-by-screw
+        # calls of the process take (the compiled helix kernel is not loaded by this).
+        step = max(1, (JIT_LOAD_POINTS - 1) // (temps.shape[1] * width))
+        for start in range(0, rows.size, step):
+            part = slice(start, start + step)
+            r = rows[part]
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                torque = friction_torques(
+                    [screws[i] for i in r], lubricant, speed=omega[r, None, :],
+                    temperature=temps[part, :, None], axial_load=force[r, None, :],
+                    model=model, paired=True, warn=False, components=False, **parameters,
+                ).total  # fmt: skip
+            out[part] = np.einsum("rkp,rp->rk", torque * np.abs(omega[r, None, :]), weight[r])
         return out
 
     def imbalance(rows: npt.NDArray[np.intp], temps: FloatArray) -> FloatArray:
@@ -418,8 +478,19 @@ def steady_temperatures(
             )  # fmt: skip
         done = every[ok]
         power = np.full(n, np.nan)
+        grids = {int(i): history_grid(nodes[i], float(root[i])) for i in done}
         if done.size:
-            power[done] = powers(done, root[done, None])[:, 0]
+            # The power at the root, and on the history's grid, in one call.
+            size = 1 + max(g.size for g in grids.values())
+            temps = np.empty((done.size, size))
+            for r, i in enumerate(done):
+                tg = grids[int(i)]
+                temps[r, 0], temps[r, 1 : tg.size + 1], temps[r, tg.size + 1 :] = (
+                    root[i], tg, tg[-1])  # fmt: skip
+            table_powers = powers(done, temps)
+            power[done] = table_powers[:, 0]
+            on_grid = {int(i): table_powers[r, 1 : grids[int(i)].size + 1]
+                       for r, i in enumerate(done)}  # fmt: skip
     except BallScrewInputError:
         return [None] * n
     out: list[SteadyState | None] = []
@@ -429,7 +500,8 @@ def steady_temperatures(
             continue
         t = float(root[i])
         g = _conductance(nodes[i], screws[i], speeds[i], t)
-        out.append(SteadyState(t, float(power[i]), g * (t - nodes[i].ambient), g))
+        out.append(SteadyState(t, float(power[i]), g * (t - nodes[i].ambient), g,
+                               (grids[i], on_grid[i])))  # fmt: skip
     return out
 
 
@@ -527,18 +599,19 @@ def temperature_history(
         steady = steady_temperature(profile, screw, lubricant, axis, node, model=model,
                                     **parameters)  # fmt: skip
     speed = _rms_speed(profile, screw)
-    grid = np.linspace(
-        node.ambient,
-        steady.temperature + 1.0,
-        max(3, int(steady.temperature - node.ambient) // 2 + 3),
-    )
-    powers = mean_powers(profile, screw, lubricant, axis, grid, model, **parameters)
+    grid = history_grid(node, steady.temperature)
+    given = steady.history_powers
+    if given is not None and np.array_equal(given[0], grid):
+        powers = given[1]
+    else:
+        powers = mean_powers(profile, screw, lubricant, axis, grid, model, **parameters)
     capacity = node.heat_capacity(screw)
+    conductance = _node_conductance(node, screw, speed)
 
     def rate(_t: float, y: FloatArray) -> FloatArray:
         temp = float(y[0])
         power = float(np.interp(temp, grid, powers))
-        loss = _conductance(node, screw, speed, temp) * (temp - node.ambient)
+        loss = conductance(temp) * (temp - node.ambient)
         return np.array([(power - loss) / capacity])
 
     times = np.linspace(0.0, duration, points)

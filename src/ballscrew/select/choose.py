@@ -249,7 +249,7 @@ def evaluate(
     return Evaluated(candidate, figures, feasible, _binding(check)), check
 
 
-NEAR = 1e-6
+NEAR = 1e-5
 """How near a candidate's largest utilisation to 1 or :data:`RECOMMEND_BELOW` (relative) has it
 evaluated alone, so that its verdict and the pick are the lone check's."""
 
