@@ -252,3 +252,9 @@ def test_a_check_without_draws_has_the_full_checks_rows(selection: SelectResult)
         (c.name, c.value, c.utilisation, c.verdict) for c in full.criteria]  # fmt: skip
     assert all(c.uncertainty is None for c in lean.criteria)
     assert any(c.uncertainty is not None for c in full.criteria)
+    # A run for the check alone (no back-driving verdicts, no warm cycle energy): the
+    # check reads neither, so its rows, draws included, are the full run's.
+    spare = run_energy(case, profile_from_move(m, 1), ["complete"], move=m, for_check=True)
+    assert spare.results["complete"].friction_energy_at_final_temperature is None
+    assert [c.as_dict() for c in run_check(spare).criteria] == [
+        c.as_dict() for c in full.criteria]  # fmt: skip

@@ -14,6 +14,7 @@ optionally the steady temperature of continuous running at given speeds.
 from __future__ import annotations
 
 import dataclasses
+import math
 import warnings
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
@@ -105,7 +106,7 @@ class ModelEnergy:
     cycles: int
     duration: float
     weight_reverse_efficiency: float
-    self_locking: bool
+    self_locking: bool | None
     history: tuple[FloatArray, FloatArray] | None = field(default=None, repr=False)
     steady_temperature: float | None = None
     final_temperature: float | None = None
@@ -291,6 +292,7 @@ def run_energy(
     motion_field: str = "--move",
     thermal_failure: str = "raise",
     steady: Mapping[str, SteadyState] | None = None,
+    for_check: bool = False,
 ) -> EnergyRun:
     """Each model's energy, torques and temperatures over ``profile`` (module docstring).
 
@@ -333,6 +335,11 @@ def run_energy(
         this case over ``profile``, already solved (``ballscrew select`` solves
         many screws' together, :func:`~ballscrew.axis.thermal.steady_temperatures`);
         a model not in it is solved here.
+    for_check : bool
+        True: only what :func:`~ballscrew.axis.check.run_check` reads. The
+        back-driving verdicts (``weight_reverse_efficiency`` NaN, ``self_locking``
+        None) and the cycle's friction energy at the final temperature (None) are
+        left out: three friction calls a candidate of ``ballscrew select`` spares.
     """
     if thermal_failure not in ("raise", "keep"):
         raise BallScrewInputError("thermal_failure", thermal_failure, "'raise' or 'keep'")
@@ -360,7 +367,13 @@ def run_energy(
     )  # fmt: skip
     results = {
         name: _one_model(
-            run, name, run_time, steady_speeds, thermal_failure, (steady or {}).get(name)
+            run,
+            name,
+            run_time,
+            steady_speeds,
+            thermal_failure,
+            (steady or {}).get(name),
+            for_check,
         )
         for name in model_names
     }
@@ -403,7 +416,7 @@ def _axis_limits(profile: Profile, axis: Axis, motion_field: str) -> list[Findin
 
 def _one_model(
     run: EnergyRun, name: str, run_time: float, steady_speeds: npt.ArrayLike | None,
-    thermal_failure: str, solved: SteadyState | None = None,
+    thermal_failure: str, solved: SteadyState | None = None, for_check: bool = False,
 ) -> ModelEnergy:  # fmt: skip
     """One model's cycle (run once), back-driving verdicts and temperatures."""
     case, profile, axis, node = run.case, run.profile, run.axis, run.node
@@ -412,12 +425,14 @@ def _one_model(
         warnings.simplefilter("ignore")  # the speed limits are kept in the result
         cycle = axis_cycle(profile, case.screw, case.lubricant, axis,
                            temperature=run.temperature, model=name, **params)  # fmt: skip
-    weight = weight_back_driving(
-        case.screw, case.lubricant, axis, temperature=run.temperature, model=name, **params
-    )
-    locking = self_locking(
-        case.screw, case.lubricant, temperature=run.temperature, model=name, **params
-    )
+    weight, locking = math.nan, None
+    if not for_check:
+        weight = weight_back_driving(
+            case.screw, case.lubricant, axis, temperature=run.temperature, model=name, **params
+        )
+        locking = self_locking(
+            case.screw, case.lubricant, temperature=run.temperature, model=name, **params
+        )
     base = ModelEnergy(cycle, run.cycles, profile.duration, weight, locking)
     try:
         steady = solved or steady_temperature(profile, case.screw, case.lubricant, axis, node,
@@ -429,8 +444,9 @@ def _one_model(
         if thermal_failure == "raise":
             raise
         return dataclasses.replace(base, thermal_error=exc)
-    warm = friction_energy(profile, case.screw, case.lubricant, axis,
-                           temperature=float(history[-1]), model=name, **params)  # fmt: skip
+    warm = None if for_check else friction_energy(
+        profile, case.screw, case.lubricant, axis, temperature=float(history[-1]), model=name,
+        **params)  # fmt: skip
     at = None
     if steady_speeds is not None:
         at = steady_at_speeds(case.screw, case.lubricant, node, steady_speeds,

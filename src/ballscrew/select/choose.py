@@ -236,7 +236,7 @@ def evaluate(
     try:
         case = parsed or parse_case(candidate.text, source=candidate.name)
         run = run_energy(case, profile, [model], cycles=cycles, temperature=temperature,
-                         run_time=run_time, move=move,
+                         run_time=run_time, move=move, for_check=True,
                          steady=None if steady is None else {model: steady})  # fmt: skip
         check = run_check(run, model, draws_when_failing=False)
     except BallScrewInputError as exc:
