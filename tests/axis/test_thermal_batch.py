@@ -14,6 +14,7 @@ from ballscrew.axis.thermal import (
     mean_powers,
     steady_temperature,
     steady_temperatures,
+    temperature_histories,
     temperature_history,
 )
 
@@ -81,3 +82,28 @@ def test_a_screw_that_cannot_shed_its_heat_gets_none_and_the_others_their_balanc
     assert second is not None and second.temperature == pytest.approx(
         steady_temperature(CYCLE, screws[1], OIL, axes[1], nodes[1]).temperature, abs=1e-10
     )
+
+
+def test_nodes_integrated_together_follow_each_ones_own_history() -> None:
+    screws = _screws()[:3]
+    axes = [Axis(moving_mass=200.0)] * 3
+    # a long run (the short node settles: held at its steady temperature) and three rises
+    nodes = [ThermalNode(screw_length=0.9), ThermalNode(0.3, machine_resistance=0.5),
+             ThermalNode(0.5, ambient=25.0)]  # fmt: skip
+    steadies = steady_temperatures(CYCLE, screws, OIL, axes, nodes)
+    assert all(s is not None for s in steadies)
+    together = temperature_histories(CYCLE, screws, nodes, 20_000.0,
+                                     [s for s in steadies if s is not None], points=30)  # fmt: skip
+    for screw, axis, node, steady, (times, temps) in zip(
+        screws, axes, nodes, steadies, together, strict=True
+    ):
+        own_times, own = temperature_history(CYCLE, screw, OIL, axis, node, 20_000.0,
+                                             points=30, steady=steady)  # fmt: skip
+        assert np.array_equal(times, own_times)
+        assert temps[0] == node.ambient
+        # One integration of independent equations, the steps shared: each node within
+        # the integrator's tolerance (rtol 1e-8 on the temperature) of its own run.
+        np.testing.assert_allclose(temps - node.ambient, own - node.ambient, rtol=1e-5,
+                                   atol=1e-6)  # fmt: skip
+    # the settled node holds its steady temperature, as alone
+    assert together[1][1][-1] == steadies[1].temperature  # type: ignore[union-attr]

@@ -228,10 +228,11 @@ def test_the_batched_selection_is_the_candidate_by_candidate_one() -> None:
             if key == "seconds" or math.isnan(value):
                 continue
             # The front and the pick are evaluated alone again: their figures are the
-            # lone ones exactly. The others' temperatures come from the integrator (rtol
-            # 1e-8) started from tables equal to rounding: within its tolerance.
+            # lone ones exactly. The others' temperatures come from the nodes integrated
+            # together (rtol 1e-8 on the temperature in °C, over some hundred steps), not
+            # step for step as alone: their rises agree within 1e-5 (5e-7 seen).
             exact = i in batched.front or i == batched.recommended
-            assert b.figures[key] == pytest.approx(value, rel=1e-12 if exact else 1e-6), key
+            assert b.figures[key] == pytest.approx(value, rel=1e-12 if exact else 1e-5), key
     # A candidate a row fails at its nominal value has no P(NOT OK) drawn; the others do.
     for e in batched.evaluated:
         assert math.isnan(e.figures["p_not_ok"]) != (e.feasible and e.figures["energy_J"] > 0)

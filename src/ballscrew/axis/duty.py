@@ -274,6 +274,9 @@ MAX_RUN_TIME = 100_000 * 3600.0
 """The longest run time [s] for the temperature reached (100 000 h, about 11 years of
 running; a repeated cycle settles within hours)."""
 
+HISTORY_POINTS = 50
+"""The times at which a run keeps the temperature history."""
+
 MAX_STEADY_SPEEDS = 1000
 """The most speeds of continuous running a run solves the steady temperature for (each costs
 a friction call per bisection step: 1000 take about a second)."""
@@ -438,8 +441,8 @@ def _one_model(
         steady = solved or steady_temperature(profile, case.screw, case.lubricant, axis, node,
                                               model=name, **params)  # fmt: skip
         times, history = temperature_history(profile, case.screw, case.lubricant, axis, node,
-                                             run_time, model=name, points=50, steady=steady,
-                                             **params)  # fmt: skip
+                                             run_time, model=name, points=HISTORY_POINTS,
+                                             steady=steady, **params)  # fmt: skip
     except BallScrewInputError as exc:
         if thermal_failure == "raise":
             raise

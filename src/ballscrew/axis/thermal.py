@@ -60,6 +60,7 @@ __all__ = [
     "steady_at_speeds",
     "steady_temperature",
     "steady_temperatures",
+    "temperature_histories",
     "temperature_history",
 ]
 
@@ -173,14 +174,16 @@ def convection_coefficient(
     return result
 
 
-def _forced(d: float, re: FloatArray) -> FloatArray:
+def _forced(d: float | FloatArray, re: FloatArray) -> FloatArray:
     """Kreith's rotating cylinder, h [W/(m²·K)] at the rotational Reynolds number ``re``."""
     k, pr = AIR["conductivity"], AIR["prandtl"]
     forced: FloatArray = 0.133 * re ** (2 / 3) * pr ** (1 / 3) * k / d
     return forced
 
 
-def _natural(d: float, surface: npt.ArrayLike, ambient: float) -> FloatArray:
+def _natural(
+    d: float | FloatArray, surface: npt.ArrayLike, ambient: float | FloatArray
+) -> FloatArray:
     """Churchill and Chu's horizontal cylinder, h [W/(m²·K)] at the surface temperature."""
     k, nu, pr = AIR["conductivity"], AIR["kinematic_viscosity"], AIR["prandtl"]
     surf = np.asarray(surface, dtype=float)
@@ -320,6 +323,9 @@ class SteadyState:
     )
     """The mean friction power on :func:`temperature_history`'s grid (temperatures [°C],
     powers [W]), where it was computed with the balance (:func:`steady_temperatures`)."""
+    history: tuple[FloatArray, FloatArray] | None = field(default=None, repr=False, compare=False)
+    """The temperature history (times [s], temperatures [°C]), where it was integrated with
+    other screws' (:func:`temperature_histories`)."""
 
 
 TABLE_STEP = 5.0
@@ -590,7 +596,7 @@ def temperature_history(
     The mean power per cycle is tabulated over temperature (every 2 K up to
     the steady temperature) and the heat balance integrated with scipy's
     ``solve_ivp``. ``steady`` is the cycle's :func:`steady_temperature`, if
-    already solved.
+    already solved (with its history, if integrated, :func:`temperature_histories`).
     """
     from scipy.integrate import solve_ivp
 
@@ -598,6 +604,9 @@ def temperature_history(
     if steady is None:
         steady = steady_temperature(profile, screw, lubricant, axis, node, model=model,
                                     **parameters)  # fmt: skip
+    times = np.linspace(0.0, duration, points)
+    if steady.history is not None and np.array_equal(steady.history[0], times):
+        return steady.history
     speed = _rms_speed(profile, screw)
     grid = history_grid(node, steady.temperature)
     given = steady.history_powers
@@ -614,7 +623,6 @@ def temperature_history(
         loss = conductance(temp) * (temp - node.ambient)
         return np.array([(power - loss) / capacity])
 
-    times = np.linspace(0.0, duration, points)
     # Past SETTLED time constants C/G the temperature is within e^-SETTLED of the steady one:
     # the balance is integrated that far at most, and the steady temperature held after
     # (a run time of years otherwise held the solver for minutes).
@@ -624,3 +632,77 @@ def temperature_history(
     sol = solve_ivp(rate, (0.0, span), [node.ambient], t_eval=inside, rtol=1e-8, atol=1e-8)
     held = np.full(times.size - inside.size, steady.temperature)
     return times, np.concatenate([np.asarray(sol.y[0]), held])
+
+
+def temperature_histories(
+    profile: Profile,
+    screws: list[BallScrew],
+    nodes: list[ThermalNode],
+    duration: float,
+    steadies: list[SteadyState],
+    *,
+    points: int = 200,
+) -> list[tuple[FloatArray, FloatArray]]:
+    """:func:`temperature_history` of many screws, their nodes integrated together.
+
+    Each screw's balance solved with its power table (``steadies``, from
+    :func:`steady_temperatures`, which carry it), the nodes one system of
+    independent equations for ``solve_ivp``: the same equations, tables and
+    tolerances (rtol 1e-8), the steps shared. Each temperature equals the
+    screw's own integration within that tolerance (not to rounding: the steps
+    differ). Past its :data:`SETTLED` time constants a node holds its steady
+    temperature, as alone.
+    """
+    from scipy.integrate import solve_ivp
+
+    check_positive("duration", duration, "s")
+    n = len(screws)
+    times = np.linspace(0.0, duration, points)
+    if n == 0:
+        return []
+    tables = [st.history_powers for st in steadies]
+    if any(t is None for t in tables):
+        raise BallScrewInputError("steadies", "(no power table)", "steady_temperatures' states")
+    grids = [t[0] for t in tables if t is not None]
+    size = max(g.size for g in grids)
+    powers = np.empty((n, size))
+    for i, t in enumerate(tables):
+        assert t is not None
+        powers[i, : t[1].size], powers[i, t[1].size :] = t[1], t[1][-1]
+    first = np.array([g[0] for g in grids])
+    step = np.array([g[1] - g[0] for g in grids])
+    last = np.array([g.size - 1 for g in grids])
+    d = np.array([s.pitch_diameter for s in screws])
+    ambient = np.array([node.ambient for node in nodes])
+    area = np.pi * d * np.array([node.screw_length for node in nodes])
+    machine = np.array([0.0 if node.machine_resistance is None else 1.0 / node.machine_resistance
+                        for node in nodes])  # fmt: skip
+    capacity = np.array([node.heat_capacity(s) for node, s in zip(nodes, screws, strict=True)])
+    speeds = [_rms_speed(profile, s) for s in screws]
+    for node, s, speed in zip(nodes, screws, speeds, strict=True):
+        _conductance(node, s, speed, node.ambient)  # checks the inputs, warns once
+    forced = _forced(d, np.abs(np.array(speeds)) * d**2 / AIR["kinematic_viscosity"])
+    rows = np.arange(n)
+
+    def rate(_t: float, y: FloatArray) -> FloatArray:
+        # np.interp on each screw's even grid: clamped at its ends
+        pos = np.clip((y - first) / step, 0.0, last)
+        j = np.minimum(pos.astype(int), last - 1)
+        power = powers[rows, j] + (pos - j) * (powers[rows, j + 1] - powers[rows, j])
+        g = np.maximum(forced, _natural(d, y, ambient)) * area + machine
+        out: FloatArray = (power - g * (y - ambient)) / capacity
+        return out
+
+    steady = np.array([st.temperature for st in steadies])
+    g_steady = np.maximum(forced, _natural(d, steady, ambient)) * area + machine
+    span = np.minimum(duration, SETTLED * capacity / g_steady)
+    inside = times[times <= float(np.max(span))]
+    sol = solve_ivp(rate, (0.0, float(np.max(span))), ambient, t_eval=inside, rtol=1e-8,
+                    atol=1e-8)  # fmt: skip
+    out = []
+    for i in range(n):
+        own = times <= span[i]
+        temps = np.full(times.size, steady[i])
+        temps[own] = np.asarray(sol.y[i])[: int(np.sum(own))]
+        out.append((times, temps))
+    return out

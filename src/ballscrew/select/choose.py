@@ -18,6 +18,7 @@ none, the least largest utilisation.
 
 from __future__ import annotations
 
+import dataclasses
 import difflib
 import math
 import time
@@ -29,10 +30,10 @@ import numpy as np
 
 from .. import lubricants
 from ..axis.check import AxisCheck, run_check
-from ..axis.duty import motion_plausibility, run_energy
+from ..axis.duty import HISTORY_POINTS, motion_plausibility, run_energy
 from ..axis.motion import Profile
 from ..axis.setup import axis_setup
-from ..axis.thermal import SteadyState, steady_temperatures
+from ..axis.thermal import SteadyState, steady_temperatures, temperature_histories
 from ..errors import BallScrewInputError, FloatArray
 from ..io.case import Case, parse_case
 from ..io.motors import MotorRow
@@ -258,14 +259,17 @@ BATCH = 64
 
 
 def _prepared(
-    found: Sequence[Candidate], profile: Profile, model: str
+    found: Sequence[Candidate], profile: Profile, model: str, run_time: float
 ) -> list[tuple[Case | None, SteadyState | None]]:
     """Each candidate's parsed case and its steady temperature, solved many at a time.
 
     The heat balance of the candidates that share an oil and model parameters is
     solved together (:func:`~ballscrew.axis.thermal.steady_temperatures`: the
     same balance, table and iteration, the friction of many screws in one call;
-    equal to the candidate's own to the rounding of the friction, 1e-15). A
+    equal to the candidate's own to the rounding of the friction, 1e-15), and their
+    temperature histories integrated together
+    (:func:`~ballscrew.axis.thermal.temperature_histories`: within the integrator's
+    tolerance of the candidate's own). A
     candidate that does not parse, whose move its screw cannot take, or whose
     balance does not close gets None: :func:`evaluate` then runs it alone and
     rejects it with its error.
@@ -292,8 +296,15 @@ def _prepared(
                 [s.axis for _, _, s in part], [s.node for _, _, s in part], model=model,
                 **first.parameters_for(model),
             )  # fmt: skip
-            for (i, case, _), st in zip(part, solved, strict=True):
-                out[i] = (case, st)
+            closed = [(j, st) for j, st in enumerate(solved) if st is not None]
+            histories = temperature_histories(
+                profile, [part[j][1].screw for j, _ in closed],
+                [part[j][2].node for j, _ in closed], run_time, [st for _, st in closed],
+                points=HISTORY_POINTS,
+            )  # fmt: skip
+            for (j, st), history in zip(closed, histories, strict=True):
+                i, case, _ = part[j]
+                out[i] = (case, dataclasses.replace(st, history=history))
     return out
 
 
@@ -430,7 +441,7 @@ def run_select(
                            preloads=preloads, oils=list(oils) or [None],
                            default_oil=case.lubricant.name, sources=sources, nuts=nuts,
                            motors=motors, screw_prices=screw_prices)  # fmt: skip
-    ready = _prepared(found, profile, model)
+    ready = _prepared(found, profile, model, run_time)
     evaluated = [
         evaluate(c, profile, model=model, cycles=cycles, temperature=temperature,
                  run_time=run_time, move=move, parsed=parsed, steady=steady)[0]
