@@ -44,7 +44,7 @@ from ..errors import (
     check_positive,
 )
 from ..geometry import BallScrew
-from ..helix import JIT_LOAD_POINTS
+from ..helix import kernel_scope
 from ..lubricant import Lubricant
 from ..materials import STEEL_DENSITY, STEEL_SPECIFIC_HEAT
 from ..numerics import illinois
@@ -383,6 +383,9 @@ def steady_temperature(
     return SteadyState(t, power, g * (t - node.ambient), g)
 
 
+MAX_POINTS = 500_000
+"""The most (screw, temperature, sample) points :func:`steady_temperatures` evaluates at once."""
+
 TABLE_STAGES = (5, 13)
 """The table nodes :func:`steady_temperatures` evaluates first (up to the 5th, then the 13th,
 with the last), before the rest for the screws not yet balanced."""
@@ -437,13 +440,13 @@ def steady_temperatures(
     def powers(rows: npt.NDArray[np.intp], temps: FloatArray) -> FloatArray:
         """Mean power of the screws ``rows`` at their temperatures ``temps`` (rows x k)."""
         out: FloatArray = np.empty(temps.shape)
-        # Calls below JIT_LOAD_POINTS: the friction takes the path the screw-by-screw
-        # calls of the process take (the compiled helix kernel is not loaded by this).
-        step = max(1, (JIT_LOAD_POINTS - 1) // (temps.shape[1] * width))
+        # The helix's compiled loop for these calls alone (kernel_scope): every screw's
+        # rows at once; the process's other calls keep their path and their numbers.
+        step = max(1, MAX_POINTS // (temps.shape[1] * width))
         for start in range(0, rows.size, step):
             part = slice(start, start + step)
             r = rows[part]
-            with warnings.catch_warnings():
+            with warnings.catch_warnings(), kernel_scope():
                 warnings.simplefilter("ignore")
                 torque = friction_torques(
                     [screws[i] for i in r], lubricant, speed=omega[r, None, :],

@@ -3,11 +3,24 @@
 Each candidate (:mod:`.pool`) is its own case: the user's axis, motor,
 check limits and duty with the screw replaced. It runs through
 :func:`~ballscrew.axis.duty.run_energy` and :func:`~ballscrew.axis.check.run_check`
-exactly as ``ballscrew check`` runs it, so a candidate's figures are those
-``ballscrew check --case CANDIDATE.toml`` prints. A candidate is feasible when
-no row of its check is NOT OK (every utilisation at most 1); a rejected one
-names its binding constraint, the row with the largest utilisation (or the
-input error that stopped it, e.g. a load above its rating).
+as ``ballscrew check`` runs it. A candidate is feasible when no row of its
+check is NOT OK (every utilisation at most 1); a rejected one names its
+binding constraint, the row with the largest utilisation (or the input error
+that stopped it, e.g. a load above its rating).
+
+Many candidates cost less than many checks (:func:`_prepared`): the heat
+balances of the candidates that share an oil are solved together
+(:func:`~ballscrew.axis.thermal.steady_temperatures`, equal to each one's own
+to rounding) and their temperature histories integrated together
+(:func:`~ballscrew.axis.thermal.temperature_histories`, within the
+integrator's tolerance of each one's own: 1e-5 relative on the rise); the
+run leaves out what the check does not read (``for_check``), and the check's
+Monte Carlo, which only adds each row's P(NOT OK), runs only for a candidate
+no row fails at its nominal value (the verdicts are the nominal values'). The
+verdicts and binding rows are therefore those of the lone checks; the front
+members and the recommended candidate are evaluated alone again, so their
+figures are exactly those ``ballscrew check --case CANDIDATE.toml`` prints,
+and a candidate within :data:`NEAR` of a utilisation bound too.
 
 The front is the non-dominated set of the feasible candidates over the
 objectives picked (:data:`OBJECTIVES`), sorted by pymoo's non-dominated
