@@ -383,7 +383,7 @@ def steady_temperature(
     return SteadyState(t, power, g * (t - node.ambient), g)
 
 
-MAX_POINTS = 500_000
+MAX_POINTS = 2_000_000
 """The most (screw, temperature, sample) points :func:`steady_temperatures` evaluates at once."""
 
 TABLE_STAGES = (5, 13)

@@ -267,8 +267,9 @@ NEAR = 1e-5
 """How near a candidate's largest utilisation to 1 or :data:`RECOMMEND_BELOW` (relative) has it
 evaluated alone, so that its verdict and the pick are the lone check's."""
 
-BATCH = 64
-"""The most candidates whose heat balances are solved in one friction call."""
+BATCH = 2000
+"""The most candidates whose heat balances are solved together (the friction calls of
+:func:`~ballscrew.axis.thermal.steady_temperatures` bound their own points)."""
 
 
 def _prepared(
