@@ -10,17 +10,21 @@ largest and median CPU time of one candidate.
 ``--grid`` runs the selection of issue 39 instead: at least 2000 candidates on a move
 of about 1000 samples (a 100 mm stroke at 12 m/min, 1137 samples), against the target
 of 30 s of CPU. The candidates are a grid built from the bundled catalogue: every row
-with a load rating x every preload class (light, medium, heavy; none for the single
-nuts) x every bundled oil x up to three ball sizes (the row's own and those a
-sixteenth of an inch, 1.5875 mm, smaller and larger, the neighbouring sizes, where
-they fit the lead; the row's load ratings are kept, so these are a design space for
-the benchmark, not catalogue parts). ``--limit N`` evaluates N of them spread over
-the grid (every k-th), to time a sample.
+with a load rating x every preload class (light, medium; heavy on double nuts only) x
+every bundled oil x up to five ball sizes (the row's own and those one and two
+sixteenths of an inch, 1.5875 mm, smaller and larger, where they fit the lead; the
+row's load ratings are kept, so these are a design space for the benchmark, not
+catalogue parts): 2136 candidates. ``--limit N`` evaluates N of them spread over the
+grid (every k-th), to time a sample.
 
-Each candidate runs ``run_energy`` and ``run_check`` on its own, as ``ballscrew
-check`` runs it (so a front member's numbers equal its lone check): the check's
-Monte Carlo on the move's distinct samples, the heat balance by the friction model
-at each temperature it tries.
+The selection evaluates every candidate as ``ballscrew.select`` does
+(``docs/selection.md``): the heat balances of the candidates that share an oil solved
+together (``thermal.steady_temperatures``, the friction of many screws per call) and
+their temperature histories integrated together, then each candidate's cycle and check
+(``run_energy(..., for_check=True)``, ``run_check``), the check's Monte Carlo only for
+a candidate no row fails at its nominal value; the front and the recommended candidate
+are evaluated again alone, so their numbers are their lone ``ballscrew check``'s.
+"one candidate" below is a candidate's own part, after the batched heat balances.
 """
 
 from __future__ import annotations
@@ -52,6 +56,8 @@ GRID_MOVE = ("stroke=100 mm, feed=12 m/min, acceleration=3 m/s^2, force=1.5 kN, 
              "force_from=20 mm, force_to=80 mm")  # fmt: skip
 BALL_STEP = 1.5875e-3
 """The step between ball sizes of the grid [m] (1/16 in)."""
+BALL_STEPS = (-2, -1, 1, 2)
+"""The ball sizes of the grid besides each row's own, in steps of :data:`BALL_STEP`."""
 
 
 def grid(case: Case) -> list[Candidate]:
@@ -59,7 +65,7 @@ def grid(case: Case) -> list[Candidate]:
     base = candidates(case.text, preloads=tuple(PRELOAD_CLASSES), oils=lubricants.names(),
                       default_oil=case.lubricant.name)  # fmt: skip
     out = list(base)
-    for step in (-BALL_STEP, BALL_STEP):
+    for step in (k * BALL_STEP for k in BALL_STEPS):
         for c in base:
             ball = c.row.ball_diameter
             if ball is None or not 0.5 * ball < ball + step < 0.9 * c.row.lead:
@@ -116,8 +122,9 @@ def main() -> None:
               f"{max(n, 2000)} candidates take {per_2000:.1f} s: {verdict} it "
               f"(x{per_2000 / TARGET_S:.2f})")  # fmt: skip
     if checked:
-        print(f"one checked candidate: median {statistics.median(checked):.3f} s, "
-              f"largest {max(checked):.3f} s of CPU")  # fmt: skip
+        print(f"one checked candidate, its own part (after the batched heat balances): median "
+              f"{statistics.median(checked) * 1e3:.1f} ms, largest {max(checked) * 1e3:.1f} ms "
+              "of CPU")  # fmt: skip
     print(f"front: {len(result.front)} of {len(result.feasible)} feasible; recommended: "
           f"{result.evaluated[result.recommended].name}")  # fmt: skip
 

@@ -16,10 +16,12 @@ numpy path.
 
 from __future__ import annotations
 
+import contextlib
+import contextvars
 import functools
 import math
 import os
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from typing import Any
 
 import numpy as np
@@ -172,16 +174,39 @@ def shares(
             force[p] = side_force
 
 
+_SCOPED: contextvars.ContextVar[bool] = contextvars.ContextVar("ballscrew_kernel", default=False)
+_FOR_ALL = [False]
+"""Whether the process loaded the kernel outside a :func:`scoped` block (for every call)."""
+
+
 def enabled(*, load: bool = True) -> bool:
     """Whether the compiled kernel is to be used: numba installed and not switched off.
 
-    With ``load=False``, only if this process has loaded it already (no import of numba).
+    With ``load=False``, only if this process has loaded it already (no import of numba)
+    for every call, not only inside a :func:`scoped` block; inside one, always.
     """
     if os.environ.get("BALLSCREW_JIT", "1").strip().lower() in ("0", "false", "no", "off"):
         return False
-    if not load and _compiled.cache_info().currsize == 0:
+    if _SCOPED.get():
+        return _compiled() is not None
+    if not load and (not _FOR_ALL[0] or _compiled.cache_info().currsize == 0):
         return False
-    return _compiled() is not None
+    _FOR_ALL[0] = _compiled() is not None
+    return _FOR_ALL[0]
+
+
+@contextlib.contextmanager
+def scoped() -> Iterator[None]:
+    """The kernel for the calls inside the block (loaded if need be), from its least size on.
+
+    Outside the block the process keeps the path it had: a kernel loaded only here is
+    not used by the other calls, whose numbers stay those of a process without it.
+    """
+    token = _SCOPED.set(True)
+    try:
+        yield
+    finally:
+        _SCOPED.reset(token)
 
 
 @functools.cache

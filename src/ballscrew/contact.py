@@ -184,7 +184,21 @@ def ellipticity_exact(radius_ratio: ArrayLike) -> FloatArray:
         # are one): solved once per process.
         single: FloatArray = np.full(ratio_in.shape, _ellipticity_one(float(ratio_in.flat[0])))
         return single
+    if ratio_in.size <= _CACHED_GEOMETRIES:
+        # Many screws' geometries (friction_torques): the same array comes back at every
+        # call of a heat balance; the solve of that very array is kept (same numbers).
+        ratios = np.ascontiguousarray(ratio_in, dtype=np.float64)
+        return _ellipticity_many(ratios.tobytes(), ratios.shape).copy()
     return _ellipticity_solve(ratio_in)
+
+
+_CACHED_GEOMETRIES = 4096
+"""The most distinct geometries an array of :func:`ellipticity_exact` may hold to be cached."""
+
+
+@functools.lru_cache(maxsize=256)
+def _ellipticity_many(key: bytes, shape: tuple[int, ...]) -> FloatArray:
+    return _ellipticity_solve(np.frombuffer(key, dtype=np.float64).reshape(shape))
 
 
 @functools.lru_cache(maxsize=1024)

@@ -81,6 +81,7 @@ References
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import math
 from collections.abc import Sequence
@@ -101,6 +102,7 @@ __all__ = [
     "SlipContact",
     "SlipShare",
     "ball_slip_balance",
+    "kernel_scope",
     "load_kernel",
     "transverse_slip_loss",
 ]
@@ -317,6 +319,19 @@ def load_kernel() -> bool:
     ``BALLSCREW_JIT=0``.
     """
     return _helix_kernel.enabled()
+
+
+def kernel_scope() -> contextlib.AbstractContextManager[None]:
+    """A block whose calls use the compiled slip-share loop (loaded if need be).
+
+    For many screws' friction in one call (a selection's heat balances): the
+    loop solves every screw's rows at once, where the numpy path takes them one
+    by one. Outside the block the process keeps its path: a kernel loaded only
+    for the block is not used by the other calls, so their numbers stay those of
+    a process without it (the two paths agree to rounding, not bit for bit).
+    Without numba, or with ``BALLSCREW_JIT=0``, the numpy path.
+    """
+    return _helix_kernel.scoped()
 
 
 def _check_contacts(contacts: Sequence[SlipContact]) -> None:

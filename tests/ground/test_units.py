@@ -324,3 +324,14 @@ def test_a_unit_of_any_text_is_a_known_unit_or_refused(number: float, junk: str)
 
     factor = registry().Quantity(1.0, parse_unit("x", junk.strip())).to("N").magnitude
     assert got == pytest.approx(number * factor, rel=1e-12), text
+
+
+def test_a_quantity_read_again_gives_the_same_number_and_a_note_every_time() -> None:
+    # to_si keeps what it read (a selection parses one case text per candidate): the
+    # number read again is the first reading's, and a reading with a note is not kept,
+    # so that each read tells it.
+    assert to_si("lead", "10 mm", "m/turn") == to_si("lead", "10 mm", "m/turn") == 0.01
+    for _ in range(2):
+        notes: list = []  # type: ignore[type-arg]
+        assert to_si("speed", "50 Hz", "rad/s", notes) == pytest.approx(2 * math.pi * 50)
+        assert len(notes) == 1 and "revolutions per second" in str(notes[0])

@@ -327,3 +327,15 @@ def test_exact_hertz_solution_closes_the_gap_by_elasticity(
         assert _boussinesq_displacement(c, e_prime, x, y) == pytest.approx(gap_closed, rel=1e-9), (
             label
         )
+
+
+def test_many_geometries_solved_again_give_the_first_solves_numbers() -> None:
+    from ballscrew.contact import _ellipticity_solve, ellipticity_exact
+
+    ratios = np.array([[1.5, 3.0, 7.0], [12.0, 20.0, 2.5]])
+    first = ellipticity_exact(ratios)
+    first[0, 0] = -1.0  # the caller's array: the kept solve is not touched
+    again = ellipticity_exact(ratios)
+    # The kept solve of this very array: the same numbers bit for bit.
+    assert np.array_equal(again, _ellipticity_solve(ratios))
+    assert again[0, 0] > 1.0

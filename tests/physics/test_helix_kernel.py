@@ -225,3 +225,28 @@ def test_load_kernel_says_whether_the_compiled_loop_is_used(
     assert _helix_kernel.enabled(load=False)
     monkeypatch.setenv("BALLSCREW_JIT", "0")
     assert helix.load_kernel() is False
+
+
+def test_a_kernel_scope_serves_its_block_alone(monkeypatch: pytest.MonkeyPatch) -> None:
+    pytest.importorskip("numba")
+    calls: list[int] = []
+    real = _helix_kernel.run
+
+    def spy(*args: object, compiled: bool = True) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        calls.append(np.shape(args[0])[1])  # type: ignore[arg-type]
+        return real(*args, compiled=compiled)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(_helix_kernel, "run", spy)
+    monkeypatch.setenv("BALLSCREW_JIT", "1")
+    monkeypatch.setattr(_helix_kernel, "_FOR_ALL", [False])
+    n = helix.JIT_MIN_POINTS
+    contacts = _random_contacts(n, False)
+    _helix_kernel._compiled.cache_clear()
+    before = transverse_slip_loss(contacts, 2.5e-4)  # a process without the kernel
+    with helix.kernel_scope():
+        transverse_slip_loss(contacts, 2.5e-4)
+    assert calls == [n]  # inside: the kernel, loaded for the block, below JIT_LOAD_POINTS
+    after = transverse_slip_loss(contacts, 2.5e-4)
+    # outside: the numpy path again, its numbers bit for bit those before the block
+    assert calls == [n]
+    assert np.array_equal(after.power, before.power)

@@ -252,10 +252,17 @@ def _span(run: EnergyRun, notes: list[str]) -> float:
     return span
 
 
-def run_check(run: EnergyRun, model: str | None = None) -> AxisCheck:
+def run_check(
+    run: EnergyRun, model: str | None = None, *, draws_when_failing: bool = True
+) -> AxisCheck:
     """Every criterion of the axis over ``run``'s cycle for ``model`` (module docstring).
 
-    ``model`` defaults to the run's first. Raises
+    ``model`` defaults to the run's first. The verdicts are those of the rows'
+    nominal values; the Monte Carlo adds each row's P(NOT OK). With
+    ``draws_when_failing=False`` it is left out when a row already fails at its
+    nominal value (the verdict, every row's value and the binding row are the
+    same; no row carries an uncertainty): ``ballscrew select`` rejects such a
+    candidate without drawing. Raises
     :class:`~ballscrew.errors.BallScrewInputError` naming the field when the
     stroke does not fit between the supports or a motor is given without its
     rotor inertia, and the heat balance's error when ``run`` kept one
@@ -300,7 +307,10 @@ def run_check(run: EnergyRun, model: str | None = None) -> AxisCheck:
         "axial loads: inertia, gravity and the process force of the move; no guideway "
         "friction (not in the case)"
     )
-    rows = _with_uncertainty(run, name, energy, force, turns, rows, stiffness, notes)
+    if draws_when_failing or all(r.verdict != "NOT OK" for r in rows):
+        rows = _with_uncertainty(run, name, energy, force, turns, rows, stiffness, notes)
+    else:
+        notes.append("uncertainty: not drawn (a row fails at its nominal value)")
     marked = [f"{a.field} = {a.value} ({a.reason})" for a in case.assumptions]
     return AxisCheck(case.title, name, rows, marked + list(run.assumptions) + notes, life,
                      stiffness, motor, thermal, check_inputs(run, name))  # fmt: skip

@@ -14,8 +14,9 @@ optionally the steady temperature of continuous running at given speeds.
 from __future__ import annotations
 
 import dataclasses
+import math
 import warnings
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -41,6 +42,7 @@ from .motion import Profile, back_and_forth, chain, check_force_window, read_tra
 from .setup import axis_setup
 from .thermal import (
     SteadyAtSpeed,
+    SteadyState,
     ThermalNode,
     nut_length,
     steady_at_speeds,
@@ -104,7 +106,7 @@ class ModelEnergy:
     cycles: int
     duration: float
     weight_reverse_efficiency: float
-    self_locking: bool
+    self_locking: bool | None
     history: tuple[FloatArray, FloatArray] | None = field(default=None, repr=False)
     steady_temperature: float | None = None
     final_temperature: float | None = None
@@ -272,6 +274,9 @@ MAX_RUN_TIME = 100_000 * 3600.0
 """The longest run time [s] for the temperature reached (100 000 h, about 11 years of
 running; a repeated cycle settles within hours)."""
 
+HISTORY_POINTS = 50
+"""The times at which a run keeps the temperature history."""
+
 MAX_STEADY_SPEEDS = 1000
 """The most speeds of continuous running a run solves the steady temperature for (each costs
 a friction call per bisection step: 1000 take about a second)."""
@@ -289,6 +294,8 @@ def run_energy(
     move: dict[str, float] | None = None,
     motion_field: str = "--move",
     thermal_failure: str = "raise",
+    steady: Mapping[str, SteadyState] | None = None,
+    for_check: bool = False,
 ) -> EnergyRun:
     """Each model's energy, torques and temperatures over ``profile`` (module docstring).
 
@@ -326,6 +333,16 @@ def run_energy(
         the screw cannot shed) raises its input error; "keep": the error is
         kept in each :class:`ModelEnergy` and the cycle's figures are returned
         (the web page shows the energy, and the check says why it cannot run).
+    steady : mapping, optional
+        Model name -> its :func:`~ballscrew.axis.thermal.steady_temperature` of
+        this case over ``profile``, already solved (``ballscrew select`` solves
+        many screws' together, :func:`~ballscrew.axis.thermal.steady_temperatures`);
+        a model not in it is solved here.
+    for_check : bool
+        True: only what :func:`~ballscrew.axis.check.run_check` reads. The
+        back-driving verdicts (``weight_reverse_efficiency`` NaN, ``self_locking``
+        None) and the cycle's friction energy at the final temperature (None) are
+        left out: three friction calls a candidate of ``ballscrew select`` spares.
     """
     if thermal_failure not in ("raise", "keep"):
         raise BallScrewInputError("thermal_failure", thermal_failure, "'raise' or 'keep'")
@@ -352,7 +369,15 @@ def run_energy(
         setup_notes, m, findings=found, run_time=run_time,
     )  # fmt: skip
     results = {
-        name: _one_model(run, name, run_time, steady_speeds, thermal_failure)
+        name: _one_model(
+            run,
+            name,
+            run_time,
+            steady_speeds,
+            thermal_failure,
+            (steady or {}).get(name),
+            for_check,
+        )
         for name in model_names
     }
     return dataclasses.replace(run, results=results)
@@ -394,7 +419,7 @@ def _axis_limits(profile: Profile, axis: Axis, motion_field: str) -> list[Findin
 
 def _one_model(
     run: EnergyRun, name: str, run_time: float, steady_speeds: npt.ArrayLike | None,
-    thermal_failure: str,
+    thermal_failure: str, solved: SteadyState | None = None, for_check: bool = False,
 ) -> ModelEnergy:  # fmt: skip
     """One model's cycle (run once), back-driving verdicts and temperatures."""
     case, profile, axis, node = run.case, run.profile, run.axis, run.node
@@ -403,25 +428,28 @@ def _one_model(
         warnings.simplefilter("ignore")  # the speed limits are kept in the result
         cycle = axis_cycle(profile, case.screw, case.lubricant, axis,
                            temperature=run.temperature, model=name, **params)  # fmt: skip
-    weight = weight_back_driving(
-        case.screw, case.lubricant, axis, temperature=run.temperature, model=name, **params
-    )
-    locking = self_locking(
-        case.screw, case.lubricant, temperature=run.temperature, model=name, **params
-    )
+    weight, locking = math.nan, None
+    if not for_check:
+        weight = weight_back_driving(
+            case.screw, case.lubricant, axis, temperature=run.temperature, model=name, **params
+        )
+        locking = self_locking(
+            case.screw, case.lubricant, temperature=run.temperature, model=name, **params
+        )
     base = ModelEnergy(cycle, run.cycles, profile.duration, weight, locking)
     try:
-        steady = steady_temperature(profile, case.screw, case.lubricant, axis, node, model=name,
-                                    **params)  # fmt: skip
+        steady = solved or steady_temperature(profile, case.screw, case.lubricant, axis, node,
+                                              model=name, **params)  # fmt: skip
         times, history = temperature_history(profile, case.screw, case.lubricant, axis, node,
-                                             run_time, model=name, points=50, steady=steady,
-                                             **params)  # fmt: skip
+                                             run_time, model=name, points=HISTORY_POINTS,
+                                             steady=steady, **params)  # fmt: skip
     except BallScrewInputError as exc:
         if thermal_failure == "raise":
             raise
         return dataclasses.replace(base, thermal_error=exc)
-    warm = friction_energy(profile, case.screw, case.lubricant, axis,
-                           temperature=float(history[-1]), model=name, **params)  # fmt: skip
+    warm = None if for_check else friction_energy(
+        profile, case.screw, case.lubricant, axis, temperature=float(history[-1]), model=name,
+        **params)  # fmt: skip
     at = None
     if steady_speeds is not None:
         at = steady_at_speeds(case.screw, case.lubricant, node, steady_speeds,

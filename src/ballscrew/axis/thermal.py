@@ -27,13 +27,14 @@ from __future__ import annotations
 
 import math
 import warnings
-from dataclasses import dataclass
+from collections.abc import Callable
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 import numpy.typing as npt
 
-from ..chain import friction_torque
+from ..chain import friction_torque, friction_torques
 from ..errors import (
     BallScrewInputError,
     BallScrewValidityWarning,
@@ -43,6 +44,7 @@ from ..errors import (
     check_positive,
 )
 from ..geometry import BallScrew
+from ..helix import kernel_scope
 from ..lubricant import Lubricant
 from ..materials import STEEL_DENSITY, STEEL_SPECIFIC_HEAT
 from ..numerics import illinois
@@ -57,6 +59,8 @@ __all__ = [
     "mean_powers",
     "steady_at_speeds",
     "steady_temperature",
+    "steady_temperatures",
+    "temperature_histories",
     "temperature_history",
 ]
 
@@ -156,7 +160,7 @@ def convection_coefficient(
     49.1
     """
     d = float(check_positive("diameter", diameter, "m"))
-    k, nu, pr = AIR["conductivity"], AIR["kinematic_viscosity"], AIR["prandtl"]
+    nu = AIR["kinematic_viscosity"]
     re = np.abs(np.asarray(speed, dtype=float)) * d**2 / nu
     if re.size and float(np.max(re)) > KREITH_REYNOLDS_LIMIT:
         warnings.warn(
@@ -166,14 +170,29 @@ def convection_coefficient(
             BallScrewValidityWarning,
             stacklevel=2,
         )
-    forced = 0.133 * re ** (2 / 3) * pr ** (1 / 3) * k / d
+    result: FloatArray = np.maximum(_forced(d, re), _natural(d, surface, ambient))
+    return result
+
+
+def _forced(d: float | FloatArray, re: FloatArray) -> FloatArray:
+    """Kreith's rotating cylinder, h [W/(m²·K)] at the rotational Reynolds number ``re``."""
+    k, pr = AIR["conductivity"], AIR["prandtl"]
+    forced: FloatArray = 0.133 * re ** (2 / 3) * pr ** (1 / 3) * k / d
+    return forced
+
+
+def _natural(
+    d: float | FloatArray, surface: npt.ArrayLike, ambient: float | FloatArray
+) -> FloatArray:
+    """Churchill and Chu's horizontal cylinder, h [W/(m²·K)] at the surface temperature."""
+    k, nu, pr = AIR["conductivity"], AIR["kinematic_viscosity"], AIR["prandtl"]
     surf = np.asarray(surface, dtype=float)
     dt = np.maximum(np.abs(surf - ambient), 1e-9)
     film = 0.5 * (surf + ambient) + 273.15
     ra = 9.80665 * (1 / film) * dt * d**3 / (nu * nu / pr)
     natural = (0.60 + 0.387 * ra ** (1 / 6) / (1 + (0.559 / pr) ** (9 / 16)) ** (8 / 27)) ** 2
-    result: FloatArray = np.maximum(forced, natural * k / d)
-    return result
+    h: FloatArray = natural * k / d
+    return h
 
 
 def mean_powers(
@@ -251,6 +270,39 @@ def _conductances(
     return result
 
 
+def _node_conductance(
+    node: ThermalNode, screw: BallScrew, speed: float
+) -> Callable[[float], float]:
+    """:func:`_conductance` at one speed as a function of the temperature alone.
+
+    The same operations (the forced part once, its speed being fixed), without
+    the checks of every call: the heat balance's integrator asks for it at
+    every step.
+    """
+    _conductance(node, screw, speed, node.ambient)  # checks the inputs, warns once
+    d = screw.pitch_diameter
+    area = math.pi * d * node.screw_length
+    machine = 0.0 if node.machine_resistance is None else 1.0 / node.machine_resistance
+    forced = _forced(d, np.abs(np.asarray(speed, dtype=float)) * d**2 / AIR["kinematic_viscosity"])
+
+    def conductance(temperature: float) -> float:
+        h = np.maximum(forced, _natural(d, np.array([temperature]), node.ambient))
+        return float((h * area + machine)[0])
+
+    return conductance
+
+
+def history_grid(node: ThermalNode, steady: float) -> FloatArray:
+    """The temperatures [°C] at which :func:`temperature_history` tabulates the mean power.
+
+    Every 2 K or so from the ambient to 1 K past the steady temperature ``steady``.
+    """
+    grid: FloatArray = np.linspace(
+        node.ambient, steady + 1.0, max(3, int(steady - node.ambient) // 2 + 3)
+    )
+    return grid
+
+
 def _rms_speed(profile: Profile, screw: BallScrew) -> float:
     omega = 2 * math.pi * profile.speed / screw.lead
     dt = np.diff(profile.time)
@@ -266,6 +318,14 @@ class SteadyState:
     friction_power: float
     heat_out: float
     conductance: float
+    history_powers: tuple[FloatArray, FloatArray] | None = field(
+        default=None, repr=False, compare=False
+    )
+    """The mean friction power on :func:`temperature_history`'s grid (temperatures [°C],
+    powers [W]), where it was computed with the balance (:func:`steady_temperatures`)."""
+    history: tuple[FloatArray, FloatArray] | None = field(default=None, repr=False, compare=False)
+    """The temperature history (times [s], temperatures [°C]), where it was integrated with
+    other screws' (:func:`temperature_histories`)."""
 
 
 TABLE_STEP = 5.0
@@ -321,6 +381,137 @@ def steady_temperature(
     g = _conductance(node, screw, speed, t)
     power = float(mean_power(t)[0])
     return SteadyState(t, power, g * (t - node.ambient), g)
+
+
+MAX_POINTS = 2_000_000
+"""The most (screw, temperature, sample) points :func:`steady_temperatures` evaluates at once."""
+
+TABLE_STAGES = (5, 13)
+"""The table nodes :func:`steady_temperatures` evaluates first (up to the 5th, then the 13th,
+with the last), before the rest for the screws not yet balanced."""
+
+
+def steady_temperatures(
+    profile: Profile,
+    screws: list[BallScrew],
+    lubricant: Lubricant | str,
+    axes: list[Axis],
+    nodes: list[ThermalNode],
+    *,
+    model: str = "complete",
+    **parameters: Any,
+) -> list[SteadyState | None]:
+    """:func:`steady_temperature` of many screws on one lubricant and model, together.
+
+    The same balance, table and Illinois iteration, with the friction of every
+    screw in one call (:func:`~ballscrew.chain.friction_torques`, each screw at its
+    own distinct samples, padded with weightless repeats of its first). The
+    table is evaluated in stages (:data:`TABLE_STAGES`, and its last node, whose
+    sign decides the error): a screw whose balance changes sign early needs no
+    more of it, and the first sign change and the error are those of the whole
+    table. The temperatures equal the screw-by-screw ones to the rounding of the
+    friction and of the weighted sums (a relative 1e-13; the Illinois tolerance
+    is 1e-11 K). Each carries the mean power on :func:`temperature_history`'s grid,
+    from the same call as its power at the root. None for a screw whose balance
+    does not close below 200 K above the ambient, or for every screw when a point
+    cannot be solved: :func:`steady_temperature` then runs alone and raises its error.
+    """
+    n = len(screws)
+    if n == 0:
+        return []
+    for node in nodes:
+        check_positive("screw_length", node.screw_length, "m")
+    samples = [_CyclePowers(profile, s, lubricant, a, model, parameters)
+               for s, a in zip(screws, axes, strict=True)]  # fmt: skip
+    width = max(c.omega.size for c in samples)
+
+    def padded(values: list[FloatArray], fill: list[float]) -> FloatArray:
+        out = np.empty((n, width))
+        for i, (v, f) in enumerate(zip(values, fill, strict=True)):
+            out[i, : v.size], out[i, v.size :] = v, f
+        return out
+
+    omega = padded([c.omega for c in samples], [float(c.omega[0]) for c in samples])
+    force = padded([c.force for c in samples], [float(c.force[0]) for c in samples])
+    weight = padded([c.weight for c in samples], [0.0] * n)
+    speeds = [_rms_speed(profile, s) for s in screws]
+    ambient = np.array([node.ambient for node in nodes])
+
+    def powers(rows: npt.NDArray[np.intp], temps: FloatArray) -> FloatArray:
+        """Mean power of the screws ``rows`` at their temperatures ``temps`` (rows x k)."""
+        out: FloatArray = np.empty(temps.shape)
+        # The helix's compiled loop for these calls alone (kernel_scope): every screw's
+        # rows at once; the process's other calls keep their path and their numbers.
+        step = max(1, MAX_POINTS // (temps.shape[1] * width))
+        for start in range(0, rows.size, step):
+            part = slice(start, start + step)
+            r = rows[part]
+            with warnings.catch_warnings(), kernel_scope():
+                warnings.simplefilter("ignore")
+                torque = friction_torques(
+                    [screws[i] for i in r], lubricant, speed=omega[r, None, :],
+                    temperature=temps[part, :, None], axial_load=force[r, None, :],
+                    model=model, paired=True, warn=False, components=False, **parameters,
+                ).total  # fmt: skip
+            out[part] = np.einsum("rkp,rp->rk", torque * np.abs(omega[r, None, :]), weight[r])
+        return out
+
+    def imbalance(rows: npt.NDArray[np.intp], temps: FloatArray) -> FloatArray:
+        heat = np.array([_conductances(nodes[i], screws[i], speeds[i], t) * (t - nodes[i].ambient)
+                         for i, t in zip(rows, temps, strict=True)])  # fmt: skip
+        out: FloatArray = powers(rows, temps) - heat
+        return out
+
+    count = round(200.0 / TABLE_STEP) + 1
+    grid = ambient[:, None] + np.linspace(0.0, 200.0, count)[None, :]
+    table = np.full((n, count), np.nan)
+    every = np.arange(n)
+    try:
+        first = [*range(TABLE_STAGES[0]), count - 1]
+        table[:, first] = imbalance(every, grid[:, first])
+        for lo, hi in ((TABLE_STAGES[0], TABLE_STAGES[1]), (TABLE_STAGES[1], count - 1)):
+            rows = every[~np.any(table[:, :lo] <= 0.0, axis=1) & (table[:, -1] <= 0.0)]
+            if rows.size:
+                table[np.ix_(rows, np.arange(lo, hi))] = imbalance(rows, grid[rows, lo:hi])
+        ok = table[:, -1] <= 0.0
+        j = np.where(ok, np.argmax(table <= 0.0, axis=1), 0)
+        at_node = ok & ((j == 0) | (table[every, j] == 0.0))
+        root = np.where(at_node, grid[every, j], np.nan)
+        solve = every[ok & ~at_node]
+        if solve.size:
+            js = j[solve]
+            root[solve] = illinois(
+                lambda x, idx: -imbalance(solve[idx], x[:, None])[:, 0],
+                grid[solve, js - 1], grid[solve, js], -table[solve, js - 1], -table[solve, js],
+                xtol=1e-11,
+            )  # fmt: skip
+        done = every[ok]
+        power = np.full(n, np.nan)
+        grids = {int(i): history_grid(nodes[i], float(root[i])) for i in done}
+        if done.size:
+            # The power at the root, and on the history's grid, in one call.
+            size = 1 + max(g.size for g in grids.values())
+            temps = np.empty((done.size, size))
+            for r, i in enumerate(done):
+                tg = grids[int(i)]
+                temps[r, 0], temps[r, 1 : tg.size + 1], temps[r, tg.size + 1 :] = (
+                    root[i], tg, tg[-1])  # fmt: skip
+            table_powers = powers(done, temps)
+            power[done] = table_powers[:, 0]
+            on_grid = {int(i): table_powers[r, 1 : grids[int(i)].size + 1]
+                       for r, i in enumerate(done)}  # fmt: skip
+    except BallScrewInputError:
+        return [None] * n
+    out: list[SteadyState | None] = []
+    for i in range(n):
+        if not ok[i]:
+            out.append(None)
+            continue
+        t = float(root[i])
+        g = _conductance(nodes[i], screws[i], speeds[i], t)
+        out.append(SteadyState(t, float(power[i]), g * (t - nodes[i].ambient), g,
+                               (grids[i], on_grid[i])))  # fmt: skip
+    return out
 
 
 @dataclass(frozen=True)
@@ -408,7 +599,7 @@ def temperature_history(
     The mean power per cycle is tabulated over temperature (every 2 K up to
     the steady temperature) and the heat balance integrated with scipy's
     ``solve_ivp``. ``steady`` is the cycle's :func:`steady_temperature`, if
-    already solved.
+    already solved (with its history, if integrated, :func:`temperature_histories`).
     """
     from scipy.integrate import solve_ivp
 
@@ -416,22 +607,25 @@ def temperature_history(
     if steady is None:
         steady = steady_temperature(profile, screw, lubricant, axis, node, model=model,
                                     **parameters)  # fmt: skip
+    times = np.linspace(0.0, duration, points)
+    if steady.history is not None and np.array_equal(steady.history[0], times):
+        return steady.history
     speed = _rms_speed(profile, screw)
-    grid = np.linspace(
-        node.ambient,
-        steady.temperature + 1.0,
-        max(3, int(steady.temperature - node.ambient) // 2 + 3),
-    )
-    powers = mean_powers(profile, screw, lubricant, axis, grid, model, **parameters)
+    grid = history_grid(node, steady.temperature)
+    given = steady.history_powers
+    if given is not None and np.array_equal(given[0], grid):
+        powers = given[1]
+    else:
+        powers = mean_powers(profile, screw, lubricant, axis, grid, model, **parameters)
     capacity = node.heat_capacity(screw)
+    conductance = _node_conductance(node, screw, speed)
 
     def rate(_t: float, y: FloatArray) -> FloatArray:
         temp = float(y[0])
         power = float(np.interp(temp, grid, powers))
-        loss = _conductance(node, screw, speed, temp) * (temp - node.ambient)
+        loss = conductance(temp) * (temp - node.ambient)
         return np.array([(power - loss) / capacity])
 
-    times = np.linspace(0.0, duration, points)
     # Past SETTLED time constants C/G the temperature is within e^-SETTLED of the steady one:
     # the balance is integrated that far at most, and the steady temperature held after
     # (a run time of years otherwise held the solver for minutes).
@@ -441,3 +635,77 @@ def temperature_history(
     sol = solve_ivp(rate, (0.0, span), [node.ambient], t_eval=inside, rtol=1e-8, atol=1e-8)
     held = np.full(times.size - inside.size, steady.temperature)
     return times, np.concatenate([np.asarray(sol.y[0]), held])
+
+
+def temperature_histories(
+    profile: Profile,
+    screws: list[BallScrew],
+    nodes: list[ThermalNode],
+    duration: float,
+    steadies: list[SteadyState],
+    *,
+    points: int = 200,
+) -> list[tuple[FloatArray, FloatArray]]:
+    """:func:`temperature_history` of many screws, their nodes integrated together.
+
+    Each screw's balance solved with its power table (``steadies``, from
+    :func:`steady_temperatures`, which carry it), the nodes one system of
+    independent equations for ``solve_ivp``: the same equations, tables and
+    tolerances (rtol 1e-8), the steps shared. Each temperature equals the
+    screw's own integration within that tolerance (not to rounding: the steps
+    differ). Past its :data:`SETTLED` time constants a node holds its steady
+    temperature, as alone.
+    """
+    from scipy.integrate import solve_ivp
+
+    check_positive("duration", duration, "s")
+    n = len(screws)
+    times = np.linspace(0.0, duration, points)
+    if n == 0:
+        return []
+    tables = [st.history_powers for st in steadies]
+    if any(t is None for t in tables):
+        raise BallScrewInputError("steadies", "(no power table)", "steady_temperatures' states")
+    grids = [t[0] for t in tables if t is not None]
+    size = max(g.size for g in grids)
+    powers = np.empty((n, size))
+    for i, t in enumerate(tables):
+        assert t is not None
+        powers[i, : t[1].size], powers[i, t[1].size :] = t[1], t[1][-1]
+    first = np.array([g[0] for g in grids])
+    step = np.array([g[1] - g[0] for g in grids])
+    last = np.array([g.size - 1 for g in grids])
+    d = np.array([s.pitch_diameter for s in screws])
+    ambient = np.array([node.ambient for node in nodes])
+    area = np.pi * d * np.array([node.screw_length for node in nodes])
+    machine = np.array([0.0 if node.machine_resistance is None else 1.0 / node.machine_resistance
+                        for node in nodes])  # fmt: skip
+    capacity = np.array([node.heat_capacity(s) for node, s in zip(nodes, screws, strict=True)])
+    speeds = [_rms_speed(profile, s) for s in screws]
+    for node, s, speed in zip(nodes, screws, speeds, strict=True):
+        _conductance(node, s, speed, node.ambient)  # checks the inputs, warns once
+    forced = _forced(d, np.abs(np.array(speeds)) * d**2 / AIR["kinematic_viscosity"])
+    rows = np.arange(n)
+
+    def rate(_t: float, y: FloatArray) -> FloatArray:
+        # np.interp on each screw's even grid: clamped at its ends
+        pos = np.clip((y - first) / step, 0.0, last)
+        j = np.minimum(pos.astype(int), last - 1)
+        power = powers[rows, j] + (pos - j) * (powers[rows, j + 1] - powers[rows, j])
+        g = np.maximum(forced, _natural(d, y, ambient)) * area + machine
+        out: FloatArray = (power - g * (y - ambient)) / capacity
+        return out
+
+    steady = np.array([st.temperature for st in steadies])
+    g_steady = np.maximum(forced, _natural(d, steady, ambient)) * area + machine
+    span = np.minimum(duration, SETTLED * capacity / g_steady)
+    inside = times[times <= float(np.max(span))]
+    sol = solve_ivp(rate, (0.0, float(np.max(span))), ambient, t_eval=inside, rtol=1e-8,
+                    atol=1e-8)  # fmt: skip
+    out = []
+    for i in range(n):
+        own = times <= span[i]
+        temps = np.full(times.size, steady[i])
+        temps[own] = np.asarray(sol.y[i])[: int(np.sum(own))]
+        out.append((times, temps))
+    return out

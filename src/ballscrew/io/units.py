@@ -752,6 +752,41 @@ def to_si(
     ...
     ballscrew.errors.BallScrewInputError: speed = '100' is not allowed: ...e.g. '100 rpm'...
     """
+    if not isinstance(value, str):
+        return _to_si(field, value, unit, notes, plausible)
+    # A quantity read once is kept (a selection parses the same case text for thousands of
+    # screws): the same text, unit and range give the same number. One read with a note
+    # (an ambiguous unit) is not kept, so that its note is told every time.
+    key = (field, value, unit, plausible)
+    known = _READ.get(key)
+    if known is not None:
+        return known
+    readings: list[Reading] = []
+    result = _to_si(field, value, unit, readings, plausible)
+    if readings:
+        if notes is not None:
+            notes.extend(readings)
+        else:
+            for reading in readings:
+                warnings.warn(BallScrewReadingWarning(str(reading)), stacklevel=2)
+    elif len(_READ) < _READ_MOST:
+        _READ[key] = result
+    return result
+
+
+_READ: dict[tuple[str, str, str | None, tuple[float, float] | None], float] = {}
+_READ_MOST = 100_000
+"""The most quantities :func:`to_si` keeps."""
+
+
+def _to_si(
+    field: str,
+    value: Any,
+    unit: str | None,
+    notes: list[Reading] | None,
+    plausible: tuple[float, float] | None,
+) -> float:
+    """:func:`to_si` without its memory."""
     if isinstance(value, bool):
         wanted = "a number" if unit is None else f"a quantity in units of {unit}, e.g. '1 {unit}'"
         raise BallScrewInputError(field, value, wanted)

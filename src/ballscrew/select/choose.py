@@ -3,11 +3,24 @@
 Each candidate (:mod:`.pool`) is its own case: the user's axis, motor,
 check limits and duty with the screw replaced. It runs through
 :func:`~ballscrew.axis.duty.run_energy` and :func:`~ballscrew.axis.check.run_check`
-exactly as ``ballscrew check`` runs it, so a candidate's figures are those
-``ballscrew check --case CANDIDATE.toml`` prints. A candidate is feasible when
-no row of its check is NOT OK (every utilisation at most 1); a rejected one
-names its binding constraint, the row with the largest utilisation (or the
-input error that stopped it, e.g. a load above its rating).
+as ``ballscrew check`` runs it. A candidate is feasible when no row of its
+check is NOT OK (every utilisation at most 1); a rejected one names its
+binding constraint, the row with the largest utilisation (or the input error
+that stopped it, e.g. a load above its rating).
+
+Many candidates cost less than many checks (:func:`_prepared`): the heat
+balances of the candidates that share an oil are solved together
+(:func:`~ballscrew.axis.thermal.steady_temperatures`, equal to each one's own
+to rounding) and their temperature histories integrated together
+(:func:`~ballscrew.axis.thermal.temperature_histories`, within the
+integrator's tolerance of each one's own: 1e-5 relative on the rise); the
+run leaves out what the check does not read (``for_check``), and the check's
+Monte Carlo, which only adds each row's P(NOT OK), runs only for a candidate
+no row fails at its nominal value (the verdicts are the nominal values'). The
+verdicts and binding rows are therefore those of the lone checks; the front
+members and the recommended candidate are evaluated alone again, so their
+figures are exactly those ``ballscrew check --case CANDIDATE.toml`` prints,
+and a candidate within :data:`NEAR` of a utilisation bound too.
 
 The front is the non-dominated set of the feasible candidates over the
 objectives picked (:data:`OBJECTIVES`), sorted by pymoo's non-dominated
@@ -20,6 +33,7 @@ recommended.)
 
 from __future__ import annotations
 
+import dataclasses
 import difflib
 import math
 import time
@@ -31,8 +45,10 @@ import numpy as np
 
 from .. import lubricants
 from ..axis.check import AxisCheck, run_check
-from ..axis.duty import run_energy
+from ..axis.duty import HISTORY_POINTS, motion_plausibility, run_energy
 from ..axis.motion import Profile
+from ..axis.setup import axis_setup
+from ..axis.thermal import SteadyState, steady_temperatures, temperature_histories
 from ..errors import BallScrewInputError, FloatArray
 from ..io.case import Case, parse_case
 from ..io.motors import MotorRow
@@ -74,7 +90,8 @@ FIGURES: dict[str, str] = {
     "price": "currency of the table",
     "seconds": "s",
 }
-"""The figures kept per candidate, with their units (``p_not_ok``: the worst row's)."""
+"""The figures kept per candidate, with their units (``p_not_ok``: the worst row's; NaN for a
+candidate a row fails at its nominal value, whose Monte Carlo is not drawn)."""
 
 RECOMMEND_BELOW = 0.8
 """The largest utilisation of a recommended candidate, if any candidate stays below it."""
@@ -217,19 +234,27 @@ def evaluate(
     temperature: float | None = None,
     run_time: float = 3600.0,
     move: dict[str, float] | None = None,
+    parsed: Case | None = None,
+    steady: SteadyState | None = None,
 ) -> tuple[Evaluated, AxisCheck | None]:
     """One candidate through ``run_energy`` and ``run_check`` as ``ballscrew check`` runs it.
 
     An input error of the candidate (a load above its rating, a stroke longer
-    than its span) rejects it with the error as its binding constraint.
+    than its span) rejects it with the error as its binding constraint. A
+    candidate a row fails at its nominal value is rejected without the check's
+    Monte Carlo (``run_check(..., draws_when_failing=False)``: the verdicts are
+    the nominal values', so the verdict and the binding row are the same; its
+    ``p_not_ok`` is NaN). ``parsed`` is the candidate's case already parsed,
+    ``steady`` its heat balance already solved (:func:`_prepared`).
     """
     start = time.process_time()
     nan = {k: math.nan for k in FIGURES}
     try:
-        case = parse_case(candidate.text, source=candidate.name)
+        case = parsed or parse_case(candidate.text, source=candidate.name)
         run = run_energy(case, profile, [model], cycles=cycles, temperature=temperature,
-                         run_time=run_time, move=move)  # fmt: skip
-        check = run_check(run, model)
+                         run_time=run_time, move=move, for_check=True,
+                         steady=None if steady is None else {model: steady})  # fmt: skip
+        check = run_check(run, model, draws_when_failing=False)
     except BallScrewInputError as exc:
         nan["seconds"] = time.process_time() - start
         nan["price"] = math.nan if candidate.price is None else candidate.price
@@ -238,6 +263,65 @@ def evaluate(
     figures["price"] = math.nan if candidate.price is None else candidate.price
     feasible = check.verdict != "NOT OK"
     return Evaluated(candidate, figures, feasible, _binding(check)), check
+
+
+NEAR = 1e-5
+"""How near a candidate's largest utilisation to 1 or :data:`RECOMMEND_BELOW` (relative) has it
+evaluated alone, so that its verdict and the pick are the lone check's."""
+
+BATCH = 2000
+"""The most candidates whose heat balances are solved together (the friction calls of
+:func:`~ballscrew.axis.thermal.steady_temperatures` bound their own points)."""
+
+
+def _prepared(
+    found: Sequence[Candidate], profile: Profile, model: str, run_time: float
+) -> list[tuple[Case | None, SteadyState | None]]:
+    """Each candidate's parsed case and its steady temperature, solved many at a time.
+
+    The heat balance of the candidates that share an oil and model parameters is
+    solved together (:func:`~ballscrew.axis.thermal.steady_temperatures`: the
+    same balance, table and iteration, the friction of many screws in one call;
+    equal to the candidate's own to the rounding of the friction, 1e-15), and their
+    temperature histories integrated together
+    (:func:`~ballscrew.axis.thermal.temperature_histories`: within the integrator's
+    tolerance of the candidate's own). A
+    candidate that does not parse, whose move its screw cannot take, or whose
+    balance does not close gets None: :func:`evaluate` then runs it alone and
+    rejects it with its error.
+    """
+    out: list[tuple[Case | None, SteadyState | None]] = [(None, None)] * len(found)
+    travel = float(np.ptp(profile.position))
+    groups: dict[tuple[str, str], list[tuple[int, Case, Any]]] = {}
+    for i, c in enumerate(found):
+        try:
+            case = parse_case(c.text, source=c.name)
+            setup = axis_setup(case.screw, case.axis, case.thermal, travel)
+            motion_plausibility(case, profile, setup.axis, "--move")
+        except BallScrewInputError:
+            continue
+        out[i] = (case, None)
+        key = (case.lubricant.name, repr(case.parameters_for(model)))
+        groups.setdefault(key, []).append((i, case, setup))
+    for members in groups.values():
+        for start in range(0, len(members), BATCH):
+            part = members[start : start + BATCH]
+            first = part[0][1]
+            solved = steady_temperatures(
+                profile, [c.screw for _, c, _ in part], first.lubricant,
+                [s.axis for _, _, s in part], [s.node for _, _, s in part], model=model,
+                **first.parameters_for(model),
+            )  # fmt: skip
+            closed = [(j, st) for j, st in enumerate(solved) if st is not None]
+            histories = temperature_histories(
+                profile, [part[j][1].screw for j, _ in closed],
+                [part[j][2].node for j, _ in closed], run_time, [st for _, st in closed],
+                points=HISTORY_POINTS,
+            )  # fmt: skip
+            for (j, st), history in zip(closed, histories, strict=True):
+                i, case, _ = part[j]
+                out[i] = (case, dataclasses.replace(st, history=history))
+    return out
 
 
 def non_dominated(values: FloatArray) -> FloatArray:
@@ -374,11 +458,27 @@ def run_select(
                            preloads=preloads, oils=list(oils) or [None],
                            default_oil=case.lubricant.name, sources=sources, nuts=nuts,
                            motors=motors, screw_prices=screw_prices)  # fmt: skip
-    evaluated = tuple(
+    ready = _prepared(found, profile, model, run_time)
+    evaluated = [
         evaluate(c, profile, model=model, cycles=cycles, temperature=temperature,
-                 run_time=run_time, move=move)[0]
-        for c in found
-    )  # fmt: skip
+                 run_time=run_time, move=move, parsed=parsed, steady=steady)[0]
+        for c, (parsed, steady) in zip(found, ready, strict=True)
+    ]  # fmt: skip
+    alone = {i for i, (_, steady) in enumerate(ready) if steady is None}
+
+    def again(indices: Sequence[int]) -> None:
+        """Evaluate ``indices`` alone, their heat balance solved on its own (exact figures)."""
+        for i in indices:
+            if i not in alone:
+                evaluated[i] = evaluate(found[i], profile, model=model, cycles=cycles,
+                                        temperature=temperature, run_time=run_time, move=move,
+                                        parsed=ready[i][0])[0]  # fmt: skip
+                alone.add(i)
+
+    # A utilisation within NEAR of 1 or of RECOMMEND_BELOW: feasibility and the pick as alone.
+    again([i for i, e in enumerate(evaluated) if any(
+        abs(e.figures["max_utilisation"] - bound) <= NEAR * bound
+        for bound in (1.0, RECOMMEND_BELOW))])  # fmt: skip
     feasible = [i for i, e in enumerate(evaluated) if e.feasible]
     if not feasible:
         ranked = sorted(evaluated, key=lambda e: e.figures["max_utilisation"]
@@ -400,11 +500,17 @@ def run_select(
                             if any(not math.isnan(evaluated[i].figures[f]) for i in feasible)),
             )  # fmt: skip
     columns = [OBJECTIVES[o] for o in chosen]
-    f = np.array([[sense * evaluated[i].figures[key] for key, _, sense in columns]
-                  for i in feasible])  # fmt: skip
-    f = np.where(np.isnan(f), np.inf, f)
-    front = tuple(int(feasible[j]) for j in non_dominated(f))
-    best, reason = _recommend(evaluated, front)
+    while True:  # the front and the pick on figures equal to their lone check's
+        f = np.array([[sense * evaluated[i].figures[key] for key, _, sense in columns]
+                      for i in feasible])  # fmt: skip
+        f = np.where(np.isnan(f), np.inf, f)
+        front = tuple(int(feasible[j]) for j in non_dominated(f))
+        best, reason = _recommend(evaluated, front)
+        todo = [i for i in (*front, best) if i not in alone]
+        if not todo:
+            break
+        again(todo)
+        feasible = [i for i, e in enumerate(evaluated) if e.feasible]
     inputs = {"case": case.title, "model": model, "cycles": cycles, "temperature": temperature,
               "run_time_s": run_time, "move": dict(move or {}), "objectives": list(chosen),
               "diameter_m": list(diameter) if diameter else None,
@@ -414,4 +520,4 @@ def run_select(
               "currency": motor_currency or currency or None,
               "rating_estimates": scatter_text() if any(c.estimated for c in found) else None,
               "case_text": case.text}  # fmt: skip
-    return SelectResult(case.title, chosen, evaluated, front, best, reason, model, inputs)
+    return SelectResult(case.title, chosen, tuple(evaluated), front, best, reason, model, inputs)
