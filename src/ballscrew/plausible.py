@@ -220,7 +220,7 @@ def check_lubricant_property(field: str, value: float, name: str | None = None) 
     """
     r = LUBRICANT_RANGES[name or field]
     low, high = r.possible
-    if not (low < value <= high):
+    if not (low <= value <= high):  # the range the message states, ends included
         raise BallScrewInputError(
             field, _shown(value, r),
             f"{low * r.scale:g} to {high * r.scale:g} {r.unit} ({r.source})",

@@ -8,11 +8,13 @@ independently of the code: |x - shown| is at most half a unit of the d-th digit,
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
 
 from ballscrew.io.numbers import column_digits, sig, significant_digits, text
+from cli_runner import run
 
 
 @pytest.mark.parametrize(
@@ -62,8 +64,25 @@ def test_significant_digits_as_written(shown: str, count: int) -> None:
 @pytest.mark.parametrize(
     ("header", "digits"),
     [("time [s]", 7), ("position [mm]", 7), ("speed [rpm]", 6), ("table speed [m/s]", 6),
+     ("angle [deg]", 7), ("shaft angle [rad]", 7),
      ("torque [N*m]", 4), ("temperature [degC]", 4), ("efficiency [-]", 4), ("model", 4),
      ("error from friction with compensation [um]", 4)],
 )  # fmt: skip
 def test_a_column_s_digits_come_from_its_unit(header: str, digits: int) -> None:
     assert column_digits(header) == digits
+
+
+def test_a_report_echoes_its_inputs_to_six_digits(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # docs/guide.md, "Numbers in outputs": a report gives the case's inputs it echoes (in
+    # SI) to 6 significant digits. The vertical example's incline of 90 deg is pi/2 rad =
+    # 1.5707963...: to 6 digits 1.57080, written without its trailing zero "1.5708" (to 4
+    # digits it would be "1.571", to 7 "1.570796").
+    case = Path(__file__).resolve().parents[2] / "examples" / "vertical_32x5.toml"
+    move = "stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2, force=2 kN"
+    code, _, err = run(["check", "--case", str(case), "--move", move, "--out",
+                        str(tmp_path / "report")], capsys)  # fmt: skip
+    assert code == 0, err
+    report = (tmp_path / "report" / "report.md").read_text("utf-8")
+    assert "| axis.incline | 1.5708 | given |" in report

@@ -56,6 +56,18 @@ def test_half_the_balls_carry_two_thirds_power_of_the_load() -> None:
     assert ratio == pytest.approx(0.5 ** (2 / 3), rel=1e-12)
 
 
+def test_a_loaded_turn_counts_alike_in_one_circuit_or_in_two() -> None:
+    # Every loaded turn is one equal row (ISO 3408-5, ISO 281's k^0.7 rule): one circuit of
+    # two turns holds twice the balls of one turn (40 = 2 x 20 on this 41 mm screw), so it
+    # has the balls per turn, and the turns, of two circuits of one turn: the same rating.
+    two_turns = BallScrew(0.041, 0.01, 0.00635, math.radians(45), 0.55, 0.55, 2.0, 1, "single")
+    two_circuits = two_turns.replace(loaded_turns=1.0, circuits=2)
+    assert two_turns.balls_per_circuit == 2 * two_circuits.balls_per_circuit == 40
+    assert dynamic_rating_estimate(two_turns) == pytest.approx(
+        dynamic_rating_estimate(two_circuits), rel=1e-12
+    )
+
+
 def test_iso_sizes_are_candidates_labelled_estimated() -> None:
     text = CASE.read_text(encoding="utf-8")
     found = candidates(text, diameter=(0.025, 0.025), lead=(0.02, 0.02), preloads=["light"],
