@@ -30,7 +30,7 @@ from typing import Any  # noqa: E402
 import numpy as np  # noqa: E402
 
 from ballscrew import BallScrew, friction_torques, lubricants, reference_screw  # noqa: E402
-from ballscrew.errors import BallScrewValidityWarning  # noqa: E402
+from ballscrew.errors import BallScrewPlausibilityWarning, BallScrewValidityWarning  # noqa: E402
 
 TARGET = 1e6
 """Points per CPU-second for 1000 new screws x 1000 speeds (issue 39, item 4)."""
@@ -85,6 +85,7 @@ def measure(count: int, speeds: int, grid: bool = False) -> dict[str, Any]:
 
 def main() -> None:
     warnings.simplefilter("ignore", BallScrewValidityWarning)
+    warnings.simplefilter("ignore", BallScrewPlausibilityWarning)  # drawn screws, odd balls
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--screws", type=int, default=1000)
     parser.add_argument("--speeds", type=int, default=1000)

@@ -65,7 +65,7 @@ import numpy as np  # noqa: E402
 
 import ballscrew  # noqa: E402
 from ballscrew import friction_torque, lubricants, models, reference_screw  # noqa: E402
-from ballscrew.errors import BallScrewValidityWarning  # noqa: E402
+from ballscrew.errors import BallScrewPlausibilityWarning, BallScrewValidityWarning  # noqa: E402
 
 HERE = Path(__file__).resolve().parent
 BASELINE = HERE / "baseline-0.1.0.json"
@@ -375,6 +375,7 @@ def write_table(path: Path, text: str) -> None:
 def main() -> None:
     # The grids leave some published ranges on purpose; time the models, not the warnings.
     warnings.simplefilter("ignore", BallScrewValidityWarning)
+    warnings.simplefilter("ignore", BallScrewPlausibilityWarning)  # drawn screws, odd balls
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--speeds", type=int, default=100)
     parser.add_argument("--temperatures", type=int, default=10)
