@@ -9,12 +9,11 @@ parts and must pass without a word.
 
 from __future__ import annotations
 
-import math
 import warnings
 
 import pytest
 
-from ballscrew import BallScrew, BallScrewInputError
+from ballscrew import BallScrew, BallScrewInputError, reference_screw
 from ballscrew import lubricants as bundled
 from ballscrew.errors import BallScrewPlausibilityWarning
 from ballscrew.friction import get_model
@@ -25,13 +24,8 @@ from ballscrew.plausible import BALL_SERIES_MM, LUBRICANT_RANGES, wiper_drag_bou
 
 
 def _screw(**changes: object) -> BallScrew:
-    base: dict[str, object] = dict(
-        pitch_diameter=0.040, lead=0.010, ball_diameter=6.35e-3,
-        contact_angle=math.radians(45.0), conformity_screw=0.55, conformity_nut=0.55,
-        loaded_turns=2.5, circuits=2, nut="double", preload=2000.0,
-    )  # fmt: skip
-    base.update(changes)
-    return BallScrew(**base)  # type: ignore[arg-type]
+    """The reference screw (40 x 10, 6.35 mm balls, 2 kN double nut), changed."""
+    return reference_screw().replace(**changes)  # type: ignore[arg-type]
 
 
 def _quiet(build: object) -> None:

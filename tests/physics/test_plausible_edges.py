@@ -15,7 +15,7 @@ import warnings
 import numpy as np
 import pytest
 
-from ballscrew import BallScrew, BallScrewInputError
+from ballscrew import BallScrew, BallScrewInputError, reference_screw
 from ballscrew.errors import BallScrewPlausibilityWarning
 from ballscrew.lubricant import Lubricant
 from ballscrew.plausible import BALL_SERIES_MM, check_wiper_drag, wiper_drag_bound
@@ -24,13 +24,8 @@ BASE = {"nu40": 68e-6, "nu100": 8.6e-6, "density15": 880.0, "pressure_viscosity"
 
 
 def _screw(**changes: object) -> BallScrew:
-    base: dict[str, object] = dict(
-        pitch_diameter=0.040, lead=0.016, ball_diameter=6.35e-3,
-        contact_angle=math.radians(45.0), conformity_screw=0.55, conformity_nut=0.55,
-        loaded_turns=2.5, circuits=2, nut="double", preload=2000.0,
-    )  # fmt: skip
-    base.update(changes)
-    return BallScrew(**base)  # type: ignore[arg-type]
+    """The reference screw (40 x 10, 6.35 mm balls, 2 kN double nut) on a 16 mm lead, changed."""
+    return reference_screw().replace(**{"lead": 0.016, **changes})  # type: ignore[arg-type]
 
 
 def _warned(build: object, field: str) -> list[BallScrewPlausibilityWarning]:
