@@ -27,6 +27,11 @@ class Block:
     content: Any
 
 
+def _cell(value: object) -> str:
+    """A Markdown table cell: a '|' in it (the lift-off row's |F|) escaped, not a new column."""
+    return str(value).replace("|", "\\|")
+
+
 def markdown(blocks: list[Block]) -> str:
     """The blocks as Markdown (figures linked as figures/KEY.png, .svg and data/KEY.csv)."""
     out: list[str] = []
@@ -41,9 +46,9 @@ def markdown(blocks: list[Block]) -> str:
             out.append("\n".join(f"- {item}" for item in b.content) + "\n")
         elif b.kind == "table":
             header, rows = b.content
-            out.append("| " + " | ".join(header) + " |")
+            out.append("| " + " | ".join(_cell(h) for h in header) + " |")
             out.append("|" + "---|" * len(header))
-            out.extend("| " + " | ".join(str(c) for c in row) + " |" for row in rows)
+            out.extend("| " + " | ".join(_cell(c) for c in row) + " |" for row in rows)
             out.append("")
         elif b.kind == "img":
             key, caption = b.content
