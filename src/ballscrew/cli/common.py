@@ -98,7 +98,8 @@ case_option = _case_option("Case file (TOML with units); the bundled study case 
 """``--case`` of a command that may show the bundled study case."""
 
 own_case_option = _case_option(
-    "Case file (TOML with units) of YOUR screw: required, the command judges or fits it."
+    "Case file (TOML with units) of YOUR screw or axis: required, the command works on it "
+    "(no bundled default)."
 )
 """``--case`` of a command that judges or fits the user's own screw (no bundled default)."""
 

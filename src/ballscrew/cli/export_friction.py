@@ -24,7 +24,8 @@ __all__ = ["export_friction_command"]
 
 @click.command("export-friction")
 @case_option
-@click.option("--model", "model_name", default="complete", show_default=True)
+@click.option("--model", "model_name", default="complete", show_default=True,
+              help="Friction model of the exported curve (see 'ballscrew models').")  # fmt: skip
 @click.option("--form", type=click.Choice(["coulomb-viscous", "stribeck", "lugre", "table",
                                            "load-map", "lincurve", "frict-comp", "charcurve"]),
               default="stribeck", show_default=True,
