@@ -383,6 +383,11 @@ def _life_rows(
     hours = float(life_hours(revs, turns_per_second * 60.0))
     km = float(life_distance(revs, screw.lead)) / 1e3
     life |= {"L10_revolutions": revs, "L10_hours": hours, "L10_km": km}
+    notes.append(
+        f"L10 in hours of this cycle repeated without a break ({revs:.3g} revolutions, "
+        f"{km:.4g} km of travel); an axis that runs it a share D of its hours lasts L10/D "
+        "hours of the calendar, and the required life is compared with the running hours"
+    )
     advice = (
         "a nut with a higher C_a (more circuits, larger balls or diameter), a lower "
         "preload, lighter moves, or a longer lead (fewer turns per metre)"
