@@ -1027,10 +1027,12 @@ def _range_values(
         mixed = re.search(r"(\d+),(\d+)", raw)
         if mixed:
             a, b = mixed.groups()
+            grouped = f", thousands ('{a}{b}')" if len(b) == 3 and a[0] != "0" else ""
             raise BallScrewInputError(
                 field, text,
-                f"'{a},{b}' is ambiguous in a list: two values ('{a}, {b}') or a decimal "
-                f"comma ('{a}.{b}')? Write one of them (or separate the values with ';')",
+                f"'{a},{b}' is ambiguous in a list: two values ('{a}, {b}'){grouped} or a "
+                f"decimal comma ('{a}.{b}')? Write one of them (or separate the values "
+                "with ';')",
             )  # fmt: skip
         items = raw.split(",")
     items = [p.strip() for p in items]
