@@ -127,7 +127,9 @@ def test_study_writes_a_complete_reproducible_report(
     expected = friction_torque(
         case.screw, case.lubricant, speed=speeds, temperature=case.study_temperature, model="olaru"
     ).total
-    np.testing.assert_allclose([float(r[2]) for r in rows[1:]], expected, rtol=1e-14)
+    # the CSV carries 4 significant digits (io.numbers): within half a unit of the 4th digit
+    np.testing.assert_allclose([float(r[2]) for r in rows[1:]], expected, rtol=5e-4)
+    assert all(len(r[2].replace(".", "").replace("-", "").lstrip("0")) <= 4 for r in rows[1:])
     md = (out_dir / "report.md").read_text()
     html = (out_dir / "report.html").read_text()
     for text in ("Findings", "Assumptions", "Table 1", "assumed:"):
