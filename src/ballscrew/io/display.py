@@ -114,7 +114,8 @@ def to_display(value: Any, unit: str, system: str) -> tuple[Any, str]:
         return value, unit
     ureg = registry()
     source = {"°C": "degC", "K": "delta_degC"}.get(unit, unit).replace("^", "**")
-    return ureg.Quantity(value, source).to(target).magnitude, target
+    # shown as the package writes powers elsewhere ('m/s^2'), converted with pint's '**'
+    return ureg.Quantity(value, source).to(target).magnitude, target.replace("**", "^")
 
 
 _LABEL = re.compile(r"^(?P<name>.*?)\s*\[(?P<unit>[^\[\]]+)\]\s*$")
