@@ -73,3 +73,14 @@ def test_export_friction_writes_the_controller_tables(
     with zipfile.ZipFile(fmu) as z:
         assert {"modelDescription.xml", "sources/ballscrew_friction_map.h",
                 "sources/ballscrew_friction_fmu.c"} <= set(z.namelist())  # fmt: skip
+
+
+def test_an_axis_note_both_axes_share_is_said_once(capsys: pytest.CaptureFixture[str]) -> None:
+    # Two like axes printed 22 note lines, each twice with its axis (a newcomer's trial).
+    code, _, err = run(["contour", "--case", str(EXAMPLE), "--case", str(EXAMPLE), *SHORT],
+                       capsys)  # fmt: skip
+    assert code == 0, err
+    notes = [line for line in err.splitlines() if line.startswith("note: ")]
+    assert len(notes) == len(set(notes)) and notes
+    assert any(line.startswith("note: x, y: ") for line in notes)
+    assert not any(line.startswith(("note: x: ", "note: y: ")) for line in notes)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import sys
+from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 import click
@@ -100,7 +101,7 @@ def contour_command(
     )  # fmt: skip
     console = stdout(json_file)
     _print(console, result)
-    for note in result.notes:
+    for note in _merged(result.notes):
         click.echo(f"note: {note}", err=True)
     if out_dir:
         from ..report.contour import write_contour_report
@@ -143,3 +144,19 @@ def _print(console: Console, result: ContourResult) -> None:
         loops.add_row(*row)
     console.print(loops)
     console.print(f"CPU time: {result.cpu_seconds:.3g} s")
+
+
+def _merged(notes: Sequence[str]) -> list[str]:
+    """The notes in order, each said once: 'x: T' and 'y: T' become 'x, y: T'.
+
+    >>> _merged(["x: a", "y: a", "x: b", "c"])
+    ['x, y: a', 'x: b', 'c']
+    """
+    axes: dict[str, list[str]] = {}
+    for note in notes:
+        head, sep, text = note.partition(": ")
+        if sep and head.isidentifier() and len(head) <= 3:  # an axis' own note
+            axes.setdefault(text, []).append(head)
+        else:
+            axes.setdefault(note, [])
+    return [f"{', '.join(names)}: {text}" if names else text for text, names in axes.items()]
