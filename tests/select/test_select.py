@@ -151,7 +151,7 @@ def test_an_unknown_objective_is_refused_with_a_hint() -> None:
 
 def test_a_duty_no_candidate_survives_names_what_fails_them() -> None:
     m = parse_move(MOVE)
-    failing = r"closest: HIWIN R25-05K4-FSC.*fatigue life"
+    failing = r"closest to passing: HIWIN R25-05K4-FSC.*fatigue life"
     with pytest.raises(BallScrewInputError, match=failing) as info:
         run_select(load_case(CASE), profile_from_move(m, 1), diameter=(0.025, 0.025),
                    lead=(0.005, 0.005), preloads=["light"], move=m)  # fmt: skip

@@ -485,8 +485,9 @@ def run_select(
                         if not math.isnan(e.figures["max_utilisation"]) else math.inf)  # fmt: skip
         closest = "; ".join(f"{e.name}: {e.binding}" for e in ranked[:3])
         raise BallScrewInputError(
-            motion_field, f"the duty ({len(evaluated)} candidates, none passes)",
-            f"a duty some candidate survives; closest: {closest}",
+            motion_field, f"a duty none of the {len(evaluated)} candidates passes",
+            f"a lighter duty, or other candidates (wider filters, other preload classes or "
+            f"oils); the closest to passing: {closest}",
         )  # fmt: skip
     for o in chosen:
         key = OBJECTIVES[o][0]
