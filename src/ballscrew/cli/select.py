@@ -172,6 +172,10 @@ def _number(value: float) -> str:
     return "-" if value != value else f"{num(value)}"  # NaN is not equal to itself
 
 
+def _percent(value: float) -> str:
+    return "-" if value != value else f"{value:.0%}"  # NaN is not equal to itself
+
+
 def _front_table(result: SelectResult) -> Table:
     """The front: one row per non-dominated feasible candidate, its figures."""
     from ..select import OBJECTIVES
@@ -183,7 +187,8 @@ def _front_table(result: SelectResult) -> Table:
     extra = [k for k in ("energy_J", "L10_h", "stiffness_N_per_um", "max_utilisation",
                          "p_not_ok") if k not in keys]  # fmt: skip
     labels = {key: label for key, label, _ in OBJECTIVES.values()}
-    labels |= {"max_utilisation": "largest utilisation [-]", "p_not_ok": "P(NOT OK) [-]"}
+    labels |= {"max_utilisation": "largest utilisation", "p_not_ok": "P(NOT OK)"}
+    shares = {"max_utilisation", "p_not_ok"}  # in percent, as check prints them
     if any(result.evaluated[i].candidate.motor is not None for i in result.front):
         extra += [k for k in ("motor_margin",) if k not in keys]
     if any(result.evaluated[i].candidate.price is not None for i in result.front):
@@ -196,5 +201,7 @@ def _front_table(result: SelectResult) -> Table:
         e = result.evaluated[i]
         mark = (" (estimated)" if e.candidate.estimated else "") + (
             " *" if i == result.recommended else "")  # fmt: skip
-        table.add_row(e.name + mark, *(_number(e.figures[k]) for k in keys + extra), e.binding)
+        cells = (_percent(e.figures[k]) if k in shares else _number(e.figures[k])
+                 for k in keys + extra)  # fmt: skip
+        table.add_row(e.name + mark, *cells, e.binding)
     return table
