@@ -7,6 +7,8 @@ line and the column. (The tables' ordinary reading is in test_pool.py.)
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
 from ballscrew.errors import BallScrewInputError
@@ -76,3 +78,20 @@ def test_a_price_row_too_short_is_refused_naming_the_column(
         parse_prices(text, source="p.csv")
     assert (refused.value.field, refused.value.value) == (f"p.csv: line 2, column '{column}'",
                                                           value)  # fmt: skip
+
+
+@pytest.mark.parametrize("reader", ["read_motors", "read_prices"])
+def test_a_table_that_is_no_regular_file_is_refused_by_name(reader: str, tmp_path: Path) -> None:
+    # '--motors /dev/zero' read until the process was killed (it never ends): the tables go
+    # through the package's one input reader, as case files do, which refuses devices and pipes.
+    import os
+
+    from ballscrew.io import motors
+
+    fifo = tmp_path / "table.csv"
+    os.mkfifo(fifo)
+    flag = "--motors" if reader == "read_motors" else "--screw-prices"
+    for path in ("/dev/zero", fifo):
+        with pytest.raises(BallScrewInputError, match="a regular file") as info:
+            getattr(motors, reader)(path)
+        assert info.value.field == flag

@@ -28,6 +28,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import BallScrewInputError
+from .files import read_input_text
 from .units import to_si
 
 __all__ = [
@@ -168,12 +169,7 @@ def parse_motors(text: str, source: str = "motor table") -> tuple[MotorRow, ...]
 
 def read_motors(path: str | Path) -> tuple[MotorRow, ...]:
     """The motors of the CSV file at ``path`` (:func:`parse_motors`)."""
-    p = Path(path)
-    try:
-        text = p.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise BallScrewInputError("--motors", str(path), f"a readable CSV file ({exc})") from None
-    return parse_motors(text, source=p.name)
+    return parse_motors(read_input_text("--motors", path), source=Path(path).name)
 
 
 def parse_prices(text: str, source: str = "price table") -> tuple[dict[str, float], str]:
@@ -226,10 +222,4 @@ def parse_prices(text: str, source: str = "price table") -> tuple[dict[str, floa
 
 def read_prices(path: str | Path) -> tuple[dict[str, float], str]:
     """The screw prices of the CSV file at ``path`` (:func:`parse_prices`)."""
-    p = Path(path)
-    try:
-        text = p.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise BallScrewInputError("--screw-prices", str(path),
-                                  f"a readable CSV file ({exc})") from None  # fmt: skip
-    return parse_prices(text, source=p.name)
+    return parse_prices(read_input_text("--screw-prices", path), source=Path(path).name)
