@@ -223,10 +223,7 @@ def _axis_case(letter: str, raw: str | dict[str, Any], folder: Path | None) -> C
     if isinstance(raw, str):
         assert folder is not None
         path = Path(raw) if Path(raw).is_absolute() else folder / raw
-        try:
-            text = path.read_text(encoding="utf-8")
-        except (OSError, UnicodeDecodeError) as exc:
-            raise BallScrewInputError(name, raw, f"a readable UTF-8 case file ({exc})") from None
+        text = read_input_text(name, path)  # a regular UTF-8 file: no pipe, no device
         source = str(path)
     else:
         text = tomlkit.dumps(raw)

@@ -30,7 +30,7 @@ from ..contact import hertz
 from ..errors import BallScrewInputError
 from ..friction import get_model
 from ..io.case import Case, parse_case
-from ..io.files import atomic_write, sweep_temporaries
+from ..io.files import atomic_write, read_input_text, sweep_temporaries
 from ..io.measured import MeasuredCurve, parse_measured
 from ..kinematics import rad_s_to_rpm, rpm_to_rad_s
 from ..loads import ball_loads
@@ -440,9 +440,9 @@ def write_report(
 def load_record(path: str | Path) -> tuple[Case, MeasuredCurve | None, str | None]:
     """Read a run record; return its case, measured curve and the measured text."""
     file = Path(path)
-    try:
-        record = json.loads(file.read_text("utf-8"))
-    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
+    try:  # read as a regular file: no pipe, no device
+        record = json.loads(read_input_text("record", file))
+    except json.JSONDecodeError as exc:
         raise BallScrewInputError(
             "record", str(file), f"a run record written by ballscrew ({exc})"
         ) from None
