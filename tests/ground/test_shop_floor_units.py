@@ -25,10 +25,11 @@ G_N = 9.80665
     [
         # wrong dimension: what the unit is, what the field is, a form that works
         ("screw.ball_diameter", "5 g", "m", "'g' (gram) is a mass; this field is a length",
-         "'5 mm'"),
+         "give a length in e.g. 'mm'"),
         ("axis.moving_mass", "0.3 m/s^2", "kg", "is an acceleration; this field is a mass",
-         "'0.3 kg'"),
-        ("screw.pitch_diameter", "32 C", "m", "'C' (coulomb) is an electric charge", "'32 mm'"),
+         "give a mass in e.g. 'kg'"),
+        ("screw.pitch_diameter", "32 C", "m", "'C' (coulomb) is an electric charge",
+         "give a length in e.g. 'mm'"),  # a number shown on another scale could mislead
         ("operation.temperature", "40 c", "degC", "'c' (speed of light) is a linear speed; this "
          "field is a temperature", "'40 degC'"),
         ("operation.temperature", "40 °", "degC", "(degree) is a plain number (an angle or a "

@@ -625,7 +625,9 @@ def _wrong_dimension(
         why += " (a force in pounds is 'lbf', in kilograms 'kgf')"
     if wanted == "a temperature":
         example = "degC"
-    if {kind_of(have), wanted} == {"a mass", "a force"}:  # 300 kg is 2.9 kN, not 300 kN
+    if kind_of(have) != wanted and wanted != "a temperature":
+        # the number belongs to another quantity ('300 kg' is 2.9 kN, '3000 1/min' no feed):
+        # show the unit to give it in, not the number on a scale it was not typed for
         return BallScrewInputError(field, text, f"{why}: give {wanted} in e.g. '{example}'")
     return BallScrewInputError(field, text, f"{why}: write e.g. '{_shown(number)} {example}'")
 
