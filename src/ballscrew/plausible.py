@@ -72,7 +72,7 @@ from __future__ import annotations
 
 import math
 import warnings
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
 import numpy as np
 import numpy.typing as npt
@@ -253,13 +253,15 @@ def check_loaded_turns(field: str, turns: float) -> None:
         warn(field, f"{turns:g}", f"{low:g} to {high:g} turns per circuit", TURNS_SOURCE)
 
 
-def wiper_drag_bound(pitch_diameter: float) -> float:
+def wiper_drag_bound(pitch_diameter: npt.ArrayLike) -> Any:
     """The wipers' typical largest drag torque [N·m] on a screw of ``pitch_diameter`` [m].
+
+    A float for a float, an array for an array (many screws).
 
     :data:`WIPER_LIP_TORQUE` on a 40 mm screw, scaled with the square of the
     diameter (:data:`WIPER_SOURCE`).
     """
-    return WIPER_LIP_TORQUE * (pitch_diameter / 0.040) ** 2
+    return WIPER_LIP_TORQUE * (np.asarray(pitch_diameter, dtype=float) / 0.040) ** 2
 
 
 def check_wiper_drag(
@@ -281,9 +283,9 @@ def check_wiper_drag(
     torques, diameters = np.broadcast_arrays(
         np.ravel(np.asarray(torque, dtype=float)), np.ravel(np.asarray(pitch_diameter, dtype=float))
     )
-    worst = int(np.argmax(torques / (WIPER_LIP_TORQUE * (diameters / 0.040) ** 2)))
+    worst = int(np.argmax(torques / wiper_drag_bound(diameters)))
     value, diameter = float(torques[worst]), float(diameters[worst])
-    typical = wiper_drag_bound(diameter)
+    typical = float(wiper_drag_bound(diameter))
     size = f"a {diameter * 1e3:.4g} mm screw"
     if not math.isfinite(value) or value > 10.0 * typical:
         raise BallScrewInputError(
