@@ -9,7 +9,12 @@ contact-angle scatter):
 - the preload exponent from 1 to 4 kN at 10, 100 and 3000 rpm (0.9-1.1, 0.9-1.1, 0.45-0.8);
 - the forward efficiency under 4 and 8 kN at 1000 rpm (0.88-0.96, rising with load);
 - the 4-point/double ratio at equal preload at 1000 rpm (1.15-1.40);
-- the loss budget at 100 and 1000 rpm, 40 C, by component.
+- the loss budget at 100 and 1000 rpm, 40 C, by component;
+- for the tolerance train, how far its balls are from saturated creep: the creep ratio
+  sigma = v_c k sigma_alpha / (|omega_s| a) of each contact, the force G_x it gives
+  (saturated: 1), and the contact-angle scatter at which G_x would reach 0.5. A train
+  force proportional to the ball load (the makers' linear preload rule) needs saturated
+  creep; in the linear range the force grows as mu Q / a, i.e. as Q^(2/3).
 """
 
 from __future__ import annotations
@@ -17,8 +22,13 @@ from __future__ import annotations
 import math
 import warnings
 
+import numpy as np
+
 from ballscrew import friction_torque, lubricants, reference_screw
-from ballscrew.kinematics import rpm_to_rad_s
+from ballscrew.ball_train import orbital_sensitivity, rolling_creep_integrals
+from ballscrew.friction._common import model_state
+from ballscrew.friction.complete import CONTACT_ANGLE_SCATTER
+from ballscrew.kinematics import kinematics, rpm_to_rad_s
 
 TARGETS = (
     ("T20/T40 at 100 rpm", 0.8, 1.3),
@@ -71,6 +81,30 @@ def main() -> None:
                 f"{k} {float(v):.3f}" for k, v in r.components.items() if abs(float(v)) > 5e-4
             )
             print(f"  budget at {rpm:.0f} rpm: {float(r.total):.3f} N*m = {parts}")
+    saturation(screw, oil)
+
+
+def saturation(screw, oil) -> None:  # type: ignore[no-untyped-def]
+    """Print how far the tolerance train's creep is from saturation, per contact."""
+    state = model_state(screw, oil, rpm_to_rad_s(100.0), 40.0, 0.0, hertz_method="exact",
+                        asperity_b=1.42, asperity_c=0.8, state=None)  # fmt: skip
+    unit = kinematics(screw, 1.0)
+    k = orbital_sensitivity(screw.ball_diameter, screw.pitch_diameter, screw.contact_angle)
+    centre = float(unit.orbital_speed) * 0.5 * screw.pitch_diameter / math.cos(screw.lead_angle)
+    spread = centre * k * CONTACT_ANGLE_SCATTER  # per unit screw speed [m]
+    grid = np.geomspace(1e-3, 10.0, 400)
+    print(f"tolerance train creep at sigma_alpha = {math.degrees(CONTACT_ANGLE_SCATTER):.3f} deg")
+    for c in state.contacts[:2]:
+        a = float(np.ravel(c.hertz.a)[0])
+        spin = abs(float(unit.spin_screw if c.side == "screw" else unit.spin_nut))
+        aspect = 1.0 / float(np.max(c.hertz.ellipticity))
+        _, g = rolling_creep_integrals(aspect, grid)
+        ratio = spread / (spin * a)
+        half = float(np.interp(0.5, g, grid))
+        print(f"  {c.name}: Q {float(np.ravel(c.load)[0]):.1f} N, a {a * 1e3:.3f} mm, "
+              f"creep ratio {ratio:.3f}, G_x {float(np.interp(ratio, grid, g)):.3f}; "
+              f"G_x = 0.5 needs sigma_alpha = "
+              f"{math.degrees(CONTACT_ANGLE_SCATTER * half / ratio):.2f} deg")  # fmt: skip
 
 
 if __name__ == "__main__":
