@@ -38,7 +38,12 @@ from ballscrew import rolling_losses as rl
 from ballscrew.contact import hertz
 from ballscrew.geometry import BallScrew
 from ballscrew.helix import SlipContact, transverse_slip_loss
-from ballscrew.kinematics import differential_sliding, four_point_spin, kinematics
+from ballscrew.kinematics import (
+    differential_sliding,
+    four_point_spin,
+    kinematics,
+    neighbour_sliding,
+)
 
 GEOMETRIES = [  # pitch diameter, lead, ball [mm]
     (40.0, 10.0, 6.35),
@@ -189,6 +194,27 @@ def test_two_point_spins_and_rolling_speed_match_kinematics(
     assert float(np.linalg.norm(np.cross(w_rel, f.t))) == pytest.approx(
         float(k.ball_speed), rel=1e-8
     )
+
+
+@pytest.mark.parametrize(("dm", "lead", "dw"), GEOMETRIES)
+def test_neighbouring_balls_slide_at_the_rigid_body_speed(
+    dm: float, lead: float, dw: float
+) -> None:
+    # Neighbours turn alike and touch on their line of centres (along t): their surfaces
+    # there slide at D_w |(W - w_m e_z) x t|, with W from the rolling solutions above.
+    s = _screw(dm, lead, dw)
+    f = _frame(s)
+    e_z = np.eye(3)[2]
+    for q, nut in ((_rolling_solution(f)[0], "single-4point"), (_two_point_solution(f), "double")):
+        w_rel = q[1:] - _orbital(f, q) * e_z
+        rigid = s.ball_diameter * float(np.linalg.norm(np.cross(w_rel, f.t)))
+        # Central differences and a linear solve: 1e-8 relative is generous.
+        assert float(neighbour_sliding(s.replace(nut=nut), OMEGA)) == pytest.approx(rigid, rel=1e-8)
+    # The 4-point ball turns faster, by 1/cos(alpha): its axis is tilted by alpha from the
+    # 2-point axis, and its contact points, R cos(alpha) from it, keep the rolling speed.
+    four = float(neighbour_sliding(s.replace(nut="single-4point"), OMEGA))
+    two = float(neighbour_sliding(s, OMEGA))
+    assert four / two == pytest.approx(math.sqrt(2.0), rel=1e-12)
 
 
 # --- the best-fitting motion: minimum Coulomb dissipation of a free ball ------------------
