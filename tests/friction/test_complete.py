@@ -179,16 +179,19 @@ def _ball_ball_coefficient(
     force: float,
     mu_bl: float = 0.1,
     tau0: float | None = None,
+    turn: float = 1.0,
 ) -> float:
     """Mixed-film coefficient of two balls under the ball-train force, from the published
     formulas written out here: Johnson's circle a = (3FR/4E*)^(1/3), R = D_w/4, E* = E'/2;
     Hamrock-Dowson's h_min at k = 1 with one surface's speed omega_b D_w / 2 (omega_b from
-    the closed form of the helix kinematics); Zhou-Hoeprich's exp(-1.42 Lambda^0.8) with the
-    composite roughness of two balls; the limiting traction gamma_L + tau0 / p_mean."""
+    the closed form of the helix kinematics, times ``turn``: 1/cos(alpha) for a 4-point
+    ball); Zhou-Hoeprich's exp(-1.42 Lambda^0.8) with the composite roughness of two balls;
+    the limiting traction gamma_L + tau0 / p_mean."""
     w = rpm * RPM
     cos_l = math.cos(screw.lead_angle)
     g = screw.gamma
-    omega_b = w * screw.pitch_diameter / (2 * screw.ball_diameter * cos_l) * (1 - g**2 * cos_l**4)
+    omega_b = turn * w * screw.pitch_diameter / (2 * screw.ball_diameter * cos_l)
+    omega_b *= 1 - g**2 * cos_l**4
     r, ep = screw.ball_diameter / 4, screw.reduced_modulus
     a = (3 * force * r / (4 * ep / 2)) ** (1 / 3)
     p_mean = force / (math.pi * a * a)
@@ -282,16 +285,29 @@ def test_recirculation_by_hand() -> None:
 
 # --- four-point contact ------------------------------------------------------------------
 def test_four_point_nut_differs_from_the_double_nut_by_its_extra_spin_slip_and_circuits() -> None:
-    # Same balls, loads and contacts (see test_models): rolling, sliding, hysteresis and
-    # ball-ball sliding are equal; a 4-point ball shares its transverse slip over four
-    # contacts (and spins more); the double nut has twice the circuits to recirculate.
+    # Same balls, loads and contacts (see test_models): rolling, sliding and hysteresis are
+    # equal; a 4-point ball shares its transverse slip over four contacts (and spins more);
+    # the double nut has twice the circuits to recirculate.
     double = reference_screw()
     four = double.replace(nut="single-4point")
     kw = {"speed": [10 * RPM, 1000 * RPM], "temperature": 40.0, "axial_load": 1000.0}
     r4 = friction_torque(four, OIL, **kw)  # type: ignore[arg-type]
     r2 = friction_torque(double, OIL, **kw)  # type: ignore[arg-type]
-    for key in ("rolling", "sliding", "hysteresis", "ball_ball", "seals"):
+    for key in ("rolling", "sliding", "hysteresis", "seals"):
         np.testing.assert_allclose(r4.components[key], r2.components[key], rtol=1e-12)
+    # Ball-ball sliding: the same train forces, but a 4-point ball turns 1/cos(alpha) faster
+    # (kinematics.neighbour_sliding), so neighbours slide faster, on a thicker film.
+    turn = 1.0 / math.cos(double.contact_angle)
+    loads = [float(c.load) for c in operating_state(double, OIL, speed=1.0, temperature=40.0,
+                                                    axial_load=1000.0).contacts[::2]]  # fmt: skip
+    for i, rpm in enumerate((10.0, 1000.0)):
+        forces = [BALL_TRAIN_CONSTANT * q for q in loads]
+        mu2 = sum(f * _ball_ball_coefficient(double, rpm, 40.0, f) for f in forces)
+        mu4 = sum(f * _ball_ball_coefficient(double, rpm, 40.0, f, turn=turn) for f in forces)
+        expected = turn * mu4 / mu2
+        # The hand formulas reproduce the model's coefficient to ~1e-9 (test above).
+        ratio = float(r4.components["ball_ball"][i] / r2.components["ball_ball"][i])
+        assert ratio == pytest.approx(expected, rel=1e-6)
     assert np.all(r4.components["four_point"] > 0.0)
     assert np.all(r2.components["four_point"] == 0.0)
     assert np.all(r4.components["helix_slip"] != r2.components["helix_slip"])
@@ -364,10 +380,15 @@ def test_complete_components_from_contact_powers(nut: str, rpm: float) -> None:
         sliding += c.balls * powers[0]
         extra += c.balls * (powers[1] - powers[0])
         if screw_side:
+            # A 4-point ball turns 1/cos(alpha) faster than a 2-point one (its axis is the
+            # screw's; tests/physics/test_four_point_rigid_body.py).
+            turn = 1 / math.cos(screw.contact_angle) if nut == "single-4point" else 1.0
             force = BALL_TRAIN_CONSTANT * q
-            mu_bb = _ball_ball_coefficient(screw, rpm, temp, force, mu_bl=mu_bl, tau0=tau0)
+            mu_bb = _ball_ball_coefficient(
+                screw, rpm, temp, force, mu_bl=mu_bl, tau0=tau0, turn=turn
+            )
             ball_ball += (
-                c.balls * mu_bb * force * float(kinematics(screw, w).ball_speed)
+                c.balls * mu_bb * force * turn * float(kinematics(screw, w).ball_speed)
                 * (screw.ball_diameter / w)
             )  # fmt: skip
     comp = {k: float(v) for k, v in r.components.items()}

@@ -176,7 +176,10 @@ def test_motors_and_price_give_a_front_over_price(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     pytest.importorskip("pymoo")
-    code, text, err = run(["select", "--case", str(CASE), "--move", MOVE, "--diameter", "32 mm",
+    # A 4 s dwell: at 3 s the 4-point nut's heat (its balls turn 1/cos(alpha) faster than a
+    # 2-point ball's, kinematics.neighbour_sliding) puts the thermal lead error at 101 % of P5.
+    move = MOVE.replace("dwell=3 s", "dwell=4 s")
+    code, text, err = run(["select", "--case", str(CASE), "--move", move, "--diameter", "32 mm",
                            "--lead", "20 mm", "--preload", "light", "--motors", str(MOTORS),
                            "--objective", "energy", "--objective", "price"], capsys)  # fmt: skip
     assert code == 0, err
@@ -234,14 +237,15 @@ def test_a_bad_screw_price_row_names_its_line_and_column(
 def test_the_command_takes_a_screw_price_table(capsys: pytest.CaptureFixture[str]) -> None:
     pytest.importorskip("pymoo")
     prices = ROOT / "examples" / "screw_prices.csv"
-    code, text, err = run(["select", "--case", str(CASE), "--move", MOVE, "--diameter",
+    move = MOVE.replace("dwell=3 s", "dwell=4 s")  # as in the test above: the P5 thermal limit
+    code, text, err = run(["select", "--case", str(CASE), "--move", move, "--diameter",
                            "32..40 mm", "--lead", "20 mm", "--maker", "HIWIN", "--preload",
                            "light", "--screw-prices", str(prices), "--objective", "energy",
                            "--objective", "price"], capsys)  # fmt: skip
     assert code == 0, err
     # R32-20K4 (380 EUR) needs less energy than R40-20K4 (460 EUR): it alone is the front
     # (its price printed in the table), so it is recommended, although the R40 has the lower
-    # largest utilisation (85 % against 91 %, both above 80 %): a candidate beaten on every
+    # largest utilisation (84 % against 89 %, both above 80 %): a candidate beaten on every
     # objective picked is never the recommendation
     table = text.split("recommended:")[0]
     assert "HIWIN R32-20K4-FSC" in table and "380" in table and "R40-20K4" not in table

@@ -32,7 +32,8 @@ each a named component of the result, each from a published law
 ``"ball_ball"``
     Sliding between neighbouring balls. A ball screw has no cage: adjacent
     balls turn the same way, so their surfaces meet at opposite velocities and
-    slide at :math:`\omega_bD_w`. The force between them, the ball-train force,
+    slide at :math:`\omega_bD_w` (4-point balls: :math:`/\cos\alpha`). The force
+    between them, the ball-train force,
     arises because the balls do not all want the same orbital speed (their
     loads, contact angles and diameters differ) and push each other; it is
     taken proportional to the ball load, :math:`F_B = c_B Q`, with one global
@@ -41,15 +42,18 @@ each a named component of the result, each from a published law
     lubrication of the ball-ball contact (:func:`ball_ball_friction`): the
     mixed-film coefficient of a circular Hertz contact of two balls under
     :math:`F_B`, with its film parameter from the oil and the sliding speed.
-    Then :math:`P = \mu_{BB}c_B\sum_j Z_jQ_j\,\omega_bD_w`, the sum over the
+    Then :math:`P = \mu_{BB}c_B\sum_j Z_jQ_j\,v_{BB}`, with :math:`v_{BB}` the
+    neighbours' sliding speed (:func:`ballscrew.kinematics.neighbour_sliding`:
+    :math:`\omega_bD_w`, and :math:`\omega_bD_w/\cos\alpha` for 4-point balls,
+    which turn about the screw's axis), the sum over the
     contact families :math:`j`: a double nut's two halves each push their own
     train with their own ball load; a 4-point ball belongs to both families,
     so its train force is :math:`c_B(Q_1 + Q_2)`, twice a 2-point ball's at
     equal preload. That is the convention, and its reason: the push comes
     from the grooves' tractions on a ball, and a 4-point ball is driven by
     two loaded contact pairs, each as loaded as a double nut's one pair (the
-    preload passes through both). The scorecard's 4-point/double ratio (1.10
-    to 1.85 over the catalogue sizes, median 1.35, against the 1.2 to 1.32
+    preload passes through both). The scorecard's 4-point/double ratio (1.25
+    to 2.14 over the catalogue sizes, median 1.59, against the 1.2 to 1.32
     published) is the check on it. Nuts whose balls are
     kept apart (:attr:`ballscrew.BallScrew.ball_separation`: spacer balls,
     which turn the other way and roll on their neighbours, or a cage, whose
@@ -119,7 +123,13 @@ from ..contact import hertz
 from ..errors import FloatArray, check_choice, check_nonnegative
 from ..geometry import ScrewArray, ScrewGeometry, cos
 from ..helix import SlipContact, transverse_slip_loss
-from ..kinematics import differential_sliding, four_point_spin, kinematics, rad_s_to_rpm
+from ..kinematics import (
+    differential_sliding,
+    four_point_spin,
+    kinematics,
+    neighbour_sliding,
+    rad_s_to_rpm,
+)
 from ..lubricant import Lubricant
 from ..materials import STEEL_DENSITY
 from ..plausible import check_wiper_drag
@@ -440,7 +450,7 @@ def ball_ball_friction(
     ep = screw.reduced_modulus
     loaded = force > 0.0
     f_safe = np.where(loaded, force, 1.0)
-    surface = 0.5 * np.abs(state.kinematics.ball_speed) * screw.ball_diameter
+    surface = 0.5 * np.abs(neighbour_sliding(screw, state.kinematics.screw_speed))
     u_par = ehl.dimensionless_speed(contact.viscosity, surface, ep, radius)
     w_par = ehl.dimensionless_load(f_safe, ep, radius)
     h_min = ehl.hamrock_dowson_1977_minimum(radius, u_par, contact.materials_parameter, w_par, 1.0)
@@ -722,8 +732,8 @@ def _ball_train(
     screw = state.screw
     shape = state.shape
     unit = kinematics(screw, 1.0)
-    # Neighbouring balls slide at omega_b * D_w; per unit screw speed:
-    sliding = float(unit.ball_speed) * screw.ball_diameter
+    # Neighbouring balls slide at omega_b * D_w (4-point: / cos alpha); per unit screw speed:
+    sliding = float(neighbour_sliding(screw, 1.0))
     centre = float(unit.orbital_speed) * 0.5 * screw.pitch_diameter / math.cos(screw.lead_angle)
     spread = (
         centre
@@ -803,8 +813,8 @@ def _ratio_train(
     shape = state.shape
     touching = screw.ball_separation == "none"  # else no surfaces of the train slide
     unit = kinematics(screw, 1.0)
-    # Neighbouring balls slide at omega_b * D_w; per unit screw speed:
-    sliding = _number(unit.ball_speed) * screw.ball_diameter
+    # Neighbouring balls slide at omega_b * D_w (4-point: / cos alpha); per unit screw speed:
+    sliding = _number(neighbour_sliding(screw, 1.0))
     centre = _number(unit.orbital_speed) * 0.5 * screw.pitch_diameter / cos(screw.lead_angle)
     mass = STEEL_DENSITY * math.pi * screw.ball_diameter**3 / 6.0
     omega2 = state.kinematics.screw_speed**2
