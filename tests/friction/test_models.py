@@ -749,6 +749,21 @@ def test_full_model_every_shear_law_is_newtonian_far_below_its_limits(law: str) 
     assert float(lubricant[0]) == pytest.approx(expected, rel=1e-6)
 
 
+def test_contact_pressure_viscosity_follows_the_law_named() -> None:
+    # Roelands: the coefficient at the contact's temperature, found from the viscosity alone
+    # (Z constant); Barus: the oil's alpha as given, one per point.
+    from ballscrew.friction._common import contact_pressure_viscosity
+
+    t = np.array([[20.0], [40.0], [60.0]])
+    eta = OIL.dynamic_viscosity(t)
+    np.testing.assert_allclose(
+        contact_pressure_viscosity(OIL, eta), OIL.pressure_viscosity_at(t), rtol=1e-13
+    )
+    barus = contact_pressure_viscosity(OIL, eta, "barus")
+    assert barus.shape == (3, 1)
+    assert np.all(barus == OIL.pressure_viscosity)
+
+
 @pytest.mark.parametrize("temperature", [40.0, 20.0])
 def test_full_model_assembles_its_contacts(temperature: float) -> None:
     # The model's torque is the sum over the contacts of balls * P/|omega| from

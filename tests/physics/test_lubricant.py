@@ -221,6 +221,11 @@ def test_roelands_across_temperature_refuses_bad_input() -> None:
         roelands_z(6.3e-5, 2e-8)
     with pytest.raises(BallScrewInputError, match="viscosity"):
         roelands_alpha(6.31e-5, 0.6)
+    # The bound itself: ln(eta) + 9.67 is exactly 0 at eta = exp(-9.67) = 6.315e-5 Pa·s.
+    with pytest.raises(BallScrewInputError, match="viscosity"):
+        roelands_z(math.exp(-9.67), 2e-8)
+    # Just above it the formula holds: ln(1e-4) + 9.67 = 0.459660, Z = 3.92 / 0.459660.
+    assert float(roelands_z(1e-4, 2e-8)) == pytest.approx(8.52805, rel=1e-5)
     with pytest.raises(BallScrewInputError, match="alpha"):
         roelands_z(0.05, 0.0)
     with pytest.raises(BallScrewInputError, match="z"):
