@@ -340,7 +340,7 @@ def roelands_1966(viscosity: ArrayLike, alpha: ArrayLike, pressure: ArrayLike) -
     pressure-viscosity index :math:`Z` is chosen so that the initial slope
     :math:`d\ln\eta/dp` at :math:`p = 0` equals Barus's :math:`\alpha`.
     ``alpha`` must be the coefficient at the temperature of ``viscosity``:
-    Roelands' :math:`Z` is a constant of the oil, so a coefficient measured
+    Roelands' :math:`Z` belongs to the oil, so a coefficient measured
     at another temperature is carried over by :func:`roelands_z` and
     :func:`roelands_alpha` (as :meth:`Lubricant.viscosity_at_pressure` does).
 
@@ -398,10 +398,13 @@ def roelands_z(viscosity: ArrayLike, alpha: ArrayLike) -> FloatArray:
     with :math:`p_r = 1.96\cdot10^8` Pa and :math:`\eta_0` in Pa·s: the index
     whose Roelands curve has the initial slope :math:`d\ln\eta/dp = \alpha`
     at the ambient viscosity :math:`\eta_0` (the derivative at :math:`p = 0`
-    of :func:`roelands_1966`'s exponent). Roelands found :math:`Z` to be a
-    constant of each oil, independent of temperature ([1]_; about 0.4 to 0.8
-    for mineral oils): it is derived once, from :math:`\alpha` and
-    :math:`\eta_0` at the temperature :math:`\alpha` was measured at.
+    of :func:`roelands_1966`'s exponent). In Roelands' correlation ([1]_)
+    :math:`Z` belongs to the oil and varies with temperature only through a
+    term :math:`C_Z\log_{10}(1 + T/135)` (:math:`T` in °C) that is known for few
+    oils ([2]_ tabulates :math:`D_Z` and :math:`C_Z` for some); with no
+    :math:`C_Z` given, the package takes :math:`Z` constant (:math:`C_Z = 0`),
+    derived once from :math:`\alpha` and :math:`\eta_0` at the temperature
+    :math:`\alpha` was measured at.
 
     Parameters
     ----------
@@ -432,6 +435,10 @@ def roelands_z(viscosity: ArrayLike, alpha: ArrayLike) -> FloatArray:
        and its correlation with chemical constitution", J. Basic Eng. 85
        (1963) 601-610. Constants as in Hamrock, Schmid and Jacobson,
        *Fundamentals of Fluid Film Lubrication*, 2004, eq. (4.10)-(4.11).
+    .. [2] R. Larsson, P. O. Larsson, E. Eriksson, M. Sjöberg, E. Höglund,
+       "Lubricant properties for input to hydrodynamic and
+       elastohydrodynamic lubrication analyses", Proc. IMechE J 214 (2000)
+       17-27.
     """
     a = check_positive("alpha", alpha, "1/Pa")
     result: FloatArray = a * ROELANDS_PRESSURE / _roelands_span(viscosity)
@@ -449,9 +456,10 @@ def roelands_alpha(viscosity: ArrayLike, z: ArrayLike) -> FloatArray:
     viscosity [Pa·s] at temperature :math:`T`. Roelands' complete
     viscosity-temperature-pressure formula ([1]_) is
     :math:`\ln\eta + 9.67 = [\ln\eta_0(T) + 9.67](1 + p/p_r)^Z` with
-    :math:`Z` a constant of the oil (his temperature term, with its index
-    :math:`S_0`, only gives :math:`\eta_0(T)`, which the package takes from
-    the oil's ASTM D341 or Vogel fit instead). Its initial slope therefore
+    :math:`Z` a property of the oil, here held constant (see
+    :func:`roelands_z`; his temperature term, with its index :math:`S_0`,
+    only gives :math:`\eta_0(T)`, which the package takes from the oil's
+    ASTM D341 or Vogel fit instead). Its initial slope therefore
     falls as the oil warms, in proportion to :math:`\ln\eta_0 + 9.67`: a
     colder oil thickens more under pressure, not less. With ``z`` from
     :func:`roelands_z` at the reference temperature, :func:`roelands_1966`

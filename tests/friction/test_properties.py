@@ -176,8 +176,8 @@ def test_fluid_part_rises_with_viscosity(model: str, case: dict[str, object]) ->
     """The fluid part of the Harris, Olaru and complete models never falls when the oil thickens.
 
     For the Harris models (Roelands' local viscosity) the thicker oil keeps the
-    thin one's Roelands index Z (Roelands ties Z to the oil's chemistry, not to
-    its grade), so its alpha at 40 °C is larger by (ln eta0' + 9.67)/(ln eta0 +
+    thin one's Roelands index Z (in Roelands' correlation Z follows the oil's
+    chemistry, not its grade), so its alpha at 40 °C is larger by (ln eta0' + 9.67)/(ln eta0 +
     9.67); then eta(p) rises with eta0 at every pressure. With alpha held
     instead, Z = alpha p_r / (ln eta0(40 °C) + 9.67) falls as the oil thickens
     and the thin oil's viscosity at Hertz pressures can pass the thick one's:
