@@ -58,6 +58,8 @@ __all__ = [
     "pressure_viscosity_jungnickel",
     "pressure_viscosity_unchecked",
     "roelands_1966",
+    "roelands_alpha",
+    "roelands_z",
     "vogel_constants",
     "vogel_viscosity",
 ]
@@ -83,6 +85,12 @@ ROELANDS_PRESSURE = 1.96e8
 """Roelands' reference pressure :math:`p_r` = 0.196 GPa [Pa] ([6] eq. 4.10)."""
 ROELANDS_LN_ETA_INF = -9.67
 r""":math:`\ln\eta_\infty` with :math:`\eta_\infty = 6.31\cdot10^{-5}` Pa·s ([6] eq. 4.10)."""
+PRESSURE_VISCOSITY_TEMPERATURE = 40.0
+"""Temperature [°C] at which a :class:`Lubricant`'s ``pressure_viscosity`` is given.
+
+The bundled oils' coefficients are quoted at 40 °C (``data/lubricants.csv``),
+the temperature of the ISO 3448 viscosity grade.
+"""
 
 
 def _temperature(value: ArrayLike) -> FloatArray:
@@ -331,6 +339,10 @@ def roelands_1966(viscosity: ArrayLike, alpha: ArrayLike, pressure: ArrayLike) -
     with :math:`p_r = 1.96\cdot10^8` Pa and :math:`\eta` in Pa·s; the
     pressure-viscosity index :math:`Z` is chosen so that the initial slope
     :math:`d\ln\eta/dp` at :math:`p = 0` equals Barus's :math:`\alpha`.
+    ``alpha`` must be the coefficient at the temperature of ``viscosity``:
+    Roelands' :math:`Z` belongs to the oil, so a coefficient measured
+    at another temperature is carried over by :func:`roelands_z` and
+    :func:`roelands_alpha` (as :meth:`Lubricant.viscosity_at_pressure` does).
 
     Parameters
     ----------
@@ -363,12 +375,126 @@ def roelands_1966(viscosity: ArrayLike, alpha: ArrayLike, pressure: ArrayLike) -
     """
     eta0 = check_positive("viscosity", viscosity, "Pa·s")
     p = check_nonnegative("pressure", pressure, "Pa")
-    span = np.log(eta0) - ROELANDS_LN_ETA_INF
+    _roelands_span(eta0)
+    return pressure_viscosity_unchecked("roelands", eta0, alpha, p)
+
+
+def _roelands_span(viscosity: ArrayLike) -> FloatArray:
+    r""":math:`\ln\eta_0 + 9.67` of a viscosity [Pa·s], refused (as ``viscosity``) where <= 0."""
+    eta0 = check_positive("viscosity", viscosity, "Pa·s")
+    span: FloatArray = np.log(eta0) - ROELANDS_LN_ETA_INF
     if np.any(span <= 0.0):
         raise BallScrewInputError(
             "viscosity", float(np.min(eta0)), "a viscosity above 6.31e-5 Pa·s"
         )
-    return pressure_viscosity_unchecked("roelands", eta0, alpha, p)
+    return span
+
+
+def roelands_z(viscosity: ArrayLike, alpha: ArrayLike) -> FloatArray:
+    r"""Roelands' pressure-viscosity index :math:`Z` from a pressure-viscosity coefficient.
+
+    .. math:: Z = \frac{\alpha\,p_r}{\ln\eta_0 + 9.67}
+
+    with :math:`p_r = 1.96\cdot10^8` Pa and :math:`\eta_0` in Pa·s: the index
+    whose Roelands curve has the initial slope :math:`d\ln\eta/dp = \alpha`
+    at the ambient viscosity :math:`\eta_0` (the derivative at :math:`p = 0`
+    of :func:`roelands_1966`'s exponent). In Roelands' correlation ([1]_)
+    :math:`Z` belongs to the oil and varies with temperature only through a
+    term :math:`C_Z\log_{10}(1 + T/135)` (:math:`T` in °C) that is known for few
+    oils ([2]_ tabulates :math:`D_Z` and :math:`C_Z` for some); with no
+    :math:`C_Z` given, the package takes :math:`Z` constant (:math:`C_Z = 0`),
+    derived once from :math:`\alpha` and :math:`\eta_0` at the temperature
+    :math:`\alpha` was measured at.
+
+    Parameters
+    ----------
+    viscosity : array_like
+        Ambient-pressure viscosity :math:`\eta_0` [Pa·s] at the temperature
+        of ``alpha``, above :math:`\eta_\infty = 6.31\cdot10^{-5}` Pa·s.
+    alpha : array_like
+        Pressure-viscosity coefficient at that temperature [1/Pa], > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        :math:`Z` [-].
+
+    Examples
+    --------
+    A mineral ISO VG 68 with 0.0589 Pa·s and 25 /GPa at 40 °C:
+
+    >>> round(float(roelands_z(0.0588676, 25e-9)), 4)
+    0.7166
+
+    References
+    ----------
+    .. [1] C. J. A. Roelands, *Correlational aspects of the viscosity-
+       temperature-pressure relationship of lubricating oils*, PhD thesis,
+       TU Delft, 1966; C. J. A. Roelands, J. C. Vlugter, H. I. Waterman,
+       "The viscosity-temperature-pressure relationship of lubricating oils
+       and its correlation with chemical constitution", J. Basic Eng. 85
+       (1963) 601-610. Constants as in Hamrock, Schmid and Jacobson,
+       *Fundamentals of Fluid Film Lubrication*, 2004, eq. (4.10)-(4.11).
+    .. [2] R. Larsson, P. O. Larsson, E. Eriksson, M. Sjöberg, E. Höglund,
+       "Lubricant properties for input to hydrodynamic and
+       elastohydrodynamic lubrication analyses", Proc. IMechE J 214 (2000)
+       17-27.
+    """
+    a = check_positive("alpha", alpha, "1/Pa")
+    result: FloatArray = a * ROELANDS_PRESSURE / _roelands_span(viscosity)
+    return result
+
+
+def roelands_alpha(viscosity: ArrayLike, z: ArrayLike) -> FloatArray:
+    r"""Pressure-viscosity coefficient at a temperature from Roelands' constant index :math:`Z`.
+
+    .. math::
+        \alpha^*(T) = \left.\frac{d\ln\eta}{dp}\right|_{p=0}
+        = \frac{Z\,[\ln\eta_0(T) + 9.67]}{p_r}
+
+    with :math:`p_r = 1.96\cdot10^8` Pa and :math:`\eta_0(T)` the ambient
+    viscosity [Pa·s] at temperature :math:`T`. Roelands' complete
+    viscosity-temperature-pressure formula ([1]_) is
+    :math:`\ln\eta + 9.67 = [\ln\eta_0(T) + 9.67](1 + p/p_r)^Z` with
+    :math:`Z` a property of the oil, here held constant (see
+    :func:`roelands_z`; his temperature term, with its index :math:`S_0`,
+    only gives :math:`\eta_0(T)`, which the package takes from the oil's
+    ASTM D341 or Vogel fit instead). Its initial slope therefore
+    falls as the oil warms, in proportion to :math:`\ln\eta_0 + 9.67`: a
+    colder oil thickens more under pressure, not less. With ``z`` from
+    :func:`roelands_z` at the reference temperature, :func:`roelands_1966`
+    evaluated with :math:`\alpha^*(T)` is Roelands' formula at :math:`T`.
+
+    Parameters
+    ----------
+    viscosity : array_like
+        Ambient-pressure viscosity :math:`\eta_0(T)` [Pa·s], above
+        :math:`6.31\cdot10^{-5}` Pa·s.
+    z : array_like
+        Roelands' pressure-viscosity index [-] (:func:`roelands_z`), > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        :math:`\alpha^*` [1/Pa].
+
+    Examples
+    --------
+    The mineral VG 68 of :func:`roelands_z` (Z = 0.7166) at 20 °C, where its
+    viscosity is 0.190 Pa·s: 17 % above its 25 /GPa at 40 °C.
+
+    >>> z = roelands_z(0.0588676, 25e-9)
+    >>> round(float(roelands_alpha(0.190215, z)) * 1e9, 2)
+    29.29
+
+    References
+    ----------
+    .. [1] C. J. A. Roelands, PhD thesis, TU Delft, 1966; Roelands, Vlugter
+       and Waterman, J. Basic Eng. 85 (1963) 601-610 (see :func:`roelands_z`).
+    """
+    zz = check_positive("z", z, "(Roelands' pressure-viscosity index)")
+    result: FloatArray = zz * _roelands_span(viscosity) / ROELANDS_PRESSURE
+    return result
 
 
 def pressure_viscosity_unchecked(
@@ -450,8 +576,12 @@ class Lubricant:
     density15 : float
         Density at 15 °C [kg/m³].
     pressure_viscosity : float
-        Pressure-viscosity coefficient :math:`\alpha` [1/Pa], taken as
-        independent of temperature.
+        Pressure-viscosity coefficient :math:`\alpha` [1/Pa] at 40 °C
+        (:data:`PRESSURE_VISCOSITY_TEMPERATURE`). Roelands' law keeps its
+        index :math:`Z` (:attr:`roelands_index`, derived from :math:`\alpha`
+        at 40 °C) constant, so its coefficient at another temperature
+        (:meth:`pressure_viscosity_at`) falls as the oil warms; Barus's law
+        and the EHL film's materials parameter use :math:`\alpha` as given.
 
         ``nu40``, ``density15`` and ``pressure_viscosity`` are refused beyond
         what a lubricant can be and warned of outside the typical range
@@ -695,17 +825,54 @@ class Lubricant:
         result: FloatArray = self.kinematic_viscosity(temperature) * self.density(temperature)
         return result
 
+    @functools.cached_property
+    def roelands_index(self) -> float:
+        """Roelands' pressure-viscosity index :math:`Z` [-] of this oil (:func:`roelands_z`).
+
+        Derived once from ``pressure_viscosity`` and the viscosity at
+        :data:`PRESSURE_VISCOSITY_TEMPERATURE` (40 °C), and constant across
+        temperature as in Roelands' correlation.
+        """
+        eta_ref = self.dynamic_viscosity(PRESSURE_VISCOSITY_TEMPERATURE)
+        return float(roelands_z(eta_ref, self.pressure_viscosity))
+
+    def pressure_viscosity_at(self, temperature: ArrayLike) -> FloatArray:
+        r"""Roelands' pressure-viscosity coefficient :math:`\alpha^*` [1/Pa] at a temperature [°C].
+
+        :func:`roelands_alpha` with this oil's constant :attr:`roelands_index`:
+        ``pressure_viscosity`` at 40 °C, more below, less above (for the
+        bundled mineral ISO VG 68, 29.3 /GPa at 20 °C against 25 /GPa at 40 °C).
+        """
+        t = self.check_temperature("temperature", temperature)
+        return roelands_alpha(self.dynamic_viscosity(t), self.roelands_index)
+
     def viscosity_at_pressure(
         self, temperature: ArrayLike, pressure: ArrayLike, model: str = "roelands"
     ) -> FloatArray:
         """Dynamic viscosity [Pa·s] at ``temperature`` [°C] and gauge ``pressure`` [Pa].
 
-        ``model`` is ``"roelands"`` (default, :func:`roelands_1966`) or
-        ``"barus"`` (:func:`barus_1893`).
+        ``model`` is ``"roelands"`` (default: :func:`roelands_1966` with the
+        coefficient :meth:`pressure_viscosity_at` the temperature, that is
+        Roelands' formula with his index :math:`Z` constant across
+        temperature) or ``"barus"`` (:func:`barus_1893` with
+        ``pressure_viscosity`` as given). ``temperature`` and ``pressure``
+        broadcast against each other.
+
+        Examples
+        --------
+        Colder oil is thicker under pressure too (mineral ISO VG 68, 1 GPa):
+
+        >>> from ballscrew import lubricants
+        >>> oil = lubricants.get("mineral ISO VG 68")
+        >>> eta = oil.viscosity_at_pressure([20.0, 40.0], 1e9)
+        >>> bool(eta[0] > eta[1])
+        True
         """
-        eta0 = self.dynamic_viscosity(temperature)
+        if model not in PRESSURE_VISCOSITY_MODELS:
+            raise BallScrewInputError("model", model, f"one of {list(PRESSURE_VISCOSITY_MODELS)}")
+        t = self.check_temperature("temperature", temperature)
+        eta0 = self.dynamic_viscosity(t)
         if model == "roelands":
-            return roelands_1966(eta0, self.pressure_viscosity, pressure)
-        if model == "barus":
-            return barus_1893(eta0, self.pressure_viscosity, pressure)
-        raise BallScrewInputError("model", model, f"one of {list(PRESSURE_VISCOSITY_MODELS)}")
+            alpha = roelands_alpha(eta0, self.roelands_index)
+            return roelands_1966(eta0, alpha, pressure)
+        return barus_1893(eta0, self.pressure_viscosity, pressure)

@@ -90,12 +90,16 @@ def test_the_viscoelastic_model_below_the_bound_but_past_its_equations_names_the
 
 
 def test_harris_full_where_its_film_gives_nan_names_the_point() -> None:
-    # A pull of 99.9 MN at 499 °C: the model's contact integrals overflow (numpy says so)
-    # and give NaN.
+    # A pull of 99.9 MN on a thin oil with a large pressure-viscosity coefficient (2 mm²/s,
+    # 99 /GPa: Roelands' index Z = 5.9): the local viscosity at the contact's 1e11 Pa
+    # overflows, the model's contact integrals give NaN (numpy says so).
+    from ballscrew import Lubricant
+
+    oil = Lubricant.from_viscosities("thin", 2e-6, 1e-6, 850.0, 9.9e-8)
     with pytest.raises(BallScrewInputError) as info, warnings.catch_warnings():
         warnings.simplefilter("ignore", RuntimeWarning)
         friction_torque(
-            reference_screw(), PAO, speed=1e4, temperature=499.0, axial_load=-9.99e7,
+            reference_screw(), oil, speed=1e4, temperature=40.0, axial_load=-9.99e7,
             model="harris-full",
         )  # fmt: skip
     assert info.value.field == "operating point"

@@ -624,19 +624,20 @@ def test_viscoelastic_defaults_are_the_study_values() -> None:
     )  # fmt: skip
 
 
-def test_simplified_lubricant_torque_from_the_contact_states() -> None:
+@pytest.mark.parametrize("temperature", [40.0, 20.0])
+def test_simplified_lubricant_torque_from_the_contact_states(temperature: float) -> None:
     # The study's eqs. (5) and (8) assembled by hand from the contact states:
     # per contact, F = (1 - A_c/A0) * integral over the ellipse of the harmonic
-    # mean of tau_N = eta(p) u / h_min (Roelands) and tau_lim = tau0 + gamma_L p,
+    # mean of tau_N = eta(p) u / h_min (Roelands at the oil's temperature, its index Z
+    # constant: Lubricant.viscosity_at_pressure) and tau_lim = tau0 + gamma_L p,
     # on a 400 x 400 polar grid; torque = sum of balls * F * u / omega.
     # The model's 8-node Gauss rule is good to 7e-4 (its docstring): tolerance 2e-3.
     from ballscrew.friction._common import limiting_shear
-    from ballscrew.lubricant import roelands_1966
     from ballscrew.state import operating_state
 
     s, w = reference_screw(), 120.0
-    r = friction_torque(s, OIL, speed=w, temperature=40.0, model="harris-simplified")
-    st = operating_state(s, OIL, speed=w, temperature=40.0, hertz_method="houpert")
+    r = friction_torque(s, OIL, speed=w, temperature=temperature, model="harris-simplified")
+    st = operating_state(s, OIL, speed=w, temperature=temperature, hertz_method="houpert")
     tau0, gl = limiting_shear(OIL, None, None)
     rho = (np.arange(400) + 0.5) / 400
     phi = (np.arange(400) + 0.5) / 400 * 2 * np.pi
@@ -647,7 +648,7 @@ def test_simplified_lubricant_torque_from_the_contact_states() -> None:
             continue
         a, b, p0 = float(c.hertz.a), float(c.hertz.b), float(c.hertz.p_max)
         p = p0 * np.sqrt(1 - rr**2)
-        eta = roelands_1966(float(c.viscosity), OIL.pressure_viscosity, p)
+        eta = OIL.viscosity_at_pressure(temperature, p)
         tau_n = eta * abs(float(c.entrainment_speed)) / float(c.film_minimum)
         tau_lim = tau0 + gl * p
         tau = tau_n * tau_lim / (tau_n + tau_lim)
@@ -748,18 +749,36 @@ def test_full_model_every_shear_law_is_newtonian_far_below_its_limits(law: str) 
     assert float(lubricant[0]) == pytest.approx(expected, rel=1e-6)
 
 
-def test_full_model_assembles_its_contacts() -> None:
+def test_contact_pressure_viscosity_follows_the_law_named() -> None:
+    # Roelands: the coefficient at the contact's temperature, found from the viscosity alone
+    # (Z constant); Barus: the oil's alpha as given, one per point.
+    from ballscrew.friction._common import contact_pressure_viscosity
+
+    t = np.array([[20.0], [40.0], [60.0]])
+    eta = OIL.dynamic_viscosity(t)
+    np.testing.assert_allclose(
+        contact_pressure_viscosity(OIL, eta), OIL.pressure_viscosity_at(t), rtol=1e-13
+    )
+    barus = contact_pressure_viscosity(OIL, eta, "barus")
+    assert barus.shape == (3, 1)
+    assert np.all(barus == OIL.pressure_viscosity)
+
+
+@pytest.mark.parametrize("temperature", [40.0, 20.0])
+def test_full_model_assembles_its_contacts(temperature: float) -> None:
     # The model's torque is the sum over the contacts of balls * P/|omega| from
     # the contact power, with the sliding and spin per unit screw speed taken
-    # here from the kinematics at the operating speed (linear in it).
+    # here from the kinematics at the operating speed (linear in it), and
+    # Roelands' coefficient at the oil's temperature (Lubricant.pressure_viscosity_at).
     from ballscrew.friction._common import limiting_shear
     from ballscrew.kinematics import differential_sliding, kinematics
     from ballscrew.state import operating_state
 
-    s, w = reference_screw(), 80.0
-    r = friction_torque(s, OIL, speed=w, temperature=40.0, axial_load=700.0, model="harris-full")
-    st = operating_state(s, OIL, speed=w, temperature=40.0, axial_load=700.0,
+    s, w, t = reference_screw(), 80.0, temperature
+    r = friction_torque(s, OIL, speed=w, temperature=t, axial_load=700.0, model="harris-full")
+    st = operating_state(s, OIL, speed=w, temperature=t, axial_load=700.0,
                          hertz_method="exact")  # fmt: skip
+    alpha = float(OIL.pressure_viscosity_at(t))
     tau0, gl = limiting_shear(OIL, None, None)
     c_s, c_n = (float(c) / w for c in differential_sliding(s, w))
     kin = kinematics(s, w)
@@ -771,7 +790,7 @@ def test_full_model_assembles_its_contacts() -> None:
         asp, lub, _ = full_contact_power(
             a=np.atleast_1d(c.hertz.a), b=np.atleast_1d(c.hertz.b),
             p_max=np.atleast_1d(c.hertz.p_max), asperity_share=np.atleast_1d(c.asperity_share),
-            viscosity=np.atleast_1d(c.viscosity), pressure_viscosity=OIL.pressure_viscosity,
+            viscosity=np.atleast_1d(c.viscosity), pressure_viscosity=alpha,
             film=np.atleast_1d(c.film_central), curvature=c_s if c.side == "screw" else c_n,
             spin=spins[c.side], screw_speed=np.atleast_1d(w), tau0=tau0, gamma_l=gl, mu0=0.1,
         )  # fmt: skip

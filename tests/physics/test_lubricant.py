@@ -15,6 +15,8 @@ from ballscrew.lubricant import (
     density_linear,
     pressure_viscosity_jungnickel,
     roelands_1966,
+    roelands_alpha,
+    roelands_z,
     vogel_constants,
     vogel_viscosity,
 )
@@ -133,6 +135,101 @@ def test_roelands_closed_form_value() -> None:
     # Z = 1.5e-8 * 1.96e8 / span = 0.440498, (1 + 1e9/1.96e8)^Z - 1 = 1.218197,
     # eta/eta0 = exp(6.674268 * 1.218197) = exp(8.130570) = 3396.7.
     assert float(roelands_1966(0.05, 1.5e-8, 1e9)) / 0.05 == pytest.approx(3396.7, rel=5e-5)
+
+
+def test_roelands_across_temperature_by_hand() -> None:
+    # Roelands' complete formula, ln(eta) + 9.67 = (ln eta0(T) + 9.67)(1 + p/p_r)^Z with Z
+    # a constant of the oil, worked by hand for mineral ISO VG 68 (eta0 = 0.0588676 Pa·s and
+    # alpha = 25 /GPa at 40 °C; eta0 = 0.190215 Pa·s at 20 °C) at 20 °C and 1 GPa:
+    # span(40) = ln 0.0588676 + 9.67 = 6.837536, Z = 25e-9 * 1.96e8 / 6.837536 = 0.716632,
+    # span(20) = ln 0.190215 + 9.67 = 8.010400, alpha*(20) = Z * 8.010400 / 1.96e8
+    # = 2.92883e-8 /Pa; (1 + 1e9 / 1.96e8)^Z = 6.102041^0.716632 = 3.655081,
+    # ln(eta) = 8.010400 * 3.655081 - 9.67 = 19.60866, eta = 3.2804e8 Pa·s.
+    # Tolerances: the hand values carry 6-7 figures.
+    z = roelands_z(0.0588676, 25e-9)
+    assert float(z) == pytest.approx(0.716632, rel=2e-6)
+    alpha20 = roelands_alpha(0.190215, z)
+    assert float(alpha20) == pytest.approx(2.92883e-8, rel=2e-6)
+    assert float(roelands_1966(0.190215, alpha20, 1e9)) == pytest.approx(3.2804e8, rel=5e-5)
+    # The bundled oil through its own viscosity fit (0.190215 Pa·s at 20 °C to 6 figures).
+    oil = lubricants.get("mineral ISO VG 68")
+    assert oil.roelands_index == pytest.approx(0.716632, rel=2e-6)
+    assert float(oil.pressure_viscosity_at(20.0)) == pytest.approx(2.92883e-8, rel=5e-6)
+    assert float(oil.viscosity_at_pressure(20.0, 1e9)) == pytest.approx(3.2804e8, rel=1e-4)
+
+
+def test_roelands_across_temperature_limits_and_direction() -> None:
+    oil = lubricants.get("mineral ISO VG 68")
+    t = np.array([0.0, 20.0, 40.0, 60.0, 100.0])
+    # No pressure: the ambient viscosity; at 40 °C (where alpha is given): alpha itself.
+    np.testing.assert_allclose(
+        oil.viscosity_at_pressure(t, 0.0), oil.dynamic_viscosity(t), rtol=1e-15
+    )
+    assert float(oil.pressure_viscosity_at(40.0)) == pytest.approx(25e-9, rel=1e-14)
+    # The initial slope d ln(eta)/dp at each temperature is alpha*(T) (difference over 1 kPa).
+    slope = np.log(oil.viscosity_at_pressure(t, 1e3) / oil.dynamic_viscosity(t)) / 1e3
+    np.testing.assert_allclose(slope, oil.pressure_viscosity_at(t), rtol=1e-4)
+    # Z is the oil's constant: recovered from alpha*(T) and eta0(T) at every temperature.
+    np.testing.assert_allclose(
+        roelands_z(oil.dynamic_viscosity(t), oil.pressure_viscosity_at(t)),
+        oil.roelands_index,
+        rtol=1e-12,
+    )
+    # Colder oil: larger alpha and thicker under pressure (one alpha at every temperature
+    # gave 2.1e6 Pa·s at 20 °C against 4.5e6 Pa·s at 40 °C at 1 GPa).
+    assert np.all(np.diff(oil.pressure_viscosity_at(t)) < 0)
+    for p in (1e8, 1e9, 2.5e9):
+        assert np.all(np.diff(oil.viscosity_at_pressure(t, p)) < 0)
+    assert float(oil.viscosity_at_pressure(20.0, 1e9)) > float(oil.viscosity_at_pressure(40.0, 1e9))
+    # Barus keeps alpha as given: eta0(T) exp(alpha p).
+    np.testing.assert_allclose(
+        oil.viscosity_at_pressure(t, 1e8, model="barus"),
+        oil.dynamic_viscosity(t) * math.exp(25e-9 * 1e8),
+        rtol=1e-13,
+    )
+
+
+def test_roelands_across_temperature_broadcasts() -> None:
+    oil = lubricants.get("PAO ISO VG 68")
+    t = np.array([20.0, 30.0, 45.0])[:, None]
+    p = np.array([0.0, 3e8, 1e9, 2e9])
+    eta = oil.viscosity_at_pressure(t, p)
+    assert eta.shape == (3, 4)
+    for i in range(3):
+        for j in range(4):
+            one = oil.viscosity_at_pressure(float(t[i, 0]), float(p[j]))
+            assert float(eta[i, j]) == pytest.approx(float(one), rel=1e-14)
+    assert oil.pressure_viscosity_at(t).shape == (3, 1)
+    assert roelands_alpha(np.full((2, 3), 0.05), np.array([0.5, 0.6, 0.7])).shape == (2, 3)
+
+
+def test_roelands_across_temperature_refuses_bad_input() -> None:
+    oil = lubricants.get("mineral ISO VG 68")
+    with pytest.raises(BallScrewInputError, match="pressure"):
+        oil.viscosity_at_pressure(20.0, -1.0)
+    # Far below the pour point the viscosity fit overflows: the error names the temperature.
+    with pytest.raises(BallScrewInputError, match="temperature"):
+        oil.viscosity_at_pressure(-250.0, 1e9)
+    with pytest.raises(BallScrewInputError, match="temperature"):
+        oil.pressure_viscosity_at(-300.0)
+    with pytest.raises(BallScrewInputError, match="temperature"):
+        oil.viscosity_at_pressure(math.nan, 1e9)
+    with pytest.raises(BallScrewInputError, match="model"):
+        oil.viscosity_at_pressure(20.0, 1e9, model="doolittle")
+    # At or below eta_inf = 6.31e-5 Pa·s Roelands' formula has no meaning.
+    with pytest.raises(BallScrewInputError, match="viscosity"):
+        roelands_z(6.3e-5, 2e-8)
+    with pytest.raises(BallScrewInputError, match="viscosity"):
+        roelands_alpha(6.31e-5, 0.6)
+    # The bound itself: ln(eta) + 9.67 is exactly 0 at eta = exp(-9.67) = 6.315e-5 Pa·s.
+    with pytest.raises(BallScrewInputError, match="viscosity"):
+        roelands_z(math.exp(-9.67), 2e-8)
+    # Just above it the formula holds: ln(1e-4) + 9.67 = 0.459660, Z = 3.92 / 0.459660.
+    assert float(roelands_z(1e-4, 2e-8)) == pytest.approx(8.52805, rel=1e-5)
+    with pytest.raises(BallScrewInputError, match="alpha"):
+        roelands_z(0.05, 0.0)
+    with pytest.raises(BallScrewInputError, match="z"):
+        roelands_alpha(0.05, -0.5)
 
 
 def test_barus_overflows_to_inf_without_warning() -> None:

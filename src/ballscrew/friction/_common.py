@@ -13,13 +13,14 @@ from .. import rheology
 from ..errors import BallScrewInputError, FloatArray, check_choice, check_nonnegative
 from ..geometry import BallScrew, ScrewGeometry
 from ..kinematics import kinematics
-from ..lubricant import Lubricant, pressure_viscosity_unchecked
+from ..lubricant import Lubricant, pressure_viscosity_unchecked, roelands_alpha
 from ..state import OperatingState, operating_state
 
 __all__ = [
     "RHEOLOGY_MODELS",
     "TORQUE_ARMS",
     "TorqueArm",
+    "contact_pressure_viscosity",
     "lever_arms",
     "limiting_shear",
     "local_viscosity",
@@ -137,14 +138,38 @@ def shear_stress(
 
 
 def local_viscosity(
-    viscosity: FloatArray, pressure_viscosity: float, pressure: FloatArray, model: str
+    viscosity: FloatArray,
+    pressure_viscosity: float | FloatArray,
+    pressure: FloatArray,
+    model: str,
 ) -> FloatArray:
     """Viscosity at the local pressure [Pa·s], rows of ``pressure`` against ``viscosity``.
 
     :func:`ballscrew.lubricant.pressure_viscosity_unchecked` (the one
-    implementation of Roelands' and Barus's equations) on rows of pressures.
+    implementation of Roelands' and Barus's equations) on rows of pressures;
+    ``pressure_viscosity`` is one coefficient, or one per ``viscosity`` (the
+    coefficient at each point's temperature, :func:`contact_pressure_viscosity`).
     """
-    return pressure_viscosity_unchecked(model, viscosity[..., None], pressure_viscosity, pressure)
+    alpha = np.asarray(pressure_viscosity, dtype=float)[..., None]
+    return pressure_viscosity_unchecked(model, viscosity[..., None], alpha, pressure)
+
+
+def contact_pressure_viscosity(
+    lubricant: Lubricant, viscosity: npt.ArrayLike, model: str = "roelands"
+) -> FloatArray:
+    r"""The pressure-viscosity coefficient [1/Pa] at a contact whose oil has ``viscosity`` [Pa·s].
+
+    Roelands (``model="roelands"``): :math:`\alpha^*` of
+    :func:`ballscrew.lubricant.roelands_alpha` with the oil's constant index
+    :attr:`~ballscrew.lubricant.Lubricant.roelands_index`, so that the local
+    viscosity follows Roelands' formula at the contact's temperature (the
+    ambient viscosity carries the temperature). Barus: the oil's
+    ``pressure_viscosity`` as given, one value for every point.
+    """
+    eta0 = np.asarray(viscosity, dtype=float)
+    if model == "roelands":
+        return roelands_alpha(eta0, lubricant.roelands_index)
+    return np.full(eta0.shape, lubricant.pressure_viscosity)
 
 
 def model_state(

@@ -27,7 +27,8 @@ local shear stress acts along the sliding direction with magnitude
     \tau = \frac{A_c}{A_0}\mu_0 p + \left(1 - \frac{A_c}{A_0}\right)
            \tau_f\!\left(\eta(p), \frac{|v|}{h}, \tau_{lim}(p)\right)
 
-with :math:`\eta(p)` by Roelands, :math:`\tau_{lim} = \tau_0 + \gamma_L p`,
+with :math:`\eta(p)` by Roelands (his index :math:`Z` constant across
+temperature, :func:`ballscrew.lubricant.roelands_alpha`), :math:`\tau_{lim} = \tau_0 + \gamma_L p`,
 the film :math:`h` (central by default) and the rheology of
 :func:`~.harris_simplified.shear_stress`.
 
@@ -75,6 +76,7 @@ from ..state import ContactState, OperatingState
 from ..validity import film_checks
 from ._common import (
     RHEOLOGY_MODELS,
+    contact_pressure_viscosity,
     limiting_shear,
     local_viscosity,
     model_state,
@@ -92,7 +94,7 @@ def full_contact_power(
     p_max: FloatArray,
     asperity_share: FloatArray,
     viscosity: FloatArray,
-    pressure_viscosity: float,
+    pressure_viscosity: float | FloatArray,
     film: FloatArray,
     curvature: float,
     spin: float,
@@ -115,8 +117,9 @@ def full_contact_power(
         :math:`A_c/A_0` [-].
     viscosity : numpy.ndarray
         Ambient-pressure viscosity [Pa·s].
-    pressure_viscosity : float
-        :math:`\alpha` [1/Pa] (Roelands).
+    pressure_viscosity : float or numpy.ndarray
+        :math:`\alpha` [1/Pa] (Roelands) at the oil's temperature, one value
+        or one per ``viscosity`` (:func:`~._common.contact_pressure_viscosity`).
     film : numpy.ndarray
         Film thickness [m].
     curvature, spin : float
@@ -347,7 +350,7 @@ def harris_full(
             p_max=flat[2],
             asperity_share=flat[3],
             viscosity=flat[4],
-            pressure_viscosity=lubricant.pressure_viscosity,
+            pressure_viscosity=contact_pressure_viscosity(lubricant, flat[4]),
             film=flat[5],
             curvature=curvature,
             spin=spin,

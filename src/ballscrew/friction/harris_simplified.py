@@ -87,6 +87,7 @@ from ..state import OperatingState
 from ..validity import film_checks
 from ._common import (
     RHEOLOGY_MODELS,
+    contact_pressure_viscosity,
     limiting_shear,
     local_viscosity,
     model_state,
@@ -168,7 +169,7 @@ def simplified_contact_force(
     p_max: npt.ArrayLike,
     asperity_share: npt.ArrayLike,
     viscosity: npt.ArrayLike,
-    pressure_viscosity: float,
+    pressure_viscosity: npt.ArrayLike,
     shear_rate: npt.ArrayLike,
     tau0: float,
     gamma_l: float,
@@ -193,8 +194,9 @@ def simplified_contact_force(
         :math:`A_c/A_0` [-].
     viscosity : array_like
         Viscosity at ambient pressure :math:`\eta_0` [Pa·s].
-    pressure_viscosity : float
-        :math:`\alpha` [1/Pa].
+    pressure_viscosity : array_like
+        :math:`\alpha` [1/Pa] at the oil's temperature, one value or one per
+        ``viscosity`` (:func:`~._common.contact_pressure_viscosity`).
     shear_rate : array_like
         :math:`\dot\gamma` [1/s].
     tau0, gamma_l : float
@@ -235,10 +237,8 @@ def simplified_contact_force(
     tau_lim = p * gamma_l
     tau_lim += tau0
     # A new array of the full shape, so the steps below may work in place.
-    tau_n = (
-        local_viscosity(eta0, pressure_viscosity, p, pressure_viscosity_model)
-        * np.abs(rate)[..., None]
-    )
+    alpha = np.asarray(pressure_viscosity, dtype=float)
+    tau_n = local_viscosity(eta0, alpha, p, pressure_viscosity_model) * np.abs(rate)[..., None]
     if rheology_model == "harmonic":
         # tau_N tau_lim / (tau_N + tau_lim), written to stay finite for tau_N = inf.
         if np.all(rate != 0):
@@ -325,7 +325,9 @@ def harris_simplified(
     eyring_stress : float, optional
         :math:`\tau_E` [Pa] of the Eyring law; required with ``rheology_model="eyring"``.
     pressure_viscosity_model : {"roelands", "barus"}
-        Default Roelands: Barus overflows at contact pressures.
+        Default Roelands (his index :math:`Z` constant across temperature,
+        :func:`ballscrew.lubricant.roelands_alpha`): Barus overflows at
+        contact pressures. Barus takes the oil's ``pressure_viscosity`` as given.
     limiting_shear_stress, limiting_shear_coefficient : float, optional
         :math:`\tau_0` [Pa] and :math:`\gamma_L` [-]; default: the lubricant's.
     asperity_b, asperity_c : float
@@ -377,7 +379,9 @@ def harris_simplified(
             p_max=contact.hertz.p_max,
             asperity_share=contact.asperity_share,
             viscosity=contact.viscosity,
-            pressure_viscosity=lubricant.pressure_viscosity,
+            pressure_viscosity=contact_pressure_viscosity(
+                lubricant, contact.viscosity, pressure_viscosity_model
+            ),
             shear_rate=rate,
             tau0=tau0,
             gamma_l=gamma_l,

@@ -220,7 +220,7 @@ class LubricantSection(BaseModel):
     pressure_viscosity: Value | None = _f(
         None,
         "1/pressure",
-        "pressure-viscosity coefficient alpha (estimated if left out)",
+        "pressure-viscosity coefficient alpha at 40 °C (estimated if left out)",
         "18 1/GPa",
         si="1/Pa",
     )
