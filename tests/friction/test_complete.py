@@ -295,15 +295,19 @@ def test_four_point_nut_differs_from_the_double_nut_by_its_extra_spin_slip_and_c
     r2 = friction_torque(double, OIL, **kw)  # type: ignore[arg-type]
     for key in ("rolling", "sliding", "hysteresis", "seals"):
         np.testing.assert_allclose(r4.components[key], r2.components[key], rtol=1e-12)
-    # Ball-ball sliding: the same train forces, but a 4-point ball turns 1/cos(alpha) faster
-    # (kinematics.neighbour_sliding), so neighbours slide faster, on a thicker film.
+    # Ball-ball sliding: a 4-point ball is one ball of one train and pushes its neighbour
+    # once, with c_B times the larger of its two pairs' loads, where each half of the double
+    # nut pushes its own train with its own load; and a 4-point ball turns 1/cos(alpha)
+    # faster (kinematics.neighbour_sliding), so neighbours slide faster, on a thicker film.
     turn = 1.0 / math.cos(double.contact_angle)
     loads = [float(c.load) for c in operating_state(double, OIL, speed=1.0, temperature=40.0,
                                                     axial_load=1000.0).contacts[::2]]  # fmt: skip
+    assert loads[0] != pytest.approx(loads[1], rel=0.05)  # the axial load splits the pairs
     for i, rpm in enumerate((10.0, 1000.0)):
         forces = [BALL_TRAIN_CONSTANT * q for q in loads]
         mu2 = sum(f * _ball_ball_coefficient(double, rpm, 40.0, f) for f in forces)
-        mu4 = sum(f * _ball_ball_coefficient(double, rpm, 40.0, f, turn=turn) for f in forces)
+        push = max(forces)
+        mu4 = push * _ball_ball_coefficient(double, rpm, 40.0, push, turn=turn)
         expected = turn * mu4 / mu2
         # The hand formulas reproduce the model's coefficient to ~1e-9 (test above).
         ratio = float(r4.components["ball_ball"][i] / r2.components["ball_ball"][i])
@@ -355,6 +359,7 @@ def test_complete_components_from_contact_powers(nut: str, rpm: float) -> None:
     unit = kinematics(screw, 1.0)
     s4, n4 = four_point_spin(screw, 1.0)
     rolling = hysteresis = sliding = extra = ball_ball = 0.0
+    trains: list[tuple[int, float]] = []  # (balls, load) of each train's balls
     for c in st.contacts:
         q, a, b = float(c.load), float(c.hertz.a), float(c.hertz.b)
         f_r = float(rl.rolling_force_houpert(screw.reduced_modulus, c.rx, c.ry / c.rx,
@@ -380,17 +385,21 @@ def test_complete_components_from_contact_powers(nut: str, rpm: float) -> None:
         sliding += c.balls * powers[0]
         extra += c.balls * (powers[1] - powers[0])
         if screw_side:
-            # A 4-point ball turns 1/cos(alpha) faster than a 2-point one (its axis is the
-            # screw's; tests/physics/test_four_point_rigid_body.py).
-            turn = 1 / math.cos(screw.contact_angle) if nut == "single-4point" else 1.0
-            force = BALL_TRAIN_CONSTANT * q
-            mu_bb = _ball_ball_coefficient(
-                screw, rpm, temp, force, mu_bl=mu_bl, tau0=tau0, turn=turn
-            )
-            ball_ball += (
-                c.balls * mu_bb * force * turn * float(kinematics(screw, w).ball_speed)
-                * (screw.ball_diameter / w)
-            )  # fmt: skip
+            trains.append((c.balls, q))
+    # A 4-point ball is one ball of one train: one push, at its larger pair's load; and it
+    # turns 1/cos(alpha) faster than a 2-point one (its axis is the screw's;
+    # tests/physics/test_four_point_rigid_body.py).
+    turn = 1.0
+    if nut == "single-4point":
+        trains = [(trains[0][0], max(q for _, q in trains))]
+        turn = 1 / math.cos(screw.contact_angle)
+    for balls, q in trains:
+        force = BALL_TRAIN_CONSTANT * q
+        mu_bb = _ball_ball_coefficient(screw, rpm, temp, force, mu_bl=mu_bl, tau0=tau0, turn=turn)
+        ball_ball += (
+            balls * mu_bb * force * turn * float(kinematics(screw, w).ball_speed)
+            * (screw.ball_diameter / w)
+        )  # fmt: skip
     comp = {k: float(v) for k, v in r.components.items()}
     assert comp["rolling"] == pytest.approx(rolling, rel=1e-12)
     assert comp["hysteresis"] == pytest.approx(hysteresis, rel=1e-12)

