@@ -193,6 +193,8 @@ class Case:
         The TOML text the case was read from.
     screw_source : str
         Where the screw's geometry came from when a designation named it.
+    designation : str
+        ``[screw] designation`` as written ("" when the file gives none).
     axis : dict
         ``[axis]`` in SI (kg, kg·m², rad, m; d·n in mm·rpm) and its choices
         (bearing type, support): the keywords of :class:`ballscrew.axis.energy.Axis`.
@@ -250,6 +252,7 @@ class Case:
     command's), ``assumed`` (marked so, with its reason in :attr:`assumptions`)."""
     contact_angle_scatter: float | None = None
     output_units: str = "si"
+    designation: str = ""
     warned: tuple[str, ...] = ()
     """The plausibility warnings of its inputs, each once (a ball off the makers' series, an
     oil outside its typical range: :mod:`ballscrew.plausible`); also warned when read."""
@@ -457,7 +460,14 @@ def _parse_case(text: str, source: str) -> Case:
         sources=_sources(data, notes),
         contact_angle_scatter=scatter,
         output_units=data.output.units,
+        designation=_designation(data.screw),
     )
+
+
+def _designation(s: ScrewSection) -> str:
+    """``[screw] designation`` as written, "" when not given."""
+    raw = s.designation.value if isinstance(s.designation, Assumed) else s.designation
+    return "" if raw is None else str(raw)
 
 
 def _motor(data: CaseFile, si: Callable[[str, str, Any, str], float]) -> dict[str, float]:
