@@ -42,8 +42,10 @@ from ..kinematics import rad_s_to_rpm
 
 __all__ = [
     "DIALECTS",
+    "INPUT_HEADER",
     "csv_bytes",
     "csv_text",
+    "input_rows",
     "json_text",
     "provenance",
     "result_json",
@@ -195,6 +197,7 @@ def provenance(
             "title": case.title,
             "assumptions": [dataclasses.asdict(a) for a in case.assumptions],
             "text": case.text,
+            "values": case.input_values(),
         },
         "screw": screw,
         "lubricant": {
@@ -221,6 +224,38 @@ def provenance(
             for name, r in results.items()
         },
     }
+
+
+INPUT_HEADER = ["key", "value (SI)", "unit", "source"]
+"""The columns of a report's table of inputs (:func:`input_rows`)."""
+
+
+def input_rows(values: Sequence[Mapping[str, Any]]) -> list[list[str]]:
+    """A report's table of a case's inputs (:meth:`ballscrew.io.case.Case.input_values`).
+
+    One row per key that has a value, or whose absence the run reads in a stated
+    way; a value to :data:`~ballscrew.io.numbers.INPUT_DIGITS` digits, a list of
+    more than three values as its count and span; the source followed by how the
+    value was found.
+    """
+    from ..io.numbers import INPUT_DIGITS
+
+    rows = []
+    for v in values:
+        value, how = v["value"], v.get("how", "")
+        if value is None and not how:
+            continue
+        if value is None:
+            shown = "-"
+        elif isinstance(value, list) and len(value) > 3:
+            shown = f"{len(value)} values, {text(min(value), INPUT_DIGITS)} to " \
+                    f"{text(max(value), INPUT_DIGITS)}"  # fmt: skip
+        elif isinstance(value, list):
+            shown = ", ".join(text(x, INPUT_DIGITS) for x in value)
+        else:
+            shown = text(value, INPUT_DIGITS)
+        rows.append([v["key"], shown, v.get("unit", ""), v["source"] + (f": {how}" if how else "")])
+    return rows
 
 
 def _jsonable(value: Any) -> Any:
