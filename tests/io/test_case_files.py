@@ -142,6 +142,7 @@ def test_check_prints_each_field_once_within_100_columns_with_its_sources_as_not
     by_name = {r[1]: r[2] for r in rows}
     notes = {int(m[1]): m[2] for m in (re.match(r"\[(\d+)\] (.*)", x) for x in lines) if m}
     number = re.compile(r"\[(\d+)\]$")
+    assert sorted(notes) == list(range(1, len(notes) + 1))  # numbered from 1, each once
     # The designation as written in the file; its catalogue under the table.
     assert by_name["designation"].startswith("HIWIN R32-10K5-FDC")
     cited = notes[int(number.search(by_name["designation"])[1])]  # type: ignore[index]

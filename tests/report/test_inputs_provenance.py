@@ -82,6 +82,15 @@ def test_each_value_the_file_gives_is_in_the_json_with_its_unit(
             assert entry["source"] == "not given", entry
     load_factor = values["check.load_factor"]
     assert load_factor["value"] is None and load_factor["how"].startswith("1.2")
+    # What stands in is the schema's "(none: ...)" of the key, whole: up to its own bracket.
+    from ballscrew.io.schema import SECTIONS
+
+    for entry in values.values():
+        if entry.get("how") and entry["value"] is None:
+            section, key = entry["key"].split(".", 1)
+            described = SECTIONS[section].model_fields[key].description or ""
+            how = entry["how"]
+            assert how.count("(") == how.count(")") and f"none: {how})" in described, entry
 
 
 def test_the_estimated_screw_inertia_says_how_with_its_value(
