@@ -82,6 +82,18 @@ def test_case_errors_name_the_key(edit: tuple[str, str], field: str, words: str)
     assert words in str(info.value)
 
 
+def test_a_machine_file_given_as_a_case_says_which_command_reads_it(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    # A newcomer's trial of 0.3.0 gave examples/machine_vmc.toml to `energy --case`: the
+    # refusal named "machine = {...}" as a misspelt key.
+    machine = ROOT / "examples" / "machine_vmc.toml"
+    code, _, err = run(["energy", "--case", str(machine), "--move", "stroke=300 mm, "
+                        "feed=30 m/min, acceleration=2 m/s^2"], capsys)  # fmt: skip
+    assert code == 2 and "a machine file" in err and "ballscrew program" in err
+    assert "--machine" in err and "check the spelling" not in err
+
+
 def test_case_needs_exactly_one_command(capsys: pytest.CaptureFixture[str]) -> None:
     code, _, err = run(["case"], capsys)
     assert code == 2 and "exactly one" in err

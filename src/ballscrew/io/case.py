@@ -600,6 +600,13 @@ def _motor(data: CaseFile, si: Callable[[str, str, Any, str], float]) -> dict[st
 def _case_file(text: str, source: str) -> CaseFile:
     """The TOML text parsed and validated against the case file's schema."""
     raw = parse_toml(text, source)
+    if "screw" not in raw and ("machine" in raw or "axes" in raw):
+        raise BallScrewInputError(
+            source, "a machine file ([machine], [axes.X])",
+            "a case file of one screw ([screw], [lubricant], ...); a machine file is read by "
+            "'ballscrew program PROGRAM --machine FILE', and each of its axes' cases is its "
+            "[axes.X.case] table (one axis alone: e.g. examples/xy_table_32x10.toml)",
+        )  # fmt: skip
     try:
         return CaseFile.model_validate(raw)
     except ValidationError as exc:
