@@ -58,11 +58,14 @@ class BallScrewValidityWarning(UserWarning):
 
     The result is still computed (extrapolated); the message names the
     quantity, its value and the range, and ``issue`` holds them as a
-    :class:`ballscrew.validity.ValidityIssue`. See :mod:`ballscrew.validity`.
+    :class:`ballscrew.validity.ValidityIssue`. A range every ordinary ball screw
+    leaves (the film formulas' speed and load) is told in one line
+    (:meth:`~ballscrew.validity.ValidityIssue.short`), once per session; its
+    source and reason are ``issue.note()``. See :mod:`ballscrew.validity`.
     """
 
     def __init__(self, issue: Any) -> None:
-        super().__init__(issue.note() if getattr(issue, "routine", "") else str(issue))
+        super().__init__(issue.short() if hasattr(issue, "short") else str(issue))
         self.issue = issue
 
 

@@ -133,6 +133,28 @@ class ValidityIssue:
         """The issue told as a note: the message and why ordinary screws get it."""
         return f"{self} (usual for ball screws: {self.routine})" if self.routine else str(self)
 
+    def short(self) -> str:
+        """One line for a routine range: the model, the quantity, its value and the range.
+
+        The source of the range and why ordinary screws leave it are in :meth:`note`,
+        which the line points to (a :class:`~ballscrew.errors.BallScrewValidityWarning`
+        holds the issue as ``issue``). A statement, or an issue that is not
+        routine, is told in full (:meth:`note`): it is rare and its source matters.
+
+        >>> issue = ValidityIssue("dimensionless load W", 2e-5, 3.7e-7, 1.1e-5,
+        ...                       "the film formulas", "their fits", "complete", "why")
+        >>> issue.short()
+        'complete: dimensionless load W = 2e-05 is outside 3.7e-07 to 1.1e-05 (the film formulas): extrapolated, usual for ball screws (.issue.note() says why)'
+        """  # noqa: E501 - the doctest's one line is the point
+        if not self.routine or math.isnan(self.low) or math.isnan(self.high):
+            return self.note()
+        head = f"{self.model}: " if self.model else ""
+        return (
+            f"{head}{self.quantity} = {self.value:.4g} is outside {self.low:.4g} to "
+            f"{self.high:.4g} ({self.applies_to}): extrapolated, usual for ball screws "
+            "(.issue.note() says why)"
+        )
+
 
 class ValidityCheck(Protocol):
     """A model's validity check, the one signature every check has.

@@ -5,12 +5,14 @@ from __future__ import annotations
 import csv
 import json
 import math
+import warnings
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 from ballscrew import __version__, friction_torque
+from ballscrew.errors import BallScrewValidityWarning
 from ballscrew.io.case import load_case
 from cli_runner import run
 from shared import DATA
@@ -217,6 +219,30 @@ def test_torque_rerun_gives_byte_identical_csv_and_json(
         assert code == 0
         outputs.append((csv_file.read_bytes(), json_file.read_bytes()))
     assert outputs[0] == outputs[1]
+
+
+def test_torque_json_carries_the_library_s_floats_unrounded(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # A newcomer's trial of 0.3.0: the JSON rows were rounded to 7 digits, where the guide
+    # ("Numbers in outputs") promises full precision in JSON. The library's own call at the
+    # same point is the independent number: the JSON must read back to the very same floats.
+    out = tmp_path / "t.json"
+    args = ["torque", "--case", str(SMALL), "--model", "complete", "--speed", "100, 1000 rpm",
+            "--temperature", "40 degC", "--axial-load", "1 kN", "--json", str(out)]  # fmt: skip
+    code, _, err = run(args, capsys)
+    assert code == 0, err
+    rows = json.loads(out.read_text(encoding="utf-8"))["rows"]
+    case = load_case(SMALL)
+    with warnings.catch_warnings():  # the film formulas' routine note: not the subject here
+        warnings.simplefilter("ignore", BallScrewValidityWarning)
+        r = friction_torque(case.screw, case.lubricant, speed=np.array([100.0, 1000.0]) * math.pi
+                            / 30, temperature=40.0, axial_load=1000.0, model="complete",
+                            **case.parameters_for("complete"))  # fmt: skip
+    assert [row["speed [rpm]"] for row in rows] == [100.0, 1000.0]  # the inputs as typed
+    assert [row["torque [N*m]"] for row in rows] == r.total.tolist()
+    assert [row["efficiency [-]"] for row in rows] == r.efficiency.tolist()
+    assert any(len(repr(row["torque [N*m]"])) > 10 for row in rows)  # more than 7 digits kept
 
 
 def test_torque_csv_for_a_decimal_comma_spreadsheet_and_a_pivot(

@@ -8,6 +8,7 @@ pass; contact pressures far past what bearing steel carries give numbers."
 from __future__ import annotations
 
 import json
+import re
 import tomllib
 from collections.abc import Iterator
 from pathlib import Path
@@ -82,7 +83,8 @@ def test_case_check_shows_the_ratings_and_warns_near_a_limit(
 ) -> None:
     code, out, err = run(["case", "--check", _case(tmp_path, HIWIN.format(preload="6 kN"))], capsys)
     assert code == 0, err
-    assert "56.4 kN (the HIWIN R32-10K5-FDC catalogue row)" in out
+    shown = re.search(r"56\.4 kN \[(\d+)\]", out)  # the source in a note under the table
+    assert shown and f"[{shown[1]}] the HIWIN R32-10K5-FDC catalogue row" in out
     assert "144.8 kN" in out
     assert "warning: screw.preload = 6000 N (10.6% of C_a) is above 10% of C_a" in err
 

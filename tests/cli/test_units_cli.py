@@ -87,6 +87,29 @@ def test_check_prints_imperial_values_and_limits(
     assert "units: imperial" in out
 
 
+def test_check_in_imperial_names_the_lead_accuracy_length_in_inches(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # A newcomer's trial of 0.3.0: "thermal lead error per 300 mm" kept its mm in imperial.
+    # 300 mm = 300 / 25.4 in = 11.811 in (1 in = 25.4 mm by definition), printed to 4
+    # significant digits; ISO 3408-3's 300 mm stays beside it so the standard is found.
+    monkeypatch.setenv("COLUMNS", "100")  # each row's name whole, in the notes under the table
+    case = tmp_path / "graded.toml"
+    case.write_text(reference_case_toml("graded", "100 rpm", "0 N",
+                                        '[check]\naccuracy_grade = "P3"\n'))  # fmt: skip
+    args = ["check", "--case", str(case), "--move", MOVE, "--model", "catalog",
+            "--run-time", "10 min"]  # fmt: skip
+    code, out, err = run([*args, "--units", "imperial"], capsys)
+    assert code == 0, err
+    assert f"{300 / 25.4:.4g}" == "11.81"
+    names = [line.split(":")[0] for line in out.splitlines() if re.match(r"\[\d+\] ", line)]
+    assert "thermal lead error per 11.81 in (300 mm, P3)" in " ".join(names), names
+    assert not any(re.search(r"\d mm(?![,)*])", name) for name in names), names
+    code, si_out, _ = run(args, capsys)
+    assert code == 0 and "] thermal lead error per 300 mm (P3):" in si_out
+    assert "in (300 mm" not in si_out
+
+
 def test_energy_prints_imperial_torques_and_temperatures(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:

@@ -24,9 +24,9 @@ def _messages(**kwargs: object) -> list[str]:
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", BallScrewValidityWarning)
         r = friction_torque(reference_screw(), OIL, **kwargs)  # type: ignore[arg-type]
-    found = [str(w.message) for w in caught if issubclass(w.category, BallScrewValidityWarning)]
-    assert found == [issue.note() for issue in r.warnings]
-    found = [f.split(" (usual for ball screws: ")[0] for f in found]
+    told = [w.message for w in caught if isinstance(w.message, BallScrewValidityWarning)]
+    assert [w.issue for w in told] == list(r.warnings)  # each warning holds its issue
+    found = [str(w) for w in told]
     model = kwargs.get("model", "complete")
     assert all(issue.model == model for issue in r.warnings)
     # Each message names its model first, then the quantity.
@@ -60,6 +60,29 @@ def test_each_range_warns_with_quantity_value_and_range(
     r = ranges[next(k for k in ranges if k.startswith(quantity))]
     assert f"{r.low:.4g} to {r.high:.4g}" in found[0]
     assert "=" in found[0]
+
+
+def test_a_routine_range_warns_in_one_short_line_and_says_why_on_request() -> None:
+    # A newcomer's trial of 0.3.0: the README's first call printed two warnings of about
+    # 400 characters each, where the command line prints one short note. A library user
+    # still gets each warning (a range left is never hidden), in one line naming the
+    # quantity, its value and the range; the source and the reason are one call away.
+    from ballscrew import chain
+
+    chain._NOTED.clear()
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", BallScrewValidityWarning)
+        r = friction_torque(reference_screw(), "mineral ISO VG 68", speed=[10.5, 105.0],
+                            temperature=40.0, axial_load=1000.0)  # fmt: skip
+    told = [w.message for w in caught if isinstance(w.message, BallScrewValidityWarning)]
+    assert {w.issue.quantity for w in told} == {"dimensionless speed U", "dimensionless load W"}
+    for w in told:
+        text, issue = str(w), w.issue
+        assert "\n" not in text and len(text) <= 170, text
+        assert f"{issue.value:.4g}" in text and f"{issue.low:.4g} to {issue.high:.4g}" in text
+        assert issue.quantity in text and "extrapolated" in text and ".issue.note()" in text
+        assert issue.routine in issue.note() and issue.source in issue.note()
+    assert len(r.warnings) == 2  # and the result records both
 
 
 def test_one_warning_per_quantity_however_many_points() -> None:

@@ -85,4 +85,4 @@ def test_a_report_echoes_its_inputs_to_six_digits(
                         str(tmp_path / "report")], capsys)  # fmt: skip
     assert code == 0, err
     report = (tmp_path / "report" / "report.md").read_text("utf-8")
-    assert "| axis.incline | 1.5708 | given |" in report
+    assert "| axis.incline | 1.5708 | rad | given |" in report

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import pytest
@@ -81,6 +82,18 @@ def test_case_errors_name_the_key(edit: tuple[str, str], field: str, words: str)
     assert words in str(info.value)
 
 
+def test_a_machine_file_given_as_a_case_says_which_command_reads_it(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    # A newcomer's trial of 0.3.0 gave examples/machine_vmc.toml to `energy --case`: the
+    # refusal named "machine = {...}" as a misspelt key.
+    machine = ROOT / "examples" / "machine_vmc.toml"
+    code, _, err = run(["energy", "--case", str(machine), "--move", "stroke=300 mm, "
+                        "feed=30 m/min, acceleration=2 m/s^2"], capsys)  # fmt: skip
+    assert code == 2 and "a machine file" in err and "ballscrew program" in err
+    assert "--machine" in err and "check the spelling" not in err
+
+
 def test_case_needs_exactly_one_command(capsys: pytest.CaptureFixture[str]) -> None:
     code, _, err = run(["case"], capsys)
     assert code == 2 and "exactly one" in err
@@ -105,7 +118,8 @@ def test_check_shows_the_axis_as_the_energy_command_will_use_it(
     code, out, _ = run(["case", "--check", str(file)], capsys)
     assert code == 0 and "case file OK" in out
     # pi 7850 kg/m^3 x 0.8 m x (0.032 m)^4 / 32 = 6.465e-4 kg m^2
-    assert "0.000646 kg*m^2 (estimated: a solid steel shaft over 800 mm)" in out
+    shown = re.search(r"0\.000646 kg\*m\^2 \(estimated\) \[(\d+)\]", out)
+    assert shown and f"[{shown[1]}] a solid steel shaft of the pitch diameter over 800 mm" in out
     assert "120 kg" in out and "90 deg" in out and "SKF's simplified estimate" in out
     assert "none (critical speed not checked)" in out and "none (convection only)" in out
     # Given values are shown as given, in mm and SI.
@@ -120,6 +134,37 @@ def test_check_shows_the_axis_as_the_energy_command_will_use_it(
     for shown in ("0.0015 kg*m^2", "bore 20 mm", "1000 mm, fixed-supported", "1200 mm",
                   "20 degC, 2 K/W"):  # fmt: skip
         assert shown in out, shown
+
+
+def test_check_prints_each_field_once_within_100_columns_with_its_sources_as_notes(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    # A newcomer's trial of 0.3.0: the designation row showed the catalogue's citation, C_a
+    # and C_0a were printed twice, and the table was about 190 columns wide.
+    example = ROOT / "examples" / "xy_table_32x10.toml"
+    code, out, err = run(["case", "--check", str(example)], capsys)  # 200 columns: a pipe
+    assert code == 0, err
+    lines = out.splitlines()
+    table = [line for line in lines if line[:1] in "┏┃┡│└"]
+    assert table and max(len(line) for line in table) <= 100
+    rows = [[c.strip() for c in line.strip("│").split("│")] for line in table
+            if line.startswith("│")]  # fmt: skip
+    quantities = [(r[0], r[1]) for r in rows]
+    assert len(quantities) == len(set(quantities)), quantities  # each field once
+    by_name = {r[1]: r[2] for r in rows}
+    notes = {int(m[1]): m[2] for m in (re.match(r"\[(\d+)\] (.*)", x) for x in lines) if m}
+    number = re.compile(r"\[(\d+)\]$")
+    assert sorted(notes) == list(range(1, len(notes) + 1))  # numbered from 1, each once
+    # The designation as written in the file; its catalogue under the table.
+    assert by_name["designation"].startswith("HIWIN R32-10K5-FDC")
+    cited = notes[int(number.search(by_name["designation"])[1])]  # type: ignore[index]
+    assert cited.startswith("HIWIN GmbH") and "Table 6.5" in cited
+    # The catalogue's ratings (HIWIN's R32-10K5-FDC row: 56.4 and 144.8 kN), one note.
+    assert by_name["dynamic load rating C_a"].startswith("56.4 kN")
+    assert by_name["static load rating C_0a"].startswith("144.8 kN")
+    ca, c0a = (number.search(by_name[k]) for k in ("dynamic load rating C_a",
+                                                    "static load rating C_0a"))  # fmt: skip
+    assert ca and c0a and ca[1] == c0a[1] and "catalogue row" in notes[int(ca[1])]
 
 
 def test_each_numeric_key_states_its_si_unit_in_the_schema_and_its_example_reads_in_it() -> None:

@@ -161,6 +161,9 @@ class EnergyRun:
     """Plausibility warnings: the motion's loads and stroke against the screw (errors raise)."""
     run_time: float = 3600.0
     """How long the cycle repeats for the temperature reached [s]."""
+    derived: dict[str, tuple[float, str]] = field(default_factory=dict)
+    """The ``[axis]`` values the case left out and the run filled, with how
+    (:attr:`ballscrew.axis.setup.AxisSetup.derived`)."""
 
     @property
     def cycles_by_model(self) -> dict[str, CycleResult]:
@@ -222,34 +225,16 @@ def _unreliable_fit_notes(case: Case) -> list[str]:
 def run_inputs(run: EnergyRun, model: str) -> dict[str, Any]:
     """The inputs of a run (``energy``, ``check``), enough to compute it again.
 
-    The case as written (its text and SHA-256) and as read (each key's SI value
-    and source), the move, the model and the run time. The values of
-    the screw, ``[axis]``, ``[motor]`` and ``[check]`` are SI; a key's
-    source is ``given``, ``catalogue``, ``default`` or ``assumed``
-    (:attr:`ballscrew.io.case.Case.sources`).
+    The case as written (its text and SHA-256) and as read: each key's SI value,
+    unit and source, and how the run found those it filled (the screw's inertia
+    from its geometry, its length from the bearing span):
+    :meth:`ballscrew.io.case.Case.input_values`, the list ``torque`` writes too.
+    Then the move, the model and the run time.
     """
-    import dataclasses
     import hashlib
 
     case = run.case
-    screw = dataclasses.asdict(case.screw)
-    axis = dataclasses.asdict(run.axis)
-    values: list[dict[str, Any]] = []
-    for key, source in sorted(case.sources.items()):
-        section, name = key.split(".", 1)
-        value: Any = None
-        if section == "screw":
-            value = screw.get(name)
-            if name == "dynamic_load_rating" and case.ratings is not None:
-                value, source = case.ratings.dynamic, case.ratings.dynamic_source
-            elif name == "static_load_rating" and case.ratings is not None:
-                value, source = case.ratings.static, case.ratings.static_source
-        elif section == "axis":
-            value = axis.get(name)
-        elif section in ("motor", "check"):
-            value = getattr(case, section).get(name)
-        if isinstance(value, float | int | str | bool) or value is None:
-            values.append({"key": key, "value": value, "source": source})
+    values = case.input_values(run.derived)
     ratings = case.ratings
     return {
         "case": {
@@ -366,7 +351,7 @@ def run_energy(
         case, profile, cycles, temp, setup.axis, node,
         {k: getattr(node, k) for k in ("screw_length", "ambient", "machine_resistance",
                                        "nut_mass")},
-        setup_notes, m, findings=found, run_time=run_time,
+        setup_notes, m, findings=found, run_time=run_time, derived=setup.derived,
     )  # fmt: skip
     results = {
         name: _one_model(

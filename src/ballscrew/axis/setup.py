@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -62,6 +62,9 @@ class AxisSetup:
     axis: Axis
     node: ThermalNode
     notes: tuple[str, ...]
+    derived: dict[str, tuple[float, str]] = field(default_factory=dict)
+    """Each value the case left out and the setup filled, by ``axis.key``: its SI value and
+    how it was found (for the outputs' inputs, :meth:`ballscrew.io.case.Case.input_values`)."""
 
 
 def axis_setup(
@@ -84,16 +87,22 @@ def axis_setup(
     - no machine resistance: convection only (the warmest case).
     """
     notes: list[str] = []
+    derived: dict[str, tuple[float, str]] = {}
     thermal = dict(thermal_values)
     span = axis_values.get("bearing_span")
     if "screw_length" not in thermal and span is not None:
         thermal["screw_length"] = float(span)
+        derived["axis.screw_length"] = (float(span), "from the bearing span, taken as it")
         notes.append(
             f"axis.screw_length = {span * 1e3:.0f} mm (the bearing span; give screw_length "
             "for a real heat balance)"
         )
     elif "screw_length" not in thermal:
         thermal["screw_length"] = estimated_screw_length(screw, travel)
+        derived["axis.screw_length"] = (
+            thermal["screw_length"],
+            f"from the travel {travel * 1e3:.4g} mm, the nut and 4 pitch diameters",
+        )
         notes.append(
             f"axis.screw_length = {thermal['screw_length'] * 1e3:.0f} mm (estimated: travel, "
             "nut and 4 diameters; give it for a real heat balance)"
@@ -102,11 +111,12 @@ def axis_setup(
     if "screw_inertia" not in values:
         j = float(shaft_inertia(screw.pitch_diameter, thermal["screw_length"]))
         values["screw_inertia"] = j
-        notes.append(
-            f"axis.screw_inertia = {j:.3g} kg*m^2 (a solid steel shaft of the pitch diameter "
-            f"{screw.pitch_diameter * 1e3:g} mm over {thermal['screw_length'] * 1e3:.0f} mm; "
-            "give the catalogue value)"
-        )
+        shaft = (f"a solid steel shaft of the pitch diameter {screw.pitch_diameter * 1e3:g} mm "
+                 f"over {thermal['screw_length'] * 1e3:.0f} mm")  # fmt: skip
+        derived["axis.screw_inertia"] = (
+            j, f"from the screw's geometry, {shaft} (pi rho L d^4 / 32)"
+        )  # fmt: skip
+        notes.append(f"axis.screw_inertia = {j:.3g} kg*m^2 ({shaft}; give the catalogue value)")
     if values.get("bearing_bore") is None:
         notes.append(
             "support bearings: not counted (give axis.bearing_bore, and for Palmgren's model "
@@ -126,7 +136,7 @@ def axis_setup(
     if "machine_resistance" not in thermal:
         notes.append("axis.machine_resistance: none (convection only, the warmest case)")
     try:
-        return AxisSetup(Axis(**values), ThermalNode(**thermal), tuple(notes))
+        return AxisSetup(Axis(**values), ThermalNode(**thermal), tuple(notes), derived)
     except BallScrewInputError as exc:
         # Named as the case file names it: every key of both comes from [axis].
         field = exc.field if exc.field.startswith("axis.") else f"axis.{exc.field}"

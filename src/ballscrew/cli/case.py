@@ -62,6 +62,29 @@ def case_command(
     _print_resolved(check_file)
 
 
+class _Notes:
+    """Numbered notes under the table: a value's source or how it was estimated, each once.
+
+    A row shows its value and the note's number (``56.4 kN [2]``); two rows from one
+    source (C_a and C_0a from one catalogue row) share a number. The table stays
+    within 100 columns, the notes wrap as lines.
+    """
+
+    def __init__(self) -> None:
+        self.texts: dict[str, int] = {}
+
+    def __call__(self, value: str, note: str) -> str:
+        """``value`` with the number of ``note`` (a new number for a new note).
+
+        No note, or one that only names the case file's own key (a rating given in
+        the file is sourced ``screw.dynamic_load_rating``): the value alone.
+        """
+        if not note or note.startswith("screw."):
+            return value
+        number = self.texts.setdefault(note, len(self.texts) + 1)
+        return f"{value} [{number}]"
+
+
 def _print_resolved(path: str) -> None:
     from ..design.ratings import plausibility, raise_errors
     from ..io.case import load_case
@@ -71,8 +94,23 @@ def _print_resolved(path: str) -> None:
     s, oil = case.screw, case.lubricant
     ratings = case.load_ratings()
     found = raise_errors(plausibility(s, ratings, case.axial_load))
+    cite = _Notes()  # numbered in the order the rows are made: the designation's first
+    named = [("screw", "designation", cite(case.designation, case.screw_source))]
+    named = named if case.designation else []
+    wants = "; ballscrew check needs it: give screw.{}"
+    static = f"{num(ratings.static / 1e3)} kN"
+    if ratings.dynamic is None:
+        dynamic = cite("not known", "the preload is not checked against it"
+                       + wants.format("dynamic_load_rating"))  # fmt: skip
+    else:
+        dynamic = cite(f"{num(ratings.dynamic / 1e3)} kN", ratings.dynamic_source)
+    if ratings.static_estimated:
+        estimate = ratings.static_source.split("; give ")[0]
+        static = cite(f"{static} (estimated)", estimate + wants.format("static_load_rating"))
+    else:
+        static = cite(static, ratings.static_source)
     rows = [
-        *([("screw", "designation", case.screw_source)] if case.screw_source else []),
+        *named,
         ("screw", "pitch diameter", f"{num(s.pitch_diameter * 1e3)} mm"),
         ("screw", "lead", f"{num(s.lead * 1e3)} mm"),
         ("screw", "ball diameter", f"{num(s.ball_diameter * 1e3)} mm"),
@@ -82,18 +120,8 @@ def _print_resolved(path: str) -> None:
         ("screw", "nut", s.nut),
         ("screw", "balls kept apart by", s.ball_separation),
         ("screw", "preload", f"{num(s.preload)} N"),
-        (
-            "screw",
-            "dynamic load rating C_a",
-            "not known (preload not checked against it)"
-            if ratings.dynamic is None
-            else f"{num(ratings.dynamic / 1e3)} kN ({ratings.dynamic_source})",
-        ),
-        (
-            "screw",
-            "static load rating C_0a",
-            f"{num(ratings.static / 1e3)} kN ({ratings.static_source})",
-        ),
+        ("screw", "dynamic load rating C_a", dynamic),
+        ("screw", "static load rating C_0a", static),
         ("screw", "lead angle", f"{num(math.degrees(s.lead_angle))} deg"),
         ("screw", "loaded balls per nut", f"{s.balls_per_nut}"),
         ("screw", "gamma = D_w cos(alpha) / d_m", f"{num(s.gamma)}"),
@@ -105,7 +133,11 @@ def _print_resolved(path: str) -> None:
         ),
         *([("screw", "wiper drag", f"{num(case.wiper_drag)} N*m")] if case.wiper_drag else []),
         ("lubricant", "name", oil.name),
-        *([("lubricant", "grease", _grease(oil))] if oil.kind == "grease" else []),
+        *(
+            [("lubricant", "grease", cite(_grease(oil), "viscosities: the base oil's"))]
+            if oil.kind == "grease"
+            else []
+        ),
         (
             "lubricant",
             "viscosity at 40 / 100 degC",
@@ -116,7 +148,7 @@ def _print_resolved(path: str) -> None:
         ("operation", "temperatures", _span(case.temperature, "degC")),
         ("operation", "axial loads", _span(case.axial_load, "N")),
     ]
-    rows += _axis_rows(case)
+    rows += _axis_rows(case, cite)
     rows += _check_rows(case)
     table = Table(title=f"{case.title}: resolved from {path}")
     for column in ("section", "quantity", "value"):
@@ -125,6 +157,8 @@ def _print_resolved(path: str) -> None:
         table.add_row(*row)
     console = stdout()
     console.print(table)
+    for note, number in cite.texts.items():
+        console.print(f"[{number}] {note}", highlight=False)
     if case.assumptions:
         console.print(f"{len(case.assumptions)} value(s) marked as assumed:")
         for a in case.assumptions:
@@ -134,7 +168,7 @@ def _print_resolved(path: str) -> None:
     console.print("case file OK", style="bold green")
 
 
-def _axis_rows(case: Any) -> list[tuple[str, str, str]]:
+def _axis_rows(case: Any, cite: _Notes) -> list[tuple[str, str, str]]:
     """The ``[axis]`` section as ``ballscrew energy`` will use it (none if the file has none)."""
     import tomllib
 
@@ -152,20 +186,25 @@ def _axis_rows(case: Any) -> list[tuple[str, str, str]]:
     bearings = (
         "not counted (no bearing_bore)"
         if a.get("bearing_bore") is None
-        else f"{a['bearing_type']}, bore {num(a['bearing_bore'] * 1e3)} mm: "
-        + (
-            "SKF's simplified estimate"
-            if a.get("bearing_outer_diameter") is None
-            else f"Palmgren's model ({a['bearing_lubrication']})"
-        )
+        else f"{a['bearing_type']}, bore {num(a['bearing_bore'] * 1e3)} mm"
     )
+    bearing_friction = (
+        []
+        if a.get("bearing_bore") is None
+        else [("axis", "support bearing friction",
+               "SKF's simplified estimate" if a.get("bearing_outer_diameter") is None
+               else f"Palmgren's model ({a['bearing_lubrication']})")]
+    )  # fmt: skip
     length = th.get("screw_length", a.get("bearing_span"))
     inertia = later
     if length is not None:
         from ..axis.setup import shaft_inertia
 
         j = float(shaft_inertia(case.screw.pitch_diameter, length))
-        inertia = f"{j:.3g} kg*m^2 (estimated: a solid steel shaft over {length * 1e3:.0f} mm)"
+        inertia = cite(f"{j:.3g} kg*m^2 (estimated)",
+                       f"a solid steel shaft of the pitch diameter over {length * 1e3:.0f} mm, "
+                       "as ballscrew energy takes it; give axis.screw_inertia from the "
+                       "catalogue")  # fmt: skip
     return [
         ("axis", "moving mass", f"{num(a['moving_mass'])} kg"),
         ("axis", "screw inertia", given(a.get("screw_inertia"), 1.0, "kg*m^2", inertia)),
@@ -174,6 +213,7 @@ def _axis_rows(case: Any) -> list[tuple[str, str, str]]:
         ("axis", "gear ratio", f"{a['gear_ratio']:g}"),
         ("axis", "incline", f"{num(math.degrees(a['incline']))} deg"),
         ("axis", "support bearings", bearings),
+        *bearing_friction,
         ("axis", "span, mounting", given(a.get("bearing_span"), 1e3, "mm",
                                          "none (critical speed not checked)")
          + f", {a['support']}"),
@@ -191,19 +231,11 @@ def _axis_rows(case: Any) -> list[tuple[str, str, str]]:
 
 
 def _check_rows(case: Any) -> list[tuple[str, str, str]]:
-    """Load ratings, ``[motor]`` and ``[check]`` as ``ballscrew check`` will use them."""
+    """``[motor]`` and ``[check]`` as ``ballscrew check`` will use them (the ratings: above)."""
     from ..kinematics import rad_s_to_rpm
 
-    def kn(value: float | None, key: str) -> str:
-        return (
-            f"give screw.{key} for ballscrew check" if value is None else f"{num(value / 1e3)} kN"
-        )
-
     c = case.check
-    rows = [
-        ("screw", "dynamic load rating C_a", kn(case.dynamic_load_rating, "dynamic_load_rating")),
-        ("screw", "static load rating C_0a", kn(case.static_load_rating, "static_load_rating")),
-    ]
+    rows = []
     for key, value in case.motor.items():
         rpm = key == "rated_speed"
         shown, unit = (float(rad_s_to_rpm(value)), "rpm") if rpm else (float(value), "N*m")
@@ -226,7 +258,7 @@ def _check_rows(case: Any) -> list[tuple[str, str, str]]:
 def _grease(oil: Any) -> str:
     """A grease's thickener, NLGI grade and base oil, those its data give."""
     made = [oil.thickener, f"NLGI {oil.nlgi_grade}" if oil.nlgi_grade else "", oil.base_oil]
-    return ", ".join(p for p in made if p) + " (viscosities: the base oil's)"
+    return ", ".join(p for p in made if p)
 
 
 def _span(values: object, unit: str) -> str:

@@ -72,7 +72,7 @@ def check_command(
     """  # noqa: D301 - click needs the literal \b to keep the example lines
     from ..axis import run_check, run_energy
     from ..io.case import load_case
-    from ..io.display import system_note, unit_system
+    from ..io.display import label_text, system_note, unit_system
     from ..io.units import to_si
     from ..report.outputs import result_json
 
@@ -96,8 +96,8 @@ def check_command(
     out.print(_verdict_table(result, system, wide=wide))
     if not wide:  # each row's source and advice below the table, where they can be read
         for k, c in enumerate(result.criteria, start=1):
-            out.print(f"[{k}] {c.name}: {c.source}" + (f"; to change: {c.advice}"
-                                                     if c.advice else ""))  # fmt: skip
+            out.print(f"[{k}] {label_text(c.name, system)}: {c.source}"
+                      + (f"; to change: {c.advice}" if c.advice else ""))  # fmt: skip
     if system != "si":
         out.print(system_note(system))
     for line in result.assumptions:
@@ -122,10 +122,11 @@ a narrower terminal gets them as numbered lines below the table."""
 def _verdict_table(result: AxisCheck, system: str = "si", *, wide: bool = True) -> Table:
     """One row per criterion: value, limit, utilisation, verdict, source, advice.
 
-    Values and limits in ``system``'s units (:func:`ballscrew.io.display.to_display`).
+    Values and limits in ``system``'s units (:func:`ballscrew.io.display.to_display`), and
+    a length in a criterion's name too (:func:`ballscrew.io.display.label_text`).
     Not ``wide``: the source and advice columns give way to the row's number.
     """
-    from ..io.display import to_display
+    from ..io.display import label_text, to_display
 
     missing = f", {len(result.not_checked)} not checked" if result.not_checked else ""
     table = Table(title=f"{result.title}: axis check ({result.model}): {result.verdict}{missing}")
@@ -144,6 +145,6 @@ def _verdict_table(result: AxisCheck, system: str = "si", *, wide: bool = True) 
         value, unit = to_display(c.value, c.unit, system)
         limit, _ = to_display(c.limit, c.unit, system)
         tail = (c.source, c.advice) if wide else (f"[{k}]",)
-        table.add_row(c.name, _number(value), _number(limit), unit, use, spread, c.verdict,
-                      p, "-" if u is None else u.guarded, *tail)  # fmt: skip
+        table.add_row(label_text(c.name, system), _number(value), _number(limit), unit, use,
+                      spread, c.verdict, p, "-" if u is None else u.guarded, *tail)  # fmt: skip
     return table

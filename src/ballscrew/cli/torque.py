@@ -77,7 +77,8 @@ __all__ = ["torque"]
 @file_option(
     "--json",
     "json_file",
-    "Write the results and their provenance as JSON to FILE ('-' for standard output).",
+    "Write the results and their provenance as JSON to FILE ('-' for standard output); "
+    "results at full precision, each operating point as typed.",
 )
 @click.option(
     "--table",

@@ -20,12 +20,13 @@ the study did.
 
 from __future__ import annotations
 
+import dataclasses
 import difflib
 import math
 import re
 import tomllib
 import warnings
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, replace
 from importlib import resources
 from pathlib import Path
@@ -57,7 +58,9 @@ from .schema import (
 from .units import Reading, parse_range, to_si
 
 __all__ = [
+    "KEY_UNITS",
     "LUBRICANT_UNITS",
+    "OPERATION_UNITS",
     "SCREW_UNITS",
     "WIPER_PARAMETERS",
     "Assumption",
@@ -193,6 +196,8 @@ class Case:
         The TOML text the case was read from.
     screw_source : str
         Where the screw's geometry came from when a designation named it.
+    designation : str
+        ``[screw] designation`` as written ("" when the file gives none).
     axis : dict
         ``[axis]`` in SI (kg, kg·m², rad, m; d·n in mm·rpm) and its choices
         (bearing type, support): the keywords of :class:`ballscrew.axis.energy.Axis`.
@@ -250,6 +255,10 @@ class Case:
     command's), ``assumed`` (marked so, with its reason in :attr:`assumptions`)."""
     contact_angle_scatter: float | None = None
     output_units: str = "si"
+    designation: str = ""
+    given_si: dict[str, tuple[float, str]] = field(default_factory=dict)
+    """Each number the file wrote with its unit, by ``section.key``: its SI value and SI unit
+    as read (a preload written as ``preload_share`` keeps the share here)."""
     warned: tuple[str, ...] = ()
     """The plausibility warnings of its inputs, each once (a ball off the makers' series, an
     oil outside its typical range: :mod:`ballscrew.plausible`); also warned when read."""
@@ -284,6 +293,53 @@ class Case:
             params.setdefault("ball_train", "tolerance")
             params.setdefault("contact_angle_scatter", self.contact_angle_scatter)
         return params
+
+    def input_values(
+        self, derived: Mapping[str, tuple[Any, str]] | None = None
+    ) -> list[dict[str, Any]]:
+        """Every key of the case as a run uses it: value, unit, source, and how it was found.
+
+        The one list of inputs the outputs carry (``--json`` of ``torque``, ``energy``,
+        ``check``, ``select`` and their reports). Each entry: ``key`` (``section.key``),
+        ``value`` (SI, a list for the operating points), ``unit`` (its SI unit, "" for a
+        plain number or a share) and ``source`` (:attr:`sources`: ``given``,
+        ``catalogue``, ``default``, ``assumed``, a catalogue row, ...). A value the
+        command filled from others (``derived``, by key: the value and how, e.g. the
+        screw's inertia from its geometry, :attr:`ballscrew.axis.setup.AxisSetup.derived`)
+        is ``estimated`` with ``how``; a key left out that nothing fills has the value
+        None, the source ``not given`` and ``how`` saying what its absence means
+        (the schema's "none: ..." of the key).
+        """
+        derived = derived or {}
+        ratings = self.load_ratings()
+        screw = dataclasses.asdict(self.screw)
+        out: list[dict[str, Any]] = []
+        for key, source in sorted(self.sources.items()):
+            section, name = key.split(".", 1)
+            entry: dict[str, Any] = {"key": key, "value": None, "unit": KEY_UNITS.get(key, "")}
+            how = ""
+            if key in derived and source in ("default", "not given"):
+                value, how = derived[key]
+                source = "estimated"
+            elif key in self.given_si:
+                value, entry["unit"] = self.given_si[key]
+            elif name == "dynamic_load_rating" and section == "screw":
+                value, source = ratings.dynamic, ratings.dynamic_source or source
+            elif name == "static_load_rating" and section == "screw":
+                value, source = ratings.static, ratings.static_source
+            else:
+                value = _resolved(self, section, name, screw)
+            if isinstance(value, np.ndarray):
+                value = value.tolist()
+            elif isinstance(value, np.generic):
+                value = value.item()
+            if value is None:
+                source, how = "not given", _absent(section, name)
+            entry |= {"value": value, "source": source}
+            if how:
+                entry["how"] = how
+            out.append(entry)
+        return out
 
     def with_wiper_drag(self, value: Any, *, field: str = "screw.wiper_drag") -> Case:
         """The case with another wiper drag (a torque with its unit, e.g. ``"0.05 N*m"``)."""
@@ -381,10 +437,14 @@ def _parse_case(text: str, source: str) -> Case:
     read: list[Reading] = []  # how texts that could be meant two ways were read
     s = data.screw
 
+    given: dict[str, tuple[float, str]] = {}  # each number read, for Case.input_values
+
     def si(section: str, name: str, value: Any, unit: str) -> float:
         field = f"{section}.{name}"
-        return to_si(field, _unwrap(field, value, notes), unit, notes=read,
-                     plausible=PLAUSIBLE.get(field))  # fmt: skip
+        number = to_si(field, _unwrap(field, value, notes), unit, notes=read,
+                       plausible=PLAUSIBLE.get(field))  # fmt: skip
+        given[field] = (number, unit)
+        return number
 
     screw, screw_source, ratings = _screw(s, si, notes)
 
@@ -431,6 +491,7 @@ def _parse_case(text: str, source: str) -> Case:
         )  # fmt: skip
     motor, check = _motor(data, si), _check(data, si)
     notes.extend(Assumption(r.field, r.text, f"read as {r.reading}") for r in read)
+    sources = _sources(data, notes)
     return Case(
         title=data.title,
         description=data.description,
@@ -454,10 +515,67 @@ def _parse_case(text: str, source: str) -> Case:
         motor=motor,
         check=check,
         axis_given=frozenset(data.axis.model_fields_set),
-        sources=_sources(data, notes),
+        sources=sources,
         contact_angle_scatter=scatter,
         output_units=data.output.units,
+        designation=_designation(data.screw),
+        given_si={k: v for k, v in given.items() if k in sources and sources[k] != "default"},
     )
+
+
+def _designation(s: ScrewSection) -> str:
+    """``[screw] designation`` as written, "" when not given."""
+    raw = s.designation.value if isinstance(s.designation, Assumed) else s.designation
+    return "" if raw is None else str(raw)
+
+
+OPERATION_UNITS = {"speed": "rad/s", "temperature": "degC", "axial_load": "N"}
+"""The SI units of ``[operation]``'s keys."""
+
+
+def _key_units() -> dict[str, str]:
+    """The SI unit of every numeric key of :attr:`Case.sources` ("" for a plain number)."""
+    units = {f"screw.{k}": u for k, u in SCREW_UNITS.items()}
+    units |= {"screw.preload": "N", "screw.preload_drag_torque": "N*m",
+              "screw.preload_share": "", "screw.dynamic_load_rating": "N",
+              "screw.static_load_rating": "N"}  # fmt: skip
+    units |= {f"operation.{k}": u for k, u in OPERATION_UNITS.items()}
+    for section, model in (("axis", AxisSection), ("motor", MotorSection),
+                           ("check", CheckSection)):  # fmt: skip
+        units |= {f"{section}.{k}": u for k, u in si_units(model).items()}
+    units |= {f"axis.{k}": u for k, u in si_units(AxisSection, "thermal").items()}
+    return units
+
+
+def _resolved(case: Case, section: str, name: str, screw: dict[str, Any]) -> Any:
+    """The value ``section.name`` has in the loaded case (SI), None where it has none."""
+    if section == "screw":
+        return screw.get(name)
+    if section == "operation":
+        return {"speed": case.speed, "temperature": case.temperature,
+                "axial_load": case.axial_load}.get(name)  # fmt: skip
+    if section == "axis":
+        return case.axis.get(name, case.thermal.get(name))
+    if section in ("motor", "check"):
+        return getattr(case, section).get(name)
+    return None
+
+
+def _absent(section: str, name: str) -> str:
+    """What leaving ``section.name`` out means, from the schema's "(none: ...)" of the key."""
+    model = SECTIONS.get(section)
+    info = None if model is None else model.model_fields.get(name)
+    text = (info.description or "") if info is not None else ""
+    start = text.find("none: ")
+    if start < 0:
+        return ""
+    depth, end = 0, len(text)
+    for k in range(start, len(text)):  # up to the bracket that closes the "(none: ..."
+        depth += {"(": 1, ")": -1}.get(text[k], 0)
+        if depth < 0:
+            end = k
+            break
+    return text[start + len("none: ") : end]
 
 
 def _motor(data: CaseFile, si: Callable[[str, str, Any, str], float]) -> dict[str, float]:
@@ -482,6 +600,13 @@ def _motor(data: CaseFile, si: Callable[[str, str, Any, str], float]) -> dict[st
 def _case_file(text: str, source: str) -> CaseFile:
     """The TOML text parsed and validated against the case file's schema."""
     raw = parse_toml(text, source)
+    if "screw" not in raw and ("machine" in raw or "axes" in raw):
+        raise BallScrewInputError(
+            source, "a machine file ([machine], [axes.X])",
+            "a case file of one screw ([screw], [lubricant], ...); a machine file is read by "
+            "'ballscrew program PROGRAM --machine FILE', and each of its axes' cases is its "
+            "[axes.X.case] table (one axis alone: e.g. examples/xy_table_32x10.toml)",
+        )  # fmt: skip
     try:
         return CaseFile.model_validate(raw)
     except ValidationError as exc:
@@ -632,6 +757,9 @@ Read from the schema (:func:`ballscrew.io.schema.si_units`), where each key stat
 
 LUBRICANT_UNITS: dict[str, str] = si_units(LubricantSection)
 """The SI unit of each numeric ``[lubricant]`` key ("" = none), from the schema."""
+
+KEY_UNITS: dict[str, str] = _key_units()
+"""The SI unit of each key a case's inputs list (:meth:`Case.input_values`), from the schema."""
 
 
 _LENGTHS = ("pitch_diameter", "lead", "ball_diameter")

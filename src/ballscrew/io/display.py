@@ -23,9 +23,18 @@ import re
 from typing import Any
 
 from ..errors import BallScrewInputError
+from .numbers import text
 from .units import registry
 
-__all__ = ["SYSTEMS", "column_label", "display_row", "system_note", "to_display", "unit_system"]
+__all__ = [
+    "SYSTEMS",
+    "column_label",
+    "display_row",
+    "label_text",
+    "system_note",
+    "to_display",
+    "unit_system",
+]
 
 SYSTEMS = ("si", "imperial")
 """The unit systems results can be printed in."""
@@ -147,6 +156,46 @@ def display_row(row: dict[str, Any], system: str) -> dict[str, Any]:
         converted, unit = to_display(value, match.group("unit"), system)
         out[f"{match.group('name')} [{unit}]"] = converted
     return out
+
+
+_BAKED_LENGTH = re.compile(
+    r"(?<![\w.*/^])(?P<number>\d+(?:\.\d+)?) ?(?P<unit>mm|um|µm|m)(?![\w*/^])"
+    r"(?: \((?P<aside>[^()]*)\))?"
+)
+"""A length written into a label's words ('per 300 mm', '(P3)' after it), not a unit
+of its own ('mm*rpm' is a unit and stays)."""
+
+
+def label_text(label: str, system: str) -> str:
+    """A label with the lengths written into its words in ``system``'s length unit.
+
+    A criterion can carry a length in its name, the length a standard fixes:
+    ISO 3408-3's lead accuracy is per 300 mm of travel. In imperial the inch
+    figure is shown first, the standard's length beside it, so that the name is
+    still found in the standard; a unit of its own (``mm*rpm``) is left as it is.
+
+    Examples
+    --------
+    >>> label_text("thermal lead error per 300 mm (P3)", "imperial")
+    'thermal lead error per 11.81 in (300 mm, P3)'
+    >>> label_text("thermal lead error per 300 mm", "imperial")
+    'thermal lead error per 11.81 in (300 mm)'
+    >>> label_text("thermal lead error per 300 mm (P3)", "si"), label_text("d*n [mm*rpm]", "imperial")
+    ('thermal lead error per 300 mm (P3)', 'd*n [mm*rpm]')
+    """  # noqa: E501 - a doctest line
+    if system == "si":
+        return label
+
+    def shown(match: re.Match[str]) -> str:
+        number, unit = match.group("number"), match.group("unit")
+        value, target = to_display(float(number), unit.replace("µm", "um"), system)
+        if target == unit:
+            return match.group()
+        aside = match.group("aside")
+        written = f"{number} {unit}" + (f", {aside}" if aside else "")
+        return f"{text(value)} {target} ({written})"
+
+    return _BAKED_LENGTH.sub(shown, label)
 
 
 def system_note(system: str) -> str:

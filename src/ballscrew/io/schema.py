@@ -327,14 +327,16 @@ class AxisSection(BaseModel):
     max_feed: Value | None = _f(
         None,
         "speed",
-        "the axis' speed limit (drive, guideways); a motion faster than it is refused",
+        "the axis' speed limit (drive, guideways); a motion faster than it is refused (none: "
+        "not checked)",
         "0.5 m/s",
         si="m/s",
     )
     max_acceleration: Value | None = _f(
         None,
         "acceleration",
-        "the axis' acceleration limit; a motion that accelerates harder is refused",
+        "the axis' acceleration limit; a motion that accelerates harder is refused (none: not "
+        "checked)",
         "5 m/s**2",
         si="m/s**2",
     )
@@ -429,7 +431,8 @@ class CheckSection(BaseModel):
         None,
         "-",
         "accuracy grade of the screw for the thermal lead error: P0, P1, P3, P5, T5, T7, T10 "
-        "(ISO 3408-3) or C0, C1, C2, C3, C5, C7, C8, C10 (JIS B 1192)",
+        "(ISO 3408-3) or C0, C1, C2, C3, C5, C7, C8, C10 (JIS B 1192) (none: the error is "
+        "shown, not judged)",
         "P3",
     )
     support_stiffness: Value | None = _f(

@@ -25,9 +25,8 @@ from matplotlib.figure import Figure as MplFigure
 from .._version import __version__
 from ..axis.check import AxisCheck, Criterion
 from ..io.files import atomic_write
-from ..io.numbers import INPUT_DIGITS, text
 from .document import Block, write_data, write_pages
-from .outputs import csv_bytes
+from .outputs import INPUT_HEADER, csv_bytes, input_rows
 from .plotting import new_figure, write_figures
 
 __all__ = ["write_check_report"]
@@ -167,12 +166,11 @@ def _input_blocks(check: AxisCheck) -> list[Block]:
         f"uncertainty: {inputs['uncertainty']['samples']} draws, seed "
         f"{inputs['uncertainty']['seed']}",
     ]
-    rows = [[v["key"], "-" if v["value"] is None else text(v["value"], INPUT_DIGITS), v["source"]]
-            for v in case["values"] if v["value"] is not None]  # fmt: skip
+    rows = input_rows(case["values"])
     return [
         Block("h2", "Inputs"),
         Block("ul", run),
-        Block("table", (["key", "value (SI)", "source"], rows)),
+        Block("table", (INPUT_HEADER, rows)),
         Block(
             "p",
             "The whole check with these inputs (the case file's text, every value) is "

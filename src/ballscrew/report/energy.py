@@ -29,10 +29,10 @@ from ..axis.energy import CycleResult
 from ..axis.motion import Profile
 from ..axis.thermal import SteadyAtSpeed
 from ..errors import FloatArray
-from ..io.numbers import INPUT_DIGITS, text
+from ..io.numbers import text
 from ..kinematics import rad_s_to_rpm
 from .document import Block, write_data, write_pages
-from .outputs import csv_bytes
+from .outputs import INPUT_HEADER, csv_bytes, input_rows
 from .plotting import new_figure, write_figures
 
 __all__ = ["write_energy_report"]
@@ -298,8 +298,7 @@ def _input_blocks(run: EnergyRun) -> list[Block]:
     inputs = run_inputs(run, next(iter(run.results)))
     move = ", ".join(f"{k}={v:g}" for k, v in inputs["move"].items()) or "a profile file"
     case = inputs["case"]
-    rows = [[v["key"], text(v["value"], INPUT_DIGITS), v["source"]]
-            for v in case["values"] if v["value"] is not None]  # fmt: skip
+    rows = input_rows(case["values"])
     return [
         Block("h2", "Inputs"),
         Block("ul", [
@@ -307,7 +306,7 @@ def _input_blocks(run: EnergyRun) -> list[Block]:
             f"{inputs['run_time_s']:g} s; lubricant temperature: {inputs['temperature_C']:g} degC",
             f"case: {case['title']}, SHA-256 {case['sha256']}",
         ]),
-        Block("table", (["key", "value (SI)", "source"], rows)),
+        Block("table", (INPUT_HEADER, rows)),
     ]  # fmt: skip
 
 

@@ -13,10 +13,13 @@ Every CSV has a ``.meta.json`` file beside it with the provenance
 and lubricant in SI, each model's parameters and reference, and the validity
 warnings. Numbers are rounded at output only: a CSV cell to the significant
 digits :func:`ballscrew.io.numbers.column_digits` gives its column (4 for
-results, more for times, positions, speeds and temperatures); the JSON rows
-carry inputs to 12 significant digits (100 rpm is not written
-99.99999999999999) and results to 7. The bytes are reproducible (no time
-stamps).
+results, more for times, positions, speeds and temperatures). The JSON rows
+carry the results at full precision (each float written so that it reads back
+to the same float, as every ``--json`` of the package does: the guide's
+"Numbers in outputs"), and the operating point to 12 significant digits: it is
+an input converted back to the unit it was typed in, so 100 rpm reads 100, not
+the 99.99999999999999 of the round trip through rad/s. The bytes are
+reproducible (no time stamps).
 """
 
 from __future__ import annotations
@@ -39,8 +42,10 @@ from ..kinematics import rad_s_to_rpm
 
 __all__ = [
     "DIALECTS",
+    "INPUT_HEADER",
     "csv_bytes",
     "csv_text",
+    "input_rows",
     "json_text",
     "provenance",
     "result_json",
@@ -49,7 +54,7 @@ __all__ = [
 ]
 
 INPUT_DIGITS = 12
-RESULT_DIGITS = 7
+"""Significant digits of an operating point converted back to its user unit (rpm)."""
 
 DIALECTS = ("comma", "semicolon-decimal-comma")
 """CSV flavours: ``comma`` (RFC 4180, decimal point) and ``semicolon-decimal-comma``
@@ -71,7 +76,10 @@ def round_significant(x: float, digits: int) -> float:
 
 
 def result_rows(results: Mapping[str, FrictionResult]) -> list[dict[str, Any]]:
-    """Long-format rows (model, point, torque, power, efficiency, components), user units."""
+    """Long-format rows (model, point, torque, power, efficiency, components), user units.
+
+    The results at full precision; the point (an input) to :data:`INPUT_DIGITS`.
+    """
     rows: list[dict[str, Any]] = []
     for name, r in results.items():
         w, t, f = (
@@ -86,12 +94,12 @@ def result_rows(results: Mapping[str, FrictionResult]) -> list[dict[str, Any]]:
                 "speed [rpm]": round_significant(float(rad_s_to_rpm(w[k])), INPUT_DIGITS),
                 "temperature [degC]": round_significant(float(t[k]), INPUT_DIGITS),
                 "axial load [N]": round_significant(float(f[k]), INPUT_DIGITS),
-                "torque [N*m]": round_significant(float(total[k]), RESULT_DIGITS),
-                "power loss [W]": round_significant(float(power[k]), RESULT_DIGITS),
-                "efficiency [-]": round_significant(float(eff[k]), RESULT_DIGITS),
+                "torque [N*m]": float(total[k]),
+                "power loss [W]": float(power[k]),
+                "efficiency [-]": float(eff[k]),
             }
             for part, values in parts.items():
-                row[f"{part} [N*m]"] = round_significant(float(values[k]), RESULT_DIGITS)
+                row[f"{part} [N*m]"] = float(values[k])
             rows.append(row)
     return rows
 
@@ -189,6 +197,7 @@ def provenance(
             "title": case.title,
             "assumptions": [dataclasses.asdict(a) for a in case.assumptions],
             "text": case.text,
+            "values": case.input_values(),
         },
         "screw": screw,
         "lubricant": {
@@ -215,6 +224,38 @@ def provenance(
             for name, r in results.items()
         },
     }
+
+
+INPUT_HEADER = ["key", "value (SI)", "unit", "source"]
+"""The columns of a report's table of inputs (:func:`input_rows`)."""
+
+
+def input_rows(values: Sequence[Mapping[str, Any]]) -> list[list[str]]:
+    """A report's table of a case's inputs (:meth:`ballscrew.io.case.Case.input_values`).
+
+    One row per key that has a value, or whose absence the run reads in a stated
+    way; a value to :data:`~ballscrew.io.numbers.INPUT_DIGITS` digits, a list of
+    more than three values as its count and span; the source followed by how the
+    value was found.
+    """
+    from ..io.numbers import INPUT_DIGITS
+
+    rows = []
+    for v in values:
+        value, how = v["value"], v.get("how", "")
+        if value is None and not how:
+            continue
+        if value is None:
+            shown = "-"
+        elif isinstance(value, list) and len(value) > 3:
+            shown = f"{len(value)} values, {text(min(value), INPUT_DIGITS)} to " \
+                    f"{text(max(value), INPUT_DIGITS)}"  # fmt: skip
+        elif isinstance(value, list):
+            shown = ", ".join(text(x, INPUT_DIGITS) for x in value)
+        else:
+            shown = text(value, INPUT_DIGITS)
+        rows.append([v["key"], shown, v.get("unit", ""), v["source"] + (f": {how}" if how else "")])
+    return rows
 
 
 def _jsonable(value: Any) -> Any:
