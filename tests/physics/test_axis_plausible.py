@@ -60,6 +60,8 @@ def test_an_acceleration_whose_force_exceeds_c0a_is_refused() -> None:
     assert info.value.field == "axis.max_acceleration"
     assert not _warned(check_acceleration, "axis.max_acceleration", "5 m/s**2", 5.0, 250.0, C0A)
     assert not _warned(check_acceleration, "axis.max_acceleration", "1e6 m/s**2", 1e6, 0.0, C0A)
+    with pytest.raises(BallScrewInputError):  # half a kilogram at 1e6 m/s² is 500 kN
+        check_acceleration("axis.max_acceleration", "1e6 m/s**2", 1e6, 0.5, C0A)
 
 
 def _frequency(root: float, span: float, support: str) -> float:
@@ -111,6 +113,7 @@ def test_a_feed_limit_past_the_nuts_dn_limit_is_warned_and_past_every_screw_refu
     (message,) = _warned(check_feed, "axis.max_feed", "22 m/min", 22.0 / 60, *args)
     assert "at most 21.88 m/min" in message
     # MAX_SPEED 1e5 rad/s is 15 915 rev/s: at lead 10 mm, 159.2 m/s
+    assert _warned(check_feed, "axis.max_feed", "150 m/s", 150.0, *args)  # warned, not refused
     with pytest.raises(BallScrewInputError, match=r"at most 159\.2 m/s") as info:
         check_feed("axis.max_feed", "200 m/s", 200.0, *args)
     assert info.value.field == "axis.max_feed"
@@ -141,3 +144,67 @@ def test_inertias_and_the_gear_ratio_are_held_to_their_ranges(
         assert info.value.field == field
         return
     assert bool(_warned(check_axis_property, field, value, name)) == (outcome == "warned")
+
+
+def test_the_ends_are_allowed_as_the_messages_say_at_most() -> None:
+    # "at most": a weight equal to C_0a is allowed, equal to half of it not warned; a first
+    # bending frequency of exactly 1 Hz is not refused, of exactly 5 Hz not warned
+    check_moving_mass("axis.moving_mass", "1 t", 1000.0, 1000.0 * G)
+    assert not _warned(check_moving_mass, "axis.moving_mass", "1 t", 1000.0, 2000.0 * G)
+    check_span("axis.bearing_span", "x", 1.0, 1.0, "ss")
+    assert not _warned(check_span, "axis.bearing_span", "x", 1.0, 5.0, "ss")
+    assert not _warned(check_span, "axis.bearing_span", "x", 1.0, 5.2, "ss")
+    with pytest.raises(BallScrewInputError, match="at most 0 mm"):
+        check_span("axis.bearing_span", "x", 1.0, math.nan, "ss")
+
+
+def test_the_messages_give_the_forces_and_spans_computed_by_hand() -> None:
+    # 2500 t weighs 2.5e6 kg * 9.80665 m/s² = 24 517 kN; 7.39 t 72.47 kN
+    with pytest.raises(BallScrewInputError, match=r"its weight, 2\.452e\+04 kN"):
+        check_moving_mass("axis.moving_mass", "2500 t", 2.5e6, C0A)
+    (message,) = _warned(check_moving_mass, "axis.moving_mass", "7.39 t", 7_390.0, C0A)
+    assert "(its weight 72.47 kN)" in message
+    # the span warned of names the longest span of a 5 Hz shaft: by the sag of a simply
+    # supported 1 in shaft, 5 w L^4/(384 E I) = 1.268 g/(2 pi 5)^2 (see above; 4 digits shown)
+    d = 0.0254
+    sag = 5.0 * math.pi**4 / 384.0 * G / (2.0 * math.pi * 5.0) ** 2
+    w, inertia = RHO * G * math.pi * d**2 / 4.0, math.pi * d**4 / 64.0
+    longest = (sag * 384.0 * E * inertia / (5.0 * w)) ** 0.25
+    f = _frequency(d, 5.08, "supported-supported")
+    (message,) = _warned(check_span, "axis.bearing_span", "200 in", 5.08, f, "ss")
+    assert f"at most {longest * 1e3:.4g} mm" in message
+    with pytest.raises(BallScrewInputError, match="at lead 10 mm"):
+        check_feed("axis.max_feed", "200 m/s", 200.0, 0.010, 0.032, 70_000.0, MAX_SPEED)
+    (message,) = _warned(check_feed, "axis.max_feed", "1 m/s", 1.0, 0.010, 0.032, 70_000.0,
+                         MAX_SPEED)  # fmt: skip
+    assert "with lead 10 mm" in message and "(6000 rpm, d·n 192,000 mm·rpm)" in message
+
+
+@pytest.mark.parametrize(
+    ("name", "low", "high", "least", "most"),
+    [
+        # typical range (warned outside) and possible one (refused outside), as sourced
+        ("motor_inertia", 0.0, 0.1, 0.0, 10.0),
+        ("coupling_inertia", 0.0, 0.01, 0.0, 10.0),
+        ("screw_inertia", 0.0, 2.0, 0.0, 10.0),
+        ("gear_ratio", 0.2, 100.0, 1e-3, 1e3),
+    ],
+)
+def test_each_range_holds_at_its_ends(
+    name: str, low: float, high: float, least: float, most: float
+) -> None:
+    # 5 % inside and outside each end: a bound moved by 10 % is seen
+    field = f"axis.{name}"
+    inside = [high * 0.95, low * 1.05 if low else high * 0.3]
+    for value in inside:
+        assert not _warned(check_axis_property, field, value, name), value
+    assert _warned(check_axis_property, field, high * 1.05, name)
+    assert _warned(check_axis_property, field, most * 0.95, name)
+    if low:
+        assert _warned(check_axis_property, field, low * 0.95, name)
+        assert _warned(check_axis_property, field, least * 1.05, name)
+        with pytest.raises(BallScrewInputError):
+            check_axis_property(field, least * 0.95, name)
+    with pytest.raises(BallScrewInputError) as info:
+        check_axis_property(field, most * 1.05, name)
+    assert info.value.value.startswith(f"{most * 1.05:.4g}")
