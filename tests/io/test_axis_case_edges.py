@@ -179,3 +179,115 @@ def test_torque_says_how_it_read_a_feed_and_keeps_it_in_the_provenance(
         assert [r.startswith(said) for r in provenance["readings"]] == [True]
     code, _, err = run(["torque", "--case", case, "--speed", "15 kg"], capsys)
     assert code == 2 and "error: --speed = '15 kg' is not allowed" in err
+
+
+# --- the bounds as a case file meets them, at their edges ------------------------------------
+
+
+def _drop(text: str, key: str) -> str:
+    return "\n".join(line for line in text.splitlines() if not line.startswith(f"{key} ="))
+
+
+def test_a_case_without_span_or_screw_length_checks_neither() -> None:
+    for text in (_drop(XY, "bearing_span"), _drop(XY, "screw_length"),
+                 _drop(_drop(XY, "bearing_span"), "screw_length")):  # fmt: skip
+        parse_case(text)
+    # with one of them alone nothing is compared: a 1.2 m span, a 900 mm screw pass
+    parse_case(_case('bearing_span = "1000 mm"', 'bearing_span = "1200 mm"').replace(
+        'screw_length = "1100 mm"\n', ""))  # fmt: skip
+    parse_case(_case('screw_length = "1100 mm"', 'screw_length = "900 mm"').replace(
+        'bearing_span = "1000 mm"\n', ""))  # fmt: skip
+
+
+def test_a_screw_shorter_than_a_short_span_is_refused_too() -> None:
+    text = _case('bearing_span = "1000 mm"', 'bearing_span = "950 mm"')
+    with pytest.raises(BallScrewInputError) as info:
+        parse_case(text.replace('screw_length = "1100 mm"', 'screw_length = "900 mm"'))
+    assert info.value.field == "axis.screw_length"
+    assert "at least the bearing span 950 mm" in info.value.allowed
+
+
+def test_the_span_refused_agrees_with_thks_critical_speed_rule() -> None:
+    # THK's rule (General Catalog, critical speed of the screw shaft): 80 % of the critical
+    # speed is f d_r / L^2 * 1e7 rpm (mm), f = 15.1 fixed-supported. The 1 Hz span is where
+    # that is 48 rpm: L = sqrt(15.1 * d_r * 1e7 / 48); THK's factor is rounded to 3 digits,
+    # hence 0.5 %.
+    with pytest.raises(BallScrewInputError) as info:
+        parse_case(_case('bearing_span = "1000 mm"', 'bearing_span = "900 m"'))
+    allowed = info.value.allowed
+    root = float(allowed.split("root diameter ")[1].split(" mm")[0])
+    longest = float(allowed.split("at most ")[1].split(" mm")[0])
+    assert longest == pytest.approx(math.sqrt(15.1 * root * 1e7 / 48.0), rel=5e-3)
+    assert "fixed-supported" in allowed
+
+
+def test_a_long_screw_length_is_refused_where_clamped_it_would_bend_below_1_hz() -> None:
+    # Clamped at both ends over its whole length (Blevins: lambda = 4.730), a 25.5 mm root
+    # bends at 1 Hz over 10.8 m: 10.5 m passes (with the 1 m span), 11 m is refused
+    parse_case(_case('screw_length = "1100 mm"', 'screw_length = "10.5 m"'))
+    with pytest.raises(BallScrewInputError) as info:
+        parse_case(_case('screw_length = "1100 mm"', 'screw_length = "11 m"'))
+    assert info.value.field == "axis.screw_length"
+
+
+def test_the_messages_name_the_lengths_and_the_root_in_millimetres() -> None:
+    with pytest.raises(BallScrewInputError) as info:
+        parse_case(_case('bearing_span = "1000 mm"', 'bearing_span = "6 m"'))
+    assert "at most the screw length 1100 mm" in info.value.allowed
+    with pytest.raises(BallScrewInputError) as info:
+        parse_case(_case('screw_length = "1100 mm"', 'screw_length = "20 m"'))
+    assert "root diameter 25.5 mm" in info.value.allowed
+
+
+def test_a_long_overhang_of_a_thin_screw_is_warned_of() -> None:
+    # an 8 mm screw (root 6.4 mm) held at one end only over 990 mm: lambda = 1.875 gives
+    # 1.875^2 * 6.4e-3 * sqrt(206e9/7850) / (4 * 0.99^2) / (2 pi) = 4.68 Hz, below 5 Hz
+    text = """
+title = "thin"
+[screw]
+pitch_diameter = "8 mm"
+lead = "2 mm"
+ball_diameter = "1.5875 mm"
+preload = "20 N"
+[lubricant]
+name = "PAO ISO VG 68"
+[axis]
+moving_mass = "5 kg"
+support = "fixed-free"
+bearing_span = "990 mm"
+root_diameter = "6.4 mm"
+"""
+    with pytest.warns(BallScrewPlausibilityWarning, match=r"axis.bearing_span = 990 mm .*4\.68 Hz"):
+        parse_case(text)
+
+
+def test_a_feed_limit_of_30_m_per_min_on_the_32x10_is_warned() -> None:
+    # 30 m/min at lead 10 mm is 3000 rpm, d·n 96 000 above the default 70 000
+    text = _case(
+        'support = "fixed-supported"', 'support = "fixed-supported"\nmax_feed = "30 m/min"'
+    )
+    with pytest.warns(BallScrewPlausibilityWarning, match="d·n 96,000"):
+        parse_case(text)
+
+
+def test_a_range_of_feeds_without_a_count_has_the_default_50() -> None:
+    assert len(parse_speed_range("--speed", "0..30 m/min", 0.010, notes=[])) == 50
+
+
+def test_a_lead_of_zero_reads_no_feed() -> None:
+    with pytest.raises(BallScrewInputError, match="is a linear speed"):
+        parse_speed_range("--speed", "15 m/min", 0.0)
+
+
+def test_export_friction_takes_feeds_at_the_cases_lead(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    case = str(ROOT / "examples" / "xy_table_32x10.toml")
+    args = ["export-friction", "--case", case, "--form", "load-map", "--out"]
+    code, _, err = run([*args, str(tmp_path / "a.csv"), "--speed", "0.1..5 m/min:5"], capsys)
+    assert code == 0, err
+    assert "'0.1..5 m/min:5' is read as 10 to 500 rpm at lead 10 mm" in err
+    code, _, err = run([*args, str(tmp_path / "b.csv"), "--speed", "10..500:5 rpm"], capsys)
+    assert code == 0, err
+    # the same speeds either way: 0.1 m/min at 10 mm is 10 rpm, 5 m/min 500 rpm
+    assert (tmp_path / "a.csv").read_bytes() == (tmp_path / "b.csv").read_bytes()
