@@ -147,6 +147,7 @@ def test_a_quantity_neither_speed_is_still_refused_naming_the_field(text: str) -
     with pytest.raises(BallScrewInputError) as info:
         parse_speed_range("--speed", text, 0.010)
     assert info.value.field == "--speed" and "or a feed" in info.value.allowed
+    assert info.value.allowed.endswith("at the lead 10 mm)")
 
 
 def test_without_a_lead_a_feed_is_refused() -> None:
