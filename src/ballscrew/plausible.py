@@ -392,11 +392,9 @@ r"""The first bending frequency [Hz] of a screw shaft below which its span is re
 below which it is warned of.
 
 For a uniform shaft between simple supports, the first natural frequency is
-:math:`\omega_1 = \pi^2\sqrt{EI/(
-ho A)}/L^2` and the sag under its own weight
-:math:`\delta = 5
-ho g A L^4/(384 E I)`, so :math:`\omega_1^2\delta = (5\pi^4/384)\,g
-pprox 1.27\,g` whatever the size (e.g. Blevins, *Formulas for Natural Frequency and
+:math:`\omega_1 = \pi^2\sqrt{EI/(\rho A)}/L^2` and the sag under its own weight
+:math:`\delta = 5\rho g A L^4/(384 E I)`, so :math:`\omega_1^2\delta = (5\pi^4/384)\,g
+\approx 1.27\,g` whatever the size (e.g. Blevins, *Formulas for Natural Frequency and
 Mode Shape*, Table 8-1; Timoshenko & Gere, the uniformly loaded simple beam): at 1 Hz
 the shaft sags about 0.31 m under its own weight, no nut can run on it; at 5 Hz about
 13 mm, and it may turn at no more than 240 rpm (80 % of its critical speed)."""
