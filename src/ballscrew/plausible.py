@@ -98,6 +98,7 @@ __all__ = [
     "TYPICAL_TURNS",
     "TypicalRange",
     "check_acceleration",
+    "check_axial_force",
     "check_axis_property",
     "check_ball_diameter",
     "check_feed",
@@ -373,6 +374,15 @@ def check_moving_mass(field: str, text: str, mass: float, static_rating: float) 
                     STANDARD_GRAVITY, "kg")  # fmt: skip
 
 
+def check_axial_force(field: str, text: str, force: float, static_rating: float) -> None:
+    """Refuse an axial force [N] above the screw's static rating [N]; warn above half of it.
+
+    A process force the screw carries (a machine axis' feed force): above
+    :math:`C_{0a}` it dents the raceways (:data:`STATIC_SOURCE`).
+    """
+    _against_static(field, text, abs(force), static_rating, "the force", 1.0, "N")
+
+
 def check_acceleration(
     field: str, text: str, acceleration: float, mass: float, static_rating: float
 ) -> None:
@@ -443,7 +453,7 @@ def check_span(
 
 def check_feed(
     field: str, text: str, feed: float, lead: float, pitch_diameter: float, dn_limit: float,
-    max_speed: float,
+    max_speed: float, *, warn_above: bool = True,
 ) -> None:  # fmt: skip
     """Refuse a feed [m/s] past the models' largest speed; warn past the nut's d·n limit.
 
@@ -451,6 +461,8 @@ def check_feed(
     ``max_speed`` [rad/s] (:data:`ballscrew.design.limits.MAX_SPEED`) no operating
     point is taken; above the d·n limit ``dn_limit`` [mm·rpm] (the case's, from its
     catalogue) the ball return is damaged, so a feed limit beyond it never binds.
+    ``warn_above=False`` only refuses (a machine axis' feed limit, which only caps the
+    planner's moves: the moves that reach the d·n limit are told when run).
     """
     rpm = feed / lead * 60.0
     if not math.isfinite(feed) or feed / lead * 2.0 * math.pi > max_speed:
@@ -460,7 +472,7 @@ def check_feed(
             f"{rpm:.4g} rpm is past every ball screw's speed (a feed in m/s meant m/min?)",
         )  # fmt: skip
     dn = pitch_diameter * 1e3 * rpm
-    if dn > dn_limit:
+    if warn_above and dn > dn_limit:
         most = dn_limit / (pitch_diameter * 1e3) * lead  # m/min
         warn(field, f"{text} ({rpm:.4g} rpm, d·n {dn:,.0f} mm·rpm)",
              f"at most {most:.4g} m/min, the feed at the nut's d·n limit {dn_limit:,.0f} mm·rpm "

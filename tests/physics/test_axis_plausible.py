@@ -208,3 +208,23 @@ def test_each_range_holds_at_its_ends(
     with pytest.raises(BallScrewInputError) as info:
         check_axis_property(field, most * 1.05, name)
     assert info.value.value.startswith(f"{most * 1.05:.4g}")
+
+
+def test_a_process_force_is_held_to_c0a_in_either_direction() -> None:
+    from ballscrew.plausible import check_axial_force
+
+    check_axial_force("axes.X.process_force", "144.8 kN", 144.8e3, C0A)  # "at most": the end
+    for force in (145e3, -145e3):  # a pull dents the raceways as a push does
+        with pytest.raises(BallScrewInputError, match=r"at most 1\.448e\+05 N"):
+            check_axial_force("axes.X.process_force", "145 kN", force, C0A)
+    assert not _warned(check_axial_force, "axes.X.process_force", "72 kN", 72.4e3, C0A)
+    assert _warned(check_axial_force, "axes.X.process_force", "73 kN", -73e3, C0A)
+
+
+def test_a_machine_axis_feed_limit_is_only_refused() -> None:
+    args = (0.010, 0.032, 70_000.0, MAX_SPEED)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        check_feed("axes.Z.max_feed", "1 m/s", 1.0, *args, warn_above=False)
+    with pytest.raises(BallScrewInputError):
+        check_feed("axes.Z.max_feed", "200 m/s", 200.0, *args, warn_above=False)
