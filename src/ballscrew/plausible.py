@@ -23,7 +23,17 @@ The bounds, quantity by quantity (warned outside / refused outside / source):
 * ``ball_diameter``: the ball series (:data:`ballscrew.geometry.PLAUSIBLE_SIZES`) /
   as ``BallScrew`` refuses / ISO 3290 sizes [4]_ and the bundled catalogue;
 * ``loaded_turns``: 1 to 5 per circuit / 0 to 10 (``BallScrew``) / the makers' nuts;
-* wiper drag: :func:`wiper_drag_bound` / 10 times that / an estimate (below).
+* wiper drag: :func:`wiper_drag_bound` / 10 times that / an estimate (below);
+* ``axis.moving_mass``: a weight of half the static rating :math:`C_{0a}` / a weight above
+  it / ISO 3408-5 and the catalogues' static safety (:func:`check_moving_mass`);
+* ``axis.max_acceleration``: the same force, mass times acceleration;
+* ``axis.bearing_span``, ``axis.screw_length``: a first bending frequency of the shaft
+  below 5 Hz / below 1 Hz / beam theory (:func:`check_span`);
+* ``axis.max_feed``: the feed at the nut's d·n limit / the feed at the models' largest
+  speed (:func:`check_feed`);
+* ``axis.motor_inertia``, ``coupling_inertia``, ``screw_inertia``, ``gear_ratio``:
+  :data:`AXIS_RANGES`, the makers' parts (as recalled, not checked) / 10 kg·m², ratios
+  outside 1/1000 to 1000.
 
 Which of these sources were read, and what each gives (issue 35, item 4):
 
@@ -80,13 +90,22 @@ import numpy.typing as npt
 from .errors import BallScrewInputError, BallScrewPlausibilityWarning
 
 __all__ = [
+    "AXIS_RANGES",
     "BALL_SERIES_MM",
+    "LOWEST_FREQUENCY",
     "LUBRICANT_RANGES",
+    "STANDARD_GRAVITY",
     "TYPICAL_TURNS",
     "TypicalRange",
+    "check_acceleration",
+    "check_axial_force",
+    "check_axis_property",
     "check_ball_diameter",
+    "check_feed",
     "check_loaded_turns",
     "check_lubricant_property",
+    "check_moving_mass",
+    "check_span",
     "check_wiper_drag",
     "warn",
     "wiper_drag_bound",
@@ -218,7 +237,11 @@ def check_lubricant_property(field: str, value: float, name: str | None = None) 
     ``name`` is the field of :data:`LUBRICANT_RANGES` when ``field`` names it
     otherwise (``lubricant.nu40`` for ``nu40``).
     """
-    r = LUBRICANT_RANGES[name or field]
+    _check_range(field, value, LUBRICANT_RANGES[name or field])
+
+
+def _check_range(field: str, value: float, r: TypicalRange) -> None:
+    """Refuse ``value`` [SI] outside ``r``'s possible range; warn outside its typical one."""
     low, high = r.possible
     if not (low <= value <= high):  # the range the message states, ends included
         raise BallScrewInputError(
@@ -296,3 +319,214 @@ def check_wiper_drag(
     if warn_above and value > typical:
         warn(field, f"{value:.4g} N*m", f"at most about {typical:.2g} N*m on {size}",
              WIPER_SOURCE)  # fmt: skip
+
+
+# --- the axis a screw drives ---------------------------------------------------------------
+
+STANDARD_GRAVITY = 9.80665
+"""[m/s²]."""
+
+STATIC_SOURCE = (
+    "ISO 3408-5:2006 5.1: the static rating C_0a is the axial load that dents the most loaded "
+    "ball contact permanently (4200 MPa); catalogues (THK, HIWIN) ask a static safety "
+    "C_0a/F of 1 to 3"
+)
+"""Where the bounds of the moving mass and the acceleration come from."""
+
+
+def _against_static(
+    field: str, text: str, force: float, static_rating: float, what: str, per: float, unit: str
+) -> None:
+    """Refuse a ``force`` [N] above the static rating [N], warn above half of it.
+
+    ``what`` says what the force is ("its weight"); the field's largest value is the
+    allowed force over ``per`` (the force of one ``unit`` of the field).
+    """
+    c0 = f"C_0a = {static_rating / 1e3:.4g} kN"
+    if not math.isfinite(force) or force > static_rating:
+        raise BallScrewInputError(
+            field, text,
+            f"at most {static_rating / per:.4g} {unit}: {what}, {force / 1e3:.4g} kN, would "
+            f"exceed the screw's static rating {c0}, which dents its raceways ({STATIC_SOURCE})",
+        )  # fmt: skip
+    if force > 0.5 * static_rating:
+        warn(field, f"{text} ({what} {force / 1e3:.4g} kN)",
+             f"at most {0.5 * static_rating / per:.4g} {unit}, a static safety of 2 against {c0}",
+             STATIC_SOURCE)  # fmt: skip
+
+
+def check_moving_mass(field: str, text: str, mass: float, static_rating: float) -> None:
+    r"""Refuse a moving mass [kg] whose weight exceeds the screw's static rating [N]; warn at half.
+
+    A mass :math:`m` whose weight :math:`m g` exceeds :math:`C_{0a}` dents the
+    raceways when it hangs on a vertical axis, and on any axis when it is accelerated
+    at 1 g; at half of it the static safety is 2, the middle of the catalogues' 1 to 3
+    (:data:`STATIC_SOURCE`). ``text`` is the value as typed, for the message.
+
+    >>> check_moving_mass("axis.moving_mass", "250 kg", 250.0, 144.8e3)
+    >>> try:
+    ...     check_moving_mass("axis.moving_mass", "2500 t", 2.5e6, 144.8e3)
+    ... except BallScrewInputError as exc:
+    ...     print(exc.allowed[:20])
+    at most 1.477e+04 kg
+    """
+    _against_static(field, text, mass * STANDARD_GRAVITY, static_rating, "its weight",
+                    STANDARD_GRAVITY, "kg")  # fmt: skip
+
+
+def check_axial_force(field: str, text: str, force: float, static_rating: float) -> None:
+    """Refuse an axial force [N] above the screw's static rating [N]; warn above half of it.
+
+    A process force the screw carries (a machine axis' feed force): above
+    :math:`C_{0a}` it dents the raceways (:data:`STATIC_SOURCE`).
+    """
+    _against_static(field, text, abs(force), static_rating, "the force", 1.0, "N")
+
+
+def check_acceleration(
+    field: str, text: str, acceleration: float, mass: float, static_rating: float
+) -> None:
+    r"""Refuse an acceleration [m/s²] whose force on ``mass`` [kg] exceeds the static rating.
+
+    The screw pushes :math:`m a` into the mass; above :math:`C_{0a}` it dents its
+    raceways at every start (:data:`STATIC_SOURCE`), above half of it the static
+    safety is below 2 (warned). Nothing is checked without a mass.
+    """
+    if mass > 0.0:
+        _against_static(field, text, mass * acceleration, static_rating,
+                        f"the force on the moving mass of {mass:.4g} kg", mass, "m/s²")  # fmt: skip
+
+
+LOWEST_FREQUENCY = (1.0, 5.0)
+r"""The first bending frequency [Hz] of a screw shaft below which its span is refused, and
+below which it is warned of.
+
+For a uniform shaft between simple supports, the first natural frequency is
+:math:`\omega_1 = \pi^2\sqrt{EI/(\rho A)}/L^2` and the sag under its own weight
+:math:`\delta = 5\rho g A L^4/(384 E I)`, so :math:`\omega_1^2\delta = (5\pi^4/384)\,g
+\approx 1.27\,g` whatever the size (e.g. Blevins, *Formulas for Natural Frequency and
+Mode Shape*, Table 8-1; Timoshenko & Gere, the uniformly loaded simple beam): at 1 Hz
+the shaft sags about 0.31 m under its own weight, no nut can run on it; at 5 Hz about
+13 mm, and it may turn at no more than 240 rpm (80 % of its critical speed)."""
+
+SPAN_SOURCE = (
+    "the shaft's first bending frequency, lambda^2 d_r sqrt(E/rho)/(4 L^2) (Blevins, Table "
+    "8-1); a simply supported shaft of first frequency f sags 1.27 g/(2 pi f)^2 under its own "
+    "weight: 0.31 m at 1 Hz, 13 mm at 5 Hz"
+)
+
+
+def check_span(
+    field: str, text: str, span: float, frequency: float, mounting: str, *, warn_below: bool = True
+) -> None:
+    """Refuse a span [m] whose shaft bends below 1 Hz; warn below 5 Hz (:data:`LOWEST_FREQUENCY`).
+
+    ``frequency`` [Hz] is the shaft's first bending frequency over ``span``
+    (:func:`ballscrew.design.limits.critical_speed` over 2π), ``mounting`` says how
+    it was computed ("fixed-supported, root diameter 26.4 mm"); the longest span
+    allowed follows from the frequency's :math:`1/L^2`. ``warn_below=False`` only
+    refuses (a screw's whole length, which is not its span).
+
+    >>> check_span("axis.bearing_span", "1000 mm", 1.0, 36.0, "fixed-supported")
+    >>> try:
+    ...     check_span("axis.bearing_span", "900 m", 900.0, 0.0001, "fixed-supported")
+    ... except BallScrewInputError as exc:
+    ...     print(exc.field, exc.allowed[:15])
+    axis.bearing_span at most 9000 mm
+    """
+    refused, warned = LOWEST_FREQUENCY
+    if not math.isfinite(frequency) or frequency < refused:
+        longest = span * math.sqrt(frequency / refused) if math.isfinite(frequency) else 0.0
+        raise BallScrewInputError(
+            field, text,
+            f"at most {longest * 1e3:.4g} mm for this screw ({mounting}): over "
+            f"{span:.4g} m its shaft's first bending frequency is {frequency:.3g} Hz, "
+            f"below {refused:g} Hz, and it would sag over 0.3 m under its own weight "
+            f"({SPAN_SOURCE}); a length in m meant mm?",
+        )  # fmt: skip
+    if warn_below and frequency < warned:
+        longest = span * math.sqrt(frequency / warned)
+        warn(field, f"{text} (first bending frequency {frequency:.3g} Hz)",
+             f"at most {longest * 1e3:.4g} mm for this screw ({mounting}), a first bending "
+             f"frequency of {warned:g} Hz", SPAN_SOURCE)  # fmt: skip
+
+
+def check_feed(
+    field: str, text: str, feed: float, lead: float, pitch_diameter: float, dn_limit: float,
+    max_speed: float, *, warn_above: bool = True,
+) -> None:  # fmt: skip
+    """Refuse a feed [m/s] past the models' largest speed; warn past the nut's d·n limit.
+
+    The screw turns at :math:`n = v/l` (``lead`` :math:`l` [m]); above
+    ``max_speed`` [rad/s] (:data:`ballscrew.design.limits.MAX_SPEED`) no operating
+    point is taken; above the d·n limit ``dn_limit`` [mm·rpm] (the case's, from its
+    catalogue) the ball return is damaged, so a feed limit beyond it never binds.
+    ``warn_above=False`` only refuses (a machine axis' feed limit, which only caps the
+    planner's moves: the moves that reach the d·n limit are told when run).
+    """
+    rpm = feed / lead * 60.0
+    if not math.isfinite(feed) or feed / lead * 2.0 * math.pi > max_speed:
+        raise BallScrewInputError(
+            field, text,
+            f"at most {max_speed / (2.0 * math.pi) * lead:.4g} m/s at lead {lead * 1e3:g} mm: "
+            f"{rpm:.4g} rpm is past every ball screw's speed (a feed in m/s meant m/min?)",
+        )  # fmt: skip
+    dn = pitch_diameter * 1e3 * rpm
+    if warn_above and dn > dn_limit:
+        most = dn_limit / (pitch_diameter * 1e3) * lead  # m/min
+        warn(field, f"{text} ({rpm:.4g} rpm, d·n {dn:,.0f} mm·rpm)",
+             f"at most {most:.4g} m/min, the feed at the nut's d·n limit {dn_limit:,.0f} mm·rpm "
+             f"with lead {lead * 1e3:g} mm", "the axis' d·n limit (axis.dn_limit, the nut's "
+             "catalogue: about 70 000 for external returns, up to 160 000 for high-speed "
+             "nuts); a feed in m/s meant m/min?")  # fmt: skip
+
+
+AXIS_RANGES: dict[str, TypicalRange] = {
+    "motor_inertia": TypicalRange(
+        (0.0, 0.1),
+        (0.0, 10.0),
+        1.0,
+        "kg*m^2",
+        "servo motors' rotors run from about 2e-6 kg*m^2 (50 W) to about 0.1 kg*m^2 (the "
+        "largest feed-drive servos, some 30 kW), as recalled from Siemens 1FK7/1FT7, Yaskawa "
+        "Sigma-7 and Mitsubishi HG ranges, not checked; above 10 kg*m^2, a solid steel "
+        "cylinder 400 mm across and 0.5 m long, lies no feed drive's rotor ('kg*cm**2' "
+        "typed as 'kg*m**2'?)",
+    ),
+    "coupling_inertia": TypicalRange(
+        (0.0, 0.01),
+        (0.0, 10.0),
+        1.0,
+        "kg*m^2",
+        "couplings of feed drives (bellows, disc, elastomer) run from about 1e-6 to 0.01 "
+        "kg*m^2, as recalled from R+W and KTR tables, not checked; above 10 kg*m^2 (a solid "
+        "steel cylinder 400 mm across and 0.5 m long) lies no coupling",
+    ),
+    "screw_inertia": TypicalRange(
+        (0.0, 2.0),
+        (0.0, 10.0),
+        1.0,
+        "kg*m^2",
+        "a solid steel shaft of 100 mm over 15 m, about the largest ball screw made, has "
+        "1.2 kg*m^2 (pi rho L d^4/32); above 10 kg*m^2 lies no ball screw",
+    ),
+    "gear_ratio": TypicalRange(
+        (0.2, 100.0),
+        (1e-3, 1e3),
+        1.0,
+        "",
+        "belt stages of 1 to 5 and planetary gearboxes of 3 to 10 a stage, up to 100 in two "
+        "(as recalled, not checked), in motor turns per screw turn; outside 1/1000 to 1000 no "
+        "feed drive's transmission lies (the ratio inverted?)",
+    ),
+}
+"""The ``[axis]`` quantities held to a fixed range: field -> :class:`TypicalRange` (SI)."""
+
+
+def check_axis_property(field: str, value: float, name: str | None = None) -> None:
+    """Refuse ``value`` [SI] outside :data:`AXIS_RANGES`' possible range, warn outside the typical.
+
+    ``name`` is the key of :data:`AXIS_RANGES` when ``field`` names it otherwise
+    (``axis.motor_inertia``).
+    """
+    _check_range(field, value, AXIS_RANGES[name or field])

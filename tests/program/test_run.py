@@ -215,3 +215,28 @@ def test_the_example_program_and_its_report(
     assert code == 0, err
     for name in ("report.html", "figures/path.png", "figures/energy.png", "data/reversals.csv"):
         assert (tmp_path / "report" / name).is_file()
+
+
+@pytest.mark.parametrize(
+    ("old", "new", "field"),
+    [
+        # X: 450 kg on a HIWIN R40-10K5-FDC; a process force, or 450 kg at 3000 m/s² (1350 kN),
+        # past its static rating is refused; 300 m/s at lead 10 mm is 1.8 million rpm
+        ('process_force = { value = "600 N"', 'process_force = { value = "600 kN"',
+         "axes.X.process_force"),
+        ('max_acceleration = "3 m/s^2"', 'max_acceleration = "3000 m/s^2"',
+         "axes.X.max_acceleration"),
+        ('max_feed = "30 m/min"', 'max_feed = "300 m/s"', "axes.X.max_feed"),
+    ],
+)  # fmt: skip
+def test_a_machine_axis_past_its_screw_is_refused_naming_the_key(
+    old: str, new: str, field: str
+) -> None:
+    good = (EXAMPLES / "machine_vmc.toml").read_text("utf-8")
+    assert old in good
+    with pytest.raises(BallScrewInputError) as info:
+        parse_machine(good.replace(old, new, 1), folder=EXAMPLES)
+    assert info.value.field == field
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # the example itself passes without a warning
+        parse_machine(good, folder=EXAMPLES)

@@ -20,7 +20,14 @@ from ballscrew.axis.motion import parse_move
 from ballscrew.errors import BallScrewInputError
 from ballscrew.io.case import load_case, parse_case
 from ballscrew.io.designation import find
-from ballscrew.select import SelectResult, candidates, evaluate, non_dominated, run_select
+from ballscrew.select import (
+    NoFeasibleCandidateError,
+    SelectResult,
+    candidates,
+    evaluate,
+    non_dominated,
+    run_select,
+)
 from cli_runner import run
 from shared import ROOT
 
@@ -156,6 +163,36 @@ def test_a_duty_no_candidate_survives_names_what_fails_them() -> None:
         run_select(load_case(CASE), profile_from_move(m, 1), diameter=(0.025, 0.025),
                    lead=(0.005, 0.005), preloads=["light"], move=m)  # fmt: skip
     assert info.value.field == "--move"
+
+
+def test_select_out_writes_why_nothing_passed_and_still_fails(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    out = tmp_path / "report"
+    code, _, err = run(["select", "--case", str(CASE), "--move", MOVE, "--diameter", "25 mm",
+                        "--lead", "5 mm", "--preload", "light", "--out", str(out)],
+                       capsys)  # fmt: skip
+    assert code == 2 and "error: --move = 'a duty none of the" in err
+    assert f"report: {out / 'report.html'}" in err
+    doc = json.loads((out / "data" / "select.json").read_text(encoding="utf-8"))
+    assert doc["recommended"] is None and doc["front"] == []
+    assert doc["inputs"]["command"][:2] == ["ballscrew", "select"]
+    m = parse_move(MOVE)
+    with pytest.raises(NoFeasibleCandidateError) as info:
+        run_select(load_case(CASE), profile_from_move(m, 1), diameter=(0.025, 0.025),
+                   lead=(0.005, 0.005), preloads=["light"], move=m)  # fmt: skip
+    # the report holds every candidate, each with what fails it: as the library's own result
+    evaluated = info.value.result.evaluated
+    assert [(c["name"], c["binding"], c["feasible"]) for c in doc["candidates"]] == [
+        (e.name, e.binding, False) for e in evaluated
+    ]
+    page = (out / "report.md").read_text(encoding="utf-8")
+    for e in evaluated:
+        assert f"| {e.name} | " in page and e.binding in page
+    assert doc["reason"] == str(info.value) and str(info.value) in page
+    rows = (out / "data" / "front.csv").read_text(encoding="utf-8").splitlines()
+    assert len(rows) == 1 + len(evaluated)
+    assert not list(tmp_path.glob(".*")), "no partial folder left beside the report"
 
 
 def test_the_dataset_holds_every_candidate(selection: SelectResult) -> None:

@@ -129,7 +129,8 @@ SPEEDS = [  # speeds as catalogues write them [rpm meant], or None: refused
     ("50 Hz", [3000.0]),  # revolutions per second, with a note
     ("1 000, 2 000 rpm", [1000.0, 2000.0]),
     ("3000", None),
-    ("10 m/min", None),
+    ("10 m/min", [1000.0]),  # a feed: the screw speed at the case's lead of 10 mm, with a note
+    ("10 kg", None),
 ]
 
 
@@ -142,12 +143,14 @@ def test_a_speed_reads_the_same_in_all_three(
     capsys: pytest.CaptureFixture[str],
 ) -> None:
     out = tmp_path / "t.json"
+    same = tmp_path / "same.toml"  # the web's case, so that a feed meets the same lead
+    same.write_text(BASE, encoding="utf-8")
     with warnings.catch_warnings():
         # How a speed in Hz was read: a 'warning:' line on the command line (the tests
         # otherwise turn warnings into errors).
         warnings.simplefilter("always", BallScrewReadingWarning)
         code, _, err = run(
-            ["torque", "--case", str(SMALL_CASE), "--model", "catalog", "--speed", text,
+            ["torque", "--case", str(same), "--model", "catalog", "--speed", text,
              "--json", str(out)],
             capsys,
         )  # fmt: skip
@@ -172,3 +175,8 @@ def test_a_speed_reads_the_same_in_all_three(
     assert ("read as 50 revolutions per second" in err) == hertz
     assert any("revolutions per second" in w for w in response.json()["warnings"]) == hertz
     assert any("revolutions per second" in a.reason for a in case.assumptions) == hertz
+    # A feed says at which lead it was read, in all three.
+    feed = "m/min" in text
+    assert ("is read as 1000 rpm at lead 10 mm" in err) == feed
+    assert any("at lead 10 mm" in w for w in response.json()["warnings"]) == feed
+    assert any("at lead 10 mm" in a.reason for a in case.assumptions) == feed

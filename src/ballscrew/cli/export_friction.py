@@ -46,8 +46,9 @@ __all__ = ["export_friction_command"]
     help="Temperature(s), e.g. '20, 40 degC' (default: the case's first).",
 )
 @click.option("--speed", default="0.1..3000:60 rpm", show_default=True,
-              help="Screw speeds of the curve (both directions are fitted); for a range the "
-              "points are spaced logarithmically.")  # fmt: skip
+              help="Screw speeds of the curve (both directions are fitted), or feeds (e.g. "
+              "'0.1..5 m/min') read as screw speeds at the case's lead; for a range the points "
+              "are spaced logarithmically.")  # fmt: skip
 @click.option("--axial-load", default=None,
               help="Axial load (default: the case's first); with load-map signed loads, e.g. "
               "'-4..4:9 kN' (default: the case's loads, mirrored, and 0).")  # fmt: skip
@@ -108,7 +109,7 @@ def export_friction_command(
     from ..fit.export import FrictionExport, log_speeds, run_export_friction
     from ..io.case import load_case
     from ..io.measured import read_measured
-    from ..io.units import parse_range, to_si
+    from ..io.units import Reading, parse_range, to_si
 
     def si(flag: str, text: str | None, unit: str) -> float | None:
         return to_si(flag, text, unit) if text else None
@@ -117,14 +118,18 @@ def export_friction_command(
         require_case(case_file, "export-friction --measured",
                      "a measured torque is turned into forces with the case's lead")  # fmt: skip
     case = load_case(case_file)
+    read: list[Reading] = []
+    speeds = log_speeds(speed, case.screw.lead, read)
+    for reading in read:
+        click.echo(f"note: {reading}", err=True)
     temps = parse_range("--temperature", temperature, "degC") if temperature else None
     if form == "load-map":  # signed loads; the options of a fitted form do not apply
         loads = parse_range("--axial-load", axial_load, "N") if axial_load else None
-        result = run_export_friction(case, model_name, form, speeds=log_speeds(speed),
-                                     temperatures=temps, loads=loads)  # fmt: skip
+        result = run_export_friction(case, model_name, form, speeds=speeds, temperatures=temps,
+                                     loads=loads)  # fmt: skip
     else:
         result = run_export_friction(
-            case, model_name, form, temperatures=temps, speeds=log_speeds(speed),
+            case, model_name, form, temperatures=temps, speeds=speeds,
             measured=read_measured(measured_file, case.screw) if measured_file else None,
             axial_load=si("--axial-load", axial_load, "N"),
             inertia=si("--inertia", inertia, "kg*m**2"),

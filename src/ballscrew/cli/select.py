@@ -60,7 +60,8 @@ __all__ = ["select_command"]
 @json_option("Write every candidate's figures as JSON to FILE ('-' for standard output).")
 @folder_option(
     "Write a report here: the front's 2-D projections, every candidate's figures (CSV) and "
-    "the recommended candidate's case file."
+    "the recommended candidate's case file; when no candidate passes, each candidate's "
+    "failing criterion (the command still exits with status 2)."
 )
 def select_command(
     case_file: str | None,
@@ -103,7 +104,7 @@ def select_command(
     from ..io.case import load_case
     from ..io.extras import require
     from ..io.units import to_si
-    from ..select import run_select
+    from ..select import NoFeasibleCandidateError, run_select
     from ..select.pool import DEFAULT_PRELOADS, length_range
 
     require("select", "ballscrew select", modules=("pymoo",))
@@ -122,17 +123,6 @@ def select_command(
         from ..io.motors import read_prices
 
         prices, currency = read_prices(prices_file)
-    result = run_select(
-        case, profile, objectives=objectives or ("energy", "life"),
-        diameter=length_range("--diameter", diameter), lead=length_range("--lead", lead),
-        makers=makers,
-        preloads=preloads or DEFAULT_PRELOADS, oils=oils, model=model_name, cycles=cycles,
-        temperature=to_si("--temperature", temperature, "degC") if temperature else None,
-        run_time=to_si("--run-time", run_time, "s"), move=m,
-        motion_field="--move" if move_text is not None else "--profile",
-        sources=sources or ("catalogue",), nuts=nuts, motors=motors, screw_prices=prices,
-        currency=currency,
-    )  # fmt: skip
     command = ["ballscrew", "select", "--case", case_file or ""]
     for flag, value in (("--move", move_text), ("--profile", profile_file),
                         ("--diameter", diameter), ("--lead", lead),
@@ -144,6 +134,26 @@ def select_command(
                          ("--nut", nuts)):  # fmt: skip
         for v in values:
             command += [flag, v]
+    try:
+        result = run_select(
+            case, profile, objectives=objectives or ("energy", "life"),
+            diameter=length_range("--diameter", diameter), lead=length_range("--lead", lead),
+            makers=makers,
+            preloads=preloads or DEFAULT_PRELOADS, oils=oils, model=model_name, cycles=cycles,
+            temperature=to_si("--temperature", temperature, "degC") if temperature else None,
+            run_time=to_si("--run-time", run_time, "s"), move=m,
+            motion_field="--move" if move_text is not None else "--profile",
+            sources=sources or ("catalogue",), nuts=nuts, motors=motors, screw_prices=prices,
+            currency=currency,
+        )  # fmt: skip
+    except NoFeasibleCandidateError as exc:
+        if out_dir:  # the report asked for says why nothing passed; the error still exits 2
+            from ..report.select import write_rejection_report
+
+            failed = exc.result
+            failed.inputs.update({"command": command, "case_file": case_file})
+            write_report(out_dir, lambda folder: write_rejection_report(folder, failed))
+        raise
     result.inputs.update({"command": command, "case_file": case_file})
     out = stdout(json_file)
     out.print(_front_table(result))

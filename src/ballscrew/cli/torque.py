@@ -13,6 +13,7 @@ from rich.console import Console
 from rich.table import Table
 
 from ..errors import BallScrewInputError
+from ..io.units import Reading
 from .common import (
     case_option,
     echo_readings,
@@ -45,7 +46,8 @@ __all__ = ["torque"]
     "--speed",
     default=None,
     help="Screw speed(s), e.g. '0..3000 rpm', "
-    "'0..3000:31 rpm' or '100, 1000 rpm' (default: the case's).",
+    "'0..3000:31 rpm' or '100, 1000 rpm', or feeds, e.g. '15 m/min' or '0..30 m/min:7', read "
+    "as screw speeds at the case's lead (default: the case's).",
 )
 @click.option("--temperature", default=None, help="Temperature(s), e.g. '20, 40 degC'.")
 @click.option("--axial-load", default=None, help="Axial load(s), e.g. '0, 2 kN'.")
@@ -120,6 +122,7 @@ def torque(
       ballscrew torque --model olaru --model catalog --temperature "20, 45 degC" --csv t.csv
       ballscrew torque --case my_screw.toml --axial-load "0, 2 kN" --json t.json
       ballscrew torque --speed "100, 1000 rpm" --units imperial
+      ballscrew torque --case my_screw.toml --speed "0..30 m/min:7"   # feeds, at the lead
       ballscrew torque --model complete --model catalog --csv t.csv --csv-layout wide \\
           --csv-dialect semicolon-decimal-comma
     """  # noqa: D301 - click needs the literal \b to keep the example lines
@@ -137,7 +140,10 @@ def torque(
         case = case.with_wiper_drag(wiper_drag, field="--wiper-drag")
     for name in model_names:
         model_named(name)
-    w, t, f = _points(case, speed, temperature, axial_load, len(model_names), max_points)
+    read: list[Reading] = []
+    w, t, f = _points(case, speed, temperature, axial_load, len(model_names), max_points, read)
+    for reading in read:
+        click.echo(f"note: {reading}", err=True)
     console = Console(stderr=True)
     with progress(console) as bar:
         task = bar.add_task("models", total=len(model_names))
@@ -153,7 +159,7 @@ def torque(
             load_field="--axial-load" if axial_load else "operation.axial_load",
             wiper_drag=case.wiper_drag, wiper_models=WIPER_PARAMETERS, on_model=advance,
         )  # fmt: skip
-    run = TorqueRun(case, table)
+    run = TorqueRun(case, table, tuple(str(r) for r in read))
     for line in run.warning_lines(verbose=verbose()):
         click.echo(line, err=True)
     _print_table(run, table_kind, "-" if csv_file == "-" else json_file, system)
@@ -173,15 +179,17 @@ def torque(
 
 def _points(
     case: Any, speed: str | None, temperature: str | None, axial_load: str | None,
-    models: int, max_points: int,
+    models: int, max_points: int, read: list[Reading] | None = None,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:  # fmt: skip
     """The speeds [rad/s], temperatures [°C] and loads [N]: those given, else the case's.
 
+    A feed given as ``--speed`` is the screw speed at the case's lead, told in ``read``.
     Refuses more than ``max_points`` points over the ``models`` before any is computed.
     """
-    from ..io.units import parse_range
+    from ..io.units import parse_range, parse_speed_range
 
-    w = np.asarray(parse_range("--speed", speed, "rad/s")) if speed else case.speed
+    w = (np.asarray(parse_speed_range("--speed", speed, case.screw.lead, notes=read))
+         if speed else case.speed)  # fmt: skip
     t = np.asarray(parse_range("--temperature", temperature, "degC")) if temperature else None
     t = case.temperature if t is None else t
     f = np.asarray(parse_range("--axial-load", axial_load, "N")) if axial_load else None

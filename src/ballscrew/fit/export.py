@@ -26,7 +26,7 @@ from ..errors import BallScrewInputError, FloatArray
 from ..friction import get_model
 from ..io.case import Case
 from ..io.measured import MeasuredCurve
-from ..io.units import parse_range
+from ..io.units import Reading, parse_speed_range
 from ..kinematics import rad_s_to_rpm
 from .controller import FrictionForm, fit_form, form_curve, with_intervals
 from .friction_map import FrictionMap, friction_map
@@ -36,9 +36,15 @@ __all__ = [
 ]  # fmt: skip
 
 
-def log_speeds(text: str) -> FloatArray:
-    """Positive screw speeds [rad/s]; a range 'a..b:n unit' is spaced logarithmically."""
-    values = np.asarray(parse_range("--speed", text, "rad/s"), dtype=float)
+def log_speeds(
+    text: str, lead: float | None = None, notes: list[Reading] | None = None
+) -> FloatArray:
+    """Positive screw speeds [rad/s]; a range 'a..b:n unit' is spaced logarithmically.
+
+    With the screw's ``lead`` [m], feeds are taken too, as the screw speeds they need
+    (:func:`ballscrew.io.units.parse_speed_range`), the reading told in ``notes``.
+    """
+    values = np.asarray(parse_speed_range("--speed", text, lead, notes=notes), dtype=float)
     if values.size < 3 or np.any(values <= 0.0):
         raise BallScrewInputError("--speed", text, "3 or more positive speeds, e.g. "
                                   "'0.1..3000:60 rpm'")  # fmt: skip

@@ -36,12 +36,29 @@ import numpy as np
 from pydantic import ValidationError
 
 from .. import lubricants
-from ..design.limits import check_operating_bounds
+from ..design.limits import (
+    DEFAULT_DN_LIMIT,
+    MAX_SPEED,
+    SUPPORT_EIGENVALUES,
+    check_operating_bounds,
+    critical_speed,
+    root_diameter,
+)
 from ..design.ratings import Ratings, static_rating_estimate
 from ..errors import BallScrewInputError, BallScrewPlausibilityWarning, FloatArray
 from ..geometry import PLAUSIBLE_SIZES, BallScrew
 from ..lubricant import Lubricant
-from ..plausible import LUBRICANT_RANGES, check_wiper_drag
+from ..plausible import (
+    AXIS_RANGES,
+    LOWEST_FREQUENCY,
+    LUBRICANT_RANGES,
+    check_acceleration,
+    check_axis_property,
+    check_feed,
+    check_moving_mass,
+    check_span,
+    check_wiper_drag,
+)
 from .designation import resolve
 from .files import read_input_text
 from .schema import (
@@ -55,7 +72,7 @@ from .schema import (
     ScrewSection,
     si_units,
 )
-from .units import Reading, parse_range, to_si
+from .units import Reading, parse_range, parse_speed_range, to_si
 
 __all__ = [
     "KEY_UNITS",
@@ -449,7 +466,7 @@ def _parse_case(text: str, source: str) -> Case:
     screw, screw_source, ratings = _screw(s, si, notes)
 
     lub = _lubricant(data.lubricant, notes)
-    speed, temperature, axial = _operation(data, notes, read)
+    speed, temperature, axial = _operation(data, notes, read, screw.lead)
     # What every run checks before it computes, named as the file names it.
     check_operating_bounds(speed, temperature, axial, "operation.")
     lub.check_temperature("operation.temperature", temperature)
@@ -483,12 +500,7 @@ def _parse_case(text: str, source: str) -> Case:
         else si("study", "temperature", st.temperature, "degC")
     )
     axis, thermal = _axis(data, si), _given_si(data, si, _THERMAL_UNITS)
-    if thermal.get("screw_length", math.inf) < axis.get("bearing_span", 0.0):
-        raise BallScrewInputError(
-            "axis.screw_length", data.axis.screw_length,
-            f"at least the bearing span {axis['bearing_span'] * 1e3:g} mm (the screw runs "
-            "through both supports)",
-        )  # fmt: skip
+    _axis_plausible(data.axis, screw, ratings.static, axis, thermal)
     motor, check = _motor(data, si), _check(data, si)
     notes.extend(Assumption(r.field, r.text, f"read as {r.reading}") for r in read)
     sources = _sources(data, notes)
@@ -578,6 +590,69 @@ def _absent(section: str, name: str) -> str:
     return text[start + len("none: ") : end]
 
 
+def _typed(raw: Any) -> str:
+    """A value as the file wrote it (an assumed value's own text)."""
+    return str(raw.value if isinstance(raw, Assumed) else raw)
+
+
+def _axis_plausible(
+    a: AxisSection, screw: BallScrew, static_rating: float, axis: dict[str, Any],
+    thermal: dict[str, float],
+) -> None:  # fmt: skip
+    """``[axis]`` held to what a ball screw axis can be (:mod:`ballscrew.plausible`).
+
+    The inertias and the gear ratio to their ranges; the moving mass and the
+    acceleration against the screw's static rating; the span and the screw length
+    against the shaft's first bending frequency; the feed limit against the nut's
+    d·n limit; a screw shorter than its span names both, and blames the span when its
+    shaft's bending frequency is the implausible one.
+    """
+    for name in AXIS_RANGES:
+        if name in axis:
+            check_axis_property(f"axis.{name}", axis[name], name)
+    mass = axis.get("moving_mass", 0.0)
+    check_moving_mass("axis.moving_mass", _typed(a.moving_mass), mass, static_rating)
+    if "max_acceleration" in axis:
+        check_acceleration("axis.max_acceleration", _typed(a.max_acceleration),
+                           axis["max_acceleration"], mass, static_rating)  # fmt: skip
+    if "max_feed" in axis and axis["max_feed"] > 0.0:
+        check_feed("axis.max_feed", _typed(a.max_feed), axis["max_feed"], screw.lead,
+                   screw.pitch_diameter, axis.get("dn_limit", DEFAULT_DN_LIMIT),
+                   MAX_SPEED)  # fmt: skip
+    support = str(axis["support"])
+    if support not in SUPPORT_EIGENVALUES:
+        raise BallScrewInputError("axis.support", support, f"one of {list(SUPPORT_EIGENVALUES)}")
+    root = axis.get("root_diameter") or root_diameter(screw)
+    if not (math.isfinite(root) and root > 0.0):
+        return  # refused, naming axis.root_diameter, when the axis is built
+    span, length = axis.get("bearing_span", 0.0), thermal.get("screw_length", 0.0)
+    frequency = 0.0
+    if span > 0.0:
+        frequency = float(critical_speed(root, span, support)) / (2.0 * math.pi)
+        check_span("axis.bearing_span", _typed(a.bearing_span), span, frequency,
+                   f"{support}, root diameter {root * 1e3:.3g} mm")  # fmt: skip
+    if length > 0.0:
+        whole = float(critical_speed(root, length, "fixed-fixed")) / (2.0 * math.pi)
+        check_span("axis.screw_length", _typed(a.screw_length), length, whole,
+                   f"held fixed at both ends over its whole length, root diameter "
+                   f"{root * 1e3:.3g} mm", warn_below=False)  # fmt: skip
+    if 0.0 < length < span:
+        both = (f"axis.screw_length = {_typed(a.screw_length)!r} and axis.bearing_span = "
+                f"{_typed(a.bearing_span)!r}")  # fmt: skip
+        if frequency < LOWEST_FREQUENCY[1]:
+            raise BallScrewInputError(
+                "axis.bearing_span", _typed(a.bearing_span),
+                f"at most the screw length {length * 1e3:g} mm (the screw runs through both "
+                f"supports): of {both}, the span is the implausible one (its shaft would bend "
+                f"at {frequency:.3g} Hz)",
+            )  # fmt: skip
+        raise BallScrewInputError(
+            "axis.screw_length", _typed(a.screw_length),
+            f"at least the bearing span {span * 1e3:g} mm (the screw runs through both "
+            f"supports): {both} disagree; one of them is mistyped",
+        )  # fmt: skip
+
+
 def _motor(data: CaseFile, si: Callable[[str, str, Any, str], float]) -> dict[str, float]:
     """``[motor]``'s given keys in SI, each more than 0."""
     motor = {
@@ -614,12 +689,15 @@ def _case_file(text: str, source: str) -> CaseFile:
 
 
 def _operation(
-    data: CaseFile, notes: list[Assumption], read: list[Reading]
+    data: CaseFile, notes: list[Assumption], read: list[Reading], lead: float | None = None
 ) -> tuple[list[float], list[float], list[float]]:
-    """``[operation]``'s ranges: speeds [rad/s], temperatures [°C], axial loads [N]."""
+    """``[operation]``'s ranges: speeds [rad/s], temperatures [°C], axial loads [N].
+
+    A speed given as a feed is the screw speed at ``lead`` [m], told in ``read``.
+    """
     op = data.operation
-    speed = parse_range(
-        "operation.speed", _unwrap("operation.speed", op.speed, notes), "rad/s", notes=read
+    speed = parse_speed_range(
+        "operation.speed", _unwrap("operation.speed", op.speed, notes), lead, notes=read
     )
     temperature = parse_range(
         "operation.temperature", _unwrap("operation.temperature", op.temperature, notes), "degC",

@@ -40,7 +40,9 @@ from typing import Any
 import tomlkit
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
+from ..design.limits import DEFAULT_DN_LIMIT, MAX_SPEED
 from ..errors import BallScrewInputError
+from ..plausible import check_acceleration, check_axial_force, check_feed
 from .case import Case, parse_case, parse_toml
 from .files import read_input_text
 from .schema import Assumed
@@ -234,6 +236,29 @@ def _axis_case(letter: str, raw: str | dict[str, Any], folder: Path | None) -> C
         raise BallScrewInputError(f"{name}: {exc.field}", exc.value, exc.allowed) from None
 
 
+def _typed(raw: Any) -> str:
+    """A value as the file wrote it (an assumed value's own text)."""
+    return str(raw.value if isinstance(raw, Assumed) else raw)
+
+
+def _held_to_screw(
+    key: str, entry: AxisEntry, case: Case, force: float, feed: float, acceleration: float
+) -> None:
+    """An axis' limits and process force held to its screw (:mod:`ballscrew.plausible`).
+
+    The process force and the moving mass at the acceleration against the static
+    rating C_0a, the feed against the models' largest speed (the d·n limit is told of
+    the moves that reach it, when the program runs).
+    """
+    c0 = case.load_ratings().static
+    check_axial_force(f"{key}.process_force", _typed(entry.process_force), force, c0)
+    check_acceleration(f"{key}.max_acceleration", _typed(entry.max_acceleration), acceleration,
+                       case.axis.get("moving_mass", 0.0), c0)  # fmt: skip
+    check_feed(f"{key}.max_feed", _typed(entry.max_feed), feed, case.screw.lead,
+               case.screw.pitch_diameter, case.axis.get("dn_limit", DEFAULT_DN_LIMIT),
+               MAX_SPEED, warn_above=False)  # fmt: skip
+
+
 def parse_machine(
     text: str, *, source: str = "machine", folder: str | Path | None = "."
 ) -> Machine:
@@ -287,11 +312,15 @@ def parse_machine(
         force = _si(f"{key}.process_force", entry.process_force, "N")
         if not (math.isfinite(force) and force >= 0.0):
             raise BallScrewInputError(f"{key}.process_force", entry.process_force, "a force >= 0")
+        case = _axis_case(letter, entry.case, None if folder is None else Path(folder))
+        feed = _positive(f"{key}.max_feed", entry.max_feed, "m/s")
+        acceleration = _positive(f"{key}.max_acceleration", entry.max_acceleration, "m/s**2")
+        _held_to_screw(key, entry, case, force, feed, acceleration)
         axes[letter] = MachineAxis(
             letter=letter,
-            case=_axis_case(letter, entry.case, None if folder is None else Path(folder)),
-            max_feed=_positive(f"{key}.max_feed", entry.max_feed, "m/s"),
-            max_acceleration=_positive(f"{key}.max_acceleration", entry.max_acceleration, "m/s**2"),
+            case=case,
+            max_feed=feed,
+            max_acceleration=acceleration,
             max_jerk=_positive(f"{key}.max_jerk", entry.max_jerk, "m/s**3"),
             travel=(low, high),
             process_force=force,

@@ -237,7 +237,10 @@ class OperationSection(BaseModel):
 
     model_config = ConfigDict(extra="forbid")
     speed: Value = _f(
-        "10..3000:60 rpm", "angular speed", "screw speed(s): 'a..b:n unit' or 'a, b unit'"
+        "10..3000:60 rpm",
+        "angular speed",
+        "screw speed(s): 'a..b:n unit' or 'a, b unit'; a feed ('15 m/min') is read as the "
+        "screw speed at the lead",
     )
     temperature: Value = _f("20 degC", "temperature", "lubricant temperature(s)")
     axial_load: Value = _f("0 N", "force", "external axial load(s) on the nut")
@@ -247,7 +250,14 @@ class AxisSection(BaseModel):
     """``[axis]``: what the screw moves and drives, for ``ballscrew energy``."""
 
     model_config = ConfigDict(extra="forbid")
-    moving_mass: Value = _f("0 kg", "mass", "table, workpiece and nut", "200 kg", si="kg")
+    moving_mass: Value = _f(
+        "0 kg",
+        "mass",
+        "table, workpiece and nut (its weight above the screw's C_0a is refused, above half "
+        "of it warned)",
+        "200 kg",
+        si="kg",
+    )
     screw_inertia: Value | None = _f(
         None,
         "moment of inertia",
@@ -307,7 +317,8 @@ class AxisSection(BaseModel):
     bearing_span: Value | None = _f(
         None,
         "length",
-        "distance between the screw's supports (none: critical speed not checked)",
+        "distance between the screw's supports (none: critical speed not checked); refused where "
+        "the shaft's first bending frequency falls below 1 Hz, warned below 5 Hz",
         "1 m",
         si="m",
     )

@@ -109,6 +109,7 @@ __all__ = [
     "Reading",
     "kind_of",
     "parse_range",
+    "parse_speed_range",
     "parse_unit",
     "range_size",
     "registry",
@@ -1003,6 +1004,50 @@ def parse_range(
     values = _range_values(field, text, unit, default_points, read)
     _tell(read[-1:], notes)
     return values
+
+
+def parse_speed_range(
+    field: str,
+    text: str,
+    lead: float | None,
+    default_points: int = 50,
+    notes: list[Reading] | None = None,
+) -> list[float]:
+    r"""Screw speeds [rad/s] from speeds of rotation, or from feeds at the screw's ``lead`` [m].
+
+    As :func:`parse_range` with the unit ``rad/s``; where the text is a linear speed
+    (``15 m/min``, ``0..30 m/min:7``, ``100 in/min``) and the lead is known, each feed
+    :math:`v` turns the screw at :math:`n = v/l`, :math:`\omega = 2\pi v/l`, and the
+    reading is told (``notes``, else a
+    :class:`~ballscrew.errors.BallScrewReadingWarning`): "1500 rpm at lead 10 mm".
+    Without a lead, or for a quantity that is neither, the refusal is
+    :func:`parse_range`'s, naming ``field``.
+
+    Examples
+    --------
+    >>> [round(v * 30 / 3.141592653589793, 6) for v in parse_speed_range(
+    ...     "--speed", "15 m/min", 0.010, notes=[])]
+    [1500.0]
+    """
+    try:
+        return parse_range(field, text, "rad/s", default_points, notes)
+    except BallScrewInputError as refused:
+        if lead is None or not (math.isfinite(lead) and lead > 0.0):
+            raise
+        try:
+            feeds = parse_range(field, text, "m/s", default_points)
+        except BallScrewInputError:
+            raise BallScrewInputError(
+                refused.field, refused.value,
+                f"{refused.allowed} (or a feed, e.g. '15 m/min', read as the screw speed at "
+                f"the lead {lead * 1e3:.6g} mm)",
+            ) from None  # fmt: skip
+    speeds = [2.0 * math.pi * v / lead for v in feeds]
+    rpm = [v / lead * 60.0 for v in feeds]
+    shown = f"{rpm[0]:.6g}" if len(rpm) == 1 else f"{min(rpm):.6g} to {max(rpm):.6g}"
+    _tell([Reading(field, str(text).strip(), f"{shown} rpm at lead {lead * 1e3:.6g} mm (a feed "
+                   "v turns the screw at n = v / lead)")], notes)  # fmt: skip
+    return speeds
 
 
 def _range_values(

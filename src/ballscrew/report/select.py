@@ -12,6 +12,11 @@
 * ``recommended.toml``: the recommended candidate's case file, for
   ``ballscrew check --case recommended.toml`` with the same move;
 * ``report.md`` and ``report.html``.
+
+When no candidate passes, :func:`write_rejection_report` writes what a report can
+still say: ``data/front.csv`` (every candidate, its verdict and failing row),
+``data/select.json`` and the pages, listing each candidate's failing criterion, most
+nearly passing first, and the error's advice.
 """
 
 from __future__ import annotations
@@ -25,12 +30,12 @@ from matplotlib.figure import Figure as MplFigure
 
 from .._version import __version__
 from ..io.files import atomic_write
-from ..select.choose import FIGURES, OBJECTIVES, SelectResult
+from ..select.choose import FIGURES, OBJECTIVES, NoneFeasible, SelectResult
 from .document import Block, write_data, write_pages
 from .outputs import csv_bytes, result_json
 from .plotting import new_figure, write_figures
 
-__all__ = ["write_select_report"]
+__all__ = ["write_rejection_report", "write_select_report"]
 
 
 def _number(value: float) -> str:
@@ -78,14 +83,14 @@ def _front_figure(result: SelectResult) -> MplFigure:
     return fig
 
 
-def _unit(result: SelectResult, key: str) -> str:
+def _unit(result: SelectResult | NoneFeasible, key: str) -> str:
     """The unit of a figure; the price's is the motor table's currency."""
     if key == "price":
         return str(result.inputs.get("currency") or "-")
     return FIGURES[key]
 
 
-def _table(result: SelectResult) -> bytes:
+def _table(result: SelectResult | NoneFeasible) -> bytes:
     keys = list(FIGURES)
     header = ["candidate", "designation", "nut", "preload class", "preload share [-]", "oil",
               "ratings", "motor", "feasible", "on front", "binding constraint",
@@ -145,3 +150,31 @@ def write_select_report(out: str | Path, result: SelectResult) -> list[Path]:
         written.append(path)
     blocks = _blocks(result, caption)
     return written + write_pages(folder, blocks, f"Choose the screw: {result.title}", images)
+
+
+def write_rejection_report(out: str | Path, result: NoneFeasible) -> list[Path]:
+    """The report of a selection no candidate passes, into ``out``; returns the paths written.
+
+    Every candidate with its failing criterion (the row of largest utilisation, or the
+    input error that rejected it), most nearly passing first, and the error's advice.
+    """
+    folder = Path(out)
+    (folder / "data").mkdir(parents=True, exist_ok=True)
+    written = write_data(folder, [("front", _table(result))])
+    path = folder / "data" / "select.json"
+    atomic_write(path, result_json(result).encode("utf-8"))
+    written.append(path)
+    title = f"Choose the screw: {result.title}"
+    rows = [[e.name, _number(e.figures["max_utilisation"]), e.binding] for e in result.rejected]
+    blocks = [
+        Block("h1", title),
+        Block("p", f"Computed by ballscrew {__version__} with the {result.model} model: "
+              f"{len(result.evaluated)} candidates, none feasible, so none is recommended."),
+        Block("p", result.reason),
+        Block("h2", "Each candidate and what fails it"),
+        Block("p", "The failing criterion is the check's row of largest utilisation (above "
+              "1 fails), or the input error that rejected the candidate; the candidates most "
+              "nearly passing come first. Every figure is in data/front.csv."),
+        Block("table", (["candidate", "largest utilisation", "failing criterion"], rows)),
+    ]  # fmt: skip
+    return written + write_pages(folder, blocks, title, {})

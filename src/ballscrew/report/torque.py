@@ -27,6 +27,9 @@ class TorqueRun:
 
     case: Case
     table: TorqueTable
+    readings: tuple[str, ...] = ()
+    """How the command's options were read where a text could be meant two ways (a feed
+    given as ``--speed`` read as the screw speed at the case's lead)."""
 
     @property
     def results(self) -> dict[str, FrictionResult]:
@@ -46,6 +49,7 @@ class TorqueRun:
     def provenance(self, command: Sequence[str] = ()) -> dict[str, Any]:
         """What the results were computed from (package, case, screw, lubricant, models)."""
         out = provenance(self.case, self.results, command)
+        out["readings"] = list(self.readings)
         out["plausibility"] = plausibility_record(self.case, self.findings)
         return out
 

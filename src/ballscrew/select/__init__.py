@@ -7,7 +7,16 @@ non-dominated feasible ones over the objectives picked, and one recommended
 by a stated rule (:mod:`.choose`).
 """
 
-from .choose import OBJECTIVES, Evaluated, SelectResult, evaluate, non_dominated, run_select
+from .choose import (
+    OBJECTIVES,
+    Evaluated,
+    NoFeasibleCandidateError,
+    NoneFeasible,
+    SelectResult,
+    evaluate,
+    non_dominated,
+    run_select,
+)
 from .pool import PRELOAD_CLASSES, Candidate, candidates
 
 __all__ = [
@@ -15,6 +24,8 @@ __all__ = [
     "PRELOAD_CLASSES",
     "Candidate",
     "Evaluated",
+    "NoFeasibleCandidateError",
+    "NoneFeasible",
     "SelectResult",
     "candidates",
     "evaluate",

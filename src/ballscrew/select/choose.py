@@ -59,6 +59,8 @@ __all__ = [
     "OBJECTIVES",
     "RECOMMEND_BELOW",
     "Evaluated",
+    "NoFeasibleCandidateError",
+    "NoneFeasible",
     "SelectResult",
     "evaluate",
     "non_dominated",
@@ -191,6 +193,57 @@ class SelectResult:
             attrs={"objectives": ", ".join(self.objectives), "recommended": names[
                 self.recommended], "reason": self.reason},
         )  # fmt: skip
+
+
+@dataclass(frozen=True)
+class NoneFeasible:
+    """A selection no candidate passes: every candidate evaluated and what fails each.
+
+    Carried by :class:`NoFeasibleCandidateError`, so that a report asked for can still
+    say why nothing passed (``ballscrew select --out``).
+    """
+
+    title: str
+    objectives: tuple[str, ...]
+    evaluated: tuple[Evaluated, ...]
+    model: str
+    reason: str
+    """The error's text: the closest candidates and what to change."""
+    inputs: dict[str, Any] = field(default_factory=dict)
+    front: tuple[int, ...] = ()
+    """Empty: no candidate is feasible (the same name as :attr:`SelectResult.front`)."""
+
+    @property
+    def rejected(self) -> list[Evaluated]:
+        """Every candidate, most nearly passing first (least largest utilisation)."""
+        return sorted(self.evaluated, key=lambda e: e.figures["max_utilisation"]
+                      if not math.isnan(e.figures["max_utilisation"]) else math.inf)  # fmt: skip
+
+    def as_dict(self) -> dict[str, Any]:
+        """The failed selection as plain values (the report's ``data/select.json``)."""
+        return {
+            "title": self.title,
+            "model": self.model,
+            "objectives": list(self.objectives),
+            "recommended": None,
+            "reason": self.reason,
+            "front": [],
+            "candidates": [e.as_dict() for e in self.evaluated],
+            "units": dict(FIGURES),
+            "inputs": self.inputs,
+        }
+
+
+class NoFeasibleCandidateError(BallScrewInputError):
+    """No candidate passes the duty; :attr:`result` holds every candidate and its failure."""
+
+    def __init__(self, field: str, value: Any, allowed: str, result: NoneFeasible) -> None:
+        super().__init__(field, value, allowed)
+        self.result = result
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        """Pickled with its parts and the result."""
+        return (type(self), (self.field, self.value, self.allowed, self.result))
 
 
 def _figures(check: AxisCheck, run: Any, model: str, seconds: float) -> dict[str, float]:
@@ -428,7 +481,8 @@ def run_select(
     ------
     BallScrewInputError
         For an unknown objective, an empty candidate set, or a duty no
-        candidate survives (naming the closest candidates and what fails them).
+        candidate survives (naming the closest candidates and what fails them): then a
+        :class:`NoFeasibleCandidateError`, whose ``result`` holds every candidate.
     """
     chosen = _check_objectives(objectives)
     for oil in oils:
@@ -479,16 +533,25 @@ def run_select(
     again([i for i, e in enumerate(evaluated) if any(
         abs(e.figures["max_utilisation"] - bound) <= NEAR * bound
         for bound in (1.0, RECOMMEND_BELOW))])  # fmt: skip
+    inputs = {"case": case.title, "model": model, "cycles": cycles, "temperature": temperature,
+              "run_time_s": run_time, "move": dict(move or {}), "objectives": list(chosen),
+              "diameter_m": list(diameter) if diameter else None,
+              "lead_m": list(lead) if lead else None, "makers": list(makers),
+              "preloads": list(preloads), "oils": list(oils), "sources": list(sources),
+              "nuts": list(nuts), "motors": [m.name for m in motors],
+              "currency": motor_currency or currency or None,
+              "rating_estimates": scatter_text() if any(c.estimated for c in found) else None,
+              "case_text": case.text}  # fmt: skip
     feasible = [i for i, e in enumerate(evaluated) if e.feasible]
     if not feasible:
-        ranked = sorted(evaluated, key=lambda e: e.figures["max_utilisation"]
-                        if not math.isnan(e.figures["max_utilisation"]) else math.inf)  # fmt: skip
-        closest = "; ".join(f"{e.name}: {e.binding}" for e in ranked[:3])
-        raise BallScrewInputError(
-            motion_field, f"a duty none of the {len(evaluated)} candidates passes",
-            f"a lighter duty, or other candidates (wider filters, other preload classes or "
-            f"oils); the closest to passing: {closest}",
-        )  # fmt: skip
+        failed = NoneFeasible(case.title, chosen, tuple(evaluated), model, "", inputs)
+        closest = "; ".join(f"{e.name}: {e.binding}" for e in failed.rejected[:3])
+        value = f"a duty none of the {len(evaluated)} candidates passes"
+        allowed = (f"a lighter duty, or other candidates (wider filters, other preload classes "
+                   f"or oils); the closest to passing: {closest}")  # fmt: skip
+        failed = dataclasses.replace(failed, reason=str(BallScrewInputError(
+            motion_field, value, allowed)))  # fmt: skip
+        raise NoFeasibleCandidateError(motion_field, value, allowed, failed)
     for o in chosen:
         key = OBJECTIVES[o][0]
         if all(math.isnan(evaluated[i].figures[key]) for i in feasible):
@@ -512,13 +575,4 @@ def run_select(
             break
         again(todo)
         feasible = [i for i, e in enumerate(evaluated) if e.feasible]
-    inputs = {"case": case.title, "model": model, "cycles": cycles, "temperature": temperature,
-              "run_time_s": run_time, "move": dict(move or {}), "objectives": list(chosen),
-              "diameter_m": list(diameter) if diameter else None,
-              "lead_m": list(lead) if lead else None, "makers": list(makers),
-              "preloads": list(preloads), "oils": list(oils), "sources": list(sources),
-              "nuts": list(nuts), "motors": [m.name for m in motors],
-              "currency": motor_currency or currency or None,
-              "rating_estimates": scatter_text() if any(c.estimated for c in found) else None,
-              "case_text": case.text}  # fmt: skip
     return SelectResult(case.title, chosen, tuple(evaluated), front, best, reason, model, inputs)

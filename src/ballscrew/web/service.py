@@ -31,7 +31,7 @@ from ..axis.motion import Profile, back_and_forth, parse_move
 from ..chain import FrictionResult, model_named, models, torque_table
 from ..errors import BallScrewInputError, BallScrewSpeedWarning, BallScrewValidityWarning
 from ..io.case import WIPER_PARAMETERS, Case
-from ..io.units import Reading, parse_range
+from ..io.units import Reading, parse_range, parse_speed_range
 from ..kinematics import rad_s_to_rpm
 from ..report.outputs import (
     INPUT_DIGITS,
@@ -100,7 +100,11 @@ def _operating_points(
         if not isinstance(value, str):
             raise BallScrewInputError(key, value, "text with a unit, e.g. '100, 1000 rpm'")
         check_points(key, value, limits)
-        arrays[key] = np.asarray(parse_range(key, value, unit, notes=read))
+        arrays[key] = np.asarray(
+            parse_speed_range(key, value, case.screw.lead, notes=read)
+            if key == "speed"
+            else parse_range(key, value, unit, notes=read)
+        )
     sizes = {key: a.size for key, a in arrays.items()}
     total = math.prod(sizes.values())
     if total > limits.points:
