@@ -578,3 +578,27 @@ def test_ball_train_scatter_is_the_spread_of_the_per_case_constants() -> None:
     assert lo == pytest.approx(BALL_TRAIN_SCATTER[0], abs=5e-5 + 1e-7)
     assert hi == pytest.approx(BALL_TRAIN_SCATTER[1], abs=5e-5 + 1e-7)
     assert lo < BALL_TRAIN_CONSTANT < hi
+
+
+def test_four_point_ball_train_is_the_same_for_either_direction_of_the_load() -> None:
+    # A 4-point nut is mirror-symmetric: reversing the axial load swaps its two contact
+    # pairs' loads, so every component, the ball train's included (one push per ball at
+    # the larger pair's load), is unchanged, to rounding; and the push is the loaded
+    # pair's, c_B Q_1 with Q_1 > Q_2 (not the relieved pair's, nor their sum).
+    four = reference_screw().replace(nut="single-4point")
+    kw = {"speed": [10 * RPM, 1000 * RPM], "temperature": 40.0}
+    push = friction_torque(four, OIL, axial_load=1500.0, **kw)  # type: ignore[arg-type]
+    pull = friction_torque(four, OIL, axial_load=-1500.0, **kw)  # type: ignore[arg-type]
+    for key in ("ball_ball", "recirculation", "sliding", "four_point"):
+        np.testing.assert_allclose(push.components[key], pull.components[key], rtol=1e-9)
+    loads = [float(c.load) for c in operating_state(four, OIL, speed=1.0, temperature=40.0,
+                                                    axial_load=-1500.0).contacts[::2]]  # fmt: skip
+    assert loads[0] > 1.5 * loads[1]
+    force = BALL_TRAIN_CONSTANT * loads[0]
+    turn = 1.0 / math.cos(four.contact_angle)
+    for i, rpm in enumerate((10.0, 1000.0)):
+        mu_bb = _ball_ball_coefficient(four, rpm, 40.0, force, turn=turn)
+        w = rpm * RPM
+        ball_speed = float(kinematics(four, w).ball_speed)
+        expected = four.balls_per_nut * mu_bb * force * turn * ball_speed * four.ball_diameter / w
+        assert float(pull.components["ball_ball"][i]) == pytest.approx(expected, rel=1e-9)

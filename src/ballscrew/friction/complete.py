@@ -826,8 +826,10 @@ def _ratio_train(
     ball_ball: FloatArray = np.zeros(shape)
     recirculation: FloatArray = np.zeros(shape)
     screw_side = [c for c in state.contacts if c.side == "screw"]
-    if screw.nut == "single-4point":  # one ball, one push: the larger pair's load
-        trains = [(screw_side[0], np.maximum(screw_side[0].load, screw_side[1].load))]
+    if screw.nut == "single-4point":
+        # One ball, one push, at the larger pair's load: family 1's, the loaded one
+        # (ballscrew.loads puts |F_a| on it).
+        trains = [(screw_side[0], screw_side[0].load)]
     else:  # a double nut's halves push their own trains
         trains = [(c, c.load) for c in screw_side]
     for c, load in trains:
