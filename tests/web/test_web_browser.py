@@ -321,3 +321,24 @@ def test_imperial_results_on_the_page_are_the_commands(
     wait_revision(again, 0)
     assert again.eval_on_selector("#units", "e => e.value") == "imperial"
     assert "lbf·in" in (again.text_content("#energy_table") or "")
+
+
+def test_a_case_files_output_units_chooses_the_pages(page: sync_api.Page, tmp_path: Path) -> None:
+    path = tmp_path / "imperial.toml"
+    path.write_text(DEFAULT_CASE + '\n[output]\nunits = "imperial"\n', encoding="utf-8")
+    rev = settle(page)
+    page.set_input_files("#upload", str(path))
+    wait_revision(page, rev)
+    settle(page)
+    assert page.eval_on_selector("#units", "e => e.value") == "imperial"
+    assert page.url.endswith("/?units=imperial")
+    assert "lbf·in" in (page.text_content("#budget_table") or "")
+    # The case file says imperial: the command prints it without a --units of its own.
+    assert "--units" not in (page.text_content("#commands") or "")
+    rev = revision(page)
+    page.select_option("#units", "si")  # the page's choice wins, as --units does
+    wait_revision(page, rev)
+    settle(page)
+    assert "/?" not in page.url
+    assert "--units si" in (page.text_content("#commands") or "")
+    assert "N·m" in (page.text_content("#budget_table") or "")
