@@ -282,3 +282,63 @@ def test_choose_a_screw_lists_the_recommendation_first_with_why(page: sync_api.P
     page.click("#select_run")
     page.locator("#select_summary", has_text="closest").wait_for(timeout=60_000)
     assert page.locator("#select_table tr").count() == 0
+
+
+def test_imperial_results_on_the_page_are_the_commands(
+    page: sync_api.Page, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # An American user: results in imperial, a load typed in pound-force with its unit.
+    rev = settle(page)
+    page.select_option("#units", "imperial")
+    rev = wait_revision(page, rev)
+    page.fill("#axial_load", "200 lbf")  # the unit typed overrides the list beside it
+    page.wait_for_selector("text=and 200 lbf")
+    settle(page)
+    assert page.url.endswith("/?units=imperial")  # kept in the address, to share
+    assert page.get_attribute("body", "data-units") == "imperial"
+    assert page.query_selector(".field.invalid") is None
+    assert "lead 0.3937 in" in (page.text_content("#summary") or "")  # 10 mm
+    caption = page.text_content("#budget_caption") or ""
+    assert caption.endswith("at 104 °F and 200 lbf"), caption  # 40 degC
+    labels = page.eval_on_selector_all("#chart_torque text.label", "e => e.map(x => x.textContent)")
+    assert "friction torque [lbf·in]" in labels
+    # The loss budget's total at the first speed against `ballscrew torque --units imperial`.
+    path = tmp_path / "case.toml"
+    path.write_text(download(page, "#download_toml"), encoding="utf-8")
+    code, out, err = run(["torque", "--case", str(path), "--model", "complete", "--speed",
+                          "10 rpm", "--units", "imperial", "--table", "full"], capsys)  # fmt: skip
+    assert code == 0, err
+    row = next(line for line in out.splitlines() if line.startswith("│ complete"))
+    cells = [c.strip() for c in row.strip("│").split("│")]
+    assert cells[3] == "200"  # axial load [lbf]
+    total = page.text_content("#budget_table tr.total td:nth-child(2)") or ""
+    assert total.endswith(" lbf·in"), total
+    # Both print 4 significant digits: each rounding is within 5e-4 of the value.
+    assert float(total.split()[0]) == pytest.approx(float(cells[4]), rel=1e-3)
+    # Opened again from its address, the page shows imperial from the start.
+    again = page.context.new_page()
+    again.goto(page.url)
+    wait_revision(again, 0)
+    assert again.eval_on_selector("#units", "e => e.value") == "imperial"
+    assert "lbf·in" in (again.text_content("#energy_table") or "")
+
+
+def test_a_case_files_output_units_chooses_the_pages(page: sync_api.Page, tmp_path: Path) -> None:
+    path = tmp_path / "imperial.toml"
+    path.write_text(DEFAULT_CASE + '\n[output]\nunits = "imperial"\n', encoding="utf-8")
+    rev = settle(page)
+    page.set_input_files("#upload", str(path))
+    wait_revision(page, rev)
+    settle(page)
+    assert page.eval_on_selector("#units", "e => e.value") == "imperial"
+    assert page.url.endswith("/?units=imperial")
+    assert "lbf·in" in (page.text_content("#budget_table") or "")
+    # The case file says imperial: the command prints it without a --units of its own.
+    assert "--units" not in (page.text_content("#commands") or "")
+    rev = revision(page)
+    page.select_option("#units", "si")  # the page's choice wins, as --units does
+    wait_revision(page, rev)
+    settle(page)
+    assert "/?" not in page.url
+    assert "--units si" in (page.text_content("#commands") or "")
+    assert "N·m" in (page.text_content("#budget_table") or "")

@@ -31,9 +31,11 @@ __all__ = [
     "column_label",
     "display_row",
     "label_text",
+    "shown",
     "system_note",
     "to_display",
     "unit_system",
+    "unit_text",
 ]
 
 SYSTEMS = ("si", "imperial")
@@ -196,6 +198,50 @@ def label_text(label: str, system: str) -> str:
         return f"{text(value)} {target} ({written})"
 
     return _BAKED_LENGTH.sub(shown, label)
+
+
+_UNIT_TEXT = (
+    ("delta_degF", "°F"),
+    ("delta_degC", "K"),
+    ("degF", "°F"),
+    ("degC", "°C"),
+    ("**", "^"),
+    ("^2", "²"),
+    ("^3", "³"),
+    ("*", "·"),
+    ("um", "µm"),
+)
+"""How a unit the package writes ('lbf*in', 'degF') reads on a page ('lbf·in', '°F')."""
+
+
+def unit_text(unit: str) -> str:
+    """``unit`` as a page prints it: a middle dot for a product, degree signs, superscripts.
+
+    Typography only: the unit is the same one (no number changes).
+
+    Examples
+    --------
+    >>> unit_text("lbf*in"), unit_text("degF"), unit_text("m/s**2"), unit_text("um")
+    ('lbf·in', '°F', 'm/s²', 'µm')
+    """
+    for written, printed in _UNIT_TEXT:
+        unit = unit.replace(written, printed)
+    return unit
+
+
+def shown(value: Any, unit: str, system: str) -> tuple[Any, str]:
+    """:func:`to_display` with the unit as a page prints it (:func:`unit_text`).
+
+    Examples
+    --------
+    >>> value, unit = shown(1.0, "N*m", "imperial")
+    >>> round(value, 4), unit
+    (8.8507, 'lbf·in')
+    >>> shown(2.5, "N*m", "si")
+    (2.5, 'N·m')
+    """
+    value, target = to_display(value, unit, system)
+    return value, unit_text(target)
 
 
 def system_note(system: str) -> str:

@@ -5,6 +5,8 @@ Built on Starlette (an ASGI toolkit) and served by uvicorn
 
 ``GET /``
     The page (server-rendered HTML; a small script calls the API as inputs change).
+    ``?units=imperial`` (or ``si``) opens it showing results in that unit system
+    (:mod:`ballscrew.io.display`); the page keeps its choice in its address.
 ``GET /static/{name}``
     The page's script and style, held in memory: no path from a request
     reaches the file system.
@@ -54,7 +56,9 @@ from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
 from .. import lubricants
 from .._version import __version__
+from ..errors import BallScrewInputError
 from ..io.designation import catalog_screws
+from ..io.display import SYSTEMS, unit_system
 from . import program, select, service
 from .service import LIMITS, ApiError, Limits
 from .worker import WorkerPool
@@ -138,8 +142,9 @@ def _static() -> dict[str, bytes]:
     return {name: folder.joinpath(name).read_bytes() for name in _STATIC_TYPES}
 
 
-def _page_context() -> dict[str, Any]:
+def _page_context(system: str) -> dict[str, Any]:
     return {
+        "units": system,
         "version": __version__,
         "screws": [s.name for s in catalog_screws()],
         "lubricants": lubricants.names(),
@@ -151,24 +156,29 @@ def _page_context() -> dict[str, Any]:
     }
 
 
-def _page() -> bytes:
-    """The page, rendered once from its template."""
+def _pages() -> dict[str, bytes]:
+    """The page, rendered once from its template for each unit system it can show."""
     templates = jinja2.Environment(
         loader=jinja2.PackageLoader("ballscrew.web", "templates"),
         autoescape=True,
         undefined=jinja2.StrictUndefined,
     )
-    return templates.get_template("index.html").render(**_page_context()).encode("utf-8")
+    page = templates.get_template("index.html")
+    return {system: page.render(**_page_context(system)).encode("utf-8") for system in SYSTEMS}
 
 
 _Endpoint = Callable[[Request], Awaitable[Response]]
 
 
-def _index(page: bytes) -> _Endpoint:
-    """``GET /``: the page."""
+def _index(pages: dict[str, bytes]) -> _Endpoint:
+    """``GET /``: the page, in the unit system ``?units=`` names (400 for another)."""
 
     async def index(request: Request) -> Response:
-        return HTMLResponse(page, headers={"cache-control": "no-cache"})
+        try:
+            system = unit_system("units", request.query_params.get("units"))
+        except BallScrewInputError as exc:
+            return HTMLResponse(_message_page(str(exc)), status_code=400)
+        return HTMLResponse(pages[system], headers={"cache-control": "no-cache"})
 
     return index
 
@@ -287,7 +297,7 @@ def create_app(
         debug=False,
         lifespan=_lifespan(compute),
         routes=[
-            Route("/", _index(_page()), methods=["GET"]),
+            Route("/", _index(_pages()), methods=["GET"]),
             Route("/static/{name}", _static_file(_static()), methods=["GET"]),
             Route("/api/torque", _json_route("torque", limits, compute), methods=["POST"]),
             Route("/api/evaluate", _json_route("evaluate", limits, compute), methods=["POST"]),

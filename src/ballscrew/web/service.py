@@ -31,6 +31,7 @@ from ..axis.motion import Profile, back_and_forth, parse_move
 from ..chain import FrictionResult, model_named, models, torque_table
 from ..errors import BallScrewInputError, BallScrewSpeedWarning, BallScrewValidityWarning
 from ..io.case import WIPER_PARAMETERS, Case
+from ..io.display import label_text, shown, system_note, unit_system
 from ..io.units import Reading, parse_range, parse_speed_range
 from ..kinematics import rad_s_to_rpm
 from ..report.outputs import (
@@ -59,6 +60,7 @@ __all__ = [
     "ApiError",
     "Limits",
     "case_toml",
+    "display",
     "evaluate",
     "load_case",
     "model_choices",
@@ -225,13 +227,14 @@ _ENERGY_SHOWN = (
 """The figures of the cycle (:meth:`ballscrew.axis.CycleResult.as_dict`) the page shows."""
 
 
-def _energy(case: Case, move: Any, limits: Limits) -> dict[str, Any]:
+def _energy(case: Case, move: Any, limits: Limits, flag: str = "") -> dict[str, Any]:
     """The energy and the check of one back-and-forth move, complete model.
 
     ``ballscrew energy --move`` and ``ballscrew check --move``: one
     :func:`~ballscrew.axis.run_energy` (the cycle computed once), whose result
     the check reads. A heat balance that cannot be solved is the check's
-    verdict, not an error of the page: the energy is still shown.
+    verdict, not an error of the page: the energy is still shown. ``flag``: the
+    commands' ``--units`` flag for the page's unit system ("" when the case's).
     """
     text, m, profile = _move_profile(move, limits)
     temperature = float(case.temperature.flat[0])
@@ -252,20 +255,20 @@ def _energy(case: Case, move: Any, limits: Limits) -> dict[str, Any]:
             "warnings": [str(x) for x in run.findings] + list(cycle.speed_warnings),
             # The page shows no temperature: the heat balance's notes do not apply.
             "notes": [n for n in run.assumptions if "machine_resistance" not in n],
-            "command": f'ballscrew energy --case case.toml --move "{text}"',
+            "command": f'ballscrew energy --case case.toml --move "{text}"{flag}',
         }
     )
-    result["check"] = _check(run, text)
+    result["check"] = _check(run, text, flag)
     return result
 
 
-def _check(run: EnergyRun, text: str) -> dict[str, Any]:
+def _check(run: EnergyRun, text: str, flag: str = "") -> dict[str, Any]:
     """``ballscrew check`` of the same move (complete model): the verdict table's rows.
 
     An input the check needs and the case lacks is not an error of the page: the
     check says what it is, as its verdict, and the energy is still shown.
     """
-    command = f'ballscrew check --case case.toml --move "{text}"'
+    command = f'ballscrew check --case case.toml --move "{text}"{flag}'
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", BallScrewSpeedWarning)
@@ -334,12 +337,95 @@ def _screw_summary(case: Case) -> dict[str, Any]:
     }
 
 
+_SHOWN_UNITS = {"torque": "N*m", "force": "N", "length": "mm", "temperature": "degC",
+                "power": "W", "speed": "rpm"}  # fmt: skip
+"""The units of the figures the page shows, as computed (SI; lengths of the screw in mm)."""
+
+
+def _shown(values: Any, unit: str, system: str) -> Any:
+    """Figures in ``unit`` as the page shows them in ``system`` (null stays null)."""
+    if values is None:
+        return None
+    array = np.asarray(values, dtype=float)  # null (None) becomes NaN, and null again
+    converted = np.asarray(shown(array, unit, system)[0], dtype=float)
+    return _floats(converted) if array.ndim else _floats([converted])[0]
+
+
+def display(answer: Mapping[str, Any], system: str) -> dict[str, Any]:
+    """The figures of an answer of :func:`evaluate` as the page shows them in ``system``.
+
+    Converted by :func:`ballscrew.io.display.shown` (the command line's
+    ``--units``); the answer itself stays SI. Efficiencies, speeds (rpm), powers
+    (W) and energies (J) are the same in every system, as the command line prints
+    them, and the page reads them from the answer.
+    """
+
+    def at(values: Any, kind: str) -> Any:
+        return _shown(values, _SHOWN_UNITS[kind], system)
+
+    curves = [
+        {"temperature": at(c["temperature_C"], "temperature"),
+         "axial_load": at(c["axial_load_N"], "force"), "torque": at(c["torque_Nm"], "torque")}
+        for c in answer["curves"]
+    ]  # fmt: skip
+    budget = answer["budget"]
+    if budget is not None:
+        budget = {
+            "temperature": at(budget["temperature_C"], "temperature"),
+            "axial_load": at(budget["axial_load_N"], "force"),
+            "components": {k: at(v, "torque") for k, v in budget["components"].items()},
+        }
+    s = answer["screw"]
+    screw = {
+        "pitch_diameter": at(s["pitch_diameter_mm"], "length"),
+        "lead": at(s["lead_mm"], "length"),
+        "ball_diameter": at(s["ball_diameter_mm"], "length"),
+        "preload": at(s["preload_N"], "force"),
+    }
+    energy = answer["energy"]
+    shown_energy = None
+    criteria = None
+    if energy is not None:
+        shown_energy = {
+            "temperature": at(energy["temperature_C"], "temperature"),
+            "peak_motor_torque": at(energy["peak_motor_torque_Nm"], "torque"),
+            "rms_motor_torque": at(energy["rms_motor_torque_Nm"], "torque"),
+        }
+        criteria = [_criterion(c, system) for c in energy["check"].get("criteria", [])]
+    return {
+        "system": system,
+        "note": system_note(system),
+        "units": {kind: shown(1.0, unit, system)[1] for kind, unit in _SHOWN_UNITS.items()},
+        "curves": curves,
+        "budget": budget,
+        "screw": screw,
+        "energy": shown_energy,
+        "check": criteria,
+    }
+
+
+def _criterion(row: Mapping[str, Any], system: str) -> dict[str, Any]:
+    """A row of the check as ``ballscrew check --units`` prints it: name, value, limit, unit."""
+    value, unit = shown(_nan(row["value"]), row["unit"], system)
+    limit, _ = shown(_nan(row["limit"]), row["unit"], system)
+    return {"name": label_text(row["name"], system), "value": _floats([value])[0],
+            "limit": _floats([limit])[0], "unit": unit}  # fmt: skip
+
+
+def _nan(value: float | None) -> float:
+    return math.nan if value is None else float(value)
+
+
 def evaluate(payload: Mapping[str, Any], limits: Limits = LIMITS) -> dict[str, Any]:
     """``POST /api/evaluate``: everything the page shows, and the files it offers.
 
     ``payload``: ``case`` (the fields of a case file), ``models`` (names; the
     catalogue rule is always added as the reference) and optionally ``move``
-    (``stroke``, ``feed``, ``acceleration`` as text with units).
+    (``stroke``, ``feed``, ``acceleration`` as text with units) and ``units``
+    (``"si"`` or ``"imperial"``: the system the page shows results in, as the
+    command line's ``--units``; default the case's ``[output] units``). The
+    answer's figures are SI, their units in their names; ``display`` holds
+    those the page shows, in the system asked for (:func:`display`).
     """
     start = time.perf_counter()
     fields = payload.get("case")
@@ -347,19 +433,25 @@ def evaluate(payload: Mapping[str, Any], limits: Limits = LIMITS) -> dict[str, A
         if not isinstance(fields, Mapping):
             raise BallScrewInputError("case", fields, "the fields of a case file (an object)")
         names = _models(payload.get("models"), limits)
+        system = unit_system("units", payload.get("units"), "si")
         case = load_case(fields, limits)
+        if payload.get("units") is None:
+            system = case.output_units
+        # The commands print what the page shows: --units when the case file says otherwise.
+        flag = "" if system == case.output_units else f" --units {system}"
         w, t, f = _operating_points(case, {}, limits)
         results, plausible = _quiet_run(case, names, w, t, f)
         move = payload.get("move")
-        energy = None if move is None else _energy(case, move, limits)
+        energy = None if move is None else _energy(case, move, limits, flag)
     except BallScrewInputError as exc:
         raise ApiError.from_input(exc) from None
     flags = " ".join(f"--model {n}" for n in names)
     rows = result_rows(results)
-    command = f"ballscrew torque --case case.toml {flags} --csv results.csv"
+    command = f"ballscrew torque --case case.toml {flags} --csv results.csv{flag}"
     meta = provenance(case, results, command.split())
+    meta["display_units"] = system_note(system)
     chosen = names[0]
-    return {
+    answer: dict[str, Any] = {
         "title": case.title,
         "screw": _screw_summary(case),
         "models": names,
@@ -372,8 +464,11 @@ def evaluate(payload: Mapping[str, Any], limits: Limits = LIMITS) -> dict[str, A
         "provenance": json_text([], meta),
         "command": command,
         "points": int(results[chosen].total.size),
-        "compute_ms": (time.perf_counter() - start) * 1e3,
+        "units": system,
     }
+    answer["display"] = display(answer, system)
+    answer["compute_ms"] = (time.perf_counter() - start) * 1e3
+    return answer
 
 
 def model_choices() -> list[dict[str, str]]:

@@ -37,10 +37,16 @@
 
   // ---------------------------------------------------------------- the request
   const text = (id) => $(id).value.trim();
-  // A quantity as the case file writes it: the number as typed and the unit chosen.
+  // A quantity as the case file writes it: the number as typed and the unit chosen, or
+  // the text as typed when it carries its own unit ("1/4 in", "600 in/min", "200 lbf").
   // Nothing typed is sent as "" so that the server names the field, never a bare unit.
-  const qty = (id, unitId) =>
-    (text(id) === "" ? "" : `${text(id)} ${$(unitId || `${id}_unit`).value}`.trim());
+  const PLAIN_NUMBER = /^[-+0-9.eE\s\/]*$/;
+  const qty = (id, unitId) => {
+    const typed = text(id);
+    if (typed === "") return "";
+    if (!PLAIN_NUMBER.test(typed)) return typed;
+    return `${typed} ${$(unitId || `${id}_unit`).value}`.trim();
+  };
   const screwMode = () => document.querySelector('input[name="screw_mode"]:checked').value;
   const clone = (x) => JSON.parse(JSON.stringify(x || {}));
   const isTable = (v) => v !== null && typeof v === "object" && !Array.isArray(v);
@@ -101,7 +107,7 @@
 
   function buildRequest() {
     const models = [...document.querySelectorAll('input[name="model"]:checked')].map((e) => e.value);
-    const request = { case: buildCase(), models };
+    const request = { case: buildCase(), models, units: $("units").value };
     if ($("move_on").checked) {
       request.move = { stroke: qty("stroke"), feed: qty("feed"), acceleration: qty("acceleration") };
     }
@@ -286,30 +292,38 @@
   }
 
   // ---------------------------------------------------------------- results
-  function curveName(curve, data) {
+  // The figures shown come converted from the server (data.display: the command line's
+  // --units); efficiencies, speeds, powers and energies are the same in every system.
+  function curveName(curve, i, data) {
+    const shown = data.display.curves;
+    const u = data.display.units;
     const temps = new Set(data.curves.map((c) => c.temperature_C));
     const loads = new Set(data.curves.map((c) => c.axial_load_N));
     let name = curve.model === "catalog" ? "catalog (reference)" : curve.model;
-    if (temps.size > 1) name += `, ${fmt(curve.temperature_C)} °C`;
-    if (loads.size > 1) name += `, ${fmt(curve.axial_load_N)} N`;
+    if (temps.size > 1) name += `, ${fmt(shown[i].temperature)} ${u.temperature}`;
+    if (loads.size > 1) name += `, ${fmt(shown[i].axial_load)} ${u.force}`;
     return name;
   }
 
   function render(data) {
-    const lines = (key) => data.curves.map((c) => ({
-      name: curveName(c, data), color: MODEL_COLORS[c.model] || "#555", dash: c.model === "catalog",
-      x: c.speed_rpm, y: c[key],
+    const d = data.display;
+    const u = d.units;
+    const lines = (get) => data.curves.map((c, i) => ({
+      name: curveName(c, i, data), color: MODEL_COLORS[c.model] || "#555", dash: c.model === "catalog",
+      x: c.speed_rpm, y: get(c, i),
     }));
-    drawChart("chart_torque", lines("torque_Nm"), "screw speed [rpm]", "friction torque [N·m]");
-    drawChart("chart_efficiency", lines("efficiency").map((s) => ({ ...s, y: s.y.map((v) => (v === null ? null : 100 * v)) })),
+    document.body.dataset.units = d.system;
+    drawChart("chart_torque", lines((c, i) => d.curves[i].torque), "screw speed [rpm]", `friction torque [${u.torque}]`);
+    drawChart("chart_efficiency", lines((c) => c.efficiency).map((s) => ({ ...s, y: s.y.map((v) => (v === null ? null : 100 * v)) })),
       "screw speed [rpm]", "efficiency [%]");
-    drawChart("chart_power", lines("power_W"), "screw speed [rpm]", "power loss [W]");
-    renderBudget(data.budget);
+    drawChart("chart_power", lines((c) => c.power_W), "screw speed [rpm]", "power loss [W]");
+    renderBudget(data.budget, d);
     const s = data.screw;
+    const ds = d.screw;
     $("summary").textContent =
-      `${data.title}: ball centre diameter ${fmt(s.pitch_diameter_mm)} mm, lead ${fmt(s.lead_mm)} mm, ` +
-      `balls ${fmt(s.ball_diameter_mm)} mm at ${fmt(s.contact_angle_deg)}°, ${s.nut} nut, preload ` +
-      `${fmt(s.preload_N)} N, ${s.loaded_balls} loaded balls per nut; ${s.lubricant}.` +
+      `${data.title}: ball centre diameter ${fmt(ds.pitch_diameter)} ${u.length}, lead ${fmt(ds.lead)} ${u.length}, ` +
+      `balls ${fmt(ds.ball_diameter)} ${u.length} at ${fmt(s.contact_angle_deg)}°, ${s.nut} nut, preload ` +
+      `${fmt(ds.preload)} ${u.force}, ${s.loaded_balls} loaded balls per nut; ${s.lubricant}.` +
       (s.source ? ` Source: ${s.source}.` : "") +
       (s.assumptions.length ? ` Assumed: ${s.assumptions.join("; ")}.` : "");
     const warnings = [
@@ -320,7 +334,7 @@
     $("warnings").innerHTML = warnings.length
       ? warnings.map((w) => `<li class="${w.startsWith("warning") ? "warn" : "note"}">${esc(w)}</li>`).join("")
       : "<li>Every input is inside the validity ranges of the models and correlations used.</li>";
-    renderEnergy(data.energy);
+    renderEnergy(data.energy, d);
     $("commands").textContent = [
       "# save the case file (button above) as case.toml, then",
       data.command,
@@ -330,55 +344,60 @@
     for (const id of ["download_csv", "download_toml", "download_meta"]) $(id).disabled = false;
   }
 
-  function renderBudget(budget) {
+  function renderBudget(budget, d) {
     if (!budget) {
       $("budget_figure").hidden = true;
       return;
     }
     $("budget_figure").hidden = false;
+    const u = d.units;
+    const parts = d.budget.components;
     $("budget_caption").textContent =
-      `Loss budget of the ${budget.model} model at ${fmt(budget.temperature_C)} °C and ${fmt(budget.axial_load_N)} N`;
-    const names = Object.keys(budget.components).filter((k) => budget.components[k].some((v) => v > 0));
+      `Loss budget of the ${budget.model} model at ${fmt(d.budget.temperature)} ${u.temperature} and ${fmt(d.budget.axial_load)} ${u.force}`;
+    const names = Object.keys(parts).filter((k) => parts[k].some((v) => v > 0));
     const series = names.map((k, i) => ({
-      name: PART_NAMES[k] || k, color: PART_COLORS[i % PART_COLORS.length], x: budget.speed_rpm, y: budget.components[k],
+      name: PART_NAMES[k] || k, color: PART_COLORS[i % PART_COLORS.length], x: budget.speed_rpm, y: parts[k],
     }));
-    drawChart("chart_budget", series, "screw speed [rpm]", "torque [N·m]", true);
+    drawChart("chart_budget", series, "screw speed [rpm]", `torque [${u.torque}]`, true);
     const n = budget.speed_rpm.length;
     const at = [...new Set([0, Math.floor((n - 1) / 2), n - 1])];
-    const total = at.map((i) => names.reduce((sum, k) => sum + (budget.components[k][i] || 0), 0));
+    const total = at.map((i) => names.reduce((sum, k) => sum + (parts[k][i] || 0), 0));
     const head = `<tr><th>mechanism</th>${at.map((i) => `<th>${fmt(budget.speed_rpm[i])} rpm</th>`).join("")}</tr>`;
     const rows = names.map((k) => `<tr><td>${esc(PART_NAMES[k] || k)}</td>${at.map((i, j) => {
-      const v = budget.components[k][i] || 0;
-      return `<td>${fmt(v)} N·m <span class="share">${total[j] > 0 ? ((100 * v) / total[j]).toFixed(0) : 0} %</span></td>`;
+      const v = parts[k][i] || 0;
+      return `<td>${fmt(v)} ${esc(u.torque)} <span class="share">${total[j] > 0 ? ((100 * v) / total[j]).toFixed(0) : 0} %</span></td>`;
     }).join("")}</tr>`);
-    const sum = `<tr class="total"><td>total</td>${total.map((v) => `<td>${fmt(v)} N·m</td>`).join("")}</tr>`;
+    const sum = `<tr class="total"><td>total</td>${total.map((v) => `<td>${fmt(v)} ${esc(u.torque)}</td>`).join("")}</tr>`;
     $("budget_table").innerHTML = `<thead>${head}</thead><tbody>${rows.join("")}${sum}</tbody>`;
   }
 
-  function renderEnergy(e) {
+  function renderEnergy(e, d) {
     $("energy_section").hidden = !e;
     if (!e) return;
+    const u = d.units;
+    const de = d.energy;
     const eff = (v) => {
       if (v === null) return "none (no axial load)";
       return v <= 0 ? `${fmt(100 * v)} % (the load cannot back-drive the screw at this load)` : `${fmt(100 * v)} %`;
     };
     const rows = [
-      ["move", `${e.move}, out and back at ${fmt(e.temperature_C)} °C`],
+      ["move", `${e.move}, out and back at ${fmt(de.temperature)} ${u.temperature}`],
       ["duration", `${fmt(e.duration_s)} s`],
       ["friction energy of the screw", `${fmt(e.friction_energy_J)} J (out ${fmt(e.friction_energy_out_J)} J, back ${fmt(e.friction_energy_back_J)} J)`],
       ["the same by the catalogue rule", `${fmt(e.constant_efficiency_energy_J)} J`],
       ["support bearings", `${fmt(e.bearing_energy_J)} J`],
       ["work on the load", `${fmt(e.load_work_J)} J`],
-      ["peak motor torque", `${fmt(e.peak_motor_torque_Nm)} N·m`],
-      ["RMS motor torque", `${fmt(e.rms_motor_torque_Nm)} N·m`],
+      ["peak motor torque", `${fmt(de.peak_motor_torque)} ${u.torque}`],
+      ["RMS motor torque", `${fmt(de.rms_motor_torque)} ${u.torque}`],
       ["efficiency at the working point", `${eff(e.forward_efficiency)} forward, ${eff(e.reverse_efficiency)} back-driving`],
     ];
     $("energy_table").innerHTML = rows.map(([k, v]) => `<tr><th>${esc(k)}</th><td>${esc(v)}</td></tr>`).join("");
-    renderCheck(e.check);
+    renderCheck(e.check, d.check);
   }
 
   // The axis check of the same move: one row per criterion, as `ballscrew check` prints it.
-  function renderCheck(c) {
+  // Each row's name, value, limit and unit as shown (d: data.display.check, same order).
+  function renderCheck(c, d) {
     $("check_section").hidden = !c;
     if (!c) return;
     const num = (v) => (v === null || v === undefined ? "-" : fmt(v));
@@ -391,11 +410,12 @@
     $("check_verdict").textContent = `verdict: ${c.verdict}${missing}`;
     const head = "<thead><tr><th>criterion</th><th>value</th><th>limit</th><th>unit</th><th>use</th><th>use, 95 %</th><th>verdict</th><th>P(NOT OK)</th><th>95 % confidence</th><th>what to change</th></tr></thead>";
     const pct = (v) => `${Math.round(100 * v)} %`;
-    const rows = c.criteria.map((r) => {
+    const rows = c.criteria.map((r, i) => {
+      const shown = d[i];
       const use = r.utilisation === null ? "-" : pct(r.utilisation);
       const spread = r.utilisation_95 ? `${pct(r.utilisation_95[0])} to ${pct(r.utilisation_95[1])}` : "-";
       const p = r.p_not_ok === null || r.p_not_ok === undefined ? "-" : pct(r.p_not_ok);
-      return `<tr class="verdict" data-verdict="${esc(r.verdict)}"><th title="${esc(r.source)}">${esc(r.name)}</th><td>${num(r.value)}</td><td>${num(r.limit)}</td><td>${esc(r.unit)}</td><td>${use}</td><td>${spread}</td><td>${esc(r.verdict)}</td><td>${p}</td><td>${esc(r.guarded_verdict ?? "-")}</td><td>${esc(r.advice)}</td></tr>`;
+      return `<tr class="verdict" data-verdict="${esc(r.verdict)}"><th title="${esc(r.source)}">${esc(shown.name)}</th><td>${num(shown.value)}</td><td>${num(shown.limit)}</td><td>${esc(shown.unit)}</td><td>${use}</td><td>${spread}</td><td>${esc(r.verdict)}</td><td>${p}</td><td>${esc(r.guarded_verdict ?? "-")}</td><td>${esc(r.advice)}</td></tr>`;
     });
     const assumed = c.assumptions.map((a) => `<tr><td colspan="10" class="assumed">assumed: ${esc(a)}</td></tr>`);
     $("check_table").innerHTML = `${head}<tbody>${rows.join("")}${assumed.join("")}</tbody>`;
@@ -495,6 +515,12 @@
       if (/,|\.\./.test(v)) notes.push(`the page computes one ${k.replace("_", " ")}: the first of ${v}`);
       setQty(k, v);
     }
+    const output = isTable(fields.output) ? fields.output : {};
+    const system = String(unwrap(output.units) ?? "").toLowerCase();
+    if ([...$("units").options].some((o) => o.value === system)) {
+      $("units").value = system; // the file's [output] units, as the command line takes it
+      keepUnitsInAddress();
+    }
     const axis = isTable(fields.axis) ? fields.axis : {};
     setQty("moving_mass", axis.moving_mass ?? FILE_DEFAULTS.moving_mass);
     const formKeys = ["designation", ...Object.keys(PRELOAD_UNITS), "dynamic_load_rating",
@@ -547,6 +573,15 @@
     a.click();
     a.remove();
     setTimeout(() => URL.revokeObjectURL(url), 10000);
+  }
+
+  // ---------------------------------------------------------------- the page's address
+  // The unit system shown is kept in the address (?units=imperial), to bookmark or share.
+  function keepUnitsInAddress() {
+    const url = new URL(window.location.href);
+    if ($("units").value === "si") url.searchParams.delete("units");
+    else url.searchParams.set("units", $("units").value);
+    window.history.replaceState(null, "", url);
   }
 
   // ---------------------------------------------------------------- wiring
@@ -679,6 +714,7 @@
         return;
       }
       if (ev.target.id === "preload_kind") setPreloadKind(ev.target.value, false);
+      if (ev.target.id === "units") keepUnitsInAddress();
       syncVisibility();
       schedule();
     });
