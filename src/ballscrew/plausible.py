@@ -451,6 +451,12 @@ def check_span(
              f"frequency of {warned:g} Hz", SPAN_SOURCE)  # fmt: skip
 
 
+_SLIP = "; a feed in m/s meant m/min?"
+_SLIP_FACTOR = 10.0
+"""A feed past the d·n limit by this factor is asked whether m/s was typed for m/min (a
+factor 60); a feed a few per cent past it is a design choice, and asked nothing."""
+
+
 def check_feed(
     field: str, text: str, feed: float, lead: float, pitch_diameter: float, dn_limit: float,
     max_speed: float, *, warn_above: bool = True,
@@ -478,7 +484,7 @@ def check_feed(
              f"at most {most:.4g} m/min, the feed at the nut's d·n limit {dn_limit:,.0f} mm·rpm "
              f"with lead {lead * 1e3:g} mm", "the axis' d·n limit (axis.dn_limit, the nut's "
              "catalogue: about 70 000 for external returns, up to 160 000 for high-speed "
-             "nuts); a feed in m/s meant m/min?")  # fmt: skip
+             f"nuts){_SLIP if dn > _SLIP_FACTOR * dn_limit else ''}")  # fmt: skip
 
 
 AXIS_RANGES: dict[str, TypicalRange] = {

@@ -595,6 +595,48 @@ def _typed(raw: Any) -> str:
     return str(raw.value if isinstance(raw, Assumed) else raw)
 
 
+def _as_typed(
+    exc: BallScrewInputError, section: str, given: Any, units: Mapping[str, str]
+) -> BallScrewInputError:
+    """``exc`` named as the file names it (``screw.ball_diameter``), its value as typed.
+
+    A library class refuses the number in SI (``0.00635``); the file's reader names
+    the text the file gave (``'1/4 in'``), or, for a value the file did not give (a
+    designation's), the SI number with its unit.
+    """
+    field = exc.field if exc.field.startswith(section) else f"{section}.{exc.field}"
+    name = field.removeprefix(f"{section}.")
+    value = exc.value
+    if isinstance(value, (int, float, np.floating)) and not isinstance(value, bool):
+        raw = getattr(given, name, None)
+        unit = units.get(name, "")
+        value = _typed(raw) if raw is not None else f"{float(value):g} {unit}".rstrip()
+    return BallScrewInputError(field, value, exc.allowed)
+
+
+_NON_NEGATIVE = ("moving_mass", "screw_inertia", "coupling_inertia", "motor_inertia", "nut_mass")
+"""``[axis]`` keys that may be 0; every other number of ``[axis]`` but the incline and the
+ambient temperature must be above 0 (what :class:`ballscrew.axis.energy.Axis` and the
+thermal node refuse, refused here with the value as typed)."""
+
+
+def _axis_signs(a: AxisSection, values: Mapping[str, Any]) -> None:
+    """Refuse a negative (or zero) ``[axis]`` number, naming it as the file typed it."""
+    units = dict(_AXIS_UNITS + _THERMAL_UNITS)
+    for name, value in values.items():
+        if name in ("incline", "ambient") or not isinstance(value, float):
+            continue
+        low = name in _NON_NEGATIVE
+        if not (math.isfinite(value) and (value >= 0.0 if low else value > 0.0)):
+            unit = units.get(name, "")
+            raise BallScrewInputError(
+                f"axis.{name}", _typed(getattr(a, name)),
+                f"{'0 or more' if low else 'more than 0'} (read as {value:g} {unit})".replace(
+                    " )", ")"
+                ),
+            )  # fmt: skip
+
+
 def _axis_plausible(
     a: AxisSection, screw: BallScrew, static_rating: float, axis: dict[str, Any],
     thermal: dict[str, float],
@@ -607,6 +649,7 @@ def _axis_plausible(
     d·n limit; a screw shorter than its span names both, and blames the span when its
     shaft's bending frequency is the implausible one.
     """
+    _axis_signs(a, {**axis, **thermal})
     for name in AXIS_RANGES:
         if name in axis:
             check_axis_property(f"axis.{name}", axis[name], name)
@@ -863,12 +906,12 @@ def _screw(
     try:
         screw = BallScrew(preload=0.0, **geometry)
     except BallScrewInputError as exc:
-        raise BallScrewInputError(f"screw.{exc.field}", exc.value, exc.allowed) from None
+        raise _as_typed(exc, "screw", s, SCREW_UNITS) from None
     preload = _preload(s, si, screw, rating)
     try:
         screw = screw.replace(preload=preload)
     except BallScrewInputError as exc:
-        raise BallScrewInputError(f"screw.{exc.field}", exc.value, exc.allowed) from None
+        raise _as_typed(exc, "screw", s, SCREW_UNITS) from None
     return screw, origin, ratings_of(screw)
 
 
@@ -1042,8 +1085,7 @@ def _lubricant(section: LubricantSection, notes: list[Assumption]) -> Lubricant:
             )
         return lubricants.get(name).replace(**given)
     except BallScrewInputError as exc:
-        field = exc.field if exc.field.startswith("lubricant") else f"lubricant.{exc.field}"
-        raise BallScrewInputError(field, exc.value, exc.allowed) from None
+        raise _as_typed(exc, "lubricant", section, LUBRICANT_UNITS) from None
 
 
 def default_case_path() -> Path:

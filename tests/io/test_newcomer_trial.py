@@ -1,0 +1,125 @@
+"""A demanding newcomer's trial of what changed since 0.3.0: the rough edges found and mended.
+
+1. a refusal of a case file's value named the SI number the library saw ('0.00635',
+   '-0.3') rather than the text the file gave ('1/4 in', '-300 mm/s');
+2. a plausibility warning read "lies outside at most 14 m/min", and asked whether a feed
+   a few per cent past the nut's d·n limit was typed in m/s for m/min.
+"""
+
+from __future__ import annotations
+
+import warnings
+from pathlib import Path
+
+import pytest
+
+from ballscrew.errors import BallScrewInputError, BallScrewPlausibilityWarning
+from ballscrew.io.case import parse_case
+from ballscrew.plausible import check_feed
+from cli_runner import run
+from shared import ROOT
+
+XY = (ROOT / "examples" / "xy_table_32x10.toml").read_text(encoding="utf-8")
+
+
+def _case(old: str, new: str) -> str:
+    assert old in XY, old
+    return XY.replace(old, new, 1)
+
+
+# --- 1. the value as typed -------------------------------------------------------------
+
+
+def test_a_ball_in_inches_too_large_for_the_lead_is_named_as_typed() -> None:
+    # 1/4 in = 6.35 mm; on a 32 x 10 screw it fits, so take a 5 mm lead for the refusal
+    given = 'designation = "HIWIN R32-10K5-FDC"'
+    text = _case(given, given + '\nlead = "5 mm"\nball_diameter = "1/4 in"')
+    with pytest.raises(BallScrewInputError) as info:
+        parse_case(text)
+    assert info.value.field == "screw.ball_diameter"
+    assert info.value.value == "1/4 in"  # not 0.00635, the metres the library saw
+    assert "screw.ball_diameter = '1/4 in' is not allowed" in str(info.value)
+
+
+@pytest.mark.parametrize(
+    ("key", "typed", "si"),
+    [
+        ("max_feed", "-300 mm/s", "-0.3 m/s"),
+        ("max_acceleration", "0 m/s^2", "0 m/s**2"),
+        ("nut_mass", "-1 kg", "-1 kg"),
+        ("screw_length", "-1.2 m", "-1.2 m"),
+        ("bearing_bore", "-30 mm", "-0.03 m"),
+    ],
+)
+def test_a_negative_axis_number_is_refused_as_typed_when_the_case_is_read(
+    key: str, typed: str, si: str
+) -> None:
+    # Refused when read (it was refused only when a command built the axis, as '-0.3')
+    for old in ('screw_length = "1100 mm"\n', 'bearing_bore = "25 mm"\n'):  # keys the file has
+        if old.startswith(key):
+            base = XY.replace(old, "")
+            break
+    else:
+        base = XY
+    text = base.replace('moving_mass = "250 kg"', f'moving_mass = "250 kg"\n{key} = "{typed}"')
+    with pytest.raises(BallScrewInputError) as info:
+        parse_case(text)
+    assert info.value.field == f"axis.{key}" and info.value.value == typed
+    assert f"(read as {si})" in info.value.allowed
+
+
+def test_an_assumed_negative_value_is_named_by_its_own_text() -> None:
+    feed = 'max_feed = { value = "-20 m/min", assumed = "x" }'
+    text = _case('moving_mass = "250 kg"', f'moving_mass = "250 kg"\n{feed}')
+    with pytest.raises(BallScrewInputError) as info:
+        parse_case(text)
+    assert info.value.value == "-20 m/min"
+
+
+def test_a_zero_mass_and_a_level_axis_stay_allowed() -> None:
+    case = parse_case(_case('moving_mass = "250 kg"', 'moving_mass = "0 kg"\nincline = "0 deg"'))
+    assert case.axis["moving_mass"] == 0.0
+
+
+def test_the_command_line_names_the_feed_as_typed(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    path = tmp_path / "neg.toml"
+    text = _case('moving_mass = "250 kg"', 'moving_mass = "250 kg"\nmax_feed = "-300 mm/s"')
+    path.write_text(text, encoding="utf-8")
+    code, _, err = run(["case", "--check", str(path)], capsys)
+    assert code == 2
+    assert "axis.max_feed = '-300 mm/s' is not allowed: more than 0 (read as -0.3 m/s)" in err
+    assert "Traceback" not in err
+
+
+# --- 2. the warning's words ------------------------------------------------------------
+
+
+def _feed_warning(feed_m_min: float) -> str:
+    # a 25 x 5 screw at the default d·n limit 70 000 mm·rpm: the limit is at 14 m/min
+    # (70 000 / 25 mm = 2800 rpm, times 5 mm), computed by hand
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        check_feed("axis.max_feed", f"{feed_m_min:g} m/min", feed_m_min / 60.0, 0.005, 0.025,
+                   70000.0, 1e5)  # fmt: skip
+    (w,) = [c.message for c in caught if isinstance(c.message, BallScrewPlausibilityWarning)]
+    return str(w)
+
+
+def test_a_feed_a_little_past_the_dn_limit_is_above_it_and_asked_no_unit_slip() -> None:
+    text = _feed_warning(15.0)
+    assert "axis.max_feed = 15 m/min (3000 rpm, d·n 75,000 mm·rpm) is above 14 m/min" in text
+    assert "lies outside at most" not in text and "m/s meant m/min" not in text
+
+
+def test_a_feed_sixty_times_too_fast_is_asked_whether_m_s_was_meant() -> None:
+    # 15 m/s typed for 15 m/min: 900 m/min, 64 times the limit's 14 m/min
+    assert "a feed in m/s meant m/min?" in _feed_warning(900.0)
+
+
+def test_a_warning_without_a_bound_word_still_lies_outside_its_range() -> None:
+    w = BallScrewPlausibilityWarning("lubricant.nu40", "5000 mm²/s", "1.98 to 3520 mm²/s", "ISO")
+    assert "lubricant.nu40 = 5000 mm²/s lies outside 1.98 to 3520 mm²/s (ISO)" in str(w)
+    w = BallScrewPlausibilityWarning("x", "1", "at least 2 N", "s")
+    assert "x = 1 is below 2 N (s)" in str(w)
