@@ -123,3 +123,48 @@ def test_a_warning_without_a_bound_word_still_lies_outside_its_range() -> None:
     assert "lubricant.nu40 = 5000 mm²/s lies outside 1.98 to 3520 mm²/s (ISO)" in str(w)
     w = BallScrewPlausibilityWarning("x", "1", "at least 2 N", "s")
     assert "x = 1 is below 2 N (s)" in str(w)
+
+
+def test_an_assumed_motor_value_is_named_by_its_text_not_its_table() -> None:
+    # it showed "Assumed(value='-2.4 N*m', assumed='x', tolerance=None)"
+    text = _case('value = "6.4 N*m"', 'value = "-2.4 N*m"')
+    with pytest.raises(BallScrewInputError) as info:
+        parse_case(text)
+    assert info.value.field == "motor.rated_torque" and info.value.value == "-2.4 N*m"
+
+
+@pytest.mark.parametrize("incline", ["120 deg", "-95 deg"])
+def test_an_incline_past_vertical_is_refused_in_degrees_as_typed(incline: str) -> None:
+    # it was refused as 2.0943951023931953 "(rad)" for 120 deg
+    text = _case('moving_mass = "250 kg"', f'moving_mass = "250 kg"\nincline = "{incline}"')
+    with pytest.raises(BallScrewInputError) as info:
+        parse_case(text)
+    assert info.value.field == "axis.incline" and info.value.value == incline
+    assert f"(read as {incline}" in info.value.allowed and "-90 to 90 deg" in info.value.allowed
+
+
+def test_a_vertical_axis_either_way_is_allowed() -> None:
+    for incline in ("90 deg", "-90 deg"):
+        text = _case('moving_mass = "250 kg"', f'moving_mass = "250 kg"\nincline = "{incline}"')
+        assert abs(parse_case(text).axis["incline"]) == pytest.approx(1.5707963267948966)
+
+
+# --- 3. export-friction's speeds -------------------------------------------------------
+
+
+def test_export_friction_names_why_a_range_from_zero_is_refused() -> None:
+    # '0..15 m/min:6' has 5 speeds above 0 (3 to 15 m/min): it was refused as not
+    # "3 or more positive speeds"; what is wrong is the 0 (a log scale, both directions)
+    from ballscrew.fit.export import log_speeds
+
+    with pytest.raises(BallScrewInputError) as info:
+        log_speeds("0..15 m/min:6", 0.005, notes=[])
+    assert "speeds above 0 only (1 of the 6 given is 0 or below)" in info.value.allowed
+    assert "'0.1..30 m/min:60'" in info.value.allowed
+    with pytest.raises(BallScrewInputError) as info:
+        log_speeds("600 in/min", 0.005, notes=[])
+    assert "3 or more speeds to fit a curve to (1 given)" in info.value.allowed
+    # 0.1 to 15 m/min at lead 5 mm: 20 to 3000 rpm (n = v / l)
+    speeds = log_speeds("0.1..15 m/min:6", 0.005, notes=[])
+    assert speeds[0] * 30.0 / 3.141592653589793 == pytest.approx(20.0)
+    assert speeds[-1] * 30.0 / 3.141592653589793 == pytest.approx(3000.0)

@@ -449,6 +449,15 @@ def _named(w: BallScrewPlausibilityWarning) -> BallScrewPlausibilityWarning:
 
 
 def _parse_case(text: str, source: str) -> Case:
+    try:
+        return _read_case(text, source)
+    except BallScrewInputError as exc:
+        if isinstance(exc.value, Assumed):  # named by the value's own text, not its table
+            raise BallScrewInputError(exc.field, exc.value.value, exc.allowed) from None
+        raise
+
+
+def _read_case(text: str, source: str) -> Case:
     data = _case_file(text, source)
     notes: list[Assumption] = []
     read: list[Reading] = []  # how texts that could be meant two ways were read
@@ -623,6 +632,13 @@ thermal node refuse, refused here with the value as typed)."""
 def _axis_signs(a: AxisSection, values: Mapping[str, Any]) -> None:
     """Refuse a negative (or zero) ``[axis]`` number, naming it as the file typed it."""
     units = dict(_AXIS_UNITS + _THERMAL_UNITS)
+    incline = values.get("incline", 0.0)
+    if not (math.isfinite(incline) and abs(incline) <= math.pi / 2):
+        raise BallScrewInputError(
+            "axis.incline", _typed(a.incline),
+            f"an angle from -90 to 90 deg above the horizontal (read as "
+            f"{math.degrees(incline):.4g} deg; 90 deg: vertical, the load hanging on the screw)",
+        )  # fmt: skip
     for name, value in values.items():
         if name in ("incline", "ambient") or not isinstance(value, float):
             continue
