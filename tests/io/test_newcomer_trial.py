@@ -168,3 +168,28 @@ def test_export_friction_names_why_a_range_from_zero_is_refused() -> None:
     speeds = log_speeds("0.1..15 m/min:6", 0.005, notes=[])
     assert speeds[0] * 30.0 / 3.141592653589793 == pytest.approx(20.0)
     assert speeds[-1] * 30.0 / 3.141592653589793 == pytest.approx(3000.0)
+
+
+# --- 4. select's candidates ------------------------------------------------------------
+
+
+def test_select_names_the_candidate_screw_a_feed_warning_belongs_to() -> None:
+    # The user's max_feed of 15 m/min on candidates of lead 5 mm: past the d·n limit
+    # 70 000 mm·rpm of a 32 mm nut (96 000 mm·rpm at 3000 rpm, by hand) - told of the
+    # candidate's screw, not as if of the user's case (which names no such screw)
+    from ballscrew.axis.duty import profile_from_move
+    from ballscrew.axis.motion import parse_move
+    from ballscrew.select import run_select
+
+    text = (ROOT / "examples" / "vertical_32x5.toml").read_text(encoding="utf-8")
+    text = text.replace('bearing_bore = "25 mm"', 'bearing_bore = "25 mm"\nmax_feed = "15 m/min"')
+    case = parse_case(text)
+    m = parse_move("stroke=300 mm, feed=10 m/min, acceleration=2 m/s^2")
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        with pytest.raises(BallScrewInputError):  # its life falls short of 20000 h: no matter
+            run_select(case, profile_from_move(m, 1), diameter=(0.032, 0.032),
+                       lead=(0.005, 0.005), preloads=["light"], move=m)  # fmt: skip
+    told = [str(w.message) for w in caught if isinstance(w.message, BallScrewPlausibilityWarning)]
+    assert told and all(t.startswith("HIWIN R32-05K4-FSC: axis.max_feed = 15 m/min") for t in told)
+    assert any("d·n 96,000 mm·rpm" in t for t in told)
