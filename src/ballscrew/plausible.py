@@ -26,6 +26,8 @@ The bounds, quantity by quantity (warned outside / refused outside / source):
 * wiper drag: :func:`wiper_drag_bound` / 10 times that / an estimate (below);
 * ``axis.moving_mass``: a weight of half the static rating :math:`C_{0a}` / a weight above
   it / ISO 3408-5 and the catalogues' static safety (:func:`check_moving_mass`);
+* ``axis.moving_mass`` above 0 but below the least a nut of the screw weighs (a steel
+  sleeve, :func:`least_nut_mass`): warned (the mass includes the nut);
 * ``axis.max_acceleration``: the same force, mass times acceleration;
 * ``axis.bearing_span``, ``axis.screw_length``: a first bending frequency of the shaft
   below 5 Hz / below 1 Hz / beam theory (:func:`check_span`);
@@ -88,6 +90,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .errors import BallScrewInputError, BallScrewPlausibilityWarning
+from .materials import STEEL_DENSITY
 
 __all__ = [
     "AXIS_RANGES",
@@ -107,6 +110,7 @@ __all__ = [
     "check_moving_mass",
     "check_span",
     "check_wiper_drag",
+    "least_nut_mass",
     "warn",
     "wiper_drag_bound",
 ]
@@ -355,13 +359,45 @@ def _against_static(
              STATIC_SOURCE)  # fmt: skip
 
 
-def check_moving_mass(field: str, text: str, mass: float, static_rating: float) -> None:
+NUT_SOURCE = (
+    "a lower bound of the nut the moving mass carries: a steel sleeve from the ball-centre "
+    "diameter out by two ball diameters (the groove and the thinnest wall) over the loaded "
+    "turns' length, no flange, no ball return, so a real nut weighs more (not checked "
+    "against catalogue masses); a unit slip, g for kg? 0 leaves the mass out"
+)
+
+
+def least_nut_mass(
+    pitch_diameter: float, ball_diameter: float, lead: float, turns: float, halves: int
+) -> float:
+    r"""A lower bound of a ball nut's mass [kg] (:data:`NUT_SOURCE`).
+
+    .. math:: m = \rho\,\frac{\pi}{4}\left[(d_m + 2 D_w)^2 - d_m^2\right] n\,l\,h
+
+    a steel sleeve (:math:`\rho` = 7850 kg/m³) from the ball-centre diameter
+    :math:`d_m` to :math:`d_m + 2 D_w` (``ball_diameter`` :math:`D_w`) over the
+    length of its loaded turns, ``turns`` :math:`n` (turns per circuit times
+    circuits) of ``lead`` :math:`l`, in each of ``halves`` :math:`h` (2 for a
+    double nut). The balls' own mass lies inside it.
+
+    >>> print(f"{least_nut_mass(0.025, 0.003175, 0.005, 5.0, 1):.3f}")
+    0.055
+    """
+    area = math.pi / 4.0 * ((pitch_diameter + 2.0 * ball_diameter) ** 2 - pitch_diameter**2)
+    return STEEL_DENSITY * area * turns * lead * halves
+
+
+def check_moving_mass(
+    field: str, text: str, mass: float, static_rating: float, least: float = 0.0
+) -> None:
     r"""Refuse a moving mass [kg] whose weight exceeds the screw's static rating [N]; warn at half.
 
     A mass :math:`m` whose weight :math:`m g` exceeds :math:`C_{0a}` dents the
     raceways when it hangs on a vertical axis, and on any axis when it is accelerated
     at 1 g; at half of it the static safety is 2, the middle of the catalogues' 1 to 3
-    (:data:`STATIC_SOURCE`). ``text`` is the value as typed, for the message.
+    (:data:`STATIC_SOURCE`). ``text`` is the value as typed, for the message. A mass
+    above 0 but below ``least`` [kg] (:func:`least_nut_mass`), lighter than the nut it
+    includes, is warned of; 0 leaves the mass out.
 
     >>> check_moving_mass("axis.moving_mass", "250 kg", 250.0, 144.8e3)
     >>> try:
@@ -372,6 +408,9 @@ def check_moving_mass(field: str, text: str, mass: float, static_rating: float) 
     """
     _against_static(field, text, mass * STANDARD_GRAVITY, static_rating, "its weight",
                     STANDARD_GRAVITY, "kg")  # fmt: skip
+    if 0.0 < mass < least:
+        warn(field, text, f"at least {least:.2g} kg, the least a nut of this screw weighs",
+             NUT_SOURCE)  # fmt: skip
 
 
 def check_axial_force(field: str, text: str, force: float, static_rating: float) -> None:

@@ -193,3 +193,27 @@ def test_select_names_the_candidate_screw_a_feed_warning_belongs_to() -> None:
     told = [str(w.message) for w in caught if isinstance(w.message, BallScrewPlausibilityWarning)]
     assert told and all(t.startswith("HIWIN R32-05K4-FSC: axis.max_feed = 15 m/min") for t in told)
     assert any("d·n 96,000 mm·rpm" in t for t in told)
+
+
+# --- 5. a moving mass lighter than its nut ---------------------------------------------
+
+
+def test_the_least_nut_mass_is_a_steel_sleeve_by_hand() -> None:
+    from ballscrew.plausible import least_nut_mass
+
+    # 25 x 5, 3.175 mm balls, 2.5 x 2 turns: a sleeve 25 to 31.35 mm over 25 mm,
+    # pi/4 (31.35^2 - 25^2) mm^2 x 25 mm = 7023 mm^3, x 7.85 g/cm^3 = 55.1 g
+    assert least_nut_mass(0.025, 0.003175, 0.005, 5.0, 1) == pytest.approx(0.05513, rel=1e-3)
+    # a double nut has two such halves
+    assert least_nut_mass(0.025, 0.003175, 0.005, 5.0, 2) == pytest.approx(0.11026, rel=1e-3)
+
+
+def test_a_one_gram_table_is_warned_of_and_a_real_one_not() -> None:
+    # HIWIN R32-10K5-FDC double nut, 6.35 mm balls, 2.5 x 2 turns a half: the sleeve
+    # pi/4 (44.7^2 - 32^2) x 2 x 50 mm = 76 500 mm^3, 0.60 kg (by hand)
+    with pytest.warns(BallScrewPlausibilityWarning, match=r"moving_mass = 1 g is below 0\.6 kg"):
+        parse_case(_case('moving_mass = "250 kg"', 'moving_mass = "1 g"'))
+    for mass in ("0 kg", "2 kg", "250 kg"):  # 0 leaves the mass out; a light carriage passes
+        with warnings.catch_warnings():
+            warnings.simplefilter("error", BallScrewPlausibilityWarning)
+            parse_case(_case('moving_mass = "250 kg"', f'moving_mass = "{mass}"'))

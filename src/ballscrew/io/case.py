@@ -58,6 +58,7 @@ from ..plausible import (
     check_moving_mass,
     check_span,
     check_wiper_drag,
+    least_nut_mass,
 )
 from .designation import resolve
 from .files import read_input_text
@@ -670,7 +671,10 @@ def _axis_plausible(
         if name in axis:
             check_axis_property(f"axis.{name}", axis[name], name)
     mass = axis.get("moving_mass", 0.0)
-    check_moving_mass("axis.moving_mass", _typed(a.moving_mass), mass, static_rating)
+    halves = 2 if screw.nut == "double" else 1
+    least = least_nut_mass(screw.pitch_diameter, screw.ball_diameter, screw.lead,
+                           screw.loaded_turns * screw.circuits, halves)  # fmt: skip
+    check_moving_mass("axis.moving_mass", _typed(a.moving_mass), mass, static_rating, least)
     if "max_acceleration" in axis:
         check_acceleration("axis.max_acceleration", _typed(a.max_acceleration),
                            axis["max_acceleration"], mass, static_rating)  # fmt: skip
