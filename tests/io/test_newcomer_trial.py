@@ -217,3 +217,19 @@ def test_a_one_gram_table_is_warned_of_and_a_real_one_not() -> None:
         with warnings.catch_warnings():
             warnings.simplefilter("error", BallScrewPlausibilityWarning)
             parse_case(_case('moving_mass = "250 kg"', f'moving_mass = "{mass}"'))
+
+
+# --- 6. the inputs an output carries ---------------------------------------------------
+
+
+def test_an_input_carries_its_value_not_its_conversions_last_bit() -> None:
+    # 1000 mm * 0.001 is 1.0 and 700 mm is 0.7000000000000001 in binary; the file said 0.7 m
+    case = parse_case(_case('bearing_span = "1000 mm"', 'bearing_span = "700 mm"'))
+    values = {v["key"]: v for v in case.input_values()}
+    assert repr(values["axis.bearing_span"]["value"]) == "0.7"
+    assert values["axis.bearing_span"]["unit"] == "m"
+    # 15 digits: pi/2 of a vertical axis, 3000 rpm in rad/s, to 1e-15
+    case = parse_case(_case('moving_mass = "250 kg"', 'moving_mass = "250 kg"\nincline = "90 deg"'))
+    values = {v["key"]: v for v in case.input_values()}
+    assert values["axis.incline"]["value"] == pytest.approx(1.5707963267948966, rel=1e-15)
+    assert values["motor.rated_speed"]["value"] == pytest.approx(100 * 3.141592653589793, rel=1e-15)

@@ -351,6 +351,8 @@ class Case:
                 value = value.tolist()
             elif isinstance(value, np.generic):
                 value = value.item()
+            if source != "estimated":  # an input: its unit's conversion's last bit dropped
+                value = _as_input(value)
             if value is None:
                 source, how = "not given", _absent(section, name)
             entry |= {"value": value, "source": source}
@@ -598,6 +600,22 @@ def _absent(section: str, name: str) -> str:
             end = k
             break
     return text[start + len("none: ") : end]
+
+
+INPUT_DIGITS = 15
+"""Significant digits of an input converted to SI in :meth:`Case.input_values`: 700 mm is
+0.7 m, not 0.7000000000000001. Fifteen, the decimal digits a double holds exactly, so
+90 deg stays pi/2 to 1e-15 (the operating points, converted back to rpm, keep 12:
+:data:`ballscrew.report.outputs.INPUT_DIGITS`); what a run computes keeps every digit."""
+
+
+def _as_input(value: Any) -> Any:
+    """``value`` (a float, or a list of them) to :data:`INPUT_DIGITS` significant digits."""
+    if isinstance(value, list):
+        return [_as_input(v) for v in value]
+    if isinstance(value, float) and math.isfinite(value) and value != 0.0:
+        return float(f"{value:.{INPUT_DIGITS}g}")
+    return value
 
 
 def _typed(raw: Any) -> str:
