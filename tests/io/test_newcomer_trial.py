@@ -233,3 +233,25 @@ def test_an_input_carries_its_value_not_its_conversions_last_bit() -> None:
     values = {v["key"]: v for v in case.input_values()}
     assert values["axis.incline"]["value"] == pytest.approx(1.5707963267948966, rel=1e-15)
     assert values["motor.rated_speed"]["value"] == pytest.approx(100 * 3.141592653589793, rel=1e-15)
+
+
+# --- 7. a wrong unit's words -----------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("field", "text", "unit", "said"),
+    [
+        ("axes.X.max_jerk", "40 m/s^2", "m/s**3", "is an acceleration; this field is a jerk"),
+        ("axes.X.max_acceleration", "2 m/s^3", "m/s**2", "is a jerk; this field is an accel"),
+        ("axis.machine_resistance", "2 K", "K/W", "this field is a thermal resistance"),
+    ],
+)
+def test_a_jerk_and_a_thermal_resistance_are_named_in_words(
+    field: str, text: str, unit: str, said: str
+) -> None:
+    # it said "this field is a quantity of dimension [length] / [time] ** 3"
+    from ballscrew.io.units import to_si
+
+    with pytest.raises(BallScrewInputError) as info:
+        to_si(field, text, unit)
+    assert said in str(info.value) and "[time]" not in str(info.value)
