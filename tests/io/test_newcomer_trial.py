@@ -255,3 +255,20 @@ def test_a_jerk_and_a_thermal_resistance_are_named_in_words(
     with pytest.raises(BallScrewInputError) as info:
         to_si(field, text, unit)
     assert said in str(info.value) and "[time]" not in str(info.value)
+
+
+# --- 8. a feed refused against the axis' limit -----------------------------------------
+
+
+def test_a_feed_in_inches_per_minute_is_refused_in_m_min_beside_m_s(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # 600 in/min = 600 x 25.4 mm/min = 15.24 m/min = 0.254 m/s, above a 15 m/min limit
+    path = tmp_path / "limit.toml"
+    text = _case('moving_mass = "250 kg"', 'moving_mass = "250 kg"\nmax_feed = "15 m/min"')
+    path.write_text(text, encoding="utf-8")
+    move = "stroke=16 in, feed=600 in/min, acceleration=0.3 g"
+    code, _, err = run(["energy", "--case", str(path), "--move", move], capsys)
+    assert code == 2
+    assert ("--move feed = '0.254 m/s (15.24 m/min)' is not allowed: at most axis.max_feed = "
+            "0.25 m/s (15 m/min)") in err  # fmt: skip
