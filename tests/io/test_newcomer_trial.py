@@ -272,3 +272,30 @@ def test_a_feed_in_inches_per_minute_is_refused_in_m_min_beside_m_s(
     assert code == 2
     assert ("--move feed = '0.254 m/s (15.24 m/min)' is not allowed: at most axis.max_feed = "
             "0.25 m/s (15 m/min)") in err  # fmt: skip
+
+
+# --- 9. a plain single nut -------------------------------------------------------------
+
+SINGLE = """
+[screw]
+designation = "16x5 single 1.5x3 3.175"
+[lubricant]
+name = "PAO ISO VG 68"
+[axis]
+moving_mass = "3 kg"
+"""
+
+
+def test_a_single_nut_needs_no_preload_key_and_says_it_holds_none() -> None:
+    # a single 2-point nut cannot hold a preload (BallScrew refuses any but 0): the key
+    # 'preload = "0 N"' was required, "exactly one of preload, ..."
+    case = parse_case(SINGLE)
+    assert case.screw.preload == 0.0 and case.screw.nut == "single"
+    (note,) = [a for a in case.assumptions if a.field == "screw.preload"]
+    assert note.value == "0 N" and "single nut holds no preload" in note.reason
+
+
+def test_a_double_nut_without_a_preload_is_still_refused() -> None:
+    with pytest.raises(BallScrewInputError) as info:
+        parse_case(SINGLE.replace("16x5 single", "16x5 double"))
+    assert info.value.field == "screw.preload" and "exactly one of preload" in info.value.allowed

@@ -934,17 +934,22 @@ def _screw(
     ways = [
         k for k in ("preload", "preload_drag_torque", "preload_share") if getattr(s, k) is not None
     ]
-    if len(ways) != 1:
+    # A plain single nut holds no preload: nothing to give (BallScrew refuses any but 0).
+    unloaded = not ways and geometry.get("nut") == "single"
+    if len(ways) != 1 and not unloaded:
         raise BallScrewInputError(
             "screw.preload",
             ", ".join(ways) or "(missing)",
             "exactly one of preload (a force), preload_drag_torque and preload_share "
-            "(of the dynamic load rating)",
+            '(of the dynamic load rating); a single nut (nut = "single") needs none',
         )
     try:
         screw = BallScrew(preload=0.0, **geometry)
     except BallScrewInputError as exc:
         raise _as_typed(exc, "screw", s, SCREW_UNITS) from None
+    if unloaded:
+        notes.append(Assumption("screw.preload", "0 N", "a single nut holds no preload"))
+        return screw, origin, ratings_of(screw)
     preload = _preload(s, si, screw, rating)
     try:
         screw = screw.replace(preload=preload)
