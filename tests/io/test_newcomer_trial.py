@@ -299,3 +299,16 @@ def test_a_double_nut_without_a_preload_is_still_refused() -> None:
     with pytest.raises(BallScrewInputError) as info:
         parse_case(SINGLE.replace("16x5 single", "16x5 double"))
     assert info.value.field == "screw.preload" and "exactly one of preload" in info.value.allowed
+
+
+# --- 10. a G-code feed word ------------------------------------------------------------
+
+
+@pytest.mark.parametrize(("line", "word"), [("G1 X100 F-500", "F-500"), ("G1 X100 F0", "F0")])
+def test_a_feed_word_not_above_zero_is_named_as_written(line: str, word: str) -> None:
+    # it was named 'F', the letter alone
+    from ballscrew.program.gcode import read_program
+
+    with pytest.raises(BallScrewInputError) as info:
+        read_program(f"G21 G90\n{line}\nM30\n")
+    assert info.value.field == "program line 2" and info.value.value == word
