@@ -8,6 +8,7 @@
 
 from __future__ import annotations
 
+import math
 import warnings
 from pathlib import Path
 
@@ -312,3 +313,26 @@ def test_a_feed_word_not_above_zero_is_named_as_written(line: str, word: str) ->
     with pytest.raises(BallScrewInputError) as info:
         read_program(f"G21 G90\n{line}\nM30\n")
     assert info.value.field == "program line 2" and info.value.value == word
+
+
+# --- 11. a feed read as a speed is given, not assumed ----------------------------------
+
+
+def test_a_speed_given_as_a_feed_is_given_with_its_reading(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # '0..30 m/min:4' at lead 10 mm: 0, 1000, 2000, 3000 rpm (n = v / l); the file gave
+    # it, the reader only read it: its source was "assumed"
+    text = XY.replace("[operation]", '[operation]\nspeed = "0..30 m/min:4"', 1)
+    assert 'speed = "' not in XY.split("[operation]")[1].split("[axis]")[0]
+    case = parse_case(text)
+    (entry,) = [v for v in case.input_values() if v["key"] == "operation.speed"]
+    assert entry["source"] == "given"
+    assert entry["how"].startswith("read as 0 to 3000 rpm at lead 10 mm")
+    assert entry["value"] == pytest.approx([0.0, 1000 * math.pi / 30, 2000 * math.pi / 30,
+                                            3000 * math.pi / 30], rel=1e-15)  # fmt: skip
+    path = tmp_path / "feed.toml"
+    path.write_text(text, encoding="utf-8")
+    code, out, _ = run(["case", "--check", str(path)], capsys)
+    assert code == 0
+    assert "1 value(s) read one way, as given:\n  operation.speed = 0..30 m/min:4: read as" in out

@@ -332,6 +332,7 @@ class Case:
         ratings = self.load_ratings()
         screw = dataclasses.asdict(self.screw)
         out: list[dict[str, Any]] = []
+        readings = {a.field: a.reason for a in self.assumptions if a.reason.startswith(READ_AS)}
         for key, source in sorted(self.sources.items()):
             section, name = key.split(".", 1)
             entry: dict[str, Any] = {"key": key, "value": None, "unit": KEY_UNITS.get(key, "")}
@@ -355,6 +356,7 @@ class Case:
                 value = _as_input(value)
             if value is None:
                 source, how = "not given", _absent(section, name)
+            how = how or readings.get(key, "")
             entry |= {"value": value, "source": source}
             if how:
                 entry["how"] = how
@@ -514,7 +516,7 @@ def _read_case(text: str, source: str) -> Case:
     axis, thermal = _axis(data, si), _given_si(data, si, _THERMAL_UNITS)
     _axis_plausible(data.axis, screw, ratings.static, axis, thermal)
     motor, check = _motor(data, si), _check(data, si)
-    notes.extend(Assumption(r.field, r.text, f"read as {r.reading}") for r in read)
+    notes.extend(Assumption(r.field, r.text, f"{READ_AS}{r.reading}") for r in read)
     sources = _sources(data, notes)
     return Case(
         title=data.title,
@@ -601,6 +603,11 @@ def _absent(section: str, name: str) -> str:
             break
     return text[start + len("none: ") : end]
 
+
+READ_AS = "read as "
+"""How an :class:`Assumption` that is a reading of a given text begins ('15 m/min' read as
+1500 rpm at the lead): the value is given, its reading told (:meth:`Case.input_values`'
+``how``), not assumed."""
 
 INPUT_DIGITS = 15
 """Significant digits of an input converted to SI in :meth:`Case.input_values`: 700 mm is
@@ -878,6 +885,8 @@ def _sources(data: CaseFile, notes: list[Assumption]) -> dict[str, str]:
         for name in type(section).model_fields:
             out[f"{key}.{name}"] = "given" if name in section.model_fields_set else "default"
     for a in notes:
+        if a.reason.startswith(READ_AS):  # a text read one way ('15 m/min' as rpm): given
+            continue
         if a.field in out or "." in a.field:
             out[a.field] = "assumed"
     return out
