@@ -231,6 +231,18 @@ def warn(field: str, value: str, allowed: str, source: str) -> None:
     warnings.warn(BallScrewPlausibilityWarning(field, value, allowed, source), stacklevel=3)
 
 
+def _plain(value: float) -> str:
+    """``value`` to 4 significant digits, without an exponent from 0.001 to 10^7.
+
+    A bound reads "at most 14770 kg" and "13540 mm", not "1.477e+04 kg".
+
+    >>> _plain(14771.3), _plain(0.25), _plain(3.2e9)
+    ('14770', '0.25', '3.2e+09')
+    """
+    rounded = float(f"{value:.4g}")
+    return f"{rounded:.10g}" if 1e-3 <= abs(rounded) < 1e7 else f"{value:.4g}"
+
+
 def _shown(value: float, r: TypicalRange) -> str:
     return f"{value * r.scale:.4g} {r.unit}"
 
@@ -350,12 +362,13 @@ def _against_static(
     if not math.isfinite(force) or force > static_rating:
         raise BallScrewInputError(
             field, text,
-            f"at most {static_rating / per:.4g} {unit}: {what}, {force / 1e3:.4g} kN, would "
+            f"at most {_plain(static_rating / per)} {unit}: {what}, {force / 1e3:.4g} kN, would "
             f"exceed the screw's static rating {c0}, which dents its raceways ({STATIC_SOURCE})",
         )  # fmt: skip
     if force > 0.5 * static_rating:
         warn(field, f"{text} ({what} {force / 1e3:.4g} kN)",
-             f"at most {0.5 * static_rating / per:.4g} {unit}, a static safety of 2 against {c0}",
+             f"at most {_plain(0.5 * static_rating / per)} {unit}, a static safety of 2 "
+             f"against {c0}",
              STATIC_SOURCE)  # fmt: skip
 
 
@@ -403,8 +416,8 @@ def check_moving_mass(
     >>> try:
     ...     check_moving_mass("axis.moving_mass", "2500 t", 2.5e6, 144.8e3)
     ... except BallScrewInputError as exc:
-    ...     print(exc.allowed[:20])
-    at most 1.477e+04 kg
+    ...     print(exc.allowed[:16])
+    at most 14770 kg
     """
     _against_static(field, text, mass * STANDARD_GRAVITY, static_rating, "its weight",
                     STANDARD_GRAVITY, "kg")  # fmt: skip
@@ -478,7 +491,7 @@ def check_span(
         longest = span * math.sqrt(frequency / refused) if math.isfinite(frequency) else 0.0
         raise BallScrewInputError(
             field, text,
-            f"at most {longest * 1e3:.4g} mm for this screw ({mounting}): over "
+            f"at most {_plain(longest * 1e3)} mm for this screw ({mounting}): over "
             f"{span:.4g} m its shaft's first bending frequency is {frequency:.3g} Hz, "
             f"below {refused:g} Hz, and it would sag over 0.3 m under its own weight "
             f"({SPAN_SOURCE}); a length in m meant mm?",
@@ -486,7 +499,7 @@ def check_span(
     if warn_below and frequency < warned:
         longest = span * math.sqrt(frequency / warned)
         warn(field, f"{text} (first bending frequency {frequency:.3g} Hz)",
-             f"at most {longest * 1e3:.4g} mm for this screw ({mounting}), a first bending "
+             f"at most {_plain(longest * 1e3)} mm for this screw ({mounting}), a first bending "
              f"frequency of {warned:g} Hz", SPAN_SOURCE)  # fmt: skip
 
 
@@ -514,12 +527,12 @@ def check_feed(
         raise BallScrewInputError(
             field, text,
             f"at most {max_speed / (2.0 * math.pi) * lead:.4g} m/s at lead {lead * 1e3:g} mm: "
-            f"{rpm:.4g} rpm is past every ball screw's speed (a feed in m/s meant m/min?)",
+            f"{_plain(rpm)} rpm is past every ball screw's speed (a feed in m/s meant m/min?)",
         )  # fmt: skip
     dn = pitch_diameter * 1e3 * rpm
     if warn_above and dn > dn_limit:
         most = dn_limit / (pitch_diameter * 1e3) * lead  # m/min
-        warn(field, f"{text} ({rpm:.4g} rpm, d·n {dn:,.0f} mm·rpm)",
+        warn(field, f"{text} ({_plain(rpm)} rpm, d·n {dn:,.0f} mm·rpm)",
              f"at most {most:.4g} m/min, the feed at the nut's d·n limit {dn_limit:,.0f} mm·rpm "
              f"with lead {lead * 1e3:g} mm", "the axis' d·n limit (axis.dn_limit, the nut's "
              "catalogue: about 70 000 for external returns, up to 160 000 for high-speed "

@@ -336,3 +336,16 @@ def test_a_speed_given_as_a_feed_is_given_with_its_reading(
     code, out, _ = run(["case", "--check", str(path)], capsys)
     assert code == 0
     assert "1 value(s) read one way, as given:\n  operation.speed = 0..30 m/min:4: read as" in out
+
+
+# --- 12. a bound's number ------------------------------------------------------------------
+
+
+def test_a_refused_span_gives_its_longest_in_plain_millimetres() -> None:
+    # 30 m fixed-supported on the 32 x 10 example: the longest span with a first bending
+    # frequency of 1 Hz, which goes as 1/L^2; it read "at most 1.1e+04 mm"-like exponents
+    with pytest.raises(BallScrewInputError) as info:
+        parse_case(_case('bearing_span = "1000 mm"', 'bearing_span = "30 m"')
+                   .replace('screw_length = "1100 mm"', 'screw_length = "31 m"'))  # fmt: skip
+    allowed = info.value.allowed
+    assert allowed.startswith("at most ") and "e+" not in allowed.split(" mm")[0]

@@ -38,7 +38,7 @@ def _warned(call: object, *args: object) -> list[str]:
 def test_a_mass_whose_weight_exceeds_c0a_is_refused_naming_the_largest_mass() -> None:
     # 144.8 kN / 9.80665 m/s² = 14 765.5 kg, by hand: 14.7 t passes (warned), 14.8 t not.
     assert _warned(check_moving_mass, "axis.moving_mass", "14.7 t", 14_700.0, C0A)
-    with pytest.raises(BallScrewInputError, match=r"at most 1\.477e\+04 kg") as info:
+    with pytest.raises(BallScrewInputError, match=r"at most 14770 kg") as info:
         check_moving_mass("axis.moving_mass", "14.8 t", 14_800.0, C0A)
     assert info.value.field == "axis.moving_mass" and info.value.value == "14.8 t"
     with pytest.raises(BallScrewInputError, match=r"static rating C_0a = 144\.8 kN"):
@@ -215,7 +215,7 @@ def test_a_process_force_is_held_to_c0a_in_either_direction() -> None:
 
     check_axial_force("axes.X.process_force", "144.8 kN", 144.8e3, C0A)  # "at most": the end
     for force in (145e3, -145e3):  # a pull dents the raceways as a push does
-        with pytest.raises(BallScrewInputError, match=r"at most 1\.448e\+05 N"):
+        with pytest.raises(BallScrewInputError, match=r"at most 144800 N"):
             check_axial_force("axes.X.process_force", "145 kN", force, C0A)
     assert not _warned(check_axial_force, "axes.X.process_force", "72 kN", 72.4e3, C0A)
     assert _warned(check_axial_force, "axes.X.process_force", "73 kN", -73e3, C0A)
