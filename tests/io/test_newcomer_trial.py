@@ -349,3 +349,30 @@ def test_a_refused_span_gives_its_longest_in_plain_millimetres() -> None:
                    .replace('screw_length = "1100 mm"', 'screw_length = "31 m"'))  # fmt: skip
     allowed = info.value.allowed
     assert allowed.startswith("at most ") and "e+" not in allowed.split(" mm")[0]
+
+
+# --- 13. a move too short to reach its feed --------------------------------------------
+
+
+@pytest.mark.parametrize("feed", [1.2, 2.0, 15.0])
+def test_a_triangular_move_there_and_back_runs_at_its_closed_form(feed: float) -> None:
+    # 400 mm at 3 m/s^2 reaches at most sqrt(a s) = sqrt(1.2) = 1.095 m/s, in
+    # 2 sqrt(s/a) = 0.7303 s a way (closed forms of the triangular profile); any feed
+    # above that was refused, "time = '(profile)' is not allowed: at least 2 strictly
+    # increasing times" (a cruise of 5e-17 s repeated a time once the way back was chained)
+    from ballscrew.axis.motion import back_and_forth
+
+    p = back_and_forth(0.4, feed, 3.0)
+    assert float(p.speed.max()) == pytest.approx(math.sqrt(1.2), rel=1e-9)
+    assert p.duration == pytest.approx(2 * 2 * math.sqrt(0.4 / 3.0), rel=1e-9)
+    assert float(p.position.max()) == pytest.approx(0.4, rel=1e-12)
+    assert float(p.position[-1]) == pytest.approx(0.0, abs=1e-12)
+
+
+def test_energy_runs_a_short_fast_move(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    path = tmp_path / "short.toml"
+    path.write_text(XY, encoding="utf-8")
+    move = "stroke=400 mm, feed=72 m/min, acceleration=3 m/s^2"  # peak sqrt(1.2) = 1.095 m/s
+    code, out, err = run(["energy", "--case", str(path), "--move", move], capsys)
+    assert code == 0, err
+    assert "1 cycle(s), 1.461 s" in out  # 2 x 2 sqrt(0.4 / 3) s

@@ -102,14 +102,17 @@ def _phases(
         return v * (2.0 * t_j + t_a)
 
     v = feed
-    if distance(v) > stroke:  # the feed rate is not reached: bisect the peak speed
+    reached = distance(v) <= stroke
+    if not reached:  # the feed rate is not reached: bisect the peak speed
         lo, hi = 0.0, feed
         for _ in range(200):
             mid = 0.5 * (lo + hi)
             lo, hi = (mid, hi) if distance(mid) < stroke else (lo, mid)
         v = 0.5 * (lo + hi)
     a, t_j, t_a = shape(v)
-    t_v = max((stroke - distance(v)) / v, 0.0)
+    # No cruise where the feed is not reached: the bisection's remainder (1e-17 s) made a
+    # phase no sample can hold, and a triangular move's times repeated once chained.
+    t_v = max((stroke - distance(v)) / v, 0.0) if reached else 0.0
     if not smooth:
         return [(t_a, a, 0.0), (t_v, 0.0, 0.0), (t_a, -a, 0.0)]
     return [
@@ -169,7 +172,9 @@ def move(
     sign = 1.0 if stroke >= 0 else -1.0
     if s == 0.0:
         return dwell(dt, sample_time=dt)
-    phases = [ph for ph in _phases(s, v, a, j) if ph[0] > 0.0]
+    # A phase a billionth of a sample long is rounding (an S-curve's constant-acceleration
+    # phase where the jerk limits the acceleration): it holds no sample of its own.
+    phases = [ph for ph in _phases(s, v, a, j) if ph[0] > 1e-9 * dt]
     times, pos, spd, acc = [0.0], [0.0], [0.0], [0.0]
     t0, x0, v0 = 0.0, 0.0, 0.0
     for duration, a_start, jj in phases:
