@@ -376,3 +376,20 @@ def test_energy_runs_a_short_fast_move(tmp_path: Path, capsys: pytest.CaptureFix
     code, out, err = run(["energy", "--case", str(path), "--move", move], capsys)
     assert code == 0, err
     assert "1 cycle(s), 1.461 s" in out  # 2 x 2 sqrt(0.4 / 3) s
+
+
+def test_random_moves_there_and_back_reach_their_stroke_and_closed_form_peak() -> None:
+    # 400 rest-to-rest moves, half jerk-limited: each chains, reaches its stroke, and
+    # (without jerk limit) peaks at min(feed, sqrt(a s)), the trapezoid's closed form
+    import numpy as np
+
+    from ballscrew.axis.motion import back_and_forth
+
+    rng = np.random.default_rng(1)
+    for k in range(400):
+        s, v, a = 10 ** rng.uniform(-3, 0.5), 10 ** rng.uniform(-2, 1.3), 10 ** rng.uniform(-1, 1.5)
+        jerk = None if k % 2 else float(10 ** rng.uniform(0, 3))
+        p = back_and_forth(s, v, a, jerk=jerk)
+        assert float(p.position.max()) == pytest.approx(s, rel=1e-9)
+        if jerk is None:
+            assert float(p.speed.max()) == pytest.approx(min(v, math.sqrt(a * s)), rel=1e-9)
