@@ -393,3 +393,21 @@ def test_random_moves_there_and_back_reach_their_stroke_and_closed_form_peak() -
         assert float(p.position.max()) == pytest.approx(s, rel=1e-9)
         if jerk is None:
             assert float(p.speed.max()) == pytest.approx(min(v, math.sqrt(a * s)), rel=1e-9)
+
+
+@pytest.mark.parametrize(
+    ("move", "field", "typed"),
+    [
+        ("stroke=0 mm, feed=10 m/min, acceleration=2 m/s^2", "--move stroke", "0 mm"),
+        ("stroke=4 in, feed=10 m/min, acceleration=2 m/s^2, dwell=-1 s", "--move dwell", "-1 s"),
+        ("stroke=4 in, feed=-10 m/min, acceleration=2 m/s^2", "--move feed", "-10 m/min"),
+        ("stroke=4 in, feed=10 m/min, acceleration=0 g", "--move acceleration", "0 g"),
+    ],
+)
+def test_a_move_value_refused_is_named_as_typed(move: str, field: str, typed: str) -> None:
+    # they were named in SI: 'stroke = 0.0', 'dwell = -1.0', 'feed = -0.1666...'
+    from ballscrew.axis.motion import parse_move
+
+    with pytest.raises(BallScrewInputError) as info:
+        parse_move(move)
+    assert info.value.field == field and info.value.value == typed

@@ -377,6 +377,7 @@ def parse_move(text: str) -> dict[str, float]:
     from ..io.units import to_si  # the unit library only when text is read
 
     out: dict[str, float] = {}
+    typed: dict[str, str] = {}  # each value as written, for a refusal's message
     parts = [p.strip() for p in text.split(",") if p.strip()]
     for before, after in itertools.pairwise(parts):
         # "force=1,2 kN": a decimal comma, which also separates the keys here.
@@ -397,15 +398,16 @@ def parse_move(text: str) -> dict[str, float]:
             raise BallScrewInputError(
                 f"--move {key}", text, f"{key} once (it is given twice; which one is meant?)"
             )
-        out[key] = to_si(f"--move {key}", value.strip(), MOVE_KEYS[key][0])
+        typed[key] = value.strip()
+        out[key] = to_si(f"--move {key}", typed[key], MOVE_KEYS[key][0])
     missing = [k for k, (_, needed) in MOVE_KEYS.items() if needed and k not in out]
     if missing:
         raise BallScrewInputError("--move", text, f"also {', '.join(missing)} (with units)")
     for key in ("feed", "acceleration", "jerk"):
         if key in out and not out[key] > 0.0:
-            raise BallScrewInputError(f"--move {key}", out[key], "more than 0")
+            raise BallScrewInputError(f"--move {key}", typed[key], "more than 0")
     if out["stroke"] == 0.0:
-        raise BallScrewInputError("--move stroke", 0.0, "a stroke, not 0")
+        raise BallScrewInputError("--move stroke", typed["stroke"], "a stroke, not 0")
     if out.get("dwell", 0.0) < 0.0:
-        raise BallScrewInputError("--move dwell", out["dwell"], "0 s or more")
+        raise BallScrewInputError("--move dwell", typed["dwell"], "0 s or more")
     return out
