@@ -76,6 +76,14 @@ class BallScrewSpeedWarning(UserWarning):
     """
 
 
+def _beyond(allowed: str) -> str:
+    """How a value stands to ``allowed``: "is above 14 m/min" for "at most 14 m/min"."""
+    for bound, verb in (("at most ", "is above "), ("at least ", "is below ")):
+        if allowed.startswith(bound):
+            return verb + allowed[len(bound) :]
+    return f"lies outside {allowed}"
+
+
 class BallScrewPlausibilityWarning(UserWarning):
     """An input lies outside what makers build or sell, and is used as given.
 
@@ -86,9 +94,7 @@ class BallScrewPlausibilityWarning(UserWarning):
     """
 
     def __init__(self, field: str, value: str, allowed: str, source: str) -> None:
-        super().__init__(
-            f"{field} = {value} lies outside {allowed} ({source}); it is used as given"
-        )
+        super().__init__(f"{field} = {value} {_beyond(allowed)} ({source}); it is used as given")
         self.field = field
         self.value = value
         self.allowed = allowed

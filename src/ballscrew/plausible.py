@@ -26,6 +26,8 @@ The bounds, quantity by quantity (warned outside / refused outside / source):
 * wiper drag: :func:`wiper_drag_bound` / 10 times that / an estimate (below);
 * ``axis.moving_mass``: a weight of half the static rating :math:`C_{0a}` / a weight above
   it / ISO 3408-5 and the catalogues' static safety (:func:`check_moving_mass`);
+* ``axis.moving_mass`` above 0 but below the least a nut of the screw weighs (a steel
+  sleeve, :func:`least_nut_mass`): warned (the mass includes the nut);
 * ``axis.max_acceleration``: the same force, mass times acceleration;
 * ``axis.bearing_span``, ``axis.screw_length``: a first bending frequency of the shaft
   below 5 Hz / below 1 Hz / beam theory (:func:`check_span`);
@@ -88,6 +90,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .errors import BallScrewInputError, BallScrewPlausibilityWarning
+from .materials import STEEL_DENSITY
 
 __all__ = [
     "AXIS_RANGES",
@@ -107,6 +110,7 @@ __all__ = [
     "check_moving_mass",
     "check_span",
     "check_wiper_drag",
+    "least_nut_mass",
     "warn",
     "wiper_drag_bound",
 ]
@@ -225,6 +229,18 @@ def warn(field: str, value: str, allowed: str, source: str) -> None:
     command line prints each once), so a value read twice is told once.
     """
     warnings.warn(BallScrewPlausibilityWarning(field, value, allowed, source), stacklevel=3)
+
+
+def _plain(value: float) -> str:
+    """``value`` to 4 significant digits, without an exponent from 0.001 to 10^7.
+
+    A bound reads "at most 14770 kg" and "13540 mm", not "1.477e+04 kg".
+
+    >>> _plain(14771.3), _plain(0.25), _plain(3.2e9)
+    ('14770', '0.25', '3.2e+09')
+    """
+    rounded = float(f"{value:.4g}")
+    return f"{rounded:.10g}" if 1e-3 <= abs(rounded) < 1e7 else f"{value:.4g}"
 
 
 def _shown(value: float, r: TypicalRange) -> str:
@@ -346,32 +362,68 @@ def _against_static(
     if not math.isfinite(force) or force > static_rating:
         raise BallScrewInputError(
             field, text,
-            f"at most {static_rating / per:.4g} {unit}: {what}, {force / 1e3:.4g} kN, would "
+            f"at most {_plain(static_rating / per)} {unit}: {what}, {force / 1e3:.4g} kN, would "
             f"exceed the screw's static rating {c0}, which dents its raceways ({STATIC_SOURCE})",
         )  # fmt: skip
     if force > 0.5 * static_rating:
         warn(field, f"{text} ({what} {force / 1e3:.4g} kN)",
-             f"at most {0.5 * static_rating / per:.4g} {unit}, a static safety of 2 against {c0}",
+             f"at most {_plain(0.5 * static_rating / per)} {unit}, a static safety of 2 "
+             f"against {c0}",
              STATIC_SOURCE)  # fmt: skip
 
 
-def check_moving_mass(field: str, text: str, mass: float, static_rating: float) -> None:
+NUT_SOURCE = (
+    "a lower bound of the nut the moving mass carries: a steel sleeve from the ball-centre "
+    "diameter out by two ball diameters (the groove and the thinnest wall) over the loaded "
+    "turns' length, no flange, no ball return, so a real nut weighs more (not checked "
+    "against catalogue masses); a unit slip, g for kg? 0 leaves the mass out"
+)
+
+
+def least_nut_mass(
+    pitch_diameter: float, ball_diameter: float, lead: float, turns: float, halves: int
+) -> float:
+    r"""A lower bound of a ball nut's mass [kg] (:data:`NUT_SOURCE`).
+
+    .. math:: m = \rho\,\frac{\pi}{4}\left[(d_m + 2 D_w)^2 - d_m^2\right] n\,l\,h
+
+    a steel sleeve (:math:`\rho` = 7850 kg/m³) from the ball-centre diameter
+    :math:`d_m` to :math:`d_m + 2 D_w` (``ball_diameter`` :math:`D_w`) over the
+    length of its loaded turns, ``turns`` :math:`n` (turns per circuit times
+    circuits) of ``lead`` :math:`l`, in each of ``halves`` :math:`h` (2 for a
+    double nut). The balls' own mass lies inside it.
+
+    >>> print(f"{least_nut_mass(0.025, 0.003175, 0.005, 5.0, 1):.3f}")
+    0.055
+    """
+    area = math.pi / 4.0 * ((pitch_diameter + 2.0 * ball_diameter) ** 2 - pitch_diameter**2)
+    return STEEL_DENSITY * area * turns * lead * halves
+
+
+def check_moving_mass(
+    field: str, text: str, mass: float, static_rating: float, least: float = 0.0
+) -> None:
     r"""Refuse a moving mass [kg] whose weight exceeds the screw's static rating [N]; warn at half.
 
     A mass :math:`m` whose weight :math:`m g` exceeds :math:`C_{0a}` dents the
     raceways when it hangs on a vertical axis, and on any axis when it is accelerated
     at 1 g; at half of it the static safety is 2, the middle of the catalogues' 1 to 3
-    (:data:`STATIC_SOURCE`). ``text`` is the value as typed, for the message.
+    (:data:`STATIC_SOURCE`). ``text`` is the value as typed, for the message. A mass
+    above 0 but below ``least`` [kg] (:func:`least_nut_mass`), lighter than the nut it
+    includes, is warned of; 0 leaves the mass out.
 
     >>> check_moving_mass("axis.moving_mass", "250 kg", 250.0, 144.8e3)
     >>> try:
     ...     check_moving_mass("axis.moving_mass", "2500 t", 2.5e6, 144.8e3)
     ... except BallScrewInputError as exc:
-    ...     print(exc.allowed[:20])
-    at most 1.477e+04 kg
+    ...     print(exc.allowed[:16])
+    at most 14770 kg
     """
     _against_static(field, text, mass * STANDARD_GRAVITY, static_rating, "its weight",
                     STANDARD_GRAVITY, "kg")  # fmt: skip
+    if 0.0 < mass < least:
+        warn(field, text, f"at least {least:.2g} kg, the least a nut of this screw weighs",
+             NUT_SOURCE)  # fmt: skip
 
 
 def check_axial_force(field: str, text: str, force: float, static_rating: float) -> None:
@@ -439,7 +491,7 @@ def check_span(
         longest = span * math.sqrt(frequency / refused) if math.isfinite(frequency) else 0.0
         raise BallScrewInputError(
             field, text,
-            f"at most {longest * 1e3:.4g} mm for this screw ({mounting}): over "
+            f"at most {_plain(longest * 1e3)} mm for this screw ({mounting}): over "
             f"{span:.4g} m its shaft's first bending frequency is {frequency:.3g} Hz, "
             f"below {refused:g} Hz, and it would sag over 0.3 m under its own weight "
             f"({SPAN_SOURCE}); a length in m meant mm?",
@@ -447,8 +499,14 @@ def check_span(
     if warn_below and frequency < warned:
         longest = span * math.sqrt(frequency / warned)
         warn(field, f"{text} (first bending frequency {frequency:.3g} Hz)",
-             f"at most {longest * 1e3:.4g} mm for this screw ({mounting}), a first bending "
+             f"at most {_plain(longest * 1e3)} mm for this screw ({mounting}), a first bending "
              f"frequency of {warned:g} Hz", SPAN_SOURCE)  # fmt: skip
+
+
+_SLIP = "; a feed in m/s meant m/min?"
+_SLIP_FACTOR = 10.0
+"""A feed past the d·n limit by this factor is asked whether m/s was typed for m/min (a
+factor 60); a feed a few per cent past it is a design choice, and asked nothing."""
 
 
 def check_feed(
@@ -469,16 +527,16 @@ def check_feed(
         raise BallScrewInputError(
             field, text,
             f"at most {max_speed / (2.0 * math.pi) * lead:.4g} m/s at lead {lead * 1e3:g} mm: "
-            f"{rpm:.4g} rpm is past every ball screw's speed (a feed in m/s meant m/min?)",
+            f"{_plain(rpm)} rpm is past every ball screw's speed (a feed in m/s meant m/min?)",
         )  # fmt: skip
     dn = pitch_diameter * 1e3 * rpm
     if warn_above and dn > dn_limit:
         most = dn_limit / (pitch_diameter * 1e3) * lead  # m/min
-        warn(field, f"{text} ({rpm:.4g} rpm, d·n {dn:,.0f} mm·rpm)",
+        warn(field, f"{text} ({_plain(rpm)} rpm, d·n {dn:,.0f} mm·rpm)",
              f"at most {most:.4g} m/min, the feed at the nut's d·n limit {dn_limit:,.0f} mm·rpm "
              f"with lead {lead * 1e3:g} mm", "the axis' d·n limit (axis.dn_limit, the nut's "
              "catalogue: about 70 000 for external returns, up to 160 000 for high-speed "
-             "nuts); a feed in m/s meant m/min?")  # fmt: skip
+             f"nuts){_SLIP if dn > _SLIP_FACTOR * dn_limit else ''}")  # fmt: skip
 
 
 AXIS_RANGES: dict[str, TypicalRange] = {

@@ -234,7 +234,8 @@ RANGES: dict[str, ValidityRange] = {
             0.0,
             LIFT_OFF_RATIO,
             "a preloaded nut",
-            "above 2^1.5 the relieved half-nut lifts off and the nut has backlash",
+            "above 2^1.5 the relieved half-nut (a 4-point nut's relieved contacts) lifts off "
+            "and the nut has backlash",
         ),
     )
 }

@@ -162,7 +162,8 @@ AXIS_LIMITS = (
     ("move", "expected"),
     [
         ("stroke=0.3 m, feed=0.5 m/s, acceleration=1 m/s^2",
-         "--move feed = '0.5 m/s' is not allowed: at most axis.max_feed = 0.4 m/s"),
+         "--move feed = '0.5 m/s (30 m/min)' is not allowed: at most axis.max_feed = 0.4 m/s "
+         "(24 m/min)"),
         ("stroke=0.3 m, feed=24 m/min, acceleration=2 m/s^2",
          "--move acceleration = '2 m/s^2' is not allowed: at most axis.max_acceleration = 1.5"),
         ("stroke=0.3 m, feed=0.4 m/s, acceleration=1.5 m/s^2", ""),
@@ -187,4 +188,8 @@ def test_a_trajectory_beyond_the_axis_speed_is_named(
     case = _case(tmp_path, SCREW_32 + AXIS_LIMITS.replace('"1.5 m/s**2"', '"100 m/s**2"'))
     code, _, err = run(["energy", "--case", case, "--profile", str(profile)], capsys)
     assert code == 2
-    assert "--profile speed = '0.6 m/s' is not allowed: at most axis.max_feed = 0.4 m/s" in err
+    # 0.6 m/s is 36 m/min, 0.4 m/s 24 m/min: both in the unit machine tools give feeds in
+    assert (
+        "--profile speed = '0.6 m/s (36 m/min)' is not allowed: at most axis.max_feed = "
+        "0.4 m/s (24 m/min)"
+    ) in err

@@ -172,7 +172,11 @@ def test_select_out_writes_why_nothing_passed_and_still_fails(
     code, _, err = run(["select", "--case", str(CASE), "--move", MOVE, "--diameter", "25 mm",
                         "--lead", "5 mm", "--preload", "light", "--out", str(out)],
                        capsys)  # fmt: skip
-    assert code == 2 and "error: --move = 'a duty none of the" in err
+    # the move named in SI, as the error's value (it read 'a duty none of the N candidates
+    # passes'): 500 mm, 12 m/min = 0.2 m/s, 1.5 kN
+    assert code == 2
+    assert "error: --move = 'stroke=0.5 m, feed=0.2 m/s, acceleration=3 m/s**2, force=1500 N" in err
+    assert "is not allowed: a duty one of the candidates passes (none of the " in err
     assert f"report: {out / 'report.html'}" in err
     doc = json.loads((out / "data" / "select.json").read_text(encoding="utf-8"))
     assert doc["recommended"] is None and doc["front"] == []

@@ -142,7 +142,7 @@ def test_a_bad_value_shows_the_command_lines_message_beside_its_field(
     code, _, err = run(["torque", "--case", str(path)], capsys)
     assert code == 2
     assert shown == err.strip().removeprefix("error: ")
-    assert shown.startswith("screw.lead = -0.01 is not allowed")
+    assert shown.startswith("screw.lead = '-10 mm' is not allowed")  # as typed
     assert page.is_hidden("#general_error")
     assert "stale" in (page.get_attribute("#results", "class") or "")
     # Corrected, the message goes and the results come back.

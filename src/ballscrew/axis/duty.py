@@ -385,6 +385,12 @@ def motion_plausibility(
     return raise_errors(found)
 
 
+def _shown(value: float, unit: str) -> str:
+    """``value`` [SI] with its unit, a feed in m/min too (the unit machine tools give)."""
+    trade = f" ({value * 60.0:.4g} m/min)" if unit == "m/s" else ""
+    return f"{value:.4g} {unit}{trade}"
+
+
 def _axis_limits(profile: Profile, axis: Axis, motion_field: str) -> list[Finding]:
     """The motion's largest speed and acceleration against the axis' limits, where given."""
     found = []
@@ -396,8 +402,8 @@ def _axis_limits(profile: Profile, axis: Axis, motion_field: str) -> list[Findin
         limit = getattr(axis, key)
         peak = float(np.max(np.abs(values))) if np.size(values) else 0.0
         if limit is not None and peak > limit * (1.0 + 1e-9):
-            found.append(Finding(f"{motion_field} {name}", f"{peak:.4g} {unit}",
-                                 f"axis.{key} = {limit:.4g} {unit}", "the case's [axis]",
+            found.append(Finding(f"{motion_field} {name}", _shown(peak, unit),
+                                 f"axis.{key} = {_shown(limit, unit)}", "the case's [axis]",
                                  True))  # fmt: skip
     return found
 

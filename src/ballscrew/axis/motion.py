@@ -102,14 +102,17 @@ def _phases(
         return v * (2.0 * t_j + t_a)
 
     v = feed
-    if distance(v) > stroke:  # the feed rate is not reached: bisect the peak speed
+    reached = distance(v) <= stroke
+    if not reached:  # the feed rate is not reached: bisect the peak speed
         lo, hi = 0.0, feed
         for _ in range(200):
             mid = 0.5 * (lo + hi)
             lo, hi = (mid, hi) if distance(mid) < stroke else (lo, mid)
         v = 0.5 * (lo + hi)
     a, t_j, t_a = shape(v)
-    t_v = max((stroke - distance(v)) / v, 0.0)
+    # No cruise where the feed is not reached: the bisection's remainder (1e-17 s) made a
+    # phase no sample can hold, and a triangular move's times repeated once chained.
+    t_v = max((stroke - distance(v)) / v, 0.0) if reached else 0.0
     if not smooth:
         return [(t_a, a, 0.0), (t_v, 0.0, 0.0), (t_a, -a, 0.0)]
     return [
@@ -169,7 +172,9 @@ def move(
     sign = 1.0 if stroke >= 0 else -1.0
     if s == 0.0:
         return dwell(dt, sample_time=dt)
-    phases = [ph for ph in _phases(s, v, a, j) if ph[0] > 0.0]
+    # A phase a billionth of a sample long is rounding (an S-curve's constant-acceleration
+    # phase where the jerk limits the acceleration): it holds no sample of its own.
+    phases = [ph for ph in _phases(s, v, a, j) if ph[0] > 1e-9 * dt]
     times, pos, spd, acc = [0.0], [0.0], [0.0], [0.0]
     t0, x0, v0 = 0.0, 0.0, 0.0
     for duration, a_start, jj in phases:
@@ -372,6 +377,7 @@ def parse_move(text: str) -> dict[str, float]:
     from ..io.units import to_si  # the unit library only when text is read
 
     out: dict[str, float] = {}
+    typed: dict[str, str] = {}  # each value as written, for a refusal's message
     parts = [p.strip() for p in text.split(",") if p.strip()]
     for before, after in itertools.pairwise(parts):
         # "force=1,2 kN": a decimal comma, which also separates the keys here.
@@ -392,15 +398,16 @@ def parse_move(text: str) -> dict[str, float]:
             raise BallScrewInputError(
                 f"--move {key}", text, f"{key} once (it is given twice; which one is meant?)"
             )
-        out[key] = to_si(f"--move {key}", value.strip(), MOVE_KEYS[key][0])
+        typed[key] = value.strip()
+        out[key] = to_si(f"--move {key}", typed[key], MOVE_KEYS[key][0])
     missing = [k for k, (_, needed) in MOVE_KEYS.items() if needed and k not in out]
     if missing:
         raise BallScrewInputError("--move", text, f"also {', '.join(missing)} (with units)")
     for key in ("feed", "acceleration", "jerk"):
         if key in out and not out[key] > 0.0:
-            raise BallScrewInputError(f"--move {key}", out[key], "more than 0")
+            raise BallScrewInputError(f"--move {key}", typed[key], "more than 0")
     if out["stroke"] == 0.0:
-        raise BallScrewInputError("--move stroke", 0.0, "a stroke, not 0")
+        raise BallScrewInputError("--move stroke", typed["stroke"], "a stroke, not 0")
     if out.get("dwell", 0.0) < 0.0:
-        raise BallScrewInputError("--move dwell", out["dwell"], "0 s or more")
+        raise BallScrewInputError("--move dwell", typed["dwell"], "0 s or more")
     return out

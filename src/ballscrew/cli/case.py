@@ -87,7 +87,7 @@ class _Notes:
 
 def _print_resolved(path: str) -> None:
     from ..design.ratings import plausibility, raise_errors
-    from ..io.case import load_case
+    from ..io.case import READ_AS, load_case
     from ..kinematics import rad_s_to_rpm
 
     case = load_case(path)
@@ -159,9 +159,12 @@ def _print_resolved(path: str) -> None:
     console.print(table)
     for note, number in cite.texts.items():
         console.print(f"[{number}] {note}", highlight=False)
-    if case.assumptions:
-        console.print(f"{len(case.assumptions)} value(s) marked as assumed:")
-        for a in case.assumptions:
+    read = [a for a in case.assumptions if a.reason.startswith(READ_AS)]
+    assumed = [a for a in case.assumptions if not a.reason.startswith(READ_AS)]
+    for group, header in ((assumed, "marked as assumed"), (read, "read one way, as given")):
+        if group:
+            console.print(f"{len(group)} value(s) {header}:")
+        for a in group:
             console.print(f"  {a.field} = {a.value}: {a.reason}", highlight=False)
     for finding in found:
         click.echo(f"warning: {finding}", err=True)

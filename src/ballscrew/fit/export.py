@@ -45,9 +45,20 @@ def log_speeds(
     (:func:`ballscrew.io.units.parse_speed_range`), the reading told in ``notes``.
     """
     values = np.asarray(parse_speed_range("--speed", text, lead, notes=notes), dtype=float)
-    if values.size < 3 or np.any(values <= 0.0):
-        raise BallScrewInputError("--speed", text, "3 or more positive speeds, e.g. "
-                                  "'0.1..3000:60 rpm'")  # fmt: skip
+    example = "e.g. '0.1..3000:60 rpm'" + (" or '0.1..30 m/min:60'" if lead else "")
+    low = int(np.sum(values <= 0.0))
+    if low:
+        raise BallScrewInputError(
+            "--speed", text,
+            f"speeds above 0 only ({low} of the {values.size} given "
+            f"{'is' if low == 1 else 'are'} 0 or below): the curve is fitted on a "
+            f"logarithmic speed scale and taken both ways of turning, so start a range "
+            f"above 0, {example}",
+        )  # fmt: skip
+    if values.size < 3:
+        raise BallScrewInputError(
+            "--speed", text, f"3 or more speeds to fit a curve to ({values.size} given), {example}"
+        )
     if ".." in text:
         values = np.geomspace(values.min(), values.max(), values.size)
     result: FloatArray = np.unique(values)

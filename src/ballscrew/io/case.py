@@ -58,6 +58,7 @@ from ..plausible import (
     check_moving_mass,
     check_span,
     check_wiper_drag,
+    least_nut_mass,
 )
 from .designation import resolve
 from .files import read_input_text
@@ -331,6 +332,7 @@ class Case:
         ratings = self.load_ratings()
         screw = dataclasses.asdict(self.screw)
         out: list[dict[str, Any]] = []
+        readings = {a.field: a.reason for a in self.assumptions if a.reason.startswith(READ_AS)}
         for key, source in sorted(self.sources.items()):
             section, name = key.split(".", 1)
             entry: dict[str, Any] = {"key": key, "value": None, "unit": KEY_UNITS.get(key, "")}
@@ -350,8 +352,11 @@ class Case:
                 value = value.tolist()
             elif isinstance(value, np.generic):
                 value = value.item()
+            if source != "estimated":  # an input: its unit's conversion's last bit dropped
+                value = _as_input(value)
             if value is None:
                 source, how = "not given", _absent(section, name)
+            how = how or readings.get(key, "")
             entry |= {"value": value, "source": source}
             if how:
                 entry["how"] = how
@@ -449,6 +454,15 @@ def _named(w: BallScrewPlausibilityWarning) -> BallScrewPlausibilityWarning:
 
 
 def _parse_case(text: str, source: str) -> Case:
+    try:
+        return _read_case(text, source)
+    except BallScrewInputError as exc:
+        if isinstance(exc.value, Assumed):  # named by the value's own text, not its table
+            raise BallScrewInputError(exc.field, exc.value.value, exc.allowed) from None
+        raise
+
+
+def _read_case(text: str, source: str) -> Case:
     data = _case_file(text, source)
     notes: list[Assumption] = []
     read: list[Reading] = []  # how texts that could be meant two ways were read
@@ -502,7 +516,7 @@ def _parse_case(text: str, source: str) -> Case:
     axis, thermal = _axis(data, si), _given_si(data, si, _THERMAL_UNITS)
     _axis_plausible(data.axis, screw, ratings.static, axis, thermal)
     motor, check = _motor(data, si), _check(data, si)
-    notes.extend(Assumption(r.field, r.text, f"read as {r.reading}") for r in read)
+    notes.extend(Assumption(r.field, r.text, f"{READ_AS}{r.reading}") for r in read)
     sources = _sources(data, notes)
     return Case(
         title=data.title,
@@ -590,9 +604,79 @@ def _absent(section: str, name: str) -> str:
     return text[start + len("none: ") : end]
 
 
+READ_AS = "read as "
+"""How an :class:`Assumption` that is a reading of a given text begins ('15 m/min' read as
+1500 rpm at the lead): the value is given, its reading told (:meth:`Case.input_values`'
+``how``), not assumed."""
+
+INPUT_DIGITS = 15
+"""Significant digits of an input converted to SI in :meth:`Case.input_values`: 700 mm is
+0.7 m, not 0.7000000000000001. Fifteen, the decimal digits a double holds exactly, so
+90 deg stays pi/2 to 1e-15 (the operating points, converted back to rpm, keep 12:
+:data:`ballscrew.report.outputs.INPUT_DIGITS`); what a run computes keeps every digit."""
+
+
+def _as_input(value: Any) -> Any:
+    """``value`` (a float, or a list of them) to :data:`INPUT_DIGITS` significant digits."""
+    if isinstance(value, list):
+        return [_as_input(v) for v in value]
+    if isinstance(value, float) and math.isfinite(value) and value != 0.0:
+        return float(f"{value:.{INPUT_DIGITS}g}")
+    return value
+
+
 def _typed(raw: Any) -> str:
     """A value as the file wrote it (an assumed value's own text)."""
     return str(raw.value if isinstance(raw, Assumed) else raw)
+
+
+def _as_typed(
+    exc: BallScrewInputError, section: str, given: Any, units: Mapping[str, str]
+) -> BallScrewInputError:
+    """``exc`` named as the file names it (``screw.ball_diameter``), its value as typed.
+
+    A library class refuses the number in SI (``0.00635``); the file's reader names
+    the text the file gave (``'1/4 in'``), or, for a value the file did not give (a
+    designation's), the SI number with its unit.
+    """
+    field = exc.field if exc.field.startswith(section) else f"{section}.{exc.field}"
+    name = field.removeprefix(f"{section}.")
+    value = exc.value
+    if isinstance(value, (int, float, np.floating)) and not isinstance(value, bool):
+        raw = getattr(given, name, None)
+        unit = units.get(name, "")
+        value = _typed(raw) if raw is not None else f"{float(value):g} {unit}".rstrip()
+    return BallScrewInputError(field, value, exc.allowed)
+
+
+_NON_NEGATIVE = ("moving_mass", "screw_inertia", "coupling_inertia", "motor_inertia", "nut_mass")
+"""``[axis]`` keys that may be 0; every other number of ``[axis]`` but the incline and the
+ambient temperature must be above 0 (what :class:`ballscrew.axis.energy.Axis` and the
+thermal node refuse, refused here with the value as typed)."""
+
+
+def _axis_signs(a: AxisSection, values: Mapping[str, Any]) -> None:
+    """Refuse a negative (or zero) ``[axis]`` number, naming it as the file typed it."""
+    units = dict(_AXIS_UNITS + _THERMAL_UNITS)
+    incline = values.get("incline", 0.0)
+    if not (math.isfinite(incline) and abs(incline) <= math.pi / 2):
+        raise BallScrewInputError(
+            "axis.incline", _typed(a.incline),
+            f"an angle from -90 to 90 deg above the horizontal (read as "
+            f"{math.degrees(incline):.4g} deg; 90 deg: vertical, the load hanging on the screw)",
+        )  # fmt: skip
+    for name, value in values.items():
+        if name in ("incline", "ambient") or not isinstance(value, float):
+            continue
+        low = name in _NON_NEGATIVE
+        if not (math.isfinite(value) and (value >= 0.0 if low else value > 0.0)):
+            unit = units.get(name, "")
+            raise BallScrewInputError(
+                f"axis.{name}", _typed(getattr(a, name)),
+                f"{'0 or more' if low else 'more than 0'} (read as {value:g} {unit})".replace(
+                    " )", ")"
+                ),
+            )  # fmt: skip
 
 
 def _axis_plausible(
@@ -607,11 +691,15 @@ def _axis_plausible(
     d·n limit; a screw shorter than its span names both, and blames the span when its
     shaft's bending frequency is the implausible one.
     """
+    _axis_signs(a, {**axis, **thermal})
     for name in AXIS_RANGES:
         if name in axis:
             check_axis_property(f"axis.{name}", axis[name], name)
     mass = axis.get("moving_mass", 0.0)
-    check_moving_mass("axis.moving_mass", _typed(a.moving_mass), mass, static_rating)
+    halves = 2 if screw.nut == "double" else 1
+    least = least_nut_mass(screw.pitch_diameter, screw.ball_diameter, screw.lead,
+                           screw.loaded_turns * screw.circuits, halves)  # fmt: skip
+    check_moving_mass("axis.moving_mass", _typed(a.moving_mass), mass, static_rating, least)
     if "max_acceleration" in axis:
         check_acceleration("axis.max_acceleration", _typed(a.max_acceleration),
                            axis["max_acceleration"], mass, static_rating)  # fmt: skip
@@ -797,6 +885,8 @@ def _sources(data: CaseFile, notes: list[Assumption]) -> dict[str, str]:
         for name in type(section).model_fields:
             out[f"{key}.{name}"] = "given" if name in section.model_fields_set else "default"
     for a in notes:
+        if a.reason.startswith(READ_AS):  # a text read one way ('15 m/min' as rpm): given
+            continue
         if a.field in out or "." in a.field:
             out[a.field] = "assumed"
     return out
@@ -853,22 +943,27 @@ def _screw(
     ways = [
         k for k in ("preload", "preload_drag_torque", "preload_share") if getattr(s, k) is not None
     ]
-    if len(ways) != 1:
+    # A plain single nut holds no preload: nothing to give (BallScrew refuses any but 0).
+    unloaded = not ways and geometry.get("nut") == "single"
+    if len(ways) != 1 and not unloaded:
         raise BallScrewInputError(
             "screw.preload",
             ", ".join(ways) or "(missing)",
             "exactly one of preload (a force), preload_drag_torque and preload_share "
-            "(of the dynamic load rating)",
+            '(of the dynamic load rating); a single nut (nut = "single") needs none',
         )
     try:
         screw = BallScrew(preload=0.0, **geometry)
     except BallScrewInputError as exc:
-        raise BallScrewInputError(f"screw.{exc.field}", exc.value, exc.allowed) from None
+        raise _as_typed(exc, "screw", s, SCREW_UNITS) from None
+    if unloaded:
+        notes.append(Assumption("screw.preload", "0 N", "a single nut holds no preload"))
+        return screw, origin, ratings_of(screw)
     preload = _preload(s, si, screw, rating)
     try:
         screw = screw.replace(preload=preload)
     except BallScrewInputError as exc:
-        raise BallScrewInputError(f"screw.{exc.field}", exc.value, exc.allowed) from None
+        raise _as_typed(exc, "screw", s, SCREW_UNITS) from None
     return screw, origin, ratings_of(screw)
 
 
@@ -1042,8 +1137,7 @@ def _lubricant(section: LubricantSection, notes: list[Assumption]) -> Lubricant:
             )
         return lubricants.get(name).replace(**given)
     except BallScrewInputError as exc:
-        field = exc.field if exc.field.startswith("lubricant") else f"lubricant.{exc.field}"
-        raise BallScrewInputError(field, exc.value, exc.allowed) from None
+        raise _as_typed(exc, "lubricant", section, LUBRICANT_UNITS) from None
 
 
 def default_case_path() -> Path:

@@ -132,7 +132,12 @@ class ScrewSection(BaseModel):
         "none",
     )
     preload: Value | None = _f(
-        None, "force", "axial preload force (give this or preload_drag_torque)", "2 kN", fill=True
+        None,
+        "force",
+        "axial preload force (give this, preload_drag_torque or preload_share; none for a "
+        "single nut, which holds none)",
+        "2 kN",
+        fill=True,
     )
     preload_drag_torque: Value | None = _f(
         None,

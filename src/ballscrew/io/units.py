@@ -569,7 +569,8 @@ def _per_turn(field: str, text: str, unit: Any, target: str, number: Any = None)
 _KINDS = (
     ("m", "a length"), ("kg", "a mass"), ("s", "a time"), ("N", "a force"),
     ("N*m", "a torque or an energy"), ("Pa", "a pressure or a stress"),
-    ("m/s", "a linear speed"), ("m/s**2", "an acceleration"), ("K", "a temperature"),
+    ("m/s", "a linear speed"), ("m/s**2", "an acceleration"), ("m/s**3", "a jerk"),
+    ("K", "a temperature"), ("K/W", "a thermal resistance"),
     ("C", "an electric charge"), ("F", "a capacitance"), ("A", "an electric current"),
     ("V", "a voltage"), ("gauss", "a magnetic flux density"),
     ("Hz", "a frequency or a speed of rotation"), ("W", "a power"), ("m**2", "an area"),

@@ -316,9 +316,10 @@ def _apply(
         if params.pop(key, None) is not None:
             notes.setdefault(key, f"S (spindle speed, line {number}): skipped, no motion")
     if "F" in params:
-        feed = params.pop("F") * unit / 60.0
-        if not feed > 0.0:
-            raise _error(number, "F", "a feed > 0 (mm/min under G21, in/min under G20)")
+        word = params.pop("F")
+        feed = word * unit / 60.0
+        if not feed > 0.0:  # the word as written, 'F-500'
+            raise _error(number, f"F{word:g}", "a feed > 0 (mm/min under G21, in/min under G20)")
         state.feed = feed
     for rotary in "ABC":
         if rotary in params:

@@ -37,6 +37,7 @@ import dataclasses
 import difflib
 import math
 import time
+import warnings
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
@@ -46,10 +47,10 @@ import numpy as np
 from .. import lubricants
 from ..axis.check import AxisCheck, run_check
 from ..axis.duty import HISTORY_POINTS, motion_plausibility, run_energy
-from ..axis.motion import Profile
+from ..axis.motion import MOVE_KEYS, Profile
 from ..axis.setup import axis_setup
 from ..axis.thermal import SteadyState, steady_temperatures, temperature_histories
-from ..errors import BallScrewInputError, FloatArray
+from ..errors import BallScrewInputError, BallScrewPlausibilityWarning, FloatArray
 from ..io.case import Case, parse_case
 from ..io.motors import MotorRow
 from .pool import DEFAULT_PRELOADS, Candidate, candidates, scatter_text
@@ -303,7 +304,7 @@ def evaluate(
     start = time.process_time()
     nan = {k: math.nan for k in FIGURES}
     try:
-        case = parsed or parse_case(candidate.text, source=candidate.name)
+        case = parsed or _parse_candidate(candidate)
         run = run_energy(case, profile, [model], cycles=cycles, temperature=temperature,
                          run_time=run_time, move=move, for_check=True,
                          steady=None if steady is None else {model: steady})  # fmt: skip
@@ -348,7 +349,7 @@ def _prepared(
     groups: dict[tuple[str, str], list[tuple[int, Case, Any]]] = {}
     for i, c in enumerate(found):
         try:
-            case = parse_case(c.text, source=c.name)
+            case = _parse_candidate(c)
             setup = axis_setup(case.screw, case.axis, case.thermal, travel)
             motion_plausibility(case, profile, setup.axis, "--move")
         except BallScrewInputError:
@@ -375,6 +376,34 @@ def _prepared(
                 i, case, _ = part[j]
                 out[i] = (case, dataclasses.replace(st, history=history))
     return out
+
+
+def _parse_candidate(candidate: Candidate) -> Case:
+    """The candidate's case; a plausibility warning it gives names the candidate's screw.
+
+    The user's ``[axis]`` meets each candidate's screw (its lead, its d·n limit, its
+    C_0a): a warning such as ``axis.max_feed`` past the nut's d·n limit belongs to
+    that candidate, and said without its name it reads as the user's case's own.
+    """
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        case = parse_case(candidate.text, source=candidate.name)
+    for w in caught:
+        m = w.message
+        if isinstance(m, BallScrewPlausibilityWarning):
+            m = BallScrewPlausibilityWarning(
+                f"{candidate.row.name}: {m.field}", m.value, m.allowed, m.source
+            )
+        warnings.warn(m, stacklevel=2)
+    return case
+
+
+def _duty(move: Mapping[str, float] | None) -> str:
+    """The move an error names, in SI ("stroke=0.4 m, feed=0.2 m/s, ..."); a profile's file."""
+    if not move:
+        return "the profile's duty"
+    return ", ".join(f"{k}={v:g} {MOVE_KEYS[k][0] if k in MOVE_KEYS else ''}".rstrip()
+                     for k, v in move.items())  # fmt: skip
 
 
 def non_dominated(values: FloatArray) -> FloatArray:
@@ -546,8 +575,9 @@ def run_select(
     if not feasible:
         failed = NoneFeasible(case.title, chosen, tuple(evaluated), model, "", inputs)
         closest = "; ".join(f"{e.name}: {e.binding}" for e in failed.rejected[:3])
-        value = f"a duty none of the {len(evaluated)} candidates passes"
-        allowed = (f"a lighter duty, or other candidates (wider filters, other preload classes "
+        value = _duty(move)
+        allowed = (f"a duty one of the candidates passes (none of the {len(evaluated)} does): "
+                   f"a lighter duty, or other candidates (wider filters, other preload classes "
                    f"or oils); the closest to passing: {closest}")  # fmt: skip
         failed = dataclasses.replace(failed, reason=str(BallScrewInputError(
             motion_field, value, allowed)))  # fmt: skip
