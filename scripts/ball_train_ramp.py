@@ -1,10 +1,10 @@
 """Whether the load ramps at a circuit's ends give the ball train a force linear in preload.
 
 Research for issue 38, not part of the model. Run from the repository root with
-``PYTHONPATH=src .venv/bin/python scripts/ball_train_ramp.py`` (about three minutes).
+``PYTHONPATH=src .venv/bin/python scripts/ball_train_ramp.py`` (about eight minutes).
 
 The tolerance train (``ball_train="tolerance"``) grows as Q^(2/3) with the ball load Q,
-so its preload exponent is 0.73 where the makers' rule needs about 1. This script tries
+so the screw torque's preload exponent is 0.73 where the makers' rule needs about 1. This tries
 a load-dependent offset: the elastic shift of the contact angle. Two grooves whose
 curvature centres are A = (f_s + f_n - 1) D_w apart (unloaded) and keep their radial
 separation A cos(alpha0) while the nut is pushed along the axis give a ball with normal
@@ -38,7 +38,15 @@ VG 68, 40 C):
    compression between neighbours, the ball-ball dissipation and the train's whole
    dissipation (ball-ball sliding plus groove creep) of the screw as a torque, their
    ratio to the random-only train, and the preload exponents from 1 to 4 kN, at 10 and
-   100 rpm.
+   100 rpm;
+4. two variants at 100 rpm: the random train with the ramp balls' loads but without their
+   angle shift (how much the soft ramp balls alone take away), and a lead-in whose relief
+   is fixed in micrometres (linear in approach over m = 5, 10, 20 balls, as deep as 1 to 3
+   times the bulk's approach at 2 kN; the balls' loads balance the preload), so that the
+   number of loaded balls grows with the preload: the train torque at 2 kN against the
+   train without ramps, the preload exponents of the train torque with and without the
+   angle shift, and of the whole screw torque (the complete model's other mechanisms
+   added) from 1 to 4 and 4 to 8 kN.
 """
 
 from __future__ import annotations
@@ -49,7 +57,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ballscrew import lubricants, reference_screw
+from ballscrew import friction_torque, lubricants, reference_screw
 from ballscrew import rolling_losses as rl
 from ballscrew.ball_train import _creep_table, orbital_sensitivity, train_by_ball
 from ballscrew.friction._common import limiting_shear, model_state
@@ -63,6 +71,7 @@ PRELOADS = (1000.0, 2000.0, 4000.0)
 SPEEDS = (10.0, 100.0)
 DRAWS = 300
 MU_BL = 0.1
+SLIDING = float(neighbour_sliding(reference_screw(), 1.0))  # ball-ball sliding per screw speed
 
 
 @dataclass(frozen=True)
@@ -106,19 +115,58 @@ def ball_at(screw, oil, rpm: float, preload: float):  # type: ignore[no-untyped-
     return ball, state, by_name["screw-1"], tau0, gamma_l
 
 
-def ramp_train(screw, oil, rpm: float, preload: float, m: int, bulk: Ball):  # type: ignore[no-untyped-def]
-    """Contact-angle offsets from the bulk [rad] and the contacts (2, N) of a train with ramps."""
+def ramp_train(screw, oil, rpm: float, preload: float, m: int, bulk: Ball,  # type: ignore[no-untyped-def]
+               relief: float | None = None, shift: bool = True):  # fmt: skip
+    """Contact-angle offsets from the bulk [rad] and the contacts (2, N) of a train with ramps.
+
+    The ramp's loads rise linearly, q_j = Q j/(m + 1), the bulk at the model's ball load Q.
+    With ``relief`` [m] the groove is relieved instead by a fixed depth profile,
+    r_j = relief (1 - j/(m + 1)) at the j-th ball from an end: the nut's common axial
+    displacement gives every ball the approach delta_b - r_j, with delta_b such that the
+    loads (Hertz, q proportional to approach^(3/2)) still carry the preload of N balls at
+    the model's Q; a ball left without approach is unloaded and leaves the train.
+    ``shift=False`` keeps the ramp balls' loads but not their angle shift.
+    """
+    from scipy.optimize import brentq
+
     alpha0 = screw.contact_angle
     spread = (screw.conformity_screw + screw.conformity_nut - 1.0) * screw.ball_diameter
-    balls = []
-    for i in range(BALLS):
-        j = min(i + 1, BALLS - i)  # position from the nearer end
-        balls.append(ball_at(screw, oil, rpm, preload * j / (m + 1))[0] if j <= m else bulk)
-    a_bulk = loaded_angle(alpha0, spread, bulk.approach)
+    ends = [min(i + 1, BALLS - i) for i in range(BALLS)]  # position from the nearer end
+    if relief is None:
+        balls = [
+            ball_at(screw, oil, rpm, preload * j / (m + 1))[0] if j <= m else bulk for j in ends
+        ]
+        a_bulk = loaded_angle(alpha0, spread, bulk.approach)
+    else:
+        r = np.array([relief * (1.0 - j / (m + 1)) if j <= m else 0.0 for j in ends])
+        d0 = bulk.approach
+        d_b = brentq(
+            lambda d: float(np.sum(np.clip(d - r, 0.0, None) ** 1.5)) - BALLS * d0**1.5,
+            d0, d0 + relief,
+        )  # fmt: skip
+        top = ball_at(screw, oil, rpm, preload * (d_b / d0) ** 1.5)[0]
+        balls = [
+            ball_at(screw, oil, rpm, preload * ((d_b - x) / d0) ** 1.5)[0] if x > 0.0 else top
+            for x in r
+            if d_b - x > 0.0
+        ]
+        a_bulk = loaded_angle(alpha0, spread, top.approach)
     offset = np.array([loaded_angle(alpha0, spread, x.approach) - a_bulk for x in balls])
     cap = np.array([[x.capacity[s] for x in balls] for s in (0, 1)])
     sc = np.array([[x.scale[s] for x in balls] for s in (0, 1)])
-    return offset, cap, sc
+    return offset * (1.0 if shift else 0.0), cap, sc
+
+
+def train_torque(natural, cap, sc, bulk, state, contact, tau0, gamma_l):  # type: ignore[no-untyped-def]
+    """Mean compression [N], ball-ball and whole train torque of the screw [N m]."""
+    comp, creep = solve(natural, cap, sc, bulk.aspect)
+    mean = float(comp.mean())
+    mu_bb = float(np.ravel(ball_ball_friction(
+        state, contact, np.array(mean), MU_BL, tau0, gamma_l, asperity_b=1.42, asperity_c=0.8,
+    ))[0])  # fmt: skip
+    trains = 2 * state.screw.circuits  # a double nut: one train per circuit of each half
+    bb = trains * mu_bb * float(comp.sum(axis=1).mean()) * SLIDING
+    return mean, bb, bb + trains * float(creep.mean())
 
 
 def solve(natural: np.ndarray, capacity: np.ndarray, scale: np.ndarray, aspect: tuple):  # type: ignore[no-untyped-def,type-arg]
@@ -178,8 +226,6 @@ def main() -> None:
     k = orbital_sensitivity(screw.ball_diameter, screw.pitch_diameter, alpha0)
     unit = kinematics(screw, 1.0)
     centre = float(unit.orbital_speed) * 0.5 * screw.pitch_diameter / math.cos(screw.lead_angle)
-    sliding = float(neighbour_sliding(screw, 1.0))
-    trains = 2 * screw.circuits  # a double nut: one train per circuit of each half
     rng = np.random.default_rng(20261127)
     unit_draws = rng.standard_normal((DRAWS, BALLS))
 
@@ -230,14 +276,8 @@ def main() -> None:
                         continue
                     draws = unit_draws if scatter > 0.0 else unit_draws[:1]
                     natural = centre * (1.0 + k * (offset + scatter * draws))
-                    comp, creep = solve(natural, cap, sc, bulk.aspect)
-                    mean = float(comp.mean())
-                    mu_bb = float(np.ravel(ball_ball_friction(
-                        state, contact, np.array(mean), MU_BL, tau0, gamma_l,
-                        asperity_b=1.42, asperity_c=0.8,
-                    ))[0])  # fmt: skip
-                    bb = trains * mu_bb * float(comp.sum(axis=1).mean()) * sliding
-                    whole = bb + trains * float(creep.mean())
+                    mean, bb, whole = train_torque(natural, cap, sc, bulk, state, contact, tau0,
+                                                   gamma_l)  # fmt: skip
                     results[(label, m, f)] = (mean, bb, whole)
         for label in ("random", "ramp only"):
             name = "with random scatter 0.286 deg" if label == "random" else "ramp alone"
@@ -251,6 +291,78 @@ def main() -> None:
                 expo = [math.log(row[2][i] / row[0][i]) / math.log(4.0) for i in range(3)]
                 print(f"   {m:3d}  {cells}  | {row[1][0] / base[0]:5.2f} {row[1][2] / base[2]:5.2f}"
                       f"     |        {expo[0]:5.2f} {expo[1]:5.2f} {expo[2]:5.2f}")  # fmt: skip
+
+    variants(screw, oil, centre, k, unit_draws)
+
+
+def other_torque(screw, oil, rpm: float, preload: float) -> float:  # type: ignore[no-untyped-def]
+    """The complete model's torque less its ball-ball term [N m] (the tolerance train's run)."""
+    r = friction_torque(screw.replace(preload=preload), oil, speed=rpm_to_rad_s(rpm),
+                        temperature=40.0, axial_load=0.0, ball_train="tolerance")  # fmt: skip
+    return float(r.total) - float(r.components["ball_ball"])
+
+
+def variants(screw, oil, centre: float, k: float, unit_draws: np.ndarray) -> None:  # type: ignore[no-untyped-def,type-arg]
+    """Section 4: the ramps' softness alone, and a relief fixed in micrometres."""
+    rpm = 100.0
+    print(f"\n4. Variants at {rpm:.0f} rpm, 40 C")
+    bulk, state, contact, tau0, gamma_l = ball_at(screw, oil, rpm, 2000.0)
+    args = (bulk, state, contact, tau0, gamma_l)
+    scatter = CONTACT_ANGLE_SCATTER
+    offset, cap, sc = ramp_train(screw, oil, rpm, 2000.0, 0, bulk)
+    base = train_torque(centre * (1.0 + k * scatter * unit_draws), cap, sc, *args)[0]
+    for m in (5, 10):
+        offset, cap, sc = ramp_train(screw, oil, rpm, 2000.0, m, bulk, shift=False)
+        soft = train_torque(centre * (1.0 + k * scatter * unit_draws), cap, sc, *args)[0]
+        print(
+            f"   random scatter, ramp loads of m = {m:2d} without their angle shift, 2 kN: "
+            f"mean compression {soft:.3f} N = {soft / base:.3f} of the train without ramps"
+        )
+    print(
+        "   relief fixed in micrometres: approach less than the bulk's by r_j = depth (1 - j/(m+1))"
+    )
+    print("   at the j-th ball from an end (depth in multiples of the bulk approach at 2 kN, the")
+    print("   loads balancing the preload); loaded balls at 1, 2, 4, 8 kN; train torque at 2 kN")
+    print("   over the train without ramps; preload exponents of the train torque with random")
+    print("   scatter, with and without the angle shift (1-4 kN), and of the whole screw torque")
+    print("    m  depth [um]   loaded balls    T/T0 | train 1-4  no shift | whole 1-4  whole 4-8")
+    loads = (*PRELOADS, 8000.0)
+    others = {f: other_torque(screw, oil, rpm, f) for f in loads}
+    flat0: dict[float, float] = {}
+    for f in loads:
+        bulk_f, state_f, contact_f, *_ = ball_at(screw, oil, rpm, f)
+        _, cap, sc = ramp_train(screw, oil, rpm, f, 0, bulk_f)
+        natural = centre * (1.0 + k * scatter * unit_draws)
+        flat0[f] = train_torque(natural, cap, sc, bulk_f, state_f, contact_f, tau0, gamma_l)[2]
+    for m in (5, 10, 20):
+        for depth in (1.0, 2.0, 3.0):
+            torque, plain, loaded = {}, {}, {}
+            for f in loads:
+                bulk_f, state_f, contact_f, *_ = ball_at(screw, oil, rpm, f)
+                a = (bulk_f, state_f, contact_f, tau0, gamma_l)
+                relief = depth * bulk.approach
+                offset, cap, sc = ramp_train(screw, oil, rpm, f, m, bulk_f, relief=relief)
+                n = loaded[f] = offset.size
+                natural = centre * (1.0 + k * (offset + scatter * unit_draws[:, :n]))
+                torque[f] = train_torque(natural, cap, sc, *a)[2]
+                natural = centre * (1.0 + k * scatter * unit_draws[:, :n])
+                plain[f] = train_torque(natural, cap, sc, *a)[2]
+
+            def slope(t: dict[float, float], lo: float, hi: float, add: bool = False) -> float:
+                extra = others if add else dict.fromkeys(loads, 0.0)
+                return math.log((t[hi] + extra[hi]) / (t[lo] + extra[lo])) / math.log(hi / lo)
+
+            print(f"   {m:2d}  {depth * bulk.approach * 1e6:8.1f}  "
+                  + " ".join(f"{loaded[f]:2d}" for f in loads)
+                  + f"  {torque[2000.0] / flat0[2000.0]:6.2f} |"
+                  f"  {slope(torque, 1000.0, 4000.0):8.2f}  {slope(plain, 1000.0, 4000.0):8.2f} |"
+                  f"  {slope(torque, 1000.0, 4000.0, True):8.2f}"
+                  f"  {slope(torque, 4000.0, 8000.0, True):9.2f}")  # fmt: skip
+    whole = [math.log((others[hi] + flat0[hi]) / (others[lo] + flat0[lo])) / math.log(hi / lo)
+             for lo, hi in ((1000.0, 4000.0), (4000.0, 8000.0))]  # fmt: skip
+    print(f"   without ramps: the whole screw torque's exponents {whole[0]:.2f} (1-4 kN), "
+          f"{whole[1]:.2f} (4-8 kN); the other mechanisms [N m] "
+          + ", ".join(f"{others[f]:.3f}" for f in loads))  # fmt: skip
 
 
 if __name__ == "__main__":
