@@ -38,6 +38,7 @@ from .errors import (
     BallScrewInputError,
     BallScrewPlausibilityWarning,
     FloatArray,
+    check_choice,
     check_finite,
     check_in_range,
     check_nonnegative,
@@ -868,8 +869,7 @@ class Lubricant:
         >>> bool(eta[0] > eta[1])
         True
         """
-        if model not in PRESSURE_VISCOSITY_MODELS:
-            raise BallScrewInputError("model", model, f"one of {list(PRESSURE_VISCOSITY_MODELS)}")
+        check_choice("model", model, PRESSURE_VISCOSITY_MODELS)
         t = self.check_temperature("temperature", temperature)
         eta0 = self.dynamic_viscosity(t)
         if model == "roelands":

@@ -15,6 +15,7 @@ import numpy.typing as npt
 from .errors import FloatArray, check_in_range, check_nonnegative, check_positive
 
 __all__ = [
+    "STANDARD_GRAVITY",
     "STEEL_DENSITY",
     "STEEL_POISSON_RATIO",
     "STEEL_SPECIFIC_HEAT",
@@ -24,6 +25,9 @@ __all__ = [
 ]
 
 ArrayLike = npt.ArrayLike
+
+STANDARD_GRAVITY: float = 9.80665
+"""Standard acceleration of gravity [m/s²] (CGPM 1901, ISO 80000-3)."""
 
 STEEL_YOUNGS_MODULUS: float = 2.1e11
 """Young's modulus of bearing steel [Pa] (the default of balls, screw and nut)."""

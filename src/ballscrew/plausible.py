@@ -90,14 +90,13 @@ import numpy as np
 import numpy.typing as npt
 
 from .errors import BallScrewInputError, BallScrewPlausibilityWarning
-from .materials import STEEL_DENSITY
+from .materials import STANDARD_GRAVITY, STEEL_DENSITY
 
 __all__ = [
     "AXIS_RANGES",
     "BALL_SERIES_MM",
     "LOWEST_FREQUENCY",
     "LUBRICANT_RANGES",
-    "STANDARD_GRAVITY",
     "TYPICAL_TURNS",
     "TypicalRange",
     "check_acceleration",
@@ -338,9 +337,6 @@ def check_wiper_drag(
 
 
 # --- the axis a screw drives ---------------------------------------------------------------
-
-STANDARD_GRAVITY = 9.80665
-"""[m/s²]."""
 
 STATIC_SOURCE = (
     "ISO 3408-5:2006 5.1: the static rating C_0a is the axial load that dents the most loaded "

@@ -10,8 +10,9 @@ import numpy as np
 import pytest
 
 from ballscrew import friction_torque, reference_screw
-from ballscrew.axis.energy import STANDARD_GRAVITY, Axis, weight_back_driving
+from ballscrew.axis.energy import Axis, weight_back_driving
 from ballscrew.axis.setup import axis_setup, shaft_inertia
+from ballscrew.materials import STANDARD_GRAVITY
 from shared import PAO
 
 OIL = PAO

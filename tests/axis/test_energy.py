@@ -10,8 +10,9 @@ import numpy as np
 import pytest
 
 from ballscrew import friction_torque, reference_screw
-from ballscrew.axis.energy import STANDARD_GRAVITY, Axis, axis_cycle
+from ballscrew.axis.energy import Axis, axis_cycle
 from ballscrew.axis.motion import Profile, back_and_forth, move
+from ballscrew.materials import STANDARD_GRAVITY
 from shared import PAO
 
 OIL = PAO

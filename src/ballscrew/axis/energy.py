@@ -60,6 +60,7 @@ from ..errors import (
 )
 from ..geometry import BallScrew
 from ..lubricant import Lubricant
+from ..materials import STANDARD_GRAVITY
 from .motion import Profile
 
 __all__ = [
@@ -72,9 +73,6 @@ __all__ = [
     "self_locking",
     "weight_back_driving",
 ]
-
-STANDARD_GRAVITY = 9.80665
-"""[m/s²]."""
 
 
 @dataclass(frozen=True)

@@ -46,7 +46,7 @@ from ..errors import (
 from ..geometry import BallScrew
 from ..helix import kernel_scope
 from ..lubricant import Lubricant
-from ..materials import STEEL_DENSITY, STEEL_SPECIFIC_HEAT
+from ..materials import STANDARD_GRAVITY, STEEL_DENSITY, STEEL_SPECIFIC_HEAT
 from ..numerics import illinois
 from .energy import Axis, screw_motion
 from .motion import Profile
@@ -189,7 +189,7 @@ def _natural(
     surf = np.asarray(surface, dtype=float)
     dt = np.maximum(np.abs(surf - ambient), 1e-9)
     film = 0.5 * (surf + ambient) + 273.15
-    ra = 9.80665 * (1 / film) * dt * d**3 / (nu * nu / pr)
+    ra = STANDARD_GRAVITY * (1 / film) * dt * d**3 / (nu * nu / pr)
     natural = (0.60 + 0.387 * ra ** (1 / 6) / (1 + (0.559 / pr) ** (9 / 16)) ** (8 / 27)) ** 2
     h: FloatArray = natural * k / d
     return h

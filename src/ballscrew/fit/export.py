@@ -19,7 +19,7 @@ from typing import Any
 
 import numpy as np
 
-from ..axis.energy import STANDARD_GRAVITY, Axis
+from ..axis.energy import Axis
 from ..axis.setup import axis_setup
 from ..chain import friction_torque
 from ..errors import BallScrewInputError, FloatArray
@@ -28,6 +28,7 @@ from ..io.case import Case
 from ..io.measured import MeasuredCurve
 from ..io.units import Reading, parse_speed_range
 from ..kinematics import rad_s_to_rpm
+from ..materials import STANDARD_GRAVITY
 from .controller import FrictionForm, fit_form, form_curve, with_intervals
 from .friction_map import FrictionMap, friction_map
 

@@ -51,12 +51,12 @@ import numpy as np
 import numpy.typing as npt
 from scipy.optimize import lsq_linear
 
-from ..axis.energy import STANDARD_GRAVITY
 from ..chain import friction_torque
 from ..errors import BallScrewInputError, FloatArray
 from ..friction import get_model
 from ..io.case import Case
 from ..kinematics import rad_s_to_rpm
+from ..materials import STANDARD_GRAVITY
 
 _LOWER = np.array([0.0, 0.0, -np.inf, 0.0])
 """Bounds of (c0, c1, c2, b): a friction that never drives the motion."""

@@ -45,7 +45,7 @@ from typing import Any
 
 import numpy as np
 
-from ..axis.energy import STANDARD_GRAVITY, CycleResult, axis_cycle
+from ..axis.energy import CycleResult, axis_cycle
 from ..axis.motion import Profile
 from ..axis.setup import AxisSetup, axis_setup
 from ..axis.thermal import ThermalNode, convection_coefficient
@@ -59,6 +59,7 @@ from ..design.stiffness import (
 )
 from ..errors import BallScrewInputError, FloatArray
 from ..io.machine import LINEAR_AXES, Machine
+from ..materials import STANDARD_GRAVITY
 from .gcode import ARC, Program, read_program
 from .planner import Limits, Motion, plan
 

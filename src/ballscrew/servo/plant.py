@@ -48,7 +48,6 @@ from typing import Any
 
 import numpy as np
 
-from ..axis.energy import STANDARD_GRAVITY
 from ..axis.setup import axis_setup
 from ..design.limits import root_diameter
 from ..design.stiffness import (
@@ -60,6 +59,7 @@ from ..design.stiffness import (
 from ..errors import BallScrewInputError, FloatArray
 from ..fit.friction_map import friction_map
 from ..io.case import Case
+from ..materials import STANDARD_GRAVITY
 
 __all__ = [
     "GUIDE_PRESLIDING",

@@ -264,8 +264,8 @@ def controller_table(
     import math
     import warnings
 
-    from ..axis.energy import STANDARD_GRAVITY
     from ..fit.friction_map import friction_map
+    from ..materials import STANDARD_GRAVITY
 
     if target not in CONTROLLERS:
         raise BallScrewInputError("--form", target, f"one of {list(CONTROLLERS)}")
