@@ -136,6 +136,14 @@ def test_a_range_of_feeds_gives_evenly_spaced_speeds() -> None:
     assert "0 to 3000 rpm at lead 10 mm" in str(read[0])
 
 
+def test_a_list_of_feeds_is_told_value_by_value_in_its_order() -> None:
+    # 15 m/min / 10 mm = 1500 rpm; 1/4 in/s = 6.35 mm/s -> 6.35 / 10 * 60 = 38.1 rpm.
+    read: list = []
+    w = parse_speed_range("--speed", "15 m/min, 1/4 in/s", 0.010, notes=read)
+    assert [round(v * 30.0 / math.pi, 9) for v in w] == [1500, 38.1]
+    assert "1500, 38.1 rpm at lead 10 mm" in str(read[0])
+
+
 def test_a_speed_of_rotation_is_read_as_before_without_a_note() -> None:
     read: list = []
     (w,) = parse_speed_range("--speed", "1500 rpm", 0.010, notes=read)

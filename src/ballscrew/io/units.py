@@ -1045,7 +1045,10 @@ def parse_speed_range(
             ) from None  # fmt: skip
     speeds = [2.0 * math.pi * v / lead for v in feeds]
     rpm = [v / lead * 60.0 for v in feeds]
-    shown = f"{rpm[0]:.6g}" if len(rpm) == 1 else f"{min(rpm):.6g} to {max(rpm):.6g}"
+    if len(rpm) > 1 and (".." in str(text) or "\u2026" in str(text)):  # a range
+        shown = f"{rpm[0]:.6g} to {rpm[-1]:.6g}"
+    else:  # one value, or a list as typed
+        shown = ", ".join(f"{n:.6g}" for n in rpm)
     _tell([Reading(field, str(text).strip(), f"{shown} rpm at lead {lead * 1e3:.6g} mm (a feed "
                    "v turns the screw at n = v / lead)")], notes)  # fmt: skip
     return speeds
