@@ -433,10 +433,8 @@ def evaluate(payload: Mapping[str, Any], limits: Limits = LIMITS) -> dict[str, A
         if not isinstance(fields, Mapping):
             raise BallScrewInputError("case", fields, "the fields of a case file (an object)")
         names = _models(payload.get("models"), limits)
-        system = unit_system("units", payload.get("units"), "si")
         case = load_case(fields, limits)
-        if payload.get("units") is None:
-            system = case.output_units
+        system = unit_system("units", payload.get("units"), case.output_units)
         # The commands print what the page shows: --units when the case file says otherwise.
         flag = "" if system == case.output_units else f" --units {system}"
         w, t, f = _operating_points(case, {}, limits)
