@@ -144,6 +144,13 @@ def test_a_list_of_feeds_is_told_value_by_value_in_its_order() -> None:
     assert "1500, 38.1 rpm at lead 10 mm" in str(read[0])
 
 
+def test_a_number_refused_for_its_form_is_not_offered_as_a_feed() -> None:
+    # '3.000' may be 3 or 3000: the refusal is about the number, whatever its unit.
+    with pytest.raises(BallScrewInputError) as info:
+        parse_speed_range("--speed", "3.000 rpm", 0.010)
+    assert "thousands" in info.value.allowed and "feed" not in info.value.allowed
+
+
 def test_a_speed_of_rotation_is_read_as_before_without_a_note() -> None:
     read: list = []
     (w,) = parse_speed_range("--speed", "1500 rpm", 0.010, notes=read)

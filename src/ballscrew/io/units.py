@@ -1037,7 +1037,9 @@ def parse_speed_range(
             raise
         try:
             feeds = parse_range(field, text, "m/s", default_points)
-        except BallScrewInputError:
+        except BallScrewInputError as again:
+            if again.allowed == refused.allowed:  # not the unit: the number, as typed
+                raise refused from None
             raise BallScrewInputError(
                 refused.field, refused.value,
                 f"{refused.allowed} (or a feed, e.g. '15 m/min', read as the screw speed at "
