@@ -144,6 +144,13 @@ def test_a_list_of_feeds_is_told_value_by_value_in_its_order() -> None:
     assert "1500, 38.1 rpm at lead 10 mm" in str(read[0])
 
 
+def test_a_range_of_one_point_is_told_as_that_one_speed() -> None:
+    read: list = []
+    assert parse_speed_range("--speed", "0..30 m/min:1", 0.010, notes=read) == [0.0]
+    assert read[0].reading.startswith("0 rpm at lead 10 mm")
+    assert " to " not in read[0].reading
+
+
 def test_a_number_refused_for_its_form_is_not_offered_as_a_feed() -> None:
     # '3.000' may be 3 or 3000: the refusal is about the number, whatever its unit.
     with pytest.raises(BallScrewInputError) as info:
