@@ -24,8 +24,8 @@ from ballscrew.report.controller_tables import (
     merge_lincurve,
     takes_decimals,
 )
-from ballscrew.report.friction_files import c_header
-from ballscrew.report.friction_fmu import fmu_bytes
+from ballscrew.report.friction_files import c_header, write_map
+from ballscrew.report.friction_fmu import find_compiler, fmi_platform, fmu_build, fmu_bytes
 from ballscrew.servo.tables import DriveUnit, controller_table
 from shared import ROOT
 
@@ -234,18 +234,16 @@ def test_more_points_fit_better(case) -> None:  # type: ignore[no-untyped-def]
     assert errors[0] > errors[1] > errors[2]
 
 
-@pytest.mark.skipif(shutil.which("cmake") is None, reason="cmake builds the FMU's binary")
-def test_the_fmu_equals_the_map_at_its_nodes(case, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
-    from fmpy import simulate_fmu
-    from fmpy.build import build_platform_binary
+@pytest.fixture(scope="module")
+def friction_map_small(case):  # type: ignore[no-untyped-def]
+    return friction_map(case, "complete", speeds=np.geomspace(1.0, 300.0, 6),
+                        loads=[-2000.0, 0.0, 2000.0], temperatures=[20.0, 40.0])  # fmt: skip
 
-    m = friction_map(case, "complete", speeds=np.geomspace(1.0, 300.0, 6),
-                     loads=[-2000.0, 0.0, 2000.0], temperatures=[20.0, 40.0])  # fmt: skip
-    folder = tmp_path / "fmu"
-    with zipfile.ZipFile(io.BytesIO(fmu_bytes(m, "test", c_header(m, "test")))) as z:
-        z.extractall(folder)
-    (tmp_path / "build").mkdir()
-    build_platform_binary(folder, build_dir=tmp_path / "build")
+
+def _at_the_nodes(m, fmu: Path) -> None:  # type: ignore[no-untyped-def]
+    """Simulate ``fmu`` (a file or an extracted folder) at the map's nodes with FMPy."""
+    from fmpy import simulate_fmu
+
     speeds = m.motor_speeds
     for t_index, f_index in ((0, 0), (1, 2), (1, 1)):
         n = speeds.size
@@ -257,10 +255,62 @@ def test_the_fmu_equals_the_map_at_its_nodes(case, tmp_path: Path) -> None:  # t
         inputs["motor_speed"] = np.repeat(speeds, 2)
         inputs["axial_load"] = m.loads[f_index]
         inputs["temperature"] = m.temperatures[t_index]
-        result = simulate_fmu(folder, start_time=0.0, stop_time=float(n), output_interval=1.0,
-                              input=inputs, output=["friction_torque"])  # fmt: skip
+        result = simulate_fmu(str(fmu), start_time=0.0, stop_time=float(n),
+                              output_interval=1.0, input=inputs,
+                              output=["friction_torque"])  # fmt: skip
         got = result["friction_torque"][1:]
         expected = m.motor_torque[t_index, f_index, :]
         # 1e-6 relative: the header prints the table with 17 digits, so the FMU's
         # interpolation at a node returns the node's value to rounding.
         assert got == pytest.approx(expected, rel=1e-6)
+
+
+@pytest.mark.skipif(find_compiler() is None, reason="no C compiler: the FMU is written "
+                    "without a binary (the export says so)")  # fmt: skip
+def test_the_fmu_validates_and_simulates_as_written(friction_map_small, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
+    # The file the CLI writes, as it is: FMPy's validation finds no problem (among its
+    # checks: ModelStructure/InitialUnknowns, FMI 2.0 section 2.2.8), the archive holds
+    # the sources and this platform's binary, and FMPy simulates the .fmu itself.
+    from fmpy.validation import validate_fmu
+
+    m = friction_map_small
+    path = tmp_path / "friction.fmu"
+    notes = write_map(m, path, "test")
+    assert validate_fmu(str(path)) == []
+    with zipfile.ZipFile(path) as z:
+        names = set(z.namelist())
+        xml = z.read("modelDescription.xml").decode()
+    platform = fmi_platform()
+    assert {"sources/ballscrew_friction_map.h", "sources/ballscrew_friction_fmu.c"} <= names
+    assert any(n.startswith(f"binaries/{platform}/BallScrewFriction.") for n in names)
+    assert re.search(r"<InitialUnknowns>\s*<Unknown index=\"4\" dependencies=\"1 2 3\"/>", xml)
+    assert len(notes) == 1 and f"binary for {platform} compiled with" in notes[0]
+    _at_the_nodes(m, path)
+
+
+def test_without_a_compiler_the_fmu_is_the_sources_with_a_note(
+    friction_map_small, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:  # type: ignore[no-untyped-def]
+    monkeypatch.setenv("CC", "no-such-compiler-ballscrew")
+    build = fmu_build(friction_map_small, "test", c_header(friction_map_small, "test"))
+    assert build.platform is None and build.compiler is None
+    assert "no C compiler found" in build.note and "build_platform_binary" in build.note
+    with zipfile.ZipFile(io.BytesIO(build.data)) as z:
+        assert not any(n.startswith("binaries/") for n in z.namelist())
+
+
+@pytest.mark.skipif(shutil.which("cmake") is None, reason="cmake builds the FMU's binary")
+def test_the_source_fmu_builds_elsewhere_and_equals_the_map(
+    friction_map_small, tmp_path: Path
+) -> None:  # type: ignore[no-untyped-def]
+    # The sources alone, compiled as an importer does it (FMPy with CMake and the FMI 2.0
+    # headers it ships, not the package's own declarations), give the map at its nodes.
+    from fmpy.build import build_platform_binary
+
+    m = friction_map_small
+    folder = tmp_path / "fmu"
+    with zipfile.ZipFile(io.BytesIO(fmu_bytes(m, "test", c_header(m, "test")))) as z:
+        z.extractall(folder)
+    (tmp_path / "build").mkdir()
+    build_platform_binary(folder, build_dir=tmp_path / "build")
+    _at_the_nodes(m, folder)

@@ -31,7 +31,8 @@ __all__ = ["export_friction_command"]
               default="stribeck", show_default=True,
               help="Form the controller takes; load-map: the friction over speed, signed axial "
               "load and temperature with a compact load- and direction-dependent form, written "
-              "by --out as .csv, .mat, .mo (Modelica), .h (C) or .fmu (FMI 2.0 C source); "
+              "by --out as .csv, .mat, .mo (Modelica), .h (C) or .fmu (FMI 2.0, sources and this "
+              "platform's binary); "
               "lincurve (LinuxCNC, 16 points), frict-comp (TwinCAT CNC, 20 points, needs "
               "--drive-unit and --axis-number), charcurve (CODESYS, 11 points): a "
               "compensation table.")  # fmt: skip
@@ -264,6 +265,8 @@ def _print_map(m: FrictionMap, out_file: str | None, json_file: str | None) -> N
         click.echo(f"note: {note}", err=True)
     if out_file:
         with writing("--out", out_file):
-            write_map(m, Path(out_file), __version__)
+            notes = write_map(m, Path(out_file), __version__)
+        for note in notes:
+            click.echo(f"note: {note}", err=True)
     if json_file:
         write_result(json_file, m.as_dict())
