@@ -314,3 +314,45 @@ def test_the_source_fmu_builds_elsewhere_and_equals_the_map(
     (tmp_path / "build").mkdir()
     build_platform_binary(folder, build_dir=tmp_path / "build")
     _at_the_nodes(m, folder)
+
+
+def test_the_cli_writes_two_axes_and_a_twincat_list_as_typed(
+    capsys: pytest.CaptureFixture[str], tmp_path: Path
+) -> None:
+    # As a commissioning engineer types it: X, then Y appended to the same HAL file, then
+    # X again (replaced, said in a note); the TwinCAT list with the drive's unit.
+    from cli_runner import run
+
+    hal = tmp_path / "friction.hal"
+    base = ["export-friction", "--case", str(EXAMPLE), "--speed", "5 m/min"]
+    code, _, err = run([*base, "--form", "lincurve", "--axis", "X", "--out", str(hal)], capsys)
+    assert code == 0, err
+    vertical = str(ROOT / "examples" / "vertical_32x5.toml")
+    code, _, err = run(["export-friction", "--case", vertical, "--speed", "5 m/min",
+                        "--form", "lincurve", "--axis", "Y", "--append", "--out", str(hal)],
+                       capsys)  # fmt: skip
+    assert code == 0, err
+    text = hal.read_text("utf-8")
+    assert "loadrt lincurve names=x-friction,y-friction personality=16,16" in text
+    code, _, err = run([*base, "--form", "lincurve", "--axis", "X", "--append", "--out",
+                        str(hal)], capsys)  # fmt: skip
+    assert code == 0 and "x-friction replaced" in err
+    assert hal.read_text("utf-8").count("setp x-friction.x-val-00 ") == 1
+    # Options of one form refused on another, with their names.
+    code, _, err = run([*base, "--form", "charcurve", "--append", "--out", str(hal)], capsys)
+    assert code == 2 and "--append" in err
+    code, _, err = run([*base, "--form", "stribeck", "--axis", "X"], capsys)
+    assert code == 2 and "--axis" in err
+    lis = tmp_path / "x.lis"
+    twincat = [*base, "--form", "frict-comp", "--axis", "X", "--axis-number", "1"]
+    code, _, err = run([*twincat, "--out", str(lis)], capsys)
+    assert code == 2 and "--drive-unit" in err
+    code, _, err = run([*twincat, "--drive-unit", "0.1 % of 4.5 A", "--out", str(lis)], capsys)
+    assert code == 2 and "--torque-constant" in err
+    code, _, err = run([*twincat, "--drive-unit", "0.1 % of 4.5 A", "--torque-constant",
+                        "0.71 N*m/A", "--cnc-build", "V3.1.3132.0", "--out", str(lis)],
+                       capsys)  # fmt: skip
+    assert code == 0, err
+    p = _frict_comp(lis.read_text("utf-8"))
+    assert p["frict_comp.scaling_factor"] == "1000" and p["kopf.log_achs_name"] == "X"
+    assert "." in p["frict_comp.table[19].out"]  # decimals from V3.1.3132.0

@@ -59,6 +59,13 @@ def write_controller_table(
             "--form frict-comp needs --axis-number, the axis' logical axis number for "
             "kopf.achs_nr (TwinCAT P-COMP-00001; it must equal the start-up list's)"
         )
+    if target == "frict-comp" and args.drive_unit is None:
+        raise click.UsageError(
+            "--form frict-comp needs --drive-unit, the unit the drive reports its torque in "
+            "(TwinCAT P-COMP-00047: the table's out is in the unit of dig_drv.act_torque), "
+            "e.g. '0.1 % of 3.2 N*m' (per thousand of the rated torque, as CiA 402 drives "
+            "give it), '0.1 % of 4.5 A' or '1 mA' with --torque-constant, or '0.001 N*m'"
+        )
     torque_constant = args.torque_constant
 
     case = load_case(case_file)
