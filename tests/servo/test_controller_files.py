@@ -294,7 +294,7 @@ def test_without_a_compiler_the_fmu_is_the_sources_with_a_note(
     monkeypatch.setenv("CC", "no-such-compiler-ballscrew")
     build = fmu_build(friction_map_small, "test", c_header(friction_map_small, "test"))
     assert build.platform is None and build.compiler is None
-    assert "no C compiler found" in build.note and "build_platform_binary" in build.note
+    assert "no C compiler found" in build.note and "fmpy compile" in build.note
     with zipfile.ZipFile(io.BytesIO(build.data)) as z:
         assert not any(n.startswith("binaries/") for n in z.namelist())
 

@@ -332,7 +332,7 @@ def fmu_build(m: FrictionMap, version: str, header: bytes, *, binary: bool = Tru
     elif platform is None or compiler is None:
         note = (
             "no C compiler found (set CC, or install cc, gcc or clang): a source FMU; "
-            "compile it where it is used, e.g. with fmpy.build.build_platform_binary"
+            "compile it where it is used, e.g. with FMPy and CMake: fmpy compile FILE.fmu"
         )
         if platform is None:
             note = f"platform {sys.platform!r} has no FMI 2.0 binary folder: a source FMU"
@@ -345,7 +345,7 @@ def fmu_build(m: FrictionMap, version: str, header: bytes, *, binary: bool = Tru
             text = detail.decode("utf-8", "replace").strip().splitlines()
             note = (
                 f"the compile with {used} failed ({text[0] if text else err}): a source "
-                "FMU; compile it where it is used, e.g. with fmpy.build.build_platform_binary"
+                "FMU; compile it where it is used, e.g. with FMPy and CMake: fmpy compile FILE.fmu"
             )
             platform, used = None, None
         else:
