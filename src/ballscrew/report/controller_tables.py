@@ -162,7 +162,7 @@ def _lincurve_file(version: str, blocks: dict[str, tuple[int, list[str]]]) -> st
     names = ",".join(blocks)
     personality = ",".join(str(n) for n, _ in blocks.values())
     out = [f"# ballscrew {version}: friction compensation tables for LinuxCNC's lincurve, "
-           f"{len(blocks)} axis{'es' if len(blocks) > 1 else ''}",
+           f"{len(blocks)} {'axes' if len(blocks) > 1 else 'axis'}",
            "# HAL loads a component once: this line loads every axis' instance; add an axis "
            "with 'ballscrew export-friction --form lincurve --axis Y --append --out THIS_FILE'",
            "# (if your configuration loads lincurve already, merge these names into its line)",
