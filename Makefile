@@ -14,7 +14,7 @@ STAMP  := $(VENV)/.installed
 # fetched everywhere); test installs it when it is missing, with sudo unless root.
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: run test test-fast docs clean chromium
+.PHONY: run test test-fast docs clean chromium linuxcnc
 
 $(STAMP): pyproject.toml src/ballscrew/_version.py
 	$(PYTHON) -c 'import sys; sys.exit("Python >= 3.11 is required, found " + sys.version.split()[0]) if sys.version_info < (3, 11) else None'
@@ -26,7 +26,7 @@ $(STAMP): pyproject.toml src/ballscrew/_version.py
 run: $(STAMP)
 	$(BIN)/ballscrew study --out study-report
 
-test: $(STAMP) chromium
+test: $(STAMP) chromium linuxcnc
 	$(BIN)/ruff check src tests benchmarks examples scripts conftest.py
 	$(BIN)/ruff format --check src tests benchmarks examples scripts conftest.py
 	$(BIN)/mypy src
@@ -58,6 +58,18 @@ chromium:
 	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 install -y -qq chromium >/dev/null; \
 	else \
 	  echo "note: no chromium and no apt-get: the browser tests are skipped (they fail on CI)"; \
+	fi
+
+# The LinuxCNC friction tables are loaded in a real HAL session (halrun) by the tests;
+# test installs Debian's linuxcnc-uspace when halrun is missing, like chromium.
+linuxcnc:
+	@if command -v halrun >/dev/null 2>&1; then :; \
+	elif command -v apt-get >/dev/null 2>&1; then \
+	  echo "installing Debian's linuxcnc-uspace for the HAL tests"; \
+	  $(SUDO) apt-get -o DPkg::Lock::Timeout=600 update -qq && \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 install -y -qq linuxcnc-uspace >/dev/null; \
+	else \
+	  echo "note: no halrun and no apt-get: the HAL tests are skipped (they fail on CI)"; \
 	fi
 
 clean:
