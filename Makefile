@@ -67,7 +67,7 @@ linuxcnc:
 	elif command -v apt-get >/dev/null 2>&1; then \
 	  echo "installing Debian's linuxcnc-uspace for the HAL tests"; \
 	  $(SUDO) apt-get -o DPkg::Lock::Timeout=600 update -qq && \
-	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 install -y -qq linuxcnc-uspace >/dev/null; \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 install -y -qq --no-install-recommends linuxcnc-uspace >/dev/null; \
 	else \
 	  echo "note: no halrun and no apt-get: the HAL tests are skipped (they fail on CI)"; \
 	fi
