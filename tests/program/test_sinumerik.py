@@ -270,14 +270,37 @@ def test_comments_messages_and_a_byte_order_mark() -> None:
 
 
 # The reader reads the translation as far as it goes today; the features another part of the
-# work adds (tool changes, work offsets, canned cycles, rotary axes) are probed, not assumed.
+# work adds (the machine file's dialect, tool changes, work offsets, canned cycles, rotary
+# axes) are probed, not assumed.
 
 
-def _reader_reads(text: str) -> bool:
+def _sinumerik_machine() -> object:
+    """The example machine with dialect = "sinumerik" and a G57 (or a skip, said why)."""
+    import dataclasses
+    import inspect
+
+    from ballscrew.io.machine import load_machine
+    from ballscrew.program.gcode import read_program
+    from shared import ROOT
+
+    if "machine" not in inspect.signature(read_program).parameters:
+        pytest.skip("the reader takes no machine file yet (dialect, tools, offsets)")
+    machine = load_machine(ROOT / "examples" / "machine_vmc.toml")
+    names = {f.name for f in dataclasses.fields(machine)}  # type: ignore[arg-type]
+    if not {"dialect", "offsets", "tool_change_time"} <= names:
+        pytest.skip("the machine file has no dialect, work offsets or tool change time yet")
+    offsets = dict(machine.offsets)  # type: ignore[attr-defined]
+    offsets[57] = {"X": 0.100, "Y": 0.050, "Z": -0.300}  # the part zero, machine coordinates
+    return dataclasses.replace(  # type: ignore[type-var]
+        machine, dialect="sinumerik", offsets=offsets, tool_change_time=4.0
+    )
+
+
+def _reads(text: str, machine: object = None) -> bool:
     from ballscrew.program.gcode import read_program
 
     try:
-        read_program(text)
+        read_program(text) if machine is None else read_program(text, machine=machine)
     except BallScrewInputError:
         return False
     return True
@@ -299,17 +322,54 @@ def test_the_reader_reads_the_translated_contour() -> None:
     assert p.feed[1] == pytest.approx(400e-3 / 60)  # G710: F in mm/min
 
 
-def test_the_reader_reads_the_whole_production_program() -> None:
+def test_the_machine_reads_the_production_program_and_drills_as_the_manual_says() -> None:
+    from ballscrew.program.gcode import DWELL, FEED, RAPID, read_program
+
+    machine = _sinumerik_machine()
+    # Everything but the B move (probed in the next test), on the same line numbers.
+    text = PRODUCTION.replace("N270 B45", "N270")
+    for feature, probe in [
+        ("tool change M6", 'T="A"\nM6\n'),
+        ("work offset G57", "G57\n"),
+        ("canned cycle G81", "G0 X0 Y0 Z10 F100\nCYCLE81(10,0,2,-5)\n"),
+    ]:
+        if not _reads(probe, machine):
+            pytest.skip(f"the reader does not read a {feature} yet")
+    p = read_program(text, machine=machine)
+    off = np.array([0.100, 0.050, -0.300])  # G57; D1 of a named tool applies no length
+    # The modal CYCLE81(10,0,2,-15,) at X20 Y20 (where the tool is), X40 Y20 and X40 Y40 from
+    # Z10 = RTP, by hand from the manual: G0 to the position at RTP, G0 to RFP + SDIS = 2,
+    # G1 to DP = -15 at F250, G0 back to RTP = 10. Then CYCLE82(10,0,2,,12,0.5) at X20 Y40:
+    # G0 to 2, G1 to RFP - DPR = -12, a 0.5 s dwell, G0 to 10.
+    expected = []
+    for x, y, line in [(20, 20, 25), (40, 20, 26), (40, 40, 27)]:
+        expected += [(RAPID, line, (x, y, 10)), (RAPID, line, (x, y, 2)),
+                     (FEED, line, (x, y, -15)), (RAPID, line, (x, y, 10))]  # fmt: skip
+    expected += [(RAPID, 32, (20, 40, 2)), (FEED, 32, (20, 40, -12)), (DWELL, 32, (20, 40, -12)),
+                 (RAPID, 32, (20, 40, 10))]  # fmt: skip
+    first = int(np.flatnonzero(p.line == 25)[0])
+    got = [(int(k), int(n), tuple(np.round((e - off) * 1e3, 9)))
+           for k, n, e in zip(p.kind[first:], p.line[first:], p.end[first:], strict=True)
+           if 25 <= n <= 32 and n not in (28, 29, 30, 31)]  # fmt: skip
+    # The X20 Y20 position is where the tool already is: its move there has no length.
+    assert got == expected[1:]
+    drill = np.flatnonzero((p.kind == FEED) & np.isin(p.line, [25, 26, 27]))
+    np.testing.assert_allclose(p.feed[drill], 250e-3 / 60)  # the F before the cycle
+    np.testing.assert_array_equal(p.dwell[(p.kind == DWELL) & (p.line == 32)], [0.5])
+    np.testing.assert_array_equal(p.dwell[(p.kind == DWELL) & (p.line == 34)], [1.5])  # G4 F
+
+
+def test_the_machine_reads_the_production_program_with_its_rotary_move() -> None:
     from ballscrew.program.gcode import read_program
 
+    machine = _sinumerik_machine()
     for feature, probe in [
-        ("tool change M6", "T1 M6\n"),
+        ("tool change M6", 'T="A"\nM6\n'),
         ("work offset G57", "G57\n"),
-        ("canned cycle G81", "G0 X0 Y0 Z10 F100\nG98 G81 Z-5 R2\nG80\n"),
+        ("canned cycle G81", "G0 X0 Y0 Z10 F100\nCYCLE81(10,0,2,-5)\n"),
         ("rotary axis B", "G0 B45\n"),
     ]:
-        if not _reader_reads(probe):
+        if not _reads(probe, machine):
             pytest.skip(f"the reader does not read a {feature} yet")
-    out, _ = to_rs274(PRODUCTION)
-    p = read_program(out)
+    p = read_program(PRODUCTION, machine=machine)
     assert "B" in p.axes

@@ -471,7 +471,8 @@ def _g_codes(codes: list[tuple[int, str]], number: int, state: _State) -> tuple[
                              "(select G54 with a zero offset)")  # fmt: skip
             state.offset = word
             state.note(word, "G500 (settable offsets off) before any offset: dropped, the "
-                       "coordinates stay the starting system's", number)  # fmt: skip
+                       "coordinates stay in the reader's starting work offset (G54: zero "
+                       "unless the machine file's [offsets] sets it)", number)  # fmt: skip
         elif code in (53, 153):
             out.append("G53")
             if code == 153:
