@@ -9,6 +9,7 @@ and rapids to RTP.
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 import pytest
@@ -274,7 +275,7 @@ def test_comments_messages_and_a_byte_order_mark() -> None:
 # axes) are probed, not assumed.
 
 
-def _sinumerik_machine() -> object:
+def _sinumerik_machine() -> Any:
     """The example machine with dialect = "sinumerik" and a G57 (or a skip, said why)."""
     import dataclasses
     import inspect
@@ -286,17 +287,15 @@ def _sinumerik_machine() -> object:
     if "machine" not in inspect.signature(read_program).parameters:
         pytest.skip("the reader takes no machine file yet (dialect, tools, offsets)")
     machine = load_machine(ROOT / "examples" / "machine_vmc.toml")
-    names = {f.name for f in dataclasses.fields(machine)}  # type: ignore[arg-type]
+    names = {f.name for f in dataclasses.fields(machine)}
     if not {"dialect", "offsets", "tool_change_time"} <= names:
         pytest.skip("the machine file has no dialect, work offsets or tool change time yet")
-    offsets = dict(machine.offsets)  # type: ignore[attr-defined]
+    offsets = dict(machine.offsets)
     offsets[57] = {"X": 0.100, "Y": 0.050, "Z": -0.300}  # the part zero, machine coordinates
-    return dataclasses.replace(  # type: ignore[type-var]
-        machine, dialect="sinumerik", offsets=offsets, tool_change_time=4.0
-    )
+    return dataclasses.replace(machine, dialect="sinumerik", offsets=offsets, tool_change_time=4.0)
 
 
-def _reads(text: str, machine: object = None) -> bool:
+def _reads(text: str, machine: Any = None) -> bool:
     from ballscrew.program.gcode import read_program
 
     try:

@@ -3,7 +3,7 @@ r"""SINUMERIK 840D part programs translated into the RS274/NGC the reader reads.
 :func:`to_rs274` turns a SINUMERIK program (ISO dialect off, Siemens mode) into
 RS274/NGC text, line by line: line *n* of the output is the translation of
 line *n* of the input, so that every later error still names the user's own
-line. What it translates, each as Siemens documents it:
+line. What it translates, each as Siemens documents it ([1]_, [2]_, [3]_):
 
 - ``;`` comments, ``N`` block numbers, the ``%_N_NAME_MPF`` and ``;$PATH=``
   header lines, ``MSG("…")`` messages (dropped, with a note);
@@ -150,10 +150,10 @@ def _arguments(args: str, count: int, name: str, line: int) -> list[float]:
 
 
 def drilling_cycle(name: str, args: str, line: int = 0) -> DrillingCycle:
-    """The moves of a SINUMERIK drilling cycle from its parameters, as [3]_ documents them.
+    """The moves of a SINUMERIK drilling cycle from its parameters, as Siemens documents them.
 
     ``CYCLE81(RTP, RFP, SDIS, DP, DPR)`` drills, ``CYCLE82(RTP, RFP, SDIS, DP,
-    DPR, DTB)`` drills and dwells DTB seconds at the depth. From the position
+    DPR, DTB)`` drills and dwells DTB seconds at the depth [1]_. From the position
     reached before the call (the hole's position in the plane), both
 
     1. approach the reference plane brought forward by the safety clearance,
@@ -191,6 +191,12 @@ def drilling_cycle(name: str, args: str, line: int = 0) -> DrillingCycle:
         A negative SDIS, DPR or DTB; a depth not below RFP + SDIS; a
         retraction plane below RFP + SDIS (the manual's alarm 61101 names a
         retraction plane behind the reference plane); a mode that is set.
+
+    References
+    ----------
+    .. [1] Siemens AG, *SINUMERIK 840D/840Di/810D Programming Guide Cycles (PGZ)*,
+       11.02 edition, chapter 2: "Drilling, centering – CYCLE81", "Drilling,
+       counterboring – CYCLE82".
 
     Examples
     --------
