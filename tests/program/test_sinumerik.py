@@ -13,6 +13,8 @@ from typing import Any
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from ballscrew.errors import BallScrewInputError
 from ballscrew.program.sinumerik import DrillingCycle, drilling_cycle, to_rs274
@@ -129,6 +131,15 @@ def test_offsets_tools_and_path_modes() -> None:
     joined = "\n".join(notes)
     for told in ("G505", "G506", "D1 (tool offset on): read as G43 H5", "D0", "G153", "SUPA",
                  "G60", "G642", "M17"):  # fmt: skip
+        assert told in joined
+
+
+def test_high_speed_settings_and_keywords_without_feed_axis_motion() -> None:
+    text = "CYCLE832(0.01,_FINISH,1)\nCYCLE832()\nSOFT FFWON COMPCAD\nG601\nSTOPRE\n"
+    out, notes = to_rs274(text)
+    assert out.splitlines() == ["G64 P0.01", "G64", "", "", ""]
+    joined = "\n".join(notes)
+    for told in ("CYCLE832", "SOFT", "FFWON", "COMPCAD", "G601", "STOPRE"):
         assert told in joined
 
 
@@ -251,6 +262,8 @@ def test_the_cycle_heights_by_hand() -> None:
         ("D1.5\n", 1, "D1.5"),
         ('G0 X1\nP="A"\n', 2, 'P="A"'),
         ("G91.1\n", 1, "G91.1"),
+        ("CYCLE832(TOL,_FINISH)\n", 1, "CYCLE832(TOL,_FINISH)"),
+        ("MCALL CYCLE832(0.01)\n", 1, "MCALL"),
     ],
 )
 def test_what_cannot_be_translated_is_refused_naming_line_and_word(
@@ -372,3 +385,31 @@ def test_the_machine_reads_the_production_program_with_its_rotary_move() -> None
             pytest.skip(f"the reader does not read a {feature} yet")
     p = read_program(PRODUCTION, machine=machine)
     assert "B" in p.axes
+
+
+_PIECES = [
+    "N10", "G0", "G1", "G2", "G3", "G4", "G17", "G18", "G91", "G90", "G70", "G700", "G710",
+    "G54", "G57", "G500", "G505", "G153", "X10", "Y=-5", "Z2", "Z=10", "B45", "I5", "J0",
+    "CR=5", "F200", "S1000", "M3", "M6", "M30", 'T="A"', "T2", "D1", "D0", "MCALL",
+    "CYCLE81(10,0,2,-15)", "CYCLE82(2,0,2,-5,,1)", "CYCLE83(10,0,2,-40)", "CYCLE832(0.01)",
+    "SUPA", 'MSG("x")', "; c", "%_N_A_MPF", "(", ")", "=", '"', "R1=2", "X=IC(1)", "/",
+    "G4.5", "AC(", ",", "\t", "", "\ufeff", "\r",
+]  # fmt: skip
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(st.lists(st.sampled_from(_PIECES), max_size=6), max_size=12))
+def test_any_text_translates_line_for_line_or_is_refused_with_its_line(
+    lines: list[list[str]],
+) -> None:
+    # Whatever is typed: the same number of lines back, or a refusal naming a line of the
+    # text; never another exception.
+    text = "\n".join(" ".join(words) for words in lines)
+    try:
+        out, notes = to_rs274(text)
+    except BallScrewInputError as exc:
+        number = int(exc.field.removeprefix("program line "))
+        assert 1 <= number <= len(text.splitlines())
+        return
+    assert len(out.splitlines()) == len(text.lstrip("\ufeff").splitlines())
+    assert all(isinstance(n, str) for n in notes)

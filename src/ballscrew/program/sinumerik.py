@@ -29,7 +29,11 @@ line. What it translates, each as Siemens documents it ([1]_, [2]_, [3]_):
   a subprogram run as a program) as ``M2``; ``S``;
 - path modes: ``G60`` as ``G61``, ``G64`` and ``G641``–``G645`` as ``G64``
   (their own rounding tolerances are not carried over: the machine file's
-  path tolerance applies);
+  path tolerance applies); ``CYCLE832(_TOL, …)``, the high-speed settings, as
+  ``G64 P<_TOL>`` (its compressor and dynamics settings are not modelled);
+  ``G601``–``G603``, ``SOFT``, ``BRISK``, ``FFWON``, ``FFWOF``, ``COMPCAD``,
+  ``COMPCURV``, ``COMPSURF``, ``COMPOF``, ``TRAFOOF``, ``STOPRE`` dropped with a
+  note;
 - rotary axes ``A``, ``B``, ``C`` (``B45`` or ``B=45``) as written: the
   reader takes them if the machine file lists them;
 - the drilling cycles ``CYCLE81(RTP, RFP, SDIS, DP, DPR)`` and
@@ -90,12 +94,20 @@ _PASS_M = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 30}
 _AXES = "XYZABC"
 _ALLOWED_G = (
     "G0-G4, G17-G19, G40, G53, G54-G57, G60, G64, G641-G645, G70, G71, G90, G91, G94, "
-    "G153, G500, G505, G506, G700, G710"
+    "G153, G500, G505, G506, G601-G603, G700, G710"
 )
 _ALLOWED_WORDS = (
     "N, G, M, S, F, T, D, X, Y, Z, A, B, C, I, J, K, CR=, MCALL, SUPA, RET, "
-    "CYCLE81(...), CYCLE82(...)"
+    "CYCLE81(...), CYCLE82(...), CYCLE832(...)"
 )
+_DROPPED = {
+    "STOPRE": "preprocessing stop", "SOFT": "jerk-limited acceleration: the machine file's "
+    "limits apply", "BRISK": "acceleration without jerk limit: the machine file's limits "
+    "apply", "FFWON": "feedforward", "FFWOF": "feedforward off", "COMPCAD": "compressor",
+    "COMPCURV": "compressor", "COMPSURF": "compressor", "COMPOF": "compressor off",
+    "TRAFOOF": "kinematic transformation off",
+}  # fmt: skip
+"""Keywords without motion of the feed axes or whose effect the planner has its own of."""
 _TOL = 1e-9
 """[program unit] Two cycle heights closer than this are the same height."""
 
@@ -390,6 +402,10 @@ def _cycle_line(
                    "(the motion mode before it again)", number)  # fmt: skip
         return [f"G{state.motion}" if state.motion is not None else "G80"]
     _, name, args, _ = calls[0]
+    if name == "CYCLE832":
+        if modal:
+            raise _error(number, "MCALL", "CYCLE832 without MCALL (it sets, it does not drill)")
+        return _cycle832(args, number, state)
     if name == "CYCLE83":
         raise _error(number, f"CYCLE83({args})", "CYCLE81 or CYCLE82: CYCLE83's pecks "
                      "(degression, feed factor, the cycle's own anticipation distance) have no "
@@ -484,6 +500,9 @@ def _g_codes(codes: list[tuple[int, str]], number: int, state: _State) -> tuple[
             if code == 153:
                 state.note(word, "G153 (machine coordinates, base frames suppressed too): read "
                            "as G53 (the reader has no base frames)", number)  # fmt: skip
+        elif code in (601, 602, 603):
+            state.note(word, f"{word} (when an exact stop ends): dropped, the planner stops "
+                       "exactly", number)  # fmt: skip
         elif code == 60:
             out.append("G61")
             state.note(word, "G60 (exact stop): read as G61", number)
@@ -528,10 +547,8 @@ def _words(items: list[_Item], number: int, state: _State) -> list[str]:
             elif key == "RET":
                 tail.append("M2")
                 state.note("RET", "RET (end of a subprogram): read as M2", number)
-            elif key in ("STOPRE", "SOFT", "BRISK", "FFWON", "FFWOF"):
-                state.note(key, f"{key} (preprocessing stop, acceleration mode or "
-                           "feedforward: the machine file's limits apply): dropped",
-                           number)  # fmt: skip
+            elif key in _DROPPED:
+                state.note(key, f"{key} ({_DROPPED[key]}): dropped", number)
             else:
                 raise _error(number, key, f"SINUMERIK words the translation reads "
                              f"({_ALLOWED_WORDS}); no frames, control structures, "
@@ -582,6 +599,25 @@ def _words(items: list[_Item], number: int, state: _State) -> list[str]:
         return _position(out, words, tail, number, state)
     _track(words, machine, state)
     return out + [f"{k}{t}" for k, (t, _) in words.items()] + tail
+
+
+def _cycle832(args: str, number: int, state: _State) -> list[str]:
+    """CYCLE832(_TOL, _TOLM, ...), the high-speed settings: its tolerance as G64 P."""
+    first = args.split(",")[0].strip()
+    if first and not _NUMBER.match(first):
+        raise _error(number, f"CYCLE832({args})", "a number or nothing as CYCLE832's first "
+                     "parameter (the tolerance)")  # fmt: skip
+    tolerance = float(first) if first else 0.0
+    if tolerance < 0.0:
+        raise _error(number, f"CYCLE832({args})", "a tolerance >= 0")
+    if tolerance == 0.0:  # CYCLE832() or a zero tolerance: the settings are switched off
+        state.note("CYCLE832", "CYCLE832 (high-speed settings) off: read as G64, the "
+                   "machine file's path tolerance", number)  # fmt: skip
+        return ["G64"]
+    state.note("CYCLE832", "CYCLE832 (high-speed settings): its tolerance read as G64 P "
+               "(the path tolerance corners are blended within); its compressor, "
+               "smoothing and dynamics settings are not modelled", number)  # fmt: skip
+    return ["G64", f"P{_fmt(tolerance)}"]
 
 
 def _m_code(code: int, text: str, number: int, state: _State) -> list[str]:
