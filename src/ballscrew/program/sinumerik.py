@@ -263,6 +263,7 @@ class _State:
     names: dict[str, int] = field(default_factory=dict)
     spindle: float | None = None
     mcall: DrillingCycle | None = None
+    units: bool = False  # a G70, G71, G700 or G710 was seen
     restore: int = 0  # the line of a cycle call whose next line restates the motion mode
     notes: dict[str, tuple[str, int]] = field(default_factory=dict)
     counts: dict[str, int] = field(default_factory=dict)
@@ -356,6 +357,9 @@ def to_rs274(text: str) -> tuple[str, list[str]]:
         text = text[1:]
         state.note("BOM", "a byte-order mark at the start: dropped", 1)
     out = [_line(raw, number, state) for number, raw in enumerate(text.splitlines(), start=1)]
+    if not state.units and any(out):
+        state.note("units", "no G70, G71, G700 or G710: millimetres and mm/min, the basic "
+                   "system taken as metric (the delivery setting)", 1)  # fmt: skip
     notes = []
     for key, (what, first) in state.notes.items():
         count = state.counts[key]
@@ -470,6 +474,7 @@ def _g_codes(codes: list[tuple[int, str]], number: int, state: _State) -> tuple[
     for code, text in codes:
         word = f"G{text}"
         if code in (70, 71, 700, 710):
+            state.units = True
             state.inch = code in (70, 700)
             state.feed_inch = code == 700
             out.append("G20" if state.inch else "G21")
