@@ -201,8 +201,9 @@ def drilling_cycle(name: str, args: str, line: int = 0) -> DrillingCycle:
     ------
     BallScrewInputError
         A negative SDIS, DPR or DTB; a depth not below RFP + SDIS; a
-        retraction plane below RFP + SDIS (the manual's alarm 61101 names a
-        retraction plane behind the reference plane); a mode that is set.
+        retraction plane below RFP + SDIS (no RS274/NGC cycle retracts below
+        its R; below RFP the manual's cycle stops with alarm 61101); a mode
+        that changes the parameters' meaning.
 
     References
     ----------
@@ -239,8 +240,8 @@ def drilling_cycle(name: str, args: str, line: int = 0) -> DrillingCycle:
                      f"({_fmt(approach)}): drilling towards the negative tool axis")  # fmt: skip
     if rtp < approach - _TOL:
         raise _error(line, word, f"RTP ({_fmt(rtp)}) at or above RFP + SDIS "
-                     f"({_fmt(approach)}) (alarm 61101: the retraction plane behind the "
-                     "reference plane)")  # fmt: skip
+                     f"({_fmt(approach)}): no RS274/NGC cycle retracts below its R (and "
+                     "below RFP the cycle itself stops, alarm 61101)")  # fmt: skip
     return DrillingCycle(name, rtp, approach, depth, dtb)
 
 
