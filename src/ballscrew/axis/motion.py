@@ -294,15 +294,13 @@ def read_trajectory(text: str, source: str = "trajectory") -> Profile:
     or tabs allow decimal commas). Speed and acceleration (or position) are
     derived by finite differences (central, second order) on the given times.
     """
-    import csv
-    import io
     import re
 
+    from ..io.files import csv_rows
     from ..io.units import parse_unit, to_si_array
 
-    first = next((line for line in text.splitlines() if line.strip()), "")
-    delimiter = ";" if ";" in first else ("\t" if "\t" in first else ",")
-    rows = [r for r in csv.reader(io.StringIO(text.lstrip("\ufeff")), delimiter=delimiter) if r]
+    rows, delimiter = csv_rows(text, source)
+    rows = [r for r in rows if r]
     if not rows:
         raise BallScrewInputError(source, "(empty)", "a header and at least 3 data rows")
     header = re.compile(r"^\s*(\w[\w ]*?)\s*\[([^\]]+)\]\s*$")
