@@ -71,8 +71,17 @@ class Profile:
         for name in ("position", "speed", "acceleration", "process_force"):
             if getattr(self, name).shape != (n,):
                 raise BallScrewInputError(name, f"shape {getattr(self, name).shape}", f"({n},)")
-        if n < 2 or not np.all(np.diff(self.time) > 0.0):
-            raise BallScrewInputError("time", "(profile)", "at least 2 strictly increasing times")
+        if n < 2:
+            raise BallScrewInputError(
+                "time", f"{n} sample(s)", "at least 2 strictly increasing times"
+            )
+        step = np.diff(self.time)
+        if not np.all(step > 0.0):
+            k = int(np.flatnonzero(~(step > 0.0))[0])
+            raise BallScrewInputError(
+                "time", f"{self.time[k + 1]:g} s at sample {k + 2}, after {self.time[k]:g} s",
+                "strictly increasing times (each sample after the one before)",
+            )  # fmt: skip
 
     @property
     def duration(self) -> float:
