@@ -78,6 +78,9 @@ sphinx_gallery_conf = {
     "download_all_examples": False,
     "abort_on_example_error": True,
     "remove_config_comments": True,
+    # No sg_execution_times pages: they load jQuery, DataTables and Bootstrap from CDNs (the
+    # site must read offline, tests/test_docs_site.py) and change at every build.
+    "write_computation_times": False,
 }
 
 html_theme = "pydata_sphinx_theme"

@@ -41,6 +41,31 @@ def test_no_page_loads_mathjax_from_elsewhere() -> None:
     assert not offenders, offenders[:5]
 
 
+# A script, style sheet, font or image the browser would fetch from another host; links a
+# reader clicks (<a href>) may point anywhere.
+_REMOTE = re.compile(
+    r"<(?:script|link|img|iframe|source)\b[^>]*\b(?:src|href)\s*=\s*[\"']?(?:https?:)?//",
+    re.IGNORECASE,
+)
+_CSS_REMOTE = re.compile(r"(?:@import|url\()\s*[\"']?(?:https?:)?//", re.IGNORECASE)
+
+
+def test_no_page_loads_anything_from_another_host() -> None:
+    # Every HTML page of the site (sphinx-gallery's computation-time pages loaded jQuery,
+    # DataTables and Bootstrap from CDNs), and the site's own style sheets.
+    offenders = [
+        str(p.relative_to(SITE))
+        for p in SITE.rglob("*.html")
+        if _REMOTE.search(p.read_text("utf-8", errors="replace"))
+    ]
+    offenders += [
+        str(p.relative_to(SITE))
+        for p in (SITE / "_static").rglob("*.css")
+        if _CSS_REMOTE.search(p.read_text("utf-8", errors="replace"))
+    ]
+    assert not offenders, offenders[:10]
+
+
 @pytest.fixture(scope="module")
 def offline_page() -> Iterator[object]:
     if CHROMIUM is None and not os.environ.get("CI"):

@@ -164,3 +164,38 @@ def test_the_wheel_with_all_extras_sweeps_and_serves(
                  "print(dict(xarray.open_zarr('s.zarr')['torque'].sizes))"], tmp_path)  # fmt: skip
     assert "'speed': 3" in shape and "'screw.preload': 2" in shape, shape
     _ok([bin_ / "python", "-c", "from ballscrew.web import create_app; create_app()"], tmp_path)
+
+
+def test_check_manifest_finds_the_sdist_complete() -> None:
+    # Every file under version control is in the sdist (MANIFEST.in), or named as left out.
+    if not (ROOT / ".git").exists():
+        pytest.skip("not a git checkout (an unpacked sdist): nothing to compare with")
+    out = _ok([Path(sys.executable).parent / "check-manifest", ROOT],
+              ROOT)  # fmt: skip
+    assert "lists of files in version control and sdist match" in out, out
+
+
+def test_the_unpacked_sdist_runs_its_own_tests(dist: tuple[Path, Path], tmp_path: Path) -> None:
+    # What a distribution's packager does: unpack the sdist and run the tests there, against
+    # the sdist's own sources (PYTHONPATH), with the extras of this environment. Every test
+    # collects (no data file missing), and the ground and physics tests pass.
+    _, sdist = dist
+    with tarfile.open(sdist) as tar:
+        tar.extractall(tmp_path, filter="data")
+    (top,) = tmp_path.iterdir()
+    env = {**_env(), "PYTHONPATH": str(top / "src")}
+    pytest_ = [sys.executable, "-m", "pytest", "-p", "no:cacheprovider", "-q"]
+
+    def run(*args: str) -> str:
+        done = subprocess.run([*pytest_, *args], capture_output=True, text=True, cwd=top,
+                              env=env, timeout=1200, stdin=subprocess.DEVNULL)  # fmt: skip
+        assert done.returncode == 0, f"{args}\n{done.stdout[-3000:]}\n{done.stderr[-3000:]}"
+        return done.stdout
+
+    collected = run("--collect-only")
+    assert " error" not in collected.splitlines()[-1], collected.splitlines()[-1]
+    where = run("-m", "not slow", "tests/ground", "tests/physics", "tests/test_citation.py")
+    assert " passed" in where.splitlines()[-1]
+    imported = subprocess.run([sys.executable, "-c", "import ballscrew; print(ballscrew.__file__)"],
+                              capture_output=True, text=True, cwd=top, env=env)  # fmt: skip
+    assert Path(imported.stdout.strip()).is_relative_to(top), imported.stdout
