@@ -65,7 +65,8 @@ class Trace:
 def substeps(axis: AxisDynamics, sampling_time: float) -> int:
     """Sub-steps per sample (module docstring)."""
     local = axis.mass if axis.rigid else axis.table_mass
-    rates = [math.sqrt(axis.bristle_stiffness / local), axis.bristle_damping / local]
+    drag = axis.drag_mass
+    rates = [math.sqrt(axis.bristle_stiffness / drag), axis.bristle_damping / drag]
     if not axis.rigid:
         rates.append(2.0 * math.pi * axis.eigenfrequency)
     if axis.guide_coulomb > 0.0:
@@ -134,6 +135,7 @@ def simulate_axis(
     g1 = 2.0 * math.sqrt(g0 * (axis.mass if axis.rigid else axis.table_mass))
     m1, m2, k, c = axis.motor_mass, axis.table_mass, axis.stiffness, axis.damping
     rigid, mass = axis.rigid, axis.mass
+    on_motor = rigid or axis.drag_side == "motor"
     ext = axis.external_force
     alpha = math.exp(-h / gains.current_lag)
     kv, kp, ki = gains.kv, gains.kp, gains.ki
@@ -169,12 +171,13 @@ def simulate_axis(
             force = command + (force - command) * alpha
             fric = 0.0
             speed_nut = v1 if rigid else v2
+            speed_drag = v1 if on_motor else v2
             if screw_friction:
-                g = _interp(xs, gs, speed_nut)
+                g = _interp(xs, gs, speed_drag)
                 z_old = z
-                if speed_nut != 0.0 and g > 0.0:
-                    zss = g / s0 if speed_nut > 0.0 else -g / s0
-                    z = zss + (z - zss) * math.exp(-s0 * abs(speed_nut) * h / g)
+                if speed_drag != 0.0 and g > 0.0:
+                    zss = g / s0 if speed_drag > 0.0 else -g / s0
+                    z = zss + (z - zss) * math.exp(-s0 * abs(speed_drag) * h / g)
                 fric = s0 * z + s1 * (z - z_old) / h
             guide = 0.0
             if g0 > 0.0:
@@ -188,6 +191,12 @@ def simulate_axis(
                 v1 += acc * h
                 x1 += v1 * h
                 v2, x2 = v1, x1
+            elif on_motor:
+                spring = k * (x1 - x2) + c * (v1 - v2)
+                v1 += (force - fric - spring) / m1 * h
+                v2 += (spring - guide - gv * v2 + ext) / m2 * h
+                x1 += v1 * h
+                x2 += v2 * h
             else:
                 spring = k * (x1 - x2) + c * (v1 - v2)
                 v1 += (force - spring) / m1 * h
