@@ -481,6 +481,11 @@ def run_contour(
     bad = [d for d in directions if d not in ("CW", "CCW")]
     if bad or not directions:
         raise BallScrewInputError("--direction", bad or list(directions), "CW and/or CCW")
+    if pre_rolling_length is not None and not (
+        math.isfinite(pre_rolling_length) and pre_rolling_length > 0.0
+    ):
+        raise BallScrewInputError("--pre-rolling", f"{pre_rolling_length * 1e6:g} um",
+                                  "a positive length, e.g. '5 um'")  # fmt: skip
     start = time.process_time()
     pair = (cases[0], cases[-1])
     top = max(1.25 * feed, 0.01)

@@ -16,7 +16,10 @@ Euler: speeds, then positions). Within a sub-step:
   :math:`\sigma_0 z + \sigma_1\Delta z/h`;
 * :math:`g(v)` is the friction map's magnitude, interpolated linearly at the
   signed speed: the friction model is evaluated once, on the map's grid,
-  never per step.
+  never per step;
+* the screw's drag acts on the motor side at the motor's speed (or on the
+  table at its speed, ``AxisDynamics.drag_side``), the guideways' friction on
+  the table at the table's speed.
 
 The friction feed-forward :math:`F_{comp}(v_r)` and the acceleration
 feed-forward are computed for every sample before the loop (vectorised).
@@ -105,8 +108,8 @@ def simulate_axis(
     x_ref, v_ref, a_ref : array_like
         Reference position [m], speed [m/s], acceleration [m/s²] at each sample.
     compensation : array_like, optional
-        Friction feed-forward force [N] at each sample (the controller's table
-        at the reference speed); none by default.
+        Friction feed-forward force [N] at each sample, as the controller sends
+        it (:func:`ballscrew.servo.contour.controller_compensation`); none by default.
     position_offset : array_like, optional
         Added to the position reference the loop follows [m] (a controller's
         lost-motion compensation); the trace keeps ``x_ref`` itself.
