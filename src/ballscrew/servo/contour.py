@@ -12,8 +12,11 @@ lead-in lasts :data:`LEAD_IN_TIME_CONSTANTS` time constants :math:`1/k_v` of
 the slower position loop, over which its transient (a tracking lag of up to
 :math:`v/k_v`) decays by :math:`e^{-15} \approx 3\cdot10^{-7}`, so that a
 lag of 5 mm leaves less than 2 nm; at R 10 mm, 6 m/min and
-:math:`k_v` = 20 1/s that is 0.75 s, 1.2 revolutions. From the table
-positions of the evaluated revolution (what a ballbar reads):
+:math:`k_v` = 20 1/s that is 0.75 s, 1.2 revolutions. Whether the
+revolution is settled is also measured (:attr:`CircleRun.residual`: the
+change of the following error over one revolution), and a note says when it
+is not. From the table positions of the evaluated revolution (what a ballbar
+reads):
 
 * the **radial deviation** :math:`\Delta r(\theta) = r(\theta) - R` about the
   circle's centre;
@@ -90,6 +93,9 @@ LEAD_IN_TIME_CONSTANTS = 15.0
 COMPENSATION_DELAY = 1
 """Samples between the commanded velocity a controller reads and the drive's use of the
 friction feed-forward it computes from it (module docstring)."""
+
+SETTLED_SHARE = 0.01
+"""A revolution whose start-up residual exceeds this share of its G is said unsettled."""
 
 TABLE_POINTS = 16
 """Points of the compensation table fed back into the simulation (LinuxCNC's ``lincurve``)."""
@@ -200,6 +206,15 @@ class CircleRun:
     glitches: tuple[Glitch, ...]
     x: Trace
     y: Trace
+    residual: float = 0.0
+    """How far the evaluated revolution is from settled [m]: the change of the table's
+    following error (x and y together) between its first sample and the same point of the
+    path one revolution later. A settled, periodic circle repeats it."""
+
+    @property
+    def settled(self) -> bool:
+        """True when the revolution repeats within :data:`SETTLED_SHARE` of G (or 10 nm)."""
+        return self.residual <= max(SETTLED_SHARE * self.circular_deviation, 1e-8)
 
     @property
     def largest_glitch(self) -> float:
@@ -224,6 +239,7 @@ class CircleRun:
                 "mean_radius_error_um": self.mean_radius_error * 1e6,
                 "glitches": [g.as_dict() for g in self.glitches],
                 "largest_glitch_um": self.largest_glitch * 1e6,
+                "start_up_residual_um": self.residual * 1e6, "settled": self.settled,
                 "radial_deviation": {"angle_deg": centres.round(3).tolist(),
                                      "deviation_um": (dev * 1e6).tolist()}}  # fmt: skip
 
@@ -258,14 +274,29 @@ def _glitches(angle: FloatArray, dev: FloatArray) -> tuple[Glitch, ...]:
 
 
 def _analyse(x: Trace, y: Trace, radius: float, window: slice, clockwise: bool,
-             compensated: bool) -> CircleRun:  # fmt: skip
+             compensated: bool, period: float) -> CircleRun:  # fmt: skip
+    """G, the deviations and the glitches of the evaluated ``window``.
+
+    ``period``: one revolution at the feed, in samples (not rounded).
+    """
     px, py = x.table[window], y.table[window]
     cx, cy = _fit_centre(px, py)
     r_fit = np.hypot(px - cx, py - cy)
     dev = np.hypot(px, py) - radius
     angle = np.degrees(np.arctan2(py, px)) % 360.0
+    # The same point of the path one revolution apart: the window's first sample and the
+    # error interpolated one period later (the feed still holds there: the ramp down starts
+    # with no slope), so that the rounding of the period to samples does not count.
+    i = window.start
+    j = min(i + math.floor(period), x.time.size - 2)
+    f = i + period - j
+
+    def later(e: FloatArray) -> float:
+        return float(e[j] + (e[j + 1] - e[j]) * f)
+
+    residual = math.hypot(later(x.error) - x.error[i], later(y.error) - y.error[i])
     return CircleRun(clockwise, compensated, angle, dev, float(np.ptp(r_fit)),
-                     float(np.mean(dev)), _glitches(angle, dev), x, y)  # fmt: skip
+                     float(np.mean(dev)), _glitches(angle, dev), x, y, residual)  # fmt: skip
 
 
 def circular_test(
@@ -293,7 +324,8 @@ def circular_test(
         fy = controller_compensation(tables[1], y, ts)
         tx = simulate_axis(axes[0], gains[0], x, vx, ax, fx)
         ty = simulate_axis(axes[1], gains[1], y, vy, ay, fy)
-    return _analyse(tx, ty, radius, window, clockwise, tables is not None)
+    period = 2.0 * math.pi * radius / feed / ts
+    return _analyse(tx, ty, radius, window, clockwise, tables is not None, period)
 
 
 @dataclass(frozen=True)
@@ -515,6 +547,13 @@ def run_contour(
         reversals.append(reversal_test(axes[0], g2[0], feed, acc, t2[0]))
     notes = [f"{name}: {n}" for name, a in zip("xy", axes, strict=True) for n in a.notes]
     notes += [f"{name}: {n}" for name, g in zip("xy", g2, strict=True) for n in g.notes]
+    for c in circles:
+        if not c.settled:
+            notes.append(f"the {'CW' if c.clockwise else 'CCW'} circle"
+                         f"{' with compensation' if c.compensated else ''} had not settled: "
+                         f"its following error changed by {c.residual * 1e6:.3g} um over the "
+                         "evaluated revolution (a slow or poorly damped loop); G, H and the "
+                         "glitches carry that transient")  # fmt: skip
     if len(cases) == 1:
         notes.append("one case for both axes")
     if rigid:
