@@ -95,13 +95,13 @@ contacts; measured axes lie between about 0.01 and 0.05."""
 
 PRE_ROLLING_LENGTH = 5e-6
 """Default pre-rolling length of the screw's drag [m], table travel: the bristle's
-stiffness is the creep friction over it (module docstring). The middle, on a log scale, of
+stiffness is the creep friction over it (module docstring). About the middle, on a log scale, of
 :data:`PRE_ROLLING_RANGE`; the glitch's dependence on it is in the docs."""
 
 PRE_ROLLING_RANGE = (1e-6, 20e-6)
-"""The pre-rolling lengths [m] the docs' sensitivity study spans: from the contacts'
-elastic slip (about a micrometre) to the tens of micrometres over which a ball's traction
-settles in a groove (module docstring's references)."""
+"""The pre-rolling lengths [m] the docs' sensitivity study spans, from about the nut's
+normal compliance (0.66 µm on the example) to twenty times the default: a stated range to
+study, not a measured one (no measured pre-rolling length of a ball screw nut was found)."""
 
 DRAG_SIDES = ("motor", "table")
 """Where the screw's drag acts: on the motor side (the torque it is) or on the table (the
@@ -216,8 +216,7 @@ class AxisDynamics:
 
     def coulomb_force(self) -> float:
         """The screw friction at the map's slowest speeds [N] (mean of both directions)."""
-        return 0.5 * (float(np.abs(self.friction[self.speeds < 0][-1]))
-                      + float(np.abs(self.friction[self.speeds > 0][0])))  # fmt: skip
+        return _creep(self.speeds, self.friction)
 
     def motor_torque(self, force: FloatArray | float) -> FloatArray:
         """Motor torque [N·m] that makes a table-side force [N]."""
@@ -245,6 +244,12 @@ class AxisDynamics:
             "gear_ratio": self.gear_ratio,
             "notes": list(self.notes),
         }
+
+
+def _creep(speeds: FloatArray, friction: FloatArray) -> float:
+    """A friction map's force at its slowest speeds [N], the mean of both directions."""
+    return 0.5 * (float(np.abs(friction[speeds < 0][-1]))
+                  + float(np.abs(friction[speeds > 0][0])))  # fmt: skip
 
 
 def frictionless(axis: AxisDynamics) -> AxisDynamics:
@@ -374,7 +379,7 @@ def axis_dynamics(
     if not (math.isfinite(delta) and delta > 0.0):
         raise BallScrewInputError("axis.pre_rolling_length", delta,
                                   "a positive length [m], e.g. '5 um'")  # fmt: skip
-    creep = 0.5 * (abs(float(force[speeds < 0][-1])) + abs(float(force[speeds > 0][0])))
+    creep = _creep(speeds, force)
     s0 = creep / delta if creep > 0.0 else k_nut
     on = m1 if drag_side == "motor" else m2
     s1 = 2.0 * math.sqrt(s0 * on)
