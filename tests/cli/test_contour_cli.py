@@ -84,3 +84,15 @@ def test_an_axis_note_both_axes_share_is_said_once(capsys: pytest.CaptureFixture
     assert len(notes) == len(set(notes)) and notes
     assert any(line.startswith("note: x, y: ") for line in notes)
     assert not any(line.startswith(("note: x: ", "note: y: ")) for line in notes)
+
+
+def test_contour_takes_the_pre_rolling_length(capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, err = run(["contour", "--case", str(EXAMPLE), *SHORT, "--pre-rolling", "12 um",
+                          "--json", "-"], capsys)  # fmt: skip
+    assert code == 0, err
+    dynamics = json.loads(out)["axes"]["x"]["dynamics"]
+    assert dynamics["pre_rolling_length_um"] == pytest.approx(12.0)
+    assert dynamics["drag_side"] == "motor"
+    code, _, err = run(["contour", "--case", str(EXAMPLE), *SHORT, "--pre-rolling", "-2 um"],
+                       capsys)  # fmt: skip
+    assert code == 2 and "--pre-rolling" in err

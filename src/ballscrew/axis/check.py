@@ -534,8 +534,8 @@ def _stiffness_rows(
               "N/um", source + f"; nut {k_nut / 1e6:.4g} N/um"),
         _info(f"lost motion at reversal (most{state})", float(np.max(lost)) * 1e6, "um",
               f"2 F_f / k{play_text}, F_f = 2 pi T_f / l = {f_f:.3g} N (drag at creep speed) "
-              "as if the whole axis carried it: an upper bound, the lumped model of "
-              "'ballscrew contour'. The drag torque itself loads no part axially: it twists "
+              "as if the whole axis carried it: an upper bound ('ballscrew contour' puts the "
+              "drag on the motor side). The drag torque itself loads no part axially: it twists "
               f"the shaft, up to {float(np.max(twist)) * 1e6:.2g} um, and strains the nut's "
               f"contacts before they roll, 2 F_f / k_nut = {pre_rolling * 1e6:.2g} um; a "
               "guideway's friction would load the whole axis"),

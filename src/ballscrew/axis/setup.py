@@ -67,6 +67,10 @@ class AxisSetup:
     how it was found (for the outputs' inputs, :meth:`ballscrew.io.case.Case.input_values`)."""
 
 
+SERVO_KEYS = ("pre_rolling_length",)
+"""``[axis]`` keys only the servo model reads (:func:`ballscrew.servo.plant.axis_dynamics`)."""
+
+
 def axis_setup(
     screw: BallScrew,
     axis_values: Mapping[str, Any],
@@ -107,7 +111,8 @@ def axis_setup(
             f"axis.screw_length = {thermal['screw_length'] * 1e3:.0f} mm (estimated: travel, "
             "nut and 4 diameters; give it for a real heat balance)"
         )
-    values = dict(axis_values)
+    # The servo model's own keys of [axis] (ballscrew.servo.plant), not the energy axis'.
+    values = {k: v for k, v in axis_values.items() if k not in SERVO_KEYS}
     if "screw_inertia" not in values:
         j = float(shaft_inertia(screw.pitch_diameter, thermal["screw_length"]))
         values["screw_inertia"] = j

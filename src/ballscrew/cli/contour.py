@@ -43,6 +43,9 @@ __all__ = ["contour_command"]
     default=None,
     help="Coulomb friction of each axis' guideways, e.g. '40 N' (default: left out).",
 )
+@click.option("--pre-rolling", "pre_rolling", default=None,
+              help="Pre-rolling length of the screws' drag, e.g. '10 um' (default: the "
+              "case's [axis] pre_rolling_length, else 5 um).")  # fmt: skip
 @click.option("--rigid", is_flag=True, help="One-mass axes (no spring between motor and table).")
 @json_option("Write the results as JSON to FILE ('-' for standard output).")
 @folder_option(
@@ -60,6 +63,7 @@ def contour_command(
     feed_forward: bool,
     feedback: str,
     guide_friction: str | None,
+    pre_rolling: str | None,
     rigid: bool,
     json_file: str | None,
     out_dir: str | None,
@@ -67,12 +71,15 @@ def contour_command(
     """Simulate a circular test (ISO 230-4) of two ball screw axes under CNC control.
 
     Each axis is a two-mass model from its case (motor side, table, the
-    stiffness ballscrew check prints), its screw friction the model's at the
-    case's load and temperature with pre-sliding; a position P loop with feed-
-    forward, a velocity PI tuned by the symmetric optimum and a current loop.
-    Prints the circular deviation G and each quadrant glitch without and with
-    the friction compensation of a 16-point table, the reversal test of the x
-    axis, and the loops' margins and bandwidths.
+    stiffness ballscrew check prints), the screw's drag the model's torque at
+    the case's load and temperature, on the motor side, with pre-rolling; a
+    position P loop with feed-forward, a velocity PI tuned by the symmetric
+    optimum and a current loop. The circle is evaluated over one revolution
+    after a lead-in arc of 15/k_v. Prints the circular deviation G and each
+    quadrant glitch without and with the friction compensation of a 16-point
+    table (at the commanded velocity, one sample late, as a controller applies
+    it), the reversal test of the x axis, and the loops' margins and
+    bandwidths.
 
     \b
     Example:
@@ -98,6 +105,7 @@ def contour_command(
         feedback=feedback,
         guide_coulomb=to_si("--guide-friction", guide_friction, "N") if guide_friction else None,
         rigid=rigid,
+        pre_rolling_length=to_si("--pre-rolling", pre_rolling, "m") if pre_rolling else None,
     )  # fmt: skip
     console = stdout(json_file)
     _print(console, result)

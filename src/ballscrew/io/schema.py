@@ -356,6 +356,15 @@ class AxisSection(BaseModel):
         "5 m/s**2",
         si="m/s**2",
     )
+    pre_rolling_length: Value | None = _f(
+        None,
+        "length",
+        "table travel over which the screw's drag builds from rest to 63 % of its rolling "
+        "value, for ballscrew contour (none: 5 um; 1 to 20 um is the range the docs study; "
+        "the nut's normal compliance alone gives under 1 um)",
+        "5 um",
+        si="m",
+    )
     screw_length: Value | None = _f(
         None,
         "length",

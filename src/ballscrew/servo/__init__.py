@@ -10,6 +10,7 @@ from .contour import (
     ContourResult,
     ReversalRun,
     circular_test,
+    controller_compensation,
     reversal_test,
     run_contour,
 )
@@ -28,6 +29,7 @@ __all__ = [
     "Trace",
     "axis_dynamics",
     "circular_test",
+    "controller_compensation",
     "fit_table",
     "frictionless",
     "loop_figures",

@@ -8,7 +8,8 @@ The loops, from the outside in, run at one sampling time :math:`T_s`:
 * **velocity PI**: :math:`F_c = K_p(v_c - v) + K_i\int(v_c - v)\,dt + k_{aff}\,m\,a_r
   + F_{comp}(v_r)`, the speed :math:`v` the backward difference of the
   position over one sample, :math:`m` the axis' whole mass, :math:`F_{comp}`
-  the friction feed-forward of the reference speed (a controller's table);
+  the friction feed-forward (a controller's table at the commanded velocity,
+  :func:`ballscrew.servo.contour.controller_compensation`);
 * **current** (the force the motor makes): a first-order lag of time constant
   :math:`\tau_c` behind :math:`F_c`.
 

@@ -5,8 +5,18 @@ What ``ballscrew contour`` computes.
 **Circular test.** Two axes follow a circle of radius :math:`R` at the feed
 :math:`v` (angular speed :math:`\omega = v/R`), clockwise and
 counter-clockwise. The path starts at rest at 45° (between two quadrants),
-speeds up smoothly along the arc, runs one full revolution at the feed (the
-evaluated part) and stops. From the table positions (what a ballbar reads):
+speeds up smoothly along the arc, runs a **lead-in arc** at the feed, then
+one full revolution at the feed (the evaluated part), and stops. ISO 230-4
+evaluates the contour the machine runs at its feed, not the start-up: the
+lead-in lasts :data:`LEAD_IN_TIME_CONSTANTS` time constants :math:`1/k_v` of
+the slower position loop, over which its transient (a tracking lag of up to
+:math:`v/k_v`) decays by :math:`e^{-15} \approx 3\cdot10^{-7}`, so that a
+lag of 5 mm leaves less than 2 nm; at R 10 mm, 6 m/min and
+:math:`k_v` = 20 1/s that is 0.75 s, 1.2 revolutions. Whether the
+revolution is settled is also measured (:attr:`CircleRun.residual`: the
+change of the following error over one revolution), and a note says when it
+is not. From the table positions of the evaluated revolution (what a ballbar
+reads):
 
 * the **radial deviation** :math:`\Delta r(\theta) = r(\theta) - R` about the
   circle's centre;
@@ -26,12 +36,18 @@ at :math:`+v`: the commissioning engineer's first measurement. Its glitch is
 the following error's largest departure, after the reversal, from that of the
 same run without friction.
 
-**Compensation.** The same tests with the friction feed-forward of a
-controller's table (LinuxCNC's 16 points, :func:`ballscrew.servo.tables.fit_table`)
-at the reference speed and, with the motor's encoder in the loop, the
-lost motion :math:`F/k` that the same table gives (:func:`lost_motion`,
-what a controller's backlash compensation adds to the position reference);
-the glitch's reduction is the ratio of heights.
+**Compensation as a controller applies it.** The same tests with the
+friction feed-forward of a controller's table (LinuxCNC's 16 points,
+:func:`ballscrew.servo.tables.fit_table`) looked up at the **commanded
+velocity**, the change of the position command over the last sample (what
+LinuxCNC's ``joint.N.vel-cmd`` and TwinCAT's friction compensation read), and
+applied one sample later (:data:`COMPENSATION_DELAY`: the controller sends
+the next cycle what it computed this one), so that the table's steep middle
+switches the feed-forward with the command's sign, as on the machine
+(:func:`controller_compensation`). Nothing is added to the position
+reference: the screw's drag does not strain the axial spring (it acts on the
+motor side, :mod:`ballscrew.servo.plant`). The glitch's reduction is the
+ratio of heights.
 """
 
 from __future__ import annotations
@@ -58,6 +74,7 @@ __all__ = [
     "ReversalRun",
     "circle_reference",
     "circular_test",
+    "controller_compensation",
     "reversal_test",
     "run_contour",
 ]
@@ -69,13 +86,24 @@ QUADRANTS = (0.0, 90.0, 180.0, 270.0)
 GLITCH_WINDOW = 30.0
 """Half-width of the window around a quadrant in which its glitch is sought [deg]."""
 
+LEAD_IN_TIME_CONSTANTS = 15.0
+"""Length of the lead-in arc before the evaluated revolution, in time constants
+:math:`1/k_v` of the slower axis' position loop (module docstring)."""
+
+COMPENSATION_DELAY = 1
+"""Samples between the commanded velocity a controller reads and the drive's use of the
+friction feed-forward it computes from it (module docstring)."""
+
+SETTLED_SHARE = 0.01
+"""A revolution whose start-up residual exceeds this share of its G is said unsettled."""
+
 TABLE_POINTS = 16
 """Points of the compensation table fed back into the simulation (LinuxCNC's ``lincurve``)."""
 
 
 def circle_reference(
     radius: float, feed: float, sampling_time: float, *, clockwise: bool = False,
-    acceleration: float = 1.0, settle: float = 0.05,
+    acceleration: float = 1.0, settle: float = 0.05, lead_in: float = 0.0,
 ) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray, FloatArray, FloatArray,
            slice]:  # fmt: skip
     r"""The circle's references per sample, and the evaluated samples.
@@ -85,7 +113,8 @@ def circle_reference(
 
     The path speed rises as :math:`v(1 - \cos(\pi t/t_r))/2` over :math:`t_r =
     \max(1.5\,v/a, 20\,T_s)` (peak tangential acceleration about ``acceleration``
-    [m/s²]), holds one revolution, and falls the same way.
+    [m/s²]), holds for ``lead_in`` [s] and then one revolution (the evaluated
+    one), and falls the same way.
     """
     if not radius > 0.0:
         raise BallScrewInputError("--radius", radius, "a positive radius [m]")
@@ -93,8 +122,13 @@ def circle_reference(
         raise BallScrewInputError("--feed", feed, "a positive feed [m/s]")
     ts = sampling_time
     t_r = max(1.5 * feed / acceleration, 20 * ts)
+    if not (lead_in >= 0.0 and math.isfinite(lead_in)):
+        raise BallScrewInputError("lead_in", lead_in, "a time of 0 s or more")
+    n_l = round(lead_in / ts)
     t_c = 2.0 * math.pi * radius / feed
-    n_s, n_r, n_c = round(settle / ts), round(t_r / ts), round(t_c / ts)
+    n_s, n_r = round(settle / ts), round(t_r / ts)
+    n_e = round(t_c / ts)  # the evaluated revolution
+    n_c = n_l + n_e  # at the feed
     t = np.arange(n_s + 2 * n_r + n_c + n_s) * ts
     ramp = np.clip((t - n_s * ts) / t_r, 0.0, 1.0)
     down = np.clip((t - (n_s + n_r + n_c) * ts) / t_r, 0.0, 1.0)
@@ -119,20 +153,28 @@ def circle_reference(
     vx, vy = -y * w, x * w
     ax = -x * w * w - y * dw
     ay = -y * w * w + x * dw
-    return x, y, vx, vy, ax, ay, slice(n_s + n_r, n_s + n_r + n_c)
+    return x, y, vx, vy, ax, ay, slice(n_s + n_r + n_l, n_s + n_r + n_c)
 
 
-def lost_motion(axis: AxisDynamics, gains: Gains, force: FloatArray) -> FloatArray | None:
-    r"""The position offset that cancels the axis' elastic lag under friction, :math:`F/k` [m].
+def controller_compensation(
+    table: CompensationTable, x_ref: FloatArray, sampling_time: float,
+    delay: int = COMPENSATION_DELAY,
+) -> FloatArray:  # fmt: skip
+    """The friction feed-forward [N] per sample as a controller applies ``table``.
 
-    With the motor's encoder in the loop the table lags the motor by the
-    spring's strain; a controller's lost-motion (backlash) compensation adds
-    it to the position reference. None for a rigid axis or a table-side scale.
+    Looked up at the commanded velocity, the position command's change over the
+    last sample, :math:`(x_r[i] - x_r[i-1])/T_s`, and applied ``delay`` samples
+    later (module docstring); zero before the first command.
     """
-    if axis.rigid or gains.feedback != "motor":
-        return None
-    out: FloatArray = np.asarray(force, dtype=float) / axis.stiffness
-    return out
+    if delay < 0:
+        raise BallScrewInputError("delay", delay, "0 or more samples")
+    xr = np.asarray(x_ref, dtype=float)
+    v_cmd = np.diff(xr, prepend=xr[0]) / sampling_time
+    force = table(v_cmd)
+    if delay == 0:
+        return force
+    out: FloatArray = np.concatenate([np.zeros(min(delay, xr.size)), force[:-delay]])
+    return out[: xr.size]
 
 
 @dataclass(frozen=True)
@@ -164,6 +206,15 @@ class CircleRun:
     glitches: tuple[Glitch, ...]
     x: Trace
     y: Trace
+    residual: float = 0.0
+    """How far the evaluated revolution is from settled [m]: the change of the table's
+    following error (x and y together) between its first sample and the same point of the
+    path one revolution later. A settled, periodic circle repeats it."""
+
+    @property
+    def settled(self) -> bool:
+        """True when the revolution repeats within :data:`SETTLED_SHARE` of G (or 10 nm)."""
+        return self.residual <= max(SETTLED_SHARE * self.circular_deviation, 1e-8)
 
     @property
     def largest_glitch(self) -> float:
@@ -188,6 +239,7 @@ class CircleRun:
                 "mean_radius_error_um": self.mean_radius_error * 1e6,
                 "glitches": [g.as_dict() for g in self.glitches],
                 "largest_glitch_um": self.largest_glitch * 1e6,
+                "start_up_residual_um": self.residual * 1e6, "settled": self.settled,
                 "radial_deviation": {"angle_deg": centres.round(3).tolist(),
                                      "deviation_um": (dev * 1e6).tolist()}}  # fmt: skip
 
@@ -222,14 +274,29 @@ def _glitches(angle: FloatArray, dev: FloatArray) -> tuple[Glitch, ...]:
 
 
 def _analyse(x: Trace, y: Trace, radius: float, window: slice, clockwise: bool,
-             compensated: bool) -> CircleRun:  # fmt: skip
+             compensated: bool, period: float) -> CircleRun:  # fmt: skip
+    """G, the deviations and the glitches of the evaluated ``window``.
+
+    ``period``: one revolution at the feed, in samples (not rounded).
+    """
     px, py = x.table[window], y.table[window]
     cx, cy = _fit_centre(px, py)
     r_fit = np.hypot(px - cx, py - cy)
     dev = np.hypot(px, py) - radius
     angle = np.degrees(np.arctan2(py, px)) % 360.0
+    # The same point of the path one revolution apart: the window's first sample and the
+    # error interpolated one period later (the feed still holds there: the ramp down starts
+    # with no slope), so that the rounding of the period to samples does not count.
+    i = window.start
+    j = min(i + math.floor(period), x.time.size - 2)
+    f = i + period - j
+
+    def later(e: FloatArray) -> float:
+        return float(e[j] + (e[j + 1] - e[j]) * f)
+
+    residual = math.hypot(later(x.error) - x.error[i], later(y.error) - y.error[i])
     return CircleRun(clockwise, compensated, angle, dev, float(np.ptp(r_fit)),
-                     float(np.mean(dev)), _glitches(angle, dev), x, y)  # fmt: skip
+                     float(np.mean(dev)), _glitches(angle, dev), x, y, residual)  # fmt: skip
 
 
 def circular_test(
@@ -246,15 +313,19 @@ def circular_test(
     if gains[1].sampling_time != ts:
         raise BallScrewInputError("sampling_time", gains[1].sampling_time,
                                   f"the same for both axes ({ts:g} s)")  # fmt: skip
-    x, y, vx, vy, ax, ay, window = circle_reference(radius, feed, ts, clockwise=clockwise)
+    lead_in = LEAD_IN_TIME_CONSTANTS / min(gains[0].kv, gains[1].kv)
+    x, y, vx, vy, ax, ay, window = circle_reference(radius, feed, ts, clockwise=clockwise,
+                                                    lead_in=lead_in)  # fmt: skip
     if tables is None:
         tx = simulate_axis(axes[0], gains[0], x, vx, ax)
         ty = simulate_axis(axes[1], gains[1], y, vy, ay)
     else:
-        fx, fy = tables[0](vx), tables[1](vy)
-        tx = simulate_axis(axes[0], gains[0], x, vx, ax, fx, lost_motion(axes[0], gains[0], fx))
-        ty = simulate_axis(axes[1], gains[1], y, vy, ay, fy, lost_motion(axes[1], gains[1], fy))
-    return _analyse(tx, ty, radius, window, clockwise, tables is not None)
+        fx = controller_compensation(tables[0], x, ts)
+        fy = controller_compensation(tables[1], y, ts)
+        tx = simulate_axis(axes[0], gains[0], x, vx, ax, fx)
+        ty = simulate_axis(axes[1], gains[1], y, vy, ay, fy)
+    period = 2.0 * math.pi * radius / feed / ts
+    return _analyse(tx, ty, radius, window, clockwise, tables is not None, period)
 
 
 @dataclass(frozen=True)
@@ -308,9 +379,8 @@ def reversal_test(
 ) -> ReversalRun:  # fmt: skip
     """The reversal test (module docstring)."""
     x, v, a, k = reversal_reference(speed, acceleration, gains.sampling_time)
-    comp = None if table is None else table(v)
-    offset = None if comp is None else lost_motion(axis, gains, comp)
-    run = simulate_axis(axis, gains, x, v, a, comp, offset)
+    comp = None if table is None else controller_compensation(table, x, gains.sampling_time)
+    run = simulate_axis(axis, gains, x, v, a, comp)
     clean = simulate_axis(frictionless(axis), gains, x, v, a)
     after = slice(k, None)
     diff = (run.error - clean.error)[after]
@@ -397,6 +467,8 @@ def run_contour(
     compensate: bool = True,
     gains: tuple[Gains, Gains] | None = None,
     reversal_acceleration: float | None = None,
+    pre_rolling_length: float | None = None,
+    drag_side: str = "motor",
 ) -> ContourResult:
     """The circular test of one case (both axes) or two (x, y), with the reversal test.
 
@@ -424,6 +496,11 @@ def run_contour(
     reversal_acceleration : float, optional
         [m/s²] of the reversal test; default the circle's at the quadrant,
         :math:`v^2/R`; ``math.inf`` reverses the speed in one sample.
+    pre_rolling_length : float, optional
+        [m] of the screws' drag, for both axes (default: each case's, else
+        :data:`ballscrew.servo.plant.PRE_ROLLING_LENGTH`).
+    drag_side : {"motor", "table"}
+        Where the screws' drag acts (:func:`ballscrew.servo.plant.axis_dynamics`).
 
     Raises :class:`~ballscrew.io.extras.MissingExtraError` without the ``servo``
     extra (the loops' margins need the Python Control Systems Library).
@@ -436,11 +513,17 @@ def run_contour(
     bad = [d for d in directions if d not in ("CW", "CCW")]
     if bad or not directions:
         raise BallScrewInputError("--direction", bad or list(directions), "CW and/or CCW")
+    if pre_rolling_length is not None and not (
+        math.isfinite(pre_rolling_length) and pre_rolling_length > 0.0
+    ):
+        raise BallScrewInputError("--pre-rolling", f"{pre_rolling_length * 1e6:g} um",
+                                  "a positive length, e.g. '5 um'")  # fmt: skip
     start = time.process_time()
     pair = (cases[0], cases[-1])
     top = max(1.25 * feed, 0.01)
     dyn = tuple(axis_dynamics(c, model, max_speed=max(top, 0.05), guide_coulomb=guide_coulomb,
-                              guide_viscous=guide_viscous) for c in pair)  # fmt: skip
+                              guide_viscous=guide_viscous, pre_rolling_length=pre_rolling_length,
+                              drag_side=drag_side) for c in pair)  # fmt: skip
     if rigid:
         dyn = tuple(d.as_rigid() for d in dyn)
     axes = (dyn[0], dyn[1])
@@ -464,11 +547,23 @@ def run_contour(
         reversals.append(reversal_test(axes[0], g2[0], feed, acc, t2[0]))
     notes = [f"{name}: {n}" for name, a in zip("xy", axes, strict=True) for n in a.notes]
     notes += [f"{name}: {n}" for name, g in zip("xy", g2, strict=True) for n in g.notes]
+    for c in circles:
+        if not c.settled:
+            notes.append(f"the {'CW' if c.clockwise else 'CCW'} circle"
+                         f"{' with compensation' if c.compensated else ''} had not settled: "
+                         f"its following error changed by {c.residual * 1e6:.3g} um over the "
+                         "evaluated revolution (a slow or poorly damped loop); G, H and the "
+                         "glitches carry that transient")  # fmt: skip
     if len(cases) == 1:
         notes.append("one case for both axes")
     if rigid:
         notes.append("rigid axes (one mass each): no lost motion between motor and table")
     notes.append(f"compensation: the {TABLE_POINTS}-point table of each axis' friction up to "
-                 f"{top:.4g} m/s, fed forward at the reference speed")  # fmt: skip
+                 f"{top:.4g} m/s, looked up at the commanded velocity and applied "
+                 f"{COMPENSATION_DELAY} sample later, as a controller does")  # fmt: skip
+    notes.append(f"circle: a lead-in arc of {LEAD_IN_TIME_CONSTANTS:g}/k_v "
+                 f"({LEAD_IN_TIME_CONSTANTS / min(g.kv for g in g2):.3g} s) at the feed before "
+                 "the evaluated revolution, so that G, H and the glitches are the settled "
+                 "circle's")  # fmt: skip
     return ContourResult(axes, g2, figures, radius, feed, tuple(circles), tuple(reversals), t2,
                          model, time.process_time() - start, tuple(notes))  # fmt: skip

@@ -17,16 +17,33 @@ gear ratio :math:`i` (motor turns per screw turn), :math:`x = \theta_s\,l/2\pi
   (``[check] support_stiffness``, rigid when not given), with the nut at
   mid-span; a structural damping ratio :data:`STRUCTURAL_DAMPING` on the
   reduced mass;
-* **screw friction** at the nut, on the table side (:math:`\dot x_2`), so
-  that it strains the spring as the lost motion :math:`2F_f/k` of ``ballscrew
-  check`` has it (the drag torque twists the shaft between motor and nut; the
-  nut and the shaft's tension carry it only in this lumped model, an upper
-  bound): the chosen model's torque at the axis load and temperature,
-  evaluated once over a grid of speeds (:func:`ballscrew.fit.friction_map.friction_map`)
-  and interpolated, with the pre-sliding of a LuGre bristle whose stiffness
-  is the nut's (Canudas de Wit et al., IEEE TAC 40, 1995):
+* **screw friction** on the motor side (:math:`\dot x_1`): the screw's drag
+  is a torque between screw and nut that the motor supplies through the
+  coupling and the shaft in torsion; it makes no axial force on the nut, so
+  the axial spring does not carry it (the shaft's wind-up under it is tens
+  of nanometres, ``ballscrew check``'s torsion share). The nut takes no
+  axial share of the drag in this model: the axial force through it is the
+  table's inertia, the guideways' friction and the weight. The drag is the
+  chosen model's torque at the axis load and temperature, evaluated once
+  over a grid of speeds (:func:`ballscrew.fit.friction_map.friction_map`)
+  and interpolated, with the pre-rolling of a LuGre bristle (Canudas de Wit
+  et al., IEEE TAC 40, 1995):
   :math:`\dot z = v - \sigma_0|v|z/g(v)`, :math:`F = \sigma_0 z + \sigma_1\dot z`,
-  whose steady state is the map :math:`g(v)\,\mathrm{sgn}\,v` itself;
+  whose steady state is the map :math:`g(v)\,\mathrm{sgn}\,v` itself. Its
+  stiffness is the creep friction over the **pre-rolling length**
+  :math:`\delta`, :math:`\sigma_0 = g(0^+)/\delta` (the friction reaches 63 %
+  of its rolling value after :math:`\delta` of travel from rest, 95 % after
+  :math:`3\delta`): ``[axis] pre_rolling_length``, by default
+  :data:`PRE_ROLLING_LENGTH`. Rolling contacts build their traction over a
+  rolling distance set by the contacts' elastic slip (Al-Bender and De
+  Moerlooze, "A model of the transient behavior of tractive rolling
+  contacts", Adv. Tribol. 2008, 214894; De Moerlooze and Al-Bender,
+  "Experimental investigation into the tractive prerolling behavior of balls
+  in V-grooved tracks", Adv. Tribol. 2008, 561280), longer than the nut's
+  normal compliance alone gives (:math:`g/k_{nut}` = 0.66 µm on the
+  example);
+  ``drag_side="table"`` puts the drag on the table instead, the lumped
+  upper bound whose lost motion is :math:`2F/k`;
 * **guideway friction** on the table side, Coulomb plus viscous with its own
   bristle, when given; left out otherwise (noted);
 * the weight of an inclined axis on the table side.
@@ -62,7 +79,10 @@ from ..io.case import Case
 from ..materials import STANDARD_GRAVITY
 
 __all__ = [
+    "DRAG_SIDES",
     "GUIDE_PRESLIDING",
+    "PRE_ROLLING_LENGTH",
+    "PRE_ROLLING_RANGE",
     "STRUCTURAL_DAMPING",
     "AxisDynamics",
     "axis_dynamics",
@@ -72,6 +92,20 @@ __all__ = [
 STRUCTURAL_DAMPING = 0.02
 """Damping ratio of the axis' axial mode [-]: a bolted steel structure with rolling
 contacts; measured axes lie between about 0.01 and 0.05."""
+
+PRE_ROLLING_LENGTH = 5e-6
+"""Default pre-rolling length of the screw's drag [m], table travel: the bristle's
+stiffness is the creep friction over it (module docstring). About the middle, on a log scale, of
+:data:`PRE_ROLLING_RANGE`; the glitch's dependence on it is in the docs."""
+
+PRE_ROLLING_RANGE = (1e-6, 20e-6)
+"""The pre-rolling lengths [m] the docs' sensitivity study spans, from about the nut's
+normal compliance (0.66 µm on the example) to twenty times the default: a stated range to
+study, not a measured one (no measured pre-rolling length of a ball screw nut was found)."""
+
+DRAG_SIDES = ("motor", "table")
+"""Where the screw's drag acts: on the motor side (the torque it is) or on the table (the
+lumped upper bound of earlier versions)."""
 
 GUIDE_PRESLIDING = 1e-6
 """Pre-sliding distance of the guideways [m]: their bristle stiffness is the
@@ -105,6 +139,8 @@ class AxisDynamics:
     lead, gear_ratio : float
         [m], motor turns per screw turn: the motor side is ``(2 pi / lead) / gear_ratio``
         table metres per motor radian away.
+    drag_side : str
+        Where the screw's drag acts, one of :data:`DRAG_SIDES`.
     notes : tuple of str
         What was assumed or left out.
     """
@@ -123,7 +159,24 @@ class AxisDynamics:
     external_force: float = 0.0
     lead: float = 0.01
     gear_ratio: float = 1.0
+    drag_side: str = "motor"
     notes: tuple[str, ...] = field(default_factory=tuple)
+
+    def __post_init__(self) -> None:
+        if self.drag_side not in DRAG_SIDES:
+            raise BallScrewInputError("drag_side", self.drag_side, f"one of {list(DRAG_SIDES)}")
+
+    @property
+    def drag_mass(self) -> float:
+        """The mass the screw's drag acts on [kg]: the motor side, the table, or the whole."""
+        if self.rigid:
+            return self.mass
+        return self.motor_mass if self.drag_side == "motor" else self.table_mass
+
+    @property
+    def pre_rolling_length(self) -> float:
+        """The screw bristle's characteristic length, creep friction over its stiffness [m]."""
+        return self.coulomb_force() / self.bristle_stiffness
 
     @property
     def mass(self) -> float:
@@ -163,8 +216,7 @@ class AxisDynamics:
 
     def coulomb_force(self) -> float:
         """The screw friction at the map's slowest speeds [N] (mean of both directions)."""
-        return 0.5 * (float(np.abs(self.friction[self.speeds < 0][-1]))
-                      + float(np.abs(self.friction[self.speeds > 0][0])))  # fmt: skip
+        return _creep(self.speeds, self.friction)
 
     def motor_torque(self, force: FloatArray | float) -> FloatArray:
         """Motor torque [N·m] that makes a table-side force [N]."""
@@ -183,6 +235,8 @@ class AxisDynamics:
             "friction_at_creep_N": self.coulomb_force(),
             "bristle_stiffness_N_per_um": self.bristle_stiffness / 1e6,
             "bristle_damping_N_s_per_m": self.bristle_damping,
+            "pre_rolling_length_um": self.pre_rolling_length * 1e6,
+            "drag_side": self.drag_side,
             "guide_coulomb_N": self.guide_coulomb,
             "guide_viscous_N_s_per_m": self.guide_viscous,
             "external_force_N": self.external_force,
@@ -190,6 +244,12 @@ class AxisDynamics:
             "gear_ratio": self.gear_ratio,
             "notes": list(self.notes),
         }
+
+
+def _creep(speeds: FloatArray, friction: FloatArray) -> float:
+    """A friction map's force at its slowest speeds [N], the mean of both directions."""
+    return 0.5 * (float(np.abs(friction[speeds < 0][-1]))
+                  + float(np.abs(friction[speeds > 0][0])))  # fmt: skip
 
 
 def frictionless(axis: AxisDynamics) -> AxisDynamics:
@@ -243,6 +303,8 @@ def axis_dynamics(
     guide_viscous: float = 0.0,
     axial_load: float | None = None,
     temperature: float | None = None,
+    pre_rolling_length: float | None = None,
+    drag_side: str = "motor",
 ) -> AxisDynamics:
     """The two-mass model of ``case``'s axis (module docstring).
 
@@ -262,6 +324,11 @@ def axis_dynamics(
         axis' weight is added.
     temperature : float, optional
         [°C] (default: the case's first).
+    pre_rolling_length : float, optional
+        [m] of the screw's drag (default: the case's ``[axis] pre_rolling_length``, else
+        :data:`PRE_ROLLING_LENGTH`).
+    drag_side : {"motor", "table"}
+        Where the screw's drag acts (module docstring).
     """
     if not case.axis.get("moving_mass"):
         raise BallScrewInputError(
@@ -304,14 +371,28 @@ def axis_dynamics(
     if weight:
         notes.append(f"the weight along the axis, {weight:.4g} N, acts on the table and loads "
                      "the nut")  # fmt: skip
-    s0 = k_nut
-    s1 = 2.0 * math.sqrt(s0 * m2)
-    notes.append(f"pre-sliding: LuGre bristle of the nut's design stiffness {k_nut / 1e6:.4g} "
-                 "N/um, critically damped on the table mass")  # fmt: skip
+    if drag_side not in DRAG_SIDES:
+        raise BallScrewInputError("drag_side", drag_side, f"one of {list(DRAG_SIDES)}")
+    given = case.axis.get("pre_rolling_length")
+    delta = float(pre_rolling_length if pre_rolling_length is not None else
+                  given if given is not None else PRE_ROLLING_LENGTH)  # fmt: skip
+    if not (math.isfinite(delta) and delta > 0.0):
+        raise BallScrewInputError("axis.pre_rolling_length", delta,
+                                  "a positive length [m], e.g. '5 um'")  # fmt: skip
+    creep = _creep(speeds, force)
+    s0 = creep / delta if creep > 0.0 else k_nut
+    on = m1 if drag_side == "motor" else m2
+    s1 = 2.0 * math.sqrt(s0 * on)
+    source = ("given" if pre_rolling_length is not None or given is not None
+              else "the default, assumed")  # fmt: skip
+    where = "motor side (a torque)" if drag_side == "motor" else "table (lumped upper bound)"
+    notes.append(f"screw drag on the {where}; pre-rolling length {delta * 1e6:.3g} um "
+                 f"({source}; its LuGre bristle {s0 / 1e6:.4g} N/um, critically damped on "
+                 f"{on:.4g} kg)")  # fmt: skip
     if guide_coulomb is None:
         notes.append("guideway friction left out (give it: it adds to the glitch, and the "
                      "screw's compensation does not remove it)")  # fmt: skip
         guide_coulomb = 0.0
     return AxisDynamics(case.title, m1, m2, k, damping, speeds, force, s0, s1,
                         float(guide_coulomb), float(guide_viscous), weight, lead, ratio,
-                        tuple(notes))  # fmt: skip
+                        drag_side, tuple(notes))  # fmt: skip

@@ -16,7 +16,10 @@ Euler: speeds, then positions). Within a sub-step:
   :math:`\sigma_0 z + \sigma_1\Delta z/h`;
 * :math:`g(v)` is the friction map's magnitude, interpolated linearly at the
   signed speed: the friction model is evaluated once, on the map's grid,
-  never per step.
+  never per step;
+* the screw's drag acts on the motor side at the motor's speed (or on the
+  table at its speed, ``AxisDynamics.drag_side``), the guideways' friction on
+  the table at the table's speed.
 
 The friction feed-forward :math:`F_{comp}(v_r)` and the acceleration
 feed-forward are computed for every sample before the loop (vectorised).
@@ -65,7 +68,8 @@ class Trace:
 def substeps(axis: AxisDynamics, sampling_time: float) -> int:
     """Sub-steps per sample (module docstring)."""
     local = axis.mass if axis.rigid else axis.table_mass
-    rates = [math.sqrt(axis.bristle_stiffness / local), axis.bristle_damping / local]
+    drag = axis.drag_mass
+    rates = [math.sqrt(axis.bristle_stiffness / drag), axis.bristle_damping / drag]
     if not axis.rigid:
         rates.append(2.0 * math.pi * axis.eigenfrequency)
     if axis.guide_coulomb > 0.0:
@@ -104,8 +108,8 @@ def simulate_axis(
     x_ref, v_ref, a_ref : array_like
         Reference position [m], speed [m/s], acceleration [m/s²] at each sample.
     compensation : array_like, optional
-        Friction feed-forward force [N] at each sample (the controller's table
-        at the reference speed); none by default.
+        Friction feed-forward force [N] at each sample, as the controller sends
+        it (:func:`ballscrew.servo.contour.controller_compensation`); none by default.
     position_offset : array_like, optional
         Added to the position reference the loop follows [m] (a controller's
         lost-motion compensation); the trace keeps ``x_ref`` itself.
@@ -134,6 +138,7 @@ def simulate_axis(
     g1 = 2.0 * math.sqrt(g0 * (axis.mass if axis.rigid else axis.table_mass))
     m1, m2, k, c = axis.motor_mass, axis.table_mass, axis.stiffness, axis.damping
     rigid, mass = axis.rigid, axis.mass
+    on_motor = rigid or axis.drag_side == "motor"
     ext = axis.external_force
     alpha = math.exp(-h / gains.current_lag)
     kv, kp, ki = gains.kv, gains.kp, gains.ki
@@ -169,12 +174,13 @@ def simulate_axis(
             force = command + (force - command) * alpha
             fric = 0.0
             speed_nut = v1 if rigid else v2
+            speed_drag = v1 if on_motor else v2
             if screw_friction:
-                g = _interp(xs, gs, speed_nut)
+                g = _interp(xs, gs, speed_drag)
                 z_old = z
-                if speed_nut != 0.0 and g > 0.0:
-                    zss = g / s0 if speed_nut > 0.0 else -g / s0
-                    z = zss + (z - zss) * math.exp(-s0 * abs(speed_nut) * h / g)
+                if speed_drag != 0.0 and g > 0.0:
+                    zss = g / s0 if speed_drag > 0.0 else -g / s0
+                    z = zss + (z - zss) * math.exp(-s0 * abs(speed_drag) * h / g)
                 fric = s0 * z + s1 * (z - z_old) / h
             guide = 0.0
             if g0 > 0.0:
@@ -188,6 +194,12 @@ def simulate_axis(
                 v1 += acc * h
                 x1 += v1 * h
                 v2, x2 = v1, x1
+            elif on_motor:
+                spring = k * (x1 - x2) + c * (v1 - v2)
+                v1 += (force - fric - spring) / m1 * h
+                v2 += (spring - guide - gv * v2 + ext) / m2 * h
+                x1 += v1 * h
+                x2 += v2 * h
             else:
                 spring = k * (x1 - x2) + c * (v1 - v2)
                 v1 += (force - spring) / m1 * h
