@@ -56,16 +56,16 @@ def test_inch_is_millimetres_times_25_4() -> None:
 @pytest.mark.parametrize(
     ("text", "line", "word"),
     [
-        ("G1 X1 F100\nG81 X1 Y1 Z-2 R1\n", 2, "G81"),  # canned cycle
+        ("G1 X1 F100\nG84 X1 Y1 Z-2 R1\n", 2, "G84"),  # a tapping cycle
         ("G1 X1 F100\n#1=5\n", 2, "#1=5"),  # a variable
         ("G1 X1 F100\nG1 X[1+2]\n", 2, "X"),  # an expression
-        ("G0 X1\nG43 H1 Z5\n", 2, "G43"),  # tool length offset
-        ("G0 X1\nG91.1\n", 2, "G91.1"),  # a decimal code gcodeparser would truncate
-        ("G0 X1\nM6\n", 2, "M6"),  # a tool change moves the axes
+        ("G0 X1\nG43 H1 Z5\n", 2, "H1"),  # a tool length offset without a tool table
+        ("G0 X1\nG64.1\n", 2, "G64.1"),  # a decimal code not read
+        ("G0 X1\nM6\n", 2, "M6"),  # a tool change without a tool change time
         ("G0 X5\nG1 X10\n", 2, "G1"),  # a feed move before any F
         ("G1 X0 Y0 F100\nG2 X10 Y0.5 I5 J0\n", 2, "G2"),  # end point off the arc
         ("G1 X1 A30 F100\n", 1, "A30"),  # a rotary axis
-        ("X1\n", 1, "X/Y/Z"),  # a move before any motion code
+        ("X1\n", 1, "X1"),  # a move before any motion code
         ("G1 X1 F100 (open comment\n", 1, "(open comment"),
     ],
 )

@@ -32,6 +32,7 @@ path (``axes.X.max_jerk``). Values are converted to SI by
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, field
 from importlib import resources
 from pathlib import Path
@@ -41,7 +42,7 @@ import tomlkit
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from ..design.limits import DEFAULT_DN_LIMIT, MAX_SPEED
-from ..errors import BallScrewInputError
+from ..errors import BallScrewInputError, check_choice
 from ..plausible import check_acceleration, check_axial_force, check_feed
 from .case import Case, parse_case, parse_toml
 from .files import read_input_text
@@ -49,6 +50,7 @@ from .schema import Assumed
 from .units import to_si
 
 __all__ = [
+    "DIALECTS",
     "EXAMPLE_MACHINE",
     "LINEAR_AXES",
     "ROTARY_AXES",
@@ -65,6 +67,11 @@ ROTARY_AXES = ("A", "B", "C")
 """Rotary axes: accepted in a machine file, left out of the computation (with a note)."""
 
 Value = str | float | int | Assumed
+
+DIALECTS = ("rs274", "fanuc", "sinumerik")
+"""The programs' dialects (``[machine] dialect``)."""
+WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59")
+"""The work offsets a machine file may give (``[offsets]``)."""
 
 
 class MachineSection(BaseModel):
@@ -88,6 +95,12 @@ class MachineSection(BaseModel):
         default="5 ms", description="longest time between two samples of the motion"
     )
     model: str = Field(default="complete", description="friction model of every axis")
+    dialect: str = Field(
+        default="rs274", description="the program's dialect: rs274, fanuc or sinumerik"
+    )
+    tool_change_time: Value | None = Field(
+        default=None, description="time of a tool change (M6), the feed axes still"
+    )
 
 
 class AxisEntry(BaseModel):
@@ -115,6 +128,13 @@ class MachineFile(BaseModel):
     description: str = ""
     machine: MachineSection
     axes: dict[str, dict[str, Any]]
+    tools: dict[str, Value] = Field(default_factory=dict, description="T<n> = tool length")
+    offsets: dict[str, dict[str, Value]] = Field(
+        default_factory=dict, description="G54 to G59: the part zero in machine coordinates"
+    )
+    reference: dict[str, dict[str, Value]] = Field(
+        default_factory=dict, description="G28, G30: the reference positions, machine coordinates"
+    )
 
 
 @dataclass(frozen=True)
@@ -170,6 +190,17 @@ class Machine:
         Longest time between samples [s].
     model : str
         Friction model name.
+    dialect : str
+        The programs' dialect: ``rs274`` (RS274/NGC, LinuxCNC), ``fanuc`` or
+        ``sinumerik``.
+    tool_change_time : float or None
+        Time of a tool change M6 [s] (None: not given; a program with M6 is refused).
+    tools : dict
+        Tool number -> tool length [m] (``[tools] T1 = "85 mm"``), for G43 H.
+    offsets : dict
+        Work offset code (54 to 59) -> letter -> the part zero in machine coordinates [m].
+    reference : dict
+        28 or 30 -> letter -> reference position in machine coordinates [m].
     notes : tuple of str
         What was left out (rotary axes).
     text : str
@@ -186,6 +217,11 @@ class Machine:
     model: str
     notes: tuple[str, ...] = ()
     text: str = field(default="", repr=False)
+    dialect: str = "rs274"
+    tool_change_time: float | None = None
+    tools: dict[int, float] = field(default_factory=dict)
+    offsets: dict[int, dict[str, float]] = field(default_factory=dict)
+    reference: dict[int, dict[str, float]] = field(default_factory=dict)
 
 
 def _si(name: str, raw: Any, unit: str) -> float:
@@ -330,6 +366,15 @@ def parse_machine(
         )
     if not axes:
         raise BallScrewInputError("axes", "(none)", "at least one linear axis (X, Y or Z)")
+    tools, offsets, reference = _tables(data, axes)
+    change = (
+        None
+        if m.tool_change_time is None
+        else _si("machine.tool_change_time", m.tool_change_time, "s")
+    )
+    if change is not None and not (math.isfinite(change) and change >= 0.0):
+        raise BallScrewInputError("machine.tool_change_time", m.tool_change_time,
+                                  "a time >= 0 with its unit (s)")  # fmt: skip
     return Machine(
         title=data.title,
         axes=axes,
@@ -341,7 +386,62 @@ def parse_machine(
         model=m.model,
         notes=tuple(notes),
         text=text,
+        dialect=check_choice("machine.dialect", m.dialect, DIALECTS),
+        tool_change_time=change,
+        tools=tools,
+        offsets=offsets,
+        reference=reference,
     )
+
+
+def _tables(
+    data: MachineFile, axes: dict[str, MachineAxis]
+) -> tuple[dict[int, float], dict[int, dict[str, float]], dict[int, dict[str, float]]]:
+    """``[tools]``, ``[offsets]`` and ``[reference]`` in SI, keys checked."""
+    tools: dict[int, float] = {}
+    for key, raw in data.tools.items():
+        if re.fullmatch(r"T\d{1,4}", key) is None:
+            raise BallScrewInputError(f"tools.{key}", key, "a tool number such as T1")
+        length = _si(f"tools.{key}", raw, "m")
+        if not math.isfinite(length):
+            raise BallScrewInputError(f"tools.{key}", raw, "a tool length with its unit")
+        tools[int(key[1:])] = length
+    offsets: dict[int, dict[str, float]] = {}
+    for key, table in data.offsets.items():
+        if key not in WORK_OFFSETS:
+            raise BallScrewInputError(f"offsets.{key}", key, f"one of {', '.join(WORK_OFFSETS)}")
+        offsets[int(key[1:])] = _positions(f"offsets.{key}", table, axes, inside=False)
+    reference: dict[int, dict[str, float]] = {}
+    for key, table in data.reference.items():
+        if key not in ("G28", "G30"):
+            raise BallScrewInputError(f"reference.{key}", key, "G28 or G30")
+        reference[int(key[1:])] = _positions(f"reference.{key}", table, axes, inside=True)
+    return tools, offsets, reference
+
+
+def _positions(
+    name: str, table: dict[str, Any], axes: dict[str, MachineAxis], *, inside: bool
+) -> dict[str, float]:
+    """A position per linear axis of the machine [m]; within the travel when ``inside``."""
+    out: dict[str, float] = {}
+    for letter in table:
+        if letter not in axes:
+            raise BallScrewInputError(f"{name}.{letter}", table[letter],
+                                      f"an axis of the machine file ({', '.join(axes)})")  # fmt: skip
+    for letter, axis in axes.items():
+        if letter not in table:
+            raise BallScrewInputError(f"{name}.{letter}", "(missing)",
+                                      f"a position for every axis ({', '.join(axes)})")  # fmt: skip
+        value = _si(f"{name}.{letter}", table[letter], "m")
+        low, high = axis.travel
+        if not math.isfinite(value) or (inside and not low <= value <= high):
+            raise BallScrewInputError(
+                f"{name}.{letter}", table[letter],
+                f"a position within axes.{letter}.travel, {low * 1e3:g} to {high * 1e3:g} mm"
+                if inside else "a finite length with its unit",
+            )  # fmt: skip
+        out[letter] = value
+    return out
 
 
 def example_machine_text() -> str:

@@ -599,7 +599,7 @@ def run_program(
     require("program", "ballscrew program")
     if isinstance(program, str):
         program = read_program(program, arc_tolerance=machine.arc_tolerance,
-                               max_blocks=max_blocks)  # fmt: skip
+                               max_blocks=max_blocks, machine=machine)  # fmt: skip
     _check_travel(machine, program)
     motion = plan(
         program,

@@ -21,7 +21,9 @@ The path is planned as a CNC look-ahead does, in three steps:
    ``planner.c``, 2011-2016), and here also by its jerk, :math:`v^3/r^2 \le
    \min_i j_i/|d_i|`. The blend itself (shorter than the tolerance) is not
    drawn: the samples turn the corner sharply, and the axis velocity steps
-   there by :math:`v|u_{2,i} - u_{1,i}|`.
+   there by :math:`v|u_{2,i} - u_{1,i}|`. The program may set :math:`\delta`
+   itself (``Program.tolerance``): ``G64 P``, and 0 under ``G61`` and in
+   canned cycles, where every corner is stopped at.
 3. **Look-ahead.** A backward pass lowers every junction speed to what the
    following block can brake from, a forward pass to what the preceding
    block can reach, both with the distance of a jerk-limited speed change
@@ -232,8 +234,13 @@ def _junctions(program: Program, g: dict[str, FloatArray], v: FloatArray, lim: L
     u1, u2 = g["t1"][:-1], g["t0"][1:]
     cos = np.clip(-np.sum(u1 * u2, axis=1), -1.0, 1.0)
     sin_half = np.sqrt(0.5 * (1.0 - cos))
+    # The tolerance in force at each junction: G64 P's or G61's (0: a stop) where the
+    # program set one, else the machine's.
+    tol = np.full(n - 1, lim.path_tolerance)
+    if program.tolerance is not None:
+        tol = np.where(np.isnan(program.tolerance[1:]), tol, program.tolerance[1:])
     with np.errstate(divide="ignore", invalid="ignore"):
-        r = lim.path_tolerance * sin_half / (1.0 - sin_half)
+        r = tol * sin_half / (1.0 - sin_half)
         dvec = u2 - u1
         dn = np.linalg.norm(dvec, axis=1)
         dunit = dvec / np.where(dn > 0, dn, 1.0)[:, None]
@@ -242,7 +249,7 @@ def _junctions(program: Program, g: dict[str, FloatArray], v: FloatArray, lim: L
         j_j = np.nanmin(np.where(absd > 1e-12, lim.jerk / absd, np.inf), axis=1)
         corner = np.minimum(np.sqrt(a_j * r), np.cbrt(j_j * r * r))
     straight = cos < -1.0 + 1e-12
-    corner = np.where(straight, np.inf, corner)
+    corner = np.where(straight, np.inf, np.where(tol > 0.0, corner, 0.0))
     corner = np.where(cos > 1.0 - 1e-12, 0.0, corner)  # a reversal of the path
     stop = (program.kind[:-1] == DWELL) | (program.kind[1:] == DWELL)
     vj[1:] = np.where(stop, 0.0, np.minimum(np.minimum(v[:-1], v[1:]), corner))
