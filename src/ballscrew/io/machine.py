@@ -426,8 +426,8 @@ def _positions(
     out: dict[str, float] = {}
     for letter in table:
         if letter not in axes:
-            raise BallScrewInputError(f"{name}.{letter}", table[letter],
-                                      f"an axis of the machine file ({', '.join(axes)})")  # fmt: skip
+            allowed = f"an axis of the machine file ({', '.join(axes)})"
+            raise BallScrewInputError(f"{name}.{letter}", table[letter], allowed)
     for letter, axis in axes.items():
         if letter not in table:
             raise BallScrewInputError(f"{name}.{letter}", "(missing)",

@@ -352,8 +352,10 @@ class _Reader:
         work = self.setup.offsets.get(self.state.work, {})
         return work.get("XYZ"[i], 0.0) + (self.state.tool_length if i == 2 else 0.0)
 
-    def emit(self, kind: int, number: int, target: list[float], *, tolerance: float | None = None,
-             centre: list[float] | None = None, sweep: float = 0.0, dwell: float = 0.0) -> None:  # fmt: skip
+    def emit(
+        self, kind: int, number: int, target: list[float], *, tolerance: float | None = None,
+        centre: list[float] | None = None, sweep: float = 0.0, dwell: float = 0.0,
+    ) -> None:  # fmt: skip
         """Add a block from the current position to ``target`` (a move of no length: none)."""
         st = self.state
         if kind in (RAPID, FEED) and target == st.position:
@@ -438,8 +440,8 @@ class _Reader:
         n, p = block.number, block.params
         axes = [w.text for k, w in p.items() if k in "YZIJKR" or (k == "X" and not self.fanuc)]
         if axes:
-            raise _error(n, axes[0], "no axis words with G4" + (
-                "" if self.fanuc else " (Fanuc's G4 X<seconds>: [machine] dialect = \"fanuc\")"))  # fmt: skip
+            hint = "" if self.fanuc else ' (Fanuc\'s G4 X<seconds>: [machine] dialect = "fanuc")'
+            raise _error(n, axes[0], "no axis words with G4" + hint)
         if self.fanuc and "X" in p:
             word = p.pop("X")
             seconds, reading = word.value, "X in seconds (Fanuc)"
@@ -774,8 +776,8 @@ def _sinumerik(text: str) -> tuple[str, list[str]]:
     except ModuleNotFoundError as exc:
         if exc.name != name:
             raise
-        raise BallScrewInputError("machine.dialect", "sinumerik", "rs274 or fanuc (this "
-                                  "installation has no SINUMERIK translation)") from None  # fmt: skip
+        allowed = "rs274 or fanuc (this installation has no SINUMERIK translation)"
+        raise BallScrewInputError("machine.dialect", "sinumerik", allowed) from None
     out: tuple[str, list[str]] = module.to_rs274(text)
     return out
 
