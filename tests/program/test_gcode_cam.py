@@ -336,3 +336,26 @@ def test_sinumerik_programs_are_translated_line_for_line(vmc: Machine) -> None:
     siemens = dataclasses.replace(vmc, dialect="sinumerik")
     p = read_program("G710 G90\nG0 X10 Y20 ; rapid\nM30\n", machine=siemens)
     assert moves(p) == [(RAPID, 2, [10.0, 20.0, 0.0])]
+
+
+def test_what_posts_write_besides_is_skipped_with_its_line(vmc: Machine) -> None:
+    fanuc = dataclasses.replace(vmc, dialect="fanuc")
+    # Mastercam's posts start with G00 ... G80: two motion codes for RS274/NGC, while Fanuc
+    # puts G80 in a group of its own.
+    text = "G00 G17 G40 G49 G80 G90 G15 G69 G50.1\nG97 S2000 M3\nM19\nX1\nM30\n"
+    p = read_program(text, machine=fanuc)
+    assert moves(p) == [(RAPID, 4, [1.0, 0.0, 0.0])]
+    assert {(s.word, s.line) for s in p.skipped} >= {
+        ("G15", 1), ("G69", 1), ("G50.1", 1), ("G97", 2), ("M19", 3),
+    }  # fmt: skip
+    with pytest.raises(BallScrewInputError) as info:
+        read_program(text, machine=vmc)
+    assert info.value.value == "G00 G80" and "fanuc" in info.value.allowed
+    for code in ("G16", "G68", "G51"):  # the modes themselves are refused
+        with pytest.raises(BallScrewInputError):
+            read_program(f"{code}\n", machine=vmc)
+    # Fanuc's K repeats a cycle as L does.
+    k = read_program("G0 Z5\nG91 G99 G81 X10 R-4 Z-3 K3 F100\nM30\n", machine=fanuc)
+    l3 = read_program("G0 Z5\nG91 G99 G81 X10 R-4 Z-3 L3 F100\nM30\n", machine=vmc)
+    np.testing.assert_array_equal(k.end, l3.end)
+    assert k.end[:, 0].max() == pytest.approx(0.030)

@@ -35,7 +35,8 @@ What is read:
   machine's);
 - the drilling cycles ``G73 G81 G82 G83 G85 G89`` in ``G17`` with ``G98``
   (retract to the level the cycles started from) or ``G99`` (to ``R``), ``R``,
-  ``Q`` (peck), ``P`` (dwell), ``L`` (repeats), cancelled by ``G80`` or another
+  ``Q`` (peck), ``P`` (dwell; milliseconds in the ``fanuc`` dialect), ``L``
+  (repeats; also ``K`` in the ``fanuc`` dialect), cancelled by ``G80`` or another
   motion code, repeated on every following block with axis words. They are
   expanded into moves as RS274/NGC defines them (NIST IR 6556, 2000, section
   3.5.16, "Canned Cycles"; the LinuxCNC G-code reference's canned-cycle
@@ -58,9 +59,11 @@ What is read:
 - comments in parentheses or after ``;``, ``N`` block numbers, ``%``, ``O``
   program numbers, ``M2``/``M30`` (the end), a leading byte-order mark;
 - skipped, each with its word and line in :attr:`Program.skipped` and a note:
-  spindle, coolant and stop codes ``M0 M1 M3 M4 M5 M7 M8 M9``, ``S``, ``T``
-  without ``M6`` in its block, ``G40`` (no cutter compensation is on), ``Q``
-  of ``G64`` (a CAM path's own tolerance).
+  spindle, coolant and stop codes ``M0 M1 M3 M4 M5 M7 M8 M9 M19``, ``S``,
+  ``T`` without ``M6`` in its block, the spindle modes ``G96 G97``, the cancel
+  codes ``G15 G40 G50.1 G69`` of modes the reader does not take (polar
+  coordinates, cutter compensation, mirror image, rotation), ``Q`` of ``G64``
+  (a CAM path's own tolerance).
 
 The ``sinumerik`` dialect is first translated into RS274/NGC by
 :func:`ballscrew.program.sinumerik.to_rs274`, line for line.
@@ -105,14 +108,21 @@ _G_GROUPS: dict[str, int] = {
     **dict.fromkeys(("90.1", "91.1"), 4), "94": 5, **dict.fromkeys(("20", "21"), 6),
     "40": 7, **dict.fromkeys(("43", "49"), 8), **dict.fromkeys(("98", "99"), 10),
     **dict.fromkeys(("54", "55", "56", "57", "58", "59"), 12),
-    **dict.fromkeys(("61", "64"), 13),
+    **dict.fromkeys(("61", "64"), 13), **dict.fromkeys(("96", "97"), 14),
+    "15": 17, "69": 16, "50.1": 22,
 }  # fmt: skip
 """The G codes read, by modal group (RS274/NGC's table of modal groups; 0: non-modal)."""
 _GROUP_NAMES = {
     0: "non-modal (G4, G28, G30, G53)", 1: "motion", 2: "plane", 3: "distance mode",
     4: "arc centre mode", 5: "feed mode", 6: "units", 7: "cutter compensation",
     8: "tool length offset", 10: "cycle retract", 12: "work offset", 13: "path mode",
+    14: "spindle speed mode", 16: "rotation", 17: "polar coordinates", 22: "mirror image",
 }  # fmt: skip
+_SKIP_G = {
+    "15": "polar coordinates off", "69": "rotation off", "50.1": "mirror image off",
+    "96": "constant surface speed", "97": "spindle speed in rpm",
+}  # fmt: skip
+"""G codes read and skipped: cancel codes of modes the reader refuses, spindle modes."""
 _REFUSED_G = {
     **dict.fromkeys(("74", "76", "84", "86", "87", "88"), "a tapping, threading or boring cycle"),
     **dict.fromkeys(("41", "42", "41.1", "42.1"), "cutter radius compensation"),
@@ -121,16 +131,17 @@ _REFUSED_G = {
     "61.1": "exact stop mode", "93": "inverse time feed", "95": "feed per revolution",
     "33": "spindle-synchronised motion", "38.2": "probing", "5": "a spline",
     **dict.fromkeys(("59.1", "59.2", "59.3"), "a work offset past G59"),
-    **dict.fromkeys(("68", "69", "50", "51", "15", "16"), "a rotation, scaling or polar mode"),
+    **dict.fromkeys(("68", "50", "51", "16", "51.1"), "a rotation, scaling or mirror image"),
 }  # fmt: skip
 _READ_G = (
-    "G0-G4, G17-G21, G28, G30, G40, G43, G49, G53-G59, G61, G64, G73, G80-G83, G85, "
-    "G89, G90, G90.1, G91, G91.1, G94, G98, G99"
+    "G0-G4, G15, G17-G21, G28, G30, G40, G43, G49, G50.1, G53-G59, G61, G64, G69, G73, "
+    "G80-G83, G85, G89, G90, G90.1, G91, G91.1, G94, G96-G99"
 )
-_M_GROUPS = {0: 4, 1: 4, 2: 4, 30: 4, 6: 6, 3: 7, 4: 7, 5: 7, 7: 8, 8: 8, 9: 8}
+_M_GROUPS = {0: 4, 1: 4, 2: 4, 30: 4, 6: 6, 3: 7, 4: 7, 5: 7, 19: 7, 7: 8, 8: 8, 9: 8}
 _SKIP_M = {
     0: "program stop", 1: "optional stop", 3: "spindle on (CW)", 4: "spindle on (CCW)",
-    5: "spindle off", 7: "mist coolant", 8: "flood coolant", 9: "coolant off",
+    5: "spindle off", 19: "spindle orientation", 7: "mist coolant", 8: "flood coolant",
+    9: "coolant off",
 }  # fmt: skip
 _CYCLES = (73, 81, 82, 83, 85, 89)
 _PLANES = {17: (0, 1, 2), 18: (2, 0, 1), 19: (1, 2, 0)}
@@ -252,8 +263,12 @@ class _Block:
         return None if entry is None else entry[0]
 
 
-def _block(words: list[_Word], number: int) -> _Block:
-    """The words sorted into codes by modal group and parameters; a clash is refused."""
+def _block(words: list[_Word], number: int, fanuc: bool = False) -> _Block:
+    """The words sorted into codes by modal group and parameters; a clash is refused.
+
+    Fanuc puts ``G80`` in a group of its own: with ``fanuc``, ``G0 G80`` (as posts
+    write it) is the motion ``G0`` after the cycle's cancel.
+    """
     block = _Block(number, {}, {}, {})
     for w in words:
         if w.letter == "G":
@@ -262,15 +277,22 @@ def _block(words: list[_Word], number: int) -> _Block:
                 what = _REFUSED_G.get(key, "a code the reader does not support")
                 raise _error(number, w.text, f"{_READ_G} ({w.text} is {what})")
             group = _G_GROUPS[key]
-            if group in block.g:
-                raise _error(number, f"{block.g[group][1]} {w.text}", f"one code of the "
-                             f"{_GROUP_NAMES[group]} group per block")  # fmt: skip
             code = float(key) if "." in key else int(key)
+            if group in block.g:
+                pair = {block.g[group][0], code}
+                if fanuc and 80 in pair and pair - {80} <= {0, 1, 2, 3}:
+                    block.g[group] = max((block.g[group], (code, w.text)), key=_not_g80)
+                    continue
+                hint = ""
+                if not fanuc and 80 in pair:
+                    hint = ' (Fanuc puts G80 in a group of its own: [machine] dialect = "fanuc")'
+                raise _error(number, f"{block.g[group][1]} {w.text}", f"one code of the "
+                             f"{_GROUP_NAMES[group]} group per block{hint}")  # fmt: skip
             block.g[group] = (code, w.text)
         elif w.letter == "M":
             code = int(w.value)
             if code != w.value or code not in _M_GROUPS:
-                raise _error(number, w.text, "M0, M1, M2, M3, M4, M5, M6, M7, M8, M9 or M30")
+                raise _error(number, w.text, "M0-M9, M19 or M30")
             group = _M_GROUPS[code]
             same = block.m.setdefault(group, [])
             if same and not (group == 8 and {code, same[0][0]} == {7, 8}):
@@ -283,6 +305,10 @@ def _block(words: list[_Word], number: int) -> _Block:
                              "each word once per block")  # fmt: skip
             block.params[w.letter] = w
     return block
+
+
+def _not_g80(entry: tuple[int | float, str]) -> bool:
+    return entry[0] != 80
 
 
 @dataclass(frozen=True)
@@ -404,6 +430,10 @@ class _Reader:
             st.plane = int(block.code(2))  # type: ignore[arg-type]
         if block.code(7) is not None:
             self.skip("G40", n, "cutter compensation off")
+        for group in (14, 16, 17, 22):
+            if group in block.g:
+                key = f"{block.g[group][0]:g}"
+                self.skip(f"G{key}", n, _SKIP_G[key])
         self.tool_length(block)
         self.work_offset(block)
         self.path_mode(block)
@@ -632,6 +662,10 @@ class _Reader:
         if st.feed is None:
             raise _error(n, name, "an F word before a canned cycle")
         given = {k: p.pop(k) for k in "RQPL" if k in p}
+        if self.fanuc and "K" in p:  # Fanuc's count of repeats
+            if "L" in given:
+                raise _error(n, p["K"].text, "either K or L, the repeats")
+            given["L"] = p.pop("K")
         if "Z" in axes:
             st.cycle["Z"] = axes["Z"].value
         for key in "RQP":
@@ -832,7 +866,7 @@ def read_program(text: str, *, arc_tolerance: float = 2e-6, start: Any = (0.0, 0
             words = [w for w in words if w.letter != "O"]
             if not words:
                 continue
-        ended = reader.run(_block(words, number))
+        ended = reader.run(_block(words, number, reader.fanuc))
         if max_blocks is not None and len(reader.rows) > max_blocks:
             raise _error(number, f"{len(reader.rows)} blocks", f"at most {max_blocks} blocks")
     if not ended:
