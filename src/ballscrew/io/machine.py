@@ -21,9 +21,14 @@ table), the axis's limits and the process force it feels during feed moves::
     process_force = "600 N"              # against the motion, in G1/G2/G3 moves
 
 Rotary axes (``A``, ``B``, ``C``) may be listed so that the file describes the
-whole machine; they are left out of the computation, and :attr:`Machine.notes`
-says so. Pydantic validates the structure (unknown keys are errors, so a
-misspelt key is named); every problem is one
+whole machine. They have no ball screw and are left out of the energy, and
+:attr:`Machine.notes` says so; with their ``max_feed``, ``max_acceleration``
+and ``max_jerk`` (``"20 rev/min"``, ``"1000 deg/s^2"``) a program may move them
+and their moves are timed with those limits. The file may also give the
+program's dialect, a tool change time, a tool table, work offsets and
+reference positions (:mod:`ballscrew.program.gcode` reads them). Pydantic
+validates the structure (unknown keys are errors, so a misspelt key is named);
+every problem is one
 :class:`~ballscrew.errors.BallScrewInputError` naming the key by its dotted
 path (``axes.X.max_jerk``). Values are converted to SI by
 :func:`ballscrew.io.units.to_si` at load time.
@@ -56,6 +61,7 @@ __all__ = [
     "ROTARY_AXES",
     "Machine",
     "MachineAxis",
+    "RotaryAxis",
     "example_machine_text",
     "load_machine",
     "parse_machine",
@@ -120,6 +126,17 @@ class AxisEntry(BaseModel):
     )
 
 
+class RotaryEntry(BaseModel):
+    """``[axes.A]``: a rotary axis (no ball screw); with its limits, its moves are timed."""
+
+    model_config = ConfigDict(extra="forbid")
+    max_feed: Value | None = Field(default=None, description="largest angular speed")
+    max_acceleration: Value | None = Field(default=None, description="largest angular acc.")
+    max_jerk: Value | None = Field(default=None, description="largest angular jerk")
+    note: str = ""
+    description: str = ""
+
+
 class MachineFile(BaseModel):
     """A machine file."""
 
@@ -169,6 +186,16 @@ class MachineAxis:
 
 
 @dataclass(frozen=True)
+class RotaryAxis:
+    """A rotary axis's limits (SI: rad/s, rad/s², rad/s³): they time its moves."""
+
+    letter: str
+    max_feed: float
+    max_acceleration: float
+    max_jerk: float
+
+
+@dataclass(frozen=True)
 class Machine:
     """A loaded machine file.
 
@@ -201,6 +228,8 @@ class Machine:
         Work offset code (54 to 59) -> letter -> the part zero in machine coordinates [m].
     reference : dict
         28 or 30 -> letter -> reference position in machine coordinates [m].
+    rotary : dict
+        Letter -> :class:`RotaryAxis`, the rotary axes whose limits the file gives.
     notes : tuple of str
         What was left out (rotary axes).
     text : str
@@ -222,6 +251,7 @@ class Machine:
     tools: dict[int, float] = field(default_factory=dict)
     offsets: dict[int, dict[str, float]] = field(default_factory=dict)
     reference: dict[int, dict[str, float]] = field(default_factory=dict)
+    rotary: dict[str, RotaryAxis] = field(default_factory=dict)
 
 
 def _si(name: str, raw: Any, unit: str) -> float:
@@ -323,12 +353,22 @@ def parse_machine(
                 f"axes.{letter}", letter, f"a program letter: {', '.join(LINEAR_AXES)} "
                 f"(linear) or {', '.join(ROTARY_AXES)} (rotary, left out)",
             )  # fmt: skip
+    rotary: dict[str, RotaryAxis] = {}
     for letter in ROTARY_AXES:
         if letter in data.axes:
-            notes.append(
-                f"axes.{letter}: rotary axes are not driven by a ball screw and are left out; "
-                f"a program that moves {letter} is refused"
-            )
+            limits = _rotary(letter, data.axes[letter])
+            if limits is None:
+                notes.append(
+                    f"axes.{letter}: a rotary axis, not driven by a ball screw; without its "
+                    f"max_feed, max_acceleration and max_jerk a program that moves {letter} "
+                    "is refused"
+                )
+            else:
+                rotary[letter] = limits
+                notes.append(
+                    f"axes.{letter}: a rotary axis, not driven by a ball screw: its moves are "
+                    "timed with its limits and left out of the ball-screw energy"
+                )
     for letter in LINEAR_AXES:
         if letter not in data.axes:
             continue
@@ -391,7 +431,31 @@ def parse_machine(
         tools=tools,
         offsets=offsets,
         reference=reference,
+        rotary=rotary,
     )
+
+
+def _rotary(letter: str, raw: dict[str, Any]) -> RotaryAxis | None:
+    """A rotary axis's limits in SI; None when the file gives none of them."""
+    key = f"axes.{letter}"
+    try:
+        entry = RotaryEntry.model_validate(raw)
+    except ValidationError as exc:
+        raise _validation_error(exc, f"{key}.") from None
+    given = {
+        "max_feed": (entry.max_feed, "rad/s"),
+        "max_acceleration": (entry.max_acceleration, "rad/s**2"),
+        "max_jerk": (entry.max_jerk, "rad/s**3"),
+    }
+    if all(v is None for v, _ in given.values()):
+        return None
+    values: dict[str, float] = {}
+    for name, (value, unit) in given.items():
+        if value is None:
+            raise BallScrewInputError(f"{key}.{name}", "(missing)", "all three of max_feed, "
+                                      "max_acceleration and max_jerk, or none")  # fmt: skip
+        values[name] = _positive(f"{key}.{name}", value, unit)
+    return RotaryAxis(letter=letter, **values)
 
 
 def _tables(

@@ -295,7 +295,16 @@ def _limits(machine: Machine, program: Program) -> Limits:
         rapid_feed=machine.rapid_feed,
         path_tolerance=machine.path_tolerance,
         sample_time=machine.sample_time,
+        rotary_feed=_rotary_limit(machine, "max_feed"),
+        rotary_acceleration=_rotary_limit(machine, "max_acceleration"),
+        rotary_jerk=_rotary_limit(machine, "max_jerk"),
     )
+
+
+def _rotary_limit(machine: Machine, name: str) -> FloatArray:
+    """One limit of A, B, C as :class:`Limits` takes it (NaN: the file gives none)."""
+    rotary = machine.rotary
+    return np.array([getattr(rotary[k], name) if k in rotary else math.nan for k in "ABC"])
 
 
 def _check_travel(machine: Machine, program: Program) -> None:

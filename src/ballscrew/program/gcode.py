@@ -56,6 +56,11 @@ What is read:
   first block of the series (LinuxCNC's reading); in G91, R is counted from
   that height and Z from R. The moves of a cycle are taken with exact path
   (no corner blending), as LinuxCNC does;
+- rotary axes ``A``, ``B``, ``C`` in ``G0``/``G1`` blocks, when the machine file
+  gives their limits: in degrees (absolute, or incremental under ``G91``), timed
+  with those limits and left out of the ball-screw energy. Alone in a ``G1``,
+  ``F`` is in degrees per minute; with X, Y or Z, ``F`` is the linear path's
+  feed and the rotary axes follow in proportion (as LinuxCNC);
 - comments in parentheses or after ``;``, ``N`` block numbers, ``%``, ``O``
   program numbers, ``M2``/``M30`` (the end), a leading byte-order mark;
 - skipped, each with its word and line in :attr:`Program.skipped` and a note:
@@ -71,7 +76,8 @@ The ``sinumerik`` dialect is first translated into RS274/NGC by
 Two codes of one modal group in a block (``G0 G1``, ``G90 G91``, ``M3 M5``)
 are refused naming both. Everything else (macros and variables, subprograms,
 cutter radius compensation, other cycles, ``G10 G92``, inverse-time feed,
-rotary axes) is refused with the line number and the word.
+a rotary axis the machine file gives no limits for) is refused with the line
+number and the word.
 """
 
 from __future__ import annotations
@@ -193,6 +199,11 @@ class Program:
         machine's (None: the machine's everywhere).
     skipped : tuple of Skipped
         Every word skipped, with its line.
+    rotary_start, rotary_end : numpy.ndarray, shape (n, 3), or None
+        A, B, C at the block's start and end [rad] (None: no rotary axis). A
+        block that moves a rotary axis alone has its ``feed`` in rad/s (F is in
+        degrees per minute there); with a linear axis, F is the linear path's
+        feed and the rotary axes follow in proportion.
     """
 
     kind: np.ndarray
@@ -209,6 +220,8 @@ class Program:
     text: str = field(default="", repr=False)
     tolerance: FloatArray | None = None
     skipped: tuple[Skipped, ...] = ()
+    rotary_start: FloatArray | None = None
+    rotary_end: FloatArray | None = None
 
     @property
     def size(self) -> int:
@@ -320,18 +333,22 @@ class _Setup:
     tools: dict[int, float] = field(default_factory=dict)
     offsets: dict[int, dict[str, float]] = field(default_factory=dict)
     reference: dict[int, dict[str, float]] = field(default_factory=dict)
+    rotary: frozenset[str] = frozenset()  # the rotary axes with limits
 
     @classmethod
     def of(cls, machine: Any) -> _Setup:
         if machine is None:
             return cls()
         return cls(machine.dialect, machine.tool_change_time, dict(machine.tools),
-                   dict(machine.offsets), dict(machine.reference))  # fmt: skip
+                   dict(machine.offsets), dict(machine.reference),
+                   frozenset(getattr(machine, "rotary", {})))  # fmt: skip
 
 
 @dataclass
 class _State:
     position: list[float]  # machine coordinates [m]
+    rotary: list[float] = field(default_factory=lambda: [0.0, 0.0, 0.0])  # A, B, C [rad]
+    rate: float = math.nan  # the F word as written (degrees per minute for a rotary move)
     inch: bool = False
     incremental: bool = False
     centre_absolute: bool = False  # G90.1
@@ -381,21 +398,30 @@ class _Reader:
     def emit(
         self, kind: int, number: int, target: list[float], *, tolerance: float | None = None,
         centre: list[float] | None = None, sweep: float = 0.0, dwell: float = 0.0,
+        rotary: list[float] | None = None,
     ) -> None:  # fmt: skip
         """Add a block from the current position to ``target`` (a move of no length: none)."""
         st = self.state
-        if kind in (RAPID, FEED) and target == st.position:
+        turn = st.rotary if rotary is None else rotary
+        if kind in (RAPID, FEED) and target == st.position and turn == st.rotary:
             return
         if kind in (FEED, ARC) and st.feed is None:
             raise _error(number, "F", "an F word before the first feed move")
         feed = st.feed if kind in (FEED, ARC) else math.nan
+        if kind == FEED and target == st.position:  # a rotary axis alone: F in deg/min
+            feed = math.radians(st.rate) / 60.0
         tol = st.tolerance if tolerance is None else tolerance
         for i, k in enumerate("XYZ"):
             if target[i] != st.position[i]:
                 self.used.add(k)
+        for i, k in enumerate("ABC"):
+            if turn[i] != st.rotary[i]:
+                self.used.add(k)
         self.rows.append((kind, number, list(st.position), list(target), feed,
-                          centre or [math.nan] * 3, st.plane, sweep, dwell, tol))  # fmt: skip
+                          centre or [math.nan] * 3, st.plane, sweep, dwell, tol,
+                          list(st.rotary), list(turn)))  # fmt: skip
         st.position = list(target)
+        st.rotary = list(turn)
 
     # -- one block ----------------------------------------------------------------------
     def run(self, block: _Block) -> bool:
@@ -408,7 +434,7 @@ class _Reader:
             feed = word.value * self.unit / 60.0
             if not feed > 0.0:
                 raise _error(n, word.text, "a feed > 0 (mm/min under G21, in/min under G20)")
-            st.feed = feed
+            st.feed, st.rate = feed, word.value
         if "S" in p:
             self.skip("S", n, f"spindle speed {p.pop('S').text}")
         change = 6 in block.m
@@ -558,11 +584,27 @@ class _Reader:
         st, n, p = self.state, block.number, block.params
         code = block.code(1)
         axes = {k: p.pop(k) for k in "XYZ" if k in p}
-        for rotary in "ABCUVW":
-            if rotary in p:
-                raise _error(n, p[rotary].text, "X, Y or Z: rotary and parallel axes are "
-                             "left out of the computation")  # fmt: skip
+        turns = {k: p.pop(k) for k in "ABC" if k in p}
+        for k in "UVW":
+            if k in p:
+                raise _error(n, p[k].text, "X, Y, Z (and A, B, C): parallel axes are not read")
+        for k, word in turns.items():
+            if k not in self.setup.rotary:
+                allowed = (
+                    f"a rotary axis of the machine file with its limits ([axes.{k}] "
+                    "max_feed, max_acceleration, max_jerk)"
+                )
+                raise _error(n, word.text, allowed)
         home = block.code(0)
+        if turns:
+            motion = st.motion if block.code(1) is None else block.code(1)
+            if home is not None or motion not in (0, 1):
+                raise _error(n, next(iter(turns.values())).text, "A, B or C in a G0 or G1 "
+                             "block (not with G2, G3, a cycle, G28, G30 or G53)")  # fmt: skip
+            if block.code(1) is not None:
+                self.set_motion(int(block.code(1)))  # type: ignore[arg-type]
+            self.rotary_move(axes, turns, block)
+            return
         if home in (28, 30):
             if code is not None and axes:
                 raise _error(n, f"G{home} {block.g[1][1]}", "one code using the axis words "
@@ -602,6 +644,23 @@ class _Reader:
             a, b, _ = _PLANES[st.plane]
             self.used.update("XYZ"[i] for i in (a, b))
             self.emit(ARC, n, target, centre=c, sweep=sweep)
+
+    def rotary_move(self, axes: dict[str, _Word], turns: dict[str, _Word], block: _Block) -> None:
+        """A G0 or G1 that turns a rotary axis, with or without the linear ones."""
+        st, n = self.state, block.number
+        if any(k in block.params for k in "IJKR"):
+            word = next(block.params[k] for k in "IJKR" if k in block.params)
+            raise _error(n, word.text, "I, J, K or R only with G2, G3 or a cycle")
+        if st.motion == 1 and st.feed is None:
+            raise _error(n, "G1", "an F word before the first feed move")
+        turn = list(st.rotary)
+        for i, k in enumerate("ABC"):
+            if k in turns:
+                v = math.radians(turns[k].value)
+                turn[i] = st.rotary[i] + v if st.incremental else v
+        self.note("rotary", f"{', '.join(turns)} (rotary, line {n}): timed with the machine "
+                  "file's limits, left out of the ball-screw energy")  # fmt: skip
+        self.emit(RAPID if st.motion == 0 else FEED, n, self.target(axes), rotary=turn)
 
     def set_motion(self, code: int) -> None:
         st = self.state
@@ -873,7 +932,7 @@ def read_program(text: str, *, arc_tolerance: float = 2e-6, start: Any = (0.0, 0
         reader.note("end", "no M2 or M30: the program ends at its last line")
     rows = reader.rows
     n = len(rows)
-    cols = list(zip(*rows, strict=True)) if rows else [()] * 10
+    cols = list(zip(*rows, strict=True)) if rows else [()] * 12
     return Program(
         kind=np.array(cols[0], dtype=int),
         line=np.array(cols[1], dtype=int),
@@ -889,4 +948,6 @@ def read_program(text: str, *, arc_tolerance: float = 2e-6, start: Any = (0.0, 0
         text=text,
         tolerance=np.array(cols[9], dtype=float),
         skipped=tuple(reader.skipped),
+        rotary_start=np.array(cols[10], dtype=float).reshape(n, 3),
+        rotary_end=np.array(cols[11], dtype=float).reshape(n, 3),
     )

@@ -44,7 +44,7 @@ there, arcs at least every 5°).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -59,9 +59,18 @@ MARGIN = 1.0 - 1e-7
 """Entry and exit speeds are kept this far inside what the look-ahead allows."""
 
 
+def _no_rotary() -> FloatArray:
+    return np.full(3, np.nan)
+
+
 @dataclass(frozen=True)
 class Limits:
-    """The axes' limits, X, Y, Z (SI); an axis the machine lacks has NaN."""
+    """The axes' limits, X, Y, Z (SI); an axis the machine lacks has NaN.
+
+    ``rotary_feed``, ``rotary_acceleration``, ``rotary_jerk``: those of A, B, C
+    [rad/s, rad/s², rad/s³], NaN for an axis without limits (a program moving it
+    is refused).
+    """
 
     feed: FloatArray
     acceleration: FloatArray
@@ -69,6 +78,9 @@ class Limits:
     rapid_feed: float
     path_tolerance: float
     sample_time: float = 5e-3
+    rotary_feed: FloatArray = field(default_factory=_no_rotary)
+    rotary_acceleration: FloatArray = field(default_factory=_no_rotary)
+    rotary_jerk: FloatArray = field(default_factory=_no_rotary)
 
 
 @dataclass(frozen=True)
@@ -187,7 +199,16 @@ def _geometry(program: Program) -> dict[str, FloatArray]:
             tan[:, ib] = np.cos(theta) * sgn * share[m]
             tan[:, inn] = normal_share[m]
             idx[m] = tan
-    return {"length": length, "t0": t0, "t1": t1, "radius": radius, "share": share}
+    # Rotary axes (lines only): their angle per unit of path; a block turning them alone
+    # has its path in radians.
+    turn = np.zeros((n, 3))
+    if program.rotary_start is not None and program.rotary_end is not None:
+        dr = program.rotary_end - program.rotary_start
+        alone = (length == 0.0) & np.any(dr != 0.0, axis=1)
+        length = np.where(alone, np.linalg.norm(dr, axis=1), length)
+        turn = np.divide(dr, length[:, None], out=turn, where=length[:, None] > 0)
+    return {"length": length, "t0": t0, "t1": t1, "radius": radius, "share": share,
+            "turn": turn}  # fmt: skip
 
 
 def _block_limits(program: Program, g: dict[str, FloatArray], lim: Limits
@@ -219,6 +240,21 @@ def _block_limits(program: Program, g: dict[str, FloatArray], lim: Limits
             v[arc] = np.minimum(v[arc], np.cbrt(0.5 * j_plane * r * r) / share)
             a[arc] = 0.5 * a[arc]
             j[arc] = 0.5 * j[arc]
+    turning = np.abs(g["turn"])
+    if np.any(turning > 0.0):
+        lacking = (turning > 0.0) & np.isnan(lim.rotary_feed)
+        if np.any(lacking):
+            k = int(np.argmax(np.any(lacking, axis=1)))
+            letter = "ABC"[int(np.argmax(lacking[k]))]
+            raise BallScrewInputError(f"program line {int(program.line[k])}", letter,
+                                      "a rotary axis with limits in the machine file")  # fmt: skip
+        alone = np.all(program.end == program.start, axis=1) & (program.kind == RAPID)
+        v = np.where(alone, np.inf, v)  # the rapid feed is a linear speed
+        with np.errstate(divide="ignore", invalid="ignore"):
+            for cap, mine in ((lim.rotary_feed, v), (lim.rotary_acceleration, a),
+                              (lim.rotary_jerk, j)):  # fmt: skip
+                mine[:] = np.minimum(mine, np.min(np.where(turning > 0, cap / turning, np.inf),
+                                                  axis=1))  # fmt: skip
     dwell = program.kind == DWELL
     v[dwell], a[dwell], j[dwell] = 0.0, 1.0, 1.0
     return v, a, j
@@ -252,6 +288,8 @@ def _junctions(program: Program, g: dict[str, FloatArray], v: FloatArray, lim: L
     corner = np.where(straight, np.inf, np.where(tol > 0.0, corner, 0.0))
     corner = np.where(cos > 1.0 - 1e-12, 0.0, corner)  # a reversal of the path
     stop = (program.kind[:-1] == DWELL) | (program.kind[1:] == DWELL)
+    turning = np.any(g["turn"] != 0.0, axis=1)  # a rotary axis: a stop on either side
+    stop |= turning[:-1] | turning[1:]
     vj[1:] = np.where(stop, 0.0, np.minimum(np.minimum(v[:-1], v[1:]), corner))
     return vj
 
