@@ -251,6 +251,8 @@ def test_fanuc_dwell_in_milliseconds_rs274_in_seconds_with_a_note(vmc: Machine) 
     assert q.dwell.tolist() == [1500.0]
     note = next(n for n in q.notes if "G4 P1500" in n)
     assert "1500 s" in note and "line 1" in note and "1.5 s" in note and "fanuc" in note
+    cycle = read_program("G0 Z5\nG82 X1 R1 Z-1 P250 F100\nM30\n")  # 250 s: told
+    assert any("G82 P250 (line 2): a dwell of 250 s" in n for n in cycle.notes)
     with pytest.raises(BallScrewInputError) as info:
         read_program("G4 X2\n")  # Fanuc's X for a dwell, in the RS274 dialect
     assert "fanuc" in info.value.allowed

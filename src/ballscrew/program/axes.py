@@ -329,7 +329,8 @@ def _check_travel(machine: Machine, program: Program) -> None:
             k = int(np.argmax(bad))
             raise BallScrewInputError(
                 f"program line {int(lines[k])}", f"{letter}{ends[k] * 1e3:g} mm",
-                f"within axes.{letter}.travel, {low * 1e3:g} to {high * 1e3:g} mm",
+                f"within axes.{letter}.travel, {low * 1e3:g} to {high * 1e3:g} mm (machine "
+                "coordinates: the program's plus the work offset and, on Z, the tool length)",
             )  # fmt: skip
 
 

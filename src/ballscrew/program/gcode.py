@@ -766,9 +766,12 @@ class _Reader:
         dwell = 0.0
         if code in (82, 89):
             word = given.get("P", _Word("P", st.cycle["P"], f"P{st.cycle['P']:g}"))
-            dwell = self.dwell_seconds(word, n)[0]
+            dwell, reading = self.dwell_seconds(word, n)
             if not dwell >= 0.0:
                 raise _error(n, word.text, "a dwell >= 0")
+            if dwell > LONG_DWELL:
+                self.note(f"dwell {n}", f"{name} {word.text} (line {n}): a dwell of {dwell:g} s "
+                          f"at each hole, {reading}")  # fmt: skip
 
         def go(kind: int, z: float) -> None:
             self.emit(kind, n, [x, y, z], tolerance=0.0)
