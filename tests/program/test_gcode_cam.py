@@ -14,6 +14,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from ballscrew.errors import BallScrewInputError
 from ballscrew.io.machine import Machine, load_machine, parse_machine
@@ -361,3 +363,36 @@ def test_what_posts_write_besides_is_skipped_with_its_line(vmc: Machine) -> None
     l3 = read_program("G0 Z5\nG91 G99 G81 X10 R-4 Z-3 L3 F100\nM30\n", machine=vmc)
     np.testing.assert_array_equal(k.end, l3.end)
     assert k.end[:, 0].max() == pytest.approx(0.030)
+
+
+_PIECES = [
+    "G0", "G1", "G2", "G3", "G4", "G17", "G18", "G20", "G21", "G28", "G30", "G40", "G43",
+    "G49", "G53", "G54", "G55", "G61", "G64", "G73", "G80", "G81", "G82", "G83", "G85", "G89",
+    "G90", "G91", "G90.1", "G91.1", "G98", "G99", "G15", "G97", "X10", "X-4", "Y-5", "Z2",
+    "Z-3", "A30", "I5", "J0", "R2", "R-1", "Q1", "P0.5", "P1500", "L2", "K2", "H1", "H0",
+    "F200", "S1000", "T1", "M3", "M6", "M19", "M30", "N10", "(c)", ";c", "%", "O1",
+]  # fmt: skip
+
+
+@settings(max_examples=400, deadline=None)
+@given(
+    lines=st.lists(st.lists(st.sampled_from(_PIECES), max_size=5), max_size=10),
+    dialect=st.sampled_from(["rs274", "fanuc"]),
+)
+def test_any_words_are_read_or_refused_naming_one_of_their_lines(
+    lines: list[list[str]], dialect: str
+) -> None:
+    # Whatever a post writes: blocks, or a refusal naming a line of the text; never another
+    # exception, and never a block from a line without a word that moves or waits.
+    machine = dataclasses.replace(load_machine(EXAMPLES / "machine_vmc.toml"), dialect=dialect)
+    text = "\n".join(" ".join(words) for words in lines)
+    try:
+        p = read_program(text, machine=machine)
+    except BallScrewInputError as exc:
+        assert exc.field.startswith("program line ")
+        assert 1 <= int(exc.field.removeprefix("program line ")) <= len(lines)
+        return
+    movers = ("G", "X", "Y", "Z", "M6", "L", "K")
+    for n in set(p.line.tolist()):
+        assert any(w.startswith(movers) for w in lines[n - 1])
+    assert np.all(np.isfinite(p.end)) and np.all(p.dwell >= 0.0)
