@@ -21,9 +21,12 @@ def test_blocks_modal_words_comments_and_numbers() -> None:
     np.testing.assert_allclose(p.end[-2], [0.020, 0.0, -0.001])
     assert p.feed[1] == pytest.approx(300e-3 / 60)
     assert p.dwell[-1] == 0.5
-    text = " ".join(p.notes)
-    for told in ("%", "O (program number", "M3", "S (spindle", "after M2/M30"):
-        assert told in text  # never skipped silently
+    # Never skipped silently: every word not run is kept with its line, and told in one line.
+    assert [(s.word, s.line) for s in p.skipped] == [("%", 1), ("O", 2), ("S", 8), ("M3", 8)]
+    assert p.notes[0] == (
+        "skipped, no motion of the feed axes: % (line 1), O (line 2), S (line 8), M3 (line 8)"
+    )
+    assert any("line 10 and on, after M2/M30: not run" in n for n in p.notes)
 
 
 def test_r_and_ijk_arcs_agree() -> None:

@@ -63,7 +63,8 @@ What is read:
   feed and the rotary axes follow in proportion (as LinuxCNC);
 - comments in parentheses or after ``;``, ``N`` block numbers, ``%``, ``O``
   program numbers, ``M2``/``M30`` (the end), a leading byte-order mark;
-- skipped, each with its word and line in :attr:`Program.skipped` and a note:
+- skipped, each with its word and line in :attr:`Program.skipped`, and all told in
+  one note (:func:`skipped_summary`):
   spindle, coolant and stop codes ``M0 M1 M3 M4 M5 M7 M8 M9 M19``, ``S``,
   ``T`` without ``M6`` in its block, the spindle modes ``G96 G97``, the cancel
   codes ``G15 G40 G50.1 G69`` of modes the reader does not take (polar
@@ -84,6 +85,7 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any, NamedTuple
 
@@ -91,7 +93,9 @@ import numpy as np
 
 from ..errors import BallScrewInputError, FloatArray
 
-__all__ = ["ARC", "DWELL", "FEED", "RAPID", "Program", "Skipped", "read_program"]
+__all__ = [
+    "ARC", "DWELL", "FEED", "RAPID", "Program", "Skipped", "read_program", "skipped_summary",
+]  # fmt: skip
 
 RAPID, FEED, ARC, DWELL = 0, 1, 2, 3
 """Kinds of block."""
@@ -124,11 +128,6 @@ _GROUP_NAMES = {
     8: "tool length offset", 10: "cycle retract", 12: "work offset", 13: "path mode",
     14: "spindle speed mode", 16: "rotation", 17: "polar coordinates", 22: "mirror image",
 }  # fmt: skip
-_SKIP_G = {
-    "15": "polar coordinates off", "69": "rotation off", "50.1": "mirror image off",
-    "96": "constant surface speed", "97": "spindle speed in rpm",
-}  # fmt: skip
-"""G codes read and skipped: cancel codes of modes the reader refuses, spindle modes."""
 _REFUSED_G = {
     **dict.fromkeys(("74", "76", "84", "86", "87", "88"), "a tapping, threading or boring cycle"),
     **dict.fromkeys(("41", "42", "41.1", "42.1"), "cutter radius compensation"),
@@ -144,11 +143,6 @@ _READ_G = (
     "G80-G83, G85, G89, G90, G90.1, G91, G91.1, G94, G96-G99"
 )
 _M_GROUPS = {0: 4, 1: 4, 2: 4, 30: 4, 6: 6, 3: 7, 4: 7, 5: 7, 19: 7, 7: 8, 8: 8, 9: 8}
-_SKIP_M = {
-    0: "program stop", 1: "optional stop", 3: "spindle on (CW)", 4: "spindle on (CCW)",
-    5: "spindle off", 19: "spindle orientation", 7: "mist coolant", 8: "flood coolant",
-    9: "coolant off",
-}  # fmt: skip
 _CYCLES = (73, 81, 82, 83, 85, 89)
 _PLANES = {17: (0, 1, 2), 18: (2, 0, 1), 19: (1, 2, 0)}
 """Plane code -> (first axis, second axis, normal axis) indices of X, Y, Z (G18: Z, X)."""
@@ -192,7 +186,9 @@ class Program:
     axes : frozenset of str
         The axis letters the program moves.
     notes : tuple of str
-        What was skipped or read in a way to know, one note per kind, with its first line.
+        The words skipped in one line (:func:`skipped_summary`), then what was read in a
+        way to know (a long dwell, a tool change, a rotary axis), one note per kind with
+        its first line.
     tolerance : numpy.ndarray or None
         The path tolerance the corner at each block's start may be blended within
         [m]: 0 under G61 and in canned cycles, ``G64 P``'s, NaN for the
@@ -378,10 +374,8 @@ class _Reader:
         self.used: set[str] = set()
 
     # -- bookkeeping --------------------------------------------------------------------
-    def skip(self, word: str, number: int, why: str) -> None:
+    def skip(self, word: str, number: int) -> None:
         self.skipped.append(Skipped(word, number))
-        self.notes.setdefault(word, f"{word} ({why}, line {number}): skipped, no motion of "
-                              "the feed axes")  # fmt: skip
 
     def note(self, key: str, text: str) -> None:
         self.notes.setdefault(key, text)
@@ -436,7 +430,8 @@ class _Reader:
                 raise _error(n, word.text, "a feed > 0 (mm/min under G21, in/min under G20)")
             st.feed, st.rate = feed, word.value
         if "S" in p:
-            self.skip("S", n, f"spindle speed {p.pop('S').text}")
+            p.pop("S")
+            self.skip("S", n)
         change = 6 in block.m
         if "T" in p:
             word = p.pop("T")
@@ -444,22 +439,22 @@ class _Reader:
                 raise _error(n, word.text, "a tool number T0, T1, ...")
             st.selected = int(word.value)
             if not change:
-                self.skip("T", n, f"tool select {word.text}")
+                self.skip("T", n)
         if change:
             self.tool_change(n)
         for group in (7, 8):
-            for code, text in block.m.get(group, []):
-                self.skip(text, n, _SKIP_M[code])
+            for code, _ in block.m.get(group, []):
+                self.skip(f"M{code}", n)
         if block.code(0) == 4:
             self.dwell(block)
         if block.code(2) is not None:
             st.plane = int(block.code(2))  # type: ignore[arg-type]
         if block.code(7) is not None:
-            self.skip("G40", n, "cutter compensation off")
+            self.skip("G40", n)
         for group in (14, 16, 17, 22):
             if group in block.g:
                 key = f"{block.g[group][0]:g}"
-                self.skip(f"G{key}", n, _SKIP_G[key])
+                self.skip(f"G{key}", n)
         self.tool_length(block)
         self.work_offset(block)
         self.path_mode(block)
@@ -471,11 +466,11 @@ class _Reader:
             st.retract = int(block.code(10))  # type: ignore[arg-type]
         self.motion(block)
         ended = False
-        for code, text in block.m.get(4, []):
+        for code, _ in block.m.get(4, []):
             if code in (2, 30):
                 ended = True
             else:
-                self.skip(text, n, _SKIP_M[code])
+                self.skip(f"M{code}", n)
         if p:
             word = next(iter(p.values()))
             raise _error(n, word.text, f"a word this block uses ({word.letter} is read with "
@@ -577,7 +572,8 @@ class _Reader:
                     raise _error(n, word.text, "a path tolerance P >= 0")
                 self.state.tolerance = word.value * self.unit
             if "Q" in p:
-                self.skip("Q", n, f"G64 {p.pop('Q').text}, the naive CAM tolerance")
+                p.pop("Q")
+                self.skip("Q", n)
 
     # -- motion -------------------------------------------------------------------------
     def motion(self, block: _Block) -> None:
@@ -878,6 +874,26 @@ def _sinumerik(text: str) -> tuple[str, list[str]]:
     return out
 
 
+def skipped_summary(skipped: Sequence[Skipped]) -> str:
+    """One line for the words skipped: each with its count and first line, in order.
+
+    Examples
+    --------
+    >>> skipped_summary([Skipped("S", 3), Skipped("M3", 3), Skipped("S", 9)])
+    'skipped, no motion of the feed axes: S x2 (first line 3), M3 (line 3)'
+    """
+    first: dict[str, int] = {}
+    count: dict[str, int] = {}
+    for word, line in skipped:
+        first.setdefault(word, line)
+        count[word] = count.get(word, 0) + 1
+    told = [
+        f"{w} x{count[w]} (first line {first[w]})" if count[w] > 1 else f"{w} (line {first[w]})"
+        for w in first
+    ]
+    return "skipped, no motion of the feed axes: " + ", ".join(told)
+
+
 def read_program(text: str, *, arc_tolerance: float = 2e-6, start: Any = (0.0, 0.0, 0.0),
                  max_blocks: int | None = None, machine: Any = None) -> Program:  # fmt: skip
     """Read a part program into blocks in machine coordinates (module docstring).
@@ -918,13 +934,13 @@ def read_program(text: str, *, arc_tolerance: float = 2e-6, start: Any = (0.0, 0
         words = _words(raw, number)
         if not words:
             if raw.strip().startswith("%"):
-                reader.skip("%", number, "tape delimiter")
+                reader.skip("%", number)
             continue
         if ended:
             reader.note("after end", f"line {number} and on, after M2/M30: not run")
             break
         if any(w.letter == "O" for w in words):
-            reader.skip("O", number, "program number")
+            reader.skip("O", number)
             words = [w for w in words if w.letter != "O"]
             if not words:
                 continue
@@ -947,7 +963,8 @@ def read_program(text: str, *, arc_tolerance: float = 2e-6, start: Any = (0.0, 0
         sweep=np.array(cols[7], dtype=float),
         dwell=np.array(cols[8], dtype=float),
         axes=frozenset(reader.used),
-        notes=tuple(reader.notes.values()),
+        notes=(skipped_summary(reader.skipped),) * bool(reader.skipped)
+        + tuple(reader.notes.values()),
         text=text,
         tolerance=np.array(cols[9], dtype=float),
         skipped=tuple(reader.skipped),
