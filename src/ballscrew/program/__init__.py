@@ -3,7 +3,7 @@
 :func:`run_program` reads a G-code program (:mod:`.gcode`), plans its
 jerk-limited motion with look-ahead (:mod:`.planner`), and runs every linear
 axis of a machine file (:mod:`ballscrew.io.machine`) through it with the axis
-wing (:mod:`.axes`). Needs the ``program`` extra (gcodeparser, ruckig, xarray).
+wing (:mod:`.axes`). Needs the ``program`` extra (ruckig, xarray).
 """
 
 from .axes import AxisResult, ProgramResult, Reversal, run_program

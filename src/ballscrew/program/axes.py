@@ -295,7 +295,16 @@ def _limits(machine: Machine, program: Program) -> Limits:
         rapid_feed=machine.rapid_feed,
         path_tolerance=machine.path_tolerance,
         sample_time=machine.sample_time,
+        rotary_feed=_rotary_limit(machine, "max_feed"),
+        rotary_acceleration=_rotary_limit(machine, "max_acceleration"),
+        rotary_jerk=_rotary_limit(machine, "max_jerk"),
     )
+
+
+def _rotary_limit(machine: Machine, name: str) -> FloatArray:
+    """One limit of A, B, C as :class:`Limits` takes it (NaN: the file gives none)."""
+    rotary = machine.rotary
+    return np.array([getattr(rotary[k], name) if k in rotary else math.nan for k in "ABC"])
 
 
 def _check_travel(machine: Machine, program: Program) -> None:
@@ -320,7 +329,8 @@ def _check_travel(machine: Machine, program: Program) -> None:
             k = int(np.argmax(bad))
             raise BallScrewInputError(
                 f"program line {int(lines[k])}", f"{letter}{ends[k] * 1e3:g} mm",
-                f"within axes.{letter}.travel, {low * 1e3:g} to {high * 1e3:g} mm",
+                f"within axes.{letter}.travel, {low * 1e3:g} to {high * 1e3:g} mm (machine "
+                "coordinates: the program's plus the work offset and, on Z, the tool length)",
             )  # fmt: skip
 
 
@@ -599,7 +609,7 @@ def run_program(
     require("program", "ballscrew program")
     if isinstance(program, str):
         program = read_program(program, arc_tolerance=machine.arc_tolerance,
-                               max_blocks=max_blocks)  # fmt: skip
+                               max_blocks=max_blocks, machine=machine)  # fmt: skip
     _check_travel(machine, program)
     motion = plan(
         program,

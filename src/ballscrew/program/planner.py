@@ -21,7 +21,9 @@ The path is planned as a CNC look-ahead does, in three steps:
    ``planner.c``, 2011-2016), and here also by its jerk, :math:`v^3/r^2 \le
    \min_i j_i/|d_i|`. The blend itself (shorter than the tolerance) is not
    drawn: the samples turn the corner sharply, and the axis velocity steps
-   there by :math:`v|u_{2,i} - u_{1,i}|`.
+   there by :math:`v|u_{2,i} - u_{1,i}|`. The program may set :math:`\delta`
+   itself (``Program.tolerance``): ``G64 P``, and 0 under ``G61`` and in
+   canned cycles, where every corner is stopped at.
 3. **Look-ahead.** A backward pass lowers every junction speed to what the
    following block can brake from, a forward pass to what the preceding
    block can reach, both with the distance of a jerk-limited speed change
@@ -42,7 +44,7 @@ there, arcs at least every 5°).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -57,9 +59,18 @@ MARGIN = 1.0 - 1e-7
 """Entry and exit speeds are kept this far inside what the look-ahead allows."""
 
 
+def _no_rotary() -> FloatArray:
+    return np.full(3, np.nan)
+
+
 @dataclass(frozen=True)
 class Limits:
-    """The axes' limits, X, Y, Z (SI); an axis the machine lacks has NaN."""
+    """The axes' limits, X, Y, Z (SI); an axis the machine lacks has NaN.
+
+    ``rotary_feed``, ``rotary_acceleration``, ``rotary_jerk``: those of A, B, C
+    [rad/s, rad/s², rad/s³], NaN for an axis without limits (a program moving it
+    is refused).
+    """
 
     feed: FloatArray
     acceleration: FloatArray
@@ -67,6 +78,9 @@ class Limits:
     rapid_feed: float
     path_tolerance: float
     sample_time: float = 5e-3
+    rotary_feed: FloatArray = field(default_factory=_no_rotary)
+    rotary_acceleration: FloatArray = field(default_factory=_no_rotary)
+    rotary_jerk: FloatArray = field(default_factory=_no_rotary)
 
 
 @dataclass(frozen=True)
@@ -185,7 +199,16 @@ def _geometry(program: Program) -> dict[str, FloatArray]:
             tan[:, ib] = np.cos(theta) * sgn * share[m]
             tan[:, inn] = normal_share[m]
             idx[m] = tan
-    return {"length": length, "t0": t0, "t1": t1, "radius": radius, "share": share}
+    # Rotary axes (lines only): their angle per unit of path; a block turning them alone
+    # has its path in radians.
+    turn = np.zeros((n, 3))
+    if program.rotary_start is not None and program.rotary_end is not None:
+        dr = program.rotary_end - program.rotary_start
+        alone = (length == 0.0) & np.any(dr != 0.0, axis=1)
+        length = np.where(alone, np.linalg.norm(dr, axis=1), length)
+        turn = np.divide(dr, length[:, None], out=turn, where=length[:, None] > 0)
+    return {"length": length, "t0": t0, "t1": t1, "radius": radius, "share": share,
+            "turn": turn}  # fmt: skip
 
 
 def _block_limits(program: Program, g: dict[str, FloatArray], lim: Limits
@@ -217,6 +240,21 @@ def _block_limits(program: Program, g: dict[str, FloatArray], lim: Limits
             v[arc] = np.minimum(v[arc], np.cbrt(0.5 * j_plane * r * r) / share)
             a[arc] = 0.5 * a[arc]
             j[arc] = 0.5 * j[arc]
+    turning = np.abs(g["turn"])
+    if np.any(turning > 0.0):
+        lacking = (turning > 0.0) & np.isnan(lim.rotary_feed)
+        if np.any(lacking):
+            k = int(np.argmax(np.any(lacking, axis=1)))
+            letter = "ABC"[int(np.argmax(lacking[k]))]
+            raise BallScrewInputError(f"program line {int(program.line[k])}", letter,
+                                      "a rotary axis with limits in the machine file")  # fmt: skip
+        alone = np.all(program.end == program.start, axis=1) & (program.kind == RAPID)
+        v = np.where(alone, np.inf, v)  # the rapid feed is a linear speed
+        with np.errstate(divide="ignore", invalid="ignore"):
+            for cap, mine in ((lim.rotary_feed, v), (lim.rotary_acceleration, a),
+                              (lim.rotary_jerk, j)):  # fmt: skip
+                mine[:] = np.minimum(mine, np.min(np.where(turning > 0, cap / turning, np.inf),
+                                                  axis=1))  # fmt: skip
     dwell = program.kind == DWELL
     v[dwell], a[dwell], j[dwell] = 0.0, 1.0, 1.0
     return v, a, j
@@ -232,8 +270,13 @@ def _junctions(program: Program, g: dict[str, FloatArray], v: FloatArray, lim: L
     u1, u2 = g["t1"][:-1], g["t0"][1:]
     cos = np.clip(-np.sum(u1 * u2, axis=1), -1.0, 1.0)
     sin_half = np.sqrt(0.5 * (1.0 - cos))
+    # The tolerance in force at each junction: G64 P's or G61's (0: a stop) where the
+    # program set one, else the machine's.
+    tol = np.full(n - 1, lim.path_tolerance)
+    if program.tolerance is not None:
+        tol = np.where(np.isnan(program.tolerance[1:]), tol, program.tolerance[1:])
     with np.errstate(divide="ignore", invalid="ignore"):
-        r = lim.path_tolerance * sin_half / (1.0 - sin_half)
+        r = tol * sin_half / (1.0 - sin_half)
         dvec = u2 - u1
         dn = np.linalg.norm(dvec, axis=1)
         dunit = dvec / np.where(dn > 0, dn, 1.0)[:, None]
@@ -242,9 +285,11 @@ def _junctions(program: Program, g: dict[str, FloatArray], v: FloatArray, lim: L
         j_j = np.nanmin(np.where(absd > 1e-12, lim.jerk / absd, np.inf), axis=1)
         corner = np.minimum(np.sqrt(a_j * r), np.cbrt(j_j * r * r))
     straight = cos < -1.0 + 1e-12
-    corner = np.where(straight, np.inf, corner)
+    corner = np.where(straight, np.inf, np.where(tol > 0.0, corner, 0.0))
     corner = np.where(cos > 1.0 - 1e-12, 0.0, corner)  # a reversal of the path
     stop = (program.kind[:-1] == DWELL) | (program.kind[1:] == DWELL)
+    turning = np.any(g["turn"] != 0.0, axis=1)  # a rotary axis: a stop on either side
+    stop |= turning[:-1] | turning[1:]
     vj[1:] = np.where(stop, 0.0, np.minimum(np.minimum(v[:-1], v[1:]), corner))
     return vj
 
