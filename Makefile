@@ -14,7 +14,11 @@ STAMP  := $(VENV)/.installed
 # fetched everywhere); test installs it when it is missing, with sudo unless root.
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: run test test-fast docs clean chromium
+# LinuxCNC's standalone interpreter rs274 reads the programs the built-in reader refuses
+# (ballscrew program --reader); test installs Debian's linuxcnc-uspace for its tests, without
+# the recommended packages (they pull a real-time kernel; rs274 is in the package itself).
+
+.PHONY: run test test-fast docs clean chromium linuxcnc
 
 $(STAMP): pyproject.toml src/ballscrew/_version.py
 	$(PYTHON) -c 'import sys; sys.exit("Python >= 3.11 is required, found " + sys.version.split()[0]) if sys.version_info < (3, 11) else None'
@@ -26,7 +30,7 @@ $(STAMP): pyproject.toml src/ballscrew/_version.py
 run: $(STAMP)
 	$(BIN)/ballscrew study --out study-report
 
-test: $(STAMP) chromium
+test: $(STAMP) chromium linuxcnc
 	$(BIN)/ruff check src tests benchmarks examples scripts conftest.py
 	$(BIN)/ruff format --check src tests benchmarks examples scripts conftest.py
 	$(BIN)/mypy src
@@ -58,6 +62,17 @@ chromium:
 	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium >/dev/null; \
 	else \
 	  echo "note: no chromium and no apt-get: the browser tests are skipped (they fail on CI)"; \
+	fi
+
+linuxcnc:
+	@if command -v rs274 >/dev/null 2>&1; then :; \
+	elif command -v apt-get >/dev/null 2>&1; then \
+	  echo "installing Debian's linuxcnc-uspace (rs274) for the rs274 reader's tests"; \
+	  $(SUDO) apt-get update -qq -o DPkg::Lock::Timeout=600 && \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
+	    -o DPkg::Lock::Timeout=600 --no-install-recommends linuxcnc-uspace >/dev/null; \
+	else \
+	  echo "note: no rs274 and no apt-get: the rs274 reader's tests are skipped (they fail on CI)"; \
 	fi
 
 clean:
