@@ -152,6 +152,9 @@ def test_lines_get_their_number_as_n_word() -> None:
         "%", f"N{LINE_MARK + 2} G21 (mm)", "", f"N{LINE_MARK + 4} G1 X1 F100",
         f"/ N{LINE_MARK + 5} G0 Y2", f"N{LINE_MARK + 6} o100 sub", "%",
     ]  # fmt: skip
+    # A line the mark would make longer than rs274 reads (252 characters) keeps its text.
+    long = "G1 X1 (" + "a" * 243 + ")"
+    assert _marked(long).splitlines() == [long]
 
 
 def test_missing_rs274_is_named(monkeypatch: pytest.MonkeyPatch) -> None:

@@ -96,6 +96,8 @@ _AXES = {17: (0, 1, 2), 18: (2, 0, 1), 19: (1, 2, 0)}
 _CANON = re.compile(r"^\s*\d+\s+N(\d+|\.+)\s*([A-Z][A-Z0-9_]*)\((.*)\)\s*$")
 _LEAD = re.compile(r"^(\s*/?\s*)(?:[Nn]\s*\d[\d ]*(?:\.\d*)?)?")
 _MARKED = re.compile(rf"^\s*/?\s*N(\d{{{len(str(LINE_MARK))},}})\s?")
+_LONGEST = 252
+"""The longest line rs274 reads [characters]."""
 _NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 
 _SKIPPED = {
@@ -207,7 +209,10 @@ def _marked(text: str) -> str:
             continue
         lead = _LEAD.match(raw)
         assert lead is not None  # the pattern matches the empty string
-        out.append(f"{lead.group(1)}N{LINE_MARK + number} {raw[lead.end() :]}")
+        marked = f"{lead.group(1)}N{LINE_MARK + number} {raw[lead.end() :]}"
+        # rs274 takes lines of up to 252 characters: one the mark would push past that
+        # keeps its text (its blocks carry the line before it).
+        out.append(marked if len(marked) <= _LONGEST or len(raw) > _LONGEST else raw)
     return "\n".join(out) + "\n"
 
 
@@ -536,6 +541,7 @@ class ReadProgram:
     Attributes
     ----------
     program : Program
+        The blocks.
     reader : str
         ``"builtin"`` or ``"rs274"``.
     reason : str
