@@ -119,12 +119,26 @@ def test_feed_per_revolution_is_timed_with_the_spindle_speed() -> None:
     assert any("spindle speed" in n for n in p.notes)
 
 
+def test_rigid_tapping_goes_in_and_out_at_the_pitch() -> None:
+    p = _read(
+        "STRAIGHT_TRAVERSE(0.0000, -7.0000, 5.0000, 0.0000, 0.0000, 0.0000)",
+        "SET_SPINDLE_SPEED(0, 300.0000)",
+        "START_SPEED_FEED_SYNC(1.250000,0)",  # M8 x 1.25 at 300 rpm: 375 mm/min
+        "RIGID_TAP(0.0000, -7.0000, -12.0000)",
+        "STOP_SPEED_FEED_SYNCH()",
+    )
+    assert p.kind.tolist() == [RAPID, FEED, FEED]
+    np.testing.assert_allclose(p.end[1:] * 1e3, [[0, -7, -12], [0, -7, 5]])
+    np.testing.assert_allclose(p.feed[1:], 375e-3 / 60)
+
+
 @pytest.mark.parametrize(
     ("command", "told"),
     [
         ("STRAIGHT_FEED(1.0000, 0.0000, 0.0000, 10.0000, 0.0000, 0.0000)", "A is a rotary"),
         ("STRAIGHT_PROBE(0.0000, 0.0000, -5.0000, 0.0000, 0.0000, 0.0000)", "probing"),
         ("NURBS_FEED(1.0000, 2.0000)", "spline"),
+        ("RIGID_TAP(0.0000, 0.0000, -5.0000)", "pitch"),
     ],
 )
 def test_what_is_not_read_is_refused_with_its_line(command: str, told: str) -> None:
@@ -299,8 +313,8 @@ def test_linuxcnc_samples_run_as_written() -> None:
 
     Of the 56 samples, 19 are subroutine files or remap helpers with no motion when run
     alone (refused: "no motion"), 4 probe (G38), 3 move rotary axes, 1 is a spline (G5.1),
-    1 rigid-taps (G33.1), 2 are refused by rs274 itself (a cutter-compensation entry move,
-    'O<g20sub> callsub'): 25 run.
+    2 are refused by rs274 itself (a cutter-compensation entry move, 'O<g20sub> callsub'):
+    26 run.
     """
     machine = load_machine(MACHINE)
     runs = {"builtin": 0, "auto": 0}
@@ -317,4 +331,4 @@ def test_linuxcnc_samples_run_as_written() -> None:
             runs[reader] += 1
     assert len(_samples()) >= 55
     assert runs["builtin"] >= 2  # 3dtest, tort
-    assert runs["auto"] >= 25, runs
+    assert runs["auto"] >= 26, runs

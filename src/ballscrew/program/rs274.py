@@ -29,7 +29,8 @@ How the commands are taken:
   already converted by the interpreter); a feed per revolution (``G95``) or
   spindle-synchronised motion (``G33``, ``G76``: ``START_SPEED_FEED_SYNCH``)
   is timed at the feed per revolution times the programmed spindle speed,
-  with a note;
+  with a note; rigid tapping (``G33.1``, ``RIGID_TAP``) is a feed in and out at the
+  thread's pitch times the spindle speed;
 - skipped with one note per kind and its first line, as they do not move the
   feed axes: spindle and coolant commands, tool selection and changes (the
   axes stand still; the change's time is not counted), path control modes
@@ -37,7 +38,7 @@ How the commands are taken:
   stops, messages and comments;
 - refused with the line: a move of a rotary axis (A, B, C), a probing move
   (``G38.x``: where it stops depends on the contact), a spline
-  (``NURBS_FEED``), rigid tapping, an arc in a rotated plane other than XY or
+  (``NURBS_FEED``), an arc in a rotated plane other than XY or
   in the U, V, W planes, a feed per revolution without a spindle speed, and
   whatever the interpreter itself refuses (its message and the line).
 
@@ -143,7 +144,6 @@ _REFUSED = {
     "STRAIGHT_PROBE": "a probing move (G38.x: where it stops depends on the contact)",
     "NURBS_FEED": "a spline (G5, G5.1, G5.2)",
     "SPLINE_FEED": "a spline (G5, G5.1, G5.2)",
-    "RIGID_TAP": "rigid tapping (G33.1)",
 }
 """Moves this reader does not turn into blocks -> what they are."""
 
@@ -267,6 +267,20 @@ def _command(
             rows.append((kind, state.line, state.position, end, feed, [math.nan] * 3,
                          state.plane, 0.0, 0.0))  # fmt: skip
             state.position = end
+    elif name == "RIGID_TAP":
+        # G33.1: in to the point at the thread's pitch per spindle turn, then out to the
+        # start at the same pitch as the spindle reverses (LinuxCNC's motion controller).
+        v = _numbers(args)
+        bottom, top = state.machine(v[0], v[1], v[2]), state.position
+        if state.synchronised is None:
+            raise _refuse(state, lines, "rigid tapping with its pitch (K)")
+        feed = _feed(state, lines, notes)
+        notes.setdefault("tap", f"rigid tapping (G33.1), line {state.line}: in and out at "
+                         "the pitch times the spindle speed; the spindle's reversal is not "
+                         "timed")  # fmt: skip
+        for a, b in ((top, bottom), (bottom, top)) if bottom != top else ():
+            rows.append((FEED, state.line, a, b, feed, [math.nan] * 3, state.plane, 0.0, 0.0))
+        used.update(k for k, p, q in zip("XYZ", top, bottom, strict=True) if p != q)
     elif name == "ARC_FEED":
         _arc(state, _numbers(args), lines, rows, notes, used)
     elif name == "DWELL":
