@@ -157,6 +157,12 @@ def test_skipped_commands_are_noted_once_per_kind() -> None:
     for kind in ("spindle", "coolant", "tool", "path control"):
         assert notes.count(kind) == 1, notes
     assert "comment" not in notes
+    # M2's own resets (spindle and coolant off, feed mode) are not the program's words.
+    ending = "SET_FEED_MODE(0, 0)", "STOP_SPINDLE_TURNING(0)", "FLOOD_OFF()", "PROGRAM_END()"
+    _, notes_, _, _ = _blocks(
+        [*_canon("DWELL(1.0000)", line=1), *_canon(*ending, line=2)], ["G4 P1", "M2"], None
+    )
+    assert notes_ == {}
 
 
 def test_lines_get_their_number_as_n_word() -> None:

@@ -25,7 +25,8 @@ __all__ = ["program_command"]
               show_default=True,
               help="Who reads the program: the built-in reader, LinuxCNC's rs274, or auto "
               "(the built-in reader; rs274 when it refuses and rs274 is on the PATH).")  # fmt: skip
-@click.option("--tool-table", "tool_table", default=None, type=click.Path(dir_okay=False),
+@click.option("--tool-table", "tool_table", default=None,
+              type=click.Path(exists=True, dir_okay=False),
               help="A LinuxCNC tool table for rs274 (lengths, diameters in inches).")  # fmt: skip
 def program_command(
     program_file: str,

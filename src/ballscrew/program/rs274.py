@@ -401,18 +401,28 @@ def _blocks(
     rows: list[tuple[Any, ...]] = []
     notes: dict[str, str] = {}
     used: set[str] = set()
+    fresh: list[str] = []  # the notes the current line started
     for raw in output:
         match = _CANON.match(raw)
         if match is None:
             continue
         number, name, args = match.groups()
         state.own = number[0] != "." and int(number) > LINE_MARK
-        if state.own:
+        if state.own and int(number) - LINE_MARK != state.line:
             state.line = int(number) - LINE_MARK
+            fresh = []
         state.command = f"{name}({args})"
         if state.ended:
             continue
+        known = len(notes)
         _command(state, name, args, lines, rows, notes, used)
+        fresh += list(notes)[known:]
+        if state.ended:
+            # M2 and M30 stop the spindle and coolant and reset the modes: not the
+            # program's own words, not noted.
+            for key in fresh:
+                if key in ("spindle", "coolant", "path"):
+                    del notes[key]
         if max_blocks is not None and len(rows) > max_blocks:
             raise _error(state.line, f"{len(rows)} blocks", f"at most {max_blocks} blocks")
     return rows, notes, used, state
@@ -587,11 +597,16 @@ def read_part_program(
     Raises
     ------
     BallScrewInputError
-        ``reader`` for another name or a missing ``rs274``; the refusal of
-        the reader that read last (``rs274``'s when it was tried).
+        ``reader`` for another name or a missing ``rs274``; ``tool_table``
+        with the built-in reader; the refusal of the reader that read last
+        (``rs274``'s when it was tried).
     """
     if reader not in READERS:
         raise BallScrewInputError("reader", reader, f"one of {', '.join(READERS)}")
+    if reader == "builtin" and tool_table is not None:
+        raise BallScrewInputError("tool_table", str(tool_table), "a tool table only with the "
+                                  "rs274 reader (the built-in reader reads no tool "
+                                  "offsets)")  # fmt: skip
 
     def builtin() -> Program:
         return read_program(text, arc_tolerance=arc_tolerance, max_blocks=max_blocks)
