@@ -328,7 +328,8 @@ def test_linuxcnc_samples_run_as_written() -> None:
         text = path.read_text(encoding="utf-8", errors="replace")
         for reader in runs:
             try:
-                read = read_part_program(text, reader=reader, directory=SAMPLES, tool_table=TOOLS)
+                table = TOOLS if reader == "auto" else None
+                read = read_part_program(text, reader=reader, directory=SAMPLES, tool_table=table)
                 with warnings.catch_warnings():
                     warnings.simplefilter("ignore")
                     run_program(machine, read.program)

@@ -417,7 +417,7 @@ def _blocks(
         known = len(notes)
         _command(state, name, args, lines, rows, notes, used)
         fresh += list(notes)[known:]
-        if state.ended:
+        if name in ("PROGRAM_END", "FINISH"):
             # M2 and M30 stop the spindle and coolant and reset the modes: not the
             # program's own words, not noted.
             for key in fresh:
