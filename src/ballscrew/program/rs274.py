@@ -350,16 +350,6 @@ def _arc(
     centre = state.machine(*centre_p)
     p0 = state.position
     centre[n] = p0[n]
-    # The centre printed to four decimals: moved onto the chord's bisector, where the
-    # interpreter's centre lies, when that is within the print's rounding.
-    ux, uy = end[a] - p0[a], end[b] - p0[b]
-    chord = math.hypot(ux, uy)
-    if chord > 0.0:
-        off = ((centre[a] - 0.5 * (p0[a] + end[a])) * ux
-               + (centre[b] - 0.5 * (p0[b] + end[b])) * uy) / chord  # fmt: skip
-        if abs(off) <= 2e-4 * state.unit:
-            centre[a] -= off * ux / chord
-            centre[b] -= off * uy / chord
     turns = int(v[4])
     t0 = math.atan2(p0[b] - centre[b], p0[a] - centre[a])
     t1 = math.atan2(end[b] - centre[b], end[a] - centre[a])
