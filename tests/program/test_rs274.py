@@ -226,6 +226,11 @@ def test_the_line_rs274_refuses_is_named() -> None:
 def test_an_endless_loop_is_stopped() -> None:
     with pytest.raises(BallScrewInputError, match="still running after 1 s"):
         read_program_rs274("o1 while [1]\no1 endwhile\nM2\n", timeout=1.0)
+    # A loop of moves is stopped at the bound of blocks, naming the line of the move.
+    moves = "G21 F100\n#1=0\no1 while [1]\n  G1 X[#1 MOD 7]\n  #1=[#1+1]\no1 endwhile\nM2\n"
+    with pytest.raises(BallScrewInputError, match="at most 1000 blocks") as info:
+        read_program_rs274(moves, max_blocks=1000)
+    assert info.value.field == "program line 4"
 
 
 @needs_rs274

@@ -75,6 +75,7 @@ from .gcode import ARC, DWELL, FEED, RAPID, Program, read_program
 
 __all__ = [
     "LINE_MARK",
+    "MOST_BLOCKS",
     "READERS",
     "TIMEOUT",
     "ReadProgram",
@@ -87,6 +88,8 @@ READERS = ("auto", "builtin", "rs274")
 """The program readers: ``auto`` takes the built-in reader, and ``rs274`` when it refuses."""
 TIMEOUT = 60.0
 """Longest run of ``rs274`` [s] before the program is refused (an endless loop)."""
+MOST_BLOCKS = 1_000_000
+"""The most blocks read when no bound is given (an endless loop of moves stops here)."""
 LINE_MARK = 10_000_000
 """The ``N`` word given to line ``k`` of the program is ``LINE_MARK + k``."""
 
@@ -456,7 +459,8 @@ def read_program_rs274(
         A LinuxCNC tool table (``-t``: ``T1 P1 Z0.511 D0.125`` lines). Without
         it ``rs274`` knows its own three sample tools.
     max_blocks : int, optional
-        Refuse a program with more blocks of motion or dwell.
+        Refuse a program with more blocks of motion or dwell
+        (:data:`MOST_BLOCKS` if None).
     timeout : float
         Longest run of ``rs274`` [s].
     executable : str, optional
@@ -506,7 +510,8 @@ def read_program_rs274(
             timer.start()
             try:
                 assert proc.stdout is not None
-                rows, notes, used, state = _blocks(proc.stdout, lines, max_blocks)
+                bound = MOST_BLOCKS if max_blocks is None else max_blocks
+                rows, notes, used, state = _blocks(proc.stdout, lines, bound)
             finally:
                 if proc.poll() is None and not timer.finished.is_set():
                     proc.kill()
