@@ -244,6 +244,11 @@ def test_cli_says_which_reader_and_why(tmp_path: Path, capsys: pytest.CaptureFix
     assert "reader: LinuxCNC's rs274" in err and "program line 2, 'G64'" in err
     code, _, err = run([*args, "--reader", "builtin"], capsys)
     assert code == 2 and "G64" in err
+    # rs274 refusing after the built-in reader: both are told.
+    program.write_text("G21\nG64\nG1 X10 F1000\nG0 G1 X3\nM2\n", encoding="utf-8")
+    code, _, err = run(args, capsys)
+    assert code == 2 and "program line 4" in err and "Two g codes" in err
+    assert "built-in reader refused program line 2, 'G64'" in err
 
 
 def _distances(p: Program) -> tuple[float, np.ndarray]:

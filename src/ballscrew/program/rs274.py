@@ -620,6 +620,11 @@ def read_part_program(
         if rs274_path() is None:
             raise
         refusal = f"{exc.field}, {exc.value!r}"
-    program = rs274()
+    try:
+        program = rs274()
+    except BallScrewInputError as exc:
+        raise BallScrewInputError(exc.field, exc.value, f"{exc.allowed} (LinuxCNC's rs274 "
+                                  f"read it after the built-in reader refused {refusal})"
+                                  ) from None  # fmt: skip
     return ReadProgram(program, "rs274", f"LinuxCNC's rs274, on the PATH (the built-in reader "
                        f"refuses {refusal})")  # fmt: skip
