@@ -14,10 +14,6 @@ STAMP  := $(VENV)/.installed
 # fetched everywhere); test installs it when it is missing, with sudo unless root.
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-# LinuxCNC's standalone interpreter rs274 reads the programs the built-in reader refuses
-# (ballscrew program --reader); test installs Debian's linuxcnc-uspace for its tests, without
-# the recommended packages (they pull a real-time kernel; rs274 is in the package itself).
-
 .PHONY: run test test-fast docs clean chromium linuxcnc
 
 $(STAMP): pyproject.toml src/ballscrew/_version.py
@@ -58,21 +54,24 @@ chromium:
 	@if command -v chromium >/dev/null 2>&1; then :; \
 	elif command -v apt-get >/dev/null 2>&1; then \
 	  echo "installing Debian's chromium for the browser tests"; \
-	  $(SUDO) apt-get update -qq && \
-	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium >/dev/null; \
+	  $(SUDO) apt-get -o DPkg::Lock::Timeout=600 update -qq && \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 install -y -qq chromium >/dev/null; \
 	else \
 	  echo "note: no chromium and no apt-get: the browser tests are skipped (they fail on CI)"; \
 	fi
 
+# The LinuxCNC friction tables are loaded in a real HAL session (halrun) by the tests, and
+# LinuxCNC's interpreter rs274 reads part programs (ballscrew program --reader rs274);
+# test installs Debian's linuxcnc-uspace when either is missing, like chromium, without
+# the recommended packages (they pull a real-time kernel; both tools are in the package).
 linuxcnc:
-	@if command -v rs274 >/dev/null 2>&1; then :; \
+	@if command -v halrun >/dev/null 2>&1 && command -v rs274 >/dev/null 2>&1; then :; \
 	elif command -v apt-get >/dev/null 2>&1; then \
-	  echo "installing Debian's linuxcnc-uspace (rs274) for the rs274 reader's tests"; \
-	  $(SUDO) apt-get update -qq -o DPkg::Lock::Timeout=600 && \
-	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
-	    -o DPkg::Lock::Timeout=600 --no-install-recommends linuxcnc-uspace >/dev/null; \
+	  echo "installing Debian's linuxcnc-uspace for the HAL and rs274 tests"; \
+	  $(SUDO) apt-get -o DPkg::Lock::Timeout=600 update -qq && \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 install -y -qq --no-install-recommends linuxcnc-uspace >/dev/null; \
 	else \
-	  echo "note: no rs274 and no apt-get: the rs274 reader's tests are skipped (they fail on CI)"; \
+	  echo "note: no halrun/rs274 and no apt-get: their tests are skipped (they fail on CI)"; \
 	fi
 
 clean:

@@ -7,6 +7,7 @@ marked slow in the Markdown run unless ``-m "not slow"`` deselects the slow test
 from __future__ import annotations
 
 from collections.abc import Generator
+from pathlib import Path
 from typing import Any
 
 import pytest
@@ -37,3 +38,21 @@ def pytest_runtest_makereport(
     example = getattr(item, "example", None)
     if example is not None and report.skipped and isinstance(report.longrepr, tuple):
         report.longrepr = (example.path, example.line, report.longrepr[2])
+
+
+# A run that writes to "-" means standard output; a file of that name (or its ".meta.json"
+# sidecar) left in the project's folder is a bug of the run that wrote it.
+_STRAY = ("-", "-.meta.json")
+
+
+def pytest_sessionfinish(session: pytest.Session, exitstatus: int) -> None:
+    """Fail the run when a test left a file named ``-`` (or its sidecar) in the project root."""
+    root = Path(str(session.config.rootpath))
+    left = [name for name in _STRAY if (root / name).exists()]
+    if left:
+        session.config.get_terminal_writer().line(
+            f"\nerror: the run left {', '.join(left)} in {root}: a '-' output was written "
+            "as a file instead of standard output",
+            red=True,
+        )
+        session.exitstatus = pytest.ExitCode.TESTS_FAILED

@@ -174,3 +174,16 @@ def test_trajectory_errors_name_the_line_and_the_header() -> None:
     # Speeds integrated by the trapezoidal rule over steps of 2 s: 0 + 2 * (0 + 1)/2 + ...
     q = read_trajectory("time [s],speed [m/s]\n0,0\n2,1\n4,1\n")
     np.testing.assert_allclose(q.position, [0.0, 1.0, 3.0])
+
+
+def test_a_profile_whose_time_stalls_names_the_sample() -> None:
+    # Issue 52: the refusal said "time = '(profile)'"; it names the time and its sample.
+    from ballscrew.axis.motion import Profile
+
+    t = np.array([0.0, 0.1, 0.1, 0.3])
+    zero = np.zeros(4)
+    with pytest.raises(BallScrewInputError) as info:
+        Profile(t, zero, zero, zero, zero)
+    assert "time = '0.1 s at sample 3, after 0.1 s'" in str(info.value)
+    with pytest.raises(BallScrewInputError, match="time = '1 sample"):
+        Profile(t[:1], zero[:1], zero[:1], zero[:1], zero[:1])

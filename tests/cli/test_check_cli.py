@@ -42,11 +42,42 @@ def test_check_prints_the_table_and_the_json(capsys: pytest.CaptureFixture[str])
 def test_check_of_the_bundled_case_names_what_is_missing(
     capsys: pytest.CaptureFixture[str],
 ) -> None:
-    code, out, err = run(["check", "--move", "stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2",
-                          *FAST], capsys)  # fmt: skip
+    move = "stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2"
+    # Without --case the user's axis is missing: a usage error (exit 2) naming the option, not
+    # a check of the bundled air-bearing stage that has no moving mass and passes.
+    code, out, err = run(["check", "--move", move, *FAST], capsys)
+    assert code == 2 and "check needs --case FILE" in err and "--case study" in err
+    assert "axis check" not in out
+    # Named, the bundled stage is checked, and the title says whose axis it is.
+    code, out, err = run(["check", "--case", "study", "--move", move, *FAST], capsys)
     assert code == 0, err
+    assert "the bundled study stage, not your axis" in out
     assert "NOT CHECKED" in out and "screw.dynamic_load_rating" in out
     assert "assumed: span between the supports taken as the screw length" in out
+    # The stage has no moving mass: the 0 kg is said with the rows it changes.
+    assert "assumed: axis.moving_mass = 0 kg (not given)" in out
+
+
+def test_a_case_without_moving_mass_says_what_it_leaves_out(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    move = "stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2"
+    text = VERTICAL.read_text(encoding="utf-8")
+    without = "\n".join(line for line in text.splitlines() if not line.startswith("moving_mass"))
+    assert without != text  # the example has the key: the test removes it
+    case = tmp_path / "no_mass.toml"
+    case.write_text(without, encoding="utf-8")
+    doc = tmp_path / "c.json"
+    code, out, err = run(["check", "--case", str(case), "--move", move, "--json", str(doc),
+                          *FAST], capsys)  # fmt: skip
+    assert code == 0, err
+    assert "assumed: axis.moving_mass = 0 kg (not given)" in out
+    rows = {c["name"]: c for c in json.loads(doc.read_text())["criteria"]}
+    assert rows["axial eigenfrequency"]["verdict"] == "NOT CHECKED"
+    # With the example's own mass the note is gone.
+    code, out, err = run(["check", "--case", str(VERTICAL), "--move", move, *FAST], capsys)
+    assert code == 0, err
+    assert "axis.moving_mass = 0 kg" not in out
 
 
 def test_check_errors_name_the_field(capsys: pytest.CaptureFixture[str]) -> None:

@@ -57,13 +57,13 @@ def test_export_friction_writes_the_controller_tables(
     args = ["--form", "lincurve", "--speed", "5 m/min", "--out", str(hal), "--json", "-"]
     code, out, err = run(["export-friction", "--case", str(EXAMPLE), *args], capsys)
     assert code == 0, err
-    assert "setp lincurve.0.x-val-15" in hal.read_text("utf-8")
+    assert "setp friction.x-val-15" in hal.read_text("utf-8")
     doc = json.loads(out)
     assert len(doc["speed_m_s"]) == 16 and doc["rms_error_N"] > 0
     assert "interpolation error" in err
     code, _, err = run(["export-friction", "--case", str(EXAMPLE), "--form", "frict-comp",
                         "--speed", "5 m/min"], capsys)  # fmt: skip
-    assert code == 2 and "--torque-constant" in err
+    assert code == 2 and "--axis-number" in err
     fmu = tmp_path / "friction.fmu"
     code, _, err = run(["export-friction", "--case", str(EXAMPLE), "--form", "load-map",
                         "--speed", "1..3000:6 rpm", "--out", str(fmu)], capsys)  # fmt: skip

@@ -74,8 +74,8 @@ def test_check_prints_imperial_values_and_limits(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     out_json = tmp_path / "c.json"
-    code, out, _ = run(["check", "--move", MOVE, "--units", "imperial", "--json", str(out_json)],
-                       capsys)  # fmt: skip
+    code, out, _ = run(["check", "--case", "study", "--move", MOVE, "--units", "imperial",
+                        "--json", str(out_json)], capsys)  # fmt: skip
     assert code == 0
     criteria = {c["name"]: c for c in json.loads(out_json.read_text())["criteria"]}
     buckling = criteria["buckling load"]

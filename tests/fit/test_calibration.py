@@ -157,6 +157,15 @@ def test_fit_command_writes_case_report_and_json(
         main(["fit", "--case", str(case), "--measured", str(csv), "--free", "preload",
               "--start", "preload=1500"])  # fmt: skip
     assert info.value.code == 2 and "bare number" in capsys.readouterr().err
+    # A start outside the parameter's bounds (a preload of -1 kN, 2 MN) is refused as typed,
+    # where it was moved to the bound (1 N) without a word.
+    for typed, shown in (("-1 kN", "-1000 N"), ("2 MN", "2e+06 N")):
+        with pytest.raises(SystemExit) as info:
+            main(["fit", "--case", str(case), "--measured", str(csv), "--free", "preload",
+                  "--start", f"preload={typed}"])  # fmt: skip
+        err = capsys.readouterr().err
+        assert info.value.code == 2 and f"start preload = '{shown}'" in err, err
+        assert "from 1 to 1e+06 N" in err
 
 
 def _catalog_curve(loads: np.ndarray, noise: np.ndarray) -> MeasuredCurve:

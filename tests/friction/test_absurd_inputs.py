@@ -227,8 +227,9 @@ def test_a_ball_as_large_as_the_lead_is_refused_in_a_sweep(
     ("option", "value", "field"),
     [
         ("--speed", "1.7e6 rpm", "speed"),
-        ("--temperature", "501 degC", "temperature"),
-        ("--temperature", "40 K", "temperature"),
+        # Refused as read, naming the option and the text as typed (no machine is there).
+        ("--temperature", "501 degC", "--temperature"),
+        ("--temperature", "40 K", "--temperature"),
         # The plausibility rules refuse it first, against the static rating, naming the option.
         ("--axial-load", "1e9 N", "--axial-load"),
     ],

@@ -345,3 +345,27 @@ def test_a_list_comma_before_three_digits_names_the_thousands_reading_too() -> N
     with pytest.raises(BallScrewInputError) as info:
         parse_range("--axial-load", "1,5 kN", "N")
     assert "thousands" not in info.value.allowed
+
+
+@pytest.mark.parametrize(
+    ("text", "read"),
+    [("20 K", -253.15), ("0 K", -273.15), ("1000 degF", 537.778), ("-150 degC", -150.0)],
+)
+def test_a_temperature_no_machine_can_have_is_refused_as_typed(text: str, read: float) -> None:
+    # 20 K is -253.15 degC (pint's absolute kelvin): typed for a machine's ambient it cooled
+    # the screws to -150 degC. The message names the text as typed and its reading.
+    with pytest.raises(BallScrewInputError) as info:
+        to_si("machine.ambient", text, "degC")
+    said = str(info.value)
+    assert f"machine.ambient = '{text}'" in said and f"read as {read:.6g} degC" in said
+    with pytest.raises(BallScrewInputError):  # in a list too, and at either end of a range
+        parse_range("--temperature", f"20 degC, {text}", "degC")
+
+
+def test_temperatures_a_machine_can_have_and_rises_pass() -> None:
+    # The range's ends are read (-100 and 400 degC); 313.15 K is 40 degC; a rise of 300 K is a
+    # difference, not a temperature.
+    assert to_si("t", "-100 degC", "degC") == -100.0
+    assert to_si("t", "400 degC", "degC") == 400.0
+    assert to_si("t", "313.15 K", "degC") == pytest.approx(40.0, abs=1e-12)
+    assert to_si("rise", "300 K", "delta_degC") == 300.0

@@ -275,6 +275,13 @@ def run_check(
     cycle = energy.cycle
     case, axis, screw = run.case, run.axis, run.case.screw
     notes: list[str] = []
+    if "moving_mass" not in case.axis_given:
+        notes.append(
+            f"axis.moving_mass = {axis.moving_mass:g} kg (not given): the moving mass's "
+            "inertia and weight are left out of the fatigue life, static safety, lift-off "
+            "and motor torque rows, and there is no axial eigenfrequency; give "
+            "axis.moving_mass"
+        )
     rows: list[Criterion] = []
     span = _span(run, notes)
     stroke = float(np.ptp(run.profile.position))

@@ -71,8 +71,17 @@ class Profile:
         for name in ("position", "speed", "acceleration", "process_force"):
             if getattr(self, name).shape != (n,):
                 raise BallScrewInputError(name, f"shape {getattr(self, name).shape}", f"({n},)")
-        if n < 2 or not np.all(np.diff(self.time) > 0.0):
-            raise BallScrewInputError("time", "(profile)", "at least 2 strictly increasing times")
+        if n < 2:
+            raise BallScrewInputError(
+                "time", f"{n} sample(s)", "at least 2 strictly increasing times"
+            )
+        step = np.diff(self.time)
+        if not np.all(step > 0.0):
+            k = int(np.flatnonzero(~(step > 0.0))[0])
+            raise BallScrewInputError(
+                "time", f"{self.time[k + 1]:g} s at sample {k + 2}, after {self.time[k]:g} s",
+                "strictly increasing times (each sample after the one before)",
+            )  # fmt: skip
 
     @property
     def duration(self) -> float:
@@ -294,15 +303,13 @@ def read_trajectory(text: str, source: str = "trajectory") -> Profile:
     or tabs allow decimal commas). Speed and acceleration (or position) are
     derived by finite differences (central, second order) on the given times.
     """
-    import csv
-    import io
     import re
 
+    from ..io.files import csv_rows
     from ..io.units import parse_unit, to_si_array
 
-    first = next((line for line in text.splitlines() if line.strip()), "")
-    delimiter = ";" if ";" in first else ("\t" if "\t" in first else ",")
-    rows = [r for r in csv.reader(io.StringIO(text.lstrip("\ufeff")), delimiter=delimiter) if r]
+    rows, delimiter = csv_rows(text, source)
+    rows = [r for r in rows if r]
     if not rows:
         raise BallScrewInputError(source, "(empty)", "a header and at least 3 data rows")
     header = re.compile(r"^\s*(\w[\w ]*?)\s*\[([^\]]+)\]\s*$")

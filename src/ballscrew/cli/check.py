@@ -14,6 +14,7 @@ from .common import (
     json_option,
     motion,
     motion_options,
+    require_case,
     stdout,
     units_option,
     write_json,
@@ -28,8 +29,8 @@ __all__ = ["check_command"]
 
 @click.command("check")
 @click.option("--case", "case_file", type=click.Path(dir_okay=False), default=None,
-              help="Case file with [axis], and [motor] and [check] (default: the bundled "
-              "case).")  # fmt: skip
+              help="Case file with [axis], and [motor] and [check] (required; 'study' "
+              "checks the bundled study stage, which is not a machine's axis).")  # fmt: skip
 @motion_options
 @click.option("--model", "model_name", default="complete", show_default=True,
               help="Friction model of the torques, the heat and the lost motion.")  # fmt: skip
@@ -76,14 +77,21 @@ def check_command(
     from ..io.units import to_si
     from ..report.outputs import result_json
 
-    case = load_case(case_file)
+    why = ("the verdicts are your axis's: its moving mass, screw, ratings and motor "
+           f"(--case {STUDY_CASE} checks the bundled study stage by name)")  # fmt: skip
+    source = require_case(case_file, "check", why)
+    if source == STUDY_CASE:
+        case = load_case(None)
+        case = replace(case, title=f"{case.title} (the bundled study stage, not your axis)")
+    else:
+        case = load_case(source)
     system = unit_system("--units", units, case.output_units)
     profile, m = motion(move_text, profile_file, cycles)
     temp = to_si("--temperature", temperature, "degC") if temperature else None
     run = run_energy(case, profile, [model_name], cycles=cycles, temperature=temp,
                      run_time=to_si("--run-time", run_time, "s"), move=m)  # fmt: skip
     result = run_check(run, model_name)
-    command = ["ballscrew", "check", "--case", case_file or "(bundled)"]
+    command = ["ballscrew", "check", "--case", source]
     for flag, value in (("--move", move_text), ("--profile", profile_file),
                         ("--cycles", str(cycles)), ("--model", model_name),
                         ("--temperature", temperature), ("--run-time", run_time)):  # fmt: skip
@@ -113,6 +121,9 @@ def check_command(
 def _number(value: float | None) -> str:
     return "-" if value is None else f"{num(value)}"
 
+
+STUDY_CASE = "study"
+"""``--case study``: the bundled study stage, checked only when named."""
 
 WIDE_TABLE = 200
 """Terminal columns from which the verdict table carries its source and advice columns;

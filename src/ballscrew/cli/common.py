@@ -13,8 +13,8 @@ from rich.console import Console
 from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
 
 __all__ = [
-    "case_option", "echo_readings", "file_option", "folder_only", "motion", "own_case_option",
-    "progress",
+    "OUTPUT_OPTIONS", "case_option", "echo_readings", "file_option", "folder_only", "motion",
+    "own_case_option", "progress", "refuse_shared_outputs",
     "require_case", "stdout", "units_option", "write_json", "write_result", "writing",
 ]  # fmt: skip
 
@@ -226,3 +226,48 @@ def motion(
 
     m = parse_move(move_text)
     return profile_from_move(m, cycles), m
+
+
+OUTPUT_OPTIONS = ("--out", "--json", "--csv", "--plot")
+"""The options through which a command writes a file or a report folder (``-``: standard
+output)."""
+
+
+def refuse_shared_outputs(command: click.Command, values: Mapping[str, Any]) -> None:
+    """A usage error when two output options of one run name one place.
+
+    ``--out x.fmu --json x.fmu`` would leave only the last written; a file inside
+    a report folder (``--out rep --json rep/r.json``) is lost when the folder is
+    replaced; two outputs on standard output (``-``) would be mixed. Paths are
+    compared after following symbolic links.
+    """
+    given: list[tuple[str, str]] = []
+    for param in command.params:
+        flag = param.opts[0] if param.opts else ""
+        value = values.get(param.name or "")
+        if flag in OUTPUT_OPTIONS and isinstance(value, str | os.PathLike):
+            given.append((flag, os.fspath(value)))
+            if flag == "--csv" and given[-1][1] != "-":  # its provenance beside it
+                given.append(("--csv's provenance", given[-1][1] + ".meta.json"))
+    for k, (flag_a, a) in enumerate(given):
+        for flag_b, b in given[k + 1 :]:
+            if a == "-" or b == "-":
+                if a == b:
+                    raise click.UsageError(
+                        f"{flag_a} and {flag_b} both write to standard output ('-'): "
+                        "give one of them a file"
+                    )
+                continue
+            pa, pb = Path(os.path.realpath(a)), Path(os.path.realpath(b))
+            if pa == pb:
+                raise click.UsageError(
+                    f"{flag_a} {a!r} and {flag_b} {b!r} are one file: the second would "
+                    "replace the first; give each output its own path"
+                )
+            for outer, inner, flag_o, flag_i in ((pa, pb, flag_a, flag_b),
+                                                 (pb, pa, flag_b, flag_a)):  # fmt: skip
+                if outer in inner.parents:
+                    raise click.UsageError(
+                        f"{flag_i} {str(inner)!r} lies inside {flag_o} {str(outer)!r}: "
+                        f"writing {flag_o} replaces it; give {flag_i} a path outside"
+                    )

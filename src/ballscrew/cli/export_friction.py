@@ -31,15 +31,34 @@ __all__ = ["export_friction_command"]
               default="stribeck", show_default=True,
               help="Form the controller takes; load-map: the friction over speed, signed axial "
               "load and temperature with a compact load- and direction-dependent form, written "
-              "by --out as .csv, .mat, .mo (Modelica), .h (C) or .fmu (FMI 2.0 C source); "
+              "by --out as .csv, .mat, .mo (Modelica), .h (C) or .fmu (FMI 2.0, sources and this "
+              "platform's binary); "
               "lincurve (LinuxCNC, 16 points), frict-comp (TwinCAT CNC, 20 points, needs "
-              "--torque-constant), charcurve (CODESYS, 11 points): a compensation "
-              "table.")  # fmt: skip
+              "--drive-unit and --axis-number), charcurve (CODESYS, 11 points): a "
+              "compensation table.")  # fmt: skip
 @click.option(
     "--torque-constant",
     default=None,
-    help="Motor torque constant K_t for frict-comp, e.g. '1.2 N*m/A'.",
+    help="Motor torque constant K_t, e.g. '1.2 N*m/A', for a frict-comp --drive-unit in current.",
 )
+@click.option("--axis", "axis_name", default=None,
+              help="Axis of a controller table, e.g. 'X': the lincurve instance x-friction, "
+              "TwinCAT's kopf.log_achs_name, the CODESYS block FB_Friction<axis>.")  # fmt: skip
+@click.option(
+    "--axis-number",
+    default=None,
+    type=int,
+    help="frict-comp: the logical axis number (kopf.achs_nr) of the start-up list.",
+)
+@click.option("--drive-unit", default=None,
+              help="frict-comp: the unit of the drive's torque (act_torque), e.g. '0.1 % of "
+              "3.2 N*m' (per thousand of rated torque), '1 mA' or '0.001 N*m'.")  # fmt: skip
+@click.option("--cnc-build", default=None,
+              help="frict-comp: the TwinCAT CNC build, e.g. 'V3.1.3132.0' (from it on the "
+              "table is written with decimals; integers before).")  # fmt: skip
+@click.option("--append", is_flag=True,
+              help="lincurve: add this axis to the HAL file --out (one loadrt line for all "
+              "axes; an axis of the same name is replaced).")  # fmt: skip
 @click.option(
     "--temperature",
     default=None,
@@ -88,6 +107,11 @@ def export_friction_command(
     out_file: str | None,
     json_file: str | None,
     torque_constant: str | None,
+    axis_name: str | None,
+    axis_number: int | None,
+    drive_unit: str | None,
+    cnc_build: str | None,
+    append: bool,
 ) -> None:
     """Friction parameters for a servo controller, fitted to a model's torque-speed curve.
 
@@ -97,15 +121,25 @@ def export_friction_command(
       ballscrew export-friction --case my_screw.toml --form table --out friction_table.csv
       ballscrew export-friction --form load-map --axial-load "-4..4:9 kN" \\
           --temperature "20, 30, 40 degC" --out friction.mat
-      ballscrew export-friction --case axis.toml --form lincurve --speed "0..5 m/min" \\
-          --out friction.hal
+      ballscrew export-friction --case x.toml --form lincurve --speed "5 m/min" \\
+          --axis X --out friction.hal
+      ballscrew export-friction --case y.toml --form lincurve --speed "5 m/min" \\
+          --axis Y --append --out friction.hal
     """  # noqa: D301 - click needs the literal \b to keep the example lines
     if form in ("lincurve", "frict-comp", "charcurve"):
-        from .controller_tables import write_controller_table
+        from .controller_tables import ControllerFileArgs, write_controller_table
 
         write_controller_table(case_file, model_name, form, temperature, speed, axial_load,
-                               torque_constant, out_file, json_file)  # fmt: skip
+                               out_file, json_file,
+                               ControllerFileArgs(torque_constant, axis_name, axis_number,
+                                                  drive_unit, cnc_build, append))  # fmt: skip
         return
+    for flag, given in (("--axis", axis_name), ("--axis-number", axis_number),
+                        ("--drive-unit", drive_unit), ("--cnc-build", cnc_build),
+                        ("--append", append or None)):  # fmt: skip
+        if given is not None:
+            raise click.UsageError(f"{flag} is an option of the controller tables "
+                                   "(--form lincurve, frict-comp or charcurve)")  # fmt: skip
     from ..fit.export import FrictionExport, log_speeds, run_export_friction
     from ..io.case import load_case
     from ..io.measured import read_measured
@@ -231,6 +265,8 @@ def _print_map(m: FrictionMap, out_file: str | None, json_file: str | None) -> N
         click.echo(f"note: {note}", err=True)
     if out_file:
         with writing("--out", out_file):
-            write_map(m, Path(out_file), __version__)
+            notes = write_map(m, Path(out_file), __version__)
+        for note in notes:
+            click.echo(f"note: {note}", err=True)
     if json_file:
         write_result(json_file, m.as_dict())

@@ -6,10 +6,12 @@ an internal error.
 
 from __future__ import annotations
 
+import functools
 import os
 import signal
 import sys
 import warnings
+from typing import Any
 
 import click
 
@@ -20,6 +22,7 @@ from ..io.files import record_signal, signal_received
 from .acceptance import acceptance_command
 from .case import case_command
 from .check import check_command
+from .common import refuse_shared_outputs
 from .contour import contour_command
 from .demo import demo
 from .energy import energy_command
@@ -67,12 +70,27 @@ def cli(verbose: bool = False) -> None:
     """  # noqa: D301 - click needs the literal \b to keep the example lines
 
 
+def _one_owner(command: click.Command) -> click.Command:
+    """``command`` refusing, before it runs, two of its outputs on one path."""
+    callback = command.callback
+    if callback is None:
+        return command
+
+    @functools.wraps(callback)
+    def guarded(*args: Any, **kwargs: Any) -> Any:
+        refuse_shared_outputs(command, kwargs)
+        return callback(*args, **kwargs)
+
+    command.callback = guarded
+    return command
+
+
 for command in (demo, study, validate, models_command, lubricants_command, torque,
                 case_command, screws_command, energy_command, check_command, fit_command,
                 export_friction_command, monitor_command, acceptance_command,
                 serve_command, sweep_command, program_command, contour_command,
                 select_command):  # fmt: skip
-    cli.add_command(command)
+    cli.add_command(_one_owner(command))
 
 
 VALUE_NAMES: dict[str, str] = {

@@ -546,11 +546,23 @@ def _start_values(
     specs: list[FreeParameter], screw: BallScrew, oil: Lubricant, model: str,
     fixed: dict[str, Any], start: dict[str, float] | None,
 ) -> dict[str, float]:  # fmt: skip
-    """Start values by name: the screw's or the model's, replaced by ``start``'s."""
+    """Start values by name: the screw's or the model's, replaced by ``start``'s.
+
+    A start value the user gives outside the parameter's bounds is refused, naming it
+    (a defaulted one is brought inside them): moving it to the bound would fit from a
+    value nobody typed.
+    """
     starts = {s.name: _start(s, screw, oil, model, fixed) for s in specs}
     for key, value in (start or {}).items():
         spec = _spec(key, model)
-        starts[key] = min(max(float(value), spec.low), spec.high)
+        value = float(value)
+        if not (math.isfinite(value) and spec.low <= value <= spec.high):
+            unit = "" if spec.unit == "-" else f" {spec.unit}"
+            raise BallScrewInputError(
+                f"start {key}", f"{value:g}{unit}",
+                f"a start value from {spec.low:g} to {spec.high:g}{unit} ({spec.description})",
+            )  # fmt: skip
+        starts[key] = value
     return starts
 
 

@@ -20,8 +20,6 @@ temperature unit: ``temperature [degC]``) and axial load (a force unit:
 
 from __future__ import annotations
 
-import csv
-import io
 import math
 import re
 from dataclasses import dataclass
@@ -32,7 +30,7 @@ import numpy.typing as npt
 
 from ..errors import BallScrewInputError, FloatArray
 from ..geometry import BallScrew
-from .files import read_input_text
+from .files import csv_rows, read_input_text
 from .units import parse_unit, to_si_array
 
 __all__ = ["MeasuredCurve", "error_metrics", "parse_measured", "read_measured"]
@@ -96,6 +94,7 @@ def parse_measured(text: str, screw: BallScrew, source: str = "measured data") -
 
     speed = _screw_speed(values["speed"], columns, header, screw, source)
     torque = np.abs(si("torque", "N*m"))
+    _within(torque, MOST_TORQUE, "N*m", header[columns["torque"][0]], source)
     temperature = None
     if "temperature" in columns:
         temperature = si("temperature", "degC")
@@ -115,14 +114,27 @@ def parse_measured(text: str, screw: BallScrew, source: str = "measured data") -
     )
 
 
+MOST_TORQUE = 1e5
+"""The largest drag torque a measured file may hold [N·m]: a hundred times the largest
+ball screw's; past it the column's unit is wrong (or the cell is a slip such as 1e308)."""
+
+
+def _within(values: FloatArray, most: float, unit: str, column: str, source: str) -> None:
+    """Refuse the first value of a column past ``most`` (in SI), naming its line as read."""
+    over = np.flatnonzero(~(np.abs(values) <= most))
+    if over.size:
+        raise BallScrewInputError(
+            f"{source}: line {int(over[0]) + 2}, column '{column.strip()}'",
+            f"{float(values[over[0]]):.6g} {unit}",
+            f"at most {most:g} {unit} in magnitude for a ball screw (check the column's unit)",
+        )
+
+
 def _csv_rows(text: str, source: str) -> tuple[list[list[str]], str]:
     """The non-blank rows of the CSV text (at least the header), and its separator."""
-    text = text.lstrip("\ufeff")
-    first = next((line for line in text.splitlines() if line.strip()), "")
     # The separator is the header's: a semicolon or a tab (spreadsheets in
     # decimal-comma locales), else a comma.
-    delimiter = ";" if ";" in first else ("\t" if "\t" in first else ",")
-    rows = list(csv.reader(io.StringIO(text), delimiter=delimiter))
+    rows, delimiter = csv_rows(text, source)
     rows = [r for r in rows if any(cell.strip() for cell in r)]
     if delimiter == "," and rows:
         wide = next((i for i, r in enumerate(rows[1:], start=2) if len(r) > len(rows[0])), None)

@@ -20,15 +20,13 @@ price [EUR]``: a selection adds a screw's price to its motor's.
 
 from __future__ import annotations
 
-import csv
-import io
 import math
 import re
 from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import BallScrewInputError
-from .files import read_input_text
+from .files import csv_rows, read_input_text
 from .units import to_si
 
 __all__ = [
@@ -124,7 +122,7 @@ def parse_motors(text: str, source: str = "motor table") -> tuple[MotorRow, ...]
     >>> m.name, round(m.max_speed, 2), m.rotor_inertia
     ('M1', 314.16, 0.00031)
     """
-    rows = [r for r in csv.reader(io.StringIO(text.lstrip("\ufeff"))) if any(c.strip() for c in r)]
+    rows = [r for r in csv_rows(text, source, ",")[0] if any(c.strip() for c in r)]
     rows = [r for r in rows if not r[0].lstrip().startswith("#")]
     if len(rows) < 2:
         raise BallScrewInputError(source, "(no motors)", "a header line and one motor a line")
@@ -186,7 +184,7 @@ def parse_prices(text: str, source: str = "price table") -> tuple[dict[str, floa
     >>> parse_prices("designation, price [EUR]\nHIWIN R32-20K4-FSC, 310\n")
     ({'HIWIN R32-20K4-FSC': 310.0}, 'EUR')
     """
-    rows = [r for r in csv.reader(io.StringIO(text.lstrip("\ufeff"))) if any(c.strip() for c in r)]
+    rows = [r for r in csv_rows(text, source, ",")[0] if any(c.strip() for c in r)]
     rows = [r for r in rows if not r[0].lstrip().startswith("#")]
     if len(rows) < 2:
         raise BallScrewInputError(source, "(no screws)", "a header line and one screw a line")

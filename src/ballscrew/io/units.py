@@ -813,6 +813,12 @@ def _to_si(
     return _value_si(field, str(value).strip(), number, unit_text, unit, notes)
 
 
+TEMPERATURE_RANGE = (-100.0, 400.0)
+"""Temperatures [degC] a quantity read for a temperature (not a difference) may have: from
+arctic storage to well past any oil's flash point. Outside it the text cannot be meant (most
+often kelvin typed for degrees Celsius)."""
+
+
 def _value_si(
     field: str,
     text: str,
@@ -824,7 +830,16 @@ def _value_si(
     """One number in ``unit_text`` to ``unit``: a bare number only where no unit is wanted."""
     if not unit_text and unit:
         raise _bare(field, text, unit)
-    return _finite(field, text, float(_convert(field, text, number, unit_text, unit, notes)))
+    result = _finite(field, text, float(_convert(field, text, number, unit_text, unit, notes)))
+    if unit == "degC" and not TEMPERATURE_RANGE[0] <= result <= TEMPERATURE_RANGE[1]:
+        low, high = TEMPERATURE_RANGE
+        raise BallScrewInputError(
+            field, text,
+            f"a temperature from {low:g} to {high:g} degC, where a machine, its screw and its "
+            f"oil can be (read as {result:.6g} degC; a temperature in K is absolute: "
+            "'20 K' is -253 degC, write '20 degC')",
+        )  # fmt: skip
+    return result
 
 
 def _finite(field: str, given: object, magnitude: float) -> float:

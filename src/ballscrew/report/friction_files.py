@@ -14,8 +14,9 @@ Each file states its formula, its axes, units and sign conventions in a header
   (first row the loads, first column the motor speeds);
 * ``.h``: a C header with the axes and the table as constant arrays and a
   trilinear interpolation function, clamped at the edges, for drive firmware;
-* ``.fmu``: a C-source FMU (FMI 2.0 co-simulation) around that header, for
-  simulators (:mod:`ballscrew.report.friction_fmu`).
+* ``.fmu``: an FMU (FMI 2.0 co-simulation) around that header, for
+  simulators, with its sources and, where a C compiler is found, the binary of
+  the platform it is written on (:mod:`ballscrew.report.friction_fmu`).
 """
 
 from __future__ import annotations
@@ -29,6 +30,7 @@ import numpy as np
 from ..errors import BallScrewInputError, FloatArray
 from ..fit.friction_map import FrictionMap
 from ..io.files import atomic_write
+from .friction_fmu import fmu_build
 from .outputs import csv_text
 
 __all__ = [
@@ -200,10 +202,11 @@ static inline double bs_friction_torque(double motor_speed, double load, double 
 
 
 def fmu_file(m: FrictionMap, version: str) -> bytes:
-    """A C-source FMU (FMI 2.0) around :func:`c_header` (:mod:`ballscrew.report.friction_fmu`)."""
-    from .friction_fmu import fmu_bytes
+    """An FMU (FMI 2.0) around :func:`c_header`, with this platform's binary if it builds.
 
-    return fmu_bytes(m, version, c_header(m, version))
+    The binary needs a C compiler (:func:`ballscrew.report.friction_fmu.fmu_build`).
+    """
+    return fmu_build(m, version, c_header(m, version)).data
 
 
 FORMATS: dict[str, Callable[[FrictionMap, str], bytes]] = {
@@ -212,9 +215,18 @@ FORMATS: dict[str, Callable[[FrictionMap, str], bytes]] = {
 """File suffix -> writer."""
 
 
-def write_map(m: FrictionMap, path: Path, version: str) -> None:
-    """Write the map in the format its suffix names (:data:`FORMATS`), atomically."""
+def write_map(m: FrictionMap, path: Path, version: str) -> list[str]:
+    """Write the map in the format its suffix names (:data:`FORMATS`), atomically.
+
+    Returns the notes for the user (for an FMU: whether it carries a binary, built by
+    which compiler).
+    """
     writer = FORMATS.get(path.suffix.lower())
     if writer is None:
         raise BallScrewInputError("--out", str(path), "a file ending in " + ", ".join(FORMATS))
+    if path.suffix.lower() == ".fmu":
+        build = fmu_build(m, version, c_header(m, version))
+        atomic_write(path, build.data)
+        return [f"{path.name}: {build.note}"]
     atomic_write(path, writer(m, version))
+    return []

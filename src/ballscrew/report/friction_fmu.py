@@ -1,24 +1,48 @@
-"""A C-source FMU (FMI 2.0, co-simulation) of the friction map, built on the C header.
+"""An FMU (FMI 2.0, co-simulation) of the friction map, built on the C header.
 
 The archive holds ``modelDescription.xml``, the C header that
 :func:`ballscrew.report.friction_files.c_header` writes and a C file with the
 FMI 2.0 functions around it: three inputs, the motor speed [rad/s], the axial
 load [N] and the temperature [°C], and one output, the motor-side friction
-torque [N·m] that the header's interpolation gives. It carries no binary: an
-importing tool compiles the sources for its own platform (FMPy does it with
-CMake; the FMI 2.0 headers come from the importer, as the standard provides).
+torque [N·m] that the header's interpolation gives.
+
+The sources are always kept (``sources/``, listed under ``SourceFiles``), so
+that any importer can compile them for its platform with the FMI 2.0 headers
+it ships (FMPy: ``fmpy.build.build_platform_binary``). Where a C compiler is
+found (:func:`find_compiler`: ``$CC``, then ``cc``, ``gcc``, ``clang``), the
+export also compiles the shared library for the platform it runs on into
+``binaries/<platform>/`` (FMI 2.0 §2.1.2 names the folders ``linux64``,
+``darwin64``, ``win64``, ...), so that the file simulates as written there;
+the compile uses :data:`FMI2_TYPES`, the standard's type and enum
+declarations written out here. Without a compiler, or if the compile fails,
+the FMU is the source FMU alone and :class:`FmuBuild` says so.
+
+``ModelStructure`` lists the output under ``Outputs`` and, since its initial
+value is calculated from the inputs, under ``InitialUnknowns`` with the three
+inputs as its dependencies (FMI 2.0 §2.2.8).
 """
 
 from __future__ import annotations
 
 import hashlib
 import io
+import os
+import shutil
+import struct
+import subprocess
+import sys
+import tempfile
 import zipfile
+from dataclasses import dataclass
+from pathlib import Path
 from xml.sax.saxutils import escape
 
 from ..fit.friction_map import FrictionMap
 
-__all__ = ["MODEL_IDENTIFIER", "fmu_bytes"]
+__all__ = [
+    "FMI2_TYPES", "MODEL_IDENTIFIER", "FmuBuild", "find_compiler", "fmi_platform", "fmu_build",
+    "fmu_bytes",
+]  # fmt: skip
 
 MODEL_IDENTIFIER = "BallScrewFriction"
 """The FMU's model identifier (the shared library's name once compiled)."""
@@ -177,6 +201,9 @@ def _model_description(m: FrictionMap, version: str, guid: str) -> str:
   <Outputs>
    <Unknown index="4" dependencies="1 2 3"/>
   </Outputs>
+  <InitialUnknowns>
+   <Unknown index="4" dependencies="1 2 3"/>
+  </InitialUnknowns>
  </ModelStructure>
 </fmiModelDescription>
 """
@@ -189,18 +216,159 @@ def _entry(archive: zipfile.ZipFile, name: str, data: bytes) -> None:
     archive.writestr(info, data)
 
 
-def fmu_bytes(m: FrictionMap, version: str, header: bytes) -> bytes:
-    """The FMU archive of the map (module docstring) around its C ``header``, reproducibly.
+FMI2_TYPES = r"""/* The FMI 2.0 types, constants and enums the wrapper uses (FMI 2.0 section 2.1.2
+ * and 2.1.3), declared for ballscrew's own compile of the binary; an importer that
+ * compiles the sources uses the standard's headers instead. */
+#ifndef BALLSCREW_FMI2_TYPES_H
+#define BALLSCREW_FMI2_TYPES_H
+#include <stddef.h>
+typedef void *fmi2Component;
+typedef void *fmi2ComponentEnvironment;
+typedef void *fmi2FMUstate;
+typedef unsigned int fmi2ValueReference;
+typedef double fmi2Real;
+typedef int fmi2Integer;
+typedef int fmi2Boolean;
+typedef char fmi2Char;
+typedef const fmi2Char *fmi2String;
+typedef char fmi2Byte;
+#define fmi2True 1
+#define fmi2False 0
+#define fmi2TypesPlatform "default"
+#define fmi2Version "2.0"
+typedef enum { fmi2OK, fmi2Warning, fmi2Discard, fmi2Error, fmi2Fatal, fmi2Pending } fmi2Status;
+typedef enum { fmi2ModelExchange, fmi2CoSimulation } fmi2Type;
+typedef enum {
+    fmi2DoStepStatus, fmi2PendingStatus, fmi2LastSuccessfulTime, fmi2Terminated
+} fmi2StatusKind;
+typedef struct {
+    void (*logger)(fmi2ComponentEnvironment, fmi2String, fmi2Status, fmi2String, fmi2String, ...);
+    void *(*allocateMemory)(size_t, size_t);
+    void (*freeMemory)(void *);
+    void (*stepFinished)(fmi2ComponentEnvironment, fmi2Status);
+    fmi2ComponentEnvironment componentEnvironment;
+} fmi2CallbackFunctions;
+#endif
+"""
+"""What the compile of :func:`fmu_build` includes as ``fmi2Functions.h``."""
 
-    ``header`` is :func:`ballscrew.report.friction_files.c_header` of the map, handed
-    in so that this module does not import the one that imports it.
+
+@dataclass(frozen=True)
+class FmuBuild:
+    """The FMU's bytes and how its binary came about.
+
+    ``platform`` is the FMI platform folder of the binary (None: a source FMU only),
+    ``compiler`` the compiler's first ``--version`` line and path, ``note`` one
+    sentence for the user.
+    """
+
+    data: bytes
+    platform: str | None
+    compiler: str | None
+    note: str
+
+
+def fmi_platform() -> str | None:
+    """The FMI 2.0 platform folder of this machine (``linux64``, ``darwin64``, ``win64``, ...)."""
+    bits = struct.calcsize("P") * 8
+    name: str = getattr(sys, "platform")  # noqa: B009 - a plain str, not narrowed per platform
+    folders = {"linux": "linux", "darwin": "darwin", "win32": "win", "cygwin": "win"}
+    for prefix, folder in folders.items():
+        if name.startswith(prefix):
+            return f"{folder}{bits}"
+    return None
+
+
+def find_compiler() -> str | None:
+    """The C compiler to build with: ``$CC``, else the first of cc, gcc, clang on the PATH."""
+    names = [os.environ["CC"]] if os.environ.get("CC") else ["cc", "gcc", "clang"]
+    for name in names:
+        found = shutil.which(name)
+        if found:
+            return found
+    return None
+
+
+def _compile(compiler: str, platform: str, sources: dict[str, bytes]) -> bytes:
+    """The shared library of ``sources`` built by ``compiler`` for ``platform``."""
+    with tempfile.TemporaryDirectory(prefix="ballscrew-fmu-") as folder:
+        root = Path(folder)
+        for name, data in {**sources, "fmi2Functions.h": FMI2_TYPES.encode()}.items():
+            (root / name).write_bytes(data)
+        out = root / _library_name(platform)
+        shared = ["-dynamiclib"] if out.suffix == ".dylib" else ["-shared", "-fPIC"]
+        command = [compiler, *shared, "-O2", "-std=c99", "-I", str(root), "-o", str(out),
+                   str(root / "ballscrew_friction_fmu.c")]  # fmt: skip
+        subprocess.run(command, capture_output=True, check=True, timeout=300)
+        return out.read_bytes()
+
+
+def _version_line(compiler: str) -> str:
+    try:
+        done = subprocess.run([compiler, "--version"], capture_output=True, text=True,
+                              timeout=60, check=False)  # fmt: skip
+    except OSError:
+        return compiler
+    first = (done.stdout or done.stderr).strip().splitlines()
+    return f"{first[0]} ({compiler})" if first else compiler
+
+
+def fmu_build(m: FrictionMap, version: str, header: bytes, *, binary: bool = True) -> FmuBuild:
+    """The FMU of the map around its C ``header``, with this platform's binary if it builds.
+
+    ``binary=False`` writes the source FMU alone. ``header`` is
+    :func:`ballscrew.report.friction_files.c_header` of the map, handed in so that
+    this module does not import the one that imports it.
     """
     digest = hashlib.sha256(header).hexdigest()
     guid = f"{{{digest[:8]}-{digest[8:12]}-{digest[12:16]}-{digest[16:20]}-{digest[20:32]}}}"
     source = _SOURCE.replace("@GUID@", guid).replace("@T0@", repr(float(m.temperatures[0])))
+    sources = {"ballscrew_friction_map.h": header,
+               "ballscrew_friction_fmu.c": source.encode()}  # fmt: skip
+    platform, compiler = fmi_platform(), find_compiler() if binary else None
+    library, used = None, None
+    if not binary:
+        note = "a source FMU (no binary asked for): the importer compiles sources/"
+    elif platform is None or compiler is None:
+        note = (
+            "no C compiler found (set CC, or install cc, gcc or clang): a source FMU; "
+            "compile it where it is used, e.g. with FMPy and CMake: fmpy compile FILE.fmu"
+        )
+        if platform is None:
+            note = f"platform {sys.platform!r} has no FMI 2.0 binary folder: a source FMU"
+    else:
+        used = _version_line(compiler)
+        try:
+            library = _compile(compiler, platform, sources)
+        except (OSError, subprocess.SubprocessError) as err:
+            detail = getattr(err, "stderr", b"") or b""
+            text = detail.decode("utf-8", "replace").strip().splitlines()
+            note = (
+                f"the compile with {used} failed ({text[0] if text else err}): a source "
+                "FMU; compile it where it is used, e.g. with FMPy and CMake: fmpy compile FILE.fmu"
+            )
+            platform, used = None, None
+        else:
+            note = (
+                f"binary for {platform} compiled with {used}; the sources are kept for "
+                "other platforms"
+            )
     buffer = io.BytesIO()
     with zipfile.ZipFile(buffer, "w") as archive:
         _entry(archive, "modelDescription.xml", _model_description(m, version, guid).encode())
-        _entry(archive, "sources/ballscrew_friction_map.h", header)
-        _entry(archive, "sources/ballscrew_friction_fmu.c", source.encode())
-    return buffer.getvalue()
+        for name, data in sources.items():
+            _entry(archive, f"sources/{name}", data)
+        if library is not None and platform is not None:
+            _entry(archive, f"binaries/{platform}/{_library_name(platform)}", library)
+    return FmuBuild(buffer.getvalue(), platform if library else None, used, note)
+
+
+def _library_name(platform: str) -> str:
+    """The shared library's file name on ``platform`` (FMI 2.0: the model identifier)."""
+    suffix = {"darwin": ".dylib", "win": ".dll"}.get(platform.rstrip("0123456789"), ".so")
+    return f"{MODEL_IDENTIFIER}{suffix}"
+
+
+def fmu_bytes(m: FrictionMap, version: str, header: bytes) -> bytes:
+    """The source FMU of the map (no binary) around its C ``header``, reproducibly."""
+    return fmu_build(m, version, header, binary=False).data

@@ -37,6 +37,7 @@ __all__ = [
     "CONTROLLERS",
     "CompensationTable",
     "ControllerTable",
+    "DriveUnit",
     "controller_table",
     "fit_table",
     "relative_error",
@@ -200,6 +201,53 @@ CONTROLLERS: dict[str, tuple[int, bool, bool, str]] = {
 
 
 @dataclass(frozen=True)
+class DriveUnit:
+    """One unit of the number a drive reports its torque in (TwinCAT's ``frict_comp`` output).
+
+    ``value`` is one unit in N·m (``kind`` "torque") or in A (``kind`` "current");
+    ``text`` is how the user gave it (e.g. "0.1 % of 3.2 N*m", "1 mA").
+    """
+
+    value: float
+    kind: str
+    text: str
+
+    def __post_init__(self) -> None:
+        if self.kind not in ("torque", "current"):
+            raise BallScrewInputError("drive unit kind", self.kind, "'torque' or 'current'")
+        if not (np.isfinite(self.value) and self.value > 0.0):
+            raise BallScrewInputError("--drive-unit", self.text, "a positive torque or current")
+
+    @classmethod
+    def parse(cls, text: str, field: str = "--drive-unit") -> DriveUnit:
+        """A unit as people write it: "1 mA", "0.001 N*m", or a share "0.1 % of 3.2 N*m".
+
+        Examples
+        --------
+        >>> DriveUnit.parse("0.1 % of 3.2 N*m")
+        DriveUnit(value=0.0032, kind='torque', text='0.1 % of 3.2 N*m')
+        >>> DriveUnit.parse("1 mA").value
+        0.001
+        """
+        from ..io.units import to_si
+
+        share, _, base = str(text).rpartition(" of ")
+        factor = to_si(field, share.strip(), "") if share else 1.0
+        base = base.strip()
+        try:
+            value, kind = to_si(field, base, "N*m"), "torque"
+        except BallScrewInputError:
+            try:
+                value, kind = to_si(field, base, "A"), "current"
+            except BallScrewInputError:
+                raise BallScrewInputError(
+                    field, text, "a torque or a current, or a share of one, e.g. '0.1 % of "
+                    "3.2 N*m', '1 mA' or '0.001 N*m'",
+                ) from None  # fmt: skip
+        return cls(round(factor * value, 15), kind, str(text))
+
+
+@dataclass(frozen=True)
 class ControllerTable:
     """A controller's friction table from a model at the axis load and temperature.
 
@@ -217,6 +265,7 @@ class ControllerTable:
     temperature: float
     axial_load: float
     torque_constant: float | None = None
+    drive_unit: DriveUnit | None = None
 
     def motor_torque(self, force: npt.ArrayLike | None = None) -> FloatArray:
         """Motor torque [N·m] of table-side forces [N] (the table's by default)."""
@@ -231,6 +280,21 @@ class ControllerTable:
         out: FloatArray = self.motor_torque(force) / self.torque_constant
         return out
 
+    def drive_values(self, force: npt.ArrayLike | None = None) -> FloatArray:
+        """Table-side forces [N] (the table's by default) in the drive's units (:class:`DriveUnit`).
+
+        A torque unit divides the motor torque; a current unit the motor current
+        :math:`T/K_t`.
+        """
+        unit = self.drive_unit
+        if unit is None:
+            raise BallScrewInputError("--drive-unit", None, "the unit of the drive's torque")
+        if unit.kind == "current":
+            out: FloatArray = self.motor_current(force) / unit.value
+            return out
+        out = self.motor_torque(force) / unit.value
+        return out
+
     def as_dict(self) -> dict[str, Any]:
         """JSON-ready table, table side and motor side."""
         out = {"target": self.target, "model": self.model, "case": self.case_title,
@@ -241,6 +305,10 @@ class ControllerTable:
         if self.torque_constant is not None:
             out["torque_constant_Nm_per_A"] = self.torque_constant
             out["motor_current_A"] = self.motor_current().tolist()
+        if self.drive_unit is not None:
+            out["drive_unit"] = {"text": self.drive_unit.text, "kind": self.drive_unit.kind,
+                                 "value_SI": self.drive_unit.value}  # fmt: skip
+            out["drive_values"] = self.drive_values().tolist()
         return out
 
 
@@ -253,13 +321,16 @@ def controller_table(
     temperature: float | None = None,
     axial_load: float | None = None,
     torque_constant: float | None = None,
+    drive_unit: DriveUnit | None = None,
 ) -> ControllerTable:
     """The friction table for ``target`` (a key of :data:`CONTROLLERS`) over ``speed_range`` [m/s].
 
     The model's friction at the axis load (the case's first, plus an inclined
     axis' weight) and temperature (the case's first), over table speeds from
     1e-5 m/s to ``speed_range`` both ways, reduced to the controller's points
-    by :func:`fit_table`.
+    by :func:`fit_table`. ``frict-comp`` needs ``drive_unit`` (its output is
+    in the unit the drive reports its torque in), and ``torque_constant`` [N·m/A]
+    when that unit is a current.
     """
     import math
     import warnings
@@ -270,10 +341,18 @@ def controller_table(
     if target not in CONTROLLERS:
         raise BallScrewInputError("--form", target, f"one of {list(CONTROLLERS)}")
     points, one_sided, zero, _ = CONTROLLERS[target]
-    if target == "frict-comp" and not (torque_constant and torque_constant > 0.0):
+    if target == "frict-comp" and drive_unit is None:
+        raise BallScrewInputError(
+            "--drive-unit", None, "the unit the drive reports its torque in (TwinCAT "
+            "P-COMP-00047: frict_comp.table[i].out is in the unit of dig_drv.act_torque), "
+            "e.g. '0.1 % of 3.2 N*m' (CiA 402: per thousand of the rated torque), "
+            "'0.1 % of 4.5 A' or '1 mA' with --torque-constant, or '0.001 N*m'",
+        )  # fmt: skip
+    needs_kt = target == "frict-comp" and drive_unit is not None and drive_unit.kind == "current"
+    if needs_kt and not (torque_constant and torque_constant > 0.0):
         raise BallScrewInputError(
             "--torque-constant", torque_constant, "the motor's torque constant K_t, e.g. "
-            "'1.2 N*m/A' (TwinCAT's table is in motor current)",
+            f"'1.2 N*m/A' (the drive's unit {drive_unit.text!r} is a current)",  # type: ignore[union-attr]
         )  # fmt: skip
     lead = case.screw.lead
     ratio = float(case.axis.get("gear_ratio", 1.0))
@@ -288,4 +367,4 @@ def controller_table(
     table = fit_table(fmap.table_speeds, fmap.force[0, 0, :], points, speed_range,
                       one_sided=one_sided, zero_point=zero)  # fmt: skip
     return ControllerTable(target, table, fmap.model, case.title, lead, ratio, temp, load,
-                           torque_constant)  # fmt: skip
+                           torque_constant, drive_unit)  # fmt: skip

@@ -113,7 +113,9 @@ class _Guard:
 
         if length is not None and too_big:
             response = JSONResponse(
-                {"error": f"the request body is over {self.limit} bytes"}, status_code=413
+                {"error": f"the request body is over {self.limit} bytes"},
+                status_code=413,
+                headers=_CLOSE,
             )
             await response(scope, receive, send_with_headers)
             return
@@ -235,17 +237,22 @@ def _case_file(limits: Limits, compute: WorkerPool) -> _Endpoint:
     return case_file
 
 
+_CLOSE = {"connection": "close"}
+"""The header of every refusal: the connection is closed once it is answered, so a client
+that goes on sending (a body past the limit, trickled) holds nothing."""
+
+
 async def _api_error(request: Request, exc: Exception) -> Response:
     assert isinstance(exc, ApiError)
-    return JSONResponse(exc.payload(), status_code=exc.status)
+    return JSONResponse(exc.payload(), status_code=exc.status, headers=_CLOSE)
 
 
 async def _http_error(request: Request, exc: Exception) -> Response:
     assert isinstance(exc, HTTPException)
     text = {404: "not found", 405: "method not allowed"}.get(exc.status_code, "refused")
     if request.url.path.startswith("/api/"):
-        return JSONResponse({"error": text}, status_code=exc.status_code)
-    return HTMLResponse(_message_page(text), status_code=exc.status_code)
+        return JSONResponse({"error": text}, status_code=exc.status_code, headers=_CLOSE)
+    return HTMLResponse(_message_page(text), status_code=exc.status_code, headers=_CLOSE)
 
 
 async def _internal_error(request: Request, exc: Exception) -> Response:
@@ -254,12 +261,12 @@ async def _internal_error(request: Request, exc: Exception) -> Response:
     LOG.error("internal error on %s %s", request.method, request.url.path, exc_info=exc)
     text = "internal error: the server could not compute this (see the server's log)"
     if request.url.path.startswith("/api/"):
-        return JSONResponse({"error": text}, status_code=500)
-    return HTMLResponse(_message_page(text), status_code=500)
+        return JSONResponse({"error": text}, status_code=500, headers=_CLOSE)
+    return HTMLResponse(_message_page(text), status_code=500, headers=_CLOSE)
 
 
 def _lifespan(
-    compute: WorkerPool,
+    compute: WorkerPool, heavy: WorkerPool
 ) -> Callable[[Starlette], contextlib.AbstractAsyncContextManager[None]]:
     """The application's lifespan: the workers started and warmed up; stopped at the end."""
 
@@ -268,7 +275,9 @@ def _lifespan(
         # The workers import the package and warm up (the first computation loads and
         # compiles what the models need) before the first visitor: the page opens at
         # full speed. Computing in this process, the warm-up is one request.
-        await anyio.to_thread.run_sync(compute.start, 120.0)
+        async with anyio.create_task_group() as group:
+            for pool in (compute, heavy):
+                group.start_soon(anyio.to_thread.run_sync, pool.start, 120.0)
         if not compute.size:
             try:
                 await compute("evaluate", json.dumps(service.WARM_UP).encode("utf-8"))
@@ -278,6 +287,7 @@ def _lifespan(
             yield
         finally:
             compute.close()
+            heavy.close()
 
     return lifespan
 
@@ -289,22 +299,26 @@ def create_app(
 
     ``processes``: worker processes that compute (:class:`~.worker.WorkerPool`; 0 runs
     the computations in a thread of this process, as tests that replace a function of
-    the service need).
+    the service need). The routes whose requests may each take the whole time budget
+    (a program, a circular test, a selection) run in a pool of their own, of one
+    process: a burst of them waits there, and the page's light requests (torque,
+    evaluate, a case file) are still answered by the others.
     """
     compute = WorkerPool(limits, processes)
+    heavy = WorkerPool(limits, min(processes, 1))
     hosts = list(allowed_hosts) if allowed_hosts is not None else list(LOOPBACK_HOSTS)
     return Starlette(
         debug=False,
-        lifespan=_lifespan(compute),
+        lifespan=_lifespan(compute, heavy),
         routes=[
             Route("/", _index(_pages()), methods=["GET"]),
             Route("/static/{name}", _static_file(_static()), methods=["GET"]),
             Route("/api/torque", _json_route("torque", limits, compute), methods=["POST"]),
             Route("/api/evaluate", _json_route("evaluate", limits, compute), methods=["POST"]),
             Route("/api/case", _case_file(limits, compute), methods=["POST"]),
-            Route("/api/program", _json_route("program", limits, compute), methods=["POST"]),
-            Route("/api/contour", _json_route("contour", limits, compute), methods=["POST"]),
-            Route("/api/select", _json_route("select", limits, compute), methods=["POST"]),
+            Route("/api/program", _json_route("program", limits, heavy), methods=["POST"]),
+            Route("/api/contour", _json_route("contour", limits, heavy), methods=["POST"]),
+            Route("/api/select", _json_route("select", limits, heavy), methods=["POST"]),
         ],
         middleware=[
             Middleware(_Guard, limit=limits.body_bytes),

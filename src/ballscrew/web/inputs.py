@@ -55,6 +55,10 @@ class Limits:
     seconds : float
         Time a request may take, waiting included [s]: 503 past it, or after
         half of it waiting for the worker (one computation at a time).
+    memory_bytes : int
+        Address space a worker process may hold [bytes] (its interpreter and
+        libraries take about 0.55 GiB of it): a request that needs more is
+        answered 422, and no request can take the machine's memory.
     """
 
     body_bytes: int = 64 * 1024
@@ -63,6 +67,7 @@ class Limits:
     move_seconds: float = 60.0
     depth: int = 6
     seconds: float = 10.0
+    memory_bytes: int = 2 * 1024**3
 
 
 LIMITS = Limits()

@@ -66,7 +66,23 @@ reads it there, so that reading, like computing, runs within the time budget and
 server's event loop (a body of the worst shape cannot hold the server)."""
 
 
-def _serve(conn: Connection) -> None:
+def _cap_memory(memory_bytes: int) -> None:
+    """Limit this process's address space to ``memory_bytes`` (where the system allows it).
+
+    An allocation past it raises :class:`MemoryError` in the computation, which is
+    answered as a refusal: a request cannot grow a worker until the machine swaps.
+    """
+    try:
+        import resource
+
+        _, hard = resource.getrlimit(resource.RLIMIT_AS)
+        cap = memory_bytes if hard == resource.RLIM_INFINITY else min(memory_bytes, hard)
+        resource.setrlimit(resource.RLIMIT_AS, (cap, hard))
+    except (ImportError, ValueError, OSError):  # no such limit here: the time budget remains
+        LOG.warning("the worker's memory could not be capped")
+
+
+def _serve(conn: Connection, memory_bytes: int | None = None) -> None:
     """A worker's loop: warm up, say so, then run each named function on its request."""
     # The results keep every validity issue, returned as text; no warning is printed.
     warnings.simplefilter("ignore", BallScrewValidityWarning)
@@ -76,6 +92,8 @@ def _serve(conn: Connection) -> None:
     with contextlib.suppress(Exception):
         service.evaluate(service.WARM_UP, service.LIMITS)
         load_kernel()  # the helix's compiled loop, for requests of many points
+    if memory_bytes:
+        _cap_memory(memory_bytes)
     conn.send(("ready",))
     while True:
         try:
@@ -88,6 +106,11 @@ def _serve(conn: Connection) -> None:
             answer = ("error", exc.status, exc.message, exc.field)
         except BallScrewInputError as exc:
             answer = ("error", 422, str(exc), exc.field)
+        except MemoryError:
+            gib = (memory_bytes or 0) / 1024**3
+            answer = ("error", 422, f"the request needs more memory than a computation of the "
+                      f"calculator may use ({gib:.3g} GiB): ask for fewer samples, points or "
+                      "candidates, or run it with the command line", "")  # fmt: skip
         except Exception:
             LOG.exception("internal error in %s", name)
             answer = ("internal",)
@@ -97,10 +120,10 @@ def _serve(conn: Connection) -> None:
 class _Process:
     """One worker process and the parent's end of its pipe."""
 
-    def __init__(self) -> None:
+    def __init__(self, memory_bytes: int | None = None) -> None:
         context = multiprocessing.get_context("spawn")  # no fork of a threaded server
         self.conn, child = context.Pipe()
-        self.process = context.Process(target=_serve, args=(child,), daemon=True)
+        self.process = context.Process(target=_serve, args=(child, memory_bytes), daemon=True)
         self.process.start()
         child.close()
         self.ready = False
@@ -155,7 +178,7 @@ class WorkerPool:
         """
         with self._lock:
             if not self._started:
-                self._idle = [_Process() for _ in range(self.size)]
+                self._idle = [_Process(self.limits.memory_bytes) for _ in range(self.size)]
                 self._started = True
             workers = list(self._idle)
         deadline = time.monotonic() + wait
@@ -200,7 +223,8 @@ class WorkerPool:
                     answer = ("internal",)
                 if answer is None or (answer[0] == "internal" and not worker.process.is_alive()):
                     worker.stop()
-                    worker = _Process()  # warms up while the next request waits for it
+                    # A fresh one warms up while the next request waits for it.
+                    worker = _Process(self.limits.memory_bytes)
             with self._lock:
                 self._idle.append(worker)
         finally:
