@@ -316,6 +316,29 @@ def test_both_readers_agree_where_both_read() -> None:
     assert both >= 3  # 3dtest, tort (and roparams, without motion)
 
 
+@needs_rs274
+def test_an_inch_sample_agrees_to_the_print_precision() -> None:
+    """arcspiral.ngc without its G64 (which the built-in reader refuses): 1003 R arcs.
+
+    Written to 1e-6 in, printed by rs274 to 1e-4 in: every end point and centre is rounded
+    by up to h = 1.27 um a coordinate, which moves an arc's length by at most
+    2 h sqrt(2) (2 + sweep).
+    """
+    text = (SAMPLES / "arcspiral.ngc").read_text(encoding="utf-8").replace("g20 g64", "g20")
+    builtin = read_program(text)
+    ours = read_program_rs274(text)
+    assert ours.size == builtin.size == 1003
+    assert ours.kind.tolist() == builtin.kind.tolist()
+    assert ours.line.tolist() == builtin.line.tolist()
+    h = 0.5e-4 * 0.0254
+    for k in range(ours.size):
+        bound = 2 * h * math.sqrt(2) * (2 + abs(builtin.sweep[k]))
+        length, axis = _distances(_one(ours, k))
+        length_b, axis_b = _distances(_one(builtin, k))
+        assert length == pytest.approx(length_b, abs=bound), k
+        np.testing.assert_allclose(axis, axis_b, atol=bound, err_msg=str(k))
+
+
 def _one(p: Program, k: int) -> Program:
     """Block ``k`` of ``p`` alone."""
     fields = ("kind", "line", "start", "end", "feed", "centre", "plane", "sweep", "dwell")
