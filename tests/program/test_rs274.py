@@ -138,6 +138,9 @@ def test_rigid_tapping_goes_in_and_out_at_the_pitch() -> None:
         ("STRAIGHT_FEED(1.0000, 0.0000, 0.0000, 10.0000, 0.0000, 0.0000)", "A is a rotary"),
         ("STRAIGHT_PROBE(0.0000, 0.0000, -5.0000, 0.0000, 0.0000, 0.0000)", "probing"),
         ("NURBS_FEED(1.0000, 2.0000)", "spline"),
+        ("STRAIGHT_FEED(nan, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)", "finite numbers"),
+        ("STRAIGHT_FEED(1.0000, 0.0000)", "finite numbers"),
+        ("USE_LENGTH_UNITS(CANON_UNITS_FURLONGS)", "millimetres"),
         ("RIGID_TAP(0.0000, 0.0000, -5.0000)", "pitch"),
     ],
 )

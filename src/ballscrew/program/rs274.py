@@ -102,7 +102,6 @@ _LEAD = re.compile(r"^(\s*/?\s*)(?:[Nn]\s*\d[\d ]*(?:\.\d*)?)?")
 _MARKED = re.compile(rf"^\s*/?\s*N(\d{{{len(str(LINE_MARK))},}})\s?")
 _LONGEST = 252
 """The longest line rs274 reads [characters]."""
-_NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 
 _SKIPPED = {
     **dict.fromkeys(
@@ -219,8 +218,12 @@ def _marked(text: str) -> str:
     return "\n".join(out) + "\n"
 
 
-def _numbers(args: str) -> list[float]:
-    return [float(v) for v in _NUMBER.findall(args)]
+def _numbers(args: str, least: int = 1) -> list[float]:
+    """The numbers of a command's arguments, in order: at least ``least``, all finite."""
+    values = [float(v) for v in re.split(r"[,\s]+", args.strip()) if v]
+    if len(values) < least or not all(math.isfinite(v) for v in values):
+        raise IndexError(args)
+    return values
 
 
 def _feed(state: _State, lines: list[str], notes: dict[str, str]) -> float:
@@ -260,7 +263,7 @@ def _command(
 ) -> None:  # fmt: skip
     """One canonical command into the state and the blocks."""
     if name in ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED"):
-        v = _numbers(args)
+        v = _numbers(args, 6)
         _rotary(state, v, lines)
         end = state.machine(v[0], v[1], v[2])
         if end != state.position:
@@ -273,7 +276,7 @@ def _command(
     elif name == "RIGID_TAP":
         # G33.1: in to the point at the thread's pitch per spindle turn, then out to the
         # start at the same pitch as the spindle reverses (LinuxCNC's motion controller).
-        v = _numbers(args)
+        v = _numbers(args, 3)
         bottom, top = state.machine(v[0], v[1], v[2]), state.position
         if state.synchronised is None:
             raise _refuse(state, lines, "rigid tapping with its pitch (K)")
@@ -285,7 +288,7 @@ def _command(
             rows.append((FEED, state.line, a, b, feed, [math.nan] * 3, state.plane, 0.0, 0.0))
         used.update(k for k, p, q in zip("XYZ", top, bottom, strict=True) if p != q)
     elif name == "ARC_FEED":
-        _arc(state, _numbers(args), lines, rows, notes, used)
+        _arc(state, _numbers(args, 9), lines, rows, notes, used)
     elif name == "DWELL":
         seconds = _numbers(args)[0]
         p = state.position
@@ -308,6 +311,9 @@ def _command(
         state.surface_speed = len(v) > 1 and v[-1] != 0.0
         _skip(state, name, notes)
     elif name == "USE_LENGTH_UNITS":
+        if args.strip() not in _UNITS:
+            raise _refuse(state, lines, f"millimetres, centimetres or inches (rs274 printed "
+                          f"{state.command})")  # fmt: skip
         state.unit = _UNITS[args.strip()]
     elif name == "SELECT_PLANE":
         state.plane = _PLANES.get(args.strip(), 0)
@@ -408,7 +414,13 @@ def _blocks(
         if state.ended:
             continue
         known = len(notes)
-        _command(state, name, args, lines, rows, notes, used)
+        try:
+            _command(state, name, args, lines, rows, notes, used)
+        except BallScrewInputError:
+            raise
+        except (IndexError, ValueError):  # not the numbers the command takes
+            raise _refuse(state, lines, "finite numbers in the command rs274 printed, "
+                          f"{state.command}") from None  # fmt: skip
         fresh += list(notes)[known:]
         if name in ("PROGRAM_END", "FINISH"):
             # M2 and M30 stop the spindle and coolant and reset the modes: not the
