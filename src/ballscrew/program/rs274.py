@@ -468,7 +468,8 @@ def read_program_rs274(
         Where ``rs274`` runs: subroutine files the program calls by name
         (``o<name> call``) are looked for there. The current folder if None.
     tool_table : str or Path, optional
-        A LinuxCNC tool table (``-t``: ``T1 P1 Z0.511 D0.125`` lines). Without
+        A LinuxCNC tool table (``-t``: ``T1 P1 Z0.511 D0.125`` lines), whose
+        lengths and diameters the standalone ``rs274`` reads in inches. Without
         it ``rs274`` knows its own three sample tools.
     max_blocks : int, optional
         Refuse a program with more blocks of motion or dwell
