@@ -21,8 +21,8 @@ import pytest
 from ballscrew.errors import BallScrewInputError
 from ballscrew.io.machine import load_machine
 from ballscrew.program import Program, read_part_program, read_program, run_program
-from ballscrew.program.gcode import ARC, DWELL, FEED, RAPID
-from ballscrew.program.rs274 import LINE_MARK, _blocks, _marked, _program, read_program_rs274
+from ballscrew.program.gcode import ARC, DWELL, FEED, RAPID, program_from_rows
+from ballscrew.program.rs274 import LINE_MARK, _blocks, _marked, read_program_rs274
 from cli_runner import run
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "linuxcnc"
@@ -44,7 +44,7 @@ def _canon(*commands: str, line: int = 1) -> list[str]:
 
 def _read(*commands: str) -> Program:
     rows, notes, used, _ = _blocks(_canon(*commands), ["line one"], None)
-    return _program(rows, notes, used, "")
+    return program_from_rows(rows, notes, used, "")
 
 
 def test_lines_arcs_dwell_units_and_feed() -> None:

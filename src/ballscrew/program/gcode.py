@@ -44,7 +44,7 @@ import numpy as np
 
 from ..errors import BallScrewInputError, FloatArray
 
-__all__ = ["ARC", "DWELL", "FEED", "RAPID", "Program", "read_program"]
+__all__ = ["ARC", "DWELL", "FEED", "RAPID", "Program", "program_from_rows", "read_program"]
 
 RAPID, FEED, ARC, DWELL = 0, 1, 2, 3
 """Kinds of block."""
@@ -246,6 +246,17 @@ def read_program(text: str, *, arc_tolerance: float = 2e-6, start: Any = (0.0, 0
             raise _error(number, f"{len(rows)} blocks", f"at most {max_blocks} blocks")
     if not ended:
         notes.setdefault("end", "no M2 or M30: the program ends at its last line")
+    return program_from_rows(rows, notes, used, text)
+
+
+def program_from_rows(
+    rows: list[tuple[Any, ...]], notes: dict[str, str], used: set[str], text: str
+) -> Program:
+    """A :class:`Program` from its blocks, one tuple a block (the readers' common end).
+
+    Each row is (kind, line, start, end, feed, centre, plane, sweep, dwell) in the
+    order and units of :class:`Program`'s attributes; ``notes`` one note per key.
+    """
     n = len(rows)
     cols = list(zip(*rows, strict=True)) if rows else [()] * 9
     return Program(

@@ -68,10 +68,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-import numpy as np
-
 from ..errors import BallScrewInputError
-from .gcode import ARC, DWELL, FEED, RAPID, Program, read_program
+from .gcode import ARC, DWELL, FEED, RAPID, Program, program_from_rows, read_program
 
 __all__ = [
     "LINE_MARK",
@@ -543,27 +541,7 @@ def read_program_rs274(
             notes["end"] = "no M2 or M30: the program ends at its last line"
         else:
             raise _refusal(stderr, lines, state.line)
-    return _program(rows, notes, used, text)
-
-
-def _program(rows: list[tuple[Any, ...]], notes: dict[str, str], used: set[str], text: str
-             ) -> Program:  # fmt: skip
-    n = len(rows)
-    cols = list(zip(*rows, strict=True)) if rows else [()] * 9
-    return Program(
-        kind=np.array(cols[0], dtype=int),
-        line=np.array(cols[1], dtype=int),
-        start=np.array(cols[2], dtype=float).reshape(n, 3),
-        end=np.array(cols[3], dtype=float).reshape(n, 3),
-        feed=np.array(cols[4], dtype=float),
-        centre=np.array(cols[5], dtype=float).reshape(n, 3),
-        plane=np.array(cols[6], dtype=int),
-        sweep=np.array(cols[7], dtype=float),
-        dwell=np.array(cols[8], dtype=float),
-        axes=frozenset(used),
-        notes=tuple(notes.values()),
-        text=text,
-    )
+    return program_from_rows(rows, notes, used, text)
 
 
 @dataclass(frozen=True)
