@@ -21,12 +21,21 @@ __all__ = ["program_command"]
 @json_option("Write the results as JSON to FILE ('-' for standard output).")
 @click.option("--csv", "csv_file", default=None,
               help="Write the time series (every axis, units in the header) to FILE.")  # fmt: skip
+@click.option("--reader", type=click.Choice(["auto", "builtin", "rs274"]), default="auto",
+              show_default=True,
+              help="Who reads the program: the built-in reader, LinuxCNC's rs274, or auto "
+              "(the built-in reader; rs274 when it refuses and rs274 is on the PATH).")  # fmt: skip
+@click.option("--tool-table", "tool_table", default=None,
+              type=click.Path(exists=True, dir_okay=False),
+              help="A LinuxCNC tool table for rs274 (lengths, diameters in inches).")  # fmt: skip
 def program_command(
     program_file: str,
     machine_file: str,
     out_dir: str | None,
     json_file: str | None,
     csv_file: str | None,
+    reader: str,
+    tool_table: str | None,
 ) -> None:
     """Energy, torques, heat and reversals of every feed axis over a G-code program.
 
@@ -38,12 +47,17 @@ def program_command(
     from ..io.machine import load_machine
 
     require("program", "ballscrew program")
-    from ..program import run_program
+    from ..program import read_part_program, run_program
     from ..report.outputs import json_document
     from ..report.program import summary_rows, time_series_csv
 
     machine = load_machine(machine_file)
     text = read_input_text("PROGRAM", program_file)
+    read = read_part_program(
+        text, reader=reader, arc_tolerance=machine.arc_tolerance,
+        directory=Path(program_file).parent, tool_table=tool_table, machine=machine,
+    )  # fmt: skip
+    click.echo(f"reader: {read.reason}", err=True)
     err = stdout("-")
     with progress(err) as bar:
         task = bar.add_task("planning the blocks", total=None)
@@ -52,7 +66,7 @@ def program_command(
             label = "planning the blocks" if stage == "plan" else "the axes through the program"
             bar.update(task, description=label, completed=done, total=total)
 
-        result = run_program(machine, text, progress=tell)
+        result = run_program(machine, read.program, progress=tell)
     for note in result.notes:
         click.echo(f"note: {note}", err=True)
     from rich.table import Table

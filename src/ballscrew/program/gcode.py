@@ -94,7 +94,8 @@ import numpy as np
 from ..errors import BallScrewInputError, FloatArray
 
 __all__ = [
-    "ARC", "DWELL", "FEED", "RAPID", "Program", "Skipped", "read_program", "skipped_summary",
+    "ARC", "DWELL", "FEED", "RAPID", "Program", "Skipped", "program_from_rows", "read_program",
+    "skipped_summary",
 ]  # fmt: skip
 
 RAPID, FEED, ARC, DWELL = 0, 1, 2, 3
@@ -949,9 +950,28 @@ def read_program(text: str, *, arc_tolerance: float = 2e-6, start: Any = (0.0, 0
             raise _error(number, f"{len(reader.rows)} blocks", f"at most {max_blocks} blocks")
     if not ended:
         reader.note("end", "no M2 or M30: the program ends at its last line")
-    rows = reader.rows
+    return program_from_rows(reader.rows, reader.notes, reader.used, text, reader.skipped)
+
+
+def program_from_rows(
+    rows: list[tuple[Any, ...]], notes: dict[str, str], used: set[str], text: str,
+    skipped: Sequence[Skipped] = (),
+) -> Program:  # fmt: skip
+    """A :class:`Program` from its blocks, one tuple a block (the readers' common end).
+
+    Each row is (kind, line, start, end, feed, centre, plane, sweep, dwell) in the
+    order and units of :class:`Program`'s attributes, and optionally the blending
+    tolerance and the rotary axes at the start and end (the built-in reader's);
+    ``notes`` one note per key, the words ``skipped`` told first in one note.
+    """
     n = len(rows)
-    cols = list(zip(*rows, strict=True)) if rows else [()] * 12
+    width = len(rows[0]) if rows else 9
+    cols = list(zip(*rows, strict=True)) if rows else [()] * width
+    more: dict[str, Any] = {}
+    if width == 12:
+        more = {"tolerance": np.array(cols[9], dtype=float),
+                "rotary_start": np.array(cols[10], dtype=float).reshape(n, 3),
+                "rotary_end": np.array(cols[11], dtype=float).reshape(n, 3)}  # fmt: skip
     return Program(
         kind=np.array(cols[0], dtype=int),
         line=np.array(cols[1], dtype=int),
@@ -962,12 +982,9 @@ def read_program(text: str, *, arc_tolerance: float = 2e-6, start: Any = (0.0, 0
         plane=np.array(cols[6], dtype=int),
         sweep=np.array(cols[7], dtype=float),
         dwell=np.array(cols[8], dtype=float),
-        axes=frozenset(reader.used),
-        notes=(skipped_summary(reader.skipped),) * bool(reader.skipped)
-        + tuple(reader.notes.values()),
+        axes=frozenset(used),
+        notes=(skipped_summary(skipped),) * bool(skipped) + tuple(notes.values()),
         text=text,
-        tolerance=np.array(cols[9], dtype=float),
-        skipped=tuple(reader.skipped),
-        rotary_start=np.array(cols[10], dtype=float).reshape(n, 3),
-        rotary_end=np.array(cols[11], dtype=float).reshape(n, 3),
+        skipped=tuple(skipped),
+        **more,
     )
