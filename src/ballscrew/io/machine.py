@@ -88,6 +88,26 @@ class MachineSection(BaseModel):
         default="5 ms", description="longest time between two samples of the motion"
     )
     model: str = Field(default="complete", description="friction model of every axis")
+    drive_efficiency: Value | None = Field(
+        default=None, description="the inverter's efficiency, motoring and regenerating"
+    )
+    drive_standby_loss: Value | None = Field(
+        default=None, description="the inverter's loss at no current (control, fans), per axis"
+    )
+    drive_loss_per_ampere: Value | None = Field(
+        default=None, description="the inverter's loss per ampere rms of motor current (V)"
+    )
+    drive_loss_resistance: Value | None = Field(
+        default=None, description="the inverter's loss per ampere squared (ohm)"
+    )
+    dc_link: str | Assumed | None = Field(
+        default=None,
+        description="what the DC link does with regenerated energy: regenerative, resistor, "
+        "storage",
+    )
+    dc_link_storage: Value | None = Field(
+        default=None, description="usable energy of the DC link's storage (dc_link = storage)"
+    )
 
 
 class AxisEntry(BaseModel):
@@ -174,6 +194,11 @@ class Machine:
         What was left out (rotary axes).
     text : str
         The TOML text read.
+    drive : dict
+        The drives' loss and DC link, SI, the keys given: ``efficiency`` [-] or the
+        loss model's ``standby`` [W], ``per_ampere`` [V], ``resistance`` [Ω];
+        ``dc_link`` (``"regenerative"``, ``"resistor"``, ``"storage"``) and
+        ``storage`` [J] (:class:`ballscrew.axis.drive.DriveSpec`).
     """
 
     title: str
@@ -186,6 +211,55 @@ class Machine:
     model: str
     notes: tuple[str, ...] = ()
     text: str = field(default="", repr=False)
+    drive: dict[str, Any] = field(default_factory=dict)
+
+
+DC_LINKS = ("regenerative", "resistor", "storage")
+"""The choices of ``[machine] dc_link`` (as :data:`ballscrew.axis.drive.DC_LINKS`)."""
+
+
+def _drive(m: MachineSection) -> dict[str, Any]:
+    """``[machine]``'s drive keys in SI (:attr:`Machine.drive`)."""
+    out: dict[str, Any] = {}
+    model = (("standby", "drive_standby_loss", m.drive_standby_loss, "W"),
+             ("per_ampere", "drive_loss_per_ampere", m.drive_loss_per_ampere, "V"),
+             ("resistance", "drive_loss_resistance", m.drive_loss_resistance, "ohm"))  # fmt: skip
+    for key, name, raw, unit in model:
+        if raw is None:
+            continue
+        out[key] = _si(f"machine.{name}", raw, unit)
+        if not (math.isfinite(out[key]) and out[key] >= 0.0):
+            raise BallScrewInputError(f"machine.{name}", _typed(raw), f"a value >= 0 ({unit})")
+    if m.drive_efficiency is not None:
+        if out:
+            raise BallScrewInputError(
+                "machine.drive_efficiency", _typed(m.drive_efficiency),
+                "either an efficiency or the loss model (drive_standby_loss, "
+                "drive_loss_per_ampere, drive_loss_resistance), not both",
+            )  # fmt: skip
+        eta = _si("machine.drive_efficiency", m.drive_efficiency, "")
+        if not (math.isfinite(eta) and 0.5 <= eta <= 1.0):
+            raise BallScrewInputError("machine.drive_efficiency", _typed(m.drive_efficiency),
+                                      "a share from 50 to 100 % (servo drives: 95 to 98 %)")
+        out["efficiency"] = eta
+    link = None if m.dc_link is None else _typed(m.dc_link)
+    if link is not None:
+        if link not in DC_LINKS:
+            raise BallScrewInputError("machine.dc_link", link, f"one of {', '.join(DC_LINKS)}")
+        out["dc_link"] = link
+    if (link == "storage") != (m.dc_link_storage is not None):
+        raise BallScrewInputError(
+            "machine.dc_link_storage", "(missing)" if m.dc_link_storage is None
+            else _typed(m.dc_link_storage),
+            "the storage's usable energy (e.g. '300 J') with dc_link = \"storage\", and only "
+            "with it",
+        )  # fmt: skip
+    if m.dc_link_storage is not None:
+        out["storage"] = _si("machine.dc_link_storage", m.dc_link_storage, "J")
+        if not (math.isfinite(out["storage"]) and out["storage"] >= 0.0):
+            raise BallScrewInputError("machine.dc_link_storage", _typed(m.dc_link_storage),
+                                      "an energy >= 0 J")  # fmt: skip
+    return out
 
 
 def _si(name: str, raw: Any, unit: str) -> float:
@@ -341,6 +415,7 @@ def parse_machine(
         model=m.model,
         notes=tuple(notes),
         text=text,
+        drive=_drive(m),
     )
 
 
