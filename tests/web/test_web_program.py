@@ -35,6 +35,7 @@ def test_the_bundled_machine_is_the_example_machine() -> None:
         )  # fmt: skip
         assert b.case.screw == a.case.screw and b.case.axis == a.case.axis
         assert b.case.motor == a.case.motor and b.case.thermal == a.case.thermal
+    assert bundled.drive == example.drive
 
 
 def test_the_api_gives_the_librarys_numbers(client: TestClient) -> None:
