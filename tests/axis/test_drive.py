@@ -62,9 +62,9 @@ def test_terminal_resistance_is_twice_the_phase_resistance() -> None:
 
 
 def test_a_resistance_without_its_kind_is_refused() -> None:
-    with pytest.raises(BallScrewInputError, match="motor.resistance_kind"):
+    with pytest.raises(BallScrewInputError, match=r"motor\.resistance_kind"):
         parse_case(CASE + 'winding_resistance = "1 ohm"')
-    with pytest.raises(BallScrewInputError, match="motor.iron_loss"):
+    with pytest.raises(BallScrewInputError, match=r"motor\.iron_loss"):
         parse_case(CASE + 'iron_loss = "3 mm"')
     with pytest.raises(BallScrewInputError, match="rated_speed"):
         parse_case(CASE.replace('rated_speed = "3000 rpm"', 'iron_loss = "40 W"'))
@@ -162,11 +162,11 @@ def test_the_machine_files_drive_keys_are_checked() -> None:
     text = (EXAMPLES / "machine_vmc.toml").read_text("utf-8")
     machine = parse_machine(text, folder=EXAMPLES)
     assert machine.drive["dc_link"] == "resistor" and machine.drive["per_ampere"] == 6.0
-    with pytest.raises(BallScrewInputError, match="machine.dc_link"):
+    with pytest.raises(BallScrewInputError, match=r"machine\.dc_link"):
         parse_machine(text.replace('value = "resistor"', 'value = "flywheel"'), folder=EXAMPLES)
-    with pytest.raises(BallScrewInputError, match="machine.dc_link_storage"):
+    with pytest.raises(BallScrewInputError, match=r"machine\.dc_link_storage"):
         parse_machine(text.replace('value = "resistor"', 'value = "storage"'), folder=EXAMPLES)
-    with pytest.raises(BallScrewInputError, match="machine.drive_efficiency"):
+    with pytest.raises(BallScrewInputError, match=r"machine\.drive_efficiency"):
         parse_machine(text.replace('model = "complete"', 'model = "complete"\n'
                                    'drive_efficiency = "97 %"'), folder=EXAMPLES)  # fmt: skip
 
@@ -211,3 +211,29 @@ def test_a_vertical_axis_standing_in_a_dwell_draws_its_holding_energy() -> None:
     # With an ideal drive, the grid pays exactly that copper loss for the longer stand.
     assert longer.grid is not None and shorter.grid is not None
     assert longer.grid - shorter.grid == pytest.approx(expected, rel=1e-9)
+
+
+def test_a_motor_tables_electrical_columns_reach_the_candidates_case() -> None:
+    from ballscrew.io.motors import parse_motors
+    from ballscrew.select.pool import case_text
+
+    header = ("name, rated_torque [N*m], peak_torque [N*m], max_speed [1/min], "
+              "rotor_inertia [kg*cm^2], torque_constant [N*m/A], winding_resistance [ohm], "
+              "resistance_kind, iron_loss [W]")  # fmt: skip
+    (motor,) = parse_motors(f"{header}\nM1, 7.7, 23, 3000, 18, 1.8, 2.4, terminal, 45\n")
+    assert (motor.torque_constant, motor.winding_resistance, motor.resistance_kind,
+            motor.iron_loss) == (1.8, 2.4, "terminal", "45 W")  # fmt: skip
+    with pytest.raises(BallScrewInputError, match="resistance_kind"):
+        parse_motors(f"{header.replace(', resistance_kind', '')}\nM1, 7.7, 23, 3000, 18, 1.8, "
+                     "2.4, 45\n")  # fmt: skip
+    with pytest.raises(BallScrewInputError, match="phase or terminal"):
+        parse_motors(f"{header}\nM1, 7.7, 23, 3000, 18, 1.8, 2.4, star, 45\n")
+    from ballscrew.io.designation import catalog_screws
+
+    text = (EXAMPLES / "xy_table_32x10.toml").read_text("utf-8")
+    screw = next(r for r in catalog_screws() if r.nut == "double")
+    case = parse_case(case_text(text, screw, "double", 0.06, None, motor=motor))
+    constants = MotorConstants.from_case(case.motor)
+    assert constants.torque_constant == 1.8 and constants.phase_resistance == 1.2
+    # The candidate's rated speed is written to 8 digits (314.15927 rad/s): 1e-7.
+    assert constants.iron_loss_torque == pytest.approx(45.0 / (3000 * math.pi / 30), rel=1e-7)

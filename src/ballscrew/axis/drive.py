@@ -294,9 +294,7 @@ def _steps(time: FloatArray, power: FloatArray) -> tuple[FloatArray, FloatArray]
     return out_pos, out_neg
 
 
-def dc_link_flows(
-    time: Any, power: Any, dc_link: str, storage: float | None = None
-) -> DcLinkFlows:
+def dc_link_flows(time: Any, power: Any, dc_link: str, storage: float | None = None) -> DcLinkFlows:
     r"""The DC link's energies over a series of its power ``power`` [W] at ``time`` [s].
 
     Per step :math:`k`, the energies drawn :math:`e^+_k` and regenerated

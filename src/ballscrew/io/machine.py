@@ -239,8 +239,11 @@ def _drive(m: MachineSection) -> dict[str, Any]:
             )  # fmt: skip
         eta = _si("machine.drive_efficiency", m.drive_efficiency, "")
         if not (math.isfinite(eta) and 0.5 <= eta <= 1.0):
-            raise BallScrewInputError("machine.drive_efficiency", _typed(m.drive_efficiency),
-                                      "a share from 50 to 100 % (servo drives: 95 to 98 %)")
+            raise BallScrewInputError(
+                "machine.drive_efficiency",
+                _typed(m.drive_efficiency),
+                "a share from 50 to 100 % (servo drives: 95 to 98 %)",
+            )
         out["efficiency"] = eta
     link = None if m.dc_link is None else _typed(m.dc_link)
     if link is not None:

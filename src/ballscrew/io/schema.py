@@ -382,10 +382,11 @@ class AxisSection(BaseModel):
 
 
 class MotorSection(BaseModel):
-    """``[motor]``: the servo motor's ratings, for ``ballscrew check``, and its electrical
-    constants, for the copper loss of ``ballscrew program`` (:mod:`ballscrew.axis.drive`).
+    """``[motor]``: the servo motor's ratings and its electrical constants.
 
-    Its rotor inertia and the gear are ``[axis]`` motor_inertia and gear_ratio.
+    The ratings are for ``ballscrew check``; the constants give the copper loss of
+    ``ballscrew program`` (:mod:`ballscrew.axis.drive`). Its rotor inertia and the gear
+    are ``[axis]`` motor_inertia and gear_ratio.
     """
 
     model_config = ConfigDict(extra="forbid")

@@ -195,8 +195,10 @@ def summary_rows(r: ProgramResult) -> list[list[str]]:
 
 
 def drive_rows(r: ProgramResult) -> list[list[str]]:
-    """The motor's and drive's losses and the energy from the grid, a row each ("-": not
-    computed, the notes say why)."""
+    """The motor's and drive's losses and the energy from the grid, a row each.
+
+    "-": not computed; the report's "left out" list says why.
+    """
     link = next((a.drive.dc_link for a in r.axes.values()
                  if a.drive is not None and a.drive.dc_link is not None), None)  # fmt: skip
     mode = "" if link is None else link.mode
