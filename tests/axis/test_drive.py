@@ -237,3 +237,22 @@ def test_a_motor_tables_electrical_columns_reach_the_candidates_case() -> None:
     assert constants.torque_constant == 1.8 and constants.phase_resistance == 1.2
     # The candidate's rated speed is written to 8 digits (314.15927 rad/s): 1e-7.
     assert constants.iron_loss_torque == pytest.approx(45.0 / (3000 * math.pi / 30), rel=1e-7)
+
+
+def test_energy_books_the_holding_current_of_a_vertical_axis_in_its_dwells() -> None:
+    # `ballscrew energy`'s move dwells at both ends of its stroke: 1 s more of dwell each is
+    # 2 s more of holding the 120 kg slide, 3 R_ph (m g l / 2 pi K_t)^2 * 2 s.
+    from ballscrew.axis.duty import profile_from_move, run_energy
+    from ballscrew.io.case import load_case
+
+    case = load_case(EXAMPLES / "vertical_32x5.toml")
+    motor = MotorConstants.from_case(case.motor)
+    assert motor.torque_constant is not None and motor.phase_resistance is not None
+    copper = {}
+    for dwell in (0.5, 1.5):
+        move = {"stroke": 0.3, "feed": 0.2, "acceleration": 3.0, "dwell": dwell}
+        run = run_energy(case, profile_from_move(move, 1), ["complete"], move=move)
+        copper[dwell] = run.as_dict()["copper_loss_J"]
+    hold = case.axis["moving_mass"] * STANDARD_GRAVITY * case.screw.lead / (2.0 * math.pi)
+    expected = 3.0 * motor.phase_resistance * (hold / motor.torque_constant) ** 2 * 2.0
+    assert copper[1.5] - copper[0.5] == pytest.approx(expected, rel=1e-9)

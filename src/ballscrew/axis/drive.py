@@ -415,6 +415,12 @@ class DriveSpec:
         """Whether the drive's loss is the model :math:`P_0 + k|I| + rI^2`."""
         return any(v is not None for v in (self.standby, self.per_ampere, self.resistance))
 
+    def as_dict(self) -> dict[str, Any]:
+        """The settings given, in the JSON document's units (None: not given)."""
+        return {"efficiency": self.efficiency, "standby_loss_W": self.standby,
+                "loss_per_ampere_V": self.per_ampere, "loss_resistance_ohm": self.resistance,
+                "dc_link": self.dc_link, "dc_link_storage_J": self.storage}  # fmt: skip
+
     @classmethod
     def from_mapping(cls, drive: Mapping[str, Any]) -> DriveSpec:
         """From :attr:`ballscrew.io.machine.Machine.drive` (keys as the attributes)."""
@@ -519,8 +525,7 @@ def drive_energy(
     p_fe = iron_loss_power(0.0 if drag is None else drag, w)
     iron = None if drag is None else _trapezoid(p_fe, t)
     if drag is None:
-        left.append(f"motor iron and friction loss: not given ({name} has no motor.iron_loss), "
-                    "left out of the energy from the grid")  # fmt: skip
+        left.append(f"motor iron and friction loss: left out, {name} has no motor.iron_loss")
     current = p_cu = None
     if k_t is None:
         left.append(f"copper loss: not computed, {name} has no motor.torque_constant")

@@ -280,6 +280,7 @@ def _inputs(machine: Machine, program: Program) -> dict[str, Any]:
         "arc_tolerance_m": machine.arc_tolerance,
         "sample_time_s": machine.sample_time,
         "ambient_C": machine.ambient,
+        "drive": DriveSpec.from_mapping(machine.drive).as_dict(),
         "axes": {
             k: {"case": a.case.title, "max_feed_m_per_s": a.max_feed,
                 "max_acceleration_m_per_s2": a.max_acceleration, "max_jerk_m_per_s3": a.max_jerk,
