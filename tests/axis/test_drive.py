@@ -256,3 +256,43 @@ def test_energy_books_the_holding_current_of_a_vertical_axis_in_its_dwells() -> 
     hold = case.axis["moving_mass"] * STANDARD_GRAVITY * case.screw.lead / (2.0 * math.pi)
     expected = 3.0 * motor.phase_resistance * (hold / motor.torque_constant) ** 2 * 2.0
     assert copper[1.5] - copper[0.5] == pytest.approx(expected, rel=1e-9)
+
+
+def test_program_json_gives_each_axis_its_losses_and_says_what_is_left_out(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    pytest.importorskip("ruckig")
+    import json
+
+    from cli_runner import run
+
+    nc = tmp_path / "part.nc"
+    nc.write_text("G0 X100 Y100 Z-10\nG1 X200 F2000\nG4 P1\nG1 Y200\nM30\n", encoding="utf-8")
+    code, out, err = run(["program", str(nc), "--machine", str(EXAMPLES / "machine_vmc.toml"),
+                          "--json", str(tmp_path / "r.json")], capsys)  # fmt: skip
+    assert code == 0, err
+    assert "copper loss [J]" in out and "energy from the grid [J]" in out and "from the grid" in out
+    doc = json.loads((tmp_path / "r.json").read_text("utf-8"))
+    for a in doc["axes"].values():
+        assert a["copper_loss_J"] > 0 and a["drive_loss_J"] > 0 and a["grid_energy_J"] > 0
+        assert a["left_out"] == []
+    # The example's drive burns what it regenerates: grid = shaft + losses + burnt, summed.
+    t = doc["machine_totals"]
+    shaft = t["supplied_energy_J"] - t["regenerated_energy_J"]
+    losses = t["copper_loss_J"] + t["motor_iron_loss_J"] + t["drive_loss_J"]
+    assert t["grid_energy_J"] == pytest.approx(shaft + losses + t["burnt_J"], rel=1e-9)
+    # A machine file without the drive, on a case without K_t: None, and said.
+    text = (EXAMPLES / "machine_vmc.toml").read_text("utf-8")
+    text = "\n".join(ln for ln in text.splitlines()
+                     if not ln.startswith(("drive_", "dc_link", "torque_constant")))  # fmt: skip
+    (tmp_path / "vertical_32x5.toml").write_text(
+        "\n".join(ln for ln in (EXAMPLES / "vertical_32x5.toml").read_text("utf-8").splitlines()
+                  if not ln.startswith("torque_constant")), encoding="utf-8")  # fmt: skip
+    (tmp_path / "m.toml").write_text(text, encoding="utf-8")
+    code, out, err = run(["program", str(nc), "--machine", str(tmp_path / "m.toml"),
+                          "--json", str(tmp_path / "r2.json")], capsys)  # fmt: skip
+    assert code == 0, err
+    assert "left out: copper loss: not computed, axes.Z has no motor.torque_constant" in err
+    doc = json.loads((tmp_path / "r2.json").read_text("utf-8"))
+    assert doc["axes"]["X"]["copper_loss_J"] is None and doc["axes"]["X"]["grid_energy_J"] is None
+    assert any("machine.dc_link" in n for n in doc["axes"]["X"]["left_out"])
