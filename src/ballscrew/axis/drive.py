@@ -53,10 +53,16 @@ with one supply module can be lower by that).
 
 References
 ----------
-ISO 14955-1:2017, Machine tools -- Environmental evaluation of machine tools --
-Part 1: Design methodology for energy-efficient machine tools.
-IEC 60034-2-3:2020, Rotating electrical machines -- Specific test methods for
-determining losses and efficiency of converter-fed AC motors.
+.. [1] ISO 14955-1:2017, Machine tools -- Environmental evaluation of machine
+   tools -- Part 1: Design methodology for energy-efficient machine tools.
+.. [2] IEC 60034-2-3:2020, Rotating electrical machines -- Part 2-3: Specific
+   test methods for determining losses and efficiency of converter-fed AC motors.
+.. [3] J. R. Hendershot, T. J. E. Miller, *Design of Brushless Permanent-Magnet
+   Machines*, Motor Design Books, 2010 (torque constant, phase and
+   line-to-line resistance, copper loss).
+.. [4] D. Graovac, M. Pürschel, "IGBT power losses calculation using the
+   data-sheet parameters", Infineon application note, 2009 (conduction loss
+   of a forward voltage and a resistance, switching loss per ampere).
 """
 
 from __future__ import annotations
@@ -105,7 +111,8 @@ def phase_resistance(resistance: Any, kind: str) -> FloatArray:
     :math:`R_{tt} = 2R_{ph}`; a delta winding's terminal resistance
     :math:`2R_\Delta/3` gives the star equivalent :math:`R_\Delta/3 = R_{tt}/2`
     as well, so the copper loss :math:`3R_{ph}I^2` of the line current
-    :math:`I` is :math:`1.5R_{tt}I^2` for either connection.
+    :math:`I` is :math:`1.5R_{tt}I^2` for either connection (Hendershot and
+    Miller, module references).
 
     Parameters
     ----------
@@ -184,8 +191,9 @@ def copper_loss(current: Any, resistance: Any) -> FloatArray:
 
     ``current`` is the phase current [A rms], ``resistance`` the phase
     resistance :math:`R_{ph}` [Ω] (:func:`phase_resistance` converts a terminal
-    value). The resistance is the one given (data sheets: at 20 °C); a warm
-    winding's is higher by 0.39 %/K (copper), which is not added.
+    value); the stator winding loss of IEC 60034-2-3's loss separation. The
+    resistance is the one given (data sheets: at 20 °C); a warm winding's is
+    higher by 0.39 %/K (copper), which is not added.
 
     Examples
     --------
@@ -245,7 +253,9 @@ def inverter_loss(
     ``current`` is the motor's phase current [A rms]; :math:`P_0` [W] the
     standby loss (control electronics, fans: drawn at rest too), :math:`k`
     [W/A = V] the switches' forward voltage and switching loss per ampere,
-    :math:`r` [Ω] their conduction resistance (all phases together).
+    :math:`r` [Ω] their conduction resistance (all phases together): the
+    data-sheet loss model of Graovac and Pürschel (module references), its
+    constants lumped over the phases and a sine period.
 
     Examples
     --------
