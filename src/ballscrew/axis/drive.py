@@ -55,7 +55,7 @@ References
 ----------
 .. [1] ISO 14955-1:2017, Machine tools -- Environmental evaluation of machine
    tools -- Part 1: Design methodology for energy-efficient machine tools.
-.. [2] IEC 60034-2-3:2020, Rotating electrical machines -- Part 2-3: Specific
+.. [2] IEC 60034-2-3:2024, Rotating electrical machines -- Part 2-3: Specific
    test methods for determining losses and efficiency of converter-fed AC motors.
 .. [3] J. R. Hendershot, T. J. E. Miller, *Design of Brushless Permanent-Magnet
    Machines*, Motor Design Books, 2010 (torque constant, phase and
