@@ -296,3 +296,29 @@ def test_program_json_gives_each_axis_its_losses_and_says_what_is_left_out(
     doc = json.loads((tmp_path / "r2.json").read_text("utf-8"))
     assert doc["axes"]["X"]["copper_loss_J"] is None and doc["axes"]["X"]["grid_energy_J"] is None
     assert any("machine.dc_link" in n for n in doc["axes"]["X"]["left_out"])
+
+
+@pytest.mark.parametrize("shared", [False, True])
+def test_a_shared_dc_link_passes_one_axis_braking_to_another_motoring(shared: bool) -> None:
+    # Axis A drives 1 N*m up to 200 rad/s in 2 s (it draws int 100 t dt = 200 J) while a load
+    # drives axis B the same way against its 1 N*m (it regenerates 200 J); ideal motors and
+    # drives. Each on its own link with a resistor: 200 J drawn and 200 J burnt. On a shared
+    # link the two cancel at every instant: nothing drawn, nothing burnt.
+    from ballscrew.axis.drive import drive_totals
+
+    t = np.linspace(0.0, 2.0, 201)
+    w = 100.0 * t
+    motor, spec = (
+        MotorConstants(1.0, phase_resistance=0.0),
+        DriveSpec(efficiency=1.0, dc_link="resistor", shared=shared),
+    )
+    a = drive_energy(t, np.ones_like(t), w, motor, spec)
+    b = drive_energy(t, -np.ones_like(t), w, motor, spec)
+    totals = drive_totals([a, b])
+    assert totals["dc_link_shared"] is shared
+    # The trapezoid is exact for a power linear in time.
+    if shared:
+        assert totals["grid_energy_J"] == 0.0 and totals["burnt_J"] == 0.0
+    else:
+        assert totals["grid_energy_J"] == pytest.approx(200.0, rel=1e-12)
+        assert totals["burnt_J"] == pytest.approx(200.0, rel=1e-12)

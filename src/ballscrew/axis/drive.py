@@ -411,6 +411,11 @@ class DriveSpec:
         One of :data:`DC_LINKS`.
     storage : float or None
         The storage's usable energy [J] (``dc_link = "storage"``).
+    shared : bool
+        Whether the axes share one DC link (one supply module): the machine's
+        totals then net the axes' DC powers at each instant before the link's
+        choice (:func:`drive_totals`); each axis's own figures stay those of
+        the axis alone.
     """
 
     efficiency: float | None = None
@@ -419,6 +424,7 @@ class DriveSpec:
     resistance: float | None = None
     dc_link: str | None = None
     storage: float | None = None
+    shared: bool = False
 
     @property
     def loss_model(self) -> bool:
@@ -429,12 +435,14 @@ class DriveSpec:
         """The settings given, in the JSON document's units (None: not given)."""
         return {"efficiency": self.efficiency, "standby_loss_W": self.standby,
                 "loss_per_ampere_V": self.per_ampere, "loss_resistance_ohm": self.resistance,
-                "dc_link": self.dc_link, "dc_link_storage_J": self.storage}  # fmt: skip
+                "dc_link": self.dc_link, "dc_link_storage_J": self.storage,
+                "dc_link_shared": self.shared}  # fmt: skip
 
     @classmethod
     def from_mapping(cls, drive: Mapping[str, Any]) -> DriveSpec:
         """From :attr:`ballscrew.io.machine.Machine.drive` (keys as the attributes)."""
-        return cls(**{k: drive.get(k) for k in cls.__dataclass_fields__})
+        fields = {k: drive[k] for k in cls.__dataclass_fields__ if k in drive}
+        return cls(**fields)
 
 
 @dataclass(frozen=True)
@@ -458,6 +466,10 @@ class DriveEnergy:
     """The phase current at each sample [A rms] (None without K_t)."""
     dc_power: FloatArray | None = field(default=None, repr=False)
     """The DC link power at each sample [W] (None where a loss is not computed)."""
+    time: FloatArray | None = field(default=None, repr=False)
+    """The sample times [s]."""
+    spec: DriveSpec | None = field(default=None, repr=False)
+    """The drive it was computed with."""
 
     @property
     def grid(self) -> float | None:
@@ -570,14 +582,19 @@ def drive_energy(
     else:
         p_dc = shaft + p_fe + p_cu + p_inv
         link = dc_link_flows(t, p_dc, drive.dc_link, drive.storage)
-    return DriveEnergy(supplied, returned, copper, iron, loss, link, tuple(left), current, p_dc)
+    return DriveEnergy(supplied, returned, copper, iron, loss, link, tuple(left), current, p_dc,
+                       t, drive)  # fmt: skip
 
 
 def drive_totals(drives: list[DriveEnergy]) -> dict[str, Any]:
-    """The machine's sums of its axes' :meth:`DriveEnergy.as_dict` figures (J).
+    r"""The machine's sums of its axes' :meth:`DriveEnergy.as_dict` figures (J).
 
     A figure any axis lacks is None for the machine (its ``left_out`` says why);
-    ``left_out`` is every axis's, each once.
+    ``left_out`` is every axis's, each once. With a shared DC link
+    (:attr:`DriveSpec.shared`, the axes on one time base), the DC link's figures
+    are those of the summed DC power, :math:`\sum_{axes} P_{dc}(t)`, through the
+    link's choice: what one axis regenerates while another motors is used there,
+    and only the rest is returned, burnt or stored; ``dc_link_shared`` says so.
     """
     out: dict[str, Any] = {}
     parts = [d.as_dict() for d in drives]
@@ -587,4 +604,19 @@ def drive_totals(drives: list[DriveEnergy]) -> dict[str, Any]:
         values = [p[key] for p in parts]
         out[key] = None if any(v is None for v in values) else float(sum(values))
     out["left_out"] = list(dict.fromkeys(n for p in parts for n in p["left_out"]))
+    spec = drives[0].spec if drives else None
+    shared = spec is not None and spec.shared and spec.dc_link is not None
+    powers = [d.dc_power for d in drives]
+    out["dc_link_shared"] = shared
+    if shared and all(p is not None for p in powers):
+        assert spec is not None and spec.dc_link is not None and drives[0].time is not None
+        net = np.sum(np.stack([p for p in powers if p is not None]), axis=0)
+        f = dc_link_flows(drives[0].time, net, spec.dc_link, spec.storage)
+        out |= {
+            "grid_energy_J": f.grid,
+            "dc_link_regenerated_J": f.regenerated,
+            "returned_to_grid_J": f.returned,
+            "burnt_J": f.burnt,
+            "stored_J": f.stored,
+        }
     return out

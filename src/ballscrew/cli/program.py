@@ -78,7 +78,9 @@ def program_command(
     grid = totals["grid_energy_J"]
     out.print(
         "machine: energy from the grid not computed (see the notes)" if grid is None else
-        f"machine: {num(grid)} J from the grid for the feed axes: {num(totals['copper_loss_J'])} "
+        f"machine: {num(grid)} J from the grid for the feed axes"
+        f"{' (one shared DC link)' if totals['dc_link_shared'] else ''}: "
+        f"{num(totals['copper_loss_J'])} "
         f"J copper loss, {num(totals['motor_iron_loss_J'] or 0.0)} J motor iron loss, "
         f"{num(totals['drive_loss_J'])} J drive loss, {num(totals['burnt_J'])} J burnt, "
         f"{num(totals['returned_to_grid_J'])} J returned"

@@ -108,6 +108,9 @@ class MachineSection(BaseModel):
     dc_link_storage: Value | None = Field(
         default=None, description="usable energy of the DC link's storage (dc_link = storage)"
     )
+    dc_link_shared: bool = Field(
+        default=False, description="whether the axes share one DC link (one supply module)"
+    )
 
 
 class AxisEntry(BaseModel):
@@ -198,7 +201,7 @@ class Machine:
         The drives' loss and DC link, SI, the keys given: ``efficiency`` [-] or the
         loss model's ``standby`` [W], ``per_ampere`` [V], ``resistance`` [Ω];
         ``dc_link`` (``"regenerative"``, ``"resistor"``, ``"storage"``) and
-        ``storage`` [J] (:class:`ballscrew.axis.drive.DriveSpec`).
+        ``storage`` [J], ``shared`` (:class:`ballscrew.axis.drive.DriveSpec`).
     """
 
     title: str
@@ -257,6 +260,12 @@ def _drive(m: MachineSection) -> dict[str, Any]:
             "the storage's usable energy (e.g. '300 J') with dc_link = \"storage\", and only "
             "with it",
         )  # fmt: skip
+    if m.dc_link_shared:
+        if link is None:
+            raise BallScrewInputError(
+                "machine.dc_link_shared", "true", "given with machine.dc_link, the link they share"
+            )
+        out["shared"] = True
     if m.dc_link_storage is not None:
         out["storage"] = _si("machine.dc_link_storage", m.dc_link_storage, "J")
         if not (math.isfinite(out["storage"]) and out["storage"] >= 0.0):
