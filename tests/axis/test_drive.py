@@ -322,3 +322,13 @@ def test_a_shared_dc_link_passes_one_axis_braking_to_another_motoring(shared: bo
     else:
         assert totals["grid_energy_J"] == pytest.approx(200.0, rel=1e-12)
         assert totals["burnt_J"] == pytest.approx(200.0, rel=1e-12)
+
+
+def test_the_motors_drag_adds_no_current_at_rest() -> None:
+    # A planner's rounding leaves -3e-15 rad/s where the axis stands: no direction of motion,
+    # so the iron drag (0.2 N*m) adds nothing to the zero torque there, and no copper loss.
+    motor = MotorConstants(1.0, phase_resistance=1.0, iron_loss_torque=0.2)
+    e = drive_energy([0.0, 5.0], [0.0, 0.0], [-3e-15, 3e-15], motor, DriveSpec(1.0))
+    assert e.copper_loss == 0.0
+    moving = drive_energy([0.0, 5.0], [0.0, 0.0], [10.0, 10.0], motor, DriveSpec(1.0))
+    assert moving.copper_loss == pytest.approx(3.0 * 0.2**2 * 5.0, rel=1e-14)  # 3 R (T_fe/K_t)^2 t

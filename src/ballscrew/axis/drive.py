@@ -98,6 +98,10 @@ DC_LINKS = ("regenerative", "resistor", "storage")
 """What the DC link does with the energy the axes regenerate: return it to the grid,
 burn it in a braking resistor, or store it (a capacitor) for the next motoring."""
 
+AT_REST = 1e-6
+"""Motor speed [rad/s] below which the motor stands: its iron and friction drag adds no
+torque there (a planner's rounding, 1e-15 rad/s, is no direction of motion)."""
+
 RESISTANCE_KINDS = ("phase", "terminal")
 """How a winding resistance is given: one phase of the star, or between two terminals."""
 
@@ -552,7 +556,8 @@ def drive_energy(
     if k_t is None:
         left.append(f"copper loss: not computed, {name} has no motor.torque_constant")
     else:
-        t_em = torque_ + np.sign(w) * (0.0 if drag is None else drag)
+        moving = np.where(np.abs(w) > AT_REST, np.sign(w), 0.0)
+        t_em = torque_ + moving * (0.0 if drag is None else drag)
         k = torque_constant_at(w, k_t, motor.torque_constant_at_rated_speed, motor.rated_speed)
         current = motor_current(t_em, k)
         if motor.phase_resistance is None:
