@@ -11,6 +11,8 @@ table), the axis's limits and the process force it feels during feed moves::
     rapid_feed = "30 m/min"
     path_tolerance = "0.02 mm"
     ambient = "20 degC"
+    drive_efficiency = "96 %"             # or drive_standby_loss, drive_loss_per_ampere, ...
+    dc_link = "resistor"                  # or "regenerative", "storage" (dc_link_storage)
 
     [axes.X]
     case = "x_axis.toml"                  # or an inline [axes.X.case] table
@@ -19,6 +21,11 @@ table), the axis's limits and the process force it feels during feed moves::
     max_jerk = "60 m/s^3"
     travel = ["0 mm", "800 mm"]
     process_force = "600 N"              # against the motion, in G1/G2/G3 moves
+
+The drive keys (:attr:`Machine.drive`) give the loss of every axis's inverter and
+what the DC link does with regenerated energy (:mod:`ballscrew.axis.drive`); without
+them ``ballscrew program`` leaves the drive loss and the energy from the grid out and
+says so.
 
 Rotary axes (``A``, ``B``, ``C``) may be listed so that the file describes the
 whole machine; they are left out of the computation, and :attr:`Machine.notes`
