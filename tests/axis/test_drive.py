@@ -66,6 +66,9 @@ def test_a_resistance_without_its_kind_is_refused() -> None:
         parse_case(CASE + 'winding_resistance = "1 ohm"')
     with pytest.raises(BallScrewInputError, match=r"motor\.iron_loss"):
         parse_case(CASE + 'iron_loss = "3 mm"')
+    with pytest.raises(BallScrewInputError, match="a torque constant") as typed:
+        parse_case(CASE + 'torque_constant = "1.8 Nm"')  # the amperes forgotten
+    assert typed.value.field == "motor.torque_constant"
     with pytest.raises(BallScrewInputError, match="rated_speed"):
         parse_case(CASE.replace('rated_speed = "3000 rpm"', 'iron_loss = "40 W"'))
 

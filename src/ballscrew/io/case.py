@@ -780,9 +780,8 @@ def _motor_electrical(
         )  # fmt: skip
     if m.resistance_kind is not None:
         motor["resistance_kind"] = m.resistance_kind
-    if "torque_constant_at_rated_speed" in motor and not {"torque_constant", "rated_speed"} <= set(
-        motor
-    ):
+    ends = {"torque_constant", "rated_speed"}
+    if "torque_constant_at_rated_speed" in motor and not ends <= set(motor):
         raise BallScrewInputError(
             "motor.torque_constant_at_rated_speed", m.torque_constant_at_rated_speed,
             "given with motor.torque_constant (at standstill) and motor.rated_speed",
