@@ -84,6 +84,7 @@ def program_command(
         f"J copper loss, {num(totals['motor_iron_loss_J'] or 0.0)} J motor iron loss, "
         f"{num(totals['drive_loss_J'])} J drive loss, {num(totals['burnt_J'])} J burnt, "
         f"{num(totals['returned_to_grid_J'])} J returned"
+        + (f", {num(totals['stored_J'])} J left in the storage" if totals["stored_J"] else "")
     )  # fmt: skip
     for note in totals["left_out"]:
         click.echo(f"left out: {note}", err=True)
