@@ -202,17 +202,19 @@ def drive_rows(r: ProgramResult) -> list[list[str]]:
     link = next((a.drive.dc_link for a in r.axes.values()
                  if a.drive is not None and a.drive.dc_link is not None), None)  # fmt: skip
     mode = "" if link is None else link.mode
-    back = {"regenerative": [("of it returned to the grid [J]", "returned_to_grid_J")],
-            "resistor": [("of it burnt in the braking resistor [J]", "burnt_J")],
-            "storage": [("of it burnt, the storage full [J]", "burnt_J"),
-                        ("left in the storage [J]", "stored_J")]}.get(mode, [])  # fmt: skip
+    spec = next((a.drive.spec for a in r.axes.values() if a.drive is not None), None)
+    alone = " (axis alone)" if spec is not None and spec.shared else ""
+    back = {"regenerative": [(f"of it returned to the grid{alone} [J]", "returned_to_grid_J")],
+            "resistor": [(f"of it burnt in the braking resistor{alone} [J]", "burnt_J")],
+            "storage": [(f"of it burnt, the storage full{alone} [J]", "burnt_J"),
+                        (f"left in the storage{alone} [J]", "stored_J")]}.get(mode, [])  # fmt: skip
     spec = [
         ("copper loss [J]", "copper_loss_J"),
         ("motor iron and friction loss [J]", "motor_iron_loss_J"),
         ("drive loss [J]", "drive_loss_J"),
         ("regenerated into the DC link [J]", "dc_link_regenerated_J"),
         *back,
-        ("energy from the grid [J]", "grid_energy_J"),
+        (f"energy from the grid{alone} [J]", "grid_energy_J"),
     ]
     rows = []
     for label, key in spec:
