@@ -202,8 +202,8 @@ def drive_rows(r: ProgramResult) -> list[list[str]]:
     link = next((a.drive.dc_link for a in r.axes.values()
                  if a.drive is not None and a.drive.dc_link is not None), None)  # fmt: skip
     mode = "" if link is None else link.mode
-    spec = next((a.drive.spec for a in r.axes.values() if a.drive is not None), None)
-    alone = " (axis alone)" if spec is not None and spec.shared else ""
+    given = next((a.drive.spec for a in r.axes.values() if a.drive is not None), None)
+    alone = " (axis alone)" if given is not None and given.shared else ""
     back = {"regenerative": [(f"of it returned to the grid{alone} [J]", "returned_to_grid_J")],
             "resistor": [(f"of it burnt in the braking resistor{alone} [J]", "burnt_J")],
             "storage": [(f"of it burnt, the storage full{alone} [J]", "burnt_J"),
