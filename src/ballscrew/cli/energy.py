@@ -99,6 +99,15 @@ def energy_command(
     out = stdout(json_file)
     out.print(_results_table(title, run, run_time, system))
     _print_weight_verdicts(out, run)
+    for name, r in run.results.items():
+        losses = run.motor_losses(r.cycle)
+        copper, iron = losses["copper_loss_J"], losses["motor_iron_loss_J"]
+        parts = [f"copper loss {num(copper)} J" if copper is not None else "",
+                 f"iron and friction loss {num(iron)} J" if iron is not None else ""]  # fmt: skip
+        if any(parts):
+            out.print(f"{name}: the motor's {', '.join(p for p in parts if p)} over the cycles")
+        for note in losses["motor_losses_left_out"]:
+            click.echo(f"note: {name}: {note}", err=True)
     force, force_unit = to_display(m.get("force", 0.0), "N", system)
     for name, at in run.steady.items():
         out.print(_steady_table(f"{name}: continuous running at {num(force)} {force_unit}", at,

@@ -89,6 +89,19 @@ def program_command(
         f"process work, {num(totals['friction_energy_J'])} J screw friction "
         f"({'-' if share is None else f'{share:.1%}'} with the bearings)"
     )  # fmt: skip
+    grid = totals["grid_energy_J"]
+    out.print(
+        "machine: energy from the grid not computed (see the notes)" if grid is None else
+        f"machine: {num(grid)} J from the grid for the feed axes"
+        f"{' (one shared DC link)' if totals['dc_link_shared'] else ''}: "
+        f"{num(totals['copper_loss_J'])} "
+        f"J copper loss, {num(totals['motor_iron_loss_J'] or 0.0)} J motor iron loss, "
+        f"{num(totals['drive_loss_J'])} J drive loss, {num(totals['burnt_J'])} J burnt, "
+        f"{num(totals['returned_to_grid_J'])} J returned"
+        + (f", {num(totals['stored_J'])} J left in the storage" if totals["stored_J"] else "")
+    )  # fmt: skip
+    for note in totals["left_out"]:
+        click.echo(f"left out: {note}", err=True)
     if csv_file:
         with writing("--csv", csv_file):
             from ..io.files import atomic_write

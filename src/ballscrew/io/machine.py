@@ -11,6 +11,8 @@ table), the axis's limits and the process force it feels during feed moves::
     rapid_feed = "30 m/min"
     path_tolerance = "0.02 mm"
     ambient = "20 degC"
+    drive_efficiency = "96 %"             # or drive_standby_loss, drive_loss_per_ampere, ...
+    dc_link = "resistor"                  # or "regenerative", "storage" (dc_link_storage)
 
     [axes.X]
     case = "x_axis.toml"                  # or an inline [axes.X.case] table
@@ -19,6 +21,11 @@ table), the axis's limits and the process force it feels during feed moves::
     max_jerk = "60 m/s^3"
     travel = ["0 mm", "800 mm"]
     process_force = "600 N"              # against the motion, in G1/G2/G3 moves
+
+The drive keys (:attr:`Machine.drive`) give the loss of every axis's inverter and
+what the DC link does with regenerated energy (:mod:`ballscrew.axis.drive`); without
+them ``ballscrew program`` leaves the drive loss and the energy from the grid out and
+says so.
 
 Rotary axes (``A``, ``B``, ``C``) may be listed so that the file describes the
 whole machine. They have no ball screw and are left out of the energy, and
@@ -106,6 +113,29 @@ class MachineSection(BaseModel):
     )
     tool_change_time: Value | None = Field(
         default=None, description="time of a tool change (M6), the feed axes still"
+    )
+    drive_efficiency: Value | None = Field(
+        default=None, description="the inverter's efficiency, motoring and regenerating"
+    )
+    drive_standby_loss: Value | None = Field(
+        default=None, description="the inverter's loss at no current (control, fans), per axis"
+    )
+    drive_loss_per_ampere: Value | None = Field(
+        default=None, description="the inverter's loss per ampere rms of motor current (V)"
+    )
+    drive_loss_resistance: Value | None = Field(
+        default=None, description="the inverter's loss per ampere squared (ohm)"
+    )
+    dc_link: str | Assumed | None = Field(
+        default=None,
+        description="what the DC link does with regenerated energy: regenerative, resistor, "
+        "storage",
+    )
+    dc_link_storage: Value | None = Field(
+        default=None, description="usable energy of the DC link's storage (dc_link = storage)"
+    )
+    dc_link_shared: bool = Field(
+        default=False, description="whether the axes share one DC link (one supply module)"
     )
 
 
@@ -234,6 +264,11 @@ class Machine:
         What was left out (rotary axes).
     text : str
         The TOML text read.
+    drive : dict
+        The drives' loss and DC link, SI, the keys given: ``efficiency`` [-] or the
+        loss model's ``standby`` [W], ``per_ampere`` [V], ``resistance`` [Ω];
+        ``dc_link`` (``"regenerative"``, ``"resistor"``, ``"storage"``) and
+        ``storage`` [J], ``shared`` (:class:`ballscrew.axis.drive.DriveSpec`).
     """
 
     title: str
@@ -252,6 +287,64 @@ class Machine:
     offsets: dict[int, dict[str, float]] = field(default_factory=dict)
     reference: dict[int, dict[str, float]] = field(default_factory=dict)
     rotary: dict[str, RotaryAxis] = field(default_factory=dict)
+    drive: dict[str, Any] = field(default_factory=dict)
+
+
+DC_LINKS = ("regenerative", "resistor", "storage")
+"""The choices of ``[machine] dc_link`` (as :data:`ballscrew.axis.drive.DC_LINKS`)."""
+
+
+def _drive(m: MachineSection) -> dict[str, Any]:
+    """``[machine]``'s drive keys in SI (:attr:`Machine.drive`)."""
+    out: dict[str, Any] = {}
+    model = (("standby", "drive_standby_loss", m.drive_standby_loss, "W"),
+             ("per_ampere", "drive_loss_per_ampere", m.drive_loss_per_ampere, "V"),
+             ("resistance", "drive_loss_resistance", m.drive_loss_resistance, "ohm"))  # fmt: skip
+    for key, name, raw, unit in model:
+        if raw is None:
+            continue
+        out[key] = _si(f"machine.{name}", raw, unit)
+        if not (math.isfinite(out[key]) and out[key] >= 0.0):
+            raise BallScrewInputError(f"machine.{name}", _typed(raw), f"a value >= 0 ({unit})")
+    if m.drive_efficiency is not None:
+        if out:
+            raise BallScrewInputError(
+                "machine.drive_efficiency", _typed(m.drive_efficiency),
+                "either an efficiency or the loss model (drive_standby_loss, "
+                "drive_loss_per_ampere, drive_loss_resistance), not both",
+            )  # fmt: skip
+        eta = _si("machine.drive_efficiency", m.drive_efficiency, "")
+        if not (math.isfinite(eta) and 0.5 <= eta <= 1.0):
+            raise BallScrewInputError(
+                "machine.drive_efficiency",
+                _typed(m.drive_efficiency),
+                "a share from 50 to 100 % (servo drives: 95 to 98 %)",
+            )
+        out["efficiency"] = eta
+    link = None if m.dc_link is None else _typed(m.dc_link)
+    if link is not None:
+        if link not in DC_LINKS:
+            raise BallScrewInputError("machine.dc_link", link, f"one of {', '.join(DC_LINKS)}")
+        out["dc_link"] = link
+    if (link == "storage") != (m.dc_link_storage is not None):
+        raise BallScrewInputError(
+            "machine.dc_link_storage", "(missing)" if m.dc_link_storage is None
+            else _typed(m.dc_link_storage),
+            "the storage's usable energy (e.g. '300 J') with dc_link = \"storage\", and only "
+            "with it",
+        )  # fmt: skip
+    if m.dc_link_shared:
+        if link is None:
+            raise BallScrewInputError(
+                "machine.dc_link_shared", "true", "given with machine.dc_link, the link they share"
+            )
+        out["shared"] = True
+    if m.dc_link_storage is not None:
+        out["storage"] = _si("machine.dc_link_storage", m.dc_link_storage, "J")
+        if not (math.isfinite(out["storage"]) and out["storage"] >= 0.0):
+            raise BallScrewInputError("machine.dc_link_storage", _typed(m.dc_link_storage),
+                                      "an energy >= 0 J")  # fmt: skip
+    return out
 
 
 def _si(name: str, raw: Any, unit: str) -> float:
@@ -432,6 +525,7 @@ def parse_machine(
         offsets=offsets,
         reference=reference,
         rotary=rotary,
+        drive=_drive(m),
     )
 
 

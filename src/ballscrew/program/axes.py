@@ -31,8 +31,10 @@ Energies follow the component view of ISO 14955-1 and -2 for the feed axes:
 the mechanical energy the motor delivers to the axis (positive shaft power),
 the energy it takes back (negative shaft power, which a regenerative drive
 returns), the useful work on the process, and the losses by component
-(screw friction, support bearings). The motor's own losses are not counted
-(a case gives no winding resistance).
+(screw friction, support bearings); from the motor shaft to the grid, the
+motor's copper and iron loss, the drive's loss and the DC link's regeneration
+(:mod:`ballscrew.axis.drive`, from each axis's motor torque and speed), each
+left out and said where its case or the machine file gives no constant.
 """
 
 from __future__ import annotations
@@ -45,6 +47,7 @@ from typing import Any
 
 import numpy as np
 
+from ..axis.drive import DriveEnergy, DriveSpec, MotorConstants, drive_energy, drive_totals
 from ..axis.energy import CycleResult, axis_cycle
 from ..axis.motion import Profile
 from ..axis.setup import AxisSetup, axis_setup
@@ -139,6 +142,8 @@ class AxisResult:
     supplied_per_block: FloatArray = field(repr=False, default_factory=lambda: np.zeros(0))
     """Energy the motor supplies in each block (positive shaft power) [J]."""
     notes: tuple[str, ...] = ()
+    drive: DriveEnergy | None = field(default=None, repr=False)
+    """Motor, drive and DC link losses and the energy from the grid."""
 
     @property
     def friction_share(self) -> float:
@@ -181,6 +186,7 @@ class AxisResult:
             "travel_mm": self.travel * 1e3,
             "reversals": [r.as_dict() for r in self.reversals],
             "notes": list(self.notes),
+            **({} if self.drive is None else self.drive.as_dict()),
         }
 
 
@@ -249,6 +255,7 @@ class ProgramResult:
                 "friction_energy_J": self.friction_energy,
                 "bearing_energy_J": sum(a.bearing_energy for a in self.axes.values()),
                 "friction_share": losses / turned if turned > 0 else None,
+                **drive_totals([a.drive for a in self.axes.values() if a.drive is not None]),
             },
             "axes": {k: a.as_dict() for k, a in self.axes.items()},
             "energy_per_block_J": {
@@ -273,6 +280,7 @@ def _inputs(machine: Machine, program: Program) -> dict[str, Any]:
         "arc_tolerance_m": machine.arc_tolerance,
         "sample_time_s": machine.sample_time,
         "ambient_C": machine.ambient,
+        "drive": DriveSpec.from_mapping(machine.drive).as_dict(),
         "axes": {
             k: {"case": a.case.title, "max_feed_m_per_s": a.max_feed,
                 "max_acceleration_m_per_s2": a.max_acceleration, "max_jerk_m_per_s3": a.max_jerk,
@@ -504,6 +512,8 @@ def _one_axis(
     duration = motion.duration
     motor = case.motor
     notes = [*setup.notes, *first.speed_warnings]
+    drive = drive_energy(time, t_m, first.motor_speed, MotorConstants.from_case(motor),
+                         DriveSpec.from_mapping(machine.drive), name=f"axes.{letter}")  # fmt: skip
     result = AxisResult(
         letter=letter,
         title=case.title,
@@ -530,6 +540,7 @@ def _one_axis(
         energy_per_block=per_block.astype(float),
         supplied_per_block=supplied_block.astype(float),
         notes=tuple(notes),
+        drive=drive,
     )
     series = {
         "friction_torque": t_f,

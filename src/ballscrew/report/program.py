@@ -23,12 +23,13 @@ from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure as MplFigure
 
 from .._version import __version__
+from ..io.numbers import text as num
 from ..program.axes import ProgramResult
 from .document import Block, write_data, write_pages
 from .outputs import csv_bytes
 from .plotting import new_figure, write_figures
 
-__all__ = ["time_series_csv", "write_program_report"]
+__all__ = ["drive_rows", "time_series_csv", "write_program_report"]
 
 MARKERS = {"X": "o", "Y": "s", "Z": "^"}
 
@@ -177,6 +178,7 @@ def summary_rows(r: ProgramResult) -> list[list[str]]:
                 row.append(f"{len(kinds)} ({kinds.count('+/+')}, {kinds.count('+/-')}, "
                            f"{kinds.count('-/+')}, {kinds.count('-/-')})")  # fmt: skip
         rows.append(row)
+    rows += drive_rows(r)
     rows.append(["RMS / rated motor torque"] + [
         "-" if a.rated_torque is None else f"{a.rms_torque / a.rated_torque:.0%}"
         for a in r.axes.values()
@@ -189,6 +191,35 @@ def summary_rows(r: ProgramResult) -> list[list[str]]:
         "-" if a.rated_speed is None else f"{a.peak_speed / a.rated_speed:.0%}"
         for a in r.axes.values()
     ])  # fmt: skip
+    return rows
+
+
+def drive_rows(r: ProgramResult) -> list[list[str]]:
+    """The motor's and drive's losses and the energy from the grid, a row each.
+
+    "-": not computed; the report's "left out" list says why.
+    """
+    link = next((a.drive.dc_link for a in r.axes.values()
+                 if a.drive is not None and a.drive.dc_link is not None), None)  # fmt: skip
+    mode = "" if link is None else link.mode
+    given = next((a.drive.spec for a in r.axes.values() if a.drive is not None), None)
+    alone = " (axis alone)" if given is not None and given.shared else ""
+    back = {"regenerative": [(f"of it returned to the grid{alone} [J]", "returned_to_grid_J")],
+            "resistor": [(f"of it burnt in the braking resistor{alone} [J]", "burnt_J")],
+            "storage": [(f"of it burnt, the storage full{alone} [J]", "burnt_J"),
+                        (f"left in the storage{alone} [J]", "stored_J")]}.get(mode, [])  # fmt: skip
+    spec = [
+        ("copper loss [J]", "copper_loss_J"),
+        ("motor iron and friction loss [J]", "motor_iron_loss_J"),
+        ("drive loss [J]", "drive_loss_J"),
+        ("regenerated into the DC link [J]", "dc_link_regenerated_J"),
+        *back,
+        (f"energy from the grid{alone} [J]", "grid_energy_J"),
+    ]
+    rows = []
+    for label, key in spec:
+        cells = [None if a.drive is None else a.drive.as_dict()[key] for a in r.axes.values()]
+        rows.append([label, *("-" if v is None else num(v) for v in cells)])
     return rows
 
 
@@ -215,5 +246,8 @@ def write_program_report(out: str | Path, r: ProgramResult) -> list[Path]:
         *(Block("img", (k, caption)) for k, (_, caption) in figures.items()),
         Block("h2", "Notes"),
         Block("ul", list(r.notes) + [n for a in r.axes.values() for n in a.notes] or ["none"]),
+        Block("h2", "Left out of the energy from the grid"),
+        Block("ul", [n for a in r.axes.values() if a.drive is not None
+                     for n in a.drive.left_out] or ["nothing: every constant was given"]),
     ]  # fmt: skip
     return written + write_pages(folder, blocks, f"Part program: {r.machine}", images)

@@ -251,6 +251,13 @@ def case_text(
                   f"rated_torque = {_q(motor.rated_torque, 'N*m')}",
                   f"peak_torque = {_q(motor.peak_torque, 'N*m')}",
                   f"rated_speed = {_q(motor.max_speed, 'rad/s')}"]  # fmt: skip
+        if motor.torque_constant is not None:
+            extra.append(f"torque_constant = {_q(motor.torque_constant, 'N*m/A')}")
+        if motor.winding_resistance is not None:
+            extra += [f"winding_resistance = {_q(motor.winding_resistance, 'ohm')}",
+                      f'resistance_kind = "{motor.resistance_kind}"']  # fmt: skip
+        if motor.iron_loss is not None:
+            extra.append(f'iron_loss = "{motor.iron_loss}"')
     return "\n".join(kept).rstrip("\n") + "\n" + "\n".join(extra) + "\n"
 
 
