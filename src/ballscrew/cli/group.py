@@ -115,6 +115,7 @@ VALUE_NAMES: dict[str, str] = {
     "--scheduler": "ADDRESS",
     "--speed": "SPEEDS",
     "--start": "NAME=VALUE,...",
+    "--standstill-speed": "SPEED",
     "--steady-speeds": "SPEEDS",
     "--temperature": "DEGC",
     "--threshold": "SHARE|TORQUE",
