@@ -62,7 +62,9 @@ def _noisy_vertical_trace() -> tuple[str, np.ndarray]:
     for k in (1, 2):
         rest[k:] &= still[:-k]
         rest[:-k] &= still[k:]
-    lines = ["time [s],position [mm]"] + [f"{a:.4f},{b * 1e3:.7f}" for a, b in zip(t, x, strict=True)]
+    lines = ["time [s],position [mm]"] + [
+        f"{a:.4f},{b * 1e3:.7f}" for a, b in zip(t, x, strict=True)
+    ]
     return "\n".join(lines), rest
 
 

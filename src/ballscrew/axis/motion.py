@@ -307,7 +307,7 @@ def read_trajectory(
     ``standstill_speed`` [m/s] is the width of the friction's sign near rest
     (:mod:`ballscrew.axis.standstill`); None takes it from the noise of the
     positions (:func:`~ballscrew.axis.standstill.standstill_speed`), or of the
-    speeds given (5 times their noise), so a measured axis at rest holds
+    speeds given (8 times their noise), so a measured axis at rest holds
     instead of chattering by the full friction.
     """
     import csv

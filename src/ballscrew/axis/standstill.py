@@ -7,23 +7,27 @@ scatters about zero and :math:`\mathrm{sgn}` flips the full friction from
 :math:`+T_f` to :math:`-T_f` at every sample, a chattering torque the real
 axis, held by static friction, never shows.
 
-The package replaces :math:`\mathrm{sgn}(v)` by a linear ramp of width
-:math:`v_s`,
+The package replaces :math:`\mathrm{sgn}(v)` by a ramp over the speeds
+below a width :math:`v_s`,
 
-.. math:: s(v) = \max\!\bigl(-1, \min(1, v/v_s)\bigr),
+.. math:: s(v) = \mathrm{sgn}(v)\,\min\!\Bigl(1, \max\!\bigl(0,
+          \frac{2|v|}{v_s} - 1\bigr)\Bigr),
 
-so that the friction grows in proportion to the speed below :math:`|v| < v_s`
-and is the unregularised model's exactly above it (no change to the energy of
-motion at working feeds, unlike :math:`\tanh(v/v_s)`, which is 0.76 of the full
-value at :math:`v = v_s`). :math:`v_s = 0` is the exact sign. The width is tied
-to the speed noise of the trajectory (:func:`standstill_speed`):
-:math:`v_s = k\,\sigma_v` with :data:`NOISE_MULTIPLE` :math:`k = 5`, so that the
-noise alone reaches the full friction with probability :math:`6\times10^{-7}`
-per sample (a Gaussian's tail beyond :math:`5\sigma`), and at rest the friction
-scatters with the standard deviation :math:`T_f/k` about zero, while a
-machine's slowest feeds (:math:`\ge` 1 mm/min = 17 µm/s) lie above
-:math:`v_s` for positions known to a few tenths of a micrometre at 1 kHz or a
-micrometre at 50 Hz (see :func:`standstill_speed`).
+zero below :math:`v_s/2` (the axis holds: static friction takes whatever
+holds it, and for the energy that is no sliding), rising linearly to the
+full friction at :math:`v_s`, and the unregularised model's exactly above it
+(no change to the energy of motion at working feeds, unlike
+:math:`\tanh(v/v_s)`, which is 0.76 of the full value at :math:`v = v_s`).
+:math:`v_s = 0` is the exact sign. The width is tied to the speed noise of the
+trajectory (:func:`standstill_speed`): :math:`v_s = k\,\sigma_v` with
+:data:`NOISE_MULTIPLE` :math:`k = 8`, so the dead band holds the noise of an
+axis at rest to :math:`4\sigma_v` (passed by a Gaussian noise at
+:math:`6\times10^{-5}` of the samples), and the torque at rest is the holding
+torque. A speed estimated from noise-free samples of a motion does not start
+exactly at rest, so a ramp rather than a step keeps the friction continuous
+where a move begins. A machine's slowest feeds (:math:`\ge` 1 mm/min = 17
+µm/s) lie above :math:`v_s` for positions known to a tenth of a micrometre
+at 1 kHz or a micrometre at 50 Hz (see :func:`standstill_speed`).
 
 The servo wing models the same region with a LuGre bristle (pre-sliding,
 :mod:`ballscrew.servo.plant`), which needs the time history of the contact;
@@ -47,7 +51,7 @@ __all__ = [
     "standstill_speed",
 ]
 
-NOISE_MULTIPLE = 5.0
+NOISE_MULTIPLE = 8.0
 """The ramp's width over the speed noise's standard deviation, :math:`k = v_s/\\sigma_v` [-]."""
 
 _MAD_TO_SIGMA = 1.482602218505602
@@ -55,15 +59,16 @@ _MAD_TO_SIGMA = 1.482602218505602
 
 
 def regularised_sign(speed: npt.ArrayLike, width: float) -> FloatArray:
-    r"""The sign of ``speed`` ramped linearly over ``width`` [-] (module docstring).
+    r"""The sign of ``speed``, zero below ``width``/2 and ramped to ±1 at ``width`` [-].
 
-    :math:`s(v) = \mathrm{clip}(v/v_s, -1, 1)`; ``width`` :math:`v_s` in the
-    unit of ``speed``, 0 for the exact :math:`\mathrm{sgn}(v)` (0 at 0).
+    :math:`s(v) = \mathrm{sgn}(v)\,\mathrm{clip}(2|v|/v_s - 1, 0, 1)` (module
+    docstring); ``width`` :math:`v_s` in the unit of ``speed``, 0 for the exact
+    :math:`\mathrm{sgn}(v)` (0 at 0).
 
     Examples
     --------
-    >>> regularised_sign([-2.0, -0.5, 0.0, 0.25, 3.0], 1.0).tolist()
-    [-1.0, -0.5, 0.0, 0.25, 1.0]
+    >>> regularised_sign([-2.0, -0.75, -0.3, 0.0, 0.6, 1.0, 3.0], 1.0).tolist()
+    [-1.0, -0.5, -0.0, 0.0, 0.2, 1.0, 1.0]
     >>> regularised_sign([-1e-9, 0.0, 1e-9], 0.0).tolist()
     [-1.0, 0.0, 1.0]
     """
@@ -74,7 +79,7 @@ def regularised_sign(speed: npt.ArrayLike, width: float) -> FloatArray:
     if w == 0.0:
         out: FloatArray = np.sign(v)
         return out
-    ramp: FloatArray = np.clip(v / w, -1.0, 1.0)
+    ramp: FloatArray = np.sign(v) * np.clip(2.0 * np.abs(v) / w - 1.0, 0.0, 1.0)
     return ramp
 
 
@@ -147,13 +152,13 @@ def standstill_speed(
     Examples
     --------
     1 µm of noise at 50 Hz: :math:`\sigma_v = 0.707 \cdot 10^{-6}/0.02 = 35`
-    µm/s, :math:`v_s = 0.18` mm/s (0.011 m/min).
+    µm/s, :math:`v_s = 0.28` mm/s (0.017 m/min).
 
     >>> rng = np.random.default_rng(2)
     >>> t = np.arange(0.0, 60.0, 0.02)
     >>> x = rng.normal(0.0, 1e-6, t.size)
     >>> round(standstill_speed(x, t) * 1e3, 2)
-    0.18
+    0.28
     """
     t = np.asarray(time, dtype=float).ravel()
     if t.size < 6:

@@ -45,8 +45,8 @@ __all__ = ["energy_command"]
               help="Also the steady temperature and torque of continuous running at these "
               "speeds, e.g. '500..3000:6 rpm' (under the move's process force).")  # fmt: skip
 @click.option("--standstill-speed", default="auto", show_default=True,
-              help="With --profile: the speed below which the friction ramps to zero instead "
-              "of flipping sign, e.g. '0.2 mm/s'; 'auto' takes 5 times the speed noise of the "
+              help="With --profile: the speed from which the friction is full (none below half of "
+              "it, a ramp between) instead of flipping sign, e.g. '0.3 mm/s'; 'auto' takes 8 times the speed noise of the "
               "file's positions, '0 mm/s' the exact sign.")  # fmt: skip
 @folder_option("Write a report (Markdown, HTML, plots, CSV) into this folder.")
 @json_option("Write the results as JSON to FILE ('-' for standard output).")
@@ -89,9 +89,9 @@ def energy_command(
         raise BallScrewInputError("--standstill-speed", standstill_speed, "a speed >= 0, or auto")
     profile, m = motion(move_text, profile_file, cycles, width)
     if profile.standstill_speed > 0.0:
-        click.echo(f"note: standstill: the friction ramps from 0 to its full value over "
+        click.echo(f"note: standstill: no friction below half, the full friction from "
                    f"+-{num(profile.standstill_speed * 1e3)} mm/s of table speed "
-                   f"({'5 x the speed noise of the positions' if width is None else 'as given'}"
+                   f"({'8 x the speed noise of the positions' if width is None else 'as given'}"
                    "), so a measured axis at rest does not chatter", err=True)  # fmt: skip
     speeds = None if steady_speeds is None else parse_range("--steady-speeds", steady_speeds,
                                                               "rad/s")  # fmt: skip
