@@ -45,9 +45,10 @@ __all__ = ["energy_command"]
               help="Also the steady temperature and torque of continuous running at these "
               "speeds, e.g. '500..3000:6 rpm' (under the move's process force).")  # fmt: skip
 @click.option("--standstill-speed", default="auto", show_default=True,
-              help="With --profile: the speed from which the friction is full (none below half of "
-              "it, a ramp between) instead of flipping sign, e.g. '0.3 mm/s'; 'auto' takes 8 times the speed noise of the "
-              "file's positions, '0 mm/s' the exact sign.")  # fmt: skip
+              help="With --profile: the speed from which the friction is full (none below "
+              "half of it, a ramp between) instead of flipping sign, e.g. '0.3 mm/s'; 'auto' "
+              "takes 8 times the speed noise of the file's positions, '0 mm/s' the exact "
+              "sign.")  # fmt: skip
 @folder_option("Write a report (Markdown, HTML, plots, CSV) into this folder.")
 @json_option("Write the results as JSON to FILE ('-' for standard output).")
 @units_option

@@ -111,6 +111,7 @@ __all__ = [
     "Score",
     "TrueAxis",
     "axis_inputs",
+    "calibrated_machine_text",
     "fit_axis",
     "identify",
     "regressors",
@@ -125,7 +126,7 @@ MIN_SMOOTHING = 1.5
 """The filter's least standard deviation [samples]."""
 REPLICATES = 1000
 """Bootstrap resamples of the residuals."""
-BLOCK_LAGS = 5
+BLOCK_LAGS = 10
 """The bootstrap's block over the lag at which the residuals' autocorrelation falls below 0.1."""
 UNIFORM = 0.01
 """Largest deviation of a sample spacing from the median spacing, as a share."""
@@ -226,7 +227,7 @@ def _uniform_step(time: FloatArray, source: str) -> float:
 def kinematics(
     time: FloatArray, position: FloatArray, smoothing: float = SMOOTHING, source: str = "trace"
 ) -> tuple[FloatArray, FloatArray, float, float]:
-    """Speed [m/s], acceleration [m/s²], the standstill width [m/s] and the filter's width [samples].
+    r"""Speed [m/s], acceleration [m/s²], standstill width [m/s], filter's width [samples].
 
     Central differences of the samples (module docstring): the speed
     :math:`(x_{k+1} - x_{k-1})/2\Delta t` and the acceleration :math:`(x_{k+1} - 2x_k +
@@ -268,9 +269,7 @@ def smooth(values: FloatArray, sigma: float) -> FloatArray:
     return out
 
 
-def regressors(
-    profile: Profile, inputs: AxisInputs, mass: float | None = None
-) -> Regressors:
+def regressors(profile: Profile, inputs: AxisInputs, mass: float | None = None) -> Regressors:
     """The model's terms (:class:`Regressors`) over ``profile``.
 
     The screw's friction is the model's at each sample's axial load with the
@@ -408,9 +407,7 @@ def _design(reg: Regressors, kind: str, inputs: AxisInputs, mass: float) -> _Des
     return _Design(x, scale * w * reg.known, "scale-held")
 
 
-def _filtered(
-    design: _Design, sigma: float, keep: FloatArray
-) -> tuple[FloatArray, FloatArray]:
+def _filtered(design: _Design, sigma: float, keep: FloatArray) -> tuple[FloatArray, FloatArray]:
     """The design's columns and fixed part through the same filter as the signal, rows kept."""
     x = np.column_stack([smooth(c, sigma)[keep] for c in design.matrix.T])
     return x, smooth(design.base, sigma)[keep]
@@ -632,7 +629,9 @@ def fit_axis(
                                      _signal_unit(kind) if name == "offset" else unit,
                                      is_free)  # fmt: skip
     with np.errstate(invalid="ignore", divide="ignore"):
-        correlation = np.corrcoef(np.column_stack([reps[k] for k in free]), rowvar=False)
+        correlation = np.atleast_2d(
+            np.corrcoef(np.column_stack([reps[k] for k in free]), rowvar=False)
+        ).astype(float)
     kt = point["torque_constant"]
     to_power = _to_power(kind, point["offset"], kt, reg.motor_speed)
     score = _scores(y, fitted, to_power, time)
@@ -655,8 +654,10 @@ def _notes(
     width: float, inputs: AxisInputs,
 ) -> list[str]:  # fmt: skip
     """What the fit assumed, and the parameters the trace could not tell apart."""
-    notes = [f"standstill: no friction below +-{width * 5e2:.3g} mm/s, the full friction from "
-             f"+-{width * 1e3:.3g} mm/s (8 x the speed noise)"]
+    notes = [
+        f"standstill: no friction below +-{width * 5e2:.3g} mm/s, the full friction from "
+        f"+-{width * 1e3:.3g} mm/s (8 x the speed noise)"
+    ]
     if inputs.process_force == 0.0:
         notes.append("no process force (an air cut)")
     for a in range(len(free)):
@@ -664,8 +665,9 @@ def _notes(
             r = float(correlation[a, b])
             if abs(r) > 0.95:
                 notes.append(f"{free[a]} and {free[b]} are hardly told apart by this trace "
-                             f"(correlation {r:+.2f}): their sum is known better than each; a "
-                             "trace with more speeds and loads separates them")  # fmt: skip
+                             f"(correlation {r:+.2f}): a combination of the two is known far "
+                             "better than each; a trace with more speeds and loads separates "
+                             "them")  # fmt: skip
     for name, p in parameters.items():
         if p.fitted and name in ("moving_mass", "screw_scale", "guide_coulomb",
                                  "guide_viscous") and p.high < 0.0:  # fmt: skip
@@ -674,9 +676,10 @@ def _notes(
     return notes
 
 
-def score_axis(fit: AxisFit, trace: AxisTrace, time: FloatArray, inputs: AxisInputs, *,
-               smoothing: float = SMOOTHING, source: str = "trace") -> tuple[Score, dict[str, Score],
-                                                                      FloatArray]:  # fmt: skip
+def score_axis(
+    fit: AxisFit, trace: AxisTrace, time: FloatArray, inputs: AxisInputs, *,
+    smoothing: float = SMOOTHING, source: str = "trace",
+) -> tuple[Score, dict[str, Score], FloatArray]:  # fmt: skip
     """A fitted axis's prediction of another trace, scored; the baselines' too.
 
     The parameters of ``fit`` on the trajectory of ``trace`` (its own
@@ -702,8 +705,9 @@ def score_axis(fit: AxisFit, trace: AxisTrace, time: FloatArray, inputs: AxisInp
     return _scores(y, predicted, to_power, time), baselines, predicted
 
 
-def predict_signal(fit: AxisFit, profile: Profile, inputs: AxisInputs) -> tuple[FloatArray,
-                                                                                 Regressors]:
+def predict_signal(
+    fit: AxisFit, profile: Profile, inputs: AxisInputs
+) -> tuple[FloatArray, Regressors]:
     """The signal a fitted axis gives over ``profile``, and the model's terms there."""
     p = {k: v.value for k, v in fit.parameters.items()}
     reg = regressors(profile, inputs, p["moving_mass"])
@@ -716,8 +720,13 @@ def predict_signal(fit: AxisFit, profile: Profile, inputs: AxisInputs) -> tuple[
 
 def axis_torque(reg: Regressors, p: Mapping[str, float]) -> FloatArray:
     """The motor torque of the model [N·m] with the parameters ``p`` (module docstring)."""
-    out: FloatArray = (reg.known + p["moving_mass"] * reg.mass + p["screw_scale"] * reg.screw
-                       + p["guide_coulomb"] * reg.coulomb + p["guide_viscous"] * reg.viscous)
+    out: FloatArray = (
+        reg.known
+        + p["moving_mass"] * reg.mass
+        + p["screw_scale"] * reg.screw
+        + p["guide_coulomb"] * reg.coulomb
+        + p["guide_viscous"] * reg.viscous
+    )
     return out  # fmt: skip
 
 
@@ -763,8 +772,10 @@ def identify(
     constants = dict(torque_constants or {})
     for letter in constants:
         if letter not in trace.axes:
-            raise BallScrewInputError(f"--torque-constant {letter}", letter,
-                                      f"an axis of the trace ({', '.join(trace.axes)})")  # fmt: skip
+            raise BallScrewInputError(
+                f"--torque-constant {letter}", letter,
+                f"an axis of the trace ({', '.join(trace.axes)})",
+            )  # fmt: skip
     fits: dict[str, AxisFit] = {}
     inputs: dict[str, AxisInputs] = {}
     for letter, ax in trace.axes.items():
@@ -779,8 +790,10 @@ def identify(
     scored = {}
     for letter, fit in fits.items():
         if letter not in validate.axes:
-            raise BallScrewInputError(f"{validate.source}: axis {letter}", "(missing)",
-                                      f"the axes of the fitted trace, {', '.join(fits)}")  # fmt: skip
+            raise BallScrewInputError(
+                f"{validate.source}: axis {letter}", "(missing)",
+                f"the axes of the fitted trace, {', '.join(fits)}",
+            )  # fmt: skip
         scored[letter] = score_axis(fit, validate.axes[letter], validate.time, inputs[letter],
                                     smoothing=smoothing, source=validate.source)  # fmt: skip
     return replace(result, validation=scored, validation_source=validate.source,
@@ -853,6 +866,53 @@ def synthetic_trace(
         e = np.concatenate([white[:1], rest])
         axes[letter] = _AxisTrace(
             letter, x + rng.normal(0.0, position_noise, time.size), y + signal_noise * e,
-            true.kind, (f"{letter} position [m]", f"{letter} {true.kind} [{_signal_unit(true.kind)}]"),
+            true.kind,
+            (f"{letter} position [m]", f"{letter} {true.kind} [{_signal_unit(true.kind)}]"),
         )  # fmt: skip
     return Trace(time, axes, source)
+
+
+NO_KEY = {
+    "torque_constant": "motor.torque_constant",
+    "screw_scale": "study.model_parameters.<model>.friction_scale",
+    "guide_coulomb": "axis.guide_coulomb",
+    "guide_viscous": "axis.guide_viscous",
+}
+"""The fitted values a machine file has no key for yet, and the key each would take."""
+
+
+def calibrated_machine_text(machine: Machine, result: IdentifyResult) -> str:
+    """The machine file with each fitted axis's case inline and its fitted moving mass in it.
+
+    What a machine file can hold is written as its keys (``axes.L.case.axis.moving_mass``,
+    with its 95 % interval as a comment); the parameters it has no key for
+    (:data:`NO_KEY`) are written as comments at the top, with the intervals, so
+    that ``ballscrew program --machine`` reads the file and a reader sees all
+    that was fitted.
+    """
+    import tomlkit
+
+    doc = tomlkit.parse(machine.text)
+    header = [f"Calibrated by ballscrew identify on {result.source}."]
+    axes = doc["axes"]
+    assert isinstance(axes, dict)
+    for letter, fit in result.fits.items():
+        entry = axes[letter]
+        assert isinstance(entry, dict)
+        case = tomlkit.parse(machine.axes[letter].case.text)
+        entry["case"] = case
+        mass = fit.parameters["moving_mass"]
+        if mass.fitted:
+            section = case.setdefault("axis", tomlkit.table())
+            item = tomlkit.item(f"{mass.value:.5g} kg")
+            item.comment(f"fitted by ballscrew identify: 95 % interval {mass.low:.4g} to "
+                         f"{mass.high:.4g} kg")  # fmt: skip
+            section["moving_mass"] = item
+        for name, key in NO_KEY.items():
+            p = fit.parameters[name]
+            if p.fitted:
+                unit = f" {p.unit}" if p.unit else ""
+                header.append(f"{letter}: {PARAMETERS[name][1]} = {p.value:.4g}{unit} (95 %: "
+                              f"{p.low:.4g} to {p.high:.4g}); no key holds it yet "
+                              f"({key}): program leaves it out")  # fmt: skip
+    return "".join(f"# {line}\n" for line in header) + tomlkit.dumps(doc)

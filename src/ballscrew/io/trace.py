@@ -33,12 +33,13 @@ current: log the drive's current feedback pin where the amplifier has one).
 "Export in csv"): the export writes metadata lines above the channel table
 and, per its settings, one time column per channel, one per sample time or
 none; the times are milliseconds from the first sample unless "Full
-Timestamp" is set (then Windows file times: export without it); the separator is chosen in the dialog; "Scale values before
-export" applies the channel's scaling. Export with one time column shared by
-the channels ("For each sampletime", one sample time for all), scaled
-values, and map the time column and each channel by their names in the
-header row (``--map "Time=time [ms]"``, ``--map "X_ActPos=X position [mm]"``, ...).
-The lines above the header row are skipped.
+Timestamp" is set (then Windows file times: export without it); the separator
+is chosen in the dialog; "Scale values before export" applies the channel's
+scaling. Export with one time column shared by the channels ("For each
+sampletime", one sample time for all), scaled values, and map the time column
+and each channel by their names in the header row (``--map "Time=time [ms]"``,
+``--map "X_ActPos=X position [mm]"``, ...). The lines above the header row
+are skipped.
 
 *SINUMERIK Trace* (SINUMERIK Operate, "Trace" in the commissioning/diagnosis
 area; servo trace of the axes' actual position and current or torque): the
@@ -182,7 +183,7 @@ def parse_trace(
 def _halscope(
     lines: list[str], first: int, hal: re.Match[str], source: str
 ) -> tuple[list[str], list[list[str]], int]:
-    """halscope's log: names and values in pairs on each line; a time column added."""
+    """The log of halscope: names and values in pairs on each line; a time column added."""
     try:
         period = float(hal.group("ns")) * 1e-9
     except ValueError:
@@ -256,8 +257,8 @@ def _assemble(
     wanted: dict[tuple[str, str], tuple[int, str, str]] = {}  # (axis, what): (index, unit, cell)
     left_out: list[str] = []
     for i, cell in enumerate(header):
-        column = names.get(cell, "" if halscope and i > 0 else cell)
-        m = _HEADER.match(column)
+        named = names.get(cell, "" if halscope and i > 0 else cell)
+        m = _HEADER.match(named)
         what = m.group("what").lower() if m else ""
         if not m or what not in _QUANTITIES:
             left_out.append(cell)
@@ -265,7 +266,7 @@ def _assemble(
         axis = (m.group("axis") or "").upper()
         if (what == "time") != (axis == ""):
             raise BallScrewInputError(
-                f"{source}: header '{cell}'", column,
+                f"{source}: header '{cell}'", named,
                 "'time [unit]' (no axis), or an axis letter and its quantity, e.g. "
                 "'X position [mm]'",
             )  # fmt: skip
@@ -279,7 +280,7 @@ def _assemble(
                                       f"a unit of {what}, e.g. {_QUANTITIES[what]}")  # fmt: skip
         key = (axis, what)
         if key in wanted:
-            raise BallScrewInputError(f"{source}: header '{cell}'", column,
+            raise BallScrewInputError(f"{source}: header '{cell}'", named,
                                       f"one {what} column{' for ' + axis if axis else ''} "
                                       f"(also '{wanted[key][2]}')")  # fmt: skip
         wanted[key] = (i, unit, cell)
