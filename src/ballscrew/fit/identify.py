@@ -4,12 +4,27 @@ A drive trace gives, per axis, the measured position and the drive's
 current (or torque, or power). The axis model runs on the measured
 trajectory, and a few parameters a catalogue does not give are fitted.
 
-**Kinematics.** Speed and acceleration are Savitzky–Golay derivatives of the
-measured positions (:func:`scipy.signal.savgol_filter`: a cubic fitted by least
-squares over a window of :data:`WINDOW` = 0.1 s, at least 5 samples, its
-derivatives at the window's centre), which differentiate the noise far less
-than differences from sample to sample and are exact for the cubic pieces of a
-jerk-limited move. The sampling must be uniform (a drive's trace is).
+**Kinematics, and one filter on both sides.** Speed and acceleration are the
+central differences of the measured positions,
+:math:`\hat v_k = (x_{k+1} - x_{k-1})/2\Delta t` and :math:`\hat a_k = (x_{k+1} -
+2x_k + x_{k-1})/\Delta t^2`. The second is exactly the acceleration averaged
+over :math:`\pm\Delta t` with a triangular weight, whatever the motion between
+the samples; the measured signal is averaged with the same weight
+(:func:`hat`). The model's terms are computed sample by sample, and then the
+signal and every term go through the same Gaussian filter (:func:`smooth`,
+standard deviation :data:`SMOOTHING` = 10 ms, at least 1.5 samples): the model
+is linear in its parameters, so filtering both sides keeps it exact while the
+noise of the differences and the sampling error where the acceleration
+changes its slope (a jerk phase's ends) average out. The sampling must be
+uniform (a drive's trace is), and a trace must resolve the motion: the fit
+recovers its parameters within their intervals when each jerk phase spans
+ten samples or more (250 Hz for the 50 ms phases of 40 m/s³ and 2 m/s²); a
+50 Hz trace of such moves explains the current as well (:math:`R^2`) but
+biases the friction parameters, which the trace can then hardly tell apart
+(their correlations say so). Where a move starts or stops, the friction steps
+between two samples that neither the differences nor the filter can place:
+the samples within :math:`2\sigma + 1` of a start or stop are left out of the
+fit (not of its scores).
 
 **The model, at the motor shaft** (gear ratio :math:`i`, lead :math:`l`,
 :math:`r = l/2\pi i` the table's travel per motor radian):
@@ -28,8 +43,8 @@ jerk-limited move. The sampling must be uniform (a drive's trace is).
   **scale** :math:`s`; :math:`T_b` the support bearings';
 - :math:`F_c`, :math:`b`: the guideways' **Coulomb** force and **viscous**
   coefficient;
-- :math:`\sigma(v)`: the sign of the speed ramped over the standstill width
-  :math:`v_s = 5\sigma_v` of the trace's speed noise
+- :math:`\sigma(v)`: the sign of the speed, zero below :math:`v_s/2` and full
+  from the standstill width :math:`v_s = 8\sigma_v` of the trace's speed noise
   (:mod:`ballscrew.axis.standstill`), so that an axis at rest holds.
 
 The drive's signal is :math:`y = y_0 + T/K_t` for a current (:math:`K_t` the
@@ -51,14 +66,15 @@ scale, and :math:`m` is fitted. Five parameters are free in every case, and
 the model is linear in them (in :math:`1/K_t`, :math:`s/K_t`, ... for a
 current with the mass held): one linear least-squares solve.
 
-**Intervals.** Residuals of a 50 Hz trace are correlated over several
-samples (the derivative's window, the drive's filters), so the ordinary
-least-squares intervals are too narrow. The intervals are a **moving-block
-residual bootstrap** (Künsch, Ann. Stat. 17, 1989, 1217; Lahiri, Resampling
-Methods for Dependent Data, 2003, ch. 2): :data:`REPLICATES` resamples of the
-residuals in blocks of :math:`L` consecutive samples, with :math:`L` twice the
-lag at which the residuals' autocorrelation falls below 0.1, and at least
-:math:`n^{1/3}`; each resample is refitted (the same linear solve, all at once)
+**Intervals.** Residuals of a trace are correlated over several samples
+(the filter, the drive's own filters), so the ordinary least-squares
+intervals are too narrow. The intervals are a **moving-block residual
+bootstrap** of the filtered fit (Künsch, Ann. Stat. 17, 1989, 1217; Lahiri,
+Resampling Methods for Dependent Data, 2003, ch. 2): :data:`REPLICATES`
+resamples of the residuals in blocks of :math:`L` consecutive samples,
+:math:`L` being :data:`BLOCK_LAGS` = 10 times the lag at which the residuals'
+autocorrelation falls below 0.1 (at least :math:`n^{1/3}`, at most
+:math:`n/4`); each resample is refitted (the same linear solve, all at once)
 and the physical parameters (:math:`K_t = 1/c`, ...) are taken from each. The
 95 % interval is the 2.5 and 97.5 % percentiles of the replicates, and their
 correlation matrix says which parameters the trace cannot tell apart (the
@@ -69,8 +85,9 @@ speed).
 \bar y)^2`, the NRMSE (RMS error over the range of :math:`y`) and the energy the
 motor delivers, :math:`E = \int\max(T\omega_m, 0)\,dt`, with the measured
 torque :math:`(y - y_0)K_t` and the predicted one taken through the same
-fitted :math:`y_0`, :math:`K_t`; beside the two baselines a control engineer
-would fit to the same signal: :math:`y = a_0 + a_1\,\mathrm{sgn}(v)` and the
+fitted :math:`y_0`, :math:`K_t`, the prediction being the filtered model against the
+signal as sampled; beside the two baselines a control engineer would fit to the
+same (filtered) signal: :math:`y = a_0 + a_1\,\mathrm{sgn}(v)` and the
 Coulomb + viscous + inertia regression :math:`y = a_0 + a_1\,\mathrm{sgn}(v) +
 a_2 v + a_3\dot v` (times :math:`\omega_m` for a power).
 
@@ -219,7 +236,7 @@ def _uniform_step(time: FloatArray, source: str) -> float:
         raise BallScrewInputError(
             f"{source}: sample {k + 2}", f"a step of {steps[k] * 1e3:.4g} ms",
             f"uniform sampling ({dt * 1e3:.4g} ms, within {UNIFORM:.0%}): the speed is a "
-            "Savitzky-Golay derivative; cut the trace at the gap or resample it",
+            "difference of neighbouring samples; cut the trace at the gap or resample it",
         )  # fmt: skip
     return dt
 
