@@ -130,7 +130,7 @@ def test_gaps_in_the_sampling_are_refused_with_the_sample() -> None:
     keep[40] = False
     ax = trace.axes["X"]
     cut = ax.__class__("X", ax.position[keep], ax.signal[keep], ax.kind)
-    with pytest.raises(BallScrewInputError, match="sample 41 .*uniform sampling"):
+    with pytest.raises(BallScrewInputError, match=r"sample 41 .*uniform sampling"):
         fit_axis(cut, trace.time[keep], _x_axis())
 
 
