@@ -401,27 +401,49 @@ def _integral_positive(power: FloatArray, time: FloatArray) -> float:
 
 @dataclass(frozen=True)
 class _Design:
-    """The linear problem y ≈ X θ + target offset of one mode."""
+    """The linear problem y ≈ X θ + base of one mode, its columns named."""
 
-    matrix: FloatArray  # n x 5
+    matrix: FloatArray  # n x p
     base: FloatArray  # the part of y with no free parameter
     mode: str  # "mass-held", "scale-held"
+    names: tuple[str, ...]  # the friction parameters fitted, in the columns after the first two
 
 
-def _design(reg: Regressors, kind: str, inputs: AxisInputs, mass: float) -> _Design:
-    """X and the fixed part for the signal ``kind`` (module docstring)."""
+FRICTION = ("screw_scale", "guide_coulomb", "guide_viscous")
+"""The friction parameters, and the value each is held at when a trace cannot tell it."""
+HELD_AT = {"screw_scale": 1.0, "guide_coulomb": 0.0, "guide_viscous": 0.0}
+COND_LIMIT = 1e4
+"""Largest condition number of the design (columns scaled to unit length) fitted as it is."""
+
+
+def _design(
+    reg: Regressors, kind: str, inputs: AxisInputs, mass: float,
+    held: frozenset[str] = frozenset(),
+) -> _Design:  # fmt: skip
+    """X and the fixed part for the signal ``kind`` (module docstring); ``held`` at HELD_AT."""
     ones = np.ones_like(reg.time)
     w = reg.motor_speed if kind == "power" else ones
+    columns = {"screw_scale": reg.screw, "guide_coulomb": reg.coulomb,
+               "guide_viscous": reg.viscous}  # fmt: skip
+    names = tuple(n for n in FRICTION if n not in held)
+    fixed = sum((HELD_AT[n] * columns[n] for n in held), np.zeros_like(ones))
     if kind == "current" and inputs.torque_constant is None:
-        # y = y0 + c (T_known + m0 phi_m) + (c s) phi_s + (c F_c) phi_c + (c b) phi_b
-        held = reg.known + mass * reg.mass
-        x = np.column_stack([ones, held, reg.screw, reg.coulomb, reg.viscous])
-        return _Design(x, np.zeros_like(ones), "mass-held")
+        # y = y0 + c (T_known + m0 phi_m + held) + (c s) phi_s + (c F_c) phi_c + (c b) phi_b
+        x = np.column_stack([ones, reg.known + mass * reg.mass + fixed,
+                             *(columns[n] for n in names)])  # fmt: skip
+        return _Design(x, np.zeros_like(ones), "mass-held", names)
     scale = 1.0 / inputs.torque_constant if kind == "current" and inputs.torque_constant else 1.0
-    # y = y0 + k w (T_known + m phi_m + s phi_s + F_c phi_c + b phi_b), k known
-    x = np.column_stack([ones, scale * w * reg.mass, scale * w * reg.screw,
-                         scale * w * reg.coulomb, scale * w * reg.viscous])  # fmt: skip
-    return _Design(x, scale * w * reg.known, "scale-held")
+    # y = y0 + k w (T_known + held + m phi_m + s phi_s + F_c phi_c + b phi_b), k known
+    x = np.column_stack([ones, scale * w * reg.mass,
+                         *(scale * w * columns[n] for n in names)])  # fmt: skip
+    return _Design(x, scale * w * (reg.known + fixed), "scale-held", names)
+
+
+def _condition(x: FloatArray) -> float:
+    """The condition number of ``x`` with its columns scaled to unit length."""
+    norms = np.linalg.norm(x, axis=0)
+    norms[norms == 0.0] = 1.0
+    return float(np.linalg.cond(x / norms))
 
 
 def _filtered(design: _Design, sigma: float, keep: FloatArray) -> tuple[FloatArray, FloatArray]:
@@ -447,20 +469,25 @@ def _away_from_starts(profile: Profile, sigma: float) -> FloatArray:
     return keep
 
 
-def _physical(theta: FloatArray, mode: str, kind: str, inputs: AxisInputs,
+def _physical(theta: FloatArray, design: _Design, kind: str, inputs: AxisInputs,
               mass: float) -> dict[str, FloatArray]:  # fmt: skip
     """The parameters from the linear coefficients (rows: replicates)."""
     t = np.atleast_2d(theta)
-    if mode == "mass-held":
+    n = t.shape[0]
+    friction = {name: t[:, 2 + k] for k, name in enumerate(design.names)}
+    if design.mode == "mass-held":
         c = t[:, 1]
         with np.errstate(divide="ignore", invalid="ignore"):
-            return {"torque_constant": 1.0 / c, "offset": t[:, 0],
-                    "moving_mass": np.full_like(c, mass), "screw_scale": t[:, 2] / c,
-                    "guide_coulomb": t[:, 3] / c, "guide_viscous": t[:, 4] / c}  # fmt: skip
+            out = {"torque_constant": 1.0 / c, "offset": t[:, 0],
+                   "moving_mass": np.full(n, mass)}  # fmt: skip
+            out |= {name: friction[name] / c if name in friction else np.full(n, HELD_AT[name])
+                    for name in FRICTION}  # fmt: skip
+        return out
     kt = inputs.torque_constant if kind == "current" else math.nan
-    return {"torque_constant": np.full(t.shape[0], kt if kt is not None else math.nan),
-            "offset": t[:, 0], "moving_mass": t[:, 1], "screw_scale": t[:, 2],
-            "guide_coulomb": t[:, 3], "guide_viscous": t[:, 4]}  # fmt: skip
+    out = {"torque_constant": np.full(n, kt if kt is not None else math.nan),
+           "offset": t[:, 0], "moving_mass": t[:, 1]}  # fmt: skip
+    out |= {name: friction.get(name, np.full(n, HELD_AT[name])) for name in FRICTION}
+    return out
 
 
 def _block_length(residual: FloatArray) -> int:
@@ -615,28 +642,35 @@ def fit_axis(
     y_f = smooth(hat(y), sigma)[keep]
     mass = case_mass
     reg = regressors(profile, inputs, mass)
-    design = _design(reg, kind, inputs, mass)
-    x_f, base_f = _filtered(design, sigma, keep)
+    held: frozenset[str] = frozenset()
+    for more in ((), ("screw_scale",), ("screw_scale", "guide_viscous")):
+        # A trace that cannot tell the friction terms apart (one speed, no load change)
+        # holds the screw's scale at 1, then the viscous term at 0: said in the notes.
+        held = frozenset(more)
+        design = _design(reg, kind, inputs, mass, held)
+        x_f, base_f = _filtered(design, sigma, keep)
+        if _condition(x_f) <= COND_LIMIT:
+            break
     theta, *_ = np.linalg.lstsq(x_f, y_f - base_f, rcond=None)
     if design.mode == "scale-held" and abs(theta[1] - mass) > 0.02 * max(mass, 1.0):
         # The screw's friction was taken at the case's mass: once again at the fitted one.
         mass = max(float(theta[1]), 0.0)
         reg = regressors(profile, inputs, mass)
-        design = _design(reg, kind, inputs, mass)
+        design = _design(reg, kind, inputs, mass, held)
         x_f, base_f = _filtered(design, sigma, keep)
         theta, *_ = np.linalg.lstsq(x_f, y_f - base_f, rcond=None)
     fitted = smooth(design.matrix @ theta + design.base, sigma)
     residual = y_f - x_f @ theta - base_f
     block = _block_length(residual)
     draws = theta + _bootstrap(x_f, residual, block, replicates, seed)
-    point = {k: float(v[0]) for k, v in _physical(theta, design.mode, kind, inputs,
+    point = {k: float(v[0]) for k, v in _physical(theta, design, kind, inputs,
                                                    case_mass).items()}  # fmt: skip
-    reps = _physical(draws, design.mode, kind, inputs, case_mass)
-    held = ("moving_mass" if design.mode == "mass-held"
-            else "torque_constant" if kind == "current" else "signal")  # fmt: skip
+    reps = _physical(draws, design, kind, inputs, case_mass)
+    scale_by = ("moving_mass" if design.mode == "mass-held"
+                else "torque_constant" if kind == "current" else "signal")  # fmt: skip
     free = tuple(k for k in PARAMETERS if not (
-        (k == "moving_mass" and held == "moving_mass")
-        or (k == "torque_constant" and held != "moving_mass")))  # fmt: skip
+        (k == "moving_mass" and scale_by == "moving_mass")
+        or (k == "torque_constant" and scale_by != "moving_mass") or k in held))  # fmt: skip
     parameters: dict[str, Parameter] = {}
     for name, (unit, _) in PARAMETERS.items():
         is_free = name in free
@@ -661,7 +695,10 @@ def fit_axis(
         predictions[name] = smooth(xb @ cb, sigma)
         baselines[name] = _scores(y, predictions[name], to_power, time)
     notes = _notes(free, correlation, parameters, profile.standstill_speed, inputs)
-    return AxisFit(trace.letter, kind, held, parameters, correlation, free, score, baselines,
+    notes += [f"{name} held at {HELD_AT[name]:g}: this trace cannot tell it from the other "
+              "friction terms (one speed, or speeds and loads too alike); a trace with more "
+              "feeds frees it" for name in sorted(held)]  # fmt: skip
+    return AxisFit(trace.letter, kind, scale_by, parameters, correlation, free, score, baselines,
                    coefficients, y, fitted, predictions, time, block, profile.standstill_speed,
                    tuple(notes))  # fmt: skip
 
