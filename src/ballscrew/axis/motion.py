@@ -252,8 +252,8 @@ def chain(*profiles: Profile) -> Profile:
         t_end = float(parts["t"][-1][-1])
         x_end = float(parts["x"][-1][-1])
     width = max(p.standstill_speed for p in profiles)
-    return Profile(*(np.concatenate(parts[k]) for k in ("t", "x", "v", "a", "f")),
-                   standstill_speed=width)  # fmt: skip
+    t, x, v, a, f = (np.concatenate(parts[k]) for k in ("t", "x", "v", "a", "f"))
+    return Profile(t, x, v, a, f, standstill_speed=width)
 
 
 def back_and_forth(
