@@ -67,8 +67,8 @@ def regularised_sign(speed: npt.ArrayLike, width: float) -> FloatArray:
 
     Examples
     --------
-    >>> regularised_sign([-2.0, -0.75, -0.3, 0.0, 0.6, 1.0, 3.0], 1.0).tolist()
-    [-1.0, -0.5, -0.0, 0.0, 0.2, 1.0, 1.0]
+    >>> regularised_sign([-2.0, -0.75, -0.3, 0.0, 0.625, 1.0, 3.0], 1.0).tolist()
+    [-1.0, -0.5, -0.0, 0.0, 0.25, 1.0, 1.0]
     >>> regularised_sign([-1e-9, 0.0, 1e-9], 0.0).tolist()
     [-1.0, 0.0, 1.0]
     """
