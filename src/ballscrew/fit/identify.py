@@ -855,6 +855,19 @@ def identify(
                    validation_measured={k: validate.axes[k].signal for k in fits})  # fmt: skip
 
 
+def _resampled(time: FloatArray, at: FloatArray, values: FloatArray, step: float) -> FloatArray:
+    """``values`` sampled at ``at`` read at ``time``: linear, held across wider gaps.
+
+    A planner samples a dwell by its two ends only; the signal at its start holds
+    until its end (a step where the next move starts), not a ramp across the dwell.
+    """
+    k = np.clip(np.searchsorted(at, time, side="right") - 1, 0, at.size - 2)
+    gap = at[k + 1] - at[k]
+    linear = np.interp(time, at, values)
+    held: FloatArray = np.where(gap > 2.0 * step, values[k], linear)
+    return held
+
+
 @dataclass(frozen=True)
 class TrueAxis:
     """The truth of a synthetic axis: its parameters (SI) and its signal."""
@@ -912,7 +925,7 @@ def synthetic_trace(
             signal = p["offset"] + torque
         else:
             signal = p["offset"] + torque / p["torque_constant"]
-        y = np.interp(time, profile.time, signal)
+        y = _resampled(time, profile.time, signal, sample_time)
         x = np.interp(time, profile.time, profile.position)
         white = rng.normal(0.0, 1.0, time.size)
         scale = math.sqrt(1.0 - correlation**2)  # a stationary start: e_0 = white_0
