@@ -205,3 +205,16 @@ def test_calibrated_machine_carries_a_fitted_mass(tmp_path: Path) -> None:
     mass = result.fits["X"].parameters["moving_mass"]
     assert again.axes["X"].case.axis["moving_mass"] == pytest.approx(mass.value, rel=1e-4)
     assert math.isclose(mass.value, 400.0, rel_tol=0.02)
+
+
+def test_a_torque_trace_has_its_scale_and_fits_the_mass() -> None:
+    # A drive that reports torque: no K_t to find, the moving mass is free (400 kg where
+    # the case says 450).
+    truth = TrueAxis(moving_mass=400.0, kind="torque")
+    trace = synthetic_trace({"X": _program(20.0, PROGRAM_A)}, {"X": _x_axis()}, {"X": truth},
+                            sample_time=0.004, signal_noise=0.1, seed=1)  # fmt: skip
+    fit = fit_axis(trace.axes["X"], trace.time, _x_axis(), replicates=300)
+    assert fit.held == "signal" and not fit.parameters["torque_constant"].fitted
+    mass = fit.parameters["moving_mass"]
+    assert mass.low <= 400.0 <= mass.high
+    assert fit.parameters["offset"].low <= 0.05 <= fit.parameters["offset"].high

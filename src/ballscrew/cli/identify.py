@@ -34,7 +34,7 @@ def _constants(text: str | None) -> dict[str, float]:
 @click.option("--map", "mappings", multiple=True, metavar="NAME=COLUMN",
               help="Name an export's column (repeat), e.g. 'joint.0.motor-pos-fb=X position "
               "[mm]' for a halscope log, 'Time=time [ms]' for a TwinCAT Scope CSV.")  # fmt: skip
-@click.option("--torque-constant", "torque_constants", default=None,
+@click.option("--torque-constant", "torque_constants", default=None, metavar="L=K_T,...",
               help="The motors' K_t, e.g. 'X=1.2 N*m/A': the moving mass is then fitted "
               "(default: the case's moving mass holds the scale and K_t is fitted).")  # fmt: skip
 @click.option("--validate", "validate_file", default=None, type=click.Path(dir_okay=False),
