@@ -58,6 +58,10 @@ class Profile:
         Table position [m], speed [m/s] and acceleration [m/s²].
     process_force : numpy.ndarray
         Axial process force on the table [N], positive against +x.
+    standstill_speed : float
+        Width [m/s] of the ramp that replaces the sign of the speed in the
+        friction (:func:`ballscrew.axis.standstill.regularised_sign`): 0 (a
+        planned motion, exact) or the noise's of a measured trajectory.
     """
 
     time: FloatArray
@@ -65,8 +69,11 @@ class Profile:
     speed: FloatArray
     acceleration: FloatArray
     process_force: FloatArray
+    standstill_speed: float = 0.0
 
     def __post_init__(self) -> None:
+        if not (math.isfinite(self.standstill_speed) and self.standstill_speed >= 0.0):
+            raise BallScrewInputError("standstill_speed", self.standstill_speed, "a speed >= 0")
         n = self.time.size
         for name in ("position", "speed", "acceleration", "process_force"):
             if getattr(self, name).shape != (n,):
@@ -253,7 +260,9 @@ def chain(*profiles: Profile) -> Profile:
         parts["f"].append(p.process_force[skip:])
         t_end = float(parts["t"][-1][-1])
         x_end = float(parts["x"][-1][-1])
-    return Profile(*(np.concatenate(parts[k]) for k in ("t", "x", "v", "a", "f")))
+    width = max(p.standstill_speed for p in profiles)
+    t, x, v, a, f = (np.concatenate(parts[k]) for k in ("t", "x", "v", "a", "f"))
+    return Profile(t, x, v, a, f, standstill_speed=width)
 
 
 def back_and_forth(
@@ -295,13 +304,20 @@ def back_and_forth(
     return chain(*(one * cycles))
 
 
-def read_trajectory(text: str, source: str = "trajectory") -> Profile:
+def read_trajectory(
+    text: str, source: str = "trajectory", standstill_speed: float | None = None
+) -> Profile:
     """A profile from CSV text: time, and position or table speed, and optionally force.
 
     The header names each column with its unit in brackets, e.g. ``time [s],
     position [mm], force [kN]`` or ``time [ms];speed [m/min]`` (semicolons
     or tabs allow decimal commas). Speed and acceleration (or position) are
     derived by finite differences (central, second order) on the given times.
+    ``standstill_speed`` [m/s] is the width of the friction's sign near rest
+    (:mod:`ballscrew.axis.standstill`); None takes it from the noise of the
+    positions (:func:`~ballscrew.axis.standstill.standstill_speed`), or of the
+    speeds given (8 times their noise), so a measured axis at rest holds
+    instead of chattering by the full friction.
     """
     import re
 
@@ -359,7 +375,14 @@ def read_trajectory(text: str, source: str = "trajectory") -> Profile:
         x = np.concatenate([[0.0], np.cumsum(0.5 * (v[1:] + v[:-1]) * np.diff(t))])
     a = np.gradient(v, t, edge_order=2)
     f = column("force", "N") if "force" in columns else np.zeros_like(t)
-    return Profile(t, x, v, a, f)
+    if standstill_speed is None:
+        from .standstill import NOISE_MULTIPLE, noise_scatter
+        from .standstill import standstill_speed as width_of
+
+        standstill_speed = (width_of(x, t) if "position" in columns
+                            else NOISE_MULTIPLE * noise_scatter(v, order=2) if t.size >= 6
+                            else 0.0)  # fmt: skip
+    return Profile(t, x, v, a, f, standstill_speed=float(standstill_speed))
 
 
 MOVE_KEYS: dict[str, tuple[str, bool]] = {  # key: (SI unit, required)
