@@ -249,7 +249,14 @@ def test_the_command_takes_a_screw_price_table(capsys: pytest.CaptureFixture[str
     # objective picked is never the recommendation
     table = text.split("recommended:")[0]
     assert "HIWIN R32-20K4-FSC" in table and "380" in table and "R40-20K4" not in table
-    assert "recommended: HIWIN R32-20K4-FSC" in text
+    # ... at nominal values. Neither is sure at 95 % (the thermal lead error's P(NOT OK):
+    # R32 about 48 %, R40 about 29 %): undecided, and the one less likely to fail is named,
+    # off the front as it is
+    flat = " ".join(text.split())
+    assert (
+        "recommended: undecided (none passes with 95% confidence; least likely to fail: "
+        "HIWIN R40-20K4-FSC" in flat
+    )
 
 
 def test_the_heavy_class_is_tried_on_double_nuts_only() -> None:
