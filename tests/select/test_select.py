@@ -328,3 +328,31 @@ def test_a_check_without_draws_has_the_full_checks_rows(selection: SelectResult)
     assert spare.results["complete"].friction_energy_at_final_temperature is None
     assert [c.as_dict() for c in run_check(spare).criteria] == [
         c.as_dict() for c in full.criteria]  # fmt: skip
+
+
+def test_a_nominal_pick_too_likely_to_fail_is_passed_over_on_a_real_axis() -> None:
+    # 10 s of dwell: both 20 mm leads pass at their nominal values with every utilisation
+    # under 80 %, and the R32 (less energy) is the nominal pick; its P(NOT OK) is well
+    # above 5 % (lift-off under the preload's band: 14 % when written), the R40's well
+    # below (0.4 %): the R40 is recommended, and the reason names the R32 and why not.
+    m = parse_move(MOVE.replace("dwell=3 s", "dwell=10 s"))
+    result = run_select(load_case(CASE), profile_from_move(m, 1), diameter=(0.032, 0.040),
+                        lead=(0.020, 0.020), makers=["HIWIN"], preloads=["light"],
+                        move=m)  # fmt: skip
+    by_name = {e.candidate.row.name: e for e in result.evaluated}
+    r32, r40 = by_name["HIWIN R32-20K4-FSC"], by_name["HIWIN R40-20K4-FSC"]
+    assert r32.nominal and r40.nominal
+    assert r32.figures["energy_J"] < r40.figures["energy_J"]
+    assert r32.figures["p_not_ok"] > 0.05 >= r40.figures["p_not_ok"]
+    assert not result.undecided and result.evaluated[result.recommended] is r40
+    assert "On nominal verdicts alone the pick would be HIWIN R32-20K4-FSC" in result.reason
+    assert f"P(NOT OK) = {r40.figures['p_not_ok']:.1%}" in result.reason
+
+
+def test_a_confidence_out_of_range_is_refused_before_any_candidate_runs(
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    code, _, err = run(["select", "--case", str(CASE), "--move", MOVE, "--confidence", "100 %"],
+                       capsys)  # fmt: skip
+    assert code == 2
+    assert "--confidence = '100 %' is not allowed: a confidence from 50 % to 99.9 %" in err

@@ -583,9 +583,13 @@ def _recommend(
     if below:
         best = min(below, key=lambda i: (rank(i), i))
         e = evaluated[best]
-        why = (f"the best {_objective_text(e, first)} among the {len(below)} candidates of the "
-               f"front whose every utilisation is at most {RECOMMEND_BELOW:.0%} (its largest: "
-               f"{e.binding})")  # fmt: skip
+        among = (
+            f"the {len(below)} candidates of the front whose every utilisation is"
+            if len(below) > 1
+            else "the one candidate of the front whose every utilisation is"
+        )
+        why = (f"the best {_objective_text(e, first)} among {among} at most "
+               f"{RECOMMEND_BELOW:.0%} (its largest: {e.binding})")  # fmt: skip
     else:
         least = min(evaluated[i].figures["max_utilisation"] for i in front)
         tied = [i for i in front if evaluated[i].figures["max_utilisation"] <= least + TIE_BAND]
@@ -647,8 +651,9 @@ def run_select(
         Makers to keep, preload classes (:data:`~.candidates.PRELOAD_CLASSES`) and
         oils to try (default: the case's).
     model, cycles, temperature, run_time, move, motion_field
-        As for :func:`~ballscrew.axis.duty.run_energy` (``motion_field`` is what
-        the duty was given as, named by the error when no candidate survives).
+        As for :func:`~ballscrew.axis.duty.run_energy` (``motion_field``, what the
+        duty was given as, is kept for the callers: the error of a selection nothing
+        passes names the candidates' failing rows, not the duty's option).
     pool : sequence of Candidate, optional
         The candidates to evaluate, built by the caller (a size series, a design
         space); the filters ``diameter`` to ``oils`` then do not apply.
