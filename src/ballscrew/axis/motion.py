@@ -46,6 +46,10 @@ MAX_SAMPLES = 5_000_000
 """The most samples :func:`back_and_forth` makes (5000 s of motion at 1 ms)."""
 
 
+STEP_POSITION = 1e-9
+"""The most a profile's position may differ across a time given twice [m] (rounding)."""
+
+
 @dataclass(frozen=True)
 class Profile:
     """A sampled motion of the table (arrays of equal length, times increasing).
@@ -53,7 +57,8 @@ class Profile:
     Attributes
     ----------
     time : numpy.ndarray
-        [s], strictly increasing.
+        [s], increasing; a time given twice is a step, the values just
+        before and just after it (a part program's junction of two blocks).
     position, speed, acceleration : numpy.ndarray
         Table position [m], speed [m/s] and acceleration [m/s²].
     process_force : numpy.ndarray
@@ -71,8 +76,16 @@ class Profile:
         for name in ("position", "speed", "acceleration", "process_force"):
             if getattr(self, name).shape != (n,):
                 raise BallScrewInputError(name, f"shape {getattr(self, name).shape}", f"({n},)")
-        if n < 2 or not np.all(np.diff(self.time) > 0.0):
-            raise BallScrewInputError("time", "(profile)", "at least 2 strictly increasing times")
+        dt = np.diff(self.time) if n else np.zeros(0)
+        if n < 2 or not (np.all(dt >= 0.0) and float(np.sum(dt)) > 0.0):
+            raise BallScrewInputError("time", "(profile)", "at least 2 increasing times")
+        jump = (dt == 0.0) & (np.abs(np.diff(self.position)) > STEP_POSITION)
+        if np.any(jump):
+            k = int(np.argmax(jump))
+            raise BallScrewInputError(
+                "position", f"{self.position[k]:g} m then {self.position[k + 1]:g} m at "
+                f"{self.time[k]:g} s", "one position at a time given twice",
+            )  # fmt: skip
 
     @property
     def duration(self) -> float:

@@ -139,6 +139,10 @@ class AxisResult:
     supplied_per_block: FloatArray = field(repr=False, default_factory=lambda: np.zeros(0))
     """Energy the motor supplies in each block (positive shaft power) [J]."""
     notes: tuple[str, ...] = ()
+    distance: float = 0.0
+    """Distance the axis moves over the program, both ways counted [m]."""
+    feed_distance: float = 0.0
+    """Of which in feed blocks (G1, G2, G3), where the process force acts [m]."""
 
     @property
     def friction_share(self) -> float:
@@ -179,6 +183,8 @@ class AxisResult:
             "max_temperature_C": self.max_temperature,
             "thermal_lead_error_um": self.thermal_lead_error * 1e6,
             "travel_mm": self.travel * 1e3,
+            "distance_mm": self.distance * 1e3,
+            "feed_distance_mm": self.feed_distance * 1e3,
             "reversals": [r.as_dict() for r in self.reversals],
             "notes": list(self.notes),
         }
@@ -342,7 +348,20 @@ def _arc_travel(machine: Machine, program: Program, motion: Motion) -> None:
 
 
 def _integral(y: FloatArray, t: FloatArray) -> float:
+    """Trapezoidal rule over the samples (a junction's two samples at one time add nothing)."""
     return float(np.sum(0.5 * (y[1:] + y[:-1]) * np.diff(t)))
+
+
+def _distances(motion: Motion, i: int) -> tuple[float, float]:
+    r"""Distance axis ``i`` moves over the program, and of it in feed blocks [m].
+
+    Exact: between two samples an axis moves one way along one phase's
+    polynomial (the planner samples every block's both ends and every point
+    where an arc's axis turns), so :math:`\int|v|\,dt` over the interval is
+    the change of position, :math:`|x_{k+1} - x_k|`.
+    """
+    step = np.abs(np.diff(motion.position[:, i]))
+    return float(np.sum(step)), float(np.sum(step[motion.feeding[:-1]]))
 
 
 def heat_balance(
@@ -489,6 +508,7 @@ def _one_axis(
     supplied_block = np.bincount(motion.block[:-1], weights=supplied_steps,
                                  minlength=program.size)  # fmt: skip
     force = first.axial_force
+    distance, feed_distance = _distances(motion, i)
     reversals = _reversals(letter, setup, machine, motion, program, force, t0)
     g_axial = STANDARD_GRAVITY * math.sin(axis.incline)
     duration = motion.duration
@@ -501,7 +521,8 @@ def _one_axis(
         bearing_energy=_integral(first.bearing_torque * np.abs(omega), time),
         supplied_energy=_integral(np.maximum(shaft, 0.0), time),
         regenerated_energy=-_integral(np.minimum(shaft, 0.0), time),
-        process_work=_integral(profile.process_force * profile.speed, time),
+        # The process force against the motion in every feed block: force x distance.
+        process_work=ax.process_force * feed_distance,
         potential_energy=axis.moving_mass
         * g_axial
         * float(profile.position[-1] - profile.position[0]),
@@ -520,6 +541,8 @@ def _one_axis(
         energy_per_block=per_block.astype(float),
         supplied_per_block=supplied_block.astype(float),
         notes=tuple(notes),
+        distance=distance,
+        feed_distance=feed_distance,
     )
     series = {
         "friction_torque": t_f,
