@@ -45,6 +45,8 @@ from typing import Any
 
 import numpy as np
 
+from ..axis.check import AxisCheck, Criterion, run_check
+from ..axis.duty import EnergyRun, ModelEnergy
 from ..axis.energy import CycleResult, axis_cycle
 from ..axis.motion import Profile
 from ..axis.setup import AxisSetup, axis_setup
@@ -143,6 +145,19 @@ class AxisResult:
     """Distance the axis moves over the program, both ways counted [m]."""
     feed_distance: float = 0.0
     """Of which in feed blocks (G1, G2, G3), where the process force acts [m]."""
+    check: AxisCheck | None = field(default=None, repr=False)
+    """``ballscrew check``'s criteria over the program (None: the check refused the axis,
+    the reason in :attr:`notes`)."""
+    verdicts: tuple[Criterion, ...] = ()
+    """The check's rows, and the travel used against the axis's travel."""
+
+    @property
+    def verdict(self) -> str:
+        """The worst verdict of the rows with a limit; NOT CHECKED without a check."""
+        if self.check is None:
+            return "NOT CHECKED"
+        found = {c.verdict for c in self.verdicts}
+        return next((v for v in ("NOT OK", "CHECK") if v in found), "OK")
 
     @property
     def friction_share(self) -> float:
@@ -186,6 +201,8 @@ class AxisResult:
             "distance_mm": self.distance * 1e3,
             "feed_distance_mm": self.feed_distance * 1e3,
             "reversals": [r.as_dict() for r in self.reversals],
+            "verdict": self.verdict,
+            "criteria": [c.as_dict() for c in self.verdicts],
             "notes": list(self.notes),
         }
 
@@ -514,6 +531,13 @@ def _one_axis(
     duration = motion.duration
     motor = case.motor
     notes = [*setup.notes, *first.speed_warnings]
+    check = _axis_check(letter, machine, setup, profile, first, duration, top, notes)
+    low, high = ax.travel
+    used = Criterion(
+        "travel used", travel * 1e3, (high - low) * 1e3, "mm", travel / (high - low), "OK",
+        f"the program's lowest to highest position against axes.{letter}.travel (a block "
+        "past it is refused)",
+    )  # fmt: skip
     result = AxisResult(
         letter=letter,
         title=case.title,
@@ -543,6 +567,8 @@ def _one_axis(
         notes=tuple(notes),
         distance=distance,
         feed_distance=feed_distance,
+        check=check,
+        verdicts=(*(() if check is None else check.criteria), used),
     )
     series = {
         "friction_torque": t_f,
@@ -553,6 +579,39 @@ def _one_axis(
         "motor_speed": first.motor_speed,
     }
     return result, series
+
+
+def _axis_check(
+    letter: str, machine: Machine, setup: AxisSetup, profile: Profile, first: CycleResult,
+    duration: float, top: float, notes: list[str],
+) -> AxisCheck | None:  # fmt: skip
+    """``ballscrew check``'s criteria of the axis over the program, at their nominal values.
+
+    :func:`ballscrew.axis.check.run_check` over the program's profile and cycle, the
+    program's time as the run time and its warmest screw temperature as the one
+    reached (the thermal lead error per 300 mm from the ambient, against the case's
+    accuracy grade). An input the check refuses (a span shorter than the travel and
+    the nut, a motor without its rotor inertia) leaves the axis unchecked, the reason
+    in ``notes``.
+    """
+    ax = machine.axes[letter]
+    case = ax.case
+    node = setup.node
+    energy = ModelEnergy(first, 1, duration, math.nan, None, final_temperature=top)
+    run = EnergyRun(
+        case, profile, 1, ax.start_temperature, setup.axis, node,
+        {k: getattr(node, k) for k in ("screw_length", "ambient", "machine_resistance",
+                                       "nut_mass")},
+        list(setup.notes), {}, results={machine.model: energy}, run_time=duration,
+        derived=setup.derived,
+    )  # fmt: skip
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            return run_check(run, machine.model, draws=False)
+    except BallScrewInputError as exc:
+        notes.append(f"not checked ({exc})")
+        return None
 
 
 def _torques_at(
