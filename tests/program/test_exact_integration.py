@@ -124,3 +124,37 @@ def test_an_arcs_axes_move_their_geometric_distance(
         # The million chords of the circle: short of the arc's distance by < 1e-11 relative.
         assert a.distance == pytest.approx(line[i] + arc[i], rel=1e-9)
         assert a.process_work == pytest.approx(600.0 * (line[i] + arc[i]), rel=1e-9)
+
+
+@settings(max_examples=12, deadline=None)
+@given(
+    st.floats(300.0, 500.0), st.floats(200.0, 300.0), st.floats(10.0, 80.0),
+    st.floats(-math.pi, math.pi), st.floats(0.1, 6.1), st.booleans(), st.integers(3000, 12_000),
+)  # fmt: skip
+def test_an_arcs_process_work_is_force_times_its_distance(
+    cx: float, cy: float, radius: float, a0: float, sweep: float, ccw: bool, feed: int
+) -> None:
+    # A random arc (either way, up to 350 degrees, past up to four turns of X or Y) after
+    # a rapid to its start: the rapid moves the axes without process force.
+    a1 = a0 + (sweep if ccw else -sweep)
+    sx, sy = round(cx + radius * math.cos(a0), 4), round(cy + radius * math.sin(a0), 4)
+    ex, ey = round(cx + radius * math.cos(a1), 4), round(cy + radius * math.sin(a1), 4)
+    i, j = round(cx - sx, 4), round(cy - sy, 4)
+    text = (f"G0 X{sx:.4f} Y{sy:.4f}\nG{3 if ccw else 2} X{ex:.4f} Y{ey:.4f} I{i:.4f} "
+            f"J{j:.4f} F{feed}\nM30\n")  # fmt: skip
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        r = run_program(MACHINE, text)
+    centre = ((sx + i) / 1e3, (sy + j) / 1e3)
+    start = (sx / 1e3, sy / 1e3)
+    theta0 = math.atan2(start[1] - centre[1], start[0] - centre[0])
+    theta1 = math.atan2(ey / 1e3 - centre[1], ex / 1e3 - centre[0])
+    swept = (theta1 - theta0) % (2.0 * math.pi) if ccw else -((theta0 - theta1) % (2.0 * math.pi))
+    arc = _arc_distance(centre, start, swept)
+    for k, letter in enumerate("XY"):
+        a = r.axes[letter]
+        # The million chords are short by < 1e-11; the end point, rounded to 0.0001 mm,
+        # lies up to 0.07 um off the circle (the axes reach it at the block's end): 0.1 um.
+        assert a.feed_distance == pytest.approx(arc[k], rel=1e-6, abs=1e-7)
+        assert a.process_work == pytest.approx(600.0 * arc[k], rel=1e-6, abs=600.0 * 1e-7)
+        assert a.distance == pytest.approx(start[k] + arc[k], rel=1e-6, abs=1e-7)

@@ -106,6 +106,18 @@ def test_a_motor_at_145_percent_rms_and_130_percent_peak_is_named(
     assert len(warned) == 2 and "RMS torque / rated torque" in warned[1]
 
 
+def test_an_axis_the_check_refuses_is_not_checked_and_says_why(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    text = (DATA / "machine_x_limits.toml").read_text("utf-8")
+    machine = tmp_path / "machine.toml"
+    machine.write_text(re.sub(r"(?m)^motor_inertia = .*\n", "", text), encoding="utf-8")
+    code, out, err = _program(tmp_path, GENTLE, machine, capsys)
+    assert code == 0, err  # nothing found NOT OK; the line and a note say what is missing
+    assert _line(out, "X").startswith("X: NOT CHECKED: (axis.motor_inertia")
+    assert "note: X: not checked (axis.motor_inertia" in err
+
+
 def test_skipped_words_are_one_line_and_axis_notes_name_their_axis(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:

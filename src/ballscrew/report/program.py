@@ -240,7 +240,8 @@ def verdict_lines(r: ProgramResult) -> list[str]:
     lines = []
     for letter, a in r.axes.items():
         if a.check is None:
-            lines.append(f"{letter}: NOT CHECKED: see the notes")
+            why = next((n for n in a.notes if n.startswith("not checked")), "not checked")
+            lines.append(f"{letter}: NOT CHECKED: {why.removeprefix('not checked ')}")
             continue
         parts, shown = [], set()
         for start, label in VERDICT_ROWS:
