@@ -518,7 +518,10 @@ def _one_axis(
     power = t_f * np.abs(omega)
     shaft = t_m * first.motor_speed
     dt = np.diff(time)
-    friction_steps = 0.5 * (power[1:] + power[:-1]) * dt
+    # The friction's work over each step, torque times the screw's angle: the angle is exact
+    # (the axis moves one way between two samples), the torque its mean at the two ends.
+    turned = np.abs(np.diff(motion.position[:, i])) * 2.0 * math.pi / case.screw.lead
+    friction_steps = 0.5 * (t_f[1:] + t_f[:-1]) * turned
     per_block = np.bincount(motion.block[:-1], weights=friction_steps, minlength=program.size)
     positive = np.maximum(shaft, 0.0)
     supplied_steps = 0.5 * (positive[1:] + positive[:-1]) * dt
@@ -542,7 +545,9 @@ def _one_axis(
         letter=letter,
         title=case.title,
         friction_energy=float(np.sum(friction_steps)),
-        bearing_energy=_integral(first.bearing_torque * np.abs(omega), time),
+        bearing_energy=float(
+            np.sum(0.5 * (first.bearing_torque[1:] + first.bearing_torque[:-1]) * turned)
+        ),
         supplied_energy=_integral(np.maximum(shaft, 0.0), time),
         regenerated_energy=-_integral(np.minimum(shaft, 0.0), time),
         # The process force against the motion in every feed block: force x distance.
