@@ -81,11 +81,12 @@ class Motion:
     Attributes
     ----------
     time : numpy.ndarray, shape (n,)
-        [s].
+        [s], increasing; the time of each junction of two blocks twice, the end
+        of the one and the start of the other (an axis's velocity steps there).
     position, velocity, acceleration, jerk : numpy.ndarray, shape (n, 3)
         Of X, Y, Z [m, m/s, m/s², m/s³].
     block : numpy.ndarray of int, shape (n,)
-        The program block each sample lies in (the last sample: the last block).
+        The program block each sample lies in (a block's end sample: that block).
     feeding : numpy.ndarray of bool, shape (n,)
         Whether the sample lies in a feed block (G1, G2, G3).
     path_speed : numpy.ndarray, shape (n,)
