@@ -147,7 +147,7 @@ class AxisResult:
     """Of which in feed blocks (G1, G2, G3), where the process force acts [m]."""
     check: AxisCheck | None = field(default=None, repr=False)
     """``ballscrew check``'s criteria over the program (None: the check refused the axis,
-    the reason in :attr:`notes`)."""
+    the reason in ``notes``)."""
     verdicts: tuple[Criterion, ...] = ()
     """The check's rows, and the travel used against the axis's travel."""
 
