@@ -263,10 +263,10 @@ def warning_lines(r: ProgramResult) -> list[str]:
         for c in a.verdicts:
             if c.verdict != "NOT OK":
                 continue
-            use = "" if c.utilisation is None else f" ({c.utilisation:.0%})"
+            use = "" if c.utilisation is None else f"{c.utilisation:.0%} "
             change = f"; to change: {c.advice}" if c.advice else ""
-            out.append(f"{letter}: {c.name} {num(c.value)} {c.unit} past its limit "
-                       f"{num(c.limit)} {c.unit}{use}{change}")  # fmt: skip
+            out.append(f"{letter}: {c.name} {num(c.value)} {c.unit}, limit {num(c.limit)} "
+                       f"{c.unit}: {use}NOT OK{change}")  # fmt: skip
     return out
 
 
