@@ -257,7 +257,11 @@ def _span(run: EnergyRun, notes: list[str]) -> float:
 
 
 def run_check(
-    run: EnergyRun, model: str | None = None, *, draws_when_failing: bool = True
+    run: EnergyRun,
+    model: str | None = None,
+    *,
+    draws_when_failing: bool = True,
+    draws: bool = True,
 ) -> AxisCheck:
     """Every criterion of the axis over ``run``'s cycle for ``model`` (module docstring).
 
@@ -266,7 +270,9 @@ def run_check(
     ``draws_when_failing=False`` it is left out when a row already fails at its
     nominal value (the verdict, every row's value and the binding row are the
     same; no row carries an uncertainty): ``ballscrew select`` rejects such a
-    candidate without drawing. Raises
+    candidate without drawing. With ``draws=False`` it is never drawn
+    (``ballscrew program``: a long program's load spectrum makes the draws
+    cost seconds an axis). Raises
     :class:`~ballscrew.errors.BallScrewInputError` naming the field when the
     stroke does not fit between the supports or a motor is given without its
     rotor inertia, and the heat balance's error when ``run`` kept one
@@ -319,7 +325,9 @@ def run_check(
         "friction (not in the case)"
     )
     p_any: float | None = None
-    if draws_when_failing or all(r.verdict != "NOT OK" for r in rows):
+    if not draws:
+        notes.append("uncertainty: not drawn (the verdicts of the nominal values)")
+    elif draws_when_failing or all(r.verdict != "NOT OK" for r in rows):
         rows, p_any = _with_uncertainty(run, name, energy, force, turns, rows, stiffness, notes)
     else:
         notes.append("uncertainty: not drawn (a row fails at its nominal value)")

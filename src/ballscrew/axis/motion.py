@@ -46,6 +46,10 @@ MAX_SAMPLES = 5_000_000
 """The most samples :func:`back_and_forth` makes (5000 s of motion at 1 ms)."""
 
 
+STEP_POSITION = 1e-9
+"""The most a profile's position may differ across a time given twice [m] (rounding)."""
+
+
 @dataclass(frozen=True)
 class Profile:
     """A sampled motion of the table (arrays of equal length, times increasing).
@@ -53,7 +57,8 @@ class Profile:
     Attributes
     ----------
     time : numpy.ndarray
-        [s], strictly increasing.
+        [s], increasing; a time given twice is a step, the values just
+        before and just after it (a part program's junction of two blocks).
     position, speed, acceleration : numpy.ndarray
         Table position [m], speed [m/s] and acceleration [m/s²].
     process_force : numpy.ndarray
@@ -79,15 +84,23 @@ class Profile:
             if getattr(self, name).shape != (n,):
                 raise BallScrewInputError(name, f"shape {getattr(self, name).shape}", f"({n},)")
         if n < 2:
-            raise BallScrewInputError(
-                "time", f"{n} sample(s)", "at least 2 strictly increasing times"
-            )
-        step = np.diff(self.time)
-        if not np.all(step > 0.0):
-            k = int(np.flatnonzero(~(step > 0.0))[0])
+            raise BallScrewInputError("time", f"{n} sample(s)", "at least 2 increasing times")
+        dt = np.diff(self.time)
+        if not np.all(dt >= 0.0):
+            k = int(np.flatnonzero(~(dt >= 0.0))[0])
             raise BallScrewInputError(
                 "time", f"{self.time[k + 1]:g} s at sample {k + 2}, after {self.time[k]:g} s",
-                "strictly increasing times (each sample after the one before)",
+                "times that do not decrease (a time given twice is a step in speed)",
+            )  # fmt: skip
+        if not float(np.sum(dt)) > 0.0:
+            raise BallScrewInputError("time", f"{self.time[0]:g} s throughout",
+                                      "at least 2 increasing times")  # fmt: skip
+        jump = (dt == 0.0) & (np.abs(np.diff(self.position)) > STEP_POSITION)
+        if np.any(jump):
+            k = int(np.argmax(jump))
+            raise BallScrewInputError(
+                "position", f"{self.position[k]:g} m then {self.position[k + 1]:g} m at "
+                f"{self.time[k]:g} s", "one position at a time given twice",
             )  # fmt: skip
 
     @property
