@@ -104,6 +104,7 @@ VALUE_NAMES: dict[str, str] = {
     "--case": "FILE",
     "--check": "FILE",
     "--cnc-build": "BUILD",
+    "--confidence": "SHARE",
     "--csv": "FILE|-",
     "--cycles": "N",
     "--diameter": "LENGTHS",
