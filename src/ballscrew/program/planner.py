@@ -63,6 +63,10 @@ ARC_STEP = math.radians(5.0)
 MARGIN = 1.0 - 1e-7
 """Entry and exit speeds are kept this far inside what the look-ahead allows."""
 
+RETRY_LOWER = (0.0, 1e-7, 1e-6, 1e-5, 1e-4)
+"""Shares by which a block's exit speed is lowered, one after the other, while ruckig cannot
+plan the block (a speed at a limit to the last digit): at most 1.1e-4 of it in all."""
+
 
 def _no_rotary() -> FloatArray:
     return np.full(3, np.nan)
@@ -306,7 +310,7 @@ def plan(program: Program, limits: Limits, progress: object = None) -> Motion:
     ``progress``, when given, is called as ``progress(done, total)`` while
     the blocks' profiles are computed.
     """
-    from ruckig import InputParameter, Result, Ruckig, Trajectory
+    from ruckig import InputParameter, Result, Ruckig, RuckigError, Trajectory
 
     n = program.size
     if n == 0:
@@ -346,12 +350,24 @@ def plan(program: Program, limits: Limits, progress: object = None) -> Motion:
             phases[k, 0, 0] = dwell[k]
             continue
         inp.current_position, inp.current_velocity = [0.0], [en[k]]
-        inp.target_position, inp.target_velocity = [lengths[k]], [ex[k]]
-        inp.max_velocity = [max(feeds[k], en[k], ex[k])]
+        inp.target_position = [lengths[k]]
         inp.max_acceleration, inp.max_jerk = [accs[k]], [jerks[k]]
-        result = otg.calculate(inp, traj)
-        prof = traj.profiles[0][0]
-        if result != Result.Working or prof.brake.duration > 0.0 or prof.accel.duration > 0.0:
+        for lower in RETRY_LOWER:
+            # An exit speed at the feed cap to the last digit can be one ruckig refuses (it
+            # raises): the exit is lowered a little, and the next block enters at it.
+            inp.target_velocity = [ex[k]]
+            inp.max_velocity = [max(feeds[k], en[k], ex[k])]
+            try:
+                result = otg.calculate(inp, traj)
+            except RuckigError:
+                result = None
+            prof = traj.profiles[0][0]
+            if result == Result.Working and prof.brake.duration <= 0.0 >= prof.accel.duration:
+                break
+            ex[k] *= 1.0 - lower
+            if k + 1 < n:
+                en[k + 1] = min(en[k + 1], ex[k])
+        else:
             raise BallScrewInputError(
                 f"program line {int(program.line[k])}", f"{result}",
                 "a block ruckig can plan (please report this program)",
