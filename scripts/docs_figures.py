@@ -103,6 +103,8 @@ def web_pages() -> None:
         browser = p.chromium.launch(executable_path=chromium, headless=True, args=CHROMIUM_ARGS)
         page = browser.new_page(viewport={"width": 1280, "height": 900})
         page.goto(url)
+        # Generous waits: on a loaded machine the workers warm up and compute slowly.
+        page.set_default_timeout(180_000)
         page.wait_for_selector("body[data-revision]:not([data-revision='0'])")
         page.wait_for_timeout(600)  # the charts' last drawing after the first results
         shown = page.text_content("body") or ""
