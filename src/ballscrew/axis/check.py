@@ -711,8 +711,11 @@ def __getattr__(name: str) -> Any:
     return renamed(__name__, name, {"axis_check": run_check})
 
 
-def _tolerances(run: EnergyRun, notes: list[str]) -> tuple[float, float, float, float]:
-    """The case's tolerances of mass, process force, preload and ratings (shares, ±)."""
+def _tolerances(run: EnergyRun, notes: list[str]) -> tuple[float, float, float, float, bool]:
+    """The case's tolerances of mass, process force, preload and ratings (shares, ±).
+
+    The last item says whether the preload's is the default (the makers' drag-torque band).
+    """
     case, screw = run.case, run.case.screw
     check = case.check
     given = {k: check.get(f"{k}_tolerance") for k in ("mass", "force", "preload", "rating")}
@@ -735,8 +738,10 @@ def _tolerances(run: EnergyRun, notes: list[str]) -> tuple[float, float, float, 
         preload = drag_torque_tolerance(inside)[2]
         notes.append(
             f"preload tolerance +-{preload:.0%} (default: the makers' drag-torque band of grade "
-            f"C3 at the catalogue drag torque {torque:.3g} N*m, THK A-688 Table 13; give "
-            "check.preload_tolerance)"
+            f"C3 at the catalogue drag torque {torque:.3g} N*m, THK A-688 Table 13: a maker "
+            "sets the preload by that torque, which is proportional to it, and accepts the nut "
+            "within the band, so the preload is known to the same share; give "
+            "check.preload_tolerance, e.g. from the nut's measured drag torque)"
         )
     names = {"mass": "moving mass", "force": "process force", "rating": "load ratings"}
     missing = [k for k in names if given[k] is None]
@@ -745,7 +750,7 @@ def _tolerances(run: EnergyRun, notes: list[str]) -> tuple[float, float, float, 
         notes.append(f"no tolerance given for the {', '.join(names[k] for k in missing)}: "
                      f"taken as exact (give {keys})")  # fmt: skip
     return (float(given["mass"] or 0.0), float(given["force"] or 0.0), float(preload or 0.0),
-            float(given["rating"] or 0.0))  # fmt: skip
+            float(given["rating"] or 0.0), given["preload"] is None)  # fmt: skip
 
 
 def _with_uncertainty(
@@ -754,17 +759,23 @@ def _with_uncertainty(
 ) -> list[Criterion]:  # fmt: skip
     """Every row with a limit, with its P(NOT OK) and interval (:mod:`.uncertainty`)."""
     screw = run.case.screw
-    t_mass, t_force, t_pre, t_rating = _tolerances(run, notes)
+    t_mass, t_force, t_pre, t_rating, default_preload = _tolerances(run, notes)
     creep_torque = float(stiffness.get("friction_force_N", 0.0)) * screw.lead / (2.0 * math.pi)
-    sigma, origin = model_error(model, screw.nut, creep_torque)
-    notes.append(origin)
-    if math.isnan(sigma):
-        sigma = 0.0
-    d = draws(t_mass, t_force, t_pre, t_rating, sigma)
+    # The speed at which the cycle's friction heat is made (heat-weighted mean): which speed
+    # range the model's error is wanted in.
+    omega = np.abs(np.asarray(energy.cycle.screw_speed, dtype=float))
+    heat = np.abs(np.asarray(energy.cycle.friction_torque, dtype=float)) * omega
+    heat = heat * _weights(np.asarray(run.profile.time, dtype=float))
+    speed = float(rad_s_to_rpm(np.sum(heat * omega) / np.sum(heat))) if np.sum(heat) > 0 else None
+    error = model_error(model, screw.nut, creep_torque, speed)
+    notes.append(error.text)
+    sigma, bias = (0.0, 0.0) if math.isnan(error.sigma) else (error.sigma, error.bias)
+    d = draws(t_mass, t_force, t_pre, t_rating, sigma, friction_bias=bias)
     notes.append(
         f"uncertainty: Monte Carlo over {SAMPLES} draws (seed {SEED}): mass +-{t_mass:.0%}, "
         f"process force +-{t_force:.0%}, preload +-{t_pre:.0%}, load ratings +-{t_rating:.0%} "
-        f"(uniform), the model's friction x exp(N(0, {sigma:.3g})); the friction factor scales "
+        f"(uniform), the model's friction x exp({-bias:+.3g} + N(0, {sigma:.3g})), its bias "
+        "moving the median; the friction factor scales "
         "the heat and the motor's friction torque, not the preload's share of it; P(NOT OK) "
         "beside each verdict, 'OK (95 %)' when P <= 5 %, 'NOT OK (95 %)' when P >= 95 %, "
         "else 'undecided'"
@@ -772,6 +783,9 @@ def _with_uncertainty(
     process = np.asarray(run.profile.process_force, dtype=float)
     mass_part = force - process
     samples = _row_samples(run, energy, mass_part, process, turns, rows, d)
+    life = next((r for r in rows if r.name.startswith("fatigue life")), None)
+    if default_preload and t_pre > 0.0 and life is not None and life.name in samples:
+        _preload_effect(run, force, turns, life, t_pre, notes)
     out = []
     for row in rows:
         u = samples.get(row.name)
@@ -779,6 +793,24 @@ def _with_uncertainty(
             u = np.full(SAMPLES, row.utilisation)  # no uncertain input in its formula
         out.append(row if u is None else replace(row, uncertainty=judge(u)))
     return out
+
+
+def _preload_effect(
+    run: EnergyRun, force: FloatArray, turns: FloatArray, life: Criterion, t_pre: float,
+    notes: list[str],
+) -> None:  # fmt: skip
+    """A note: the fatigue life row's utilisation at the default preload band's two ends."""
+    if run.case.dynamic_load_rating is None or run.case.screw.nut == "single":
+        return
+    pre = run.case.screw.preload * np.array([1.0 - t_pre, 1.0 + t_pre])
+    f = np.broadcast_to(np.asarray(force, dtype=float), (2, np.size(force)))
+    low, high = _life_samples(run, f, pre, np.ones(2), turns, life)
+    notes.append(
+        f"the default preload band alone moves the fatigue life row's utilisation from "
+        f"{low:.3g} (preload -{t_pre:.0%}) to {high:.3g} (+{t_pre:.0%}), nominal "
+        f"{life.utilisation:.3g}: where the preload carries the load the life goes as about "
+        "the preload to the power -3, so this band is most of the life row's interval"
+    )
 
 
 def _row_samples(
