@@ -174,7 +174,7 @@ def draws(
         ratings=uniform(ratings),
         friction=np.asarray(
             np.exp(friction_sigma * rng.standard_normal(samples) - friction_bias), dtype=float
-        ),  # fmt: skip
+        ),
     )
 
 
