@@ -89,7 +89,15 @@ from .energy import CycleResult
 from .thermal import nut_length
 from .uncertainty import SAMPLES, SEED, VerdictUncertainty, draws, judge, model_error
 
-__all__ = ["CHECK_FROM", "AxisCheck", "Criterion", "check_inputs", "run_check", "verdict"]
+__all__ = [
+    "CHECK_FROM",
+    "AxisCheck",
+    "Criterion",
+    "check_inputs",
+    "life_utilisation",
+    "run_check",
+    "verdict",
+]
 
 DEFAULT_LOAD_FACTOR = 1.2
 """Load factor f_w of the life when the case gives none [-]: 1.2, where THK's normal
@@ -914,20 +922,43 @@ def _life_samples(
     """Required over computed life for each draw of forces, preload and rating."""
     case, screw = run.case, run.case.screw
     assert case.dynamic_load_rating is not None
-    if screw.nut == "single":
-        h1, h2 = np.maximum(f, 0.0), np.maximum(-f, 0.0)
-    else:
-        loaded, relieved = preloaded_loads(f, pre[:, None])
+    rpm = float(np.sum(turns)) / run.profile.duration * 60.0
+    return life_utilisation(
+        f, pre, case.dynamic_load_rating * kr, turns, float(row.limit or 0.0), rpm,
+        preloaded=screw.nut != "single",
+        load_factor=float(run.case.check.get("load_factor") or DEFAULT_LOAD_FACTOR),
+        reliability=float(case.check.get("reliability", 0.9)),
+    )  # fmt: skip
+
+
+def life_utilisation(
+    force: FloatArray, preload: FloatArray, rating: FloatArray, turns: FloatArray,
+    required_hours: float, speed_rpm: float, *, preloaded: bool, load_factor: float,
+    reliability: float = 0.9,
+) -> FloatArray:  # fmt: skip
+    r"""Required over computed L10 life of a cycle, one per draw [-] (ISO 3408-5 cl. 7).
+
+    ``force`` [N] is (draws, samples), the nut's axial force at each sample of
+    the cycle, ``turns`` (samples,) the screw turns made under each, ``preload``
+    [N] and ``rating`` [N] (draws,) the preload and :math:`C_a` of each draw.
+    A preloaded nut's halves carry :func:`~ballscrew.design.sizing.preloaded_loads`
+    (a single nut's flanks each one sign of the force), each half's cubic mean
+    load gives :math:`L = a_1 (C_a/(f_w F_m))^3 10^6` revolutions, the halves
+    in series; hours at ``speed_rpm``, the cycle's mean speed.
+    """
+    f = np.asarray(force, dtype=float)
+    if preloaded:
+        loaded, relieved = preloaded_loads(f, np.asarray(preload, dtype=float)[:, None])
         h1 = np.where(f >= 0.0, loaded, relieved)
         h2 = np.where(f >= 0.0, relieved, loaded)
-    ca = case.dynamic_load_rating * kr
-    f_w = float(run.case.check.get("load_factor") or DEFAULT_LOAD_FACTOR)
-    rel = float(case.check.get("reliability", 0.9))
-    revs = combined_life(nominal_life(ca, cubic_mean_load(h1, turns), rel, f_w),
-                         nominal_life(ca, cubic_mean_load(h2, turns), rel, f_w))  # fmt: skip
-    rpm = float(np.sum(turns)) / run.profile.duration * 60.0
-    hours = np.asarray(revs, dtype=float) / (60.0 * rpm)
-    return np.asarray(float(row.limit or 0.0) / hours, dtype=float)
+    else:
+        h1, h2 = np.maximum(f, 0.0), np.maximum(-f, 0.0)
+    revs = combined_life(nominal_life(rating, cubic_mean_load(h1, turns), reliability,
+                                      load_factor),
+                         nominal_life(rating, cubic_mean_load(h2, turns), reliability,
+                                      load_factor))  # fmt: skip
+    hours = np.asarray(revs, dtype=float) / (60.0 * speed_rpm)
+    return np.asarray(required_hours / hours, dtype=float)
 
 
 def _thermal_samples(
