@@ -41,6 +41,7 @@ from __future__ import annotations
 import math
 import warnings
 from dataclasses import dataclass
+from functools import partial
 
 import numpy as np
 
@@ -105,13 +106,13 @@ def _life(n: int, rng: np.random.Generator, truth_rng: np.random.Generator) -> C
                            rng.uniform(0.20, 0.45, n), rng.uniform(0.0, 0.15, n)])  # fmt: skip
     u0 = _log_uniform(rng, 0.3, 3.0, n)
     true_k = 1.0 + tol * truth_rng.uniform(-1.0, 1.0, (n, 4))
-    kw = {"preloaded": True, "load_factor": 1.0}
+    life = partial(life_utilisation, preloaded=True, load_factor=1.0)  # ISO 3408-5's own
     m = inertia[:, None] * _MASS
     f = process[:, None] * _PROCESS
     # Nominal hours at 1 rpm; the required life makes the nominal utilisation u0.
-    required = u0 / life_utilisation(m + f, preload, rating, _TURNS, 1.0, 1.0, **kw)
-    truth = life_utilisation(true_k[:, :1] * m + true_k[:, 1:2] * f, preload * true_k[:, 2],
-                             rating * true_k[:, 3], _TURNS, 1.0, 1.0, **kw) * required  # fmt: skip
+    required = u0 / life(m + f, preload, rating, _TURNS, 1.0, 1.0)
+    truth = life(true_k[:, :1] * m + true_k[:, 1:2] * f, preload * true_k[:, 2],
+                             rating * true_k[:, 3], _TURNS, 1.0, 1.0) * required  # fmt: skip
     # The check's draws: draws(t, ...) is 1 + t U with the same U for every t (one seeded
     # stream per input), so unit tolerances give U, and each case's factors are 1 + t U.
     unit = draws(1.0, 1.0, 1.0, 1.0, 0.0)
@@ -122,9 +123,14 @@ def _life(n: int, rng: np.random.Generator, truth_rng: np.random.Generator) -> C
         sl = slice(start, min(start + chunk, n))
         k = 1.0 + tol[sl, :, None] * streams[None, :, :]  # (cases, 4, draws)
         force = k[:, 0, :, None] * m[sl, None, :] + k[:, 1, :, None] * f[sl, None, :]
-        u = life_utilisation(force.reshape(-1, _TURNS.size),
-                             (preload[sl, None] * k[:, 2]).reshape(-1),
-                             (rating[sl, None] * k[:, 3]).reshape(-1), _TURNS, 1.0, 1.0, **kw)
+        u = life(
+            force.reshape(-1, _TURNS.size),
+            (preload[sl, None] * k[:, 2]).reshape(-1),
+            (rating[sl, None] * k[:, 3]).reshape(-1),
+            _TURNS,
+            1.0,
+            1.0,
+        )
         u = u.reshape(-1, SAMPLES) * required[sl, None]  # fmt: skip
         for j, row in enumerate(u, start):
             r = judge(row)
