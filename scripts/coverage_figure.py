@@ -1,4 +1,4 @@
-"""Draw docs/img/coverage_reliability.png: is the check's P(NOT OK) calibrated?
+"""Draw docs/img/coverage_reliability.png, the reliability diagram of the check's P(NOT OK).
 
     .venv/bin/python scripts/coverage_figure.py
 
