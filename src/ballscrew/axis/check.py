@@ -89,7 +89,15 @@ from .energy import CycleResult
 from .thermal import nut_length
 from .uncertainty import SAMPLES, SEED, VerdictUncertainty, draws, judge, model_error
 
-__all__ = ["CHECK_FROM", "AxisCheck", "Criterion", "check_inputs", "run_check", "verdict"]
+__all__ = [
+    "CHECK_FROM",
+    "AxisCheck",
+    "Criterion",
+    "check_inputs",
+    "life_utilisation",
+    "run_check",
+    "verdict",
+]
 
 DEFAULT_LOAD_FACTOR = 1.2
 """Load factor f_w of the life when the case gives none [-]: 1.2, where THK's normal
@@ -724,8 +732,11 @@ def __getattr__(name: str) -> Any:
     return renamed(__name__, name, {"axis_check": run_check})
 
 
-def _tolerances(run: EnergyRun, notes: list[str]) -> tuple[float, float, float, float]:
-    """The case's tolerances of mass, process force, preload and ratings (shares, ±)."""
+def _tolerances(run: EnergyRun, notes: list[str]) -> tuple[float, float, float, float, bool]:
+    """The case's tolerances of mass, process force, preload and ratings (shares, ±).
+
+    The last item says whether the preload's is the default (the makers' drag-torque band).
+    """
     case, screw = run.case, run.case.screw
     check = case.check
     given = {k: check.get(f"{k}_tolerance") for k in ("mass", "force", "preload", "rating")}
@@ -748,8 +759,10 @@ def _tolerances(run: EnergyRun, notes: list[str]) -> tuple[float, float, float, 
         preload = drag_torque_tolerance(inside)[2]
         notes.append(
             f"preload tolerance +-{preload:.0%} (default: the makers' drag-torque band of grade "
-            f"C3 at the catalogue drag torque {torque:.3g} N*m, THK A-688 Table 13; give "
-            "check.preload_tolerance)"
+            f"C3 at the catalogue drag torque {torque:.3g} N*m, THK A-688 Table 13: a maker "
+            "sets the preload by that torque, which is proportional to it, and accepts the nut "
+            "within the band, so the preload is known to the same share; give "
+            "check.preload_tolerance, e.g. from the nut's measured drag torque)"
         )
     names = {"mass": "moving mass", "force": "process force", "rating": "load ratings"}
     missing = [k for k in names if given[k] is None]
@@ -758,7 +771,7 @@ def _tolerances(run: EnergyRun, notes: list[str]) -> tuple[float, float, float, 
         notes.append(f"no tolerance given for the {', '.join(names[k] for k in missing)}: "
                      f"taken as exact (give {keys})")  # fmt: skip
     return (float(given["mass"] or 0.0), float(given["force"] or 0.0), float(preload or 0.0),
-            float(given["rating"] or 0.0))  # fmt: skip
+            float(given["rating"] or 0.0), given["preload"] is None)  # fmt: skip
 
 
 def _with_uncertainty(
@@ -771,17 +784,23 @@ def _with_uncertainty(
     as NOT OK, as in :func:`~.uncertainty.judge`).
     """
     screw = run.case.screw
-    t_mass, t_force, t_pre, t_rating = _tolerances(run, notes)
+    t_mass, t_force, t_pre, t_rating, default_preload = _tolerances(run, notes)
     creep_torque = float(stiffness.get("friction_force_N", 0.0)) * screw.lead / (2.0 * math.pi)
-    sigma, origin = model_error(model, screw.nut, creep_torque)
-    notes.append(origin)
-    if math.isnan(sigma):
-        sigma = 0.0
-    d = draws(t_mass, t_force, t_pre, t_rating, sigma)
+    # The speed at which the cycle's friction heat is made (heat-weighted mean): which speed
+    # range the model's error is wanted in.
+    omega = np.abs(np.asarray(energy.cycle.screw_speed, dtype=float))
+    heat = np.abs(np.asarray(energy.cycle.friction_torque, dtype=float)) * omega
+    heat = heat * _weights(np.asarray(run.profile.time, dtype=float))
+    speed = float(rad_s_to_rpm(np.sum(heat * omega) / np.sum(heat))) if np.sum(heat) > 0 else None
+    error = model_error(model, screw.nut, creep_torque, speed)
+    notes.append(error.text)
+    sigma, bias = (0.0, 0.0) if math.isnan(error.sigma) else (error.sigma, error.bias)
+    d = draws(t_mass, t_force, t_pre, t_rating, sigma, friction_bias=bias)
     notes.append(
         f"uncertainty: Monte Carlo over {SAMPLES} draws (seed {SEED}): mass +-{t_mass:.0%}, "
         f"process force +-{t_force:.0%}, preload +-{t_pre:.0%}, load ratings +-{t_rating:.0%} "
-        f"(uniform), the model's friction x exp(N(0, {sigma:.3g})); the friction factor scales "
+        f"(uniform), the model's friction x exp({-bias:+.3g} + N(0, {sigma:.3g})), its bias "
+        "moving the median; the friction factor scales "
         "the heat and the motor's friction torque, not the preload's share of it; P(NOT OK) "
         "beside each verdict, 'OK (95 %)' when P <= 5 %, 'NOT OK (95 %)' when P >= 95 %, "
         "else 'undecided'"
@@ -789,6 +808,9 @@ def _with_uncertainty(
     process = np.asarray(run.profile.process_force, dtype=float)
     mass_part = force - process
     samples = _row_samples(run, energy, mass_part, process, turns, rows, d)
+    life = next((r for r in rows if r.name.startswith("fatigue life")), None)
+    if default_preload and t_pre > 0.0 and life is not None and life.name in samples:
+        _preload_effect(run, force, turns, life, t_pre, notes)
     out = []
     fails = np.zeros(SAMPLES, dtype=bool)
     for row in rows:
@@ -799,6 +821,24 @@ def _with_uncertainty(
             fails |= np.isnan(u) | (u > 1.0)
         out.append(row if u is None else replace(row, uncertainty=judge(u)))
     return out, float(np.mean(fails))
+
+
+def _preload_effect(
+    run: EnergyRun, force: FloatArray, turns: FloatArray, life: Criterion, t_pre: float,
+    notes: list[str],
+) -> None:  # fmt: skip
+    """A note: the fatigue life row's utilisation at the default preload band's two ends."""
+    if run.case.dynamic_load_rating is None or run.case.screw.nut == "single":
+        return
+    pre = run.case.screw.preload * np.array([1.0 - t_pre, 1.0 + t_pre])
+    f = np.broadcast_to(np.asarray(force, dtype=float), (2, np.size(force)))
+    low, high = _life_samples(run, f, pre, np.ones(2), turns, life)
+    notes.append(
+        f"the default preload band alone moves the fatigue life row's utilisation from "
+        f"{low:.3g} (preload -{t_pre:.0%}) to {high:.3g} (+{t_pre:.0%}), nominal "
+        f"{life.utilisation:.3g}: where the preload carries the load the life goes as about "
+        "the preload to the power -3, so this band is most of the life row's interval"
+    )
 
 
 def _row_samples(
@@ -902,20 +942,43 @@ def _life_samples(
     """Required over computed life for each draw of forces, preload and rating."""
     case, screw = run.case, run.case.screw
     assert case.dynamic_load_rating is not None
-    if screw.nut == "single":
-        h1, h2 = np.maximum(f, 0.0), np.maximum(-f, 0.0)
-    else:
-        loaded, relieved = preloaded_loads(f, pre[:, None])
+    rpm = float(np.sum(turns)) / run.profile.duration * 60.0
+    return life_utilisation(
+        f, pre, case.dynamic_load_rating * kr, turns, float(row.limit or 0.0), rpm,
+        preloaded=screw.nut != "single",
+        load_factor=float(run.case.check.get("load_factor") or DEFAULT_LOAD_FACTOR),
+        reliability=float(case.check.get("reliability", 0.9)),
+    )  # fmt: skip
+
+
+def life_utilisation(
+    force: FloatArray, preload: FloatArray, rating: FloatArray, turns: FloatArray,
+    required_hours: float, speed_rpm: float, *, preloaded: bool, load_factor: float,
+    reliability: float = 0.9,
+) -> FloatArray:  # fmt: skip
+    r"""Required over computed L10 life of a cycle, one per draw [-] (ISO 3408-5 cl. 7).
+
+    ``force`` [N] is (draws, samples), the nut's axial force at each sample of
+    the cycle, ``turns`` (samples,) the screw turns made under each, ``preload``
+    [N] and ``rating`` [N] (draws,) the preload and :math:`C_a` of each draw.
+    A preloaded nut's halves carry :func:`~ballscrew.design.sizing.preloaded_loads`
+    (a single nut's flanks each one sign of the force), each half's cubic mean
+    load gives :math:`L = a_1 (C_a/(f_w F_m))^3 10^6` revolutions, the halves
+    in series; hours at ``speed_rpm``, the cycle's mean speed.
+    """
+    f = np.asarray(force, dtype=float)
+    if preloaded:
+        loaded, relieved = preloaded_loads(f, np.asarray(preload, dtype=float)[:, None])
         h1 = np.where(f >= 0.0, loaded, relieved)
         h2 = np.where(f >= 0.0, relieved, loaded)
-    ca = case.dynamic_load_rating * kr
-    f_w = float(run.case.check.get("load_factor") or DEFAULT_LOAD_FACTOR)
-    rel = float(case.check.get("reliability", 0.9))
-    revs = combined_life(nominal_life(ca, cubic_mean_load(h1, turns), rel, f_w),
-                         nominal_life(ca, cubic_mean_load(h2, turns), rel, f_w))  # fmt: skip
-    rpm = float(np.sum(turns)) / run.profile.duration * 60.0
-    hours = np.asarray(revs, dtype=float) / (60.0 * rpm)
-    return np.asarray(float(row.limit or 0.0) / hours, dtype=float)
+    else:
+        h1, h2 = np.maximum(f, 0.0), np.maximum(-f, 0.0)
+    revs = combined_life(nominal_life(rating, cubic_mean_load(h1, turns), reliability,
+                                      load_factor),
+                         nominal_life(rating, cubic_mean_load(h2, turns), reliability,
+                                      load_factor))  # fmt: skip
+    hours = np.asarray(revs, dtype=float) / (60.0 * speed_rpm)
+    return np.asarray(required_hours / hours, dtype=float)
 
 
 def _thermal_samples(
