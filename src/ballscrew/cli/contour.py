@@ -44,11 +44,11 @@ __all__ = ["contour_command"]
     default=None,
     help="Coulomb friction of each axis' guideways, e.g. '40 N' (default: left out).",
 )
-@click.option("--pre-rolling", "pre_rolling", default=None,
+@click.option("--pre-rolling", "pre_rolling", default=None, metavar="LENGTH",
               help="Pre-rolling length of the screws' drag, e.g. '10 um' (default: the "
               "case's [axis] pre_rolling_length, else 5 um).")  # fmt: skip
 @click.option("--rigid", is_flag=True, help="One-mass axes (no spring between motor and table).")
-@click.option("--max-samples", type=click.IntRange(min=1), default=None,
+@click.option("--max-samples", type=click.IntRange(min=1), default=None, metavar="N",
               help="The most samples simulated (all circles and reversals, both axes), "
               "estimated before the run: 2 pi R/(v T_s) per revolution; default "
               "4,000,000 (about 40 s of CPU).")  # fmt: skip

@@ -41,19 +41,20 @@ __all__ = ["export_friction_command"]
     default=None,
     help="Motor torque constant K_t, e.g. '1.2 N*m/A', for a frict-comp --drive-unit in current.",
 )
-@click.option("--axis", "axis_name", default=None,
+@click.option("--axis", "axis_name", default=None, metavar="NAME",
               help="Axis of a controller table, e.g. 'X': the lincurve instance x-friction, "
               "TwinCAT's kopf.log_achs_name, the CODESYS block FB_Friction<axis>.")  # fmt: skip
 @click.option(
     "--axis-number",
     default=None,
+    metavar="N",
     type=int,
     help="frict-comp: the logical axis number (kopf.achs_nr) of the start-up list.",
 )
-@click.option("--drive-unit", default=None,
+@click.option("--drive-unit", default=None, metavar="UNIT",
               help="frict-comp: the unit of the drive's torque (act_torque), e.g. '0.1 % of "
               "3.2 N*m' (per thousand of rated torque), '1 mA' or '0.001 N*m'.")  # fmt: skip
-@click.option("--cnc-build", default=None,
+@click.option("--cnc-build", default=None, metavar="VERSION",
               help="frict-comp: the TwinCAT CNC build, e.g. 'V3.1.3132.0' (from it on the "
               "table is written with decimals; integers before).")  # fmt: skip
 @click.option("--append", is_flag=True,
