@@ -119,3 +119,24 @@ def test_check_statuses_and_the_worst_verdict() -> None:
     assert verdict([fine]) == "OK" and fast.margin == -500.0
     nan = Check("x", "sampling", math.nan, 10.0, "x", True, "", 2.0)
     assert nan.status == "NOT OK"
+
+
+def test_a_poorly_damped_loop_is_drawn_with_check(
+    capsys: pytest.CaptureFixture[str], tmp_path: Path
+) -> None:
+    # At 1 ms the tuned velocity loop keeps a phase margin between 0 and 30 deg: it runs,
+    # poorly damped. The circle is drawn, a warning names the margin, the JSON says CHECK.
+    out_json = tmp_path / "c.json"
+    code, _, err = run([*BASE, "--radius", "10 mm", "--feed", "1 m/min", "--direction", "CCW",
+                        "--sampling-time", "1 ms", "--json", str(out_json)], capsys)  # fmt: skip
+    assert code == 0, err
+    doc = json.loads(out_json.read_text())
+    assert doc["verdict"] == "CHECK" and len(doc["circles"]) == 2
+    low = [c for c in doc["checks"] if c["verdict"] == "CHECK"]
+    assert low and all(0 < c["value"] < 30 for c in low if c["unit"] == "deg")
+    assert "warning: CHECK x: velocity-loop phase margin" in err
+
+
+def test_a_zero_position_gain_is_refused(capsys: pytest.CaptureFixture[str]) -> None:
+    code, _, err = run([*BASE, "--kv", "0 1/s"], capsys)
+    assert code == 2 and "--kv" in err and "internal error" not in err, err

@@ -579,6 +579,9 @@ def run_contour(
             raise BallScrewInputError(flag, f"{value:g} {unit}", "a magnitude of 0 or more: "
                                       "the friction opposes the motion either way, its sign "
                                       "is the motion's")  # fmt: skip
+    if gains is None and not (math.isfinite(kv) and kv > 0.0):
+        raise BallScrewInputError("--kv", f"{kv:g} 1/s", "a positive position gain, e.g. "
+                                  "'40 1/s' (machine tools run 15 to 70 1/s)")  # fmt: skip
     runs = len(directions) * (2 if compensate else 1)
     kv_low = min(g.kv for g in gains) if gains is not None else kv
     ts_run = gains[0].sampling_time if gains is not None else sampling_time

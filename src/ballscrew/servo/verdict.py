@@ -213,7 +213,7 @@ def check_size(samples: int, limit: int = MAX_SAMPLES) -> None:
     if samples > limit:
         raise BallScrewInputError(
             "simulated samples", f"{samples:,} (estimated)",
-            f"at most {limit:,}: the circles' revolutions are 2 pi R/(v T_s) samples each; "
-            "lower --radius, raise --feed, lengthen --sampling-time, run one --direction, "
-            "or raise the limit with --max-samples",
+            f"at most {limit:,}: each circle is a lead-in of 15/k_v and a revolution of "
+            "2 pi R/(v T_s) samples; lower --radius, raise --feed or --kv, lengthen "
+            "--sampling-time, run one --direction, or raise the limit with --max-samples",
         )  # fmt: skip
