@@ -60,16 +60,18 @@ chromium:
 	  echo "note: no chromium and no apt-get: the browser tests are skipped (they fail on CI)"; \
 	fi
 
-# The LinuxCNC friction tables are loaded in a real HAL session (halrun) by the tests;
-# test installs Debian's linuxcnc-uspace when halrun is missing, like chromium.
+# The LinuxCNC friction tables are loaded in a real HAL session (halrun) by the tests, and
+# LinuxCNC's interpreter rs274 reads part programs (ballscrew program --reader rs274);
+# test installs Debian's linuxcnc-uspace when either is missing, like chromium, without
+# the recommended packages (they pull a real-time kernel; both tools are in the package).
 linuxcnc:
-	@if command -v halrun >/dev/null 2>&1; then :; \
+	@if command -v halrun >/dev/null 2>&1 && command -v rs274 >/dev/null 2>&1; then :; \
 	elif command -v apt-get >/dev/null 2>&1; then \
-	  echo "installing Debian's linuxcnc-uspace for the HAL tests"; \
+	  echo "installing Debian's linuxcnc-uspace for the HAL and rs274 tests"; \
 	  $(SUDO) apt-get -o DPkg::Lock::Timeout=600 update -qq && \
 	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 install -y -qq --no-install-recommends linuxcnc-uspace >/dev/null; \
 	else \
-	  echo "note: no halrun and no apt-get: the HAL tests are skipped (they fail on CI)"; \
+	  echo "note: no halrun/rs274 and no apt-get: their tests are skipped (they fail on CI)"; \
 	fi
 
 clean:

@@ -11,9 +11,9 @@ speed and exponent, viscous coefficient, each with its fit error.
 import matplotlib.pyplot as plt
 import numpy as np
 
-from ballscrew.fit.controller import stribeck_torque
-from ballscrew.fit.export import export_friction
 from ballscrew.io.case import load_case
+from ballscrew.servo.controller import stribeck_torque
+from ballscrew.servo.export import export_friction
 
 case = load_case(None)  # the bundled study case
 speeds = np.geomspace(0.1, 300.0, 40)  # rad/s, mirrored to negative speeds

@@ -17,10 +17,10 @@ import numpy as np
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
-from ballscrew.fit.friction_map import friction_map
 from ballscrew.io.case import load_case
 from ballscrew.kinematics import rad_s_to_rpm
 from ballscrew.report.plotting import figure_bytes
+from ballscrew.servo.friction_map import friction_map
 
 
 def draw() -> Figure:

@@ -1,7 +1,8 @@
 """Module paths that moved, kept importable for one release with a DeprecationWarning.
 
 Code written against an older layout (``import ballscrew.sizing``, ``from
-ballscrew.case import load_case``) keeps working: a finder on ``sys.meta_path``
+ballscrew.case import load_case``, ``from ballscrew.fit.friction_map import
+friction_map``) keeps working: a finder on ``sys.meta_path``
 answers for the old name with the module at its new place, and warns once per
 name. The aliases are removed in the release after the one that moved them
 (see CHANGELOG.md).
@@ -21,6 +22,10 @@ from typing import Any
 __all__ = ["MOVED", "install", "renamed"]
 
 MOVED: dict[str, str] = {
+    # 0.4.0: friction for controllers joined the servo wing (fit/ is the measurements')
+    "fit.controller": "servo.controller",
+    "fit.export": "servo.export",
+    "fit.friction_map": "servo.friction_map",
     # 0.3.0: the design rules and the plumbing left the package's top
     "ratings": "design.ratings",
     "sizing": "design.sizing",
@@ -41,7 +46,7 @@ MOVED: dict[str, str] = {
     "thermal": "axis.thermal",
     "axis_setup": "axis.setup",
     "calibration": "fit.calibration",
-    "controller": "fit.controller",
+    "controller": "servo.controller",
     "validation": "study.validation",
 }
 """Old module name below ``ballscrew`` -> its place now."""

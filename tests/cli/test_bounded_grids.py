@@ -12,7 +12,7 @@ import time
 import pytest
 
 import ballscrew.io.resources as resources
-from ballscrew.fit.friction_map import MAX_MAP_POINTS
+from ballscrew.servo.friction_map import MAX_MAP_POINTS
 from cli_runner import run
 
 

@@ -66,7 +66,7 @@ COMMANDS = {
                  "{out}/report"],
     "study": ["study", "--out", "{out}/report"],
 }  # fmt: skip
-EXTRA = {"program": "gcodeparser", "contour": "control", "select": "pymoo", "sweep": "xarray"}
+EXTRA = {"program": "ruckig", "contour": "control", "select": "pymoo", "sweep": "xarray"}
 SLOW = {"select", "sweep", "study"}
 
 

@@ -11,7 +11,7 @@ from scipy.integrate import solve_ivp
 
 from ballscrew import friction_torque, reference_screw
 from ballscrew.errors import BallScrewInputError
-from ballscrew.fit.controller import (
+from ballscrew.servo.controller import (
     coulomb_viscous,
     fit_form,
     lugre_rate,
@@ -166,7 +166,7 @@ def test_every_table_side_quantity_follows_the_lead() -> None:
     p = {"coulomb_torque": 0.3, "static_torque": 0.5, "stribeck_speed": 2.0,
          "stribeck_exponent": 1.3, "viscous_coefficient": 1e-3, "bristle_stiffness": 3000.0,
          "bristle_damping": 5.0}  # fmt: skip
-    from ballscrew.fit.controller import FrictionForm
+    from ballscrew.servo.controller import FrictionForm
 
     lead = 0.005
     k = 2 * math.pi / lead

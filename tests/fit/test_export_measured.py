@@ -11,10 +11,10 @@ import pytest
 
 from ballscrew import friction_torque
 from ballscrew.errors import BallScrewInputError
-from ballscrew.fit.controller import MOTOR_SIDE, stribeck_torque
-from ballscrew.fit.export import export_friction
 from ballscrew.io.case import Case, default_case_path, load_case, parse_case
 from ballscrew.io.measured import MeasuredCurve
+from ballscrew.servo.controller import MOTOR_SIDE, stribeck_torque
+from ballscrew.servo.export import export_friction
 from cli_runner import run
 
 CASE = load_case(None)

@@ -18,10 +18,10 @@ from scipy.io import loadmat
 from ballscrew import friction_torque
 from ballscrew.axis.energy import reverse_efficiency
 from ballscrew.errors import BallScrewInputError
-from ballscrew.fit.friction_map import LoadForm, fit_load_form, friction_map, load_form
 from ballscrew.io.case import load_case
 from ballscrew.io.numbers import significant_digits
 from ballscrew.report.friction_files import FORMATS, MAP_DIGITS, write_map
+from ballscrew.servo.friction_map import LoadForm, fit_load_form, friction_map, load_form
 from cli_runner import run
 
 CASE = load_case(None)  # the bundled study case

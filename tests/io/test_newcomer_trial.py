@@ -156,7 +156,7 @@ def test_a_vertical_axis_either_way_is_allowed() -> None:
 def test_export_friction_names_why_a_range_from_zero_is_refused() -> None:
     # '0..15 m/min:6' has 5 speeds above 0 (3 to 15 m/min): it was refused as not
     # "3 or more positive speeds"; what is wrong is the 0 (a log scale, both directions)
-    from ballscrew.fit.export import log_speeds
+    from ballscrew.servo.export import log_speeds
 
     with pytest.raises(BallScrewInputError) as info:
         log_speeds("0..15 m/min:6", 0.005, notes=[])

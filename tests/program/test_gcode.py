@@ -21,9 +21,12 @@ def test_blocks_modal_words_comments_and_numbers() -> None:
     np.testing.assert_allclose(p.end[-2], [0.020, 0.0, -0.001])
     assert p.feed[1] == pytest.approx(300e-3 / 60)
     assert p.dwell[-1] == 0.5
-    text = " ".join(p.notes)
-    for told in ("%", "O (program number", "M3", "S (spindle", "after M2/M30"):
-        assert told in text  # never skipped silently
+    # Never skipped silently: every word not run is kept with its line, and told in one line.
+    assert [(s.word, s.line) for s in p.skipped] == [("%", 1), ("O", 2), ("S", 8), ("M3", 8)]
+    assert p.notes[0] == (
+        "skipped, no motion of the feed axes: % (line 1), O (line 2), S (line 8), M3 (line 8)"
+    )
+    assert any("line 10 and on, after M2/M30: not run" in n for n in p.notes)
 
 
 def test_r_and_ijk_arcs_agree() -> None:
@@ -56,16 +59,16 @@ def test_inch_is_millimetres_times_25_4() -> None:
 @pytest.mark.parametrize(
     ("text", "line", "word"),
     [
-        ("G1 X1 F100\nG81 X1 Y1 Z-2 R1\n", 2, "G81"),  # canned cycle
+        ("G1 X1 F100\nG84 X1 Y1 Z-2 R1\n", 2, "G84"),  # a tapping cycle
         ("G1 X1 F100\n#1=5\n", 2, "#1=5"),  # a variable
         ("G1 X1 F100\nG1 X[1+2]\n", 2, "X"),  # an expression
-        ("G0 X1\nG43 H1 Z5\n", 2, "G43"),  # tool length offset
-        ("G0 X1\nG91.1\n", 2, "G91.1"),  # a decimal code gcodeparser would truncate
-        ("G0 X1\nM6\n", 2, "M6"),  # a tool change moves the axes
+        ("G0 X1\nG43 H1 Z5\n", 2, "H1"),  # a tool length offset without a tool table
+        ("G0 X1\nG64.1\n", 2, "G64.1"),  # a decimal code not read
+        ("G0 X1\nM6\n", 2, "M6"),  # a tool change without a tool change time
         ("G0 X5\nG1 X10\n", 2, "G1"),  # a feed move before any F
         ("G1 X0 Y0 F100\nG2 X10 Y0.5 I5 J0\n", 2, "G2"),  # end point off the arc
         ("G1 X1 A30 F100\n", 1, "A30"),  # a rotary axis
-        ("X1\n", 1, "X/Y/Z"),  # a move before any motion code
+        ("X1\n", 1, "X1"),  # a move before any motion code
         ("G1 X1 F100 (open comment\n", 1, "(open comment"),
     ],
 )

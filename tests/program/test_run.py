@@ -185,7 +185,7 @@ def test_the_command_writes_json_and_csv(
     )  # fmt: skip
     assert code == 0, err
     assert "friction share" in out
-    assert "note: M8" in err
+    assert "note: skipped, no motion of the feed axes: M8 (line 2)" in err
     doc = json.loads((tmp_path / "r.json").read_text("utf-8"))
     assert set(doc["axes"]) == {"X", "Y", "Z"} and doc["blocks"] == 3
     header = (tmp_path / "t.csv").read_text("utf-8").splitlines()[0]

@@ -305,7 +305,16 @@ def _sinumerik_machine() -> Any:
         pytest.skip("the machine file has no dialect, work offsets or tool change time yet")
     offsets = dict(machine.offsets)
     offsets[57] = {"X": 0.100, "Y": 0.050, "Z": -0.300}  # the part zero, machine coordinates
-    return dataclasses.replace(machine, dialect="sinumerik", offsets=offsets, tool_change_time=4.0)
+    more: dict[str, Any] = {}
+    if "rotary" in names:  # a rotary table B: 20 rev/min, 1000 deg/s^2, 10 000 deg/s^3
+        from ballscrew.io.machine import RotaryAxis
+
+        turn = 2 * math.pi
+        more["rotary"] = {**machine.rotary, "B": RotaryAxis("B", 20 * turn / 60,
+                                                            math.radians(1000),
+                                                            math.radians(10_000))}  # fmt: skip
+    return dataclasses.replace(machine, dialect="sinumerik", offsets=offsets, tool_change_time=4.0,
+                               **more)  # fmt: skip
 
 
 def _reads(text: str, machine: Any = None) -> bool:
@@ -385,6 +394,14 @@ def test_the_machine_reads_the_production_program_with_its_rotary_move() -> None
             pytest.skip(f"the reader does not read a {feature} yet")
     p = read_program(PRODUCTION, machine=machine)
     assert "B" in p.axes
+    # And the whole program runs on the machine: the B move timed, left out of the energy.
+    from ballscrew.program import run_program
+
+    result = run_program(machine, p)
+    assert set(result.axes) == {"X", "Y", "Z"}
+    b = np.flatnonzero(p.line == 30)  # N270 B45
+    assert b.size and p.rotary_end is not None
+    assert math.degrees(p.rotary_end[b[-1], 1]) == pytest.approx(45.0)
 
 
 _PIECES = [

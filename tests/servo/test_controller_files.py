@@ -16,7 +16,6 @@ import numpy as np
 import pytest
 
 from ballscrew.errors import BallScrewInputError
-from ballscrew.fit.friction_map import friction_map
 from ballscrew.io.case import load_case
 from ballscrew.report.controller_tables import (
     TABLE_WRITERS,
@@ -26,6 +25,7 @@ from ballscrew.report.controller_tables import (
 )
 from ballscrew.report.friction_files import c_header, write_map
 from ballscrew.report.friction_fmu import find_compiler, fmi_platform, fmu_build, fmu_bytes
+from ballscrew.servo.friction_map import friction_map
 from ballscrew.servo.tables import DriveUnit, controller_table
 from shared import ROOT
 

@@ -35,6 +35,7 @@ def test_the_bundled_machine_is_the_example_machine() -> None:
         )  # fmt: skip
         assert b.case.screw == a.case.screw and b.case.axis == a.case.axis
         assert b.case.motor == a.case.motor and b.case.thermal == a.case.thermal
+    assert bundled.drive == example.drive
 
 
 def test_the_api_gives_the_librarys_numbers(client: TestClient) -> None:
@@ -100,6 +101,8 @@ def test_the_page_runs_a_program_in_the_browser() -> None:
         page.wait_for_selector('#program_table tr[data-quantity="screw friction [J]"]')
         row = page.locator('#program_table tr[data-quantity="reversals"] td').all_text_contents()
         assert row[0] == "reversals" and len(row) == 4
+        copper = page.locator('#program_table tr[data-quantity="copper loss [J]"] td')
+        assert all(float(v) > 0 for v in copper.all_text_contents()[1:])  # the example's motors
         assert "blocks" in (page.text_content("#program_status") or "")
         page.fill("#program_text", "G1 X10 F100\nG81 Z-5 R2\n")
         page.click("#program_run")

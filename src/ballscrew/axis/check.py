@@ -197,6 +197,9 @@ class AxisCheck:
     thermal: dict[str, Any] = field(default_factory=dict)
     inputs: dict[str, Any] = field(default_factory=dict)
     """What the verdicts were computed from (:func:`check_inputs`); the face adds the command."""
+    p_not_ok: float | None = None
+    """The probability that one row or more is NOT OK, over the same draws as the rows' (None
+    when the Monte Carlo was not drawn)."""
 
     @property
     def verdict(self) -> str:
@@ -220,6 +223,7 @@ class AxisCheck:
             "case": self.title,
             "model": self.model,
             "verdict": self.verdict,
+            "p_not_ok": self.p_not_ok,
             "not_checked": self.not_checked,
             "criteria": [c.as_dict() for c in self.criteria],
             "life": self.life,
@@ -253,7 +257,11 @@ def _span(run: EnergyRun, notes: list[str]) -> float:
 
 
 def run_check(
-    run: EnergyRun, model: str | None = None, *, draws_when_failing: bool = True
+    run: EnergyRun,
+    model: str | None = None,
+    *,
+    draws_when_failing: bool = True,
+    draws: bool = True,
 ) -> AxisCheck:
     """Every criterion of the axis over ``run``'s cycle for ``model`` (module docstring).
 
@@ -262,7 +270,9 @@ def run_check(
     ``draws_when_failing=False`` it is left out when a row already fails at its
     nominal value (the verdict, every row's value and the binding row are the
     same; no row carries an uncertainty): ``ballscrew select`` rejects such a
-    candidate without drawing. Raises
+    candidate without drawing. With ``draws=False`` it is never drawn
+    (``ballscrew program``: a long program's load spectrum makes the draws
+    cost seconds an axis). Raises
     :class:`~ballscrew.errors.BallScrewInputError` naming the field when the
     stroke does not fit between the supports or a motor is given without its
     rotor inertia, and the heat balance's error when ``run`` kept one
@@ -314,13 +324,16 @@ def run_check(
         "axial loads: inertia, gravity and the process force of the move; no guideway "
         "friction (not in the case)"
     )
-    if draws_when_failing or all(r.verdict != "NOT OK" for r in rows):
-        rows = _with_uncertainty(run, name, energy, force, turns, rows, stiffness, notes)
+    p_any: float | None = None
+    if not draws:
+        notes.append("uncertainty: not drawn (the verdicts of the nominal values)")
+    elif draws_when_failing or all(r.verdict != "NOT OK" for r in rows):
+        rows, p_any = _with_uncertainty(run, name, energy, force, turns, rows, stiffness, notes)
     else:
         notes.append("uncertainty: not drawn (a row fails at its nominal value)")
     marked = [f"{a.field} = {a.value} ({a.reason})" for a in case.assumptions]
     return AxisCheck(case.title, name, rows, marked + list(run.assumptions) + notes, life,
-                     stiffness, motor, thermal, check_inputs(run, name))  # fmt: skip
+                     stiffness, motor, thermal, check_inputs(run, name), p_any)  # fmt: skip
 
 
 def check_inputs(run: EnergyRun, model: str) -> dict[str, Any]:
@@ -751,8 +764,12 @@ def _tolerances(run: EnergyRun, notes: list[str]) -> tuple[float, float, float, 
 def _with_uncertainty(
     run: EnergyRun, model: str, energy: ModelEnergy, force: FloatArray, turns: FloatArray,
     rows: list[Criterion], stiffness: dict[str, Any], notes: list[str],
-) -> list[Criterion]:  # fmt: skip
-    """Every row with a limit, with its P(NOT OK) and interval (:mod:`.uncertainty`)."""
+) -> tuple[list[Criterion], float]:  # fmt: skip
+    """Every row with a limit, with its P(NOT OK) and interval (:mod:`.uncertainty`).
+
+    And the probability that one row or more is NOT OK in the same draw (a NaN counts
+    as NOT OK, as in :func:`~.uncertainty.judge`).
+    """
     screw = run.case.screw
     t_mass, t_force, t_pre, t_rating = _tolerances(run, notes)
     creep_torque = float(stiffness.get("friction_force_N", 0.0)) * screw.lead / (2.0 * math.pi)
@@ -773,12 +790,15 @@ def _with_uncertainty(
     mass_part = force - process
     samples = _row_samples(run, energy, mass_part, process, turns, rows, d)
     out = []
+    fails = np.zeros(SAMPLES, dtype=bool)
     for row in rows:
         u = samples.get(row.name)
         if u is None and row.utilisation is not None:
             u = np.full(SAMPLES, row.utilisation)  # no uncertain input in its formula
+        if u is not None:
+            fails |= np.isnan(u) | (u > 1.0)
         out.append(row if u is None else replace(row, uncertainty=judge(u)))
-    return out
+    return out, float(np.mean(fails))
 
 
 def _row_samples(

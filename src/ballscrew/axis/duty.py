@@ -29,6 +29,7 @@ from ..errors import BallScrewInputError, FloatArray
 from ..io.case import Case
 from ..io.files import read_input_text
 from ..kinematics import rad_s_to_rpm
+from .drive import DriveSpec, MotorConstants, drive_energy
 from .energy import (
     Axis,
     CycleResult,
@@ -82,10 +83,15 @@ def profile_from_move(move: dict[str, float], cycles: int) -> Profile:
         raise BallScrewInputError("--move, --cycles", exc.value, exc.allowed) from None
 
 
-def profile_from_file(path: str, cycles: int) -> Profile:
-    """A trajectory CSV (units in the header) repeated ``cycles`` times."""
+def profile_from_file(path: str, cycles: int, standstill_speed: float | None = None) -> Profile:
+    """A trajectory CSV (units in the header) repeated ``cycles`` times.
+
+    ``standstill_speed`` [m/s]: the width of the friction's sign near rest
+    (:func:`~ballscrew.axis.motion.read_trajectory`; None: from the noise of the file's
+    positions).
+    """
     text = read_input_text("--profile", path)
-    one = read_trajectory(text, path)
+    one = read_trajectory(text, path, standstill_speed)
     return chain(*([one] * cycles))
 
 
@@ -186,13 +192,30 @@ class EnergyRun:
         last = next(reversed(self.results.values()), None)
         return [] if last is None else list(last.cycle.speed_warnings)
 
+    def motor_losses(self, cycle: CycleResult) -> dict[str, Any]:
+        """The motor's copper and iron loss over the cycles [J] (:mod:`.drive`).
+
+        None where ``[motor]`` lacks the constant, and ``motor_losses_left_out`` says
+        which; the drive and the DC link belong to a machine (``ballscrew program``).
+        """
+        e = drive_energy(self.profile.time, cycle.motor_torque, cycle.motor_speed,
+                         MotorConstants.from_case(self.case.motor), DriveSpec(),
+                         name="the case")  # fmt: skip
+        return {
+            "copper_loss_J": e.copper_loss,
+            "motor_iron_loss_J": e.iron_loss,
+            "motor_losses_left_out": [n for n in e.left_out
+                                      if n.startswith(("copper", "motor iron"))],
+        }  # fmt: skip
+
     def as_dict(self) -> dict[str, Any]:
         """The JSON document of ``ballscrew energy --json``: the first model at the top.
 
         Without the package's version, which the JSON writer adds
         (:func:`ballscrew.report.outputs.result_json`).
         """
-        models = {name: r.as_dict() for name, r in self.results.items()}
+        models = {name: r.as_dict() | self.motor_losses(r.cycle)
+                  for name, r in self.results.items()}  # fmt: skip
         first_name = next(iter(models))
         return {
             "case": self.case.title,

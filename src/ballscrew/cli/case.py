@@ -239,10 +239,24 @@ def _check_rows(case: Any) -> list[tuple[str, str, str]]:
 
     c = case.check
     rows = []
-    for key, value in case.motor.items():
-        rpm = key == "rated_speed"
-        shown, unit = (float(rad_s_to_rpm(value)), "rpm") if rpm else (float(value), "N*m")
-        rows.append(("motor", key.replace("_", " "), f"{num(shown)} {unit}"))
+    m = case.motor
+    for key in ("rated_torque", "peak_torque", "rated_speed", "torque_constant",
+                "torque_constant_at_rated_speed"):  # fmt: skip
+        if key in m:
+            rpm = key == "rated_speed"
+            unit = "rpm" if rpm else "N*m/A" if key.startswith("torque_constant") else "N*m"
+            shown = float(rad_s_to_rpm(m[key])) if rpm else float(m[key])
+            rows.append(("motor", key.replace("_", " "), f"{num(shown)} {unit}"))
+    if "torque_constant" not in m:
+        rows.append(("motor", "torque constant", "none (copper loss not computed)"))
+    rows.append(("motor", "winding resistance",
+                 "none (copper loss not computed)" if "winding_resistance" not in m
+                 else f"{num(m['winding_resistance'])} ohm, {m['resistance_kind']}"
+                 + (" (line to line: phase = half)" if m["resistance_kind"] == "terminal"
+                    else "")))  # fmt: skip
+    if "iron_loss" in m:
+        unit = "N*m" if m["iron_loss_kind"] == "torque" else "W at the rated speed"
+        rows.append(("motor", "iron and friction loss", f"{num(m['iron_loss'])} {unit}"))
     life = c.get("required_life")
     rows += [
         ("check", "required life",

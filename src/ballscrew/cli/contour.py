@@ -44,7 +44,7 @@ __all__ = ["contour_command"]
     default=None,
     help="Coulomb friction of each axis' guideways, e.g. '40 N' (default: left out).",
 )
-@click.option("--pre-rolling", "pre_rolling", default=None, metavar="LENGTH",
+@click.option("--pre-rolling", "pre_rolling", default=None,
               help="Pre-rolling length of the screws' drag, e.g. '10 um' (default: the "
               "case's [axis] pre_rolling_length, else 5 um).")  # fmt: skip
 @click.option("--rigid", is_flag=True, help="One-mass axes (no spring between motor and table).")

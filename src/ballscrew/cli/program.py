@@ -10,7 +10,11 @@ from ..io.files import read_input_text
 from ..io.numbers import text as num
 from .common import folder_option, json_option, progress, stdout, write_json, write_report, writing
 
-__all__ = ["program_command"]
+__all__ = ["NOT_OK_STATUS", "program_command"]
+
+NOT_OK_STATUS = 3
+"""Exit status of a program run whose check finds an axis NOT OK (2: input refused,
+1: internal error, as every command)."""
 
 
 @click.command("program")
@@ -21,14 +25,34 @@ __all__ = ["program_command"]
 @json_option("Write the results as JSON to FILE ('-' for standard output).")
 @click.option("--csv", "csv_file", default=None,
               help="Write the time series (every axis, units in the header) to FILE.")  # fmt: skip
+@click.option("--reader", type=click.Choice(["auto", "builtin", "rs274"]), default="auto",
+              show_default=True,
+              help="Who reads the program: the built-in reader, LinuxCNC's rs274, or auto "
+              "(the built-in reader; rs274 when it refuses and rs274 is on the PATH).")  # fmt: skip
+@click.option("--tool-table", "tool_table", default=None,
+              type=click.Path(exists=True, dir_okay=False),
+              help="A LinuxCNC tool table for rs274 (lengths, diameters in inches).")  # fmt: skip
 def program_command(
     program_file: str,
     machine_file: str,
     out_dir: str | None,
     json_file: str | None,
     csv_file: str | None,
-) -> None:
+    reader: str,
+    tool_table: str | None,
+) -> int:
     """Energy, torques, heat and reversals of every feed axis over a G-code program.
+
+    Each axis gets a verdict line with ballscrew check's criteria over the
+    program (lift-off, d*n, motor RMS and peak torque and speed, travel,
+    thermal lead error); a criterion NOT OK is also a 'warning:' line on
+    standard error.
+
+    \b
+    Exit status:
+      0  every axis OK or CHECK
+      3  an axis NOT OK (the warning lines say which and why)
+      2  input refused (one 'error:' line), 1 internal error
 
     \b
     Example:
@@ -38,12 +62,23 @@ def program_command(
     from ..io.machine import load_machine
 
     require("program", "ballscrew program")
-    from ..program import run_program
+    from ..program import read_part_program, run_program
     from ..report.outputs import json_document
-    from ..report.program import summary_rows, time_series_csv
+    from ..report.program import (
+        note_lines,
+        summary_rows,
+        time_series_csv,
+        verdict_lines,
+        warning_lines,
+    )
 
     machine = load_machine(machine_file)
     text = read_input_text("PROGRAM", program_file)
+    read = read_part_program(
+        text, reader=reader, arc_tolerance=machine.arc_tolerance,
+        directory=Path(program_file).parent, tool_table=tool_table, machine=machine,
+    )  # fmt: skip
+    click.echo(f"reader: {read.reason}", err=True)
     err = stdout("-")
     with progress(err) as bar:
         task = bar.add_task("planning the blocks", total=None)
@@ -52,8 +87,8 @@ def program_command(
             label = "planning the blocks" if stage == "plan" else "the axes through the program"
             bar.update(task, description=label, completed=done, total=total)
 
-        result = run_program(machine, text, progress=tell)
-    for note in result.notes:
+        result = run_program(machine, read.program, progress=tell)
+    for note in note_lines(result):
         click.echo(f"note: {note}", err=True)
     from rich.table import Table
 
@@ -75,6 +110,24 @@ def program_command(
         f"process work, {num(totals['friction_energy_J'])} J screw friction "
         f"({'-' if share is None else f'{share:.1%}'} with the bearings)"
     )  # fmt: skip
+    grid = totals["grid_energy_J"]
+    out.print(
+        "machine: energy from the grid not computed (see the notes)" if grid is None else
+        f"machine: {num(grid)} J from the grid for the feed axes"
+        f"{' (one shared DC link)' if totals['dc_link_shared'] else ''}: "
+        f"{num(totals['copper_loss_J'])} "
+        f"J copper loss, {num(totals['motor_iron_loss_J'] or 0.0)} J motor iron loss, "
+        f"{num(totals['drive_loss_J'])} J drive loss, {num(totals['burnt_J'])} J burnt, "
+        f"{num(totals['returned_to_grid_J'])} J returned"
+        + (f", {num(totals['stored_J'])} J left in the storage" if totals["stored_J"] else "")
+    )  # fmt: skip
+    for note in totals["left_out"]:
+        click.echo(f"left out: {note}", err=True)
+    for line in verdict_lines(result):
+        out.print(line, highlight=False, markup=False, soft_wrap=True)
+    warned = warning_lines(result)
+    for line in warned:
+        click.echo(f"warning: {line}", err=True)
     if csv_file:
         with writing("--csv", csv_file):
             from ..io.files import atomic_write
@@ -86,3 +139,4 @@ def program_command(
         write_report(out_dir, lambda folder: write_program_report(folder, result))
     if json_file:
         write_json(json_file, json_document(result.as_dict()))
+    return NOT_OK_STATUS if warned else 0

@@ -234,7 +234,8 @@ class Case:
         from the designation's catalogue row, or C_0a estimated from the
         geometry); :meth:`load_ratings` estimates them when None.
     motor : dict
-        ``[motor]`` in SI (N·m, rad/s), the keys given.
+        ``[motor]`` in SI (N·m, rad/s, N·m/A, Ω; the iron loss in N·m or W as
+        ``iron_loss_kind`` says), the keys given, and ``resistance_kind``.
     check : dict
         ``[check]`` in SI (s, -, N/m, K) and the accuracy grade, the keys given
         or defaulted by the schema.
@@ -264,7 +265,7 @@ class Case:
     thermal: dict[str, float] = field(default_factory=dict)
     wiper_drag: float = 0.0
     ratings: Ratings | None = None
-    motor: dict[str, float] = field(default_factory=dict)
+    motor: dict[str, Any] = field(default_factory=dict)
     check: dict[str, Any] = field(default_factory=dict)
     axis_given: frozenset[str] = frozenset()
     sources: dict[str, str] = field(default_factory=dict)
@@ -741,9 +742,13 @@ def _axis_plausible(
         )  # fmt: skip
 
 
-def _motor(data: CaseFile, si: Callable[[str, str, Any, str], float]) -> dict[str, float]:
-    """``[motor]``'s given keys in SI, each more than 0."""
-    motor = {
+def _motor(data: CaseFile, si: Callable[[str, str, Any, str], float]) -> dict[str, Any]:
+    """``[motor]``'s given keys in SI, each more than 0; the electrical constants checked.
+
+    ``resistance_kind`` is kept with ``winding_resistance``; ``iron_loss`` is a torque
+    [N·m] or a power [W] (then needing the rated speed), ``iron_loss_kind`` says which.
+    """
+    motor: dict[str, Any] = {
         name: si("motor", name, getattr(data.motor, name), unit)
         for name, unit in _MOTOR_UNITS
         if getattr(data.motor, name) is not None
@@ -757,7 +762,54 @@ def _motor(data: CaseFile, si: Callable[[str, str, Any, str], float]) -> dict[st
             f"at least the rated torque {motor['rated_torque']:g} N*m (a servo motor's peak is "
             "3 to 5 times its rated torque); were the two swapped?",
         )  # fmt: skip
+    _motor_electrical(data.motor, motor, si)
     return motor
+
+
+def _motor_electrical(
+    m: MotorSection, motor: dict[str, Any], si: Callable[[str, str, Any, str], float]
+) -> None:
+    """``[motor]``'s electrical constants: the resistance's kind, the iron loss's form."""
+    if (m.winding_resistance is None) != (m.resistance_kind is None):
+        name = "resistance_kind" if m.resistance_kind is None else "winding_resistance"
+        raise BallScrewInputError(
+            f"motor.{name}", "(missing)",
+            "winding_resistance and resistance_kind together: the resistance, and whether it "
+            "is one phase's ('phase') or between two terminals ('terminal', twice the phase's "
+            "of a star); the data sheet says which",
+        )  # fmt: skip
+    if m.resistance_kind is not None:
+        motor["resistance_kind"] = m.resistance_kind
+    ends = {"torque_constant", "rated_speed"}
+    if "torque_constant_at_rated_speed" in motor and not ends <= set(motor):
+        raise BallScrewInputError(
+            "motor.torque_constant_at_rated_speed", m.torque_constant_at_rated_speed,
+            "given with motor.torque_constant (at standstill) and motor.rated_speed",
+        )  # fmt: skip
+    if m.iron_loss is None:
+        return
+    kind = ""
+    for unit, form in (("N*m", "torque"), ("W", "power")):
+        try:
+            to_si("motor.iron_loss", _typed(m.iron_loss), unit)
+        except BallScrewInputError:
+            continue
+        kind = form
+        value = si("motor", "iron_loss", m.iron_loss, unit)
+        break
+    if not kind:
+        raise BallScrewInputError(
+            "motor.iron_loss", _typed(m.iron_loss),
+            "a drag torque ('0.12 N*m') or a power at the rated speed ('40 W'), with its unit",
+        )  # fmt: skip
+    if not (math.isfinite(value) and value >= 0.0):
+        raise BallScrewInputError("motor.iron_loss", _typed(m.iron_loss), "a value >= 0")
+    if kind == "power" and "rated_speed" not in motor:
+        raise BallScrewInputError(
+            "motor.iron_loss", _typed(m.iron_loss),
+            "a drag torque, or a power with motor.rated_speed (the speed it is given at)",
+        )  # fmt: skip
+    motor["iron_loss"], motor["iron_loss_kind"] = value, kind
 
 
 def _case_file(text: str, source: str) -> CaseFile:

@@ -30,7 +30,7 @@ EXTRAS: dict[str, tuple[str, ...]] = {
     "sweep": ("xarray", "zarr", "dask", "distributed", "SALib"),
     "web": ("starlette", "uvicorn", "anyio", "jinja2"),
     "fast": ("numba",),
-    "program": ("gcodeparser", "ruckig", "xarray"),
+    "program": ("ruckig", "xarray"),
     "servo": ("control",),
     "select": ("pymoo",),
 }

@@ -11,6 +11,8 @@ table), the axis's limits and the process force it feels during feed moves::
     rapid_feed = "30 m/min"
     path_tolerance = "0.02 mm"
     ambient = "20 degC"
+    drive_efficiency = "96 %"             # or drive_standby_loss, drive_loss_per_ampere, ...
+    dc_link = "resistor"                  # or "regenerative", "storage" (dc_link_storage)
 
     [axes.X]
     case = "x_axis.toml"                  # or an inline [axes.X.case] table
@@ -20,10 +22,20 @@ table), the axis's limits and the process force it feels during feed moves::
     travel = ["0 mm", "800 mm"]
     process_force = "600 N"              # against the motion, in G1/G2/G3 moves
 
+The drive keys (:attr:`Machine.drive`) give the loss of every axis's inverter and
+what the DC link does with regenerated energy (:mod:`ballscrew.axis.drive`); without
+them ``ballscrew program`` leaves the drive loss and the energy from the grid out and
+says so.
+
 Rotary axes (``A``, ``B``, ``C``) may be listed so that the file describes the
-whole machine; they are left out of the computation, and :attr:`Machine.notes`
-says so. Pydantic validates the structure (unknown keys are errors, so a
-misspelt key is named); every problem is one
+whole machine. They have no ball screw and are left out of the energy, and
+:attr:`Machine.notes` says so; with their ``max_feed``, ``max_acceleration``
+and ``max_jerk`` (``"20 rev/min"``, ``"1000 deg/s^2"``) a program may move them
+and their moves are timed with those limits. The file may also give the
+program's dialect, a tool change time, a tool table, work offsets and
+reference positions (:mod:`ballscrew.program.gcode` reads them). Pydantic
+validates the structure (unknown keys are errors, so a misspelt key is named);
+every problem is one
 :class:`~ballscrew.errors.BallScrewInputError` naming the key by its dotted
 path (``axes.X.max_jerk``). Values are converted to SI by
 :func:`ballscrew.io.units.to_si` at load time.
@@ -32,6 +44,7 @@ path (``axes.X.max_jerk``). Values are converted to SI by
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, field
 from importlib import resources
 from pathlib import Path
@@ -41,7 +54,7 @@ import tomlkit
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from ..design.limits import DEFAULT_DN_LIMIT, MAX_SPEED
-from ..errors import BallScrewInputError
+from ..errors import BallScrewInputError, check_choice
 from ..plausible import check_acceleration, check_axial_force, check_feed
 from .case import Case, parse_case, parse_toml
 from .files import read_input_text
@@ -49,11 +62,13 @@ from .schema import Assumed
 from .units import to_si
 
 __all__ = [
+    "DIALECTS",
     "EXAMPLE_MACHINE",
     "LINEAR_AXES",
     "ROTARY_AXES",
     "Machine",
     "MachineAxis",
+    "RotaryAxis",
     "example_machine_text",
     "load_machine",
     "parse_machine",
@@ -65,6 +80,11 @@ ROTARY_AXES = ("A", "B", "C")
 """Rotary axes: accepted in a machine file, left out of the computation (with a note)."""
 
 Value = str | float | int | Assumed
+
+DIALECTS = ("rs274", "fanuc", "sinumerik")
+"""The programs' dialects (``[machine] dialect``)."""
+WORK_OFFSETS = ("G54", "G55", "G56", "G57", "G58", "G59")
+"""The work offsets a machine file may give (``[offsets]``)."""
 
 
 class MachineSection(BaseModel):
@@ -88,6 +108,35 @@ class MachineSection(BaseModel):
         default="5 ms", description="longest time between two samples of the motion"
     )
     model: str = Field(default="complete", description="friction model of every axis")
+    dialect: str = Field(
+        default="rs274", description="the program's dialect: rs274, fanuc or sinumerik"
+    )
+    tool_change_time: Value | None = Field(
+        default=None, description="time of a tool change (M6), the feed axes still"
+    )
+    drive_efficiency: Value | None = Field(
+        default=None, description="the inverter's efficiency, motoring and regenerating"
+    )
+    drive_standby_loss: Value | None = Field(
+        default=None, description="the inverter's loss at no current (control, fans), per axis"
+    )
+    drive_loss_per_ampere: Value | None = Field(
+        default=None, description="the inverter's loss per ampere rms of motor current (V)"
+    )
+    drive_loss_resistance: Value | None = Field(
+        default=None, description="the inverter's loss per ampere squared (ohm)"
+    )
+    dc_link: str | Assumed | None = Field(
+        default=None,
+        description="what the DC link does with regenerated energy: regenerative, resistor, "
+        "storage",
+    )
+    dc_link_storage: Value | None = Field(
+        default=None, description="usable energy of the DC link's storage (dc_link = storage)"
+    )
+    dc_link_shared: bool = Field(
+        default=False, description="whether the axes share one DC link (one supply module)"
+    )
 
 
 class AxisEntry(BaseModel):
@@ -107,6 +156,17 @@ class AxisEntry(BaseModel):
     )
 
 
+class RotaryEntry(BaseModel):
+    """``[axes.A]``: a rotary axis (no ball screw); with its limits, its moves are timed."""
+
+    model_config = ConfigDict(extra="forbid")
+    max_feed: Value | None = Field(default=None, description="largest angular speed")
+    max_acceleration: Value | None = Field(default=None, description="largest angular acc.")
+    max_jerk: Value | None = Field(default=None, description="largest angular jerk")
+    note: str = ""
+    description: str = ""
+
+
 class MachineFile(BaseModel):
     """A machine file."""
 
@@ -115,6 +175,13 @@ class MachineFile(BaseModel):
     description: str = ""
     machine: MachineSection
     axes: dict[str, dict[str, Any]]
+    tools: dict[str, Value] = Field(default_factory=dict, description="T<n> = tool length")
+    offsets: dict[str, dict[str, Value]] = Field(
+        default_factory=dict, description="G54 to G59: the part zero in machine coordinates"
+    )
+    reference: dict[str, dict[str, Value]] = Field(
+        default_factory=dict, description="G28, G30: the reference positions, machine coordinates"
+    )
 
 
 @dataclass(frozen=True)
@@ -149,6 +216,16 @@ class MachineAxis:
 
 
 @dataclass(frozen=True)
+class RotaryAxis:
+    """A rotary axis's limits (SI: rad/s, rad/s², rad/s³): they time its moves."""
+
+    letter: str
+    max_feed: float
+    max_acceleration: float
+    max_jerk: float
+
+
+@dataclass(frozen=True)
 class Machine:
     """A loaded machine file.
 
@@ -170,10 +247,28 @@ class Machine:
         Longest time between samples [s].
     model : str
         Friction model name.
+    dialect : str
+        The programs' dialect: ``rs274`` (RS274/NGC, LinuxCNC), ``fanuc`` or
+        ``sinumerik``.
+    tool_change_time : float or None
+        Time of a tool change M6 [s] (None: not given; a program with M6 is refused).
+    tools : dict
+        Tool number -> tool length [m] (``[tools] T1 = "85 mm"``), for G43 H.
+    offsets : dict
+        Work offset code (54 to 59) -> letter -> the part zero in machine coordinates [m].
+    reference : dict
+        28 or 30 -> letter -> reference position in machine coordinates [m].
+    rotary : dict
+        Letter -> :class:`RotaryAxis`, the rotary axes whose limits the file gives.
     notes : tuple of str
         What was left out (rotary axes).
     text : str
         The TOML text read.
+    drive : dict
+        The drives' loss and DC link, SI, the keys given: ``efficiency`` [-] or the
+        loss model's ``standby`` [W], ``per_ampere`` [V], ``resistance`` [Ω];
+        ``dc_link`` (``"regenerative"``, ``"resistor"``, ``"storage"``) and
+        ``storage`` [J], ``shared`` (:class:`ballscrew.axis.drive.DriveSpec`).
     """
 
     title: str
@@ -186,6 +281,70 @@ class Machine:
     model: str
     notes: tuple[str, ...] = ()
     text: str = field(default="", repr=False)
+    dialect: str = "rs274"
+    tool_change_time: float | None = None
+    tools: dict[int, float] = field(default_factory=dict)
+    offsets: dict[int, dict[str, float]] = field(default_factory=dict)
+    reference: dict[int, dict[str, float]] = field(default_factory=dict)
+    rotary: dict[str, RotaryAxis] = field(default_factory=dict)
+    drive: dict[str, Any] = field(default_factory=dict)
+
+
+DC_LINKS = ("regenerative", "resistor", "storage")
+"""The choices of ``[machine] dc_link`` (as :data:`ballscrew.axis.drive.DC_LINKS`)."""
+
+
+def _drive(m: MachineSection) -> dict[str, Any]:
+    """``[machine]``'s drive keys in SI (:attr:`Machine.drive`)."""
+    out: dict[str, Any] = {}
+    model = (("standby", "drive_standby_loss", m.drive_standby_loss, "W"),
+             ("per_ampere", "drive_loss_per_ampere", m.drive_loss_per_ampere, "V"),
+             ("resistance", "drive_loss_resistance", m.drive_loss_resistance, "ohm"))  # fmt: skip
+    for key, name, raw, unit in model:
+        if raw is None:
+            continue
+        out[key] = _si(f"machine.{name}", raw, unit)
+        if not (math.isfinite(out[key]) and out[key] >= 0.0):
+            raise BallScrewInputError(f"machine.{name}", _typed(raw), f"a value >= 0 ({unit})")
+    if m.drive_efficiency is not None:
+        if out:
+            raise BallScrewInputError(
+                "machine.drive_efficiency", _typed(m.drive_efficiency),
+                "either an efficiency or the loss model (drive_standby_loss, "
+                "drive_loss_per_ampere, drive_loss_resistance), not both",
+            )  # fmt: skip
+        eta = _si("machine.drive_efficiency", m.drive_efficiency, "")
+        if not (math.isfinite(eta) and 0.5 <= eta <= 1.0):
+            raise BallScrewInputError(
+                "machine.drive_efficiency",
+                _typed(m.drive_efficiency),
+                "a share from 50 to 100 % (servo drives: 95 to 98 %)",
+            )
+        out["efficiency"] = eta
+    link = None if m.dc_link is None else _typed(m.dc_link)
+    if link is not None:
+        if link not in DC_LINKS:
+            raise BallScrewInputError("machine.dc_link", link, f"one of {', '.join(DC_LINKS)}")
+        out["dc_link"] = link
+    if (link == "storage") != (m.dc_link_storage is not None):
+        raise BallScrewInputError(
+            "machine.dc_link_storage", "(missing)" if m.dc_link_storage is None
+            else _typed(m.dc_link_storage),
+            "the storage's usable energy (e.g. '300 J') with dc_link = \"storage\", and only "
+            "with it",
+        )  # fmt: skip
+    if m.dc_link_shared:
+        if link is None:
+            raise BallScrewInputError(
+                "machine.dc_link_shared", "true", "given with machine.dc_link, the link they share"
+            )
+        out["shared"] = True
+    if m.dc_link_storage is not None:
+        out["storage"] = _si("machine.dc_link_storage", m.dc_link_storage, "J")
+        if not (math.isfinite(out["storage"]) and out["storage"] >= 0.0):
+            raise BallScrewInputError("machine.dc_link_storage", _typed(m.dc_link_storage),
+                                      "an energy >= 0 J")  # fmt: skip
+    return out
 
 
 def _si(name: str, raw: Any, unit: str) -> float:
@@ -287,12 +446,22 @@ def parse_machine(
                 f"axes.{letter}", letter, f"a program letter: {', '.join(LINEAR_AXES)} "
                 f"(linear) or {', '.join(ROTARY_AXES)} (rotary, left out)",
             )  # fmt: skip
+    rotary: dict[str, RotaryAxis] = {}
     for letter in ROTARY_AXES:
         if letter in data.axes:
-            notes.append(
-                f"axes.{letter}: rotary axes are not driven by a ball screw and are left out; "
-                f"a program that moves {letter} is refused"
-            )
+            limits = _rotary(letter, data.axes[letter])
+            if limits is None:
+                notes.append(
+                    f"axes.{letter}: a rotary axis, not driven by a ball screw; without its "
+                    f"max_feed, max_acceleration and max_jerk a program that moves {letter} "
+                    "is refused"
+                )
+            else:
+                rotary[letter] = limits
+                notes.append(
+                    f"axes.{letter}: a rotary axis, not driven by a ball screw: its moves are "
+                    "timed with its limits and left out of the ball-screw energy"
+                )
     for letter in LINEAR_AXES:
         if letter not in data.axes:
             continue
@@ -330,6 +499,15 @@ def parse_machine(
         )
     if not axes:
         raise BallScrewInputError("axes", "(none)", "at least one linear axis (X, Y or Z)")
+    tools, offsets, reference = _tables(data, axes)
+    change = (
+        None
+        if m.tool_change_time is None
+        else _si("machine.tool_change_time", m.tool_change_time, "s")
+    )
+    if change is not None and not (math.isfinite(change) and change >= 0.0):
+        raise BallScrewInputError("machine.tool_change_time", m.tool_change_time,
+                                  "a time >= 0 with its unit (s)")  # fmt: skip
     return Machine(
         title=data.title,
         axes=axes,
@@ -341,7 +519,87 @@ def parse_machine(
         model=m.model,
         notes=tuple(notes),
         text=text,
+        dialect=check_choice("machine.dialect", m.dialect, DIALECTS),
+        tool_change_time=change,
+        tools=tools,
+        offsets=offsets,
+        reference=reference,
+        rotary=rotary,
+        drive=_drive(m),
     )
+
+
+def _rotary(letter: str, raw: dict[str, Any]) -> RotaryAxis | None:
+    """A rotary axis's limits in SI; None when the file gives none of them."""
+    key = f"axes.{letter}"
+    try:
+        entry = RotaryEntry.model_validate(raw)
+    except ValidationError as exc:
+        raise _validation_error(exc, f"{key}.") from None
+    given = {
+        "max_feed": (entry.max_feed, "rad/s"),
+        "max_acceleration": (entry.max_acceleration, "rad/s**2"),
+        "max_jerk": (entry.max_jerk, "rad/s**3"),
+    }
+    if all(v is None for v, _ in given.values()):
+        return None
+    values: dict[str, float] = {}
+    for name, (value, unit) in given.items():
+        if value is None:
+            raise BallScrewInputError(f"{key}.{name}", "(missing)", "all three of max_feed, "
+                                      "max_acceleration and max_jerk, or none")  # fmt: skip
+        values[name] = _positive(f"{key}.{name}", value, unit)
+    return RotaryAxis(letter=letter, **values)
+
+
+def _tables(
+    data: MachineFile, axes: dict[str, MachineAxis]
+) -> tuple[dict[int, float], dict[int, dict[str, float]], dict[int, dict[str, float]]]:
+    """``[tools]``, ``[offsets]`` and ``[reference]`` in SI, keys checked."""
+    tools: dict[int, float] = {}
+    for key, raw in data.tools.items():
+        if re.fullmatch(r"T\d{1,4}", key) is None:
+            raise BallScrewInputError(f"tools.{key}", key, "a tool number such as T1")
+        length = _si(f"tools.{key}", raw, "m")
+        if not math.isfinite(length):
+            raise BallScrewInputError(f"tools.{key}", raw, "a tool length with its unit")
+        tools[int(key[1:])] = length
+    offsets: dict[int, dict[str, float]] = {}
+    for key, table in data.offsets.items():
+        if key not in WORK_OFFSETS:
+            raise BallScrewInputError(f"offsets.{key}", key, f"one of {', '.join(WORK_OFFSETS)}")
+        offsets[int(key[1:])] = _positions(f"offsets.{key}", table, axes, inside=False)
+    reference: dict[int, dict[str, float]] = {}
+    for key, table in data.reference.items():
+        if key not in ("G28", "G30"):
+            raise BallScrewInputError(f"reference.{key}", key, "G28 or G30")
+        reference[int(key[1:])] = _positions(f"reference.{key}", table, axes, inside=True)
+    return tools, offsets, reference
+
+
+def _positions(
+    name: str, table: dict[str, Any], axes: dict[str, MachineAxis], *, inside: bool
+) -> dict[str, float]:
+    """A position per linear axis of the machine [m]; within the travel when ``inside``."""
+    out: dict[str, float] = {}
+    for letter in table:
+        if letter not in axes:
+            allowed = f"an axis of the machine file ({', '.join(axes)})"
+            raise BallScrewInputError(f"{name}.{letter}", table[letter], allowed)
+    for letter, axis in axes.items():
+        if letter not in table:
+            raise BallScrewInputError(f"{name}.{letter}", "(missing)",
+                                      f"a position for every axis ({', '.join(axes)})")  # fmt: skip
+        value = _si(f"{name}.{letter}", table[letter], "m")
+        low, high = axis.travel
+        if not math.isfinite(value) or (inside and not low <= value <= high):
+            raise BallScrewInputError(
+                f"{name}.{letter}", table[letter],
+                f"a position within axes.{letter}.travel, {low * 1e3:g} to {high * 1e3:g} mm"
+                if inside else "a finite length with its unit",
+            )  # fmt: skip
+        out[letter] = value
+    return out
 
 
 def example_machine_text() -> str:

@@ -9,7 +9,12 @@ One motor a row; the header names each column with its unit in brackets::
 
 ``name``, ``rated_torque``, ``peak_torque``, ``max_speed`` and
 ``rotor_inertia`` are required; ``price`` is optional, its bracket holding the
-currency (any word; not converted). The units are converted to SI here, at the
+currency (any word; not converted). The electrical constants are optional, as
+in a case file's ``[motor]`` (:mod:`ballscrew.axis.drive`):
+``torque_constant [N*m/A]`` (per ampere rms), ``winding_resistance [ohm]``
+with a ``resistance_kind`` column (``phase`` or ``terminal``, no unit), and
+``iron_loss`` in a torque unit (a drag) or a power unit (at ``max_speed``); a
+selected motor carries them into the candidate's case. The units are converted to SI here, at the
 boundary (torques N*m, speed rad/s, inertia kg*m^2); a cell that is not a
 number, a value not above zero, a peak torque below the rated one or a column
 without its unit is refused naming the line and the column.
@@ -30,6 +35,7 @@ from .files import csv_rows, read_input_text
 from .units import to_si
 
 __all__ = [
+    "ELECTRICAL_COLUMNS",
     "MOTOR_COLUMNS",
     "MotorRow",
     "parse_motors",
@@ -45,6 +51,12 @@ MOTOR_COLUMNS: dict[str, str] = {
     "rotor_inertia": "kg*m^2",
 }
 """The required numeric columns and the SI unit each is converted to."""
+
+ELECTRICAL_COLUMNS: dict[str, str] = {
+    "torque_constant": "N*m/A",
+    "winding_resistance": "ohm",
+}
+"""The optional numeric columns of the motor's electrical constants and their SI units."""
 
 MAX_MOTORS = 1000
 """The most rows a motor table may hold (a maker's whole range is about 100)."""
@@ -67,6 +79,13 @@ class MotorRow:
     price: float | None = None
     currency: str = ""
     line: int = 0
+    torque_constant: float | None = None
+    """[N·m/A rms]; None without the column."""
+    winding_resistance: float | None = None
+    """[Ω], of one phase or between two terminals as :attr:`resistance_kind` says."""
+    resistance_kind: str | None = None
+    iron_loss: str | None = None
+    """As written with its column's unit (``"45 W"``, ``"0.1 N*m"``): the case reads it."""
 
 
 def _positive_number(where: str, cell: str) -> float:
@@ -90,16 +109,23 @@ def _columns(header: list[str], source: str) -> tuple[dict[str, tuple[int, str]]
         unit = (match.group("unit") or "").strip() if match else ""
         if key == "name":
             name_col = i
-        elif key in MOTOR_COLUMNS or key == "price":
+        elif key == "resistance_kind":
+            found[key] = (i, "")
+        elif key in MOTOR_COLUMNS or key in ELECTRICAL_COLUMNS or key in ("price", "iron_loss"):
             if not unit:
                 example = {"rated_torque": "N*m", "peak_torque": "N*m", "max_speed": "1/min",
-                           "rotor_inertia": "kg*cm^2", "price": "EUR"}[key]  # fmt: skip
+                           "rotor_inertia": "kg*cm^2", "price": "EUR",
+                           "torque_constant": "N*m/A", "winding_resistance": "ohm",
+                           "iron_loss": "W"}[key]  # fmt: skip
                 raise BallScrewInputError(
                     f"{source}: line 1, column '{cell.strip()}'", cell.strip(),
                     f"the column's unit in brackets, e.g. '{key} [{example}]'",
                 )  # fmt: skip
             found[key] = (i, unit)
     missing = [k for k in ("name", *MOTOR_COLUMNS) if k != "name" and k not in found]
+    if ("winding_resistance" in found) != ("resistance_kind" in found):
+        missing.append("winding_resistance [ohm] and resistance_kind (phase or terminal) "
+                       "together")  # fmt: skip
     if name_col < 0:
         missing.insert(0, "name")
     if missing:
@@ -142,15 +168,23 @@ def parse_motors(text: str, source: str = "motor table") -> tuple[MotorRow, ...]
                                       "a name no other row has")  # fmt: skip
         seen.add(name)
         values: dict[str, float] = {}
+        texts: dict[str, str] = {}
         for key, (col, unit) in columns.items():
             cell = row[col].strip() if col < len(row) else ""
             where = f"{source}: line {line}, column '{header[col].strip()}'"
+            if key == "resistance_kind":
+                if cell not in ("phase", "terminal"):
+                    raise BallScrewInputError(where, cell or "(empty)", "phase or terminal")
+                texts[key] = cell
+                continue
             number = _positive_number(where, cell)
-            if key == "price":
+            if key in ("price", "iron_loss"):
                 values[key] = number
+                texts[key] = f"{cell} {unit}"
                 continue
             try:
-                values[key] = to_si(where, f"{cell} {unit}", MOTOR_COLUMNS[key])
+                values[key] = to_si(where, f"{cell} {unit}",
+                                    {**MOTOR_COLUMNS, **ELECTRICAL_COLUMNS}[key])  # fmt: skip
             except BallScrewInputError as exc:
                 raise BallScrewInputError(where, f"{cell} [{unit}]", exc.allowed) from None
         if values["peak_torque"] < values["rated_torque"]:
@@ -161,7 +195,9 @@ def parse_motors(text: str, source: str = "motor table") -> tuple[MotorRow, ...]
             )
         out.append(MotorRow(name, values["rated_torque"], values["peak_torque"],
                             values["max_speed"], values["rotor_inertia"], values.get("price"),
-                            currency, line))  # fmt: skip
+                            currency, line, values.get("torque_constant"),
+                            values.get("winding_resistance"), texts.get("resistance_kind"),
+                            texts.get("iron_loss")))  # fmt: skip
     return tuple(out)
 
 

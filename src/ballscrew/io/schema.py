@@ -391,9 +391,11 @@ class AxisSection(BaseModel):
 
 
 class MotorSection(BaseModel):
-    """``[motor]``: the servo motor's ratings, for ``ballscrew check``.
+    """``[motor]``: the servo motor's ratings and its electrical constants.
 
-    Its rotor inertia and the gear are ``[axis]`` motor_inertia and gear_ratio.
+    The ratings are for ``ballscrew check``; the constants give the copper loss of
+    ``ballscrew program`` (:mod:`ballscrew.axis.drive`). Its rotor inertia and the gear
+    are ``[axis]`` motor_inertia and gear_ratio.
     """
 
     model_config = ConfigDict(extra="forbid")
@@ -417,6 +419,48 @@ class MotorSection(BaseModel):
         "speed up to which the motor gives its torque",
         "3000 rpm",
         si="rad/s",
+    )
+    torque_constant: Value | None = _f(
+        None,
+        "torque per current",
+        "torque per ampere rms of the phase current, k_T of the data sheet (a constant per "
+        "ampere of the sine's peak: times 1.414); with winding_resistance it gives the copper "
+        "loss of `ballscrew program` (none: copper loss, drive loss and energy from the grid "
+        "not computed, and said)",
+        "1.8 N*m/A",
+        si="N*m/A",
+    )
+    torque_constant_at_rated_speed: Value | None = _f(
+        None,
+        "torque per current",
+        "the torque constant at rated_speed, linear from torque_constant at standstill and "
+        "held beyond (none: the same at every speed)",
+        "1.7 N*m/A",
+        si="N*m/A",
+    )
+    winding_resistance: Value | None = _f(
+        None,
+        "resistance",
+        "winding resistance at 20 degC, of one phase or between two terminals as "
+        "resistance_kind says (none: copper loss and energy from the grid not computed, and "
+        "said)",
+        "1.4 ohm",
+        si="ohm",
+    )
+    resistance_kind: Literal["phase", "terminal"] | None = _f(
+        None,
+        "-",
+        "which resistance winding_resistance is: 'phase' (one phase of the star, or the star "
+        "equivalent of a delta) or 'terminal' (line to line, twice the phase's); required with "
+        "winding_resistance",
+        "phase",
+    )
+    iron_loss: Value | None = _f(
+        None,
+        "torque or power",
+        "the motor's iron and friction loss: a drag torque, or a power at rated_speed read as "
+        "the drag torque P/rated_speed (none: left out of the energy from the grid, and said)",
+        "0.12 N*m",
     )
 
 

@@ -577,6 +577,7 @@ _KINDS = (
     ("m**3", "a volume"), ("m**2/s", "a kinematic viscosity"), ("Pa*s", "a dynamic viscosity"),
     ("kg/m**3", "a density"), ("N/m", "a stiffness"), ("kg*m**2", "a moment of inertia"),
     ("1/Pa", "a pressure-viscosity coefficient"), ("", "a plain number (an angle or a ratio)"),
+    ("N*m/A", "a torque constant (torque per current)"), ("ohm", "a resistance"),
 )  # fmt: skip
 """Names of dimensions, for refusals: '0.3 g' is a mass; this field is an acceleration."""
 

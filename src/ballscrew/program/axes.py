@@ -31,8 +31,10 @@ Energies follow the component view of ISO 14955-1 and -2 for the feed axes:
 the mechanical energy the motor delivers to the axis (positive shaft power),
 the energy it takes back (negative shaft power, which a regenerative drive
 returns), the useful work on the process, and the losses by component
-(screw friction, support bearings). The motor's own losses are not counted
-(a case gives no winding resistance).
+(screw friction, support bearings); from the motor shaft to the grid, the
+motor's copper and iron loss, the drive's loss and the DC link's regeneration
+(:mod:`ballscrew.axis.drive`, from each axis's motor torque and speed), each
+left out and said where its case or the machine file gives no constant.
 """
 
 from __future__ import annotations
@@ -45,6 +47,9 @@ from typing import Any
 
 import numpy as np
 
+from ..axis.check import AxisCheck, Criterion, run_check
+from ..axis.drive import DriveEnergy, DriveSpec, MotorConstants, drive_energy, drive_totals
+from ..axis.duty import EnergyRun, ModelEnergy
 from ..axis.energy import CycleResult, axis_cycle
 from ..axis.motion import Profile
 from ..axis.setup import AxisSetup, axis_setup
@@ -139,6 +144,25 @@ class AxisResult:
     supplied_per_block: FloatArray = field(repr=False, default_factory=lambda: np.zeros(0))
     """Energy the motor supplies in each block (positive shaft power) [J]."""
     notes: tuple[str, ...] = ()
+    drive: DriveEnergy | None = field(default=None, repr=False)
+    """Motor, drive and DC link losses and the energy from the grid."""
+    distance: float = 0.0
+    """Distance the axis moves over the program, both ways counted [m]."""
+    feed_distance: float = 0.0
+    """Of which in feed blocks (G1, G2, G3), where the process force acts [m]."""
+    check: AxisCheck | None = field(default=None, repr=False)
+    """``ballscrew check``'s criteria over the program (None: the check refused the axis,
+    the reason in ``notes``)."""
+    verdicts: tuple[Criterion, ...] = ()
+    """The check's rows, and the travel used against the axis's travel."""
+
+    @property
+    def verdict(self) -> str:
+        """The worst verdict of the rows with a limit; NOT CHECKED without a check."""
+        if self.check is None:
+            return "NOT CHECKED"
+        found = {c.verdict for c in self.verdicts}
+        return next((v for v in ("NOT OK", "CHECK") if v in found), "OK")
 
     @property
     def friction_share(self) -> float:
@@ -179,8 +203,13 @@ class AxisResult:
             "max_temperature_C": self.max_temperature,
             "thermal_lead_error_um": self.thermal_lead_error * 1e6,
             "travel_mm": self.travel * 1e3,
+            "distance_mm": self.distance * 1e3,
+            "feed_distance_mm": self.feed_distance * 1e3,
             "reversals": [r.as_dict() for r in self.reversals],
+            "verdict": self.verdict,
+            "criteria": [c.as_dict() for c in self.verdicts],
             "notes": list(self.notes),
+            **({} if self.drive is None else self.drive.as_dict()),
         }
 
 
@@ -249,6 +278,7 @@ class ProgramResult:
                 "friction_energy_J": self.friction_energy,
                 "bearing_energy_J": sum(a.bearing_energy for a in self.axes.values()),
                 "friction_share": losses / turned if turned > 0 else None,
+                **drive_totals([a.drive for a in self.axes.values() if a.drive is not None]),
             },
             "axes": {k: a.as_dict() for k, a in self.axes.items()},
             "energy_per_block_J": {
@@ -273,6 +303,7 @@ def _inputs(machine: Machine, program: Program) -> dict[str, Any]:
         "arc_tolerance_m": machine.arc_tolerance,
         "sample_time_s": machine.sample_time,
         "ambient_C": machine.ambient,
+        "drive": DriveSpec.from_mapping(machine.drive).as_dict(),
         "axes": {
             k: {"case": a.case.title, "max_feed_m_per_s": a.max_feed,
                 "max_acceleration_m_per_s2": a.max_acceleration, "max_jerk_m_per_s3": a.max_jerk,
@@ -295,7 +326,16 @@ def _limits(machine: Machine, program: Program) -> Limits:
         rapid_feed=machine.rapid_feed,
         path_tolerance=machine.path_tolerance,
         sample_time=machine.sample_time,
+        rotary_feed=_rotary_limit(machine, "max_feed"),
+        rotary_acceleration=_rotary_limit(machine, "max_acceleration"),
+        rotary_jerk=_rotary_limit(machine, "max_jerk"),
     )
+
+
+def _rotary_limit(machine: Machine, name: str) -> FloatArray:
+    """One limit of A, B, C as :class:`Limits` takes it (NaN: the file gives none)."""
+    rotary = machine.rotary
+    return np.array([getattr(rotary[k], name) if k in rotary else math.nan for k in "ABC"])
 
 
 def _check_travel(machine: Machine, program: Program) -> None:
@@ -320,7 +360,8 @@ def _check_travel(machine: Machine, program: Program) -> None:
             k = int(np.argmax(bad))
             raise BallScrewInputError(
                 f"program line {int(lines[k])}", f"{letter}{ends[k] * 1e3:g} mm",
-                f"within axes.{letter}.travel, {low * 1e3:g} to {high * 1e3:g} mm",
+                f"within axes.{letter}.travel, {low * 1e3:g} to {high * 1e3:g} mm (machine "
+                "coordinates: the program's plus the work offset and, on Z, the tool length)",
             )  # fmt: skip
 
 
@@ -342,7 +383,20 @@ def _arc_travel(machine: Machine, program: Program, motion: Motion) -> None:
 
 
 def _integral(y: FloatArray, t: FloatArray) -> float:
+    """Trapezoidal rule over the samples (a junction's two samples at one time add nothing)."""
     return float(np.sum(0.5 * (y[1:] + y[:-1]) * np.diff(t)))
+
+
+def _distances(motion: Motion, i: int) -> tuple[float, float]:
+    r"""Distance axis ``i`` moves over the program, and of it in feed blocks [m].
+
+    Exact: between two samples an axis moves one way along one phase's
+    polynomial (the planner samples every block's both ends and every point
+    where an arc's axis turns), so :math:`\int|v|\,dt` over the interval is
+    the change of position, :math:`|x_{k+1} - x_k|`.
+    """
+    step = np.abs(np.diff(motion.position[:, i]))
+    return float(np.sum(step)), float(np.sum(step[motion.feeding[:-1]]))
 
 
 def heat_balance(
@@ -482,26 +536,42 @@ def _one_axis(
     power = t_f * np.abs(omega)
     shaft = t_m * first.motor_speed
     dt = np.diff(time)
-    friction_steps = 0.5 * (power[1:] + power[:-1]) * dt
+    # The friction's work over each step, torque times the screw's angle: the angle is exact
+    # (the axis moves one way between two samples), the torque its mean at the two ends.
+    turned = np.abs(np.diff(motion.position[:, i])) * 2.0 * math.pi / case.screw.lead
+    friction_steps = 0.5 * (t_f[1:] + t_f[:-1]) * turned
     per_block = np.bincount(motion.block[:-1], weights=friction_steps, minlength=program.size)
     positive = np.maximum(shaft, 0.0)
     supplied_steps = 0.5 * (positive[1:] + positive[:-1]) * dt
     supplied_block = np.bincount(motion.block[:-1], weights=supplied_steps,
                                  minlength=program.size)  # fmt: skip
     force = first.axial_force
+    distance, feed_distance = _distances(motion, i)
     reversals = _reversals(letter, setup, machine, motion, program, force, t0)
     g_axial = STANDARD_GRAVITY * math.sin(axis.incline)
     duration = motion.duration
     motor = case.motor
     notes = [*setup.notes, *first.speed_warnings]
+    drive = drive_energy(time, t_m, first.motor_speed, MotorConstants.from_case(motor),
+                         DriveSpec.from_mapping(machine.drive), name=f"axes.{letter}")  # fmt: skip
+    check = _axis_check(letter, machine, setup, profile, first, duration, top, notes)
+    low, high = ax.travel
+    used = Criterion(
+        "travel used", travel * 1e3, (high - low) * 1e3, "mm", travel / (high - low), "OK",
+        f"the program's lowest to highest position against axes.{letter}.travel (a block "
+        "past it is refused)",
+    )  # fmt: skip
     result = AxisResult(
         letter=letter,
         title=case.title,
         friction_energy=float(np.sum(friction_steps)),
-        bearing_energy=_integral(first.bearing_torque * np.abs(omega), time),
+        bearing_energy=float(
+            np.sum(0.5 * (first.bearing_torque[1:] + first.bearing_torque[:-1]) * turned)
+        ),
         supplied_energy=_integral(np.maximum(shaft, 0.0), time),
         regenerated_energy=-_integral(np.minimum(shaft, 0.0), time),
-        process_work=_integral(profile.process_force * profile.speed, time),
+        # The process force against the motion in every feed block: force x distance.
+        process_work=ax.process_force * feed_distance,
         potential_energy=axis.moving_mass
         * g_axial
         * float(profile.position[-1] - profile.position[0]),
@@ -520,6 +590,11 @@ def _one_axis(
         energy_per_block=per_block.astype(float),
         supplied_per_block=supplied_block.astype(float),
         notes=tuple(notes),
+        drive=drive,
+        distance=distance,
+        feed_distance=feed_distance,
+        check=check,
+        verdicts=(*(() if check is None else check.criteria), used),
     )
     series = {
         "friction_torque": t_f,
@@ -530,6 +605,39 @@ def _one_axis(
         "motor_speed": first.motor_speed,
     }
     return result, series
+
+
+def _axis_check(
+    letter: str, machine: Machine, setup: AxisSetup, profile: Profile, first: CycleResult,
+    duration: float, top: float, notes: list[str],
+) -> AxisCheck | None:  # fmt: skip
+    """``ballscrew check``'s criteria of the axis over the program, at their nominal values.
+
+    :func:`ballscrew.axis.check.run_check` over the program's profile and cycle, the
+    program's time as the run time and its warmest screw temperature as the one
+    reached (the thermal lead error per 300 mm from the ambient, against the case's
+    accuracy grade). An input the check refuses (a span shorter than the travel and
+    the nut, a motor without its rotor inertia) leaves the axis unchecked, the reason
+    in ``notes``.
+    """
+    ax = machine.axes[letter]
+    case = ax.case
+    node = setup.node
+    energy = ModelEnergy(first, 1, duration, math.nan, None, final_temperature=top)
+    run = EnergyRun(
+        case, profile, 1, ax.start_temperature, setup.axis, node,
+        {k: getattr(node, k) for k in ("screw_length", "ambient", "machine_resistance",
+                                       "nut_mass")},
+        list(setup.notes), {}, results={machine.model: energy}, run_time=duration,
+        derived=setup.derived,
+    )  # fmt: skip
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            return run_check(run, machine.model, draws=False)
+    except BallScrewInputError as exc:
+        notes.append(f"not checked ({exc})")
+        return None
 
 
 def _torques_at(
@@ -599,7 +707,7 @@ def run_program(
     require("program", "ballscrew program")
     if isinstance(program, str):
         program = read_program(program, arc_tolerance=machine.arc_tolerance,
-                               max_blocks=max_blocks)  # fmt: skip
+                               max_blocks=max_blocks, machine=machine)  # fmt: skip
     _check_travel(machine, program)
     motion = plan(
         program,

@@ -1,7 +1,7 @@
 """A friction map in the files that drives and simulators read.
 
 Each file states its formula, its axes, units and sign conventions in a header
-(:mod:`ballscrew.fit.friction_map` defines them):
+(:mod:`ballscrew.servo.friction_map` defines them):
 
 * ``.csv``: one row per grid point, table side (m/s, N) and motor side
   (rad/s, N·m), after ``#`` comment lines (``numpy.loadtxt`` and pandas'
@@ -28,8 +28,8 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import BallScrewInputError, FloatArray
-from ..fit.friction_map import FrictionMap
 from ..io.files import atomic_write
+from ..servo.friction_map import FrictionMap
 from .friction_fmu import fmu_build
 from .outputs import csv_text
 

@@ -37,7 +37,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from xml.sax.saxutils import escape
 
-from ..fit.friction_map import FrictionMap
+from ..servo.friction_map import FrictionMap
 
 __all__ = [
     "FMI2_TYPES", "MODEL_IDENTIFIER", "FmuBuild", "find_compiler", "fmi_platform", "fmu_build",

@@ -251,6 +251,13 @@ def case_text(
                   f"rated_torque = {_q(motor.rated_torque, 'N*m')}",
                   f"peak_torque = {_q(motor.peak_torque, 'N*m')}",
                   f"rated_speed = {_q(motor.max_speed, 'rad/s')}"]  # fmt: skip
+        if motor.torque_constant is not None:
+            extra.append(f"torque_constant = {_q(motor.torque_constant, 'N*m/A')}")
+        if motor.winding_resistance is not None:
+            extra += [f"winding_resistance = {_q(motor.winding_resistance, 'ohm')}",
+                      f'resistance_kind = "{motor.resistance_kind}"']  # fmt: skip
+        if motor.iron_loss is not None:
+            extra.append(f'iron_loss = "{motor.iron_loss}"')
     return "\n".join(kept).rstrip("\n") + "\n" + "\n".join(extra) + "\n"
 
 
@@ -344,7 +351,7 @@ def rating_scatter() -> dict[str, Any]:
     --------
     >>> s = rating_scatter()
     >>> s["rows"], round(s["dynamic"]["median"], 2), round(s["static"]["median"], 2)
-    (25, 0.82, 0.68)
+    (25, 1.03, 0.68)
     """
     ratios: dict[str, list[float]] = {"dynamic": [], "static": []}
     for row in catalog_screws():

@@ -1,7 +1,11 @@
-"""The axis under control: its dynamics, a CNC's servo cascade, circular and reversal tests.
+"""The axis under control, and the friction a controller is given.
 
-What ``ballscrew contour`` computes (:func:`run_contour`); the loops' figures
-need the ``servo`` extra (the Python Control Systems Library).
+Its dynamics, a CNC's servo cascade, circular and reversal tests:
+what ``ballscrew contour`` computes (:func:`run_contour`); the loops' figures
+need the ``servo`` extra (the Python Control Systems Library). What
+``ballscrew export-friction`` computes (:func:`run_export_friction`): friction
+forms for a controller (:mod:`.controller`), the load map (:mod:`.friction_map`)
+and the controllers' tables (:mod:`.tables`).
 """
 
 from .cascade import Gains, LoopFigures, loop_figures, tune
@@ -15,6 +19,8 @@ from .contour import (
     reversal_test,
     run_contour,
 )
+from .export import FrictionExport, run_export_friction
+from .friction_map import FrictionMap
 from .plant import AxisDynamics, axis_dynamics, frictionless
 from .simulate import Trace, simulate_axis
 from .tables import CompensationTable, fit_table
@@ -24,6 +30,8 @@ __all__ = [
     "CircleRun",
     "CompensationTable",
     "ContourResult",
+    "FrictionExport",
+    "FrictionMap",
     "Gains",
     "LoopFigures",
     "ReversalRun",
@@ -37,6 +45,7 @@ __all__ = [
     "loop_figures",
     "reversal_test",
     "run_contour",
+    "run_export_friction",
     "simulate_axis",
     "tune",
 ]

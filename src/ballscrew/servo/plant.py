@@ -25,7 +25,7 @@ gear ratio :math:`i` (motor turns per screw turn), :math:`x = \theta_s\,l/2\pi
   axial share of the drag in this model: the axial force through it is the
   table's inertia, the guideways' friction and the weight. The drag is the
   chosen model's torque at the axis load and temperature, evaluated once
-  over a grid of speeds (:func:`ballscrew.fit.friction_map.friction_map`)
+  over a grid of speeds (:func:`ballscrew.servo.friction_map.friction_map`)
   and interpolated, with the pre-rolling of a LuGre bristle (Canudas de Wit
   et al., IEEE TAC 40, 1995):
   :math:`\dot z = v - \sigma_0|v|z/g(v)`, :math:`F = \sigma_0 z + \sigma_1\dot z`,
@@ -74,9 +74,9 @@ from ..design.stiffness import (
     torsional_axial_stiffness,
 )
 from ..errors import BallScrewInputError, FloatArray
-from ..fit.friction_map import friction_map
 from ..io.case import Case
 from ..materials import STANDARD_GRAVITY
+from .friction_map import friction_map
 
 __all__ = [
     "DRAG_SIDES",

@@ -335,8 +335,8 @@ def controller_table(
     import math
     import warnings
 
-    from ..fit.friction_map import friction_map
     from ..materials import STANDARD_GRAVITY
+    from .friction_map import friction_map
 
     if target not in CONTROLLERS:
         raise BallScrewInputError("--form", target, f"one of {list(CONTROLLERS)}")

@@ -76,7 +76,7 @@ class StudyResult:
 
 def _controller_figure(model_curve: Series, at: str) -> Figure:
     """The complete model's curve and the Stribeck curve a controller would take from it."""
-    from ..fit.controller import stribeck, stribeck_torque
+    from ..servo.controller import stribeck, stribeck_torque
 
     w = rpm_to_rad_s(model_curve.speed_rpm)
     keep = w > 0.0

@@ -46,7 +46,9 @@ def run(payload: dict[str, Any], limits: Limits) -> dict[str, Any]:
         example_machine_text() if machine_text is None else machine_text,
         source="machine", folder=None,
     )  # fmt: skip
-    program = read_program(text, arc_tolerance=machine.arc_tolerance, max_blocks=MAX_BLOCKS)
+    program = read_program(
+        text, arc_tolerance=machine.arc_tolerance, max_blocks=MAX_BLOCKS, machine=machine
+    )
     nominal = float(sum(program.dwell)) + _path_time(program, machine.rapid_feed)
     if nominal > MAX_SECONDS:
         raise ApiError(

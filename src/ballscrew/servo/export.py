@@ -4,7 +4,7 @@ What ``ballscrew export-friction`` computes.
 
 :func:`export_friction` evaluates a model over a speed range in both
 directions at each temperature, and either fits a friction form to it
-(:func:`ballscrew.fit.controller.fit_form`) or keeps the curve as a lookup
+(:func:`ballscrew.servo.controller.fit_form`) or keeps the curve as a lookup
 table; :meth:`FrictionExport.as_dict` is the command's JSON document and
 :attr:`FrictionExport.rows` its CSV.
 """
@@ -249,7 +249,7 @@ def run_export_friction(
     For ``form="load-map"`` the map over ``speeds``, the signed ``loads`` [N]
     (default: the case's loads, mirrored, and 0) and ``temperatures`` [°C]
     (default: the case's first), with its compact form
-    (:func:`ballscrew.fit.friction_map.friction_map`).
+    (:func:`ballscrew.servo.friction_map.friction_map`).
     """
     if form != "load-map":
         return export_friction(
