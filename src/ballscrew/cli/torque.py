@@ -29,10 +29,11 @@ from .common import (
 MAX_POINTS = 2_000_000
 """The most operating points ``ballscrew torque`` computes without ``--max-points``."""
 
-BYTES_PER_POINT = {"compute": 1_500, "table": 2_000, "files": 6_000}
-"""Peak memory per operating point [bytes], measured (peak resident size over points, 2e5
-and 1e6 points of the complete model): the model's arrays; the rows of a terminal table;
-the rows and text of --json or --csv. A run whose sum does not fit is refused before it
+BYTES_PER_POINT = {"compute": 1_500, "table": 3_000, "files": 6_000}
+"""Peak memory per operating point [bytes], measured as the peak resident size over 2e5
+points of the complete model: the model's arrays (1.4 kB with --table none); the rows of
+a terminal table (4.2 kB in all with the summary); the rows and text of --json (7.2 kB in
+all; --csv 2.9 kB, counted as --json). A run whose sum does not fit is refused before it
 starts (:func:`ballscrew.io.resources.check_memory`), whatever ``--max-points`` says."""
 
 __all__ = ["torque"]
