@@ -51,7 +51,7 @@ __all__ = ["contour_command"]
 @click.option("--max-samples", type=click.IntRange(min=1), default=None, metavar="N",
               help="The most samples simulated (all circles and reversals, both axes), "
               "estimated before the run: 2 pi R/(v T_s) per revolution; default "
-              "4,000,000 (about 40 s of CPU).")  # fmt: skip
+              "4,000,000 (about 15 s of CPU).")  # fmt: skip
 @json_option("Write the results as JSON to FILE ('-' for standard output).")
 @folder_option(
     "Write a report here: polar plot, reversal, tables (figures, CSV, Markdown, HTML, JSON)."

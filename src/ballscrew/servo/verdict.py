@@ -83,7 +83,7 @@ NYQUIST = 2.0
 
 MAX_SAMPLES = 4_000_000
 """The most samples (all circles and reversals, both axes) ``contour`` simulates without
-``--max-samples``: about 40 s of CPU and a few hundred MB at the usual sub-steps."""
+``--max-samples``: about 15 s of CPU and 550 MB on the example (3.0 M samples: 10 s, 406 MB)."""
 
 
 @dataclass(frozen=True)
