@@ -19,8 +19,8 @@ from ballscrew import friction_torque, lubricants, reference_screw
 from ballscrew import rolling_losses as rl
 from ballscrew.contact import hertz
 from ballscrew.errors import BallScrewInputError, BallScrewValidityWarning
-from ballscrew.friction.complete import lubrication_method
 from ballscrew.kinematics import kinematics, neighbour_sliding, rpm_to_rad_s
+from ballscrew.lubricant import lubrication_method
 
 OIL = lubricants.get("mineral ISO VG 68")
 R = 3.175e-3  # radius of the reference screw's 6.35 mm balls [m]

@@ -95,7 +95,7 @@ each a named component of the result, each from a published law
     an axis parallel to the screw axis.
 ``"meniscus"``
     Only in a nut full of oil (``lubrication="flooded"`` or ``"circulating"``,
-    :data:`LUBRICATIONS`): the Newtonian shear of the oil in the gap between
+    :data:`ballscrew.lubricant.LUBRICATIONS`): the Newtonian shear of the oil in the gap between
     neighbouring balls outside their Hertz contact
     (:func:`ballscrew.rolling_losses.meniscus_shear_power`). Their surfaces
     slide past each other at :math:`v_{BB}` with no entraining motion, so
@@ -119,7 +119,7 @@ each a named component of the result, each from a published law
     A wiper or seal drag torque given by the user (``seal_torque``), 0 by
     default: catalogue drag torques are measured without wipers.
 
-The lubrication method (``lubrication``, :data:`LUBRICATIONS`) decides which
+The lubrication method (``lubrication``, :data:`ballscrew.lubricant.LUBRICATIONS`) decides which
 terms run. In a flooded nut (an oil bath, or circulating oil that keeps the nut
 full) the balls run immersed: the meniscus and churning terms run, and the
 rolling term has no starvation factor (SKF's kinematic replenishment factor
@@ -158,7 +158,7 @@ from .. import ehl
 from .. import rolling_losses as rl
 from ..ball_train import creep_slope, expected_train, orbital_sensitivity
 from ..contact import hertz
-from ..errors import BallScrewInputError, FloatArray, check_choice, check_nonnegative
+from ..errors import FloatArray, check_choice, check_nonnegative
 from ..geometry import ScrewArray, ScrewGeometry, cos
 from ..helix import SlipContact, transverse_slip_loss
 from ..kinematics import (
@@ -168,7 +168,7 @@ from ..kinematics import (
     neighbour_sliding,
     rad_s_to_rpm,
 )
-from ..lubricant import Lubricant
+from ..lubricant import FLOODED, Lubricant, lubrication_method
 from ..materials import STEEL_DENSITY
 from ..plausible import check_wiper_drag
 from ..state import ContactState, OperatingState
@@ -182,13 +182,10 @@ __all__ = [
     "BALL_TRAIN_SCATTER",
     "CONTACT_ANGLE_SCATTER",
     "CONTACT_ANGLE_SCATTER_RANGE",
-    "FLOODED",
     "HYSTERESIS_LOSS_FACTOR",
-    "LUBRICATIONS",
     "RETURN_TURNING_ANGLE",
     "ball_ball_friction",
     "complete",
-    "lubrication_method",
 ]
 
 BALL_TRAIN_CONSTANT: float = 0.0358
@@ -247,60 +244,11 @@ back: four bends of about a right angle each; a deflector's crossover turns
 them about as much. An assumption, stated with the result.
 """
 
-LUBRICATIONS = ("flooded", "circulating", "oil-air", "drip", "grease")
-"""The lubrication methods of :func:`complete` (its ``lubrication``).
-
-``"flooded"``
-    An oil bath or any arrangement that keeps the nut full of oil: the balls
-    run immersed.
-``"circulating"``
-    Oil pumped through the nut, which it keeps full: the same terms as
-    ``"flooded"``.
-``"oil-air"``
-    Oil-air (or oil mist): oil carried in by air in small amounts.
-``"drip"``
-    Oil dripped or metered onto the track at intervals, the nut not full: the
-    default (``"auto"``) for an oil. The makers' drag torques
-    (:mod:`ballscrew.study.validation`, on which :data:`BALL_TRAIN_CONSTANT`
-    was fitted) state the oil (ISO VG 68) and the speed but not a bath; a nut
-    turned on a test bench has its oil applied, not immersed, so the default
-    keeps what they measure. ``"oil"``, its name before the other methods
-    were modelled, is read as ``"drip"``.
-``"grease"``
-    A grease-packed nut; the default for a grease
-    (:attr:`ballscrew.lubricant.Lubricant.kind`).
-"""
-
-FLOODED = ("flooded", "circulating")
-"""The methods of :data:`LUBRICATIONS` that keep the nut full of oil."""
-
 # SKF's replenishment constant K_rs (catalogue 10000 EN, 2012): 3e-8 for oil bath (low level)
 # and oil jet, 6e-8 for grease and oil-air; None: no starvation factor (the balls immersed).
 _K_RS: dict[str, float | None] = {
     "flooded": None, "circulating": None, "drip": 3e-8, "oil-air": 6e-8, "grease": 6e-8,
 }  # fmt: skip
-
-
-def lubrication_method(lubrication: str, lubricant: Lubricant) -> str:
-    """The method of :data:`LUBRICATIONS` that ``lubrication`` names for ``lubricant``.
-
-    ``"auto"``: ``"grease"`` for a grease, ``"drip"`` for an oil; ``"oil"`` is read as
-    ``"drip"``. A grease cannot flood a nut (its base oil stays in the thickener):
-    ``"flooded"``, ``"circulating"``, ``"drip"`` and ``"oil-air"`` with a grease are refused.
-    """
-    method = check_choice("lubrication", lubrication, ("auto", "oil", *LUBRICATIONS))
-    grease = lubricant.kind == "grease"
-    if method == "auto":
-        return "grease" if grease else "drip"
-    if method == "oil":
-        method = "drip"
-    if grease and method != "grease":
-        raise BallScrewInputError(
-            "lubrication", lubrication,
-            f"'grease' or 'auto' for the grease {lubricant.name!r} (a grease does not "
-            "fill the nut with oil)",
-        )  # fmt: skip
-    return method
 
 
 DIRECT_INTEGRALS: int = 11
@@ -720,12 +668,12 @@ def complete(
     hysteresis_loss_factor : float
         :math:`\alpha_h` [-]; default :data:`HYSTERESIS_LOSS_FACTOR`.
     lubrication : {"auto", "flooded", "circulating", "oil-air", "drip", "grease"}
-        The lubrication method (:data:`LUBRICATIONS`): in a flooded nut
+        The lubrication method (:data:`ballscrew.lubricant.LUBRICATIONS`): in a flooded nut
         (``"flooded"``, ``"circulating"``) the meniscus and churning terms
         run and the rolling term has no starvation factor; otherwise SKF's
         replenishment constant :math:`K_{rs}` is 3e-8 (``"drip"``) or 6e-8
         (``"oil-air"``, ``"grease"``). ``"auto"`` (default): ``"grease"`` for a
-        grease, else ``"drip"`` (:func:`lubrication_method`).
+        grease, else ``"drip"`` (:func:`ballscrew.lubricant.lubrication_method`).
     thermal_correction : bool
         Apply the inlet shear heating and replenishment factors (default True).
     seal_torque : float

@@ -46,9 +46,8 @@ from ..design.limits import (
 )
 from ..design.ratings import Ratings, static_rating_estimate
 from ..errors import BallScrewInputError, BallScrewPlausibilityWarning, FloatArray
-from ..friction.complete import lubrication_method
 from ..geometry import PLAUSIBLE_SIZES, BallScrew
-from ..lubricant import Lubricant
+from ..lubricant import Lubricant, lubrication_method
 from ..plausible import (
     AXIS_RANGES,
     LOWEST_FREQUENCY,

@@ -364,10 +364,10 @@ TREND_SOURCE = (
     "1000 rpm for a nut running flooded (SKF's model 1.5-1.7 from its viscous rolling term, "
     "Jungnickel's purely viscous law about 1.8); oil-air, drip and grease nuts reported"
 )
-FLOODED_PARAMETERS = {"lubrication": "flooded"}
+FLOODED_PARAMETERS: dict[str, Any] = {"lubrication": "flooded"}
 """The parameters of a nut running flooded, for the models that take a lubrication method
 (the others do not tell the methods apart and are run as they are)."""
-REPORTED_PARAMETERS = {"lubrication": "oil-air"}
+REPORTED_PARAMETERS: dict[str, Any] = {"lubrication": "oil-air"}
 """The parameters of a nut with no bulk oil (oil-air), whose T20/T40 is reported, not judged."""
 EXPONENT_SOURCE = (
     "Jungnickel (2010) loss law (as implemented in Thermca): torque ~ (eta n)^0.512 and "
@@ -382,7 +382,7 @@ SLOPE_LIMIT = 0.2
 """Largest magnitude of a no-trend slope that passes [-]."""
 
 
-def _lubrication_parameters(model: str, parameters: dict[str, str]) -> dict[str, str]:
+def _lubrication_parameters(model: str, parameters: dict[str, Any]) -> dict[str, Any]:
     """``parameters`` if ``model`` takes a lubrication method, else none."""
     return parameters if "lubrication" in get_model(model).parameters else {}
 
@@ -393,7 +393,7 @@ def _trend_rows(model: str) -> list[ScoreRow]:
     flooded = _lubrication_parameters(model, FLOODED_PARAMETERS)
     reported = _lubrication_parameters(model, REPORTED_PARAMETERS)
 
-    def t(s: BallScrew, rpm: float, temp: float, params: dict[str, str] | None = None) -> float:
+    def t(s: BallScrew, rpm: float, temp: float, params: dict[str, Any] | None = None) -> float:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", BallScrewValidityWarning)
             return float(
