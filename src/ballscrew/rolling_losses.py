@@ -615,12 +615,6 @@ def ball_churning_power(
     screw drags the oil along with it: both make the free-sphere value an upper
     bound.
 
-    References
-    ----------
-    .. [1] T. A. Harris, M. N. Kotzalas, *Rolling Bearing Analysis: Advanced
-       Concepts of Bearing Technology*, 5th ed., CRC Press, 2007 (the fluid
-       drag on the balls of a high-speed ball bearing).
-
     Parameters
     ----------
     viscosity : array_like
@@ -636,6 +630,12 @@ def ball_churning_power(
     -------
     numpy.ndarray
         [W]; 0 at zero speed.
+
+    References
+    ----------
+    .. [1] T. A. Harris, M. N. Kotzalas, *Rolling Bearing Analysis: Advanced
+       Concepts of Bearing Technology*, 5th ed., CRC Press, 2007 (the fluid
+       drag on the balls of a high-speed ball bearing).
 
     Examples
     --------

@@ -17,7 +17,6 @@ from scipy.integrate import quad
 
 from ballscrew import friction_torque, lubricants, reference_screw
 from ballscrew import rolling_losses as rl
-from ballscrew.contact import hertz
 from ballscrew.errors import BallScrewInputError, BallScrewValidityWarning
 from ballscrew.kinematics import kinematics, neighbour_sliding, rpm_to_rad_s
 from ballscrew.lubricant import lubrication_method
@@ -82,6 +81,10 @@ def test_sphere_drag_follows_the_measured_curve() -> None:
     # slip in either constant of the law (0.15, 0.687) moves C_D by 30 % or more at Re 500.
     re, measured = np.array(MEASURED).T
     np.testing.assert_allclose(rl.sphere_drag_coefficient(re), measured, rtol=0.15)
+    # From Re 100 to 600, where Schiller and Naumann fitted their law, it meets these data to
+    # within 1 %: 3 % there, so that a 10 % slip in its 0.15 (+9 % at Re 265) fails.
+    middle = (re > 100.0) & (re < 600.0)
+    np.testing.assert_allclose(rl.sphere_drag_coefficient(re[middle]), measured[middle], rtol=0.03)
 
 
 def test_sphere_drag_has_stokes_limit_and_refuses_no_flow() -> None:
@@ -131,29 +134,80 @@ def test_grease_has_no_flooded_terms_and_cannot_flood() -> None:
         _complete("bath", 1000.0, 40.0)
 
 
-def test_flooded_meniscus_term_is_the_sum_over_the_gaps() -> None:
-    # Rebuilt from the geometry: each half-nut's 2 circuits of n loaded balls have n - 1 gaps,
-    # each sheared (by quadrature) from the Hertz circle of F_B = c_B Q outward, the gap the
-    # larger of the ball-ball film and the composite roughness; torque = power / omega.
-    from ballscrew.friction.complete import BALL_TRAIN_CONSTANT, _ball_ball_film
+def _film(viscosity: float, speed: float, force: float, g: float, ep: float) -> float:
+    """Hamrock and Dowson's (1977) minimum film of a circular contact, R = D_w/4 [m].
+
+    H = 3.63 U^0.68 G^0.49 W^-0.073 (1 - exp(-0.68)), U = eta u/(E'R), W = F/(E'R^2).
+    """
+    radius = R / 2.0
+    u_par = viscosity * speed / (ep * radius)
+    w_par = force / (ep * radius**2)
+    return 3.63 * radius * u_par**0.68 * g**0.49 * w_par**-0.073 * (1.0 - math.exp(-0.68))
+
+
+@pytest.mark.parametrize(
+    ("nut", "temperature", "c_b"),
+    [("double", 40.0, None), ("double", 20.0, None), ("double", 40.0, 0.0),
+     ("double", 40.0, 0.02), ("single-4point", 20.0, None)],
+)  # fmt: skip
+def test_flooded_meniscus_term_is_the_sum_over_the_gaps(
+    nut: str, temperature: float, c_b: float | None
+) -> None:
+    # Rebuilt from the geometry: each train's circuits of n loaded balls have n - 1 gaps
+    # (a double nut: a train per half; a 4-point nut: one), each sheared (by quadrature) from
+    # the Hertz circle of F_B = c_B Q (Hertz: a = (3 F R_e / 2E')^(1/3), R_e = D_w/4) outward,
+    # the gap the larger of the ball-ball film (Hamrock-Dowson at one surface's speed,
+    # omega_b D_w / 2) and the composite roughness; no force, no circle and the roughness gap.
+    # The default c_B gives F_B = 1.04 N, whose film is 0.12 um at 40 C, 0.26 um at 20 C.
+    from ballscrew.friction.complete import BALL_TRAIN_CONSTANT
     from ballscrew.state import operating_state
 
-    s = reference_screw()
+    s = reference_screw().replace(nut=nut)
+    constant = BALL_TRAIN_CONSTANT if c_b is None else c_b
     omega = rpm_to_rad_s(1000.0)
-    r = _complete("flooded", 1000.0, 40.0)
-    state = operating_state(s, OIL, speed=omega, temperature=40.0, hertz_method="exact")
-    eta = float(OIL.dynamic_viscosity(40.0))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", BallScrewValidityWarning)
+        r = friction_torque(s, OIL, speed=omega, temperature=temperature, model="complete",
+                            lubrication="flooded", ball_train_constant=constant)  # fmt: skip
+        state = operating_state(s, OIL, speed=omega, temperature=temperature)
+    eta = float(OIL.dynamic_viscosity(temperature))
     v0 = abs(float(neighbour_sliding(s, omega)))
+    sigma = math.sqrt(2) * s.roughness_ball
+    trains = [c for c in state.contacts if c.side == "screw"][: 1 if nut != "double" else 2]
     total = 0.0
-    for c in (c for c in state.contacts if c.side == "screw"):
-        force = BALL_TRAIN_CONSTANT * float(c.load)
-        a = float(hertz(force, s.ball_diameter / 4, s.ball_diameter / 4, s.reduced_modulus).a)
-        h0 = max(float(_ball_ball_film(state, c, np.asarray(force))), math.sqrt(2) * 0.08e-6)
+    for c in trains:
+        force = constant * float(c.load)
+        if force > 0.0:
+            a = (3.0 * force * (s.ball_diameter / 4) / (2.0 * s.reduced_modulus)) ** (1 / 3)
+            film = _film(eta, v0 / 2, force, float(c.materials_parameter), s.reduced_modulus)
+        else:
+            a = film = 0.0
         gaps = s.circuits * (s.balls_per_circuit - 1)
-        total += gaps * _meniscus_by_quadrature(eta, v0, h0, a, R)
-    # The closed form against quadrature (1e-9); the component counts balls * (n-1)/n per
-    # family, which is the circuits' n - 1 gaps exactly.
-    assert float(r.components["meniscus"]) == pytest.approx(total / omega, rel=1e-8)
+        total += gaps * _meniscus_by_quadrature(eta, v0, max(film, sigma), a, R)
+    # Quadrature against the closed form (1e-9); Hamrock-Dowson's film here and in the model
+    # from the same formula; the Hertz radius from its closed form against the package's
+    # exact solution (a circle: 1e-6).
+    assert float(r.components["meniscus"]) == pytest.approx(total / omega, rel=1e-6)
+    assert float(r.components["meniscus"]) > 0.0
+
+
+def test_flooded_terms_vanish_at_rest_and_without_a_train() -> None:
+    # At zero speed nothing slides or moves through the oil: 0, finite, without a warning.
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        rest = _complete("flooded", 0.0, 40.0)
+    assert float(rest.components["meniscus"]) == float(rest.components["churning"]) == 0.0
+    # A 4-point nut: one train, every loaded ball churns once.
+    s = reference_screw().replace(nut="single-4point")
+    omega = rpm_to_rad_s(1000.0)
+    r = _complete("flooded", 1000.0, 40.0, nut="single-4point")
+    centre = abs(float(kinematics(s, omega).orbital_speed)) * 0.02 / math.cos(s.lead_angle)
+    one = float(
+        rl.ball_churning_power(OIL.dynamic_viscosity(40.0), OIL.density(40.0), centre, 6.35e-3)
+    )
+    assert float(r.components["churning"]) == pytest.approx(
+        s.circuits * s.balls_per_circuit * one / omega, rel=1e-12
+    )
 
 
 def test_flooded_rolling_term_has_no_starvation_factor() -> None:

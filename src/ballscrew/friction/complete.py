@@ -547,7 +547,7 @@ def _flooded(
     radius = 0.5 * screw.ball_diameter
     sigma = math.sqrt(2.0) * screw.roughness_ball
     n = screw.balls_per_circuit
-    gaps_per_ball = np.maximum(n - 1.0, 0.0) / n
+    gaps_per_ball = (n - 1.0) / n  # n >= 1 (BallScrew refuses an empty circuit)
     screw_side = [c for c in state.contacts if c.side == "screw"]
     trains = screw_side[:1] if screw.nut == "single-4point" else screw_side
     meniscus: FloatArray = np.zeros(shape)
