@@ -197,6 +197,10 @@ def test_flooded_terms_vanish_at_rest_and_without_a_train() -> None:
         warnings.simplefilter("error", RuntimeWarning)
         rest = _complete("flooded", 0.0, 40.0)
     assert float(rest.components["meniscus"]) == float(rest.components["churning"]) == 0.0
+    # Slow (1 and 2 rpm): the film is below the roughness, the gap stays sigma, so the meniscus
+    # power grows as v^2 and its torque as the speed, exactly (Couette shear, no inertia).
+    slow = [float(_complete("flooded", n, 40.0).components["meniscus"]) for n in (1.0, 2.0)]
+    assert slow[1] / slow[0] == pytest.approx(2.0, rel=1e-9)
     # A 4-point nut: one train, every loaded ball churns once.
     s = reference_screw().replace(nut="single-4point")
     omega = rpm_to_rad_s(1000.0)
