@@ -263,7 +263,8 @@ def simplified_contact_force(
         lub_integral = np.empty(size)
         for start in range(0, size, BLOCK_POINTS):
             part = slice(start, start + BLOCK_POINTS)
-            lub_integral[part] = law.disk_mean(*(x[part] for x in flat), s, ws)
+            p0b, eta0b, alphab, rateb = (x[part] for x in flat)
+            lub_integral[part] = law.disk_mean(p0b, eta0b, alphab, rateb, s, ws)
         lub_integral = lub_integral.reshape(shape)
     asperity = sliding_coefficient * share * mu0 * load
     lubricant = (1.0 - share) * area * lub_integral

@@ -140,12 +140,12 @@ def registry() -> pint.UnitRegistry:  # type: ignore[type-arg]
     0.5 s to 0.04 s; where no cache folder can be written, the registry is
     built without one.
     """
-    pint = _pint()
+    unit_registry = _pint().UnitRegistry
     ureg: pint.UnitRegistry  # type: ignore[type-arg]
     try:
-        ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True, cache_folder=":auto:")
+        ureg = unit_registry(autoconvert_offset_to_baseunit=True, cache_folder=":auto:")
     except OSError:  # read-only home, no cache directory: parse the definitions
-        ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+        ureg = unit_registry(autoconvert_offset_to_baseunit=True)
     ureg.define("@alias turn = rev = r")
     return ureg
 
