@@ -21,7 +21,10 @@ refused at once. Pint then converts the unit.
   between two digits is refused there, with both readings.
 * Digits may be grouped by threes with a space (a no-break or thin space too)
   or an apostrophe: ``1 200 N``, ``1'200 N``. Any other grouping is refused: a
-  space is never read as a multiplication.
+  space is never read as a multiplication. After three digits a space followed by
+  a group that does not start with 0 (``100 200 N``) may also be two values whose
+  comma was forgotten: it is refused, with both ways to write it (``100 000 N``
+  and ``100'200 N`` are read as one number).
 * With both a point and a comma, the last one is the decimal separator and the
   other groups thousands: ``1.200,5`` and ``1,200.5`` are both 1200.5.
 * An exponent follows the digits: ``2.5e3``. The minus sign may be typed as ``−``.
@@ -200,6 +203,16 @@ def _digits_value(digits: str) -> str:
                 "a space inside a number is read only as a thousands separator, between "
                 "groups of three digits (e.g. '1 200'); write the number without spaces, "
                 "or separate several values with commas ('0, 500')"
+            )
+        later = [*head[1:], tail.group(1)]
+        if len(head[0]) == 3 and re.search(r"\d\s\d", digits) and all(g[0] != "0" for g in later):
+            # '1 200' and '12 500' group thousands, but '100 200' reads as well as two values
+            # whose comma was forgotten ('100, 200'): neither reading is taken. A group that
+            # starts with 0 is no value of its own ('100 000', '250 050': thousands).
+            raise _NotOneNumberError(
+                "a space after three digits may group thousands or separate two values: "
+                f"write '{''.join(head) + tail.group(1)}' for one number, or "
+                f"'{head[0]}, {', '.join(later)}' for several"
             )
         fraction = "." + tail.group(3) if tail.group(2) else ""
         return "".join(head) + tail.group(1) + fraction
