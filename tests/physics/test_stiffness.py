@@ -53,8 +53,8 @@ def test_series_eigenfrequency_and_lost_motion() -> None:
     assert float(lost_motion(40.0, k)) == pytest.approx(0.48e-6, rel=1e-3)
 
 
-def test_nut_stiffness_moved_here_is_the_one_fit_uses() -> None:
-    from ballscrew.fit import controller
+def test_nut_stiffness_moved_here_is_the_one_the_controller_forms_use() -> None:
+    from ballscrew.servo import controller
 
     assert controller.nut_axial_stiffness is nut_axial_stiffness
     assert nut_axial_stiffness(reference_screw()) > 0.0

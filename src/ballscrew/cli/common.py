@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import contextlib
 import os
-from collections.abc import Callable, Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, TypeVar
 
@@ -15,9 +15,22 @@ if TYPE_CHECKING:
     from rich.progress import Progress
 
 __all__ = [
-    "OUTPUT_OPTIONS", "case_option", "echo_readings", "file_option", "folder_only", "motion",
-    "own_case_option", "progress", "refuse_shared_outputs",
-    "require_case", "stdout", "units_option", "write_json", "write_result", "writing",
+    "OUTPUT_OPTIONS",
+    "case_option",
+    "echo_readings",
+    "file_option",
+    "folder_only",
+    "motion",
+    "own_case_option",
+    "progress",
+    "refuse_shared_outputs",
+    "require_case",
+    "stdout",
+    "units_option",
+    "write_json",
+    "write_outputs",
+    "write_result",
+    "writing",
 ]  # fmt: skip
 
 F = TypeVar("F", bound=Callable[..., Any])
@@ -191,6 +204,34 @@ def write_report(out_dir: str, write: Callable[[Path], list[Path]]) -> None:
     with writing("--out", out_dir), atomic_folder(Path(out_dir)) as folder:
         files = write(folder)
     click.echo(f"report: {Path(out_dir) / 'report.html'} ({len(files)} files)", err=True)
+
+
+def write_outputs(
+    files: Sequence[tuple[str, str | None, bytes]] = (),
+    report: tuple[str | None, Callable[[Path], list[Path]]] | None = None,
+) -> None:
+    """A command's outputs put in place together (:class:`ballscrew.io.files.OutputSet`).
+
+    ``files``: (option, path or None, bytes) each; ``report``: (``--out`` folder or None,
+    ``write(folder)``). Nothing is in place until all are written: a run stopped on the
+    way leaves every earlier output as it was. An error names the outputs' options.
+    """
+    from ..io.files import OutputSet
+
+    given = [(option, path, data) for option, path, data in files if path]
+    out = OutputSet()
+    for _, path, data in given:
+        out.file(path, data)
+    count: list[int] = []
+    if report is not None and report[0]:
+        write = report[1]
+        out.folder(report[0], lambda folder: count.append(len(write(folder))))
+    options = [o for o, _, _ in given] + (["--out"] if count or (report and report[0]) else [])
+    with writing("/".join(options) or "--out", ", ".join(p for _, p, _ in given if p)
+                 + (f" {report[0]}" if report and report[0] else "")):  # fmt: skip
+        out.commit()
+    if report is not None and report[0]:
+        click.echo(f"report: {Path(report[0]) / 'report.html'} ({count[0]} files)", err=True)
 
 
 def motion_options(function: F) -> F:

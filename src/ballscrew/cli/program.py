@@ -8,7 +8,7 @@ import click
 
 from ..io.files import read_input_text
 from ..io.numbers import text as num
-from .common import folder_option, json_option, progress, stdout, write_json, write_report, writing
+from .common import folder_option, json_option, progress, stdout, write_outputs
 
 __all__ = ["NOT_OK_STATUS", "program_command"]
 
@@ -128,15 +128,13 @@ def program_command(
     warned = warning_lines(result)
     for line in warned:
         click.echo(f"warning: {line}", err=True)
-    if csv_file:
-        with writing("--csv", csv_file):
-            from ..io.files import atomic_write
+    from ..report.program import write_program_report
 
-            atomic_write(Path(csv_file), time_series_csv(result))
-    if out_dir:
-        from ..report.program import write_program_report
-
-        write_report(out_dir, lambda folder: write_program_report(folder, result))
-    if json_file:
-        write_json(json_file, json_document(result.as_dict()))
+    # The CSV, the report and the JSON are put in place together, or none of them.
+    write_outputs(
+        [("--csv", csv_file, time_series_csv(result) if csv_file else b""),
+         ("--json", json_file,
+          json_document(result.as_dict()).encode("utf-8") if json_file else b"")],
+        (out_dir, lambda folder: write_program_report(folder, result)),
+    )  # fmt: skip
     return NOT_OK_STATUS if warned else 0
