@@ -51,7 +51,7 @@ import numpy as np
 from ..errors import BallScrewInputError, FloatArray
 from .gcode import ARC, DWELL, RAPID, Program
 
-__all__ = ["Limits", "Motion", "plan", "speed_change_distance"]
+__all__ = ["Limits", "Motion", "at_rest", "plan", "speed_change_distance"]
 
 ARC_STEP = math.radians(5.0)
 """Largest angle between two samples on an arc [rad]."""
@@ -304,7 +304,7 @@ def plan(program: Program, limits: Limits, progress: object = None) -> Motion:
 
     n = program.size
     if n == 0:
-        raise BallScrewInputError("program", "(no motion)", "at least one move or dwell")
+        return at_rest(program)
     g = _geometry(program)
     length = g["length"]
     v, a, j = _block_limits(program, g, limits)
@@ -358,8 +358,27 @@ def plan(program: Program, limits: Limits, progress: object = None) -> Motion:
     if progress is not None:
         progress(n, n)  # type: ignore[operator]
     if not float(phases[:, :, 0].sum()) > 0.0:
-        raise BallScrewInputError("program", "(no time)", "a move or a dwell that takes time")
+        return at_rest(program)
     return _sample(program, g, phases, limits.sample_time, np.array(en), np.array(ex), v)
+
+
+def at_rest(program: Program) -> Motion:
+    """The motion of a program that takes no time: one sample, at rest, at time 0.
+
+    A program without blocks (a subroutine file run alone, only M, S or T
+    words), or whose blocks all take no time (dwells of 0 s), leaves the axes
+    where they are, as a controller runs it: one sample at the program's start
+    (the machine's origin without blocks), its block 0.
+    """
+    n = program.size
+    where = program.start[:1] if n else np.zeros((1, 3))
+    still = np.zeros((1, 3))
+    return Motion(
+        time=np.zeros(1), position=where.astype(float), velocity=still, acceleration=still,
+        jerk=still, block=np.zeros(1, dtype=int), feeding=np.zeros(1, dtype=bool),
+        path_speed=np.zeros(1), entry_speed=np.zeros(n), exit_speed=np.zeros(n),
+        block_limit=np.zeros(n), block_time=np.zeros(n), nominal_time=0.0,
+    )  # fmt: skip
 
 
 def _sample(
