@@ -419,7 +419,7 @@ def test_both_readers_agree_where_both_read() -> None:
 
 @needs_rs274
 def test_an_inch_sample_agrees_to_the_print_precision() -> None:
-    """arcspiral.ngc without its G64 (which the built-in reader refuses): 1003 R arcs.
+    """arcspiral.ngc (its G64 taken out, as when the built-in reader refused it): 1003 R arcs.
 
     Written to 1e-6 in, printed by rs274 to 1e-4 in: every end point and centre is rounded
     by up to h = 1.27 um a coordinate, which moves an arc's length by at most
@@ -451,15 +451,16 @@ def _one(p: Program, k: int) -> Program:
 def test_linuxcnc_samples_run_as_written() -> None:
     """How many of LinuxCNC's samples ``ballscrew program`` runs on the test machine.
 
-    Of the 56 samples, 50 run (13 s of CPU): 31 with motion, 19 subroutine files or remap
-    helpers run alone (no motion: a result of zero energy, with a note), among them 3 that
-    turn rotary axes, 2 that probe (G38.x, run to the target) and 2 that change tools. Six
-    are refused, and each refusal is asserted here so that a new one shows: a spline (G5.1,
-    which rs274 prints without its data) and five refused by rs274 itself: a cutter
-    compensation entry move shorter than the tool radius (g76, lathe-g76: a lathe tool
-    table), ``O<g20sub> callsub`` (a syntax LinuxCNC no longer reads), ``W`` (the standalone
-    rs274 has no U, V, W axes), a probe from the G30 position (0 without a parameter file)
-    onto its own start. The built-in reader alone runs 6.
+    Of the 56 samples, 50 run: 25 moving X, Y, Z; 2 turning a rotary axis (b-index,
+    daisy); 3 probing (gridprobe, smartprobe, x-trim: G38.x run to its target); 20 moving
+    no feed axis (subroutine files and remap helpers run alone, M6 or G4 only: zero motion
+    energy, with a note). Six are refused, and each refusal is asserted here so that a new
+    one shows: a spline (G5.1, which rs274 prints without its data) and five refused by
+    rs274 itself: a cutter compensation entry move shorter than the tool radius (g76,
+    lathe-g76: they need a lathe's tool table), ``O<g20sub> callsub`` (a syntax LinuxCNC no
+    longer reads), ``W`` (cone: the standalone rs274 has no U, V, W axes), a probe from the
+    G30 position (0 without a parameter file) onto its own start (tool-length-probe). The
+    built-in reader alone runs 6.
     """
     machine = load_machine(MACHINE)
     runs = {"builtin": 0, "auto": 0}

@@ -19,6 +19,18 @@ How the commands are taken:
   the plane; a rotation count above one adds full turns), ``DWELL`` a dwell;
   a move that does not change the position is left out, as the built-in
   reader does;
+- the rotary axes A, B, C of a straight move (printed in degrees, plus the
+  angles of the work, ``G92`` and tool offsets) turn when the machine file
+  gives their limits (``machine.rotary``), as the built-in reader reads them:
+  timed with those limits, left out of the ball-screw energy; alone in a
+  feed move, F is in degrees per minute, with X, Y or Z the linear path's
+  feed;
+- ``STRAIGHT_PROBE`` (``G38.2`` to ``G38.5``) is a feed move to its target,
+  with a note: the probe not tripping, the longest the move can be. The
+  interpreter itself goes on from the target (``rs274`` has no probe);
+- ``CHANGE_TOOL`` (``M6``) is a dwell of the machine file's
+  ``tool_change_time`` at the position, with a note, as the built-in reader
+  takes ``M6``; without that time it is skipped with a note (no time);
 - coordinates are printed in the program's units (``USE_LENGTH_UNITS``) and
   in program coordinates: they become machine coordinates as LinuxCNC's
   motion controller makes them, rotated by ``SET_XY_ROTATION`` and shifted
@@ -32,15 +44,15 @@ How the commands are taken:
   with a note; rigid tapping (``G33.1``, ``RIGID_TAP``) is a feed in and out at the
   thread's pitch times the spindle speed;
 - skipped with one note per kind and its first line, as they do not move the
-  feed axes: spindle and coolant commands, tool selection and changes (the
-  axes stand still; the change's time is not counted), path control modes
-  (``G61``, ``G64``: the machine file's ``path_tolerance`` is used), program
-  stops, messages and comments;
-- refused with the line: a move of a rotary axis (A, B, C), a probing move
-  (``G38.x``: where it stops depends on the contact), a spline
-  (``NURBS_FEED``), an arc in a rotated plane other than XY or
-  in the U, V, W planes, a feed per revolution without a spindle speed, and
-  whatever the interpreter itself refuses (its message and the line).
+  feed axes: spindle and coolant commands, tool selection (``T``, ``M61``),
+  path control modes (``G61``, ``G64``: the machine file's
+  ``path_tolerance`` is used), program stops, messages and comments;
+- refused with the line: a move of a rotary axis (A, B, C) the machine file
+  gives no limits for, or in an arc, a spline (``NURBS_FEED``, which
+  ``rs274`` prints without its data), an arc in a rotated plane other than
+  XY or in the U, V, W planes, a feed per revolution without a spindle
+  speed, and whatever the interpreter itself refuses (its message and the
+  line).
 
 Line numbers. ``rs274`` prints a block's ``N`` word, not its line in the
 file. Each line of the program is therefore given an ``N`` word carrying its
@@ -48,6 +60,10 @@ line number (:data:`LINE_MARK` plus the line, replacing an ``N`` word the
 line has) in a copy the interpreter reads; blank lines and ``%`` lines are
 left as they are. A block run from a subroutine file outside the program
 carries the line of the last block before it in the program.
+
+Each run of ``rs274`` has a home folder of its own (``HOME``): the
+interpreter maps its tool table into ``$HOME/.tool.mmap``, and two runs at
+once sharing that file read each other's tools.
 
 Print precision: ``rs274`` prints four decimals of the program's unit,
 0.1 µm in ``G21`` and 2.5 µm (0.0001 in) in ``G20``: coordinates are
