@@ -12,7 +12,9 @@ picture in ``docs/img/`` shows what this version computes and says which version
 - ``friction_signs.png``: the sign conventions of the friction export
   (scripts/friction_sign_figure.py);
 - ``monitor_example.png``: the preload read from a drag-torque series, its trend and the
-  50 % crossing (``ballscrew monitor``).
+  50 % crossing (``ballscrew monitor``);
+- ``coverage_reliability.png``: the reliability diagram of the check's P(NOT OK) on
+  synthetic cases with a known truth (scripts/coverage_figure.py).
 
 Each PNG carries ``Software = ballscrew VERSION`` in its metadata (tests/test_docs_figures.py
 checks it against the package's version); the figures also print it in a corner.
@@ -90,6 +92,13 @@ def monitor_example() -> None:
     _save_png(_figure_png(monitor_figure(result)), "monitor_example.png")
 
 
+def coverage_reliability() -> None:
+    """docs/img/coverage_reliability.png: the check's P(NOT OK) against the known truth."""
+    import coverage_figure
+
+    _save_png(_figure_png(coverage_figure.draw()), "coverage_reliability.png")
+
+
 def web_pages() -> None:
     """docs/img/web-calculator.png and docs/img/web-program.png, the page in Chromium."""
     from playwright.sync_api import sync_playwright
@@ -103,6 +112,8 @@ def web_pages() -> None:
         browser = p.chromium.launch(executable_path=chromium, headless=True, args=CHROMIUM_ARGS)
         page = browser.new_page(viewport={"width": 1280, "height": 900})
         page.goto(url)
+        # Generous waits: on a loaded machine the workers warm up and compute slowly.
+        page.set_default_timeout(180_000)
         page.wait_for_selector("body[data-revision]:not([data-revision='0'])")
         page.wait_for_timeout(600)  # the charts' last drawing after the first results
         shown = page.text_content("body") or ""
@@ -123,6 +134,7 @@ def web_pages() -> None:
 FIGURES: dict[str, Callable[[], None]] = {
     "friction_signs": friction_signs,
     "monitor_example": monitor_example,
+    "coverage": coverage_reliability,
     "web": web_pages,
 }
 

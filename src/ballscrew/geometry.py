@@ -61,6 +61,7 @@ __all__ = [
     "NutArrangement",
     "ScrewArray",
     "ScrewGeometry",
+    "nut_length",
     "reference_screw",
 ]
 
@@ -557,3 +558,18 @@ def reference_screw() -> BallScrew:
         nut="double",
         preload=2000.0,
     )
+
+
+def nut_length(screw: BallScrew) -> float:
+    """Threaded length of the nut [m]: its loaded turns plus a return turn per circuit.
+
+    Twice that for a double nut.
+
+    Examples
+    --------
+    >>> from ballscrew import reference_screw
+    >>> round(nut_length(reference_screw()), 3)  # (2.5 + 1) x 2 circuits x 10 mm, twice
+    0.14
+    """
+    s = screw
+    return (s.loaded_turns + 1.0) * s.circuits * s.lead * (2.0 if s.nut == "double" else 1.0)

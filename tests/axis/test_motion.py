@@ -158,9 +158,18 @@ def test_profiles_need_two_samples_at_increasing_times() -> None:
 
     two = np.array([0.0, 1.0])
     assert Profile(two, two, two, two, two).duration == 1.0
-    same = np.array([0.0, 0.0, 1.0])
+    back = np.array([0.0, 1.0, 0.5])
     with pytest.raises(BallScrewInputError, match="time"):
-        Profile(same, same, same, same, same)
+        Profile(back, back, back, back, back)
+    still = np.array([1.0, 1.0])
+    with pytest.raises(BallScrewInputError, match="time"):
+        Profile(still, two, two, two, two)
+    # A time given twice is a step of the speed (a program's junction), not of the position.
+    t, x = np.array([0.0, 0.5, 0.5, 1.0]), np.array([0.0, 0.1, 0.1, 0.3])
+    step = Profile(t, x, np.array([0.2, 0.2, 0.4, 0.4]), np.zeros(4), np.zeros(4))
+    assert step.duration == 1.0
+    with pytest.raises(BallScrewInputError, match="position"):
+        Profile(t, np.array([0.0, 0.1, 0.2, 0.3]), x, x, x)
 
 
 def test_trajectory_errors_name_the_line_and_the_header() -> None:
@@ -180,10 +189,10 @@ def test_a_profile_whose_time_stalls_names_the_sample() -> None:
     # Issue 52: the refusal said "time = '(profile)'"; it names the time and its sample.
     from ballscrew.axis.motion import Profile
 
-    t = np.array([0.0, 0.1, 0.1, 0.3])
+    t = np.array([0.0, 0.2, 0.1, 0.3])
     zero = np.zeros(4)
     with pytest.raises(BallScrewInputError) as info:
         Profile(t, zero, zero, zero, zero)
-    assert "time = '0.1 s at sample 3, after 0.1 s'" in str(info.value)
+    assert "time = '0.1 s at sample 3, after 0.2 s'" in str(info.value)
     with pytest.raises(BallScrewInputError, match="time = '1 sample"):
         Profile(t[:1], zero[:1], zero[:1], zero[:1], zero[:1])

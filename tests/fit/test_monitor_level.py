@@ -34,7 +34,9 @@ def test_the_same_series_higher_still_overlaps_for_an_absolute_threshold() -> No
     # interval that did not overlap the first one. With the model's level in the interval
     # they overlap, each containing the other's crossing.
     a, b = _run(1.0, "lift-off 2 kN"), _run(1.3, "lift-off 2 kN")
-    assert a.level_sd > 0.3 and b.level_sd > 0.3  # the scorecard's 0.53 in ln T, over ~1
+    # The scorecard's printed rows: sigma(ln T) = 0.28 with the bias counted in, over an
+    # elasticity of about 1 (0.53 before, from the law's rows).
+    assert a.level_sd > 0.25 and b.level_sd > 0.25
     assert a.crossing_low < b.crossing < a.crossing_high
     assert b.crossing_low < a.crossing < b.crossing_high
     assert any("absolute threshold depends on the model's level" in n for n in a.notes)

@@ -310,6 +310,24 @@ def test_runs_at_the_same_time_keep_their_own_tool_tables(tmp_path: Path) -> Non
 
 
 @needs_rs274
+def test_an_arc_ending_at_an_axis_turn_off_its_circle_runs() -> None:
+    """comp-g1.ngc's line 30 as rs274 prints it: an arc whose end lies at 0 deg to rounding.
+
+    Its end is 0.19 um off the circle (printed to 0.1 um) and its angle there 1.4e-16
+    quarter turns short of 0: the turn of Y there is the end's own sample, not a second
+    sample at the same time from the circle's formula (which refused the program: "one
+    position at a time given twice").
+    """
+    text = (SAMPLES / "comp-g1.ngc").read_text(encoding="utf-8")
+    p = read_program_rs274(text, directory=SAMPLES, tool_table=TOOLS)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        r = run_program(load_machine(MACHINE), p)
+    same = np.diff(r.motion.time) == 0.0
+    assert np.all(np.abs(np.diff(r.motion.position, axis=0))[same] <= 1e-9)
+
+
+@needs_rs274
 def test_an_endless_loop_is_stopped() -> None:
     with pytest.raises(BallScrewInputError, match="still running after 1 s"):
         read_program_rs274("o1 while [1]\no1 endwhile\nM2\n", timeout=1.0)

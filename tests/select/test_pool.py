@@ -35,14 +35,15 @@ HEADER = "name, rated_torque [N*m], peak_torque [N*m], max_speed [1/min], rotor_
 
 def test_the_rating_estimate_lies_near_the_printed_ratings() -> None:
     # The makers' own ratings (25 rows with a printed ball diameter) are the
-    # independent reference. Lundberg-Palmgren without a material factor sits
-    # below them (ISO 281 raises ball bearings by b_m = 1.3 for today's steels);
-    # every row within 0.7 to 1.2 and the median within 0.75 to 0.95 bounds the
-    # scatter the documentation states (0.77 to 1.15, median 0.82).
+    # independent reference. ISO 3408-5's scheme (turns to the power 0.86) gives their
+    # median within 5 %; every row within 0.9 to 1.5 bounds the scatter the
+    # documentation states (1.00 to 1.43, the two above 1.1 HIWIN's internal-
+    # recirculation T4 nuts). C_0a by the 4200 MPa definition at conformity 0.55 sits
+    # lower (0.68, docs/selection.md).
     s = rating_scatter()
     assert s["rows"] == 25
-    assert 0.75 <= s["dynamic"]["median"] <= 0.95
-    assert 0.7 <= s["dynamic"]["min"] and s["dynamic"]["max"] <= 1.2
+    assert 0.95 <= s["dynamic"]["median"] <= 1.05
+    assert 0.9 <= s["dynamic"]["min"] and s["dynamic"]["max"] <= 1.5
     assert 0.6 <= s["static"]["median"] <= 0.8
 
 
@@ -57,7 +58,7 @@ def test_half_the_balls_carry_two_thirds_power_of_the_load() -> None:
 
 
 def test_a_loaded_turn_counts_alike_in_one_circuit_or_in_two() -> None:
-    # Every loaded turn is one equal row (ISO 3408-5, ISO 281's k^0.7 rule): one circuit of
+    # Every loaded turn counts alike (ISO 3408-5's k^0.86): one circuit of
     # two turns holds twice the balls of one turn (40 = 2 x 20 on this 41 mm screw), so it
     # has the balls per turn, and the turns, of two circuits of one turn: the same rating.
     two_turns = BallScrew(0.041, 0.01, 0.00635, math.radians(45), 0.55, 0.55, 2.0, 1, "single")
@@ -249,7 +250,14 @@ def test_the_command_takes_a_screw_price_table(capsys: pytest.CaptureFixture[str
     # objective picked is never the recommendation
     table = text.split("recommended:")[0]
     assert "HIWIN R32-20K4-FSC" in table and "380" in table and "R40-20K4" not in table
-    assert "recommended: HIWIN R32-20K4-FSC" in text
+    # ... at nominal values. Neither is sure at 95 % (the thermal lead error's P(NOT OK):
+    # R32 about 48 %, R40 about 29 %): undecided, and the one less likely to fail is named,
+    # off the front as it is
+    flat = " ".join(text.split())
+    assert (
+        "recommended: undecided (none passes with 95% confidence; least likely to fail: "
+        "HIWIN R40-20K4-FSC" in flat
+    )
 
 
 def test_the_heavy_class_is_tried_on_double_nuts_only() -> None:

@@ -103,6 +103,9 @@ def test_the_page_runs_a_program_in_the_browser() -> None:
         assert row[0] == "reversals" and len(row) == 4
         copper = page.locator('#program_table tr[data-quantity="copper loss [J]"] td')
         assert all(float(v) > 0 for v in copper.all_text_contents()[1:])  # the example's motors
+        verdicts = page.locator('#program_table tr[data-quantity="verdict"] td')
+        assert all(v.split(";")[0] in ("OK", "CHECK", "NOT OK", "NOT CHECKED")
+                   for v in verdicts.all_text_contents()[1:])  # fmt: skip
         assert "blocks" in (page.text_content("#program_status") or "")
         page.fill("#program_text", "G1 X10 F100\nG81 Z-5 R2\n")
         page.click("#program_run")

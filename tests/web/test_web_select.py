@@ -53,6 +53,7 @@ def test_the_page_selection_equals_the_library(client: TestClient) -> None:
     assert data["candidates"] == len(direct.evaluated) <= MAX_CANDIDATES
     assert {r["name"] for r in data["front"]} == {direct.evaluated[i].name for i in direct.front}
     assert data["command"].startswith('ballscrew select --case case.toml --move "stroke=300 mm')
+    assert data["confidence"] == 0.95 and data["undecided"] is direct.undecided
     # within the server's time budget (10 s, Limits.seconds) with room on a shared machine
     assert seconds < 8.0, seconds
 
@@ -62,6 +63,15 @@ def test_the_page_refuses_too_many_candidates_and_names_the_count(client: TestCl
     answer = client.post("/api/select", json=wide, headers=JSON)
     assert answer.status_code == 422
     assert f"at most {MAX_CANDIDATES} candidates" in answer.json()["error"]
+
+
+def test_the_page_takes_a_confidence(client: TestClient) -> None:
+    answer = client.post("/api/select", json=BODY | {"confidence": "80 %"}, headers=JSON)
+    assert answer.status_code == 200, answer.text
+    assert answer.json()["confidence"] == 0.8
+    assert '--confidence "80.0%"' in answer.json()["command"]
+    bad = client.post("/api/select", json=BODY | {"confidence": "120 %"}, headers=JSON)
+    assert bad.status_code == 422 and bad.json()["field"] == "confidence"
 
 
 def test_bad_filters_and_objectives_are_named(client: TestClient) -> None:

@@ -89,7 +89,15 @@ from .energy import CycleResult
 from .thermal import nut_length
 from .uncertainty import SAMPLES, SEED, VerdictUncertainty, draws, judge, model_error
 
-__all__ = ["CHECK_FROM", "AxisCheck", "Criterion", "check_inputs", "run_check", "verdict"]
+__all__ = [
+    "CHECK_FROM",
+    "AxisCheck",
+    "Criterion",
+    "check_inputs",
+    "life_utilisation",
+    "run_check",
+    "verdict",
+]
 
 DEFAULT_LOAD_FACTOR = 1.2
 """Load factor f_w of the life when the case gives none [-]: 1.2, where THK's normal
@@ -197,6 +205,9 @@ class AxisCheck:
     thermal: dict[str, Any] = field(default_factory=dict)
     inputs: dict[str, Any] = field(default_factory=dict)
     """What the verdicts were computed from (:func:`check_inputs`); the face adds the command."""
+    p_not_ok: float | None = None
+    """The probability that one row or more is NOT OK, over the same draws as the rows' (None
+    when the Monte Carlo was not drawn)."""
 
     @property
     def verdict(self) -> str:
@@ -220,6 +231,7 @@ class AxisCheck:
             "case": self.title,
             "model": self.model,
             "verdict": self.verdict,
+            "p_not_ok": self.p_not_ok,
             "not_checked": self.not_checked,
             "criteria": [c.as_dict() for c in self.criteria],
             "life": self.life,
@@ -253,7 +265,11 @@ def _span(run: EnergyRun, notes: list[str]) -> float:
 
 
 def run_check(
-    run: EnergyRun, model: str | None = None, *, draws_when_failing: bool = True
+    run: EnergyRun,
+    model: str | None = None,
+    *,
+    draws_when_failing: bool = True,
+    draws: bool = True,
 ) -> AxisCheck:
     """Every criterion of the axis over ``run``'s cycle for ``model`` (module docstring).
 
@@ -262,7 +278,9 @@ def run_check(
     ``draws_when_failing=False`` it is left out when a row already fails at its
     nominal value (the verdict, every row's value and the binding row are the
     same; no row carries an uncertainty): ``ballscrew select`` rejects such a
-    candidate without drawing. Raises
+    candidate without drawing. With ``draws=False`` it is never drawn
+    (``ballscrew program``: a long program's load spectrum makes the draws
+    cost seconds an axis). Raises
     :class:`~ballscrew.errors.BallScrewInputError` naming the field when the
     stroke does not fit between the supports or a motor is given without its
     rotor inertia, and the heat balance's error when ``run`` kept one
@@ -314,13 +332,16 @@ def run_check(
         "axial loads: inertia, gravity and the process force of the move; no guideway "
         "friction (not in the case)"
     )
-    if draws_when_failing or all(r.verdict != "NOT OK" for r in rows):
-        rows = _with_uncertainty(run, name, energy, force, turns, rows, stiffness, notes)
+    p_any: float | None = None
+    if not draws:
+        notes.append("uncertainty: not drawn (the verdicts of the nominal values)")
+    elif draws_when_failing or all(r.verdict != "NOT OK" for r in rows):
+        rows, p_any = _with_uncertainty(run, name, energy, force, turns, rows, stiffness, notes)
     else:
         notes.append("uncertainty: not drawn (a row fails at its nominal value)")
     marked = [f"{a.field} = {a.value} ({a.reason})" for a in case.assumptions]
     return AxisCheck(case.title, name, rows, marked + list(run.assumptions) + notes, life,
-                     stiffness, motor, thermal, check_inputs(run, name))  # fmt: skip
+                     stiffness, motor, thermal, check_inputs(run, name), p_any)  # fmt: skip
 
 
 def check_inputs(run: EnergyRun, model: str) -> dict[str, Any]:
@@ -711,8 +732,11 @@ def __getattr__(name: str) -> Any:
     return renamed(__name__, name, {"axis_check": run_check})
 
 
-def _tolerances(run: EnergyRun, notes: list[str]) -> tuple[float, float, float, float]:
-    """The case's tolerances of mass, process force, preload and ratings (shares, ±)."""
+def _tolerances(run: EnergyRun, notes: list[str]) -> tuple[float, float, float, float, bool]:
+    """The case's tolerances of mass, process force, preload and ratings (shares, ±).
+
+    The last item says whether the preload's is the default (the makers' drag-torque band).
+    """
     case, screw = run.case, run.case.screw
     check = case.check
     given = {k: check.get(f"{k}_tolerance") for k in ("mass", "force", "preload", "rating")}
@@ -735,8 +759,10 @@ def _tolerances(run: EnergyRun, notes: list[str]) -> tuple[float, float, float, 
         preload = drag_torque_tolerance(inside)[2]
         notes.append(
             f"preload tolerance +-{preload:.0%} (default: the makers' drag-torque band of grade "
-            f"C3 at the catalogue drag torque {torque:.3g} N*m, THK A-688 Table 13; give "
-            "check.preload_tolerance)"
+            f"C3 at the catalogue drag torque {torque:.3g} N*m, THK A-688 Table 13: a maker "
+            "sets the preload by that torque, which is proportional to it, and accepts the nut "
+            "within the band, so the preload is known to the same share; give "
+            "check.preload_tolerance, e.g. from the nut's measured drag torque)"
         )
     names = {"mass": "moving mass", "force": "process force", "rating": "load ratings"}
     missing = [k for k in names if given[k] is None]
@@ -745,26 +771,36 @@ def _tolerances(run: EnergyRun, notes: list[str]) -> tuple[float, float, float, 
         notes.append(f"no tolerance given for the {', '.join(names[k] for k in missing)}: "
                      f"taken as exact (give {keys})")  # fmt: skip
     return (float(given["mass"] or 0.0), float(given["force"] or 0.0), float(preload or 0.0),
-            float(given["rating"] or 0.0))  # fmt: skip
+            float(given["rating"] or 0.0), given["preload"] is None)  # fmt: skip
 
 
 def _with_uncertainty(
     run: EnergyRun, model: str, energy: ModelEnergy, force: FloatArray, turns: FloatArray,
     rows: list[Criterion], stiffness: dict[str, Any], notes: list[str],
-) -> list[Criterion]:  # fmt: skip
-    """Every row with a limit, with its P(NOT OK) and interval (:mod:`.uncertainty`)."""
+) -> tuple[list[Criterion], float]:  # fmt: skip
+    """Every row with a limit, with its P(NOT OK) and interval (:mod:`.uncertainty`).
+
+    And the probability that one row or more is NOT OK in the same draw (a NaN counts
+    as NOT OK, as in :func:`~.uncertainty.judge`).
+    """
     screw = run.case.screw
-    t_mass, t_force, t_pre, t_rating = _tolerances(run, notes)
+    t_mass, t_force, t_pre, t_rating, default_preload = _tolerances(run, notes)
     creep_torque = float(stiffness.get("friction_force_N", 0.0)) * screw.lead / (2.0 * math.pi)
-    sigma, origin = model_error(model, screw.nut, creep_torque)
-    notes.append(origin)
-    if math.isnan(sigma):
-        sigma = 0.0
-    d = draws(t_mass, t_force, t_pre, t_rating, sigma)
+    # The speed at which the cycle's friction heat is made (heat-weighted mean): which speed
+    # range the model's error is wanted in.
+    omega = np.abs(np.asarray(energy.cycle.screw_speed, dtype=float))
+    heat = np.abs(np.asarray(energy.cycle.friction_torque, dtype=float)) * omega
+    heat = heat * _weights(np.asarray(run.profile.time, dtype=float))
+    speed = float(rad_s_to_rpm(np.sum(heat * omega) / np.sum(heat))) if np.sum(heat) > 0 else None
+    error = model_error(model, screw.nut, creep_torque, speed)
+    notes.append(error.text)
+    sigma, bias = (0.0, 0.0) if math.isnan(error.sigma) else (error.sigma, error.bias)
+    d = draws(t_mass, t_force, t_pre, t_rating, sigma, friction_bias=bias)
     notes.append(
         f"uncertainty: Monte Carlo over {SAMPLES} draws (seed {SEED}): mass +-{t_mass:.0%}, "
         f"process force +-{t_force:.0%}, preload +-{t_pre:.0%}, load ratings +-{t_rating:.0%} "
-        f"(uniform), the model's friction x exp(N(0, {sigma:.3g})); the friction factor scales "
+        f"(uniform), the model's friction x exp({-bias:+.3g} + N(0, {sigma:.3g})), its bias "
+        "moving the median; the friction factor scales "
         "the heat and the motor's friction torque, not the preload's share of it; P(NOT OK) "
         "beside each verdict, 'OK (95 %)' when P <= 5 %, 'NOT OK (95 %)' when P >= 95 %, "
         "else 'undecided'"
@@ -772,13 +808,37 @@ def _with_uncertainty(
     process = np.asarray(run.profile.process_force, dtype=float)
     mass_part = force - process
     samples = _row_samples(run, energy, mass_part, process, turns, rows, d)
+    life = next((r for r in rows if r.name.startswith("fatigue life")), None)
+    if default_preload and t_pre > 0.0 and life is not None and life.name in samples:
+        _preload_effect(run, force, turns, life, t_pre, notes)
     out = []
+    fails = np.zeros(SAMPLES, dtype=bool)
     for row in rows:
         u = samples.get(row.name)
         if u is None and row.utilisation is not None:
             u = np.full(SAMPLES, row.utilisation)  # no uncertain input in its formula
+        if u is not None:
+            fails |= np.isnan(u) | (u > 1.0)
         out.append(row if u is None else replace(row, uncertainty=judge(u)))
-    return out
+    return out, float(np.mean(fails))
+
+
+def _preload_effect(
+    run: EnergyRun, force: FloatArray, turns: FloatArray, life: Criterion, t_pre: float,
+    notes: list[str],
+) -> None:  # fmt: skip
+    """A note: the fatigue life row's utilisation at the default preload band's two ends."""
+    if run.case.dynamic_load_rating is None or run.case.screw.nut == "single":
+        return
+    pre = run.case.screw.preload * np.array([1.0 - t_pre, 1.0 + t_pre])
+    f = np.broadcast_to(np.asarray(force, dtype=float), (2, np.size(force)))
+    low, high = _life_samples(run, f, pre, np.ones(2), turns, life)
+    notes.append(
+        f"the default preload band alone moves the fatigue life row's utilisation from "
+        f"{low:.3g} (preload -{t_pre:.0%}) to {high:.3g} (+{t_pre:.0%}), nominal "
+        f"{life.utilisation:.3g}: where the preload carries the load the life goes as about "
+        "the preload to the power -3, so this band is most of the life row's interval"
+    )
 
 
 def _row_samples(
@@ -882,20 +942,43 @@ def _life_samples(
     """Required over computed life for each draw of forces, preload and rating."""
     case, screw = run.case, run.case.screw
     assert case.dynamic_load_rating is not None
-    if screw.nut == "single":
-        h1, h2 = np.maximum(f, 0.0), np.maximum(-f, 0.0)
-    else:
-        loaded, relieved = preloaded_loads(f, pre[:, None])
+    rpm = float(np.sum(turns)) / run.profile.duration * 60.0
+    return life_utilisation(
+        f, pre, case.dynamic_load_rating * kr, turns, float(row.limit or 0.0), rpm,
+        preloaded=screw.nut != "single",
+        load_factor=float(run.case.check.get("load_factor") or DEFAULT_LOAD_FACTOR),
+        reliability=float(case.check.get("reliability", 0.9)),
+    )  # fmt: skip
+
+
+def life_utilisation(
+    force: FloatArray, preload: FloatArray, rating: FloatArray, turns: FloatArray,
+    required_hours: float, speed_rpm: float, *, preloaded: bool, load_factor: float,
+    reliability: float = 0.9,
+) -> FloatArray:  # fmt: skip
+    r"""Required over computed L10 life of a cycle, one per draw [-] (ISO 3408-5 cl. 7).
+
+    ``force`` [N] is (draws, samples), the nut's axial force at each sample of
+    the cycle, ``turns`` (samples,) the screw turns made under each, ``preload``
+    [N] and ``rating`` [N] (draws,) the preload and :math:`C_a` of each draw.
+    A preloaded nut's halves carry :func:`~ballscrew.design.sizing.preloaded_loads`
+    (a single nut's flanks each one sign of the force), each half's cubic mean
+    load gives :math:`L = a_1 (C_a/(f_w F_m))^3 10^6` revolutions, the halves
+    in series; hours at ``speed_rpm``, the cycle's mean speed.
+    """
+    f = np.asarray(force, dtype=float)
+    if preloaded:
+        loaded, relieved = preloaded_loads(f, np.asarray(preload, dtype=float)[:, None])
         h1 = np.where(f >= 0.0, loaded, relieved)
         h2 = np.where(f >= 0.0, relieved, loaded)
-    ca = case.dynamic_load_rating * kr
-    f_w = float(run.case.check.get("load_factor") or DEFAULT_LOAD_FACTOR)
-    rel = float(case.check.get("reliability", 0.9))
-    revs = combined_life(nominal_life(ca, cubic_mean_load(h1, turns), rel, f_w),
-                         nominal_life(ca, cubic_mean_load(h2, turns), rel, f_w))  # fmt: skip
-    rpm = float(np.sum(turns)) / run.profile.duration * 60.0
-    hours = np.asarray(revs, dtype=float) / (60.0 * rpm)
-    return np.asarray(float(row.limit or 0.0) / hours, dtype=float)
+    else:
+        h1, h2 = np.maximum(f, 0.0), np.maximum(-f, 0.0)
+    revs = combined_life(nominal_life(rating, cubic_mean_load(h1, turns), reliability,
+                                      load_factor),
+                         nominal_life(rating, cubic_mean_load(h2, turns), reliability,
+                                      load_factor))  # fmt: skip
+    hours = np.asarray(revs, dtype=float) / (60.0 * speed_rpm)
+    return np.asarray(required_hours / hours, dtype=float)
 
 
 def _thermal_samples(

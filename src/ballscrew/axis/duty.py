@@ -83,10 +83,15 @@ def profile_from_move(move: dict[str, float], cycles: int) -> Profile:
         raise BallScrewInputError("--move, --cycles", exc.value, exc.allowed) from None
 
 
-def profile_from_file(path: str, cycles: int) -> Profile:
-    """A trajectory CSV (units in the header) repeated ``cycles`` times."""
+def profile_from_file(path: str, cycles: int, standstill_speed: float | None = None) -> Profile:
+    """A trajectory CSV (units in the header) repeated ``cycles`` times.
+
+    ``standstill_speed`` [m/s]: the width of the friction's sign near rest
+    (:func:`~ballscrew.axis.motion.read_trajectory`; None: from the noise of the file's
+    positions).
+    """
     text = read_input_text("--profile", path)
-    one = read_trajectory(text, path)
+    one = read_trajectory(text, path, standstill_speed)
     return chain(*([one] * cycles))
 
 

@@ -13,10 +13,13 @@ one vectorised call and returns, in SI:
   torque that moves the load, :math:`T_F = F l/2\pi`;
 * the support bearings' friction :math:`T_b` (:mod:`ballscrew.bearings`,
   reported separately from the screw's);
-* the motor torque :math:`T_m = [T_F + \mathrm{sign}(\omega)(T_f + T_b) +
+* the motor torque :math:`T_m = [T_F + s(\omega)(T_f + T_b) +
   (J_s + J_c)\dot\omega]/i + J_m i\dot\omega` with gear ratio :math:`i`
-  (motor turns per screw turn);
-* friction power :math:`T_f|\omega|` and energy :math:`\int T_f|\omega|\,dt`
+  (motor turns per screw turn), where :math:`s` is the sign of the speed,
+  ramped over the profile's ``standstill_speed`` for a measured trajectory
+  (:mod:`ballscrew.axis.standstill`; exact for a planned one);
+* friction power :math:`T_f\,s(\omega)\,\omega` (:math:`T_f|\omega|` when moving)
+  and energy :math:`\int T_f s(\omega)\omega\,dt`
   (trapezoidal rule over the samples), split by direction of travel, and the
   same with the catalogue's constant-efficiency rule for comparison;
 * the peak and RMS motor torque, :math:`\sqrt{\int T_m^2\,dt / t}`;
@@ -62,12 +65,14 @@ from ..geometry import BallScrew
 from ..lubricant import Lubricant
 from ..materials import STANDARD_GRAVITY
 from .motion import Profile
+from .standstill import regularised_sign
 
 __all__ = [
     "Axis",
     "CycleResult",
     "axis_cycle",
     "friction_energy",
+    "friction_sign",
     "reverse_efficiency",
     "screw_motion",
     "self_locking",
@@ -444,10 +449,12 @@ def axis_cycle(
     t_load = force * lead / (2.0 * math.pi)
     t_inertia = (axis.screw_inertia + axis.coupling_inertia) * alpha
     t_b = np.broadcast_to(_bearing_torque(axis, lubricant, omega, force, temperature), t_f.shape)
-    t_screw = t_load + np.sign(omega) * (t_f + t_b) + t_inertia
+    sign = friction_sign(profile, omega, lead)
+    t_screw = t_load + sign * (t_f + t_b) + t_inertia
     i = axis.gear_ratio
     t_motor = t_screw / i + axis.motor_inertia * i * alpha
-    power = t_f * np.abs(omega)
+    slip = sign * omega  # |omega| when moving; less inside the standstill ramp
+    power = t_f * slip
     time = profile.time
     limits = _speed_limits(screw, omega, axis)
     for message in limits:
@@ -470,8 +477,8 @@ def axis_cycle(
         friction_energy_out=_integral(out, time),
         friction_energy_back=_integral(back, time),
         bearing_torque=t_b,
-        bearing_energy=_integral(t_b * np.abs(omega), time),
-        constant_efficiency_energy=_integral(catalog.total * np.abs(omega), time),
+        bearing_energy=_integral(t_b * slip, time),
+        constant_efficiency_energy=_integral(catalog.total * slip, time),
         load_work=_load_work(axis, profile),
         peak_motor_torque=float(np.max(np.abs(t_motor))),
         rms_motor_torque=math.sqrt(_integral(t_motor**2, time) / profile.duration),
@@ -479,7 +486,7 @@ def axis_cycle(
         reverse_efficiency=backward,
         friction=fr,
         speed_warnings=tuple(limits),
-        friction_energy_by_mechanism=_energy_by_mechanism(fr, omega, time),
+        friction_energy_by_mechanism=_energy_by_mechanism(fr, slip, time),
     )
 
 
@@ -497,15 +504,30 @@ def friction_energy(
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # as axis_cycle: kept out of this figure
         fr = _per_sample(screw, lubricant, omega, force, temperature, model, parameters)
-    return _integral(fr.total * np.abs(omega), profile.time)
+    slip = friction_sign(profile, omega, screw.lead) * omega
+    return _integral(fr.total * slip, profile.time)
+
+
+def friction_sign(profile: Profile, omega: FloatArray, lead: float) -> FloatArray:
+    r"""The sign the friction torque takes at each sample [-].
+
+    :func:`~ballscrew.axis.standstill.regularised_sign` of the screw speed
+    ``omega`` [rad/s] over the profile's ``standstill_speed`` taken to the
+    screw, :math:`2\pi v_s/l` (``lead`` :math:`l` [m]); the exact sign for a
+    planned profile (``standstill_speed`` 0).
+    """
+    return regularised_sign(omega, 2.0 * math.pi * profile.standstill_speed / lead)
 
 
 def _energy_by_mechanism(
-    fr: FrictionResult, omega: FloatArray, time: FloatArray
+    fr: FrictionResult, slip: FloatArray, time: FloatArray
 ) -> dict[str, float]:
-    """The friction energy of each loss mechanism over the profile [J]."""
+    r"""The friction energy of each loss mechanism over the profile [J].
+
+    ``slip`` is the screw speed times the friction's sign, :math:`|\omega|` when moving.
+    """
     return {
-        name: _integral(np.broadcast_to(part, fr.total.shape) * np.abs(omega), time)
+        name: _integral(np.broadcast_to(part, fr.total.shape) * slip, time)
         for name, part in fr.components.items()
     }
 

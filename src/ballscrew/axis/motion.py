@@ -46,6 +46,10 @@ MAX_SAMPLES = 5_000_000
 """The most samples :func:`back_and_forth` makes (5000 s of motion at 1 ms)."""
 
 
+STEP_POSITION = 1e-9
+"""The most a profile's position may differ across a time given twice [m] (rounding)."""
+
+
 @dataclass(frozen=True)
 class Profile:
     """A sampled motion of the table (arrays of equal length, times increasing).
@@ -53,11 +57,16 @@ class Profile:
     Attributes
     ----------
     time : numpy.ndarray
-        [s], strictly increasing.
+        [s], increasing; a time given twice is a step, the values just
+        before and just after it (a part program's junction of two blocks).
     position, speed, acceleration : numpy.ndarray
         Table position [m], speed [m/s] and acceleration [m/s²].
     process_force : numpy.ndarray
         Axial process force on the table [N], positive against +x.
+    standstill_speed : float
+        Width [m/s] of the ramp that replaces the sign of the speed in the
+        friction (:func:`ballscrew.axis.standstill.regularised_sign`): 0 (a
+        planned motion, exact) or the noise's of a measured trajectory.
     """
 
     time: FloatArray
@@ -65,22 +74,33 @@ class Profile:
     speed: FloatArray
     acceleration: FloatArray
     process_force: FloatArray
+    standstill_speed: float = 0.0
 
     def __post_init__(self) -> None:
+        if not (math.isfinite(self.standstill_speed) and self.standstill_speed >= 0.0):
+            raise BallScrewInputError("standstill_speed", self.standstill_speed, "a speed >= 0")
         n = self.time.size
         for name in ("position", "speed", "acceleration", "process_force"):
             if getattr(self, name).shape != (n,):
                 raise BallScrewInputError(name, f"shape {getattr(self, name).shape}", f"({n},)")
         if n < 2:
-            raise BallScrewInputError(
-                "time", f"{n} sample(s)", "at least 2 strictly increasing times"
-            )
-        step = np.diff(self.time)
-        if not np.all(step > 0.0):
-            k = int(np.flatnonzero(~(step > 0.0))[0])
+            raise BallScrewInputError("time", f"{n} sample(s)", "at least 2 increasing times")
+        dt = np.diff(self.time)
+        if not np.all(dt >= 0.0):
+            k = int(np.flatnonzero(~(dt >= 0.0))[0])
             raise BallScrewInputError(
                 "time", f"{self.time[k + 1]:g} s at sample {k + 2}, after {self.time[k]:g} s",
-                "strictly increasing times (each sample after the one before)",
+                "times that do not decrease (a time given twice is a step in speed)",
+            )  # fmt: skip
+        if not float(np.sum(dt)) > 0.0:
+            raise BallScrewInputError("time", f"{self.time[0]:g} s throughout",
+                                      "at least 2 increasing times")  # fmt: skip
+        jump = (dt == 0.0) & (np.abs(np.diff(self.position)) > STEP_POSITION)
+        if np.any(jump):
+            k = int(np.argmax(jump))
+            raise BallScrewInputError(
+                "position", f"{self.position[k]:g} m then {self.position[k + 1]:g} m at "
+                f"{self.time[k]:g} s", "one position at a time given twice",
             )  # fmt: skip
 
     @property
@@ -253,7 +273,9 @@ def chain(*profiles: Profile) -> Profile:
         parts["f"].append(p.process_force[skip:])
         t_end = float(parts["t"][-1][-1])
         x_end = float(parts["x"][-1][-1])
-    return Profile(*(np.concatenate(parts[k]) for k in ("t", "x", "v", "a", "f")))
+    width = max(p.standstill_speed for p in profiles)
+    t, x, v, a, f = (np.concatenate(parts[k]) for k in ("t", "x", "v", "a", "f"))
+    return Profile(t, x, v, a, f, standstill_speed=width)
 
 
 def back_and_forth(
@@ -295,13 +317,20 @@ def back_and_forth(
     return chain(*(one * cycles))
 
 
-def read_trajectory(text: str, source: str = "trajectory") -> Profile:
+def read_trajectory(
+    text: str, source: str = "trajectory", standstill_speed: float | None = None
+) -> Profile:
     """A profile from CSV text: time, and position or table speed, and optionally force.
 
     The header names each column with its unit in brackets, e.g. ``time [s],
     position [mm], force [kN]`` or ``time [ms];speed [m/min]`` (semicolons
     or tabs allow decimal commas). Speed and acceleration (or position) are
     derived by finite differences (central, second order) on the given times.
+    ``standstill_speed`` [m/s] is the width of the friction's sign near rest
+    (:mod:`ballscrew.axis.standstill`); None takes it from the noise of the
+    positions (:func:`~ballscrew.axis.standstill.standstill_speed`), or of the
+    speeds given (8 times their noise), so a measured axis at rest holds
+    instead of chattering by the full friction.
     """
     import re
 
@@ -359,7 +388,14 @@ def read_trajectory(text: str, source: str = "trajectory") -> Profile:
         x = np.concatenate([[0.0], np.cumsum(0.5 * (v[1:] + v[:-1]) * np.diff(t))])
     a = np.gradient(v, t, edge_order=2)
     f = column("force", "N") if "force" in columns else np.zeros_like(t)
-    return Profile(t, x, v, a, f)
+    if standstill_speed is None:
+        from .standstill import NOISE_MULTIPLE, noise_scatter
+        from .standstill import standstill_speed as width_of
+
+        standstill_speed = (width_of(x, t) if "position" in columns
+                            else NOISE_MULTIPLE * noise_scatter(v, order=2) if t.size >= 6
+                            else 0.0)  # fmt: skip
+    return Profile(t, x, v, a, f, standstill_speed=float(standstill_speed))
 
 
 MOVE_KEYS: dict[str, tuple[str, bool]] = {  # key: (SI unit, required)

@@ -43,7 +43,7 @@ from ..errors import (
     check_nonnegative,
     check_positive,
 )
-from ..geometry import BallScrew
+from ..geometry import BallScrew, nut_length
 from ..helix import kernel_scope
 from ..lubricant import Lubricant
 from ..materials import STANDARD_GRAVITY, STEEL_DENSITY, STEEL_SPECIFIC_HEAT
@@ -125,21 +125,6 @@ def estimated_screw_length(screw: BallScrew, travel: float) -> float:
     0.6
     """
     return abs(travel) + nut_length(screw) + 4.0 * screw.pitch_diameter
-
-
-def nut_length(screw: BallScrew) -> float:
-    """Threaded length of the nut [m]: its loaded turns plus a return turn per circuit.
-
-    Twice that for a double nut.
-
-    Examples
-    --------
-    >>> from ballscrew import reference_screw
-    >>> round(nut_length(reference_screw()), 3)  # (2.5 + 1) x 2 circuits x 10 mm, twice
-    0.14
-    """
-    s = screw
-    return (s.loaded_turns + 1.0) * s.circuits * s.lead * (2.0 if s.nut == "double" else 1.0)
 
 
 def convection_coefficient(

@@ -212,16 +212,21 @@ def file_option(flag: str, dest: str, text: str) -> Callable[[F], F]:
 
 
 def motion(
-    move_text: str | None, profile_file: str | None, cycles: int
-) -> tuple[Any, dict[str, float]]:
-    """The motion profile of ``--move`` or ``--profile`` (exactly one), and the move's fields."""
+    move_text: str | None, profile_file: str | None, cycles: int,
+    standstill_speed: float | None = None,
+) -> tuple[Any, dict[str, float]]:  # fmt: skip
+    """The motion profile of ``--move`` or ``--profile`` (exactly one), and the move's fields.
+
+    ``standstill_speed`` [m/s]: the width of the friction's sign near rest of a
+    ``--profile`` (None: from its positions' noise); a ``--move`` is exact.
+    """
     from ..axis.duty import profile_from_file, profile_from_move
 
     if (move_text is None) == (profile_file is None):
         raise click.UsageError("give exactly one of --move and --profile")
     if move_text is None:
         assert profile_file is not None
-        return profile_from_file(profile_file, cycles), {}
+        return profile_from_file(profile_file, cycles, standstill_speed), {}
     from ..axis.motion import parse_move
 
     m = parse_move(move_text)

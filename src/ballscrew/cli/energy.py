@@ -9,6 +9,7 @@ import click
 from rich.console import Console
 from rich.table import Table
 
+from ..errors import BallScrewInputError
 from ..io.numbers import text as num
 from .common import (
     echo_readings,
@@ -43,6 +44,11 @@ __all__ = ["energy_command"]
 @click.option("--steady-speeds", default=None,
               help="Also the steady temperature and torque of continuous running at these "
               "speeds, e.g. '500..3000:6 rpm' (under the move's process force).")  # fmt: skip
+@click.option("--standstill-speed", default="auto", show_default=True,
+              help="With --profile: the speed from which the friction is full (none below "
+              "half of it, a ramp between) instead of flipping sign, e.g. '0.3 mm/s'; 'auto' "
+              "takes 8 times the speed noise of the file's positions, '0 mm/s' the exact "
+              "sign.")  # fmt: skip
 @folder_option("Write a report (Markdown, HTML, plots, CSV) into this folder.")
 @json_option("Write the results as JSON to FILE ('-' for standard output).")
 @units_option
@@ -58,6 +64,7 @@ def energy_command(
     json_file: str | None,
     steady_speeds: str | None = None,
     units: str | None = None,
+    standstill_speed: str = "auto",
 ) -> None:
     """Friction energy and motor torques of the case's axis over back-and-forth cycles.
 
@@ -77,7 +84,16 @@ def energy_command(
     case = load_case(case_file)
     echo_readings(case)
     system = unit_system("--units", units, case.output_units)
-    profile, m = motion(move_text, profile_file, cycles)
+    width = (None if standstill_speed.strip().lower() == "auto"
+             else to_si("--standstill-speed", standstill_speed, "m/s"))  # fmt: skip
+    if width is not None and not width >= 0.0:
+        raise BallScrewInputError("--standstill-speed", standstill_speed, "a speed >= 0, or auto")
+    profile, m = motion(move_text, profile_file, cycles, width)
+    if profile.standstill_speed > 0.0:
+        click.echo(f"note: standstill: no friction below half, the full friction from "
+                   f"+-{num(profile.standstill_speed * 1e3)} mm/s of table speed "
+                   f"({'8 x the speed noise of the positions' if width is None else 'as given'}"
+                   "), so a measured axis at rest does not chatter", err=True)  # fmt: skip
     speeds = None if steady_speeds is None else parse_range("--steady-speeds", steady_speeds,
                                                               "rad/s")  # fmt: skip
     temp = to_si("--temperature", temperature, "degC") if temperature else None

@@ -28,6 +28,7 @@ from .demo import demo
 from .energy import energy_command
 from .export_friction import export_friction_command
 from .fit import fit_command
+from .identify import identify_command
 from .lubricants import lubricants_command
 from .models import models_command
 from .monitor import monitor_command
@@ -64,6 +65,7 @@ def cli(verbose: bool = False) -> None:
       ballscrew sweep examples/sweep_preload.toml --out preload.zarr --workers 2
       ballscrew program part.nc --machine examples/machine_vmc.toml --out part-report
       ballscrew select --case my_axis.toml --move "stroke=0.3 m, feed=0.5 m/s" --objective energy
+      ballscrew identify trace.csv --machine examples/machine_vmc.toml --out identified
       ballscrew models
       ballscrew lubricants
       ballscrew serve                       # the web calculator on http://127.0.0.1:8050/
@@ -89,19 +91,24 @@ for command in (demo, study, validate, models_command, lubricants_command, torqu
                 case_command, screws_command, energy_command, check_command, fit_command,
                 export_friction_command, monitor_command, acceptance_command,
                 serve_command, sweep_command, program_command, contour_command,
-                select_command):  # fmt: skip
+                select_command, identify_command):  # fmt: skip
     cli.add_command(_one_owner(command))
 
 
 VALUE_NAMES: dict[str, str] = {
     "--axial-load": "FORCE",
+    "--axis": "AXIS",
+    "--axis-number": "N",
     "--bristle-damping": "DAMPING",
     "--bristle-stiffness": "STIFFNESS",
     "--case": "FILE",
     "--check": "FILE",
+    "--cnc-build": "BUILD",
+    "--confidence": "SHARE",
     "--csv": "FILE|-",
     "--cycles": "N",
     "--diameter": "LENGTHS",
+    "--drive-unit": "UNIT",
     "--feed": "SPEED",
     "--free": "NAME,...",
     "--grade": "GRADE",
@@ -124,15 +131,21 @@ VALUE_NAMES: dict[str, str] = {
     "--phase-margin": "ANGLE",
     "--plot": "FILE",
     "--port": "PORT",
+    "--pre-rolling": "LENGTH",
     "--preload": "CLASS",
     "--radius": "LENGTH",
     "--record": "FILE",
     "--reference": "TORQUE",
     "--run-time": "TIME",
     "--sampling-time": "TIME",
+    "--smoothing": "TIME",
+    "--validate": "FILE",
+    "--calibrated": "FILE",
+    "--seed": "N",
     "--scheduler": "ADDRESS",
     "--speed": "SPEEDS",
     "--start": "NAME=VALUE,...",
+    "--standstill-speed": "SPEED",
     "--steady-speeds": "SPEEDS",
     "--temperature": "DEGC",
     "--threshold": "SHARE|TORQUE",

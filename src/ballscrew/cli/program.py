@@ -10,7 +10,11 @@ from ..io.files import read_input_text
 from ..io.numbers import text as num
 from .common import folder_option, json_option, progress, stdout, write_json, write_report, writing
 
-__all__ = ["program_command"]
+__all__ = ["NOT_OK_STATUS", "program_command"]
+
+NOT_OK_STATUS = 3
+"""Exit status of a program run whose check finds an axis NOT OK (2: input refused,
+1: internal error, as every command)."""
 
 
 @click.command("program")
@@ -36,8 +40,19 @@ def program_command(
     csv_file: str | None,
     reader: str,
     tool_table: str | None,
-) -> None:
+) -> int:
     """Energy, torques, heat and reversals of every feed axis over a G-code program.
+
+    Each axis gets a verdict line with ballscrew check's criteria over the
+    program (lift-off, d*n, motor RMS and peak torque and speed, travel,
+    thermal lead error); a criterion NOT OK is also a 'warning:' line on
+    standard error.
+
+    \b
+    Exit status:
+      0  every axis OK or CHECK
+      3  an axis NOT OK (the warning lines say which and why)
+      2  input refused (one 'error:' line), 1 internal error
 
     \b
     Example:
@@ -49,7 +64,13 @@ def program_command(
     require("program", "ballscrew program")
     from ..program import read_part_program, run_program
     from ..report.outputs import json_document
-    from ..report.program import summary_rows, time_series_csv
+    from ..report.program import (
+        note_lines,
+        summary_rows,
+        time_series_csv,
+        verdict_lines,
+        warning_lines,
+    )
 
     machine = load_machine(machine_file)
     text = read_input_text("PROGRAM", program_file)
@@ -67,7 +88,7 @@ def program_command(
             bar.update(task, description=label, completed=done, total=total)
 
         result = run_program(machine, read.program, progress=tell)
-    for note in result.notes:
+    for note in note_lines(result):
         click.echo(f"note: {note}", err=True)
     from rich.table import Table
 
@@ -102,6 +123,11 @@ def program_command(
     )  # fmt: skip
     for note in totals["left_out"]:
         click.echo(f"left out: {note}", err=True)
+    for line in verdict_lines(result):
+        out.print(line, highlight=False, markup=False, soft_wrap=True)
+    warned = warning_lines(result)
+    for line in warned:
+        click.echo(f"warning: {line}", err=True)
     if csv_file:
         with writing("--csv", csv_file):
             from ..io.files import atomic_write
@@ -113,3 +139,4 @@ def program_command(
         write_report(out_dir, lambda folder: write_program_report(folder, result))
     if json_file:
         write_json(json_file, json_document(result.as_dict()))
+    return NOT_OK_STATUS if warned else 0

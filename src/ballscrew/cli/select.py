@@ -52,6 +52,9 @@ __all__ = ["select_command"]
               "price for the price objective; every screw tried needs a row.")  # fmt: skip
 @click.option("--oil", "oils", multiple=True,
               help="Lubricants to try by name (repeat; default the case's).")  # fmt: skip
+@click.option("--confidence", default="95 %", show_default=True,
+              help="How sure a feasible candidate passes: its P(NOT OK) over the case's "
+              "tolerances and the model's error at most 100 % minus this.")  # fmt: skip
 @click.option("--model", "model_name", default="complete", show_default=True,
               help="Friction model of every candidate.")  # fmt: skip
 @click.option("--temperature", default=None, help="Lubricant temperature (default: the case's).")
@@ -78,6 +81,7 @@ def select_command(
     motors_file: str | None,
     prices_file: str | None,
     oils: tuple[str, ...],
+    confidence: str,
     model_name: str,
     temperature: str | None,
     run_time: str,
@@ -89,9 +93,11 @@ def select_command(
     Every candidate is YOUR axis and duty with the screw (and motor) replaced.
 
     Each candidate runs through the whole axis check (as `ballscrew check`);
-    the feasible ones (no NOT OK row) form a Pareto front over the
-    objectives, and one is recommended: the least energy among those with
-    every utilisation at most 80 %, else the least largest utilisation.
+    the feasible ones (no NOT OK row, P(NOT OK) at most 5 %) form a Pareto
+    front over the objectives, and one is recommended: the best on the first
+    objective among those with every utilisation at most 80 %, else the least
+    largest utilisation (within 1 %, the first objective decides). When none
+    passes with the confidence but some pass at nominal values: "undecided".
 
     \b
     Example:
@@ -105,12 +111,14 @@ def select_command(
     from ..io.extras import require
     from ..io.units import to_si
     from ..select import NoFeasibleCandidateError, run_select
+    from ..select.choose import parse_confidence
     from ..select.pool import DEFAULT_PRELOADS, length_range
 
     require("select", "ballscrew select", modules=("pymoo",))
     start = time.process_time()
     case = load_case(require_case(case_file, "ballscrew select", "the axis, motor and limits "
                                   "the candidates are checked against"))  # fmt: skip
+    sure = parse_confidence(confidence)
     profile, m = motion(move_text, profile_file, cycles)
     motors: tuple[MotorRow, ...] = ()
     if motors_file is not None:
@@ -126,7 +134,8 @@ def select_command(
     command = ["ballscrew", "select", "--case", case_file or ""]
     for flag, value in (("--move", move_text), ("--profile", profile_file),
                         ("--diameter", diameter), ("--lead", lead),
-                        ("--motors", motors_file), ("--screw-prices", prices_file)):  # fmt: skip
+                        ("--motors", motors_file), ("--screw-prices", prices_file),
+                        ("--confidence", confidence)):  # fmt: skip
         if value is not None:
             command += [flag, value]
     for flag, values in (("--objective", objectives), ("--maker", makers),
@@ -144,7 +153,7 @@ def select_command(
             run_time=to_si("--run-time", run_time, "s"), move=m,
             motion_field="--move" if move_text is not None else "--profile",
             sources=sources or ("catalogue",), nuts=nuts, motors=motors, screw_prices=prices,
-            currency=currency,
+            currency=currency, confidence=sure,
         )  # fmt: skip
     except NoFeasibleCandidateError as exc:
         if out_dir:  # the report asked for says why nothing passed; the error still exits 2
@@ -158,13 +167,20 @@ def select_command(
     out = stdout(json_file)
     out.print(_front_table(result))
     best = result.evaluated[result.recommended]
-    out.print(f"recommended: {best.name}")
+    if result.undecided:
+        out.print(f"recommended: undecided (none passes with {result.confidence:.0%} "
+                  f"confidence; least likely to fail: {best.name}, P(NOT OK) = "
+                  f"{best.figures['p_not_ok']:.1%})")  # fmt: skip
+    else:
+        out.print(f"recommended: {best.name}")
     out.print(f"why: {result.reason}")
     if result.inputs.get("rating_estimates"):
         out.print("ISO sizes (marked 'estimated'): C_a and C_0a estimated from the geometry "
                   f"(ballscrew.design.ratings); {result.inputs['rating_estimates']}")  # fmt: skip
     seconds = time.process_time() - start
-    out.print(f"{len(result.evaluated)} candidates ({len(result.feasible)} feasible, "
+    nominal = sum(e.nominal for e in result.evaluated)
+    out.print(f"{len(result.evaluated)} candidates ({nominal} pass at nominal values, "
+              f"{len(result.feasible)} with {result.confidence:.0%} confidence, "
               f"{len(result.front)} on the front) in {seconds:.1f} s of CPU "
               f"({seconds / len(result.evaluated):.2f} s per candidate)")  # fmt: skip
     if json_file:
@@ -190,9 +206,15 @@ def _front_table(result: SelectResult) -> Table:
     """The front: one row per non-dominated feasible candidate, its figures."""
     from ..select import OBJECTIVES
 
+    among = (
+        f"{sum(e.nominal for e in result.evaluated)} passing at nominal values, none with "
+        f"{result.confidence:.0%} confidence"
+        if result.undecided
+        else f"{len(result.feasible)} feasible with {result.confidence:.0%} confidence"
+    )
     table = Table(title=f"{result.title}: Pareto front over {', '.join(result.objectives)} "
-                  f"({len(result.front)} of {len(result.feasible)} feasible, "
-                  f"{len(result.evaluated)} candidates)")  # fmt: skip
+                  f"({len(result.front)} of {among}, {len(result.evaluated)} "
+                  "candidates)")  # fmt: skip
     keys = [OBJECTIVES[o][0] for o in result.objectives]
     extra = [k for k in ("energy_J", "L10_h", "stiffness_N_per_um", "max_utilisation",
                          "p_not_ok") if k not in keys]  # fmt: skip

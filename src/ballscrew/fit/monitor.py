@@ -380,7 +380,10 @@ def _level_sd(
     """The model level's standard uncertainty in ln of the preload read (module docstring)."""
     from ..axis.uncertainty import model_error
 
-    sigma, origin = model_error(curves.model, case.screw.nut, float(series.torque[0]))
+    error = model_error(curves.model, case.screw.nut, float(series.torque[0]))
+    # The preloads read here are the model's own, not corrected for its bias: the bias
+    # counts as error, in quadrature with the spread.
+    sigma, origin = math.hypot(error.sigma, error.bias), error.text
     if math.isnan(sigma):
         notes.append(origin + ": the crossing's interval leaves the level out")
         return 0.0

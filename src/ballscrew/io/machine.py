@@ -55,6 +55,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from ..design.limits import DEFAULT_DN_LIMIT, MAX_SPEED
 from ..errors import BallScrewInputError, check_choice
+from ..geometry import nut_length
 from ..plausible import check_acceleration, check_axial_force, check_feed
 from .case import Case, parse_case, parse_toml
 from .files import read_input_text
@@ -418,6 +419,27 @@ def _held_to_screw(
                MAX_SPEED, warn_above=False)  # fmt: skip
 
 
+def _travel_on_screw(key: str, entry: AxisEntry, case: Case, travel: float) -> None:
+    """Refuse a travel the nut cannot make between the screw's supports.
+
+    The nut's threaded length (:func:`ballscrew.geometry.nut_length`) and the travel
+    must fit in the bearing span (else the screw's length): past it the nut would run
+    off the thread, as ``ballscrew check`` refuses a stroke that does not fit.
+    """
+    span = case.axis.get("bearing_span") or case.thermal.get("screw_length")
+    if not span:
+        return
+    nut = nut_length(case.screw)
+    if travel + nut >= span:
+        where = "axis.bearing_span" if case.axis.get("bearing_span") else "axis.screw_length"
+        raise BallScrewInputError(
+            f"{key}.travel", str([_typed(v) for v in entry.travel]),
+            f"a travel the nut can make on its screw: less than {(span - nut) * 1e3:.4g} mm "
+            f"({where} {span * 1e3:.4g} mm less the nut's {nut * 1e3:.4g} mm; the travel "
+            f"read is {travel * 1e3:.4g} mm)",
+        )  # fmt: skip
+
+
 def parse_machine(
     text: str, *, source: str = "machine", folder: str | Path | None = "."
 ) -> Machine:
@@ -485,6 +507,7 @@ def parse_machine(
         feed = _positive(f"{key}.max_feed", entry.max_feed, "m/s")
         acceleration = _positive(f"{key}.max_acceleration", entry.max_acceleration, "m/s**2")
         _held_to_screw(key, entry, case, force, feed, acceleration)
+        _travel_on_screw(key, entry, case, high - low)
         axes[letter] = MachineAxis(
             letter=letter,
             case=case,

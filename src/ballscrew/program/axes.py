@@ -47,7 +47,9 @@ from typing import Any
 
 import numpy as np
 
+from ..axis.check import AxisCheck, Criterion, run_check
 from ..axis.drive import DriveEnergy, DriveSpec, MotorConstants, drive_energy, drive_totals
+from ..axis.duty import EnergyRun, ModelEnergy
 from ..axis.energy import CycleResult, axis_cycle
 from ..axis.motion import Profile
 from ..axis.setup import AxisSetup, axis_setup
@@ -144,6 +146,23 @@ class AxisResult:
     notes: tuple[str, ...] = ()
     drive: DriveEnergy | None = field(default=None, repr=False)
     """Motor, drive and DC link losses and the energy from the grid."""
+    distance: float = 0.0
+    """Distance the axis moves over the program, both ways counted [m]."""
+    feed_distance: float = 0.0
+    """Of which in feed blocks (G1, G2, G3), where the process force acts [m]."""
+    check: AxisCheck | None = field(default=None, repr=False)
+    """``ballscrew check``'s criteria over the program (None: the check refused the axis,
+    the reason in ``notes``)."""
+    verdicts: tuple[Criterion, ...] = ()
+    """The check's rows, and the travel used against the axis's travel."""
+
+    @property
+    def verdict(self) -> str:
+        """The worst verdict of the rows with a limit; NOT CHECKED without a check."""
+        if self.check is None:
+            return "NOT CHECKED"
+        found = {c.verdict for c in self.verdicts}
+        return next((v for v in ("NOT OK", "CHECK") if v in found), "OK")
 
     @property
     def friction_share(self) -> float:
@@ -184,7 +203,11 @@ class AxisResult:
             "max_temperature_C": self.max_temperature,
             "thermal_lead_error_um": self.thermal_lead_error * 1e6,
             "travel_mm": self.travel * 1e3,
+            "distance_mm": self.distance * 1e3,
+            "feed_distance_mm": self.feed_distance * 1e3,
             "reversals": [r.as_dict() for r in self.reversals],
+            "verdict": self.verdict,
+            "criteria": [c.as_dict() for c in self.verdicts],
             "notes": list(self.notes),
             **({} if self.drive is None else self.drive.as_dict()),
         }
@@ -360,7 +383,20 @@ def _arc_travel(machine: Machine, program: Program, motion: Motion) -> None:
 
 
 def _integral(y: FloatArray, t: FloatArray) -> float:
+    """Trapezoidal rule over the samples (a junction's two samples at one time add nothing)."""
     return float(np.sum(0.5 * (y[1:] + y[:-1]) * np.diff(t)))
+
+
+def _distances(motion: Motion, i: int) -> tuple[float, float]:
+    r"""Distance axis ``i`` moves over the program, and of it in feed blocks [m].
+
+    Exact: between two samples an axis moves one way along one phase's
+    polynomial (the planner samples every block's both ends and every point
+    where an arc's axis turns), so :math:`\int|v|\,dt` over the interval is
+    the change of position, :math:`|x_{k+1} - x_k|`.
+    """
+    step = np.abs(np.diff(motion.position[:, i]))
+    return float(np.sum(step)), float(np.sum(step[motion.feeding[:-1]]))
 
 
 def heat_balance(
@@ -500,13 +536,17 @@ def _one_axis(
     power = t_f * np.abs(omega)
     shaft = t_m * first.motor_speed
     dt = np.diff(time)
-    friction_steps = 0.5 * (power[1:] + power[:-1]) * dt
+    # The friction's work over each step, torque times the screw's angle: the angle is exact
+    # (the axis moves one way between two samples), the torque its mean at the two ends.
+    turned = np.abs(np.diff(motion.position[:, i])) * 2.0 * math.pi / case.screw.lead
+    friction_steps = 0.5 * (t_f[1:] + t_f[:-1]) * turned
     per_block = np.bincount(motion.block[:-1], weights=friction_steps, minlength=program.size)
     positive = np.maximum(shaft, 0.0)
     supplied_steps = 0.5 * (positive[1:] + positive[:-1]) * dt
     supplied_block = np.bincount(motion.block[:-1], weights=supplied_steps,
                                  minlength=program.size)  # fmt: skip
     force = first.axial_force
+    distance, feed_distance = _distances(motion, i)
     reversals = _reversals(letter, setup, machine, motion, program, force, t0)
     g_axial = STANDARD_GRAVITY * math.sin(axis.incline)
     duration = motion.duration
@@ -514,14 +554,24 @@ def _one_axis(
     notes = [*setup.notes, *first.speed_warnings]
     drive = drive_energy(time, t_m, first.motor_speed, MotorConstants.from_case(motor),
                          DriveSpec.from_mapping(machine.drive), name=f"axes.{letter}")  # fmt: skip
+    check = _axis_check(letter, machine, setup, profile, first, duration, top, notes)
+    low, high = ax.travel
+    used = Criterion(
+        "travel used", travel * 1e3, (high - low) * 1e3, "mm", travel / (high - low), "OK",
+        f"the program's lowest to highest position against axes.{letter}.travel (a block "
+        "past it is refused)",
+    )  # fmt: skip
     result = AxisResult(
         letter=letter,
         title=case.title,
         friction_energy=float(np.sum(friction_steps)),
-        bearing_energy=_integral(first.bearing_torque * np.abs(omega), time),
+        bearing_energy=float(
+            np.sum(0.5 * (first.bearing_torque[1:] + first.bearing_torque[:-1]) * turned)
+        ),
         supplied_energy=_integral(np.maximum(shaft, 0.0), time),
         regenerated_energy=-_integral(np.minimum(shaft, 0.0), time),
-        process_work=_integral(profile.process_force * profile.speed, time),
+        # The process force against the motion in every feed block: force x distance.
+        process_work=ax.process_force * feed_distance,
         potential_energy=axis.moving_mass
         * g_axial
         * float(profile.position[-1] - profile.position[0]),
@@ -541,6 +591,10 @@ def _one_axis(
         supplied_per_block=supplied_block.astype(float),
         notes=tuple(notes),
         drive=drive,
+        distance=distance,
+        feed_distance=feed_distance,
+        check=check,
+        verdicts=(*(() if check is None else check.criteria), used),
     )
     series = {
         "friction_torque": t_f,
@@ -551,6 +605,39 @@ def _one_axis(
         "motor_speed": first.motor_speed,
     }
     return result, series
+
+
+def _axis_check(
+    letter: str, machine: Machine, setup: AxisSetup, profile: Profile, first: CycleResult,
+    duration: float, top: float, notes: list[str],
+) -> AxisCheck | None:  # fmt: skip
+    """``ballscrew check``'s criteria of the axis over the program, at their nominal values.
+
+    :func:`ballscrew.axis.check.run_check` over the program's profile and cycle, the
+    program's time as the run time and its warmest screw temperature as the one
+    reached (the thermal lead error per 300 mm from the ambient, against the case's
+    accuracy grade). An input the check refuses (a span shorter than the travel and
+    the nut, a motor without its rotor inertia) leaves the axis unchecked, the reason
+    in ``notes``.
+    """
+    ax = machine.axes[letter]
+    case = ax.case
+    node = setup.node
+    energy = ModelEnergy(first, 1, duration, math.nan, None, final_temperature=top)
+    run = EnergyRun(
+        case, profile, 1, ax.start_temperature, setup.axis, node,
+        {k: getattr(node, k) for k in ("screw_length", "ambient", "machine_resistance",
+                                       "nut_mass")},
+        list(setup.notes), {}, results={machine.model: energy}, run_time=duration,
+        derived=setup.derived,
+    )  # fmt: skip
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            return run_check(run, machine.model, draws=False)
+    except BallScrewInputError as exc:
+        notes.append(f"not checked ({exc})")
+        return None
 
 
 def _torques_at(
@@ -693,7 +780,8 @@ def _axis_at_rest(
         rated_torque=case.motor.get("rated_torque"), peak_rating=case.motor.get("peak_torque"),
         rated_speed=case.motor.get("rated_speed"), start_temperature=t0, final_temperature=t0,
         max_temperature=t0, thermal_lead_error=0.0, travel=0.0, reversals=(),
-        energy_per_block=none, supplied_per_block=none.copy(), notes=tuple(setup.notes),
+        energy_per_block=none, supplied_per_block=none.copy(),
+        notes=(*setup.notes, "not checked (the program takes no time: no duty to check)"),
         drive=drive,
     )  # fmt: skip
     series = {

@@ -38,7 +38,12 @@ Kröger, "Jerk-limited real-time trajectory generation with arbitrary target
 states", RSS 2021); its seven phases are polynomials in time, sampled
 exactly (phase ends are samples; interior samples at most ``sample_time``
 apart, cruises on lines without interior samples since nothing changes
-there, arcs at least every 5°).
+there, arcs at least every 5°). Every block is sampled at both ends, so a
+junction has two samples at one time, the end of one block and the start of
+the next (an axis's speed steps there), and an arc also where one of its
+axes turns. Between two samples every axis then moves one way along one
+phase's polynomial: its distance is exactly the sum of the changes of
+position, and no integral over the samples mixes two blocks.
 """
 
 from __future__ import annotations
@@ -55,8 +60,14 @@ __all__ = ["Limits", "Motion", "at_rest", "plan", "speed_change_distance"]
 
 ARC_STEP = math.radians(5.0)
 """Largest angle between two samples on an arc [rad]."""
+TURN_ROUNDING = 1e-9
+"""An axis turn this close to an arc's end [quarter turns] is the end itself."""
 MARGIN = 1.0 - 1e-7
 """Entry and exit speeds are kept this far inside what the look-ahead allows."""
+
+RETRY_LOWER = (0.0, 1e-7, 1e-6, 1e-5, 1e-4)
+"""Shares by which a block's exit speed is lowered, one after the other, while ruckig cannot
+plan the block (a speed at a limit to the last digit): at most 1.1e-4 of it in all."""
 
 
 def _no_rotary() -> FloatArray:
@@ -90,11 +101,12 @@ class Motion:
     Attributes
     ----------
     time : numpy.ndarray, shape (n,)
-        [s].
+        [s], increasing; the time of each junction of two blocks twice, the end
+        of the one and the start of the other (an axis's velocity steps there).
     position, velocity, acceleration, jerk : numpy.ndarray, shape (n, 3)
         Of X, Y, Z [m, m/s, m/s², m/s³].
     block : numpy.ndarray of int, shape (n,)
-        The program block each sample lies in (the last sample: the last block).
+        The program block each sample lies in (a block's end sample: that block).
     feeding : numpy.ndarray of bool, shape (n,)
         Whether the sample lies in a feed block (G1, G2, G3).
     path_speed : numpy.ndarray, shape (n,)
@@ -300,7 +312,7 @@ def plan(program: Program, limits: Limits, progress: object = None) -> Motion:
     ``progress``, when given, is called as ``progress(done, total)`` while
     the blocks' profiles are computed.
     """
-    from ruckig import InputParameter, Result, Ruckig, Trajectory
+    from ruckig import InputParameter, Result, Ruckig, RuckigError, Trajectory
 
     n = program.size
     if n == 0:
@@ -340,12 +352,24 @@ def plan(program: Program, limits: Limits, progress: object = None) -> Motion:
             phases[k, 0, 0] = dwell[k]
             continue
         inp.current_position, inp.current_velocity = [0.0], [en[k]]
-        inp.target_position, inp.target_velocity = [lengths[k]], [ex[k]]
-        inp.max_velocity = [max(feeds[k], en[k], ex[k])]
+        inp.target_position = [lengths[k]]
         inp.max_acceleration, inp.max_jerk = [accs[k]], [jerks[k]]
-        result = otg.calculate(inp, traj)
-        prof = traj.profiles[0][0]
-        if result != Result.Working or prof.brake.duration > 0.0 or prof.accel.duration > 0.0:
+        for lower in RETRY_LOWER:
+            # An exit speed at the feed cap to the last digit can be one ruckig refuses (it
+            # raises): the exit is lowered a little, and the next block enters at it.
+            inp.target_velocity = [ex[k]]
+            inp.max_velocity = [max(feeds[k], en[k], ex[k])]
+            try:
+                result = otg.calculate(inp, traj)
+            except RuckigError:
+                result = None
+            prof = traj.profiles[0][0]
+            if result == Result.Working and prof.brake.duration <= 0.0 >= prof.accel.duration:
+                break
+            ex[k] *= 1.0 - lower
+            if k + 1 < n:
+                en[k + 1] = min(en[k + 1], ex[k])
+        else:
             raise BallScrewInputError(
                 f"program line {int(program.line[k])}", f"{result}",
                 "a block ruckig can plan (please report this program)",
@@ -385,8 +409,15 @@ def _sample(
     program: Program, g: dict[str, FloatArray], phases: FloatArray, sample_time: float,
     entry: FloatArray, exit_: FloatArray, vmax: FloatArray,
 ) -> Motion:  # fmt: skip
-    """Sample every phase exactly and map the path to the axes."""
-    n = program.size
+    """Sample every phase exactly and map the path to the axes.
+
+    Each phase is sampled from its start (interior samples at most
+    ``sample_time`` apart, arcs every :data:`ARC_STEP`), each block also at its
+    end, so a junction has two samples at one time: the end of one block and
+    the start of the next. Within an arc, the points where an in-plane axis
+    turns (the angle a multiple of 90°) are samples too. Between two samples
+    every axis then moves one way along one phase's polynomial.
+    """
     dur = phases[:, :, 0]
     count = np.where(dur > 0.0, np.maximum(1, np.ceil(dur / sample_time)), 0).astype(int)
     cruise = (phases[:, :, 1] == 0.0) & (np.abs(phases[:, :, 2]) < 1e-12)
@@ -408,8 +439,19 @@ def _sample(
     phase_of = np.repeat(np.arange(flat.size), flat)
     first = np.cumsum(flat) - flat
     k_in = np.arange(total) - np.repeat(first, flat)
-    d = dur.ravel()[phase_of]
-    tau = d * k_in / flat[phase_of]
+    tau = dur.ravel()[phase_of] * k_in / flat[phase_of]
+    # Each block's end: the end of its last phase that takes time.
+    timed = dur > 0.0
+    ends = np.flatnonzero(timed.any(axis=1))
+    last_phase = 6 - np.argmax(timed[ends, ::-1], axis=1)
+    end_phase = ends * 7 + last_phase
+    turn_phase, turn_tau = _arc_turns(program, g, phases)
+    phase_of = np.concatenate([phase_of, end_phase, turn_phase])
+    tau = np.concatenate([tau, dur.ravel()[end_phase], turn_tau])
+    is_end = np.concatenate([np.zeros(total, bool), np.ones(end_phase.size, bool),
+                             np.zeros(turn_phase.size, bool)])  # fmt: skip
+    order = np.lexsort((is_end, tau, phase_of))
+    phase_of, tau, is_end = phase_of[order], tau[order], is_end[order]
     jj, a0 = phases[:, :, 1].ravel()[phase_of], phases[:, :, 2].ravel()[phase_of]
     v0, p0 = phases[:, :, 3].ravel()[phase_of], phases[:, :, 4].ravel()[phase_of]
     block = phase_of // 7
@@ -418,15 +460,15 @@ def _sample(
     s = p0 + v0 * tau + 0.5 * a0 * tau**2 + jj * tau**3 / 6.0
     sd = v0 + a0 * tau + 0.5 * jj * tau**2
     sdd = a0 + jj * tau
-    sddd = jj
-    # The program's end: the last block's end, at rest.
-    last = n - 1
-    time = np.append(time, float(dur.sum()))
-    s = np.append(s, g["length"][last] if program.kind[last] != DWELL else 0.0)
-    sd, sdd = np.append(sd, 0.0), np.append(sdd, 0.0)
-    sddd = np.append(sddd, 0.0)
-    block = np.append(block, last)
+    sddd = jj.copy()
+    # A block ends where it was planned to: its whole length, its exit speed, no acceleration.
+    b_end = block[is_end]
+    s[is_end] = np.where(program.kind[b_end] == DWELL, 0.0, g["length"][b_end])
+    sd[is_end], sdd[is_end] = exit_[b_end], 0.0
+    if is_end[-1]:  # the program's end, at rest
+        sddd[-1] = 0.0
     pos, vel, acc, jerk = _axes(program, g, block, s, sd, sdd, sddd)
+    pos[is_end] = program.end[b_end]  # where the next block starts, without rounding
     block_time = dur.sum(axis=1)
     feed = np.where(program.kind == RAPID, np.nan, program.feed)
     nominal = np.where(program.kind == DWELL, program.dwell, g["length"] / np.where(
@@ -437,6 +479,54 @@ def _sample(
         exit_speed=exit_, block_limit=vmax, block_time=block_time,
         nominal_time=float(np.sum(nominal)),
     )  # fmt: skip
+
+
+def _arc_turns(program: Program, g: dict[str, FloatArray], phases: FloatArray
+               ) -> tuple[np.ndarray, FloatArray]:  # fmt: skip
+    r"""(flat phase index, time in the phase) of every point where an arc's axis turns.
+
+    An in-plane axis stands still, and may reverse, where the arc's angle is a
+    multiple of 90°: the path position :math:`s^*` of each such point inside
+    the arc, then the time at which the phase's cubic :math:`s(\tau)` reaches
+    it (bisection; the path speed is never negative, so the cubic rises).
+    """
+    arc = np.flatnonzero((program.kind == ARC) & (np.abs(program.sweep) > 0.0))
+    if arc.size == 0:
+        return np.zeros(0, int), np.zeros(0)
+    quarter = 0.5 * math.pi
+    c, s0, sw = program.centre[arc], program.start[arc], program.sweep[arc]
+    theta0 = np.zeros(arc.size)
+    for plane, (ia, ib, _) in ((17, (0, 1, 2)), (18, (2, 0, 1)), (19, (1, 2, 0))):
+        m = program.plane[arc] == plane
+        theta0[m] = np.arctan2(s0[m, ib] - c[m, ib], s0[m, ia] - c[m, ia])
+    lo = np.minimum(theta0, theta0 + sw) / quarter
+    hi = np.maximum(theta0, theta0 + sw) / quarter
+    # A turn at an end of the arc, to rounding (an end at 90 deg, a sweep a hair longer), is
+    # that end's own sample: the arc's formula there may miss the end point by the arc's
+    # radius mismatch, two positions at one time.
+    k_lo = np.floor(lo + TURN_ROUNDING).astype(int) + 1
+    k_hi = np.ceil(hi - TURN_ROUNDING).astype(int) - 1
+    many = np.maximum(k_hi - k_lo + 1, 0)
+    if not many.any():
+        return np.zeros(0, int), np.zeros(0)
+    which = np.repeat(np.arange(arc.size), many)
+    k = np.repeat(k_lo, many) + (np.arange(int(many.sum())) - np.repeat(np.cumsum(many) - many,
+                                                                         many))  # fmt: skip
+    b = arc[which]
+    target = (k * quarter - theta0[which]) / sw[which] * g["length"][b]
+    dur, jj, a0, v0, p0 = (phases[b, :, i] for i in range(5))
+    # The phase holding the point: the last phase taking time that starts at or before it.
+    holds = (dur > 0.0) & (p0 <= target[:, None])
+    holds[:, 0] |= dur[:, 0] > 0.0  # rounding at the arc's start
+    p = 6 - np.argmax(holds[:, ::-1], axis=1)
+    rows = np.arange(b.size)
+    d, j, a, v, x = dur[rows, p], jj[rows, p], a0[rows, p], v0[rows, p], p0[rows, p]
+    low, high = np.zeros(b.size), d.copy()
+    for _ in range(60):  # 2^-60 of a phase: to the time's rounding
+        mid = 0.5 * (low + high)
+        below = x + v * mid + 0.5 * a * mid**2 + j * mid**3 / 6.0 < target
+        low, high = np.where(below, mid, low), np.where(below, high, mid)
+    return b * 7 + p, 0.5 * (low + high)
 
 
 def _axes(

@@ -23,13 +23,22 @@ from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure as MplFigure
 
 from .._version import __version__
+from ..axis.check import Criterion
 from ..io.numbers import text as num
-from ..program.axes import ProgramResult
+from ..program.axes import AxisResult, ProgramResult
 from .document import Block, write_data, write_pages
 from .outputs import csv_bytes
 from .plotting import new_figure, write_figures
 
-__all__ = ["drive_rows", "time_series_csv", "write_program_report"]
+__all__ = [
+    "axis_notes",
+    "drive_rows",
+    "note_lines",
+    "time_series_csv",
+    "verdict_lines",
+    "warning_lines",
+    "write_program_report",
+]
 
 MARKERS = {"X": "o", "Y": "s", "Z": "^"}
 
@@ -229,6 +238,85 @@ def drive_rows(r: ProgramResult) -> list[list[str]]:
     return rows
 
 
+VERDICT_ROWS = (
+    ("lift-off", "lift-off"),
+    ("d*n", "d*n"),
+    ("RMS torque", "RMS torque"),
+    ("peak torque", "peak torque"),
+    ("motor speed", "motor speed"),
+    ("travel used", "travel"),
+    ("thermal lead error per 300 mm", "thermal lead error per 300 mm"),
+)
+"""The check's rows each axis's verdict line shows (the start of the row's name, its label),
+whatever their verdict; any other row is shown where it is not OK."""
+
+
+def _row_text(label: str, c: Criterion) -> str:
+    if c.value is None:
+        return f"{label} not checked ({c.advice})"
+    if c.limit is None:
+        why = " (no accuracy grade)" if c.name.startswith("thermal lead") else ""
+        return f"{label} {num(c.value)} {c.unit}{why}"
+    use = "" if c.utilisation is None else f"{c.utilisation:.0%}"
+    mark = "" if c.verdict in ("OK", "INFO") else f" {c.verdict}"
+    return f"{label} {num(c.value)} of {num(c.limit)} {c.unit} ({use}{mark})"
+
+
+def verdict_lines(r: ProgramResult) -> list[str]:
+    """Each axis's verdict line: the check's verdict and its rows that matter on a program.
+
+    ``X: CHECK: lift-off 1350 of 10760 N (13%); d*n 120000 of 130000 mm*rpm (92% CHECK);
+    ...``: lift-off (peak axial force against 2^1.5 times the preload), d·n, RMS and
+    peak motor torque and motor speed against their ratings, the travel used, the
+    thermal lead error per 300 mm (against the accuracy grade when the case gives
+    one), then any other row of ``ballscrew check`` that is not OK.
+    """
+    lines = []
+    for letter, a in r.axes.items():
+        if a.check is None:
+            why = next((n for n in a.notes if n.startswith("not checked")), "not checked")
+            lines.append(f"{letter}: NOT CHECKED: {why.removeprefix('not checked ')}")
+            continue
+        parts, shown = [], set()
+        for start, label in VERDICT_ROWS:
+            for c in a.verdicts:
+                if c.name.startswith(start):
+                    parts.append(_row_text(label, c))
+                    shown.add(c.name)
+        flagged = ("CHECK", "NOT OK", "NOT CHECKED")
+        parts += [_row_text(c.name, c) for c in a.verdicts
+                  if c.name not in shown and c.verdict in flagged]  # fmt: skip
+        lines.append(f"{letter}: {a.verdict}: " + "; ".join(parts))
+    return lines
+
+
+def warning_lines(r: ProgramResult) -> list[str]:
+    """One line per row that is NOT OK, naming its axis, the value, the limit and the remedy."""
+    out = []
+    for letter, a in r.axes.items():
+        for c in a.verdicts:
+            if c.verdict != "NOT OK":
+                continue
+            use = "" if c.utilisation is None else f"{c.utilisation:.0%} "
+            change = f"; to change: {c.advice}" if c.advice else ""
+            out.append(f"{letter}: {c.name} {num(c.value)} {c.unit}, limit {num(c.limit)} "
+                       f"{c.unit}: {use}NOT OK{change}")  # fmt: skip
+    return out
+
+
+def axis_notes(a: AxisResult) -> list[str]:
+    """The axis's notes, each naming its axis."""
+    return [f"{a.letter}: {n}" for n in a.notes]
+
+
+def note_lines(r: ProgramResult) -> list[str]:
+    """Every note of the run, then each axis's, naming its axis.
+
+    The reader's notes come first, the words it skipped in one line.
+    """
+    return list(r.notes) + [n for a in r.axes.values() for n in axis_notes(a)]
+
+
 def write_program_report(out: str | Path, r: ProgramResult) -> list[Path]:
     """Write the report files into ``out``; returns the paths written."""
     folder = Path(out)
@@ -249,9 +337,11 @@ def write_program_report(out: str | Path, r: ProgramResult) -> list[Path]:
               f"{r.motion.duration:.4g} s (nominal {r.motion.nominal_time:.4g} s at the "
               "programmed feeds)."),
         Block("table", (["quantity", *r.axes], summary_rows(r))),
+        Block("h2", "Verdicts"),
+        Block("ul", verdict_lines(r)),
         *(Block("img", (k, caption)) for k, (_, caption) in figures.items()),
         Block("h2", "Notes"),
-        Block("ul", list(r.notes) + [n for a in r.axes.values() for n in a.notes] or ["none"]),
+        Block("ul", note_lines(r) or ["none"]),
         Block("h2", "Left out of the energy from the grid"),
         Block("ul", [n for a in r.axes.values() if a.drive is not None
                      for n in a.drive.left_out] or ["nothing: every constant was given"]),

@@ -42,6 +42,10 @@ def _number(value: float) -> str:
     return "-" if not math.isfinite(value) else f"{value:.4g}"
 
 
+def _percent(value: float) -> str:
+    return "-" if not math.isfinite(value) else f"{value:.1%}"
+
+
 def _pairs(result: SelectResult) -> list[tuple[str, str]]:
     chosen = list(result.objectives)
     if len(chosen) == 1:
@@ -111,26 +115,34 @@ def _blocks(result: SelectResult, caption: str) -> list[Block]:
     rows = [[result.evaluated[i].name + (" (recommended)" if i == result.recommended else ""),
              *(_number(result.evaluated[i].figures[k]) for k in keys),
              _number(result.evaluated[i].figures["max_utilisation"]),
+             _percent(result.evaluated[i].figures["p_not_ok"]),
              result.evaluated[i].binding] for i in result.front]  # fmt: skip
-    rejected = [[e.name, e.binding] for e in result.rejected]
+    rejected = [[e.name, _percent(e.figures["p_not_ok"]), e.binding] for e in result.rejected]
     best = result.evaluated[result.recommended]
+    pick = (f"Undecided: no candidate passes with {result.confidence:.0%} confidence; the "
+            f"least likely to fail is {best.name}" if result.undecided
+            else f"Recommended: {best.name}")  # fmt: skip
     return [
         Block("h1", f"Choose the screw: {result.title}"),
         Block("p", f"Computed by ballscrew {__version__} with the {result.model} model: "
               f"{len(result.evaluated)} candidates, {len(result.feasible)} feasible, "
               f"{len(result.front)} on the front over {', '.join(result.objectives)}."),
-        Block("p", f"Recommended: {best.name}. Why: {result.reason}. Its case file is "
+        Block("p", f"{pick}. Why: {result.reason}. Its case file is "
               "recommended.toml (`ballscrew check --case recommended.toml` with the same "
               "move gives the same numbers)."),
         Block("h2", "The Pareto front"),
-        Block("table", (["candidate", *keys, "largest utilisation", "binding row"], rows)),
+        Block("table", (["candidate", *keys, "largest utilisation", "P(NOT OK)", "binding row"],
+                        rows)),
         Block("img", ("front", caption)),
         *([Block("p", "ISO 3408-2 sizes (the names starting 'ISO') carry load ratings "
                   "estimated from their geometry (ballscrew.design.ratings); "
                   + str(result.inputs["rating_estimates"]) + ".")]
           if result.inputs.get("rating_estimates") else []),
         Block("h2", "Rejected candidates and what fails them"),
-        Block("table", (["candidate", "binding constraint"], rejected or [["none", "-"]])),
+        Block("p", f"A candidate is rejected when a row fails at its nominal value or its "
+              f"P(NOT OK) is above {1.0 - result.confidence:.0%}."),
+        Block("table", (["candidate", "P(NOT OK)", "binding constraint"],
+                        rejected or [["none", "-", "-"]])),
     ]  # fmt: skip
 
 
@@ -165,7 +177,8 @@ def write_rejection_report(out: str | Path, result: NoneFeasible) -> list[Path]:
     atomic_write(path, result_json(result).encode("utf-8"))
     written.append(path)
     title = f"Choose the screw: {result.title}"
-    rows = [[e.name, _number(e.figures["max_utilisation"]), e.binding] for e in result.rejected]
+    rows = [[e.name, _number(e.figures["max_utilisation"]), e.binding,
+             "; ".join(e.failing) or "-"] for e in result.rejected]  # fmt: skip
     blocks = [
         Block("h1", title),
         Block("p", f"Computed by ballscrew {__version__} with the {result.model} model: "
@@ -175,6 +188,7 @@ def write_rejection_report(out: str | Path, result: NoneFeasible) -> list[Path]:
         Block("p", "The failing criterion is the check's row of largest utilisation (above "
               "1 fails), or the input error that rejected the candidate; the candidates most "
               "nearly passing come first. Every figure is in data/front.csv."),
-        Block("table", (["candidate", "largest utilisation", "failing criterion"], rows)),
+        Block("table", (["candidate", "largest utilisation", "failing criterion",
+                         "rows that fail, value against limit"], rows)),
     ]  # fmt: skip
     return written + write_pages(folder, blocks, title, {})

@@ -3,10 +3,15 @@
 Each candidate (:mod:`.pool`) is its own case: the user's axis, motor,
 check limits and duty with the screw replaced. It runs through
 :func:`~ballscrew.axis.duty.run_energy` and :func:`~ballscrew.axis.check.run_check`
-as ``ballscrew check`` runs it. A candidate is feasible when no row of its
-check is NOT OK (every utilisation at most 1); a rejected one names its
-binding constraint, the row with the largest utilisation (or the input error
-that stopped it, e.g. a load above its rating).
+as ``ballscrew check`` runs it. A candidate is feasible when it passes with
+the confidence asked (:data:`~ballscrew.axis.uncertainty.CONFIDENCE`, 95 %, by
+default): no row of its check is NOT OK at the nominal values, and the
+probability that one row or more is NOT OK under the case's tolerances and the
+model's error (the check's Monte Carlo, :attr:`~ballscrew.axis.check.AxisCheck.p_not_ok`)
+is at most 1 - confidence (5 %), the check's guard-banded "OK (95 %)". A rejected
+one names its binding constraint, the row with the largest utilisation (or the
+input error that stopped it, e.g. a load above its rating), and the rows that
+fail, value against limit.
 
 Many candidates cost less than many checks (:func:`_prepared`): the heat
 balances of the candidates that share an oil are solved together
@@ -24,11 +29,16 @@ and a candidate within :data:`NEAR` of a utilisation bound too.
 
 The front is the non-dominated set of the feasible candidates over the
 objectives picked (:data:`OBJECTIVES`), sorted by pymoo's non-dominated
-sorting. The recommendation is a member of the front: the least energy per
-cycle among its members whose every utilisation is at most 0.8; when there is
-none, the member with the least largest utilisation. (A candidate off the
-front is beaten on every objective picked by another, so it is never
-recommended.)
+sorting. The recommendation is a member of the front: the best on the first
+objective picked among its members whose every utilisation is at most 0.8;
+when there is none, the member with the least largest utilisation, the members
+within :data:`TIE_BAND` of it counting as tied and the tie going to the best on
+the first objective. (A candidate off the front is beaten on every objective
+picked by another, so it is never recommended.) When no candidate passes with
+the confidence asked but some pass at their nominal values, the selection is
+**undecided**: the front is taken over those, the one of them least likely to
+fail is named with its probability (on the front or not), and
+:attr:`SelectResult.undecided` is set.
 """
 
 from __future__ import annotations
@@ -45,26 +55,30 @@ from typing import Any
 import numpy as np
 
 from .. import lubricants
-from ..axis.check import AxisCheck, run_check
+from ..axis.check import AxisCheck, Criterion, run_check
 from ..axis.duty import HISTORY_POINTS, motion_plausibility, run_energy
 from ..axis.motion import MOVE_KEYS, Profile
 from ..axis.setup import axis_setup
 from ..axis.thermal import SteadyState, steady_temperatures, temperature_histories
+from ..axis.uncertainty import CONFIDENCE
 from ..errors import BallScrewInputError, BallScrewPlausibilityWarning, FloatArray
 from ..io.case import Case, parse_case
 from ..io.motors import MotorRow
+from ..io.numbers import text as num
 from .pool import DEFAULT_PRELOADS, Candidate, candidates, scatter_text
 
 __all__ = [
     "FIGURES",
     "OBJECTIVES",
     "RECOMMEND_BELOW",
+    "TIE_BAND",
     "Evaluated",
     "NoFeasibleCandidateError",
     "NoneFeasible",
     "SelectResult",
     "evaluate",
     "non_dominated",
+    "parse_confidence",
     "run_select",
 ]
 
@@ -93,11 +107,38 @@ FIGURES: dict[str, str] = {
     "price": "currency of the table",
     "seconds": "s",
 }
-"""The figures kept per candidate, with their units (``p_not_ok``: the worst row's; NaN for a
-candidate a row fails at its nominal value, whose Monte Carlo is not drawn)."""
+"""The figures kept per candidate, with their units (``p_not_ok``: the probability that one
+row or more is NOT OK, :attr:`~ballscrew.axis.check.AxisCheck.p_not_ok`; NaN for a candidate a
+row fails at its nominal value, whose Monte Carlo is not drawn)."""
 
 RECOMMEND_BELOW = 0.8
 """The largest utilisation of a recommended candidate, if any candidate stays below it."""
+
+TIE_BAND = 0.01
+"""Largest utilisations within this of the least (1 % of utilisation, absolute) are a tie,
+broken by the first objective: a hundredth of a limit is well inside what the inputs'
+tolerances move a utilisation by."""
+
+CLOSEST = 3
+"""How many of the candidates closest to passing a failed selection names."""
+
+
+def parse_confidence(text: str | float, field: str = "--confidence") -> float:
+    """A confidence as typed, ``"95 %"``, ``"95%"`` or ``0.95``, as a share from 50 % to 99.9 %.
+
+    >>> parse_confidence("95 %"), parse_confidence("0.9")
+    (0.95, 0.9)
+    """
+    raw = str(text).strip()
+    try:
+        value = float(raw.removesuffix("%").strip()) / (100.0 if raw.endswith("%") else 1.0)
+    except ValueError:
+        value = math.nan
+    # 1 - confidence is the P(NOT OK) allowed; the Monte Carlo's 4000 draws resolve 0.1 %.
+    if not 0.5 <= value <= 0.999:
+        raise BallScrewInputError(field, text, "a confidence from 50 % to 99.9 %, e.g. '95 %'")
+    return value
+
 
 _MOTOR_ROWS = ("inertia ratio", "peak torque", "RMS torque", "motor speed")
 
@@ -109,8 +150,16 @@ class Evaluated:
     candidate: Candidate
     figures: dict[str, float]
     feasible: bool
+    """Passes with the confidence asked: no row NOT OK and P(NOT OK) at most 1 - confidence."""
     binding: str
     """The row with the largest utilisation, e.g. ``"fatigue life L10 (273 %)"``."""
+    nominal: bool = False
+    """No row is NOT OK at the nominal values (the check's own verdict)."""
+    failing: tuple[str, ...] = ()
+    """The rows NOT OK at the nominal values, each its value against its limit, worst first."""
+    doubtful: str = ""
+    """The row most likely NOT OK and its probability, e.g. ``"thermal lead error ... (43.1%)"``
+    (empty where the Monte Carlo was not drawn)."""
 
     @property
     def name(self) -> str:
@@ -130,7 +179,10 @@ class Evaluated:
             "estimated": c.estimated,
             "motor": c.motor.name if c.motor is not None else None,
             "feasible": self.feasible,
+            "passes_nominal": self.nominal,
             "binding": self.binding,
+            "failing": list(self.failing),
+            "most_doubtful_row": self.doubtful or None,
             **{k: (None if math.isnan(v) else v) for k, v in self.figures.items()},
         }
 
@@ -148,15 +200,21 @@ class SelectResult:
     reason: str
     model: str
     inputs: dict[str, Any] = field(default_factory=dict)
+    confidence: float = CONFIDENCE
+    """The confidence a feasible candidate passes with."""
+    undecided: bool = False
+    """No candidate passes with :attr:`confidence`: the front is that of the candidates that
+    pass at their nominal values, and :attr:`recommended` the one of them least likely to fail
+    (on the front or not)."""
 
     @property
     def feasible(self) -> list[Evaluated]:
-        """The candidates with no NOT OK row."""
+        """The candidates that pass with the confidence asked."""
         return [e for e in self.evaluated if e.feasible]
 
     @property
     def rejected(self) -> list[Evaluated]:
-        """The candidates with a NOT OK row or an input error."""
+        """The candidates that do not pass with the confidence asked, or an input error."""
         return [e for e in self.evaluated if not e.feasible]
 
     def as_dict(self) -> dict[str, Any]:
@@ -165,6 +223,8 @@ class SelectResult:
             "title": self.title,
             "model": self.model,
             "objectives": list(self.objectives),
+            "confidence": self.confidence,
+            "undecided": self.undecided,
             "recommended": self.evaluated[self.recommended].name,
             "reason": self.reason,
             "front": [self.evaluated[i].name for i in self.front],
@@ -226,6 +286,7 @@ class NoneFeasible:
             "title": self.title,
             "model": self.model,
             "objectives": list(self.objectives),
+            "undecided": False,
             "recommended": None,
             "reason": self.reason,
             "front": [],
@@ -241,6 +302,8 @@ class NoFeasibleCandidateError(BallScrewInputError):
     def __init__(self, field: str, value: Any, allowed: str, result: NoneFeasible) -> None:
         super().__init__(field, value, allowed)
         self.result = result
+        if result.reason:  # the sentence that says what fails, not "field = value is not ..."
+            self.args = (result.reason,)
 
     def __reduce__(self) -> tuple[Any, ...]:
         """Pickled with its parts and the result."""
@@ -254,7 +317,6 @@ def _figures(check: AxisCheck, run: Any, model: str, seconds: float) -> dict[str
     load = abs(float(energy.as_dict()["load_work_J"])) / energy.cycles
     rows = [c for c in check.criteria if c.utilisation is not None]
     motor = [float(c.utilisation or 0.0) for c in rows if c.name.startswith(_MOTOR_ROWS)]
-    p = [c.uncertainty.p_not_ok for c in rows if c.uncertainty is not None]
     stiff = check.stiffness.get("axis_N_per_um")
     lost = check.stiffness.get("lost_motion_um")
     nan = math.nan
@@ -268,7 +330,7 @@ def _figures(check: AxisCheck, run: Any, model: str, seconds: float) -> dict[str
         "lost_motion_um": float(np.max(lost)) if lost is not None else nan,
         "motor_margin": 1.0 - max(motor) if motor else nan,
         "max_utilisation": max((float(c.utilisation or 0.0) for c in rows), default=nan),
-        "p_not_ok": max(p, default=nan),
+        "p_not_ok": nan if check.p_not_ok is None else float(check.p_not_ok),
         "seconds": seconds,
     }
 
@@ -277,6 +339,33 @@ def _binding(check: AxisCheck) -> str:
     rows = [c for c in check.criteria if c.utilisation is not None]
     worst = max(rows, key=lambda c: float(c.utilisation or 0.0))
     return f"{worst.name} ({float(worst.utilisation or 0.0):.0%})"
+
+
+def _against(c: Criterion) -> str:
+    """A row's value against its limit: ``"fatigue life L10: 15100 h against 20000 h (132 %)"``.
+
+    The utilisation is oriented so that above 100 % fails (a life or a safety
+    factor under its limit, a load or a temperature error over it).
+    """
+    unit = "" if c.unit in ("-", "") else f" {c.unit}"
+    return (f"{c.name}: {num(c.value, 4)}{unit} against a limit of {num(c.limit, 4)}{unit} "
+            f"({float(c.utilisation or 0.0):.0%})")  # fmt: skip
+
+
+def _failing(check: AxisCheck) -> tuple[str, ...]:
+    rows = [c for c in check.criteria if c.verdict == "NOT OK" and c.utilisation is not None]
+    rows.sort(key=lambda c: -float(c.utilisation or 0.0))
+    return tuple(_against(c) for c in rows)
+
+
+def _doubtful(check: AxisCheck) -> str:
+    rows = [c for c in check.criteria if c.uncertainty is not None]
+    if not rows:
+        return ""
+    worst = max(rows, key=lambda c: (c.uncertainty.p_not_ok if c.uncertainty else 0.0,
+                                     float(c.utilisation or 0.0)))  # fmt: skip
+    p = worst.uncertainty.p_not_ok if worst.uncertainty else 0.0
+    return f"{worst.name} ({p:.1%})"
 
 
 def evaluate(
@@ -290,8 +379,12 @@ def evaluate(
     move: dict[str, float] | None = None,
     parsed: Case | None = None,
     steady: SteadyState | None = None,
+    confidence: float = CONFIDENCE,
 ) -> tuple[Evaluated, AxisCheck | None]:
     """One candidate through ``run_energy`` and ``run_check`` as ``ballscrew check`` runs it.
+
+    Feasible when no row is NOT OK and the probability that one or more is, over the
+    check's draws, is at most ``1 - confidence``.
 
     An input error of the candidate (a load above its rating, a stroke longer
     than its span) rejects it with the error as its binding constraint. A
@@ -315,8 +408,13 @@ def evaluate(
         return Evaluated(candidate, nan, False, f"{exc.field}: {exc.allowed}"), None
     figures = _figures(check, run, model, time.process_time() - start)
     figures["price"] = math.nan if candidate.price is None else candidate.price
-    feasible = check.verdict != "NOT OK"
-    return Evaluated(candidate, figures, feasible, _binding(check)), check
+    nominal = check.verdict != "NOT OK"
+    # The probability rounded to the draws' resolution (1/4000), so that a threshold of
+    # exactly 5 % is not missed by a float's last bit.
+    p = round(figures["p_not_ok"], 9)
+    feasible = nominal and p <= 1.0 - confidence + 1e-12
+    return Evaluated(candidate, figures, feasible, _binding(check), nominal, _failing(check),
+                     _doubtful(check)), check  # fmt: skip
 
 
 NEAR = 1e-5
@@ -433,22 +531,84 @@ def _check_objectives(objectives: Sequence[str]) -> tuple[str, ...]:
     return tuple(dict.fromkeys(objectives))
 
 
-def _recommend(evaluated: Sequence[Evaluated], front: Sequence[int]) -> tuple[int, str]:
-    """The recommended member of the front, by the module's rule, and why."""
+def _objective_key(evaluated: Sequence[Evaluated], objective: str) -> Any:
+    """Sort key of a candidate on ``objective``, best first (a missing figure last)."""
+    key, _, sense = OBJECTIVES[objective]
+
+    def value(i: int) -> float:
+        v = evaluated[i].figures[key]
+        return math.inf if math.isnan(v) else sense * v
+
+    return value
+
+
+def _objective_text(e: Evaluated, objective: str) -> str:
+    key, label, _ = OBJECTIVES[objective]
+    name = label.split(" [")[0].split(",")[0].split(" (")[0]
+    unit = FIGURES.get(key, "")
+    unit = "" if unit in ("-", "currency of the table") else f" {unit}"
+    return f"{name} {num(e.figures[key], 4)}{unit}"
+
+
+def _confidence_text(e: Evaluated, confidence: float) -> str:
+    p = e.figures["p_not_ok"]
+    if math.isnan(p):
+        return ""
+    return f"P(NOT OK) = {p:.1%} (at most {1.0 - confidence:.0%} allowed){_from(e)}"
+
+
+def _from(e: Evaluated, binding: bool = False) -> str:
+    """Which row a candidate's P(NOT OK) comes from most; with ``binding``, its binding row too."""
+    if not e.doubtful or e.figures["p_not_ok"] == 0.0:
+        return f"; its binding row: {e.binding}" if binding else ""
+    row = e.doubtful.rsplit(" (", 1)[0]
+    if e.binding.startswith(row + " ("):
+        return f", most likely from its binding row{f', {e.binding}' if binding else ''}"
+    return f", most likely from {e.doubtful}" + (f"; its binding row: {e.binding}" if binding
+                                                 else "")  # fmt: skip
+
+
+def _recommend(
+    evaluated: Sequence[Evaluated], front: Sequence[int], first: str,
+    confidence: float = CONFIDENCE,
+) -> tuple[int, str]:  # fmt: skip
+    """The recommended member of the front, by the module's rule, and why.
+
+    ``first`` is the first objective picked: it chooses among the members whose
+    every utilisation is at most :data:`RECOMMEND_BELOW`, and it breaks a tie
+    (within :data:`TIE_BAND`) on the least largest utilisation.
+    """
+    rank = _objective_key(evaluated, first)
     below = [i for i in front if evaluated[i].figures["max_utilisation"] <= RECOMMEND_BELOW]
     if below:
-        best = min(below, key=lambda i: evaluated[i].figures["energy_J"])
-        f = evaluated[best].figures
-        return best, (
-            f"least friction energy per cycle ({f['energy_J']:.4g} J) among the {len(below)} "
-            f"candidates of the front whose every utilisation is at most {RECOMMEND_BELOW:.0%} "
-            f"(its largest: {evaluated[best].binding})"
+        best = min(below, key=lambda i: (rank(i), i))
+        e = evaluated[best]
+        among = (
+            f"the {len(below)} candidates of the front whose every utilisation is"
+            if len(below) > 1
+            else "the one candidate of the front whose every utilisation is"
         )
-    best = min(front, key=lambda i: evaluated[i].figures["max_utilisation"])
-    return best, (
-        f"no candidate of the front keeps every utilisation at most {RECOMMEND_BELOW:.0%}: the "
-        f"one with the least largest utilisation, {evaluated[best].binding}"
-    )
+        why = (f"the best {_objective_text(e, first)} among {among} at most "
+               f"{RECOMMEND_BELOW:.0%} (its largest: {e.binding})")  # fmt: skip
+    else:
+        least = min(evaluated[i].figures["max_utilisation"] for i in front)
+        tied = [i for i in front if evaluated[i].figures["max_utilisation"] <= least + TIE_BAND]
+        best = min(tied, key=lambda i: (rank(i), evaluated[i].figures["max_utilisation"], i))
+        e = evaluated[best]
+        why = (
+            f"no candidate of the front keeps every utilisation at most "
+            f"{RECOMMEND_BELOW:.0%}: the one with the least largest utilisation, {e.binding}"
+        )
+        if len(tied) > 1:
+            others = ", ".join(f"{evaluated[i].name} ({_objective_text(evaluated[i], first)}, "
+                               f"{evaluated[i].figures['max_utilisation']:.1%})"
+                               for i in tied if i != best)  # fmt: skip
+            why += (
+                f"; tied within {TIE_BAND:.0%} of utilisation with {others}, it has the "
+                f"better {_objective_text(e, first)}"
+            )
+    sure = _confidence_text(e, confidence)
+    return best, why + (f"; {sure}" if sure else "")
 
 
 def run_select(
@@ -473,6 +633,7 @@ def run_select(
     motors: Sequence[MotorRow] = (),
     screw_prices: Mapping[str, float] | None = None,
     currency: str = "",
+    confidence: float = CONFIDENCE,
 ) -> SelectResult:
     """Choose the screw for ``case``'s axis over ``profile`` (module docstring).
 
@@ -490,8 +651,9 @@ def run_select(
         Makers to keep, preload classes (:data:`~.candidates.PRELOAD_CLASSES`) and
         oils to try (default: the case's).
     model, cycles, temperature, run_time, move, motion_field
-        As for :func:`~ballscrew.axis.duty.run_energy` (``motion_field`` is what
-        the duty was given as, named by the error when no candidate survives).
+        As for :func:`~ballscrew.axis.duty.run_energy` (``motion_field``, what the
+        duty was given as, is kept for the callers: the error of a selection nothing
+        passes names the candidates' failing rows, not the duty's option).
     pool : sequence of Candidate, optional
         The candidates to evaluate, built by the caller (a size series, a design
         space); the filters ``diameter`` to ``oils`` then do not apply.
@@ -505,15 +667,20 @@ def run_select(
         A screw price table (:func:`ballscrew.io.motors.read_prices`): screw
         name -> price, added to the motor's, and its currency, which must be
         the motor table's.
+    confidence : float
+        The confidence a feasible candidate passes with: its P(NOT OK) at most
+        ``1 - confidence`` (default 0.95, the check's "OK (95 %)").
 
     Raises
     ------
     BallScrewInputError
         For an unknown objective, an empty candidate set, or a duty no
-        candidate survives (naming the closest candidates and what fails them): then a
-        :class:`NoFeasibleCandidateError`, whose ``result`` holds every candidate.
+        candidate passes even at its nominal values (naming the closest candidates,
+        their failing rows and by how much): then a :class:`NoFeasibleCandidateError`,
+        whose ``result`` holds every candidate.
     """
     chosen = _check_objectives(objectives)
+    confidence = parse_confidence(confidence, "confidence")
     for oil in oils:
         try:
             lubricants.get(oil)
@@ -544,7 +711,8 @@ def run_select(
     ready = _prepared(found, profile, model, run_time)
     evaluated = [
         evaluate(c, profile, model=model, cycles=cycles, temperature=temperature,
-                 run_time=run_time, move=move, parsed=parsed, steady=steady)[0]
+                 run_time=run_time, move=move, parsed=parsed, steady=steady,
+                 confidence=confidence)[0]
         for c, (parsed, steady) in zip(found, ready, strict=True)
     ]  # fmt: skip
     alone = {i for i, (_, steady) in enumerate(ready) if steady is None}
@@ -555,13 +723,16 @@ def run_select(
             if i not in alone:
                 evaluated[i] = evaluate(found[i], profile, model=model, cycles=cycles,
                                         temperature=temperature, run_time=run_time, move=move,
-                                        parsed=ready[i][0])[0]  # fmt: skip
+                                        parsed=ready[i][0], confidence=confidence)[0]  # fmt: skip
                 alone.add(i)
 
-    # A utilisation within NEAR of 1 or of RECOMMEND_BELOW: feasibility and the pick as alone.
+    # A utilisation within NEAR of 1 or of RECOMMEND_BELOW, or a P(NOT OK) within 1 % of the
+    # allowed one: feasibility and the pick as alone (the batched temperature moves a thermal
+    # row's draws by 1e-5 relative at most).
     again([i for i, e in enumerate(evaluated) if any(
         abs(e.figures["max_utilisation"] - bound) <= NEAR * bound
-        for bound in (1.0, RECOMMEND_BELOW))])  # fmt: skip
+        for bound in (1.0, RECOMMEND_BELOW))
+        or abs(e.figures["p_not_ok"] - (1.0 - confidence)) <= 0.01])  # fmt: skip
     inputs = {"case": case.title, "model": model, "cycles": cycles, "temperature": temperature,
               "run_time_s": run_time, "move": dict(move or {}), "objectives": list(chosen),
               "diameter_m": list(diameter) if diameter else None,
@@ -570,18 +741,22 @@ def run_select(
               "nuts": list(nuts), "motors": [m.name for m in motors],
               "currency": motor_currency or currency or None,
               "rating_estimates": scatter_text() if any(c.estimated for c in found) else None,
-              "case_text": case.text}  # fmt: skip
-    feasible = [i for i, e in enumerate(evaluated) if e.feasible]
+              "confidence": confidence, "case_text": case.text}  # fmt: skip
+
+    def passing() -> tuple[list[int], bool]:
+        """The candidates the front is taken over, and whether they are only nominal passes."""
+        sure = [i for i, e in enumerate(evaluated) if e.feasible]
+        if sure:
+            return sure, False
+        return [i for i, e in enumerate(evaluated) if e.nominal], True
+
+    feasible, undecided = passing()
     if not feasible:
         failed = NoneFeasible(case.title, chosen, tuple(evaluated), model, "", inputs)
-        closest = "; ".join(f"{e.name}: {e.binding}" for e in failed.rejected[:3])
-        value = _duty(move)
-        allowed = (f"a duty one of the candidates passes (none of the {len(evaluated)} does): "
-                   f"a lighter duty, or other candidates (wider filters, other preload classes "
-                   f"or oils); the closest to passing: {closest}")  # fmt: skip
-        failed = dataclasses.replace(failed, reason=str(BallScrewInputError(
-            motion_field, value, allowed)))  # fmt: skip
-        raise NoFeasibleCandidateError(motion_field, value, allowed, failed)
+        reason = _none_passes(failed.rejected, len(evaluated), _duty(move))
+        failed = dataclasses.replace(failed, reason=reason)
+        raise NoFeasibleCandidateError("candidates", f"{len(evaluated)} candidates",
+                                       reason, failed)  # fmt: skip
     for o in chosen:
         key = OBJECTIVES[o][0]
         if all(math.isnan(evaluated[i].figures[key]) for i in feasible):
@@ -599,10 +774,76 @@ def run_select(
                       for i in feasible])  # fmt: skip
         f = np.where(np.isnan(f), np.inf, f)
         front = tuple(int(feasible[j]) for j in non_dominated(f))
-        best, reason = _recommend(evaluated, front)
+        if undecided:
+            best, reason = _least_doubtful(evaluated, feasible, chosen[0], confidence)
+        else:
+            best, reason = _recommend(evaluated, front, chosen[0], confidence)
+            reason += _passed_over(evaluated, feasible, columns, chosen[0], confidence)
         todo = [i for i in (*front, best) if i not in alone]
         if not todo:
             break
         again(todo)
-        feasible = [i for i, e in enumerate(evaluated) if e.feasible]
-    return SelectResult(case.title, chosen, tuple(evaluated), front, best, reason, model, inputs)
+        feasible, undecided = passing()
+    return SelectResult(case.title, chosen, tuple(evaluated), front, best, reason, model, inputs,
+                        confidence, undecided)  # fmt: skip
+
+
+def _passed_over(
+    evaluated: Sequence[Evaluated], feasible: Sequence[int],
+    columns: Sequence[tuple[str, str, int]], first: str, confidence: float,
+) -> str:  # fmt: skip
+    """What the rule would have picked on nominal verdicts alone, when it is not sure enough."""
+    nominal = [i for i, e in enumerate(evaluated) if e.nominal]
+    if len(nominal) == len(feasible):
+        return ""
+    f = np.array([[sense * evaluated[i].figures[key] for key, _, sense in columns]
+                  for i in nominal])  # fmt: skip
+    f = np.where(np.isnan(f), np.inf, f)
+    front = [int(nominal[j]) for j in non_dominated(f)]
+    pick, _ = _recommend(evaluated, front, first, confidence)
+    if evaluated[pick].feasible:
+        return ""
+    e = evaluated[pick]
+    return (
+        f". On nominal verdicts alone the pick would be {e.name}, but its P(NOT OK) is "
+        f"{e.figures['p_not_ok']:.1%}, above the {1.0 - confidence:.0%} allowed" + _from(e)
+    )
+
+
+def _least_doubtful(
+    evaluated: Sequence[Evaluated], nominal: Sequence[int], first: str, confidence: float
+) -> tuple[int, str]:
+    """Undecided: of the candidates passing at nominal values, the least likely to fail.
+
+    Named whether or not it is on the front (the front's members may all be more likely
+    to fail); a tie on the probability goes by the rule (:func:`_recommend`).
+    """
+    least = min(evaluated[i].figures["p_not_ok"] for i in nominal)
+    tied = [i for i in nominal if evaluated[i].figures["p_not_ok"] <= least + 1e-12]
+    best, _ = _recommend(evaluated, tied, first, confidence)
+    e = evaluated[best]
+    passing = sum(x.nominal for x in evaluated)
+    return best, (
+        f"undecided: no candidate passes with {confidence:.0%} confidence (P(NOT OK) at most "
+        f"{1.0 - confidence:.0%}); {passing} of {len(evaluated)} pass at their nominal values, "
+        f"and the least likely to fail of them, {e.name}, has P(NOT OK) = "
+        f"{e.figures['p_not_ok']:.1%}{_from(e, binding=True)}"
+    )
+
+
+def _none_passes(closest: Sequence[Evaluated], count: int, duty: str) -> str:
+    """The sentence of a selection no candidate passes: the closest, their rows and by how much."""
+    parts = []
+    for e in closest[:CLOSEST]:
+        if e.failing:
+            rows = "; ".join(e.failing)
+            parts.append(f"{e.name} fails {rows}")
+        else:  # stopped by an input error
+            parts.append(f"{e.name} is refused: {e.binding}")
+    return (
+        f"no candidate passes the check over {duty}: none of the {count} candidates tried "
+        f"keeps every row within its limit. The closest to passing: "
+        + ". ".join(parts)
+        + ". Look for screws beyond these filters (diameter, lead, maker, preload class, "
+        "oil, motor) or ease what fails them."
+    )

@@ -4,12 +4,14 @@ Request: ``case`` (the fields of a case file: its axis, motor and limits stay,
 its screw is replaced), ``move`` (stroke, feed and acceleration as text, the
 page's back-and-forth move), and the filters as text or lists: ``diameter``
 and ``lead`` ranges (e.g. ``"32..40 mm"``), ``makers``, ``preloads``,
-``sources`` (``catalogue``, ``iso``) and ``objectives``. Each candidate runs
+``sources`` (``catalogue``, ``iso``), ``objectives`` and ``confidence`` (``"95 %"`` by
+default). Each candidate runs
 the whole check of the move, so the page takes at most
 :data:`MAX_CANDIDATES` of them (the command line has no bound); more is
 refused with the count, before any runs.
 
-The answer: the recommendation first with the reason, then the rest of the
+The answer: the recommendation first with the reason (``undecided`` when no
+candidate passes with the confidence, the one least likely to fail named), then the rest of the
 front, each with its figures and largest utilisation; the count of feasible
 and rejected candidates and the closest rejected ones with what fails them;
 the command that gives the same on the command line.
@@ -56,8 +58,10 @@ def _row(e: Any) -> dict[str, Any]:
 
 def choose(payload: Mapping[str, Any], limits: Limits = LIMITS) -> dict[str, Any]:
     """The selection for the payload's case and move (module docstring)."""
+    from ..axis.uncertainty import CONFIDENCE
     from ..io.extras import MissingExtraError, require
     from ..select import run_select
+    from ..select.choose import parse_confidence
     from ..select.pool import DEFAULT_PRELOADS, candidates, length_range
     from .service import _move_profile
 
@@ -77,6 +81,7 @@ def choose(payload: Mapping[str, Any], limits: Limits = LIMITS) -> dict[str, Any
         preloads = _names(payload, "preloads", DEFAULT_PRELOADS)
         sources = _names(payload, "sources", ("catalogue",))
         objectives = _names(payload, "objectives", ("energy", "life"))
+        confidence = parse_confidence(payload.get("confidence", CONFIDENCE), "confidence")
         found = candidates(case.text, diameter=diameter, lead=lead, makers=makers,
                            preloads=preloads, sources=sources)  # fmt: skip
         if len(found) > MAX_CANDIDATES:
@@ -91,7 +96,7 @@ def choose(payload: Mapping[str, Any], limits: Limits = LIMITS) -> dict[str, Any
             warnings.simplefilter("ignore", BallScrewValidityWarning)
             result = run_select(case, profile, objectives=objectives, diameter=diameter,
                                 lead=lead, makers=makers, preloads=preloads, move=m,
-                                sources=sources)  # fmt: skip
+                                sources=sources, confidence=confidence)  # fmt: skip
     except BallScrewInputError as exc:
         raise ApiError.from_input(exc) from None
     best = result.recommended
@@ -103,11 +108,14 @@ def choose(payload: Mapping[str, Any], limits: Limits = LIMITS) -> dict[str, Any
              f'--lead "{payload["lead"]}"' if lead else "",
              *(f"--maker {x}" for x in makers), *(f"--preload {x}" for x in preloads),
              *(f"--source {x}" for x in sources),
-             *(f"--objective {x}" for x in objectives)]  # fmt: skip
+             *(f"--objective {x}" for x in objectives),
+             f'--confidence "{confidence:.1%}"' if confidence != CONFIDENCE else ""]  # fmt: skip
     out: dict[str, Any] = finite_or_null({
         "objectives": list(result.objectives),
         "recommended": _row(result.evaluated[best]) | {"on_front": best in result.front},
         "reason": result.reason,
+        "confidence": result.confidence,
+        "undecided": result.undecided,
         "front": [_row(result.evaluated[i]) for i in order[:SHOWN] if i in result.front],
         "front_size": len(result.front),
         "candidates": len(result.evaluated),

@@ -20,6 +20,9 @@
     ["reversals", (a) => a.reversals, 0],
     ["load before/after", (a) => Object.entries(a.load_directions).map(([k, n]) => n + " × " + k).join(", ") || "-", 0],
     ["lost motion [µm]", (a) => (a.lost_motion_um ? a.lost_motion_um.map((v) => v.toFixed(1)).join(" to ") : "-"), 0],
+    // The axis check over the program: the worst verdict and the rows that are not OK.
+    ["verdict", (a) => [a.verdict, ...a.criteria.filter((c) => c.verdict === "NOT OK" || c.verdict === "CHECK")
+      .map((c) => c.name + " " + c.verdict)].join("; "), 0],
   ];
 
   function cell(row, text, header) {
