@@ -47,7 +47,9 @@ from .errors import (
 from .plausible import LUBRICANT_RANGES, check_lubricant_property
 
 __all__ = [
+    "FLOODED",
     "LUBRICANT_KINDS",
+    "LUBRICATIONS",
     "NLGI_GRADES",
     "PRESSURE_VISCOSITY_MODELS",
     "VISCOSITY_MODELS",
@@ -56,6 +58,7 @@ __all__ = [
     "astm_d341_viscosity",
     "barus_1893",
     "density_linear",
+    "lubrication_method",
     "pressure_viscosity_jungnickel",
     "pressure_viscosity_unchecked",
     "roelands_1966",
@@ -80,6 +83,57 @@ ViscosityModel = Literal["astm_d341", "vogel"]
 VISCOSITY_MODELS: tuple[str, ...] = get_args(ViscosityModel)
 PressureViscosityModel = Literal["roelands", "barus"]
 PRESSURE_VISCOSITY_MODELS: tuple[str, ...] = get_args(PressureViscosityModel)
+
+LUBRICATIONS = ("flooded", "circulating", "oil-air", "drip", "grease")
+"""How the oil reaches the balls: the lubrication methods of the complete model
+(:func:`ballscrew.friction.complete.complete`, its ``lubrication``).
+
+``"flooded"``
+    An oil bath or any arrangement that keeps the nut full of oil: the balls
+    run immersed.
+``"circulating"``
+    Oil pumped through the nut, which it keeps full: the same terms as
+    ``"flooded"``.
+``"oil-air"``
+    Oil-air (or oil mist): oil carried in by air in small amounts.
+``"drip"``
+    Oil dripped or metered onto the track at intervals, the nut not full: the
+    default (``"auto"``) for an oil. The makers' drag torques
+    (:mod:`ballscrew.study.validation`, on which the complete model's ball-train
+    constant was fitted) state the oil (ISO VG 68) and the speed but not a bath; a nut
+    turned on a test bench has its oil applied, not immersed, so the default
+    keeps what they measure. ``"oil"``, its name before the other methods
+    were modelled, is read as ``"drip"``.
+``"grease"``
+    A grease-packed nut; the default for a grease
+    (:attr:`ballscrew.lubricant.Lubricant.kind`).
+"""
+
+FLOODED = ("flooded", "circulating")
+"""The methods of :data:`LUBRICATIONS` that keep the nut full of oil."""
+
+
+def lubrication_method(lubrication: str, lubricant: Lubricant) -> str:
+    """The method of :data:`LUBRICATIONS` that ``lubrication`` names for ``lubricant``.
+
+    ``"auto"``: ``"grease"`` for a grease, ``"drip"`` for an oil; ``"oil"`` is read as
+    ``"drip"``. A grease cannot flood a nut (its base oil stays in the thickener):
+    ``"flooded"``, ``"circulating"``, ``"drip"`` and ``"oil-air"`` with a grease are refused.
+    """
+    method = check_choice("lubrication", lubrication, ("auto", "oil", *LUBRICATIONS))
+    grease = lubricant.kind == "grease"
+    if method == "auto":
+        return "grease" if grease else "drip"
+    if method == "oil":
+        method = "drip"
+    if grease and method != "grease":
+        raise BallScrewInputError(
+            "lubrication", lubrication,
+            f"'grease' or 'auto' for the grease {lubricant.name!r} (a grease does not "
+            "fill the nut with oil)",
+        )  # fmt: skip
+    return method
+
 
 _CST = 1e-6  # m²/s per mm²/s (cSt)
 ROELANDS_PRESSURE = 1.96e8

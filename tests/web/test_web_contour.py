@@ -48,3 +48,14 @@ def test_contour_names_the_field_it_refuses(client: TestClient) -> None:
     long = client.post("/api/contour", json={"case": CASE, "radius": "1 m", "feed": "0.1 m/min"},
                        headers=JSON)  # fmt: skip
     assert long.status_code == 422 and "--radius" in long.json()["error"]
+
+
+def test_contour_refuses_a_feed_the_motor_cannot_run(client: TestClient) -> None:
+    # Issue 52: a feed past the motor gave a circle. The case's lead at 2 m/s needs
+    # far more than the 3000 rpm given: 422 with the failed check, no circle.
+    case = {**CASE, "motor": {"rated_speed": "3000 rpm", "peak_torque": "19 N*m"}}
+    answer = client.post("/api/contour", json={"case": case, "radius": "50 mm",
+                                               "feed": "2 m/s"}, headers=JSON)  # fmt: skip
+    assert answer.status_code == 422, answer.text
+    error = answer.json()["error"]
+    assert error.startswith("NOT OK, no circle drawn") and "motor speed at the feed" in error

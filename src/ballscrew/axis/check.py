@@ -81,12 +81,12 @@ from ..design.stiffness import (
     torsional_axial_stiffness,
 )
 from ..errors import BallScrewInputError, FloatArray
+from ..geometry import nut_length
 from ..io.case import Case
 from ..kinematics import rad_s_to_rpm
 from ..loads import LIFT_OFF_RATIO
 from .duty import EnergyRun, ModelEnergy, run_inputs
 from .energy import CycleResult
-from .thermal import nut_length
 from .uncertainty import SAMPLES, SEED, VerdictUncertainty, draws, judge, model_error
 
 __all__ = [

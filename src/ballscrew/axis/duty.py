@@ -26,6 +26,7 @@ import numpy.typing as npt
 from .._moved import renamed
 from ..design.ratings import Finding, plausibility, raise_errors, stroke_findings
 from ..errors import BallScrewInputError, FloatArray
+from ..geometry import nut_length
 from ..io.case import Case
 from ..io.files import read_input_text
 from ..kinematics import rad_s_to_rpm
@@ -45,7 +46,6 @@ from .thermal import (
     SteadyAtSpeed,
     SteadyState,
     ThermalNode,
-    nut_length,
     steady_at_speeds,
     steady_temperature,
     temperature_history,

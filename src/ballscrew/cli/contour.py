@@ -4,13 +4,14 @@ from __future__ import annotations
 
 import sys
 from collections.abc import Sequence
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import click
 from rich.console import Console
 from rich.table import Table
 
-from .common import folder_option, json_option, stdout, write_json, writing
+from ..io.numbers import text as num
+from .common import folder_option, json_option, progress, stdout, write_json, writing
 
 if TYPE_CHECKING:
     from ..servo.contour import ContourResult
@@ -47,6 +48,10 @@ __all__ = ["contour_command"]
               help="Pre-rolling length of the screws' drag, e.g. '10 um' (default: the "
               "case's [axis] pre_rolling_length, else 5 um).")  # fmt: skip
 @click.option("--rigid", is_flag=True, help="One-mass axes (no spring between motor and table).")
+@click.option("--max-samples", type=click.IntRange(min=1), default=None, metavar="N",
+              help="The most samples simulated (all circles and reversals, both axes), "
+              "estimated before the run: 2 pi R/(v T_s) per revolution; default "
+              "4,000,000 (about 15 s of CPU).")  # fmt: skip
 @json_option("Write the results as JSON to FILE ('-' for standard output).")
 @folder_option(
     "Write a report here: polar plot, reversal, tables (figures, CSV, Markdown, HTML, JSON)."
@@ -65,6 +70,7 @@ def contour_command(
     guide_friction: str | None,
     pre_rolling: str | None,
     rigid: bool,
+    max_samples: int | None,
     json_file: str | None,
     out_dir: str | None,
 ) -> None:
@@ -81,6 +87,18 @@ def contour_command(
     it), the reversal test of the x axis, and the loops' margins and
     bandwidths.
 
+    Before any circle runs, each axis is checked: the velocity and position
+    loops' phase margins at least 30 deg and gain margins at least 6 dB, the
+    sampling frequency at least 10 times each loop's bandwidth, and, with the
+    case's [motor], the motor speed the feed needs at most rated_speed, the
+    peak torque (whole mass at the path's peak acceleration v^2/R, plus
+    friction) at most peak_torque. A loop past those
+    minimums but stable (a margin above 0, sampling above twice the bandwidth)
+    is CHECK: warned, drawn. An unstable loop, sampling below twice a bandwidth
+    or a feed past the motor is NOT OK: printed with its margin, no circle
+    drawn, the verdict in --json (no report), exit status 2. A run of more
+    than --max-samples samples is refused before it starts, with the estimate.
+
     \b
     Example:
       ballscrew contour --case examples/xy_table_32x10.toml --radius "50 mm" --feed "2 m/min"
@@ -88,7 +106,6 @@ def contour_command(
     from .._version import __version__
     from ..io.case import load_case
     from ..io.extras import require
-    from ..io.units import to_si
     from ..report.outputs import json_document
     from ..servo import run_contour
 
@@ -96,18 +113,23 @@ def contour_command(
     if len(case_files) > 2:
         raise click.UsageError("--case is given once (both axes) or twice (x, y)")
     cases = [load_case(f) for f in case_files] if case_files else [load_case(None)]
-    result = run_contour(
-        cases, radius=to_si("--radius", radius, "m"), feed=to_si("--feed", feed, "m/s"),
-        model=model_name, directions=directions or ("CCW", "CW"),
-        sampling_time=to_si("--sampling-time", sampling_time, "s"),
-        kv=to_si("--kv", kv, "1/s"), phase_margin=to_si("--phase-margin", phase_margin, "rad"),
-        velocity_ff=1.0 if feed_forward else 0.0, acceleration_ff=1.0 if feed_forward else 0.0,
-        feedback=feedback,
-        guide_coulomb=to_si("--guide-friction", guide_friction, "N") if guide_friction else None,
-        rigid=rigid,
-        pre_rolling_length=to_si("--pre-rolling", pre_rolling, "m") if pre_rolling else None,
-    )  # fmt: skip
+    runs = len(directions or ("CCW", "CW")) * 2 + 2
+    with progress(Console(stderr=True)) as bar:
+        task = bar.add_task("loops and drive checked", total=runs)
+
+        def advance(what: str) -> None:
+            bar.update(task, description=what)
+            bar.advance(task)
+
+        result = _run(run_contour, cases, radius, feed, directions, model_name, sampling_time,
+                      kv, phase_margin, feed_forward, feedback, guide_friction, rigid,
+                      pre_rolling, max_samples, advance)  # fmt: skip
     console = stdout(json_file)
+    if result.verdict == "NOT OK":
+        _refuse(console, result, json_file, out_dir)
+    for c in result.checks:
+        if c.status == "CHECK":
+            click.echo(f"warning: CHECK {c.text()}", err=True)
     _print(console, result)
     for note in _merged(result.notes):
         click.echo(f"note: {note}", err=True)
@@ -119,6 +141,57 @@ def contour_command(
     if json_file:
         write_json(json_file, json_document({"ballscrew": __version__, **result.as_dict()}))
     sys.stdout.flush()
+
+
+def _run(run_contour: Any, cases: list[Any], radius: str, feed: str,
+         directions: tuple[str, ...], model_name: str, sampling_time: str, kv: str,
+         phase_margin: str, feed_forward: bool, feedback: str, guide_friction: str | None,
+         rigid: bool, pre_rolling: str | None, max_samples: int | None,
+         advance: Any) -> ContourResult:  # fmt: skip
+    """The options in SI, to :func:`ballscrew.servo.run_contour`."""
+    from ..io.units import to_si
+    from ..servo.verdict import MAX_SAMPLES
+
+    return run_contour(  # type: ignore[no-any-return]
+        cases, radius=to_si("--radius", radius, "m"), feed=to_si("--feed", feed, "m/s"),
+        model=model_name, directions=directions or ("CCW", "CW"),
+        sampling_time=to_si("--sampling-time", sampling_time, "s"),
+        kv=to_si("--kv", kv, "1/s"), phase_margin=to_si("--phase-margin", phase_margin, "rad"),
+        velocity_ff=1.0 if feed_forward else 0.0, acceleration_ff=1.0 if feed_forward else 0.0,
+        feedback=feedback,
+        guide_coulomb=to_si("--guide-friction", guide_friction, "N") if guide_friction else None,
+        rigid=rigid,
+        pre_rolling_length=to_si("--pre-rolling", pre_rolling, "m") if pre_rolling else None,
+        max_samples=MAX_SAMPLES if max_samples is None else max_samples, on_step=advance,
+    )  # fmt: skip
+
+
+class LoopNotOK(click.ClickException):
+    """A circle that the loops or the drive cannot run: exit status 2, one line."""
+
+    exit_code = 2
+
+
+def _refuse(console: Console, result: ContourResult, json_file: str | None,
+            out_dir: str | None) -> None:  # fmt: skip
+    """Print the failed checks with their margins, write the JSON verdict, and stop."""
+    from .._version import __version__
+    from ..report.outputs import json_document
+
+    table = Table(title=f"NOT OK: the circle of {result.axes[0].name} cannot run as set")
+    for column in ("axis", "check", "value", "limit", "margin", "verdict"):
+        table.add_column(column, justify="right")
+    failed = [c for c in result.checks if not c.ok]
+    for c in failed:
+        table.add_row(c.axis, c.name, f"{num(c.value)} {c.unit}",
+                      f"{'>=' if c.floor else '<='} {num(c.limit)} {c.unit}",
+                      f"{num(c.margin)} {c.unit}", c.status)  # fmt: skip
+    console.print(table)
+    if json_file:
+        write_json(json_file, json_document({"ballscrew": __version__, **result.as_dict()}))
+    reasons = _merged([f"{c.axis}: {c.text().partition(': ')[2]}" for c in failed])
+    kept = "" if out_dir is None else "; no report written"
+    raise LoopNotOK(f"NOT OK, no circle drawn{kept}: " + "; ".join(reasons))
 
 
 def _print(console: Console, result: ContourResult) -> None:
@@ -136,7 +209,8 @@ def _print(console: Console, result: ContourResult) -> None:
                       f"{c['circular_deviation_G_um']:.3g}", heights, f"{width:.3g}")  # fmt: skip
     console.print(table)
     h = doc["circular_hysteresis_H_um"]
-    console.print(f"glitch reduction by the compensation: {result.reduction:.3g}"
+    reduction = "" if result.reduction is None else f"{result.reduction:.3g}"
+    console.print(f"glitch reduction by the compensation: {reduction or 'not run'}"
                   + (f"; circular hysteresis H {h:.3g} um" if h is not None else ""))  # fmt: skip
     for r in result.reversals:
         console.print(f"reversal of x at {r.acceleration:.3g} m/s^2 "
@@ -151,6 +225,10 @@ def _print(console: Console, result: ContourResult) -> None:
     for row in rows:
         loops.add_row(*row)
     console.print(loops)
+    low = min(result.checks, key=lambda c: c.margin / max(abs(c.limit), 1e-300), default=None)
+    console.print(f"verdict: {result.verdict} ({len(result.checks)} checks of the loops' "
+                  "margins, the sampling and the drive"
+                  + (f"; the closest: {low.text()})" if low else ")"))  # fmt: skip
     console.print(f"CPU time: {result.cpu_seconds:.3g} s")
 
 

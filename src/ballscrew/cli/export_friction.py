@@ -295,7 +295,7 @@ def write_controller_table(
     from .._version import __version__
     from ..io.case import load_case
     from ..io.files import atomic_write
-    from ..io.units import parse_range, to_si
+    from ..io.units import Reading, parse_range, parse_speed_range, to_si
     from ..report.controller_tables import (
         LINCURVE_MARK,
         TABLE_WRITERS,
@@ -327,10 +327,16 @@ def write_controller_table(
     case = load_case(case_file)
     import numpy as np
 
-    speeds = np.asarray(parse_range("--speed", speed, "m/s"), dtype=float)
-    top = float(np.max(np.abs(speeds)))
+    # A feed ('5 m/min') or a screw speed ('0.1..3000:60 rpm', the option's default) read
+    # at the case's lead; the table spans the table speeds up to the fastest.
+    read: list[Reading] = []
+    screw = np.asarray(parse_speed_range("--speed", speed, case.screw.lead, notes=read),
+                       dtype=float)  # fmt: skip
+    for reading in read:
+        click.echo(f"note: {reading}", err=True)
+    top = float(np.max(np.abs(screw))) * case.screw.lead / (2.0 * np.pi)
     if not top > 0.0:
-        raise click.UsageError("--speed needs a positive table speed for the table's range")
+        raise click.UsageError("--speed needs a positive speed for the table's range")
     temps = parse_range("--temperature", temperature, "degC") if temperature else None
     result = controller_table(
         case, model_name, target, speed_range=top,

@@ -29,6 +29,13 @@ from .common import (
 MAX_POINTS = 2_000_000
 """The most operating points ``ballscrew torque`` computes without ``--max-points``."""
 
+BYTES_PER_POINT = {"compute": 1_500, "table": 3_000, "files": 6_000}
+"""Peak memory per operating point [bytes], measured as the peak resident size over 2e5
+points of the complete model: the model's arrays (1.4 kB with --table none); the rows of
+a terminal table (4.2 kB in all with the summary); the rows and text of --json (7.2 kB in
+all; --csv 2.9 kB, counted as --json). A run whose sum does not fit is refused before it
+starts (:func:`ballscrew.io.resources.check_memory`), whatever ``--max-points`` says."""
+
 __all__ = ["torque"]
 
 
@@ -96,7 +103,9 @@ __all__ = ["torque"]
     type=click.IntRange(min=1),
     default=MAX_POINTS,
     show_default=True,
-    help="The most operating points (speeds x temperatures x loads x models) computed.",
+    help="The most operating points (speeds x temperatures x loads x models) computed; "
+    "a run whose estimated memory exceeds half the available memory is refused whatever "
+    "this says.",
 )
 @units_option
 def torque(
@@ -142,6 +151,14 @@ def torque(
         model_named(name)
     read: list[Reading] = []
     w, t, f = _points(case, speed, temperature, axial_load, len(model_names), max_points, read)
+    from ..io.resources import check_memory
+
+    cost = BYTES_PER_POINT["compute"] + (BYTES_PER_POINT["table"] if table_kind != "none" else 0)
+    cost += BYTES_PER_POINT["files"] if (csv_file or json_file) else 0
+    check_memory("operating points", math.prod(np.size(a) for a in (w, t, f))
+                 * len(model_names), cost, "operating points",
+                 "take fewer speeds, temperatures, loads or models, or --table none without "
+                 "--json and --csv")  # fmt: skip
     for reading in read:
         click.echo(f"note: {reading}", err=True)
     console = Console(stderr=True)
@@ -208,9 +225,9 @@ def _print_table(run: Any, kind: str, json_file: str | None, system: str = "si")
     """The terminal table ``kind`` asks for (auto: by the number of rows), in ``system``'s units."""
     from ..io.display import display_row, system_note
 
-    rows = [display_row(r, system) for r in run.rows]
-    if kind == "none":
+    if kind == "none":  # no rows built: a large run keeps only its arrays
         return
+    rows = [display_row(r, system) for r in run.rows]
     pivot_rows = len({(r[_label("temperature [degC]", rows)], r[_label("axial load [N]", rows)],
                        r["speed [rpm]"]) for r in rows})  # fmt: skip
     if kind == "auto":

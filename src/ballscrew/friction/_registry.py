@@ -185,7 +185,9 @@ PARAMETER_UNITS: dict[str, tuple[str, str]] = {
                               "('tolerance')"),
     "return_turning_angle": ("rad", "angle the balls turn through in the return path"),
     "hysteresis_loss_factor": ("-", "share of the rolling strain energy lost (steel: ~0.01)"),
-    "lubrication": ("", "'oil' or 'grease': SKF's replenishment constant"),
+    "lubrication": ("", "lubrication method: 'flooded' or 'circulating' (a nut full of oil: "
+                    "oil shear between balls, ball churning, no starvation), 'drip', "
+                    "'oil-air' or 'grease'; 'auto': 'grease' for a grease, else 'drip'"),
     "thermal_correction": ("", "apply the inlet shear heating and replenishment factors"),
     "seal_torque": ("N*m", "drag torque of wipers or seals"),
     "asperity_b": ("-", "B of the asperity share A_c/A_0 against the film parameter"),

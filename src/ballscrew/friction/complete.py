@@ -93,15 +93,50 @@ each a named component of the result, each from a published law
     kinematic conflict of a 4-point contact forces
     (:func:`ballscrew.kinematics.four_point_spin`): the ball must turn about
     an axis parallel to the screw axis.
+``"meniscus"``
+    Only in a nut full of oil (``lubrication="flooded"`` or ``"circulating"``,
+    :data:`ballscrew.lubricant.LUBRICATIONS`): the Newtonian shear of the oil in the gap between
+    neighbouring balls outside their Hertz contact
+    (:func:`ballscrew.rolling_losses.meniscus_shear_power`). Their surfaces
+    slide past each other at :math:`v_{BB}` with no entraining motion, so
+    the gap builds no pressure and does not cavitate: a Couette film from the
+    Hertz circle of the ball-ball contact (radius :math:`a_{BB}` under
+    :math:`F_B`, its own film counted in ``"ball_ball"``) out to the ball's
+    equator, its gap on the line of centres the ball-ball contact's film
+    thickness (at least the balls' composite roughness). Per circuit of
+    :math:`n` loaded balls there are :math:`n - 1` such gaps. Proportional to
+    the oil's viscosity at ambient pressure and to :math:`\omega^2`: the
+    torque grows linearly with the speed and falls with the temperature as
+    the viscosity does (the logarithm of the gap hardly moves). Nuts with
+    spacer balls or a cage have no sliding neighbours and no such term.
+``"churning"``
+    Only in a nut full of oil: the drag of the loaded balls moving through the
+    oil at their orbital speed relative to the nut, with the drag curve of a
+    sphere at the ball's Reynolds number
+    (:func:`ballscrew.rolling_losses.ball_churning_power`); an upper bound (the
+    screw drags the oil along, and neighbours shield each other).
 ``"seals"``
     A wiper or seal drag torque given by the user (``seal_torque``), 0 by
     default: catalogue drag torques are measured without wipers.
 
+The lubrication method (``lubrication``, :data:`ballscrew.lubricant.LUBRICATIONS`) decides which
+terms run. In a flooded nut (an oil bath, or circulating oil that keeps the nut
+full) the balls run immersed: the meniscus and churning terms run, and the
+rolling term has no starvation factor (SKF's kinematic replenishment factor
+describes a track whose oil must flow back between balls; an immersed track
+has it at hand). With oil dripped or metered in (``"drip"``), oil-air or
+grease there is no bulk oil in the nut: no meniscus or churning term, and the
+rolling term keeps SKF's replenishment factor with its constant for oil
+(``"drip"``, the constant of low-level oil lubrication) or for grease and
+oil-air. The balls of the return path, which also move through the oil of a
+flooded nut, are left out of both terms (a share of the balls of the order of
+10 to 30 %), as is the drag torque of the ball's own spin in the oil beyond the
+gaps to its neighbours.
+
 The torque on the screw is the dissipated power over the screw speed,
 :math:`T = P/|\omega|`; every power above is proportional to the speed at
 fixed contact state, so the ratio is evaluated directly and stays finite at
-zero speed. Oil churning in a bath is not modelled (ball screws run on
-circulating oil, oil-air or grease).
+zero speed.
 
 The ball-train constant was fitted once on the training set of
 :mod:`ballscrew.study.validation` (see :data:`BALL_TRAIN_CONSTANT`) and is never
@@ -133,7 +168,7 @@ from ..kinematics import (
     neighbour_sliding,
     rad_s_to_rpm,
 )
-from ..lubricant import Lubricant
+from ..lubricant import FLOODED, Lubricant, lubrication_method
 from ..materials import STEEL_DENSITY
 from ..plausible import check_wiper_drag
 from ..state import ContactState, OperatingState
@@ -209,7 +244,11 @@ back: four bends of about a right angle each; a deflector's crossover turns
 them about as much. An assumption, stated with the result.
 """
 
-_K_RS = {"oil": 3e-8, "grease": 6e-8}
+# SKF's replenishment constant K_rs (catalogue 10000 EN, 2012): 3e-8 for oil bath (low level)
+# and oil jet, 6e-8 for grease and oil-air; None: no starvation factor (the balls immersed).
+_K_RS: dict[str, float | None] = {
+    "flooded": None, "circulating": None, "drip": 3e-8, "oil-air": 6e-8, "grease": 6e-8,
+}  # fmt: skip
 
 
 DIRECT_INTEGRALS: int = 11
@@ -449,22 +488,89 @@ def ball_ball_friction(
         :math:`\mu_{BB}`; the boundary coefficient where the force is 0.
     """
     screw = state.screw
-    radius = 0.25 * screw.ball_diameter
-    ep = screw.reduced_modulus
     loaded = force > 0.0
     f_safe = np.where(loaded, force, 1.0)
-    surface = 0.5 * np.abs(neighbour_sliding(screw, state.kinematics.screw_speed))
-    u_par = ehl.dimensionless_speed(contact.viscosity, surface, ep, radius)
-    w_par = ehl.dimensionless_load(f_safe, ep, radius)
-    h_min = ehl.hamrock_dowson_1977_minimum(radius, u_par, contact.materials_parameter, w_par, 1.0)
+    h_min = _ball_ball_film(state, contact, f_safe)
     sigma = math.sqrt(2.0) * screw.roughness_ball
     share = ehl.asperity_share(ehl.lambda_ratio(h_min, sigma), asperity_b, asperity_c)
-    mean_pressure = 2.0 / 3.0 * hertz(f_safe, radius, radius, ep).p_max
+    radius = 0.25 * screw.ball_diameter
+    mean_pressure = 2.0 / 3.0 * hertz(f_safe, radius, radius, screw.reduced_modulus).p_max
     mu = rl.mixed_friction_coefficient(
         share, boundary, rl.limiting_traction_coefficient(tau0, gamma_l, mean_pressure)
     )
     result: FloatArray = np.where(loaded, mu, boundary)
     return result
+
+
+def _ball_ball_film(state: OperatingState, contact: ContactState, force: FloatArray) -> FloatArray:
+    r"""Hamrock and Dowson's minimum film of the ball-ball contact under ``force`` (> 0) [m].
+
+    At the entrainment speed of one surface, :math:`\omega_bD_w/2` (an upper bound:
+    :func:`ball_ball_friction`).
+    """
+    screw = state.screw
+    radius = 0.25 * screw.ball_diameter
+    ep = screw.reduced_modulus
+    surface = 0.5 * np.abs(neighbour_sliding(screw, state.kinematics.screw_speed))
+    u_par = ehl.dimensionless_speed(contact.viscosity, surface, ep, radius)
+    w_par = ehl.dimensionless_load(force, ep, radius)
+    h_min: FloatArray = ehl.hamrock_dowson_1977_minimum(
+        radius, u_par, contact.materials_parameter, w_par, 1.0
+    )
+    return h_min
+
+
+def _flooded(
+    state: OperatingState, lubricant: Lubricant, c_b: float
+) -> tuple[FloatArray, FloatArray]:
+    """Meniscus and churning torques of a nut full of oil [N·m] (module docstring).
+
+    Per loaded train (each family of a double nut; one for a 4-point nut), the ``n - 1``
+    gaps of each circuit's ``n`` loaded balls shear their oil
+    (:func:`ballscrew.rolling_losses.meniscus_shear_power`) from the Hertz circle of
+    the ball-ball contact under :math:`F_B = c_BQ` outward, the gap on the line of
+    centres the larger of that contact's film and the balls' composite roughness;
+    every loaded ball churns (:func:`ballscrew.rolling_losses.ball_churning_power`) at
+    its orbital speed relative to the nut.
+    """
+    screw = state.screw
+    shape = state.shape
+    omega = np.abs(state.kinematics.screw_speed)
+    moving = omega > 0.0
+    per_omega = np.where(moving, 1.0 / np.where(moving, omega, 1.0), 0.0)
+    eta = lubricant.dynamic_viscosity(state.temperature)
+    rho = lubricant.density(state.temperature)
+    unit = kinematics(screw, 1.0)
+    sliding = np.abs(_number(neighbour_sliding(screw, 1.0))) * omega
+    centre = np.abs(_number(unit.orbital_speed)) * 0.5 * screw.pitch_diameter
+    centre = centre / cos(screw.lead_angle) * omega
+    radius = 0.5 * screw.ball_diameter
+    sigma = math.sqrt(2.0) * screw.roughness_ball
+    n = screw.balls_per_circuit
+    gaps_per_ball = (n - 1.0) / n  # n >= 1 (BallScrew refuses an empty circuit)
+    screw_side = [c for c in state.contacts if c.side == "screw"]
+    trains = screw_side[:1] if screw.nut == "single-4point" else screw_side
+    meniscus: FloatArray = np.zeros(shape)
+    churning: FloatArray = np.zeros(shape)
+    per_ball_churn = rl.ball_churning_power(eta, rho, centre, screw.ball_diameter)
+    for c in trains:
+        if not np.any(c.balls):
+            continue
+        churning = churning + c.balls * per_ball_churn
+        if screw.ball_separation != "none":  # spacer balls or a cage: no sliding neighbours
+            continue
+        force = c_b * np.abs(c.load)
+        pressed = force > 0.0
+        f_safe = np.where(pressed, force, 1.0)
+        film = np.where(pressed, _ball_ball_film(state, c, f_safe), 0.0)
+        ball_radius = 0.25 * screw.ball_diameter  # R_x = R_y of the ball-ball contact
+        circle = np.where(
+            pressed, hertz(f_safe, ball_radius, ball_radius, screw.reduced_modulus).a, 0.0
+        )
+        gap = np.maximum(film, sigma)
+        power = rl.meniscus_shear_power(eta, sliding, radius, gap, inner_radius=circle)
+        meniscus = meniscus + c.balls * gaps_per_ball * power
+    return meniscus * per_omega, churning * per_omega
 
 
 def _helix_slip(
@@ -527,7 +633,7 @@ def complete(
     contact_angle_scatter: float = CONTACT_ANGLE_SCATTER,
     return_turning_angle: float = RETURN_TURNING_ANGLE,
     hysteresis_loss_factor: float = HYSTERESIS_LOSS_FACTOR,
-    lubrication: str = "oil",
+    lubrication: str = "auto",
     thermal_correction: bool = True,
     seal_torque: float = 0.0,
     asperity_b: float = 1.42,
@@ -561,9 +667,13 @@ def complete(
         :math:`\Theta` [rad]; default :data:`RETURN_TURNING_ANGLE`.
     hysteresis_loss_factor : float
         :math:`\alpha_h` [-]; default :data:`HYSTERESIS_LOSS_FACTOR`.
-    lubrication : {"oil", "grease"}
-        Sets SKF's replenishment constant :math:`K_{rs}` (3e-8 oil, 6e-8
-        grease or oil-air).
+    lubrication : {"auto", "flooded", "circulating", "oil-air", "drip", "grease"}
+        The lubrication method (:data:`ballscrew.lubricant.LUBRICATIONS`): in a flooded nut
+        (``"flooded"``, ``"circulating"``) the meniscus and churning terms
+        run and the rolling term has no starvation factor; otherwise SKF's
+        replenishment constant :math:`K_{rs}` is 3e-8 (``"drip"``) or 6e-8
+        (``"oil-air"``, ``"grease"``). ``"auto"`` (default): ``"grease"`` for a
+        grease, else ``"drip"`` (:func:`ballscrew.lubricant.lubrication_method`).
     thermal_correction : bool
         Apply the inlet shear heating and replenishment factors (default True).
     seal_torque : float
@@ -579,10 +689,10 @@ def complete(
     -------
     dict
         ``"rolling"``, ``"sliding"``, ``"helix_slip"``, ``"hysteresis"``,
-        ``"ball_ball"``, ``"recirculation"``, ``"four_point"``, ``"seals"``
-        torques [N·m].
+        ``"ball_ball"``, ``"recirculation"``, ``"meniscus"``, ``"churning"``,
+        ``"four_point"``, ``"seals"`` torques [N·m].
     """
-    check_choice("lubrication", lubrication, tuple(_K_RS))
+    method = lubrication_method(lubrication, lubricant)
     mu_bl = float(check_nonnegative("boundary_friction", boundary_friction))
     check_choice("ball_train", ball_train, BALL_TRAINS)
     c_b = float(check_nonnegative("ball_train_constant", ball_train_constant))
@@ -596,7 +706,7 @@ def complete(
         screw, lubricant, speed, temperature, axial_load, hertz_method=hertz_method,
         asperity_b=asperity_b, asperity_c=asperity_c, state=state,
     )  # fmt: skip
-    reduction = _thermal_reduction(screw, lubricant, state, lubrication, thermal_correction)
+    reduction = _thermal_reduction(screw, lubricant, state, method, thermal_correction)
     per_speed = _per_speed(screw)
     four = screw.nut == "single-4point"
     parts, mu = _groove_losses(
@@ -614,9 +724,13 @@ def complete(
         parts["ball_ball"], parts["recirculation"] = _ball_train(
             state, mu, one_spin, scatter, mu_bl, tau0, gamma_l, theta, asperity_b, asperity_c
         )
+    if method in FLOODED:
+        parts["meniscus"], parts["churning"] = _flooded(state, lubricant, c_b)
+    else:  # no bulk oil in the nut
+        parts["meniscus"] = parts["churning"] = np.zeros(state.shape)
     parts["seals"] = np.full(state.shape, seal)
     order = ("rolling", "sliding", "helix_slip", "hysteresis", "ball_ball", "recirculation",
-             "four_point", "seals")  # fmt: skip
+             "meniscus", "churning", "four_point", "seals")  # fmt: skip
     return {name: parts[name] for name in order}
 
 
@@ -624,16 +738,22 @@ def _thermal_reduction(
     screw: ScrewGeometry, lubricant: Lubricant, state: OperatingState, lubrication: str,
     thermal_correction: bool,
 ) -> FloatArray:  # fmt: skip
-    """SKF's inlet shear heating times replenishment factor (ones without the correction)."""
+    """SKF's inlet shear heating times replenishment factor (ones without the correction).
+
+    A flooded nut (``_K_RS`` None) has no replenishment factor: its balls run immersed.
+    """
     if not thermal_correction:
         return np.ones(state.shape)
     rpm = rad_s_to_rpm(np.abs(state.kinematics.screw_speed))
     nu = lubricant.kinematic_viscosity(state.temperature) * 1e6  # mm²/s
     dm_mm = screw.pitch_diameter * 1e3
     section = 3.4 * screw.ball_diameter * 1e3  # D - d of a 72-series bearing, ~3.4 D_w
-    reduction: FloatArray = rl.inlet_shear_heating_factor(rpm, dm_mm, nu) * rl.replenishment_factor(
-        rpm, nu, dm_mm - 0.5 * section, dm_mm + 0.5 * section, k_rs=_K_RS[lubrication]
-    )
+    reduction: FloatArray = rl.inlet_shear_heating_factor(rpm, dm_mm, nu)
+    k_rs = _K_RS[lubrication]
+    if k_rs is not None:
+        reduction = reduction * rl.replenishment_factor(
+            rpm, nu, dm_mm - 0.5 * section, dm_mm + 0.5 * section, k_rs=k_rs
+        )
     return reduction
 
 

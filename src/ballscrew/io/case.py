@@ -47,7 +47,7 @@ from ..design.limits import (
 from ..design.ratings import Ratings, static_rating_estimate
 from ..errors import BallScrewInputError, BallScrewPlausibilityWarning, FloatArray
 from ..geometry import PLAUSIBLE_SIZES, BallScrew
-from ..lubricant import Lubricant
+from ..lubricant import Lubricant, lubrication_method
 from ..plausible import (
     AXIS_RANGES,
     LOWEST_FREQUENCY,
@@ -222,6 +222,9 @@ class Case:
     thermal : dict
         ``[axis]``'s thermal keys in SI (m, kg, K/W, °C), those given: the
         keywords of :class:`ballscrew.axis.thermal.ThermalNode`.
+    lubrication : str or None
+        ``[lubricant] lubrication``, the lubrication method; :meth:`parameters_for` hands
+        it to the complete model (its ``lubrication``); None when not given.
     contact_angle_scatter : float or None
         ``[screw] contact_angle_scatter`` [rad]; :meth:`parameters_for` hands it to
         the complete model with ``ball_train="tolerance"``; None when not given.
@@ -273,6 +276,7 @@ class Case:
     file), ``catalogue`` (the designation's row), ``default`` (the schema's or the
     command's), ``assumed`` (marked so, with its reason in :attr:`assumptions`)."""
     contact_angle_scatter: float | None = None
+    lubrication: str | None = None
     output_units: str = "si"
     designation: str = ""
     given_si: dict[str, tuple[float, str]] = field(default_factory=dict)
@@ -311,6 +315,8 @@ class Case:
         if self.contact_angle_scatter is not None and model == "complete":
             params.setdefault("ball_train", "tolerance")
             params.setdefault("contact_angle_scatter", self.contact_angle_scatter)
+        if self.lubrication is not None and model == "complete":
+            params.setdefault("lubrication", self.lubrication)
         return params
 
     def input_values(
@@ -407,7 +413,8 @@ def _validation_error(exc: ValidationError) -> BallScrewInputError:
     err = next((e for e in errors if e["type"] == "extra_forbidden"), errors[0])
     path = ".".join(str(p) for p in err["loc"] if not str(p).startswith(("function-", "_")))
     # pydantic reports union members in the path; keep the field names only.
-    parts = [p for p in path.split(".") if p not in {"str", "float", "int", "Assumed"}]
+    union = {"str", "float", "int", "Assumed"}
+    parts = [p for p in path.split(".") if p not in union and not p.startswith("literal[")]
     field = ".".join(parts) or "case"
     kind = err["type"]
     allowed = {
@@ -481,6 +488,7 @@ def _read_case(text: str, source: str) -> Case:
     screw, screw_source, ratings = _screw(s, si, notes)
 
     lub = _lubricant(data.lubricant, notes)
+    lubrication = _lubrication(data, lub, notes)
     speed, temperature, axial = _operation(data, notes, read, screw.lead)
     # What every run checks before it computes, named as the file names it.
     check_operating_bounds(speed, temperature, axial, "operation.")
@@ -544,6 +552,7 @@ def _read_case(text: str, source: str) -> Case:
         axis_given=frozenset(data.axis.model_fields_set),
         sources=sources,
         contact_angle_scatter=scatter,
+        lubrication=lubrication,
         output_units=data.output.units,
         designation=_designation(data.screw),
         given_si={k: v for k, v in given.items() if k in sources and sources[k] != "default"},
@@ -585,6 +594,8 @@ def _resolved(case: Case, section: str, name: str, screw: dict[str, Any]) -> Any
         return case.axis.get(name, case.thermal.get(name))
     if section in ("motor", "check"):
         return getattr(case, section).get(name)
+    if (section, name) == ("lubricant", "lubrication"):
+        return case.lubrication or "auto"
     return None
 
 
@@ -931,6 +942,9 @@ def _sources(data: CaseFile, notes: list[Assumption]) -> dict[str, str]:
     for name in ("dynamic_load_rating", "static_load_rating"):
         out[f"screw.{name}"] = ("given" if name in given else "catalogue" if s.designation
                                 else "estimated or missing")  # fmt: skip
+    out["lubricant.lubrication"] = (
+        "given" if "lubrication" in data.lubricant.model_fields_set else "default"
+    )
     for section in (data.operation, data.axis, data.motor, data.check):
         key = {id(data.operation): "operation", id(data.axis): "axis", id(data.motor): "motor",
                id(data.check): "check"}[id(section)]  # fmt: skip
@@ -1190,6 +1204,29 @@ def _lubricant(section: LubricantSection, notes: list[Assumption]) -> Lubricant:
         return lubricants.get(name).replace(**given)
     except BallScrewInputError as exc:
         raise _as_typed(exc, "lubricant", section, LUBRICANT_UNITS) from None
+
+
+def _lubrication(data: CaseFile, lub: Lubricant, notes: list[Assumption]) -> str | None:
+    """``[lubricant] lubrication`` as given (None if not), checked against the lubricant.
+
+    A grease cannot flood a nut, and the method given twice (also as the complete model's
+    ``lubrication`` in ``[study] model_parameters``) must agree.
+    """
+    if "lubrication" not in data.lubricant.model_fields_set:
+        return None
+    raw = data.lubricant.lubrication
+    method = str(_unwrap("lubricant.lubrication", raw, notes))
+    try:
+        lubrication_method(method, lub)
+    except BallScrewInputError as exc:
+        raise BallScrewInputError("lubricant.lubrication", method, exc.allowed) from None
+    other = data.study.model_parameters.get("complete", {}).get("lubrication")
+    if other is not None and other != method:
+        raise BallScrewInputError(
+            "study.model_parameters.complete.lubrication", other,
+            f"the method of [lubricant] lubrication ({method!r}), or left out",
+        )  # fmt: skip
+    return method
 
 
 def default_case_path() -> Path:

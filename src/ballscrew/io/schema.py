@@ -235,6 +235,18 @@ class LubricantSection(BaseModel):
     limiting_shear_coefficient: Value | None = _f(
         None, "-", "pressure coefficient gamma_L of the limiting shear stress", 0.047, si=""
     )
+    lubrication: (
+        Literal["auto", "flooded", "circulating", "oil-air", "drip", "grease"] | Assumed
+    ) = _f(
+        "auto",
+        "-",
+        'how the nut is lubricated: "flooded" (an oil bath) or "circulating" (oil pumped '
+        "through; both keep the nut full: oil shear between the balls and ball churning, no "
+        'starvation), "drip" (oil applied, the nut not full), "oil-air" or "grease"; default '
+        '"auto": "grease" for a grease, else "drip", the conditions of the makers\' drag '
+        "torques (the complete model; the other models do not distinguish)",
+        "flooded",
+    )
 
 
 class OperationSection(BaseModel):
@@ -594,7 +606,7 @@ class StudySection(BaseModel):
         {},
         "-",
         "model name -> its parameters (see ballscrew models)",
-        {"complete": {"lubrication": "oil"}},
+        {"complete": {"boundary_friction": 0.12}},
     )
 
 

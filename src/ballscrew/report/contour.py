@@ -125,12 +125,12 @@ def _fmt(v: float | None, digits: int = 4) -> str:
 def loop_table(result: ContourResult) -> tuple[list[str], list[list[str]]]:
     """Each axis's loops as (header, rows): crossover, margins, bandwidths, eigenfrequency."""
     header = ["axis", "velocity crossover [Hz]", "phase margin [deg]", "gain margin [dB]",
-              "velocity bandwidth [Hz]", "position bandwidth [Hz]",
-              "eigenfrequency [Hz]"]  # fmt: skip
+              "velocity bandwidth [Hz]", "position phase margin [deg]",
+              "position bandwidth [Hz]", "eigenfrequency [Hz]"]  # fmt: skip
     rows = [
         [name, *(_fmt(v, 3) for v in (f.velocity_crossover_hz, f.velocity_phase_margin_deg,
                                       f.velocity_gain_margin_db, f.velocity_bandwidth_hz,
-                                      f.position_bandwidth_hz)),
+                                      f.position_phase_margin_deg, f.position_bandwidth_hz)),
          "rigid" if a.rigid else _fmt(a.eigenfrequency)]
         for name, f, a in zip("xy", result.figures, result.axes, strict=True)
     ]  # fmt: skip
@@ -166,7 +166,7 @@ def _blocks(result: ContourResult) -> list[Block]:
         ),
         Block(
             "p",
-            f"Glitch reduction by the compensation: {result.reduction:.3g}; circular "
+            f"Glitch reduction by the compensation: {_fmt(result.reduction, 3)}; circular "
             f"hysteresis H: {_fmt(doc['circular_hysteresis_H_um'])} µm.",
         ),
         Block("img", ("polar", "Radial deviation, magnified")),
@@ -174,6 +174,23 @@ def _blocks(result: ContourResult) -> list[Block]:
         Block("img", ("table", "Friction map and compensation table of the x axis")),
         Block("h2", "Loops"),
         Block("table", loop_table(result)),
+        Block("p", f"Verdict of the loops and the drive: {result.verdict}."),
+        Block(
+            "table",
+            (
+                ["axis", "check", "value", "limit", "verdict"],
+                [
+                    [
+                        c.axis,
+                        c.name,
+                        f"{_fmt(c.value)} {c.unit}",
+                        f"{'at least' if c.floor else 'at most'} {_fmt(c.limit)} {c.unit}",
+                        c.status,
+                    ]
+                    for c in result.checks
+                ],
+            ),
+        ),
         Block("h2", "Assumptions"),
         Block("ul", list(result.notes)),
     ]

@@ -218,11 +218,16 @@ def _slope_table(rows: list[ScoreRow]) -> tuple[list[str], list[list[str]]]:
 
 
 def _trend_table(rows: list[ScoreRow]) -> tuple[list[str], list[list[str]]]:
-    trends = [r for r in rows if r.kind == "trend"]
+    trends = [r for r in rows if r.kind in ("trend", "reported")]  # reported: not judged
     return (
         ["trend", "band", *_models(trends)],
         [
-            [name, f"{_g(first.low, 3)} to {_g(first.high, 3)}"]
+            [
+                name,
+                "(reported)"
+                if first.kind == "reported"
+                else f"{_g(first.low, 3)} to {_g(first.high, 3)}",
+            ]
             + [
                 f"{_g(r.predicted, 3)}{'' if r.within else ' (outside)'}"
                 for r in trends

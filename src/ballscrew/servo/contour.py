@@ -54,7 +54,7 @@ from __future__ import annotations
 
 import math
 import time
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -66,6 +66,7 @@ from .cascade import Gains, LoopFigures, loop_figures, tune
 from .plant import AxisDynamics, axis_dynamics, frictionless
 from .simulate import Trace, simulate_axis
 from .tables import CompensationTable, fit_table
+from .verdict import MAX_SAMPLES, Check, check_size, drive_checks, loop_checks, verdict
 
 __all__ = [
     "CircleRun",
@@ -74,6 +75,7 @@ __all__ = [
     "ReversalRun",
     "circle_reference",
     "circular_test",
+    "contour_samples",
     "controller_compensation",
     "reversal_test",
     "run_contour",
@@ -101,6 +103,45 @@ TABLE_POINTS = 16
 """Points of the compensation table fed back into the simulation (LinuxCNC's ``lincurve``)."""
 
 
+def _circle_counts(
+    radius: float, feed: float, ts: float, acceleration: float, settle: float, lead_in: float
+) -> tuple[int, int, int, int]:
+    """Samples of :func:`circle_reference`'s parts: settle, ramp, lead-in, the revolution."""
+    if not (radius > 0.0 and math.isfinite(radius)):
+        raise BallScrewInputError("--radius", radius, "a positive radius [m]")
+    if not (feed > 0.0 and math.isfinite(feed)):
+        raise BallScrewInputError("--feed", feed, "a positive feed [m/s]")
+    if not (lead_in >= 0.0 and math.isfinite(lead_in)):
+        raise BallScrewInputError("lead_in", lead_in, "a time of 0 s or more")
+    t_r = max(1.5 * feed / acceleration, 20 * ts)
+    t_c = 2.0 * math.pi * radius / feed
+    return round(settle / ts), round(t_r / ts), round(lead_in / ts), round(t_c / ts)
+
+
+def contour_samples(
+    radius: float, feed: float, sampling_time: float, kv: float, *, circles: int = 4,
+    reversals: int = 2, reversal_acceleration: float | None = None,
+) -> int:  # fmt: skip
+    """Samples ``run_contour`` simulates: ``circles`` circles and ``reversals`` reversals.
+
+    Each circle runs both axes over its settling, ramps, lead-in of
+    :data:`LEAD_IN_TIME_CONSTANTS`/``kv`` and revolution (:func:`circle_reference`); each
+    reversal one axis twice (with and without friction, :func:`reversal_test`). Counted
+    before any array is made, so that a radius of a kilometre is refused, not run out of
+    memory.
+    """
+    ts = sampling_time
+    if not (ts > 0.0 and math.isfinite(ts)):
+        raise BallScrewInputError("--sampling-time", ts, "a positive time [s]")
+    n_s, n_r, n_l, n_e = _circle_counts(radius, feed, ts, 1.0, 0.05,
+                                        LEAD_IN_TIME_CONSTANTS / kv)  # fmt: skip
+    per_circle = 2 * (2 * n_s + 2 * n_r + n_l + n_e)
+    acc = feed**2 / radius if reversal_acceleration is None else reversal_acceleration
+    t_a = 0.0 if math.isinf(acc) else feed / acc
+    per_reversal = 2 * round((0.05 + 3 * t_a + 0.6) / ts)
+    return circles * per_circle + reversals * per_reversal
+
+
 def circle_reference(
     radius: float, feed: float, sampling_time: float, *, clockwise: bool = False,
     acceleration: float = 1.0, settle: float = 0.05, lead_in: float = 0.0,
@@ -116,18 +157,9 @@ def circle_reference(
     [m/s²]), holds for ``lead_in`` [s] and then one revolution (the evaluated
     one), and falls the same way.
     """
-    if not radius > 0.0:
-        raise BallScrewInputError("--radius", radius, "a positive radius [m]")
-    if not feed > 0.0:
-        raise BallScrewInputError("--feed", feed, "a positive feed [m/s]")
     ts = sampling_time
+    n_s, n_r, n_l, n_e = _circle_counts(radius, feed, ts, acceleration, settle, lead_in)
     t_r = max(1.5 * feed / acceleration, 20 * ts)
-    if not (lead_in >= 0.0 and math.isfinite(lead_in)):
-        raise BallScrewInputError("lead_in", lead_in, "a time of 0 s or more")
-    n_l = round(lead_in / ts)
-    t_c = 2.0 * math.pi * radius / feed
-    n_s, n_r = round(settle / ts), round(t_r / ts)
-    n_e = round(t_c / ts)  # the evaluated revolution
     n_c = n_l + n_e  # at the feed
     t = np.arange(n_s + 2 * n_r + n_c + n_s) * ts
     ramp = np.clip((t - n_s * ts) / t_r, 0.0, 1.0)
@@ -405,6 +437,14 @@ class ContourResult:
     model: str
     cpu_seconds: float
     notes: tuple[str, ...] = field(default_factory=tuple)
+    checks: tuple[Check, ...] = ()
+    """Whether the loops and the drive can run the circle (:mod:`ballscrew.servo.verdict`);
+    when one fails no circle or reversal is simulated."""
+
+    @property
+    def verdict(self) -> str:
+        """The worst check's: "OK", "CHECK" or "NOT OK" (then no circle was run)."""
+        return verdict(self.checks)
 
     def circle(self, clockwise: bool, compensated: bool) -> CircleRun | None:
         """The run of that direction, with or without compensation."""
@@ -423,16 +463,19 @@ class ContourResult:
         return float(np.max(np.abs(d1[np.isin(a1, common)] - d2[np.isin(a2, common)])))
 
     @property
-    def reduction(self) -> float:
+    def reduction(self) -> float | None:
         """Largest glitch without compensation over that with it [-] (first direction)."""
         plain = [c for c in self.circles if not c.compensated]
         comp = [c for c in self.circles if c.compensated]
+        if not plain or not comp:
+            return None
         return plain[0].largest_glitch / max(comp[0].largest_glitch, 1e-15)
 
     def as_dict(self) -> dict[str, Any]:
         """The JSON document of ``ballscrew contour --json``."""
         h = self.hysteresis
         return {
+            "verdict": self.verdict, "checks": [c.as_dict() for c in self.checks],
             "model": self.model, "radius_mm": self.radius * 1e3,
             "feed_m_per_min": self.feed * 60.0,
             "axes": {name: {"dynamics": a.as_dict(), "gains": g.as_dict(a),
@@ -469,6 +512,8 @@ def run_contour(
     reversal_acceleration: float | None = None,
     pre_rolling_length: float | None = None,
     drag_side: str = "motor",
+    max_samples: int = MAX_SAMPLES,
+    on_step: Callable[[str], None] | None = None,
 ) -> ContourResult:
     """The circular test of one case (both axes) or two (x, y), with the reversal test.
 
@@ -501,6 +546,16 @@ def run_contour(
         :data:`ballscrew.servo.plant.PRE_ROLLING_LENGTH`).
     drag_side : {"motor", "table"}
         Where the screws' drag acts (:func:`ballscrew.servo.plant.axis_dynamics`).
+    max_samples : int
+        The most samples simulated (:func:`contour_samples`, estimated before any
+        is); more is refused with the estimate.
+    on_step : callable, optional
+        Called with a description after each circle or reversal simulated (a
+        progress bar's advance).
+
+    The loops and the drive are checked first (:mod:`ballscrew.servo.verdict`):
+    when one is NOT OK the result carries the checks and no circle or reversal (a
+    loop that cannot run is not drawn); CHECK runs them, the verdict beside.
 
     Raises :class:`~ballscrew.io.extras.MissingExtraError` without the ``servo``
     extra (the loops' margins need the Python Control Systems Library).
@@ -518,6 +573,22 @@ def run_contour(
     ):
         raise BallScrewInputError("--pre-rolling", f"{pre_rolling_length * 1e6:g} um",
                                   "a positive length, e.g. '5 um'")  # fmt: skip
+    for flag, value, unit in (("--guide-friction", guide_coulomb, "N"),
+                              ("guide_viscous", guide_viscous, "N*s/m")):  # fmt: skip
+        if value is not None and not (math.isfinite(value) and value >= 0.0):
+            raise BallScrewInputError(flag, f"{value:g} {unit}", "a magnitude of 0 or more: "
+                                      "the friction opposes the motion either way, its sign "
+                                      "is the motion's")  # fmt: skip
+    if gains is None and not (math.isfinite(kv) and kv > 0.0):
+        raise BallScrewInputError("--kv", f"{kv:g} 1/s", "a positive position gain, e.g. "
+                                  "'40 1/s' (machine tools run 15 to 70 1/s)")  # fmt: skip
+    runs = len(directions) * (2 if compensate else 1)
+    kv_low = min(g.kv for g in gains) if gains is not None else kv
+    ts_run = gains[0].sampling_time if gains is not None else sampling_time
+    samples = contour_samples(radius, feed, ts_run, kv_low, circles=runs,
+                              reversals=2 if compensate else 1,
+                              reversal_acceleration=reversal_acceleration)  # fmt: skip
+    check_size(samples, max_samples)
     start = time.process_time()
     pair = (cases[0], cases[-1])
     top = max(1.25 * feed, 0.01)
@@ -536,15 +607,31 @@ def run_contour(
     figures = (loop_figures(axes[0], g2[0]), loop_figures(axes[1], g2[1]))
     tables = tuple(fit_table(a.speeds, a.friction, TABLE_POINTS, top) for a in axes)
     t2 = (tables[0], tables[1])
+    ref = circle_reference(radius, feed, g2[0].sampling_time,
+                           lead_in=LEAD_IN_TIME_CONSTANTS / min(g.kv for g in g2))  # fmt: skip
+    peaks = (float(np.max(np.abs(ref[4]))), float(np.max(np.abs(ref[5]))))
+    del ref
+    checks = [c for name, a, g, f in zip("xy", axes, g2, figures, strict=True)
+              for c in loop_checks(name, f, g)]  # fmt: skip
+    for name, a, case, peak in zip("xy", axes, pair, peaks, strict=True):
+        checks += drive_checks(name, a, case.motor, feed, peak)
     circles: list[CircleRun] = []
-    for d in directions:
-        circles.append(circular_test(axes, g2, radius, feed, clockwise=d == "CW"))
+    reversals: list[ReversalRun] = []
+    step = on_step or (lambda _: None)
+    if verdict(checks) != "NOT OK":
+        for d in directions:
+            circles.append(circular_test(axes, g2, radius, feed, clockwise=d == "CW"))
+            step(f"{d} circle")
+            if compensate:
+                circles.append(circular_test(axes, g2, radius, feed, clockwise=d == "CW",
+                                             tables=t2))  # fmt: skip
+                step(f"{d} circle, compensated")
+        acc = feed**2 / radius if reversal_acceleration is None else reversal_acceleration
+        reversals.append(reversal_test(axes[0], g2[0], feed, acc))
+        step("reversal")
         if compensate:
-            circles.append(circular_test(axes, g2, radius, feed, clockwise=d == "CW", tables=t2))
-    acc = feed**2 / radius if reversal_acceleration is None else reversal_acceleration
-    reversals = [reversal_test(axes[0], g2[0], feed, acc)]
-    if compensate:
-        reversals.append(reversal_test(axes[0], g2[0], feed, acc, t2[0]))
+            reversals.append(reversal_test(axes[0], g2[0], feed, acc, t2[0]))
+            step("reversal, compensated")
     notes = [f"{name}: {n}" for name, a in zip("xy", axes, strict=True) for n in a.notes]
     notes += [f"{name}: {n}" for name, g in zip("xy", g2, strict=True) for n in g.notes]
     for c in circles:
@@ -554,6 +641,12 @@ def run_contour(
                          f"its following error changed by {c.residual * 1e6:.3g} um over the "
                          "evaluated revolution (a slow or poorly damped loop); G, H and the "
                          "glitches carry that transient")  # fmt: skip
+    for name, case in zip("xy", pair, strict=True):
+        missing = [k for k in ("rated_speed", "peak_torque") if k not in case.motor]
+        if missing:
+            notes.append(f"{name}: no [motor] {' or '.join(missing)} in the case: the feed's "
+                         "motor speed, torque and acceleration are not checked against "
+                         "it")  # fmt: skip
     if len(cases) == 1:
         notes.append("one case for both axes")
     if rigid:
@@ -566,4 +659,5 @@ def run_contour(
                  "the evaluated revolution, so that G, H and the glitches are the settled "
                  "circle's")  # fmt: skip
     return ContourResult(axes, g2, figures, radius, feed, tuple(circles), tuple(reversals), t2,
-                         model, time.process_time() - start, tuple(notes))  # fmt: skip
+                         model, time.process_time() - start, tuple(notes),
+                         tuple(checks))  # fmt: skip

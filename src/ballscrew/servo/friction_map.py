@@ -61,7 +61,23 @@ from ..materials import STANDARD_GRAVITY
 _LOWER = np.array([0.0, 0.0, -np.inf, 0.0])
 """Bounds of (c0, c1, c2, b): a friction that never drives the motion."""
 
-__all__ = ["FrictionMap", "LoadForm", "direction", "fit_load_form", "friction_map", "load_form"]
+__all__ = [
+    "MAX_MAP_POINTS",
+    "FrictionMap",
+    "LoadForm",
+    "direction",
+    "fit_load_form",
+    "friction_map",
+    "load_form",
+]
+
+MAX_MAP_POINTS = 1_000_000
+"""The most grid points of a map (speeds both ways x loads x temperatures): about 1.6 GB
+and 15 s of the complete model; a drive's map needs thousands."""
+
+_BYTES, _SECONDS = 1.6e3, 15e-6
+"""Peak memory [bytes] and time [s] per map point, measured on 2e5 points of the complete
+model (320 MB, 5.6 s with the start-up)."""
 
 
 def direction(speed: npt.ArrayLike, load: npt.ArrayLike) -> FloatArray:
@@ -324,6 +340,15 @@ def friction_map(
     w = np.concatenate([-w[::-1], w])
     f = np.unique(np.asarray(loads, dtype=float).ravel())
     t = np.unique(np.asarray(temperatures, dtype=float).ravel())
+    points = w.size * f.size * t.size
+    if points > MAX_MAP_POINTS:
+        raise BallScrewInputError(
+            "map points", f"{points:,} ({w.size // 2} speeds both ways x {f.size} loads x "
+            f"{t.size} temperatures)",
+            f"at most {MAX_MAP_POINTS:,} (about {points * _BYTES / 1e9:.3g} GB and "
+            f"{points * _SECONDS / 60:.3g} min of the model by estimate): take fewer "
+            "speeds, loads or temperatures ('0.1..3000:60 rpm', '-4..4:9 kN')",
+        )  # fmt: skip
     ratio = float(case.axis.get("gear_ratio", 1.0) if gear_ratio is None else gear_ratio)
     if not ratio > 0.0 or not math.isfinite(ratio):
         raise BallScrewInputError("gear_ratio", ratio, "a positive number (motor turns per "

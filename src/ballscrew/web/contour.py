@@ -5,7 +5,9 @@ Request: ``case`` (the fields of a case file, with the axis' moving mass),
 by angle without and with the model's friction compensation, the circular
 deviation G, the quadrant glitches, the reduction and the loops' figures,
 computed by :func:`ballscrew.servo.run_contour` counter-clockwise. The
-revolution is bounded by the page's move limit, like a move.
+revolution is bounded by the page's move limit, like a move. A circle whose
+loops or drive fail a check (:mod:`ballscrew.servo.verdict`) is refused (422)
+with the failed checks, as the command line refuses it.
 """
 
 from __future__ import annotations
@@ -41,6 +43,9 @@ def contour(payload: Mapping[str, Any], limits: Limits = LIMITS) -> dict[str, An
         result = run_contour([case], radius=radius, feed=feed, directions=("CCW",))
     except BallScrewInputError as exc:
         raise ApiError.from_input(exc) from None
+    if result.verdict == "NOT OK":  # a loop or a drive that cannot run the circle: said, not drawn
+        failed = [c.text() for c in result.checks if c.status == "NOT OK"]
+        raise ApiError(422, "NOT OK, no circle drawn: " + "; ".join(failed), "feed")
     doc = result.as_dict()
     keys = ("compensated", "circular_deviation_G_um", "largest_glitch_um", "glitches",
             "radial_deviation")  # fmt: skip
@@ -49,6 +54,7 @@ def contour(payload: Mapping[str, Any], limits: Limits = LIMITS) -> dict[str, An
     out: dict[str, Any] = finite_or_null({
         "runs": runs, "reduction": doc["glitch_reduction"], "loops": doc["axes"]["x"]["loops"],
         "notes": doc["notes"], "cpu_seconds": doc["cpu_seconds"],
+        "verdict": doc["verdict"],
         "command": f"ballscrew contour --case case.toml {text} --direction CCW",
     })  # fmt: skip
     return out
