@@ -242,17 +242,24 @@ RANGES: dict[str, ValidityRange] = {
 """All validity ranges, by quantity."""
 
 
-def outside(r: ValidityRange | str, values: Iterable[float]) -> list[ValidityIssue]:
-    """The worst of ``values`` outside range ``r`` (a range or a quantity of RANGES), if any."""
+def outside(r: ValidityRange | str, values: Iterable[float] | FloatArray) -> list[ValidityIssue]:
+    """The worst of ``values`` outside range ``r`` (a range or a quantity of RANGES), if any.
+
+    ``values`` may be an array (many screws' corners at once, worked out by numpy) or
+    any iterable of numbers; the worst is the first of the largest relative excess.
+    """
     if isinstance(r, str):
         r = RANGES[r]
-    vals = [v for v in values if math.isfinite(v)]
+    vals = np.asarray(values if isinstance(values, np.ndarray) else list(values), dtype=float)
+    vals = vals.reshape(-1)
+    vals = vals[np.isfinite(vals)]
     # A relative tolerance on each bound (of either sign; an infinite bound stays infinite).
     low, high = r.low - 1e-12 * abs(r.low), r.high + 1e-12 * abs(r.high)
-    worst = [v for v in vals if v < low or v > high]
-    if not worst:
+    worst = vals[(vals < low) | (vals > high)]
+    if not worst.size:
         return []
-    value = max(worst, key=lambda v: max(r.low - v, v - r.high) / _scale(r.low, r.high))
+    excess = np.maximum(r.low - worst, worst - r.high) / _scale(r.low, r.high)
+    value = float(worst[int(np.argmax(excess))])
     return [ValidityIssue(r.quantity, value, r.low, r.high, r.applies_to, r.source, "", r.routine)]
 
 
@@ -476,23 +483,22 @@ def _film_issues_many(
     ratios = [screws.ry_screw / screws.rx_screw, screws.ry_nut / screws.rx_nut]
     ratios = [np.maximum(r, 1.0 / r).reshape(-1) for r in ratios]
     issues += outside(
-        "ellipticity k (Hamrock-Dowson)",
-        np.concatenate([ellipticity_exact(r) for r in ratios]).tolist(),
+        "ellipticity k (Hamrock-Dowson)", np.concatenate([ellipticity_exact(r) for r in ratios])
     )
     if houpert:
-        issues += outside("radius ratio Ry/Rx (Houpert fits)", np.concatenate(ratios).tolist())
+        issues += outside("radius ratio Ry/Rx (Houpert fits)", np.concatenate(ratios))
     column = (count, 1)
     eta = np.stack([lubricant.dynamic_viscosity(t_lo), lubricant.dynamic_viscosity(t_hi)], axis=1)
     ep = screws.reduced_modulus.reshape(column)
     radii = (screws.rx_screw.reshape(column), screws.rx_nut.reshape(column))
-    u_values: list[float] = []
+    u_values = np.empty(0)
     moving = w_max > 0.0
     if moving.any():
         flat = screws.with_ndim(2)
         u = kinematics(flat, np.stack([w_max, w_min], axis=1)).entrainment_speed
-        u_values = [
-            float(v) for rx in radii for v in dimensionless_speed(eta, u, ep, rx)[moving].ravel()
-        ]
+        u_values = np.concatenate(
+            [dimensionless_speed(eta, u, ep, rx)[moving].ravel() for rx in radii]
+        )
     loads = ball_loads(screws.with_ndim(2), np.stack([0.0 * fa_max, fa_max], 1))
     q = np.concatenate([loads.normal_load_1, loads.normal_load_2], axis=1)
     loaded = q > 0.0
@@ -500,9 +506,9 @@ def _film_issues_many(
     extremes = np.stack(
         [np.where(loaded, q, np.inf).min(axis=1), np.where(loaded, q, 0.0).max(axis=1)], axis=1
     )[some]
-    w_values = [
-        float(v) for rx in radii for v in dimensionless_load(extremes, ep[some], rx[some]).ravel()
-    ]
+    w_values = np.concatenate(
+        [dimensionless_load(extremes, ep[some], rx[some]).ravel() for rx in radii]
+    )
     issues += outside("dimensionless speed U", u_values)
     issues += outside("dimensionless load W", w_values)
     return issues

@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from ballscrew.io.files import atomic_write, deferred_signals, sweep_temporaries
+from ballscrew.io.files import atomic_folder, atomic_write, deferred_signals, sweep_temporaries
 
 
 @pytest.fixture
@@ -126,3 +126,18 @@ def test_a_full_disk_names_the_option_and_the_path(
     assert code == 2 and "internal error" not in err
     assert f"error: --csv = '{out}' is not allowed:" in err and "No space left on device" in err
     assert list(tmp_path.iterdir()) == []  # no temporary left behind
+
+
+def test_a_report_folder_given_as_a_link_is_followed_and_the_link_kept(tmp_path: Path) -> None:
+    # Issue 52: an --out that was a symbolic link to a folder was replaced by the new folder,
+    # the link hidden as '.NAME.<pid>-<hex>.old' and never removed, the folder left as it was.
+    real = tmp_path / "real"
+    real.mkdir()
+    (real / "old.txt").write_text("earlier run")
+    link = tmp_path / "report"
+    link.symlink_to(real, target_is_directory=True)
+    with atomic_folder(link) as folder:
+        (folder / "new.txt").write_text("this run")
+    assert link.is_symlink() and os.path.realpath(link) == str(real)
+    assert sorted(p.name for p in real.iterdir()) == ["new.txt"]  # replaced whole
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["real", "report"]  # nothing left

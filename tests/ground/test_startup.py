@@ -33,7 +33,8 @@ def test_one_point_torque_imports_neither_dask_nor_scipy_special_nor_numba() -> 
         [sys.executable, "-c", _PROBE], capture_output=True, text=True, check=True, timeout=120
     ).stdout
     loaded = set(json.loads(out.splitlines()[-1]))
-    assert "pint" in loaded  # the speed was read through pint
+    # The speed's rpm converts as one multiplication (io.units.PLAIN_FACTORS): no pint.
+    assert "pint" not in loaded
     # numba: the helix's compiled kernel is for many points; one point takes numpy's path.
     for costly in ("dask", "scipy.special", "numba"):
         assert costly not in loaded, costly

@@ -299,8 +299,10 @@ def test_a_number_in_any_format_is_read_right_or_refused(
     try:
         got = to_si("x", text, target)
     except BallScrewInputError as exc:
-        # Refused only where the text could mean two numbers: a mark then three digits.
-        assert "thousands or be a decimal" in str(exc), text
+        # Refused only where the text could mean two numbers: a mark then three digits, or
+        # three digits, a space and a group that may be a second value.
+        said = str(exc)
+        assert "thousands or be a decimal" in said or "or separate two values" in said, text
         return
     # Each format is exact decimal text; the conversion adds one rounding: 1e-12.
     assert got == pytest.approx(meant, rel=1e-12, abs=1e-300), text
@@ -369,3 +371,23 @@ def test_temperatures_a_machine_can_have_and_rises_pass() -> None:
     assert to_si("t", "400 degC", "degC") == 400.0
     assert to_si("t", "313.15 K", "degC") == pytest.approx(40.0, abs=1e-12)
     assert to_si("rise", "300 K", "delta_degC") == 300.0
+
+
+@pytest.mark.parametrize(
+    ("text", "read"),
+    [("1 200 N", 1200.0), ("12 500 N", 12500.0), ("100 000 N", 100000.0),
+     ("100'200 N", 100200.0), ("250 050 N", 250050.0)],
+)  # fmt: skip
+def test_space_grouped_thousands_are_read(text: str, read: float) -> None:
+    assert to_si("axial_load", text, "N") == read
+
+
+@pytest.mark.parametrize("text", ["100 200 N", "100 200 300 N", "999 100 N"])
+def test_three_digits_then_a_space_that_may_be_a_lost_comma_is_refused(text: str) -> None:
+    # Issue 52: '100 200 N' was read as 100 200 N with a warning only; it reads as well as
+    # '100, 200 N' with the comma forgotten. Both ways of writing it are shown.
+    with pytest.raises(BallScrewInputError) as info:
+        to_si("axial_load", text, "N")
+    said = str(info.value)
+    assert "group thousands or separate two values" in said
+    assert f"'{text[:3]}, " in said  # the reading as several values

@@ -6,11 +6,13 @@ import contextlib
 import os
 from collections.abc import Callable, Iterator, Mapping
 from pathlib import Path
-from typing import Any, TypeVar
+from typing import TYPE_CHECKING, Any, TypeVar
 
 import click
 from rich.console import Console
-from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
+
+if TYPE_CHECKING:
+    from rich.progress import Progress
 
 __all__ = [
     "OUTPUT_OPTIONS", "case_option", "echo_readings", "file_option", "folder_only", "motion",
@@ -79,6 +81,8 @@ def write_result(json_file: str, document: Mapping[str, Any], option: str = "--j
 
 def progress(console: Console) -> Progress:
     """A transient progress bar on ``console`` (spinner, description, bar, elapsed time)."""
+    from rich.progress import BarColumn, Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
+
     return Progress(
         SpinnerColumn(),
         TextColumn("{task.description}"),

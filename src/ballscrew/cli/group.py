@@ -7,6 +7,7 @@ an internal error.
 from __future__ import annotations
 
 import functools
+import importlib
 import os
 import signal
 import sys
@@ -19,32 +20,54 @@ from .._version import __version__
 from ..errors import BallScrewInputError
 from ..io.extras import MissingExtraError
 from ..io.files import record_signal, signal_received
-from .acceptance import acceptance_command
-from .case import case_command
-from .check import check_command
 from .common import refuse_shared_outputs
-from .contour import contour_command
-from .demo import demo
-from .energy import energy_command
-from .export_friction import export_friction_command
-from .fit import fit_command
-from .identify import identify_command
-from .lubricants import lubricants_command
-from .models import models_command
-from .monitor import monitor_command
-from .program import program_command
-from .screws import screws_command
-from .select import select_command
-from .serve import serve_command
-from .study import study
-from .sweep import sweep_command
-from .torque import torque
-from .validate import validate
 
-__all__ = ["main"]
+__all__ = ["COMMANDS", "main"]
+
+COMMANDS: dict[str, tuple[str, str]] = {
+    "demo": ("demo", "demo"),
+    "study": ("study", "study"),
+    "validate": ("validate", "validate"),
+    "models": ("models", "models_command"),
+    "lubricants": ("lubricants", "lubricants_command"),
+    "torque": ("torque", "torque"),
+    "case": ("case", "case_command"),
+    "screws": ("screws", "screws_command"),
+    "energy": ("energy", "energy_command"),
+    "check": ("check", "check_command"),
+    "fit": ("fit", "fit_command"),
+    "export-friction": ("export_friction", "export_friction_command"),
+    "monitor": ("monitor", "monitor_command"),
+    "acceptance": ("acceptance", "acceptance_command"),
+    "serve": ("serve", "serve_command"),
+    "sweep": ("sweep", "sweep_command"),
+    "program": ("program", "program_command"),
+    "contour": ("contour", "contour_command"),
+    "select": ("select", "select_command"),
+    "identify": ("identify", "identify_command"),
+}
+"""Each command's name, the module of :mod:`ballscrew.cli` that defines it and its name there.
+
+A command's module is imported when the command is looked up (click's lazy subcommands): a
+one-point ``ballscrew torque`` loads what torque needs, not the report, the sweep or the
+web server; ``ballscrew --help`` loads them all to list each with its one-line help."""
 
 
-@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+class _LazyGroup(click.Group):
+    """The group of :data:`COMMANDS`, each imported, guarded and named on first use."""
+
+    def list_commands(self, ctx: click.Context) -> list[str]:
+        return sorted({*COMMANDS, *self.commands})
+
+    def get_command(self, ctx: click.Context, cmd_name: str) -> click.Command | None:
+        if cmd_name not in self.commands and cmd_name in COMMANDS:
+            module, name = COMMANDS[cmd_name]
+            command = getattr(importlib.import_module(f"{__package__}.{module}"), name)
+            self.add_command(_name_values(cmd_name, _one_owner(command)), cmd_name)
+        return self.commands.get(cmd_name)
+
+
+@click.group(cls=_LazyGroup, context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, prog_name="ballscrew")
 @click.option("--verbose", is_flag=True, default=False,
               help="Validity notes in full: each range left, its formulas and why.")  # fmt: skip
@@ -85,14 +108,6 @@ def _one_owner(command: click.Command) -> click.Command:
 
     command.callback = guarded
     return command
-
-
-for command in (demo, study, validate, models_command, lubricants_command, torque,
-                case_command, screws_command, energy_command, check_command, fit_command,
-                export_friction_command, monitor_command, acceptance_command,
-                serve_command, sweep_command, program_command, contour_command,
-                select_command, identify_command):  # fmt: skip
-    cli.add_command(_one_owner(command))
 
 
 VALUE_NAMES: dict[str, str] = {
@@ -163,22 +178,19 @@ STORE_OPTIONS = {("sweep", "--out"): "STORE"}
 """Options whose value means something else in one command."""
 
 
-def _name_values(group: click.Group) -> None:
-    """Give every option and argument without a metavar the name of what it takes."""
-    for name, command in group.commands.items():
-        for param in command.params:
-            if param.metavar is not None or getattr(param, "is_flag", False):
-                continue
-            if isinstance(param, click.Argument):
-                param.metavar = f"{param.name.split('_')[0].upper()}_FILE" if param.name else None
-                continue
-            if isinstance(param.type, click.Choice):
-                continue  # click lists the choices
-            flag = param.opts[0]
-            param.metavar = STORE_OPTIONS.get((name, flag)) or VALUE_NAMES.get(flag)
-
-
-_name_values(cli)
+def _name_values(name: str, command: click.Command) -> click.Command:
+    """``command`` with every option and argument without a metavar naming what it takes."""
+    for param in command.params:
+        if param.metavar is not None or getattr(param, "is_flag", False):
+            continue
+        if isinstance(param, click.Argument):
+            param.metavar = f"{param.name.split('_')[0].upper()}_FILE" if param.name else None
+            continue
+        if isinstance(param.type, click.Choice):
+            continue  # click lists the choices
+        flag = param.opts[0]
+        param.metavar = STORE_OPTIONS.get((name, flag)) or VALUE_NAMES.get(flag)
+    return command
 
 
 def _terminate(signum: int, frame: object) -> None:

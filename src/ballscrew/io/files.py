@@ -193,8 +193,12 @@ def atomic_folder(folder: Path) -> Iterator[Path]:
     When the block raises (Ctrl-C included) the temporary folder is removed and
     ``folder`` is left as it was. A run killed outright leaves its temporary folder
     behind: the next run into the same folder removes it (:func:`sweep_stale_folders`).
+    A symbolic link to a folder is followed: the folder it points to is replaced, and the
+    link stays (renaming over it would hide the link and leave the folder as it was).
     """
     folder = Path(folder)
+    if folder.is_symlink():
+        folder = Path(os.path.realpath(folder))
     folder.parent.mkdir(parents=True, exist_ok=True)
     sweep_stale_folders(folder)
     tmp = folder.parent / f".{folder.name}.{os.getpid()}-{secrets.token_hex(6)}.new"

@@ -21,7 +21,10 @@ refused at once. Pint then converts the unit.
   between two digits is refused there, with both readings.
 * Digits may be grouped by threes with a space (a no-break or thin space too)
   or an apostrophe: ``1 200 N``, ``1'200 N``. Any other grouping is refused: a
-  space is never read as a multiplication.
+  space is never read as a multiplication. After three digits a space followed by
+  a group that does not start with 0 (``100 200 N``) may also be two values whose
+  comma was forgotten: it is refused, with both ways to write it (``100 000 N``
+  and ``100'200 N`` are read as one number).
 * With both a point and a comma, the last one is the decimal separator and the
   other groups thousands: ``1.200,5`` and ``1,200.5`` are both 1200.5.
 * An exponent follows the digits: ``2.5e3``. The minus sign may be typed as ``−``.
@@ -101,8 +104,13 @@ def _import_pint_without_dask() -> ModuleType:
 
 if TYPE_CHECKING:
     import pint
-else:
-    pint = _import_pint_without_dask()
+
+
+@functools.cache
+def _pint() -> ModuleType:
+    """Pint, imported on first use (0.1 s of CPU); :data:`PLAIN_FACTORS` are read without it."""
+    return _import_pint_without_dask()
+
 
 __all__ = [
     "MAX_TEXT",
@@ -135,11 +143,12 @@ def registry() -> pint.UnitRegistry:  # type: ignore[type-arg]
     0.5 s to 0.04 s; where no cache folder can be written, the registry is
     built without one.
     """
+    unit_registry = _pint().UnitRegistry
     ureg: pint.UnitRegistry  # type: ignore[type-arg]
     try:
-        ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True, cache_folder=":auto:")
+        ureg = unit_registry(autoconvert_offset_to_baseunit=True, cache_folder=":auto:")
     except OSError:  # read-only home, no cache directory: parse the definitions
-        ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+        ureg = unit_registry(autoconvert_offset_to_baseunit=True)
     ureg.define("@alias turn = rev = r")
     return ureg
 
@@ -194,6 +203,16 @@ def _digits_value(digits: str) -> str:
                 "a space inside a number is read only as a thousands separator, between "
                 "groups of three digits (e.g. '1 200'); write the number without spaces, "
                 "or separate several values with commas ('0, 500')"
+            )
+        later = [*head[1:], tail.group(1)]
+        if len(head[0]) == 3 and re.search(r"\d\s\d", digits) and all(g[0] != "0" for g in later):
+            # '1 200' and '12 500' group thousands, but '100 200' reads as well as two values
+            # whose comma was forgotten ('100, 200'): neither reading is taken. A group that
+            # starts with 0 is no value of its own ('100 000', '250 050': thousands).
+            raise _NotOneNumberError(
+                "a space after three digits may group thousands or separate two values: "
+                f"write '{''.join(head) + tail.group(1)}' for one number, or "
+                f"'{head[0]}, {', '.join(later)}' for several"
             )
         fraction = "." + tail.group(3) if tail.group(2) else ""
         return "".join(head) + tail.group(1) + fraction
@@ -519,7 +538,7 @@ def _pint_unit(
         raise BallScrewInputError(field, text, _TWO_WAY_UNITS[unit.strip()])
     try:
         return registry().parse_units(unit) if unit else registry().dimensionless
-    except (pint.errors.PintError, ValueError, TypeError, AttributeError, AssertionError,
+    except (_pint().errors.PintError, ValueError, TypeError, AttributeError, AssertionError,
             ArithmeticError, LookupError, SyntaxError):  # fmt: skip
         example = (f"write e.g. '{_shown(number)} {_example(target)}'" if target
                    else "e.g. 'mm', 'kN', 'rpm', 'N*m', 'degC'")  # fmt: skip
@@ -859,6 +878,12 @@ def _convert(
     notes: list[Reading] | None,
 ) -> Any:
     """``number`` in ``unit_text`` converted to ``unit`` (a scalar or an array)."""
+    if type(number) is float:  # what pint gives, to the last bit (tests/io/test_units_plain.py)
+        plain = PLAIN_FACTORS.get((unit_text, unit))
+        if plain is not None:
+            return number * plain
+        if (unit_text, unit) == ("degC", "degC"):
+            return (number + 273.15) - 273.15  # pint's way: to kelvin and back
     ureg = registry()
     if unit:
         unit_text = _shop_unit(field, text, number, unit_text, unit, notes)
@@ -876,10 +901,36 @@ def _convert(
         return (ureg.Quantity(number, have) * factor).to(unit).magnitude
     except BallScrewInputError:
         raise
-    except pint.errors.DimensionalityError:
+    except _pint().errors.DimensionalityError:
         raise _wrong_dimension(field, text, number, have, unit or "") from None
-    except (pint.errors.PintError, ValueError, TypeError, ArithmeticError):
+    except (_pint().errors.PintError, ValueError, TypeError, ArithmeticError):
         raise BallScrewInputError(field, text, _UNIT_HELP) from None
+
+
+PLAIN_FACTORS: dict[tuple[str, str | None], float] = {
+    # the bundled case's and the commonest typed units, each to its field's SI unit
+    ("mm", "m"): 0.001,
+    ("um", "m"): 1e-06,
+    ("m", "m"): 1.0,
+    ("mm", "m/turn"): 0.001,
+    ("rpm", "rad/s"): 0.10471975511965977,
+    ("rad/s", "rad/s"): 1.0,
+    ("N", "N"): 1.0,
+    ("kN", "N"): 1000.0,
+    ("N*m", "N*m"): 1.0,
+    ("deg", "rad"): 0.017453292519943295,
+    ("K", "delta_degC"): 1.0,
+    ("kg", "kg"): 1.0,
+    ("kg*m**2", "kg*m**2"): 1.0,
+    ("mm*rpm", "mm*rpm"): 1.0,
+    ("%", ""): 0.01,
+}
+"""Units whose conversion to a field's unit is one product, ``number * factor``: read without
+pint (whose import and registry cost 0.1 s of CPU at every start of the command line). Each
+factor is the one pint computes, and the result equals pint's to the last bit for any number
+(``tests/io/test_units_plain.py`` holds every entry to that); a text that needs a note or a
+refusal never reaches this table (none of its units is ambiguous). A temperature in degC for a
+field in degC is read without pint too, as pint reads it: to kelvin and back."""
 
 
 def _as_difference(unit: Any) -> Any:

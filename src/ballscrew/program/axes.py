@@ -399,6 +399,10 @@ def _distances(motion: Motion, i: int) -> tuple[float, float]:
     return float(np.sum(step)), float(np.sum(step[motion.feeding[:-1]]))
 
 
+MAX_STEPS = 1_000_000
+"""The most steps of :func:`heat_balance` (8 MB an array)."""
+
+
 def heat_balance(
     time: FloatArray, power: FloatArray, capacity: float, conductance: float,
     ambient: float, start: float,
@@ -407,7 +411,9 @@ def heat_balance(
 
     :math:`C\dot T = P - G(T - T_a)` from :math:`T(0)` = ``start``; the power is
     averaged over steps of at most a hundredth of :math:`\tau = C/G` (energy
-    kept exactly: the steps take the trapezoidal energy of the samples), and
+    kept exactly: the steps take the trapezoidal energy of the samples; at most
+    :data:`MAX_STEPS` of them, so that a dwell of days stays bounded: each step is
+    still exact for a power constant within it), and
     each step is integrated exactly, :math:`T_{k+1} - T_\infty = (T_k -
     T_\infty)e^{-h/\tau}` with :math:`T_\infty = T_a + \bar P/G`, by a linear
     filter (no Python loop over the steps).
@@ -425,7 +431,7 @@ def heat_balance(
 
     tau = capacity / conductance
     duration = float(time[-1] - time[0])
-    steps = max(1, math.ceil(duration / (tau / 100.0)), min(time.size, 100_000))
+    steps = min(max(1, math.ceil(duration / (tau / 100.0)), min(time.size, 100_000)), MAX_STEPS)
     grid = np.linspace(time[0], time[-1], steps + 1)
     energy = np.concatenate([[0.0], np.cumsum(0.5 * (power[1:] + power[:-1]) * np.diff(time))])
     mean = np.diff(np.interp(grid, time, energy)) / np.diff(grid)

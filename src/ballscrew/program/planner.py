@@ -65,6 +65,11 @@ TURN_ROUNDING = 1e-9
 MARGIN = 1.0 - 1e-7
 """Entry and exit speeds are kept this far inside what the look-ahead allows."""
 
+MAX_SAMPLES = 3_000_000
+"""The most samples a program's motion may take (about a kilobyte each through the axes):
+a 100 000-block program takes about 1.2 million at 5 ms. Past it the program is refused
+before a sample is made, with the estimate."""
+
 RETRY_LOWER = (0.0, 1e-7, 1e-6, 1e-5, 1e-4)
 """Shares by which a block's exit speed is lowered, one after the other, while ruckig cannot
 plan the block (a speed at a limit to the last digit): at most 1.1e-4 of it in all."""
@@ -436,6 +441,14 @@ def _sample(
         count = np.where(arc[:, None] & (dur > 0.0), np.maximum(count, need), count)
     flat = count.ravel()
     total = int(flat.sum())
+    if total > MAX_SAMPLES:
+        moving = float(dur[program.kind != DWELL].sum())
+        raise BallScrewInputError(
+            "program", f"about {total:.3g} samples ({moving:.4g} s of motion, a sample at "
+            f"most every {sample_time * 1e3:g} ms)",
+            f"at most {MAX_SAMPLES:.3g} samples (about a kilobyte each): a longer "
+            "machine.sample_time, or the program in parts",
+        )  # fmt: skip
     phase_of = np.repeat(np.arange(flat.size), flat)
     first = np.cumsum(flat) - flat
     k_in = np.arange(total) - np.repeat(first, flat)

@@ -404,6 +404,14 @@ def _screws(
     return out
 
 
+MAX_CANDIDATES = 10_000
+"""The most candidates one selection evaluates (each runs the whole axis check and a cycle
+energy); more are refused before any is built, with the estimate."""
+RATE = 35.0
+"""Candidates evaluated per CPU-second on one core (measured on the 0.3.0 benchmark,
+benchmarks/bench_select.py): the estimate of a refused selection's time."""
+
+
 def candidates(
     text: str,
     *,
@@ -459,6 +467,17 @@ def candidates(
                 "a price for every screw the filters leave; missing: " + ", ".join(missing[:5])
                 + (", ..." if len(missing) > 5 else ""),
             )  # fmt: skip
+    paired_count = max(1, len(motors))
+    count = sum(len(oils) * paired_count for row, estimated in found for p in preloads
+                for nut in _kinds(row, p, estimated) if not nuts or nut in nuts)  # fmt: skip
+    if count > MAX_CANDIDATES:
+        raise BallScrewInputError(
+            "candidates", f"{count} ({len(found)} screws x preload classes and nut kinds x "
+            f"{len(oils)} oils x {paired_count} motors)",
+            f"at most {MAX_CANDIDATES} a selection (about {count / RATE / 60:.0f} min of CPU at "
+            f"{RATE:g} candidates a second): narrow --diameter, --lead, --maker, --preload, "
+            "--nut, the oils or the motor table",
+        )  # fmt: skip
     out = []
     for row, estimated in found:
         for p in preloads:

@@ -30,6 +30,7 @@ import anyio
 
 from ..errors import BallScrewInputError, BallScrewSpeedWarning, BallScrewValidityWarning
 from ..helix import load_kernel
+from ..io.units import registry
 from . import contour, program, select, service
 from .inputs import ApiError, Limits
 
@@ -92,6 +93,7 @@ def _serve(conn: Connection, memory_bytes: int | None = None) -> None:
     with contextlib.suppress(Exception):
         service.evaluate(service.WARM_UP, service.LIMITS)
         load_kernel()  # the helix's compiled loop, for requests of many points
+        registry()  # pint, for a unit the common ones' table does not hold (0.1 s)
     if memory_bytes:
         _cap_memory(memory_bytes)
     conn.send(("ready",))
