@@ -87,11 +87,12 @@ def test_radius_mismatch_within_the_tolerance_is_read() -> None:
         read_program("G1 X0 Y0 F100\nG2 X10.01 Y0 I5 J0\n", arc_tolerance=2e-6)
 
 
-def test_a_program_without_time_is_refused() -> None:
+def test_a_program_without_time_stands_at_its_start() -> None:
     from ballscrew.program.planner import Limits, plan
 
     lim = Limits(np.ones(3), np.ones(3), np.ones(3), 1.0, 1e-5)
     for text in ("M30\n", "G0 X0\n", "G4 P0\n"):
-        with pytest.raises(BallScrewInputError) as info:
-            plan(read_program(text), lim)
-        assert info.value.field == "program"
+        # As a controller runs it: nothing moves, no time passes (tests/program/test_standing.py).
+        motion = plan(read_program(text), lim)
+        assert motion.time.tolist() == [0.0] and motion.duration == 0.0
+        assert not np.any(motion.position) and not np.any(motion.velocity)

@@ -65,7 +65,7 @@ from ..design.stiffness import (
 from ..errors import BallScrewInputError, FloatArray
 from ..io.machine import LINEAR_AXES, Machine
 from ..materials import STANDARD_GRAVITY
-from .gcode import ARC, Program, read_program
+from .gcode import ARC, DWELL, Program, read_program
 from .planner import Limits, Motion, plan
 
 __all__ = ["AxisResult", "ProgramResult", "Reversal", "heat_balance", "run_program"]
@@ -727,15 +727,75 @@ def run_program(
         if progress is not None:
             progress("axes", n, len(machine.axes))
         try:
-            axes[letter], series[letter] = _one_axis(letter, machine, motion, program)
+            one = _one_axis if motion.time.size > 1 else _axis_at_rest
+            axes[letter], series[letter] = one(letter, machine, motion, program)
         except BallScrewInputError as exc:
             if exc.field != "model":
                 raise
             raise BallScrewInputError("machine.model", exc.value, exc.allowed) from None
-    notes = tuple(program.notes) + tuple(machine.notes)
+    notes = tuple(program.notes) + _standing_notes(program, motion) + tuple(machine.notes)
     return ProgramResult(machine.title, program, motion, axes,
                          _dataset(machine, motion, series), notes,
                          _inputs(machine, program))  # fmt: skip
+
+
+def _standing_notes(program: Program, motion: Motion) -> tuple[str, ...]:
+    """A note when the program moves no feed axis (empty, or only dwells and tool changes)."""
+    if np.any(program.kind != DWELL):
+        return ()
+    if motion.duration == 0.0:
+        return ("the program moves no feed axis and takes no time (no move, no dwell: a "
+                "subroutine file or M, S and T words alone): every energy is 0",)  # fmt: skip
+    return (f"the program moves no feed axis: the axes stand for its {motion.duration:.6g} s of "
+            "dwells and tool changes, no motion energy; a vertical axis holds its weight "
+            "(its motor's copper loss counted where the machine file gives the motor's "
+            "constants)",)  # fmt: skip
+
+
+def _axis_at_rest(
+    letter: str, machine: Machine, motion: Motion, program: Program,
+) -> tuple[AxisResult, dict[str, FloatArray]]:  # fmt: skip
+    """One axis through a program that takes no time (:func:`.planner.at_rest`): at rest.
+
+    Every energy is 0; the torques are those holding the axis at its one sample
+    (the weight of a vertical axis), from the same cycle computation as a
+    dwell's, over a profile standing for a second.
+    """
+    ax = machine.axes[letter]
+    case = ax.case
+    i = LINEAR_AXES.index(letter)
+    thermal = dict(case.thermal)
+    thermal["ambient"] = machine.ambient
+    setup = axis_setup(case.screw, case.axis, thermal, ax.travel[1] - ax.travel[0])
+    x, zero = float(motion.position[0, i]), np.zeros(2)
+    standing = Profile(np.array([0.0, 1.0]), np.full(2, x), zero, zero, zero)
+    t0 = ax.start_temperature
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        cycle = axis_cycle(standing, case.screw, case.lubricant, setup.axis, temperature=t0,
+                           model=machine.model, **case.parameters_for(machine.model))  # fmt: skip
+    t_m, speed = cycle.motor_torque[:1], cycle.motor_speed[:1]
+    drive = drive_energy(motion.time, t_m, speed, MotorConstants.from_case(case.motor),
+                         DriveSpec.from_mapping(machine.drive), name=f"axes.{letter}")  # fmt: skip
+    holding = float(abs(t_m[0]))
+    none = np.zeros(program.size)
+    result = AxisResult(
+        letter=letter, title=case.title, friction_energy=0.0, bearing_energy=0.0,
+        supplied_energy=0.0, regenerated_energy=0.0, process_work=0.0, potential_energy=0.0,
+        peak_torque=holding, rms_torque=holding, peak_speed=0.0,
+        rated_torque=case.motor.get("rated_torque"), peak_rating=case.motor.get("peak_torque"),
+        rated_speed=case.motor.get("rated_speed"), start_temperature=t0, final_temperature=t0,
+        max_temperature=t0, thermal_lead_error=0.0, travel=0.0, reversals=(),
+        energy_per_block=none, supplied_per_block=none.copy(),
+        notes=(*setup.notes, "not checked (the program takes no time: no duty to check)"),
+        drive=drive,
+    )  # fmt: skip
+    series = {
+        "friction_torque": cycle.friction_torque[:1], "motor_torque": t_m,
+        "friction_power": np.zeros(1), "temperature": np.full(1, t0),
+        "axial_force": cycle.axial_force[:1], "motor_speed": speed,
+    }  # fmt: skip
+    return result, series
 
 
 def _dataset(machine: Machine, motion: Motion, series: dict[str, dict[str, FloatArray]]) -> Any:

@@ -56,10 +56,12 @@ import numpy as np
 from ..errors import BallScrewInputError, FloatArray
 from .gcode import ARC, DWELL, RAPID, Program
 
-__all__ = ["Limits", "Motion", "plan", "speed_change_distance"]
+__all__ = ["Limits", "Motion", "at_rest", "plan", "speed_change_distance"]
 
 ARC_STEP = math.radians(5.0)
 """Largest angle between two samples on an arc [rad]."""
+TURN_ROUNDING = 1e-9
+"""An axis turn this close to an arc's end [quarter turns] is the end itself."""
 MARGIN = 1.0 - 1e-7
 """Entry and exit speeds are kept this far inside what the look-ahead allows."""
 
@@ -319,7 +321,7 @@ def plan(program: Program, limits: Limits, progress: object = None) -> Motion:
 
     n = program.size
     if n == 0:
-        raise BallScrewInputError("program", "(no motion)", "at least one move or dwell")
+        return at_rest(program)
     g = _geometry(program)
     length = g["length"]
     v, a, j = _block_limits(program, g, limits)
@@ -385,8 +387,27 @@ def plan(program: Program, limits: Limits, progress: object = None) -> Motion:
     if progress is not None:
         progress(n, n)  # type: ignore[operator]
     if not float(phases[:, :, 0].sum()) > 0.0:
-        raise BallScrewInputError("program", "(no time)", "a move or a dwell that takes time")
+        return at_rest(program)
     return _sample(program, g, phases, limits.sample_time, np.array(en), np.array(ex), v)
+
+
+def at_rest(program: Program) -> Motion:
+    """The motion of a program that takes no time: one sample, at rest, at time 0.
+
+    A program without blocks (a subroutine file run alone, only M, S or T
+    words), or whose blocks all take no time (dwells of 0 s), leaves the axes
+    where they are, as a controller runs it: one sample at the program's start
+    (the machine's origin without blocks), its block 0.
+    """
+    n = program.size
+    where = program.start[:1] if n else np.zeros((1, 3))
+    still = np.zeros((1, 3))
+    return Motion(
+        time=np.zeros(1), position=where.astype(float), velocity=still, acceleration=still,
+        jerk=still, block=np.zeros(1, dtype=int), feeding=np.zeros(1, dtype=bool),
+        path_speed=np.zeros(1), entry_speed=np.zeros(n), exit_speed=np.zeros(n),
+        block_limit=np.zeros(n), block_time=np.zeros(n), nominal_time=0.0,
+    )  # fmt: skip
 
 
 def _sample(
@@ -493,8 +514,11 @@ def _arc_turns(program: Program, g: dict[str, FloatArray], phases: FloatArray
         theta0[m] = np.arctan2(s0[m, ib] - c[m, ib], s0[m, ia] - c[m, ia])
     lo = np.minimum(theta0, theta0 + sw) / quarter
     hi = np.maximum(theta0, theta0 + sw) / quarter
-    k_lo = np.floor(lo).astype(int) + 1
-    k_hi = np.ceil(hi).astype(int) - 1
+    # A turn at an end of the arc, to rounding (an end at 90 deg, a sweep a hair longer), is
+    # that end's own sample: the arc's formula there may miss the end point by the arc's
+    # radius mismatch, two positions at one time.
+    k_lo = np.floor(lo + TURN_ROUNDING).astype(int) + 1
+    k_hi = np.ceil(hi - TURN_ROUNDING).astype(int) - 1
     many = np.maximum(k_hi - k_lo + 1, 0)
     if not many.any():
         return np.zeros(0, int), np.zeros(0)

@@ -19,6 +19,18 @@ How the commands are taken:
   the plane; a rotation count above one adds full turns), ``DWELL`` a dwell;
   a move that does not change the position is left out, as the built-in
   reader does;
+- the rotary axes A, B, C of a straight move (printed in degrees, plus the
+  angles of the work, ``G92`` and tool offsets) turn when the machine file
+  gives their limits (``machine.rotary``), as the built-in reader reads them:
+  timed with those limits, left out of the ball-screw energy; alone in a
+  feed move, F is in degrees per minute, with X, Y or Z the linear path's
+  feed;
+- ``STRAIGHT_PROBE`` (``G38.2`` to ``G38.5``) is a feed move to its target,
+  with a note: the probe not tripping, the longest the move can be. The
+  interpreter itself goes on from the target (``rs274`` has no probe);
+- ``CHANGE_TOOL`` (``M6``) is a dwell of the machine file's
+  ``tool_change_time`` at the position, with a note, as the built-in reader
+  takes ``M6``; without that time it is skipped with a note (no time);
 - coordinates are printed in the program's units (``USE_LENGTH_UNITS``) and
   in program coordinates: they become machine coordinates as LinuxCNC's
   motion controller makes them, rotated by ``SET_XY_ROTATION`` and shifted
@@ -32,15 +44,15 @@ How the commands are taken:
   with a note; rigid tapping (``G33.1``, ``RIGID_TAP``) is a feed in and out at the
   thread's pitch times the spindle speed;
 - skipped with one note per kind and its first line, as they do not move the
-  feed axes: spindle and coolant commands, tool selection and changes (the
-  axes stand still; the change's time is not counted), path control modes
-  (``G61``, ``G64``: the machine file's ``path_tolerance`` is used), program
-  stops, messages and comments;
-- refused with the line: a move of a rotary axis (A, B, C), a probing move
-  (``G38.x``: where it stops depends on the contact), a spline
-  (``NURBS_FEED``), an arc in a rotated plane other than XY or
-  in the U, V, W planes, a feed per revolution without a spindle speed, and
-  whatever the interpreter itself refuses (its message and the line).
+  feed axes: spindle and coolant commands, tool selection (``T``, ``M61``),
+  path control modes (``G61``, ``G64``: the machine file's
+  ``path_tolerance`` is used), program stops, messages and comments;
+- refused with the line: a move of a rotary axis (A, B, C) the machine file
+  gives no limits for, or in an arc, a spline (``NURBS_FEED``, which
+  ``rs274`` prints without its data), an arc in a rotated plane other than
+  XY or in the U, V, W planes, a feed per revolution without a spindle
+  speed, and whatever the interpreter itself refuses (its message and the
+  line).
 
 Line numbers. ``rs274`` prints a block's ``N`` word, not its line in the
 file. Each line of the program is therefore given an ``N`` word carrying its
@@ -48,6 +60,10 @@ line number (:data:`LINE_MARK` plus the line, replacing an ``N`` word the
 line has) in a copy the interpreter reads; blank lines and ``%`` lines are
 left as they are. A block run from a subroutine file outside the program
 carries the line of the last block before it in the program.
+
+Each run of ``rs274`` has a home folder of its own (``HOME``): the
+interpreter maps its tool table into ``$HOME/.tool.mmap``, and two runs at
+once sharing that file read each other's tools.
 
 Print precision: ``rs274`` prints four decimals of the program's unit,
 0.1 µm in ``G21`` and 2.5 µm (0.0001 in) in ``G20``: coordinates are
@@ -113,10 +129,11 @@ _SKIPPED = {
         ("coolant", "coolant (M7, M8, M9)", "no motion of the feed axes"),
     ),
     **dict.fromkeys(
-        ("SELECT_TOOL", "START_CHANGE", "CHANGE_TOOL", "CHANGE_TOOL_NUMBER", "RELOAD_TOOLDATA"),
-        ("tool", "tool selection and change (T, M6, M61)",
-         "the feed axes stand still; the change's time is not counted"),
+        ("SELECT_TOOL", "CHANGE_TOOL_NUMBER", "RELOAD_TOOLDATA"),
+        ("tool", "tool selection (T, M61)", "no motion of the feed axes"),
     ),
+    "CHANGE_TOOL": ("M6", "tool change (M6)", "the feed axes stand still; its time is not "
+                    "counted without [machine] tool_change_time"),
     **dict.fromkeys(
         ("SET_MOTION_CONTROL_MODE", "SET_NAIVECAM_TOLERANCE"),
         ("path", "path control mode (G61, G61.1, G64)",
@@ -131,7 +148,7 @@ _SKIPPED = {
 """Canonical commands without motion of the feed axes -> (kind, what, note)."""
 _QUIET = frozenset(
     ("COMMENT", "MESSAGE", "LOG", "LOGOPEN", "LOGAPPEND", "LOGCLOSE", "ON_RESET",
-     "SET_FEED_REFERENCE", "SET_TRAVERSE_RATE", "STOP_SPEED_FEED_SYNCH",
+     "SET_FEED_REFERENCE", "SET_TRAVERSE_RATE", "START_CHANGE", "STOP_SPEED_FEED_SYNCH",
      "ENABLE_FEED_OVERRIDE", "DISABLE_FEED_OVERRIDE", "ENABLE_SPEED_OVERRIDE",
      "DISABLE_SPEED_OVERRIDE", "ENABLE_ADAPTIVE_FEED", "DISABLE_ADAPTIVE_FEED",
      "ENABLE_FEED_HOLD", "DISABLE_FEED_HOLD", "SET_BLOCK_DELETE", "SET_OPTIONAL_PROGRAM_STOP",
@@ -141,7 +158,6 @@ _QUIET = frozenset(
 )  # fmt: skip
 """Canonical commands that set nothing the motion of the feed axes depends on."""
 _REFUSED = {
-    "STRAIGHT_PROBE": "a probing move (G38.x: where it stops depends on the contact)",
     "NURBS_FEED": "a spline (G5, G5.1, G5.2)",
     "SPLINE_FEED": "a spline (G5, G5.1, G5.2)",
 }
@@ -169,7 +185,13 @@ class _State:
     g92: list[float] = field(default_factory=lambda: [0.0, 0.0, 0.0])
     tool: list[float] = field(default_factory=lambda: [0.0, 0.0, 0.0])
     position: list[float] = field(default_factory=lambda: [0.0, 0.0, 0.0])
-    rotary: tuple[float, ...] = (0.0, 0.0, 0.0)
+    rate: float = math.nan  # the F word as written (degrees per minute for A, B, C alone)
+    rotary: list[float] = field(default_factory=lambda: [0.0, 0.0, 0.0])  # A, B, C [rad]
+    g5x_abc: list[float] = field(default_factory=lambda: [0.0, 0.0, 0.0])  # [degrees]
+    g92_abc: list[float] = field(default_factory=lambda: [0.0, 0.0, 0.0])
+    tool_abc: list[float] = field(default_factory=lambda: [0.0, 0.0, 0.0])
+    rotary_axes: frozenset[str] = frozenset()  # the rotary axes the machine file gives limits
+    change_time: float | None = None  # the machine file's tool change time [s]
     line: int = 1
     own: bool = True  # the command comes from a line of the program (not a called file)
     command: str = ""
@@ -181,6 +203,15 @@ class _State:
         c, s = math.cos(self.rotation), math.sin(self.rotation)
         p = [(x * c - y * s) * u, (x * s + y * c) * u, z * u]
         return [p[i] + self.g5x[i] + self.g92[i] + self.tool[i] for i in range(3)]
+
+    def turn(self, a: float, b: float, c: float) -> list[float]:
+        """A, B, C of the program [degrees] in machine coordinates [rad].
+
+        The sum of the printed angle and its offsets is rounded to 1e-9 degrees, so
+        that an offset taken back (40.1 - 40.1) leaves the axis where it was.
+        """
+        return [math.radians(round(v + self.g5x_abc[i] + self.g92_abc[i] + self.tool_abc[i],
+                                   9)) for i, v in enumerate((a, b, c))]  # fmt: skip
 
 
 def _error(line: int, text: str, allowed: str) -> BallScrewInputError:
@@ -246,13 +277,49 @@ def _feed(state: _State, lines: list[str], notes: dict[str, str]) -> float:
     return state.feed / 60.0
 
 
-def _rotary(state: _State, values: list[float], lines: list[str]) -> None:
-    """Refuse a move of A, B or C (the values after X, Y, Z)."""
-    abc = tuple(values[3:6])
-    if abc != state.rotary:
-        moved = next(k for k, a, b in zip("ABC", abc, state.rotary, strict=False) if a != b)
-        raise _refuse(state, lines, f"moves of X, Y and Z ({moved} "
-                     "is a rotary axis, left out of the computation)")  # fmt: skip
+def _rotary(state: _State, values: list[float], lines: list[str], rotary: frozenset[str],
+            straight: bool = True) -> list[float]:  # fmt: skip
+    """A, B, C at the end of a move (the values after X, Y, Z) [rad, machine coordinates].
+
+    A rotary axis may turn in a straight move when the machine file gives its
+    limits (``rotary``); in an arc, or without its limits, the move is refused.
+    """
+    turn = state.turn(*values[3:6])
+    for k, a, b in zip("ABC", turn, state.rotary, strict=True):
+        if a == b:
+            continue
+        if not straight:
+            raise _refuse(state, lines, f"A, B or C in a straight move ({k} turns in an arc)")
+        if k not in rotary:
+            raise _refuse(state, lines, f"a rotary axis of the machine file with its limits "
+                          f"([axes.{k}] max_feed, max_acceleration, max_jerk), or moves of X, "
+                          f"Y and Z ({k} turns here)")  # fmt: skip
+    return turn
+
+
+def _row(
+    state: _State, rows: list[tuple[Any, ...]], kind: int, end: list[float], feed: float, *,
+    centre: list[float] | None = None, sweep: float = 0.0, dwell: float = 0.0,
+    turn: list[float] | None = None,
+) -> None:  # fmt: skip
+    """A block from the current position to ``end``, in the built-in reader's row layout.
+
+    The corner at its start is blended within the machine's path tolerance (NaN):
+    rs274 prints no tolerance of its own for ``G64 P``.
+    """
+    turn = state.rotary if turn is None else turn
+    rows.append((kind, state.line, state.position, end, feed, centre or [math.nan] * 3,
+                 state.plane, sweep, dwell, math.nan, state.rotary, turn))  # fmt: skip
+    state.position, state.rotary = end, turn
+
+
+def _rotary_feed(state: _State, lines: list[str]) -> float:
+    """The feed of a rotary axis turning alone [rad/s]: F in degrees per minute."""
+    if state.per_revolution or state.synchronised is not None:
+        raise _refuse(state, lines, "a rotary axis turning alone at a feed per minute (G94)")
+    if not state.rate > 0.0:
+        raise _refuse(state, lines, "a feed move at a feed > 0")
+    return math.radians(state.rate) / 60.0
 
 
 def _command(
@@ -260,17 +327,31 @@ def _command(
     notes: dict[str, str], used: set[str],
 ) -> None:  # fmt: skip
     """One canonical command into the state and the blocks."""
-    if name in ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED"):
+    if name in ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED", "STRAIGHT_PROBE"):
         v = _numbers(args, 6)
-        _rotary(state, v, lines)
+        turn = _rotary(state, v, lines, state.rotary_axes)
         end = state.machine(v[0], v[1], v[2])
-        if end != state.position:
+        if end != state.position or turn != state.rotary:
             kind = RAPID if name == "STRAIGHT_TRAVERSE" else FEED
-            feed = math.nan if kind == RAPID else _feed(state, lines, notes)
+            if name == "STRAIGHT_PROBE":
+                notes.setdefault("probe", f"a probing move (G38.2 to G38.5), line {state.line}: "
+                                 "run as a feed move to its target, the probe not tripping "
+                                 "(the longest the move can be; a probe that trips stops "
+                                 "it short)")  # fmt: skip
+            if kind == RAPID:
+                feed = math.nan
+            elif end != state.position:
+                feed = _feed(state, lines, notes)
+            else:  # a rotary axis alone: F in degrees per minute
+                feed = _rotary_feed(state, lines)
             used.update(k for k, a, b in zip("XYZ", end, state.position, strict=True) if a != b)
-            rows.append((kind, state.line, state.position, end, feed, [math.nan] * 3,
-                         state.plane, 0.0, 0.0))  # fmt: skip
-            state.position = end
+            turned = [k for k, a, b in zip("ABC", turn, state.rotary, strict=True) if a != b]
+            if turned:
+                used.update(turned)
+                notes.setdefault("rotary", f"{', '.join(turned)} (rotary, line {state.line}): "
+                                 "timed with the machine file's limits, left out of the "
+                                 "ball-screw energy")  # fmt: skip
+            _row(state, rows, kind, end, feed, turn=turn)
     elif name == "RIGID_TAP":
         # G33.1: in to the point at the thread's pitch per spindle turn, then out to the
         # start at the same pitch as the spindle reverses (LinuxCNC's motion controller).
@@ -282,18 +363,17 @@ def _command(
         notes.setdefault("tap", f"rigid tapping (G33.1), line {state.line}: in and out at "
                          "the pitch times the spindle speed; the spindle's reversal is not "
                          "timed")  # fmt: skip
-        for a, b in ((top, bottom), (bottom, top)) if bottom != top else ():
-            rows.append((FEED, state.line, a, b, feed, [math.nan] * 3, state.plane, 0.0, 0.0))
+        for b in (bottom, top) if bottom != top else ():
+            _row(state, rows, FEED, b, feed)
         used.update(k for k, p, q in zip("XYZ", top, bottom, strict=True) if p != q)
     elif name == "ARC_FEED":
         _arc(state, _numbers(args, 9), lines, rows, notes, used)
     elif name == "DWELL":
         seconds = _numbers(args)[0]
-        p = state.position
-        rows.append((DWELL, state.line, p, p, math.nan, [math.nan] * 3, state.plane, 0.0,
-                     seconds))  # fmt: skip
+        _row(state, rows, DWELL, state.position, math.nan, dwell=seconds)
     elif name == "SET_FEED_RATE":
-        state.feed = _numbers(args)[0] * state.unit
+        state.rate = _numbers(args)[0]
+        state.feed = state.rate * state.unit
     elif name == "SET_FEED_MODE":
         v = _numbers(args)
         state.per_revolution = len(v) > 1 and v[-1] == 1.0
@@ -316,11 +396,21 @@ def _command(
     elif name == "SELECT_PLANE":
         state.plane = _PLANES.get(args.strip(), 0)
     elif name == "SET_G5X_OFFSET":
-        state.g5x = [x * state.unit for x in _numbers(args)[1:4]]
+        v = _numbers(args, 4)
+        state.g5x = [x * state.unit for x in v[1:4]]
+        state.g5x_abc = [*v[4:7], 0.0, 0.0, 0.0][:3]
     elif name == "SET_G92_OFFSET":
-        state.g92 = [x * state.unit for x in _numbers(args)[0:3]]
+        v = _numbers(args, 3)
+        state.g92 = [x * state.unit for x in v[0:3]]
+        state.g92_abc = [*v[3:6], 0.0, 0.0, 0.0][:3]
     elif name == "USE_TOOL_LENGTH_OFFSET":
-        state.tool = [x * state.unit for x in _numbers(args)[0:3]]
+        v = _numbers(args, 3)
+        state.tool = [x * state.unit for x in v[0:3]]
+        state.tool_abc = [*v[3:6], 0.0, 0.0, 0.0][:3]
+    elif name == "CHANGE_TOOL" and state.change_time is not None:
+        notes.setdefault("M6", f"tool change (M6), line {state.line}: {state.change_time:g} s "
+                         "with the feed axes still (machine.tool_change_time)")  # fmt: skip
+        _row(state, rows, DWELL, state.position, math.nan, dwell=state.change_time)
     elif name == "SET_XY_ROTATION":
         state.rotation = math.radians(_numbers(args)[0])
     elif name in ("PROGRAM_END", "FINISH"):
@@ -348,7 +438,7 @@ def _arc(
         raise _refuse(state, lines, "arcs in the XY, ZX or YZ "
                      "plane (an arc in a U, V, W plane or in a plane the XY rotation "
                      "turns is not read)")  # fmt: skip
-    _rotary(state, [0.0, 0.0, 0.0, *v[6:9]], lines)
+    _rotary(state, [0.0, 0.0, 0.0, *v[6:9]], lines, state.rotary_axes, straight=False)
     a, b, n = _AXES[state.plane]
     end_p, centre_p = [0.0, 0.0, 0.0], [0.0, 0.0, 0.0]
     end_p[a], end_p[b], end_p[n] = v[0], v[1], v[5]
@@ -378,23 +468,26 @@ def _arc(
             notes.setdefault("radius 0", f"an arc of radius 0, line {state.line}: run as the "
                              "straight feed along its axis LinuxCNC makes of it")  # fmt: skip
             used.add("XYZ"[n])
-            rows.append((FEED, state.line, p0, end, _feed(state, lines, notes), [math.nan] * 3,
-                         state.plane, 0.0, 0.0))  # fmt: skip
-            state.position = end
+            _row(state, rows, FEED, end, _feed(state, lines, notes))
         return
     feed = _feed(state, lines, notes)
     used.update("XYZ"[i] for i in (a, b))
     if end[n] != p0[n]:
         used.add("XYZ"[n])
-    rows.append((ARC, state.line, p0, end, feed, centre, state.plane, sweep, 0.0))
-    state.position = end
+    _row(state, rows, ARC, end, feed, centre=centre, sweep=sweep)
 
 
 def _blocks(
-    output: Iterable[str], lines: list[str], max_blocks: int | None
-) -> tuple[list[tuple[Any, ...]], dict[str, str], set[str], _State]:
-    """The canonical commands ``rs274`` printed, into blocks."""
-    state = _State()
+    output: Iterable[str], lines: list[str], max_blocks: int | None, *,
+    rotary: Iterable[str] = (), tool_change_time: float | None = None,
+) -> tuple[list[tuple[Any, ...]], dict[str, str], set[str], _State]:  # fmt: skip
+    """The canonical commands ``rs274`` printed, into blocks.
+
+    ``rotary``: the rotary axes whose moves are read (the machine file's with
+    limits); ``tool_change_time``: the time of a tool change [s] (None: not
+    counted, with a note).
+    """
+    state = _State(rotary_axes=frozenset(rotary), change_time=tool_change_time)
     rows: list[tuple[Any, ...]] = []
     notes: dict[str, str] = {}
     used: set[str] = set()
@@ -455,6 +548,7 @@ def read_program_rs274(
     max_blocks: int | None = None,
     timeout: float = TIMEOUT,
     executable: str | None = None,
+    machine: Any = None,
 ) -> Program:
     """Read a part program with LinuxCNC's ``rs274`` (module docstring).
 
@@ -476,6 +570,10 @@ def read_program_rs274(
         Longest run of ``rs274`` [s].
     executable : str, optional
         The ``rs274`` to run; the one on the PATH if None.
+    machine : ballscrew.io.machine.Machine, optional
+        Its rotary axes with limits (``machine.rotary``: their moves are read,
+        another rotary axis's refused) and its tool change time (the time of
+        each ``M6``; not counted without one, with a note).
 
     Returns
     -------
@@ -511,18 +609,23 @@ def read_program_rs274(
                 raise BallScrewInputError("tool_table", str(table), "a readable LinuxCNC tool "
                                           "table file")  # fmt: skip
             command += ["-t", str(table.resolve())]
+        # rs274 keeps its tool table in a file mapped into memory, $HOME/.tool.mmap: one
+        # home a run, so that runs at the same time do not read each other's tools.
         command.append(str(source))
         with open(errors, "w", encoding="utf-8") as err:
             proc = subprocess.Popen(command, cwd=cwd, stdin=subprocess.DEVNULL,
                                     stdout=subprocess.PIPE, stderr=err, text=True,
                                     encoding="utf-8", errors="replace",
-                                    env={**os.environ, "LC_ALL": "C"})  # fmt: skip
+                                    env={**os.environ, "LC_ALL": "C", "HOME": tmp})  # fmt: skip
             timer = threading.Timer(timeout, proc.kill)
             timer.start()
             try:
                 assert proc.stdout is not None
                 bound = MOST_BLOCKS if max_blocks is None else max_blocks
-                rows, notes, used, state = _blocks(proc.stdout, lines, bound)
+                rows, notes, used, state = _blocks(
+                    proc.stdout, lines, bound, rotary=getattr(machine, "rotary", {}),
+                    tool_change_time=getattr(machine, "tool_change_time", None),
+                )  # fmt: skip
             finally:
                 if proc.poll() is None and not timer.finished.is_set():
                     proc.kill()
@@ -610,7 +713,7 @@ def read_part_program(
 
     def rs274() -> Program:
         return read_program_rs274(text, directory=directory, tool_table=tool_table,
-                                  max_blocks=max_blocks)  # fmt: skip
+                                  max_blocks=max_blocks, machine=machine)  # fmt: skip
 
     if reader == "builtin":
         return ReadProgram(builtin(), "builtin", "the built-in reader, as asked (--reader)")

@@ -64,10 +64,13 @@ def _path_figure(r: ProgramResult) -> MplFigure:
         y = np.interp(t, r.motion.time, pos[:, 1])
         ax.scatter(x, y, marker=MARKERS.get(letter, "x"), facecolors="none", edgecolors="red",
                    s=30, label=f"{letter} reversals")  # fmt: skip
+    still = not np.any(np.ptp(points, axis=0) > 0.0)
+    if still:  # the program moves neither X nor Y: where the tool stands
+        ax.plot(points[:1, 0], points[:1, 1], "k+", markersize=12, label="the tool, standing")
     ax.set_aspect("equal")
     ax.set_xlabel("X [mm]")
     ax.set_ylabel("Y [mm]")
-    if any(a.reversals for a in r.axes.values()):
+    if still or any(a.reversals for a in r.axes.values()):
         ax.legend(fontsize="small")
     fig.tight_layout()
     return fig
@@ -120,7 +123,9 @@ def time_series_csv(r: ProgramResult) -> bytes:
     """The time series, one row per sample, units in the header."""
     ds = r.data
     header = ["time [s]", "block line", "path speed [m/s]"]
-    cols = [r.motion.time, r.program.line[r.motion.block], r.motion.path_speed]
+    # The line of each sample's block (0: a program without blocks, one sample at rest).
+    lines = r.program.line[r.motion.block] if r.program.size else np.zeros_like(r.motion.block)
+    cols = [r.motion.time, lines, r.motion.path_speed]
     for letter in r.axes:
         for name, unit in (("position", "m"), ("velocity", "m/s"), ("acceleration", "m/s^2"),
                            ("jerk", "m/s^3"), ("motor_torque", "N*m"),
@@ -177,7 +182,8 @@ def summary_rows(r: ProgramResult) -> list[list[str]]:
         row = [label]
         for a in r.axes.values():
             if attr is not None:
-                row.append(fmt.format(getattr(a, attr)))
+                value = getattr(a, attr) + 0.0  # + 0.0: no "-0"
+                row.append("-" if np.isnan(value) else fmt.format(value))
             elif label.startswith("start"):
                 row.append(f"{a.start_temperature:.1f} / {a.max_temperature:.2f}")
             elif label.startswith("thermal"):
