@@ -1,5 +1,9 @@
 r"""Reading a part program (RS274/NGC G-code, or a CAM post's Fanuc-style output) into blocks.
 
+This module is long on purpose: one reader (``_Reader``) holds the modal state
+that every word changes, so the order in which RS274/NGC applies a block's words,
+and the few branches of each dialect (Fanuc, Sinumerik), are checked in one place.
+
 Each line is taken apart into words (a letter and a number) once its comments
 and block number are off; a line that is anything else (``#1=5``, ``[1+2]``,
 ``O100 call``) is refused with its line. Every word is then run, skipped with a
