@@ -234,6 +234,22 @@ class BallScrew:
             )  # fmt: skip
 
     def __post_init__(self) -> None:
+        """Validate every field (refusing what cannot be built) and warn on the unusual.
+
+        Scalars are checked and stored as floats, the choices and the circuits
+        next, then what plausibility holds, and last that the ball fits the pitch
+        circle and the lead and that the nut holds at least one ball per circuit.
+        """
+        self._check_scalars()
+        self._check_choices()
+        self._plausible()
+        self._check_fit()
+        # Inside what can be built, but perhaps not what makers build: warned, used as given.
+        check_ball_diameter("ball_diameter", self.ball_diameter)
+        check_loaded_turns("loaded_turns", self.loaded_turns)
+
+    def _check_scalars(self) -> None:
+        """The real-number fields: each a single number in its range, stored as float."""
         for name in ("pitch_diameter", "lead", "ball_diameter", "loaded_turns"):
             self._scalar(name, check_positive)
         for name in ("youngs_modulus_ball", "youngs_modulus_races"):
@@ -258,6 +274,9 @@ class BallScrew:
             )
         for name in ("poisson_ratio_ball", "poisson_ratio_races"):
             self._scalar(name, lambda f, v: check_in_range(f, v, 0.0, 0.5, inclusive=(True, False)))
+
+    def _check_choices(self) -> None:
+        """The whole circuits, the nut and ball separation chosen, a preload the nut holds."""
         if isinstance(self.circuits, bool) or not isinstance(self.circuits, int | np.integer):
             raise BallScrewInputError("circuits", self.circuits, "a whole number >= 1")
         if self.circuits < 1:
@@ -277,7 +296,12 @@ class BallScrew:
                 'use nut="double" for double or lead-offset nuts, "single-4point" '
                 "for oversize balls)",
             )
-        self._plausible()
+
+    def _check_fit(self) -> None:
+        """The ball fits the pitch circle and the lead, the lead angle is below 45°.
+
+        And the loaded turns hold between one and a million balls per circuit.
+        """
         if self.ball_diameter >= self.pitch_diameter:
             raise BallScrewInputError(
                 "ball_diameter",
@@ -314,9 +338,6 @@ class BallScrew:
             raise BallScrewInputError(
                 "loaded_turns", self.loaded_turns, "enough turns to hold at least one ball"
             )
-        # Inside what can be built, but perhaps not what makers build: warned, used as given.
-        check_ball_diameter("ball_diameter", self.ball_diameter)
-        check_loaded_turns("loaded_turns", self.loaded_turns)
 
     def _scalar(self, name: str, check: Any) -> None:
         value = getattr(self, name)

@@ -1,5 +1,10 @@
 r"""Lubricant properties: viscosity against temperature and pressure, density.
 
+This module is long on purpose: each published correlation (ASTM D341, Vogel,
+Barus, Roelands, Jungnickel, the linear density) is one pure function with its
+equation, units and reference written out, and :class:`Lubricant`, which applies
+them to one oil, stays beside them.
+
 Pure functions for each published correlation, and the :class:`Lubricant`
 object that holds one oil's data and applies them. Temperatures are in °C,
 everything else in SI units (kinematic viscosity in m²/s, dynamic viscosity

@@ -86,15 +86,47 @@ class _Notes:
 
 
 def _print_resolved(path: str) -> None:
+    """Print a case as the models will use it: each value, its source, the assumptions.
+
+    The table's cited notes are numbered in the order the rows are made (the
+    designation's first) and printed below it; the plausibility findings go to
+    stderr as warnings.
+    """
     from ..design.ratings import plausibility, raise_errors
-    from ..io.case import READ_AS, load_case
+    from ..io.case import load_case
     from ..kinematics import rad_s_to_rpm
 
     case = load_case(path)
-    s, oil = case.screw, case.lubricant
     ratings = case.load_ratings()
-    found = raise_errors(plausibility(s, ratings, case.axial_load))
+    found = raise_errors(plausibility(case.screw, ratings, case.axial_load))
     cite = _Notes()  # numbered in the order the rows are made: the designation's first
+    rows = _screw_rows(case, ratings, cite)
+    rows += _lubricant_rows(case, cite)
+    rows += [
+        ("operation", "speeds", _span(rad_s_to_rpm(case.speed), "rpm")),
+        ("operation", "temperatures", _span(case.temperature, "degC")),
+        ("operation", "axial loads", _span(case.axial_load, "N")),
+    ]
+    rows += _axis_rows(case, cite)
+    rows += _check_rows(case)
+    table = Table(title=f"{case.title}: resolved from {path}")
+    for column in ("section", "quantity", "value"):
+        table.add_column(column)
+    for row in rows:
+        table.add_row(*row)
+    console = stdout()
+    console.print(table)
+    for note, number in cite.texts.items():
+        console.print(f"[{number}] {note}", highlight=False)
+    _print_assumptions(console, case)
+    for finding in found:
+        click.echo(f"warning: {finding}", err=True)
+    console.print("case file OK", style="bold green")
+
+
+def _screw_rows(case: Any, ratings: Any, cite: _Notes) -> list[tuple[str, str, str]]:
+    """The ``[screw]`` section's rows: designation, geometry, ratings (cited), preload."""
+    s = case.screw
     named = [("screw", "designation", cite(case.designation, case.screw_source))]
     named = named if case.designation else []
     wants = "; ballscrew check needs it: give screw.{}"
@@ -109,7 +141,7 @@ def _print_resolved(path: str) -> None:
         static = cite(f"{static} (estimated)", estimate + wants.format("static_load_rating"))
     else:
         static = cite(static, ratings.static_source)
-    rows = [
+    return [
         *named,
         ("screw", "pitch diameter", f"{num(s.pitch_diameter * 1e3)} mm"),
         ("screw", "lead", f"{num(s.lead * 1e3)} mm"),
@@ -132,6 +164,13 @@ def _print_resolved(path: str) -> None:
             f"{s.roughness_nut * 1e6:.3g} um",
         ),
         *([("screw", "wiper drag", f"{num(case.wiper_drag)} N*m")] if case.wiper_drag else []),
+    ]
+
+
+def _lubricant_rows(case: Any, cite: _Notes) -> list[tuple[str, str, str]]:
+    """The ``[lubricant]`` section's rows: name, grease (cited), viscosities."""
+    oil = case.lubricant
+    return [
         ("lubricant", "name", oil.name),
         *(
             [("lubricant", "grease", cite(_grease(oil), "viscosities: the base oil's"))]
@@ -144,21 +183,13 @@ def _print_resolved(path: str) -> None:
             f"{num(oil.nu40 * 1e6)} / {num(oil.nu100 * 1e6)} cSt",
         ),
         ("lubricant", "pressure-viscosity alpha", f"{num(oil.pressure_viscosity * 1e9)} 1/GPa"),
-        ("operation", "speeds", _span(rad_s_to_rpm(case.speed), "rpm")),
-        ("operation", "temperatures", _span(case.temperature, "degC")),
-        ("operation", "axial loads", _span(case.axial_load, "N")),
     ]
-    rows += _axis_rows(case, cite)
-    rows += _check_rows(case)
-    table = Table(title=f"{case.title}: resolved from {path}")
-    for column in ("section", "quantity", "value"):
-        table.add_column(column)
-    for row in rows:
-        table.add_row(*row)
-    console = stdout()
-    console.print(table)
-    for note, number in cite.texts.items():
-        console.print(f"[{number}] {note}", highlight=False)
+
+
+def _print_assumptions(console: Any, case: Any) -> None:
+    """The case's assumed values, then those read one way, each with its reason."""
+    from ..io.case import READ_AS
+
     read = [a for a in case.assumptions if a.reason.startswith(READ_AS)]
     assumed = [a for a in case.assumptions if not a.reason.startswith(READ_AS)]
     for group, header in ((assumed, "marked as assumed"), (read, "read one way, as given")):
@@ -166,9 +197,6 @@ def _print_resolved(path: str) -> None:
             console.print(f"{len(group)} value(s) {header}:")
         for a in group:
             console.print(f"  {a.field} = {a.value}: {a.reason}", highlight=False)
-    for finding in found:
-        click.echo(f"warning: {finding}", err=True)
-    console.print("case file OK", style="bold green")
 
 
 def _axis_rows(case: Any, cite: _Notes) -> list[tuple[str, str, str]]:

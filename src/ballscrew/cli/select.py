@@ -20,6 +20,8 @@ from .common import (
 )
 
 if TYPE_CHECKING:
+    from rich.console import Console
+
     from ..io.motors import MotorRow
     from ..select import SelectResult
 
@@ -120,29 +122,15 @@ def select_command(
                                   "the candidates are checked against"))  # fmt: skip
     sure = parse_confidence(confidence)
     profile, m = motion(move_text, profile_file, cycles)
-    motors: tuple[MotorRow, ...] = ()
-    if motors_file is not None:
-        from ..io.motors import read_motors
-
-        motors = read_motors(motors_file)
-    prices: dict[str, float] | None = None
-    currency = ""
-    if prices_file is not None:
-        from ..io.motors import read_prices
-
-        prices, currency = read_prices(prices_file)
-    command = ["ballscrew", "select", "--case", case_file or ""]
-    for flag, value in (("--move", move_text), ("--profile", profile_file),
-                        ("--diameter", diameter), ("--lead", lead),
-                        ("--motors", motors_file), ("--screw-prices", prices_file),
-                        ("--confidence", confidence)):  # fmt: skip
-        if value is not None:
-            command += [flag, value]
-    for flag, values in (("--objective", objectives), ("--maker", makers),
-                         ("--preload", preloads), ("--oil", oils), ("--source", sources),
-                         ("--nut", nuts)):  # fmt: skip
-        for v in values:
-            command += [flag, v]
+    motors, prices, currency = _price_tables(motors_file, prices_file)
+    command = _command_line(
+        case_file,
+        (("--move", move_text), ("--profile", profile_file), ("--diameter", diameter),
+         ("--lead", lead), ("--motors", motors_file), ("--screw-prices", prices_file),
+         ("--confidence", confidence)),
+        (("--objective", objectives), ("--maker", makers), ("--preload", preloads),
+         ("--oil", oils), ("--source", sources), ("--nut", nuts)),
+    )  # fmt: skip
     try:
         result = run_select(
             case, profile, objectives=objectives or ("energy", "life"),
@@ -165,6 +153,59 @@ def select_command(
         raise
     result.inputs.update({"command": command, "case_file": case_file})
     out = stdout(json_file)
+    _print_summary(out, result, start)
+    if json_file:
+        from ..report.outputs import result_json
+        from .common import write_json
+
+        write_json(json_file, result_json(result))
+    if out_dir:
+        from ..report.select import write_select_report
+
+        write_report(out_dir, lambda folder: write_select_report(folder, result))
+
+
+def _price_tables(
+    motors_file: str | None, prices_file: str | None
+) -> tuple[tuple[MotorRow, ...], dict[str, float] | None, str]:
+    """The motor table (none without ``--motors``), and the screw prices with their currency."""
+    motors: tuple[MotorRow, ...] = ()
+    if motors_file is not None:
+        from ..io.motors import read_motors
+
+        motors = read_motors(motors_file)
+    prices: dict[str, float] | None = None
+    currency = ""
+    if prices_file is not None:
+        from ..io.motors import read_prices
+
+        prices, currency = read_prices(prices_file)
+    return motors, prices, currency
+
+
+def _command_line(
+    case_file: str | None,
+    options: tuple[tuple[str, str | None], ...],
+    repeated: tuple[tuple[str, tuple[str, ...]], ...],
+) -> list[str]:
+    """The command as given, for the report: each option given, each repeat of the others."""
+    command = ["ballscrew", "select", "--case", case_file or ""]
+    for flag, value in options:
+        if value is not None:
+            command += [flag, value]
+    for flag, values in repeated:
+        for v in values:
+            command += [flag, v]
+    return command
+
+
+def _print_summary(out: Console, result: SelectResult, start: float) -> None:
+    """The front, the recommendation and why, and the candidates counted with their CPU time.
+
+    ``start`` is the command's start on :func:`time.process_time`.
+    """
+    import time
+
     out.print(_front_table(result))
     best = result.evaluated[result.recommended]
     if result.undecided:
@@ -183,15 +224,6 @@ def select_command(
               f"{len(result.feasible)} with {result.confidence:.0%} confidence, "
               f"{len(result.front)} on the front) in {seconds:.1f} s of CPU "
               f"({seconds / len(result.evaluated):.2f} s per candidate)")  # fmt: skip
-    if json_file:
-        from ..report.outputs import result_json
-        from .common import write_json
-
-        write_json(json_file, result_json(result))
-    if out_dir:
-        from ..report.select import write_select_report
-
-        write_report(out_dir, lambda folder: write_select_report(folder, result))
 
 
 def _number(value: float) -> str:

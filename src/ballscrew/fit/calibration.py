@@ -1,5 +1,10 @@
 r"""Calibration: the uncertain inputs of a friction model that explain a measured curve.
 
+This module is long on purpose: the fit, its linearised uncertainty, the checks of
+its residuals (runs test, lag-1 autocorrelation, absurd values) and the fitted
+case file all read one fit's private state (``_Fit``), and the method is stated
+here once in full.
+
 :func:`fit_parameters` adjusts the chosen parameters :math:`\theta` (the screw's
 preload, a model's coefficients) to minimise the squared residuals
 :math:`r_i = T_{model}(\omega_i, T_i, F_i; \theta) - T_{meas,i}` [N·m] by bounded

@@ -1,5 +1,9 @@
 r"""A machine's feed axes fitted to a measured drive trace: what ``ballscrew identify`` computes.
 
+This module is long on purpose: its method is stated here once in full, and the
+regressors, the fit with its bootstrap and the synthetic trace that tests it share
+the same model terms and filter.
+
 A drive trace gives, per axis, the measured position and the drive's
 current (or torque, or power). The axis model runs on the measured
 trajectory, and a few parameters a catalogue does not give are fitted.

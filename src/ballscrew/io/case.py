@@ -1,5 +1,9 @@
 """Ball screw case files: TOML with explicit units, validated on load.
 
+This module is long on purpose: it is the one reader of a case file; each section
+(screw, designation, ratings, preload, lubricant, operation, axis, motor, check)
+is a short function of its own, and they share the file's sources and assumptions.
+
 A case describes one ball screw, its lubricant, its operating range and (for
 ``ballscrew study``) the study's settings. Every dimensional value is written
 with its unit (``pitch_diameter = "32 mm"``, ``preload = "1.5 kN"``) and

@@ -460,77 +460,15 @@ def parse_machine(
         if m.start_temperature is None
         else _si("machine.start_temperature", m.start_temperature, "degC")
     )
-    notes: list[str] = []
+    rotary, notes = _rotary_axes(data.axes)
     axes: dict[str, MachineAxis] = {}
-    for letter in data.axes:
-        if letter not in LINEAR_AXES + ROTARY_AXES:
-            raise BallScrewInputError(
-                f"axes.{letter}", letter, f"a program letter: {', '.join(LINEAR_AXES)} "
-                f"(linear) or {', '.join(ROTARY_AXES)} (rotary, left out)",
-            )  # fmt: skip
-    rotary: dict[str, RotaryAxis] = {}
-    for letter in ROTARY_AXES:
-        if letter in data.axes:
-            limits = _rotary(letter, data.axes[letter])
-            if limits is None:
-                notes.append(
-                    f"axes.{letter}: a rotary axis, not driven by a ball screw; without its "
-                    f"max_feed, max_acceleration and max_jerk a program that moves {letter} "
-                    "is refused"
-                )
-            else:
-                rotary[letter] = limits
-                notes.append(
-                    f"axes.{letter}: a rotary axis, not driven by a ball screw: its moves are "
-                    "timed with its limits and left out of the ball-screw energy"
-                )
     for letter in LINEAR_AXES:
-        if letter not in data.axes:
-            continue
-        key = f"axes.{letter}"
-        try:
-            entry = AxisEntry.model_validate(data.axes[letter])
-        except ValidationError as exc:
-            raise _validation_error(exc, f"{key}.") from None
-        if len(entry.travel) != 2:
-            raise BallScrewInputError(f"{key}.travel", entry.travel, "[lowest, highest] with units")
-        low, high = (_si(f"{key}.travel", v, "m") for v in entry.travel)
-        if not (math.isfinite(low) and math.isfinite(high) and low < high):
-            raise BallScrewInputError(f"{key}.travel", entry.travel, "lowest < highest")
-        if not low <= 0.0 <= high:
-            raise BallScrewInputError(f"{key}.travel", entry.travel, "a range that holds 0 mm, "
-                                      "where the program starts")  # fmt: skip
-        force = _si(f"{key}.process_force", entry.process_force, "N")
-        if not (math.isfinite(force) and force >= 0.0):
-            raise BallScrewInputError(f"{key}.process_force", entry.process_force, "a force >= 0")
-        case = _axis_case(letter, entry.case, None if folder is None else Path(folder))
-        feed = _positive(f"{key}.max_feed", entry.max_feed, "m/s")
-        acceleration = _positive(f"{key}.max_acceleration", entry.max_acceleration, "m/s**2")
-        _held_to_screw(key, entry, case, force, feed, acceleration)
-        _travel_on_screw(key, entry, case, high - low)
-        axes[letter] = MachineAxis(
-            letter=letter,
-            case=case,
-            max_feed=feed,
-            max_acceleration=acceleration,
-            max_jerk=_positive(f"{key}.max_jerk", entry.max_jerk, "m/s**3"),
-            travel=(low, high),
-            process_force=force,
-            start_temperature=start
-            if entry.start_temperature is None
-            else _si(f"{key}.start_temperature", entry.start_temperature, "degC"),
-        )
+        if letter in data.axes:
+            axes[letter] = _linear_axis(letter, data.axes[letter], folder, start)
     if not axes:
         raise BallScrewInputError("axes", "(none)", "at least one linear axis (X, Y or Z)")
     tools, offsets, reference = _tables(data, axes)
-    change = (
-        None
-        if m.tool_change_time is None
-        else _si("machine.tool_change_time", m.tool_change_time, "s")
-    )
-    if change is not None and not (math.isfinite(change) and change >= 0.0):
-        raise BallScrewInputError("machine.tool_change_time", m.tool_change_time,
-                                  "a time >= 0 with its unit (s)")  # fmt: skip
+    change = _tool_change_time(m)
     return Machine(
         title=data.title,
         axes=axes,
@@ -550,6 +488,98 @@ def parse_machine(
         rotary=rotary,
         drive=_drive(m),
     )
+
+
+def _rotary_axes(
+    raw_axes: dict[str, dict[str, Any]],
+) -> tuple[dict[str, RotaryAxis], list[str]]:
+    """The file's rotary axes with their limits, and the notes on them.
+
+    Refuses first any ``[axes.*]`` letter that is neither linear nor rotary. A
+    rotary axis without limits is noted and left out (a program moving it is
+    refused later); one with them is timed but carries no ball-screw energy.
+    """
+    notes: list[str] = []
+    for letter in raw_axes:
+        if letter not in LINEAR_AXES + ROTARY_AXES:
+            raise BallScrewInputError(
+                f"axes.{letter}", letter, f"a program letter: {', '.join(LINEAR_AXES)} "
+                f"(linear) or {', '.join(ROTARY_AXES)} (rotary, left out)",
+            )  # fmt: skip
+    rotary: dict[str, RotaryAxis] = {}
+    for letter in ROTARY_AXES:
+        if letter in raw_axes:
+            limits = _rotary(letter, raw_axes[letter])
+            if limits is None:
+                notes.append(
+                    f"axes.{letter}: a rotary axis, not driven by a ball screw; without its "
+                    f"max_feed, max_acceleration and max_jerk a program that moves {letter} "
+                    "is refused"
+                )
+            else:
+                rotary[letter] = limits
+                notes.append(
+                    f"axes.{letter}: a rotary axis, not driven by a ball screw: its moves are "
+                    "timed with its limits and left out of the ball-screw energy"
+                )
+    return rotary, notes
+
+
+def _linear_axis(
+    letter: str, raw: dict[str, Any], folder: str | Path | None, start: float
+) -> MachineAxis:
+    """One linear ``[axes.X]`` table validated into SI, its case read from ``folder``.
+
+    ``start`` is the machine's start temperature [°C], used when the axis gives
+    none. The travel must hold 0 (where the program starts), the process force
+    be >= 0, and the axis's limits be within what its screw and motor hold.
+    """
+    key = f"axes.{letter}"
+    try:
+        entry = AxisEntry.model_validate(raw)
+    except ValidationError as exc:
+        raise _validation_error(exc, f"{key}.") from None
+    if len(entry.travel) != 2:
+        raise BallScrewInputError(f"{key}.travel", entry.travel, "[lowest, highest] with units")
+    low, high = (_si(f"{key}.travel", v, "m") for v in entry.travel)
+    if not (math.isfinite(low) and math.isfinite(high) and low < high):
+        raise BallScrewInputError(f"{key}.travel", entry.travel, "lowest < highest")
+    if not low <= 0.0 <= high:
+        raise BallScrewInputError(f"{key}.travel", entry.travel, "a range that holds 0 mm, "
+                                  "where the program starts")  # fmt: skip
+    force = _si(f"{key}.process_force", entry.process_force, "N")
+    if not (math.isfinite(force) and force >= 0.0):
+        raise BallScrewInputError(f"{key}.process_force", entry.process_force, "a force >= 0")
+    case = _axis_case(letter, entry.case, None if folder is None else Path(folder))
+    feed = _positive(f"{key}.max_feed", entry.max_feed, "m/s")
+    acceleration = _positive(f"{key}.max_acceleration", entry.max_acceleration, "m/s**2")
+    _held_to_screw(key, entry, case, force, feed, acceleration)
+    _travel_on_screw(key, entry, case, high - low)
+    return MachineAxis(
+        letter=letter,
+        case=case,
+        max_feed=feed,
+        max_acceleration=acceleration,
+        max_jerk=_positive(f"{key}.max_jerk", entry.max_jerk, "m/s**3"),
+        travel=(low, high),
+        process_force=force,
+        start_temperature=start
+        if entry.start_temperature is None
+        else _si(f"{key}.start_temperature", entry.start_temperature, "degC"),
+    )
+
+
+def _tool_change_time(m: MachineSection) -> float | None:
+    """``machine.tool_change_time`` in s (>= 0), or None when the file gives none."""
+    change = (
+        None
+        if m.tool_change_time is None
+        else _si("machine.tool_change_time", m.tool_change_time, "s")
+    )
+    if change is not None and not (math.isfinite(change) and change >= 0.0):
+        raise BallScrewInputError("machine.tool_change_time", m.tool_change_time,
+                                  "a time >= 0 with its unit (s)")  # fmt: skip
+    return change
 
 
 def _rotary(letter: str, raw: dict[str, Any]) -> RotaryAxis | None:

@@ -243,18 +243,73 @@ def _table(
     )  # fmt: skip
 
 
+_Wanted = dict[tuple[str, str], tuple[int, str, str]]
+"""The trace's columns by (axis letter or "", quantity): (index, unit, header cell)."""
+
+
 def _assemble(
     header: list[str], rows: list[list[str]], start: int, names: Mapping[str, str], source: str,
     *, halscope: bool,
 ) -> Trace:  # fmt: skip
     """The columns parsed, converted to SI and grouped by axis."""
-    from .units import parse_unit, to_si_array
+    wanted, left_out = _header_columns(header, names, source, halscope=halscope)
+    if ("", "time") not in wanted:
+        raise BallScrewInputError(f"{source}: header", ",".join(header),
+                                  "a time column, e.g. 'time [s]'")  # fmt: skip
+    letters = sorted({a for a, _ in wanted if a}, key="XYZ".index)
+    if not letters:
+        raise BallScrewInputError(f"{source}: header", ",".join(header),
+                                  "an axis: 'X position [mm]' and 'X current [A]' (or torque, "
+                                  "power)")  # fmt: skip
+    data = [(start + 2 + n, r) for n, r in enumerate(rows) if r]
+    if len(data) < MIN_SAMPLES:
+        raise BallScrewInputError(source, f"{len(data)} samples", f"at least {MIN_SAMPLES}")
+
+    def column(key: tuple[str, str]) -> FloatArray:
+        return _column(wanted[key], _QUANTITIES[key[1]], data, source)
+
+    time = column(("", "time"))
+    steps = np.diff(time)
+    if not np.all(steps > 0.0):
+        n = int(np.argmax(steps <= 0.0)) + 1
+        raise BallScrewInputError(f"{source}: line {data[n][0]}, column '{wanted['', 'time'][2]}'",
+                                  data[n][1][wanted["", "time"][0]],
+                                  "times increasing")  # fmt: skip
+    axes: dict[str, AxisTrace] = {}
+    for letter in letters:
+        kinds = [k for k in KINDS if (letter, k) in wanted]
+        if (letter, "position") not in wanted or len(kinds) != 1:
+            given = [w for a, w in wanted if a == letter]
+            raise BallScrewInputError(
+                f"{source}: axis {letter}", ", ".join(given),
+                f"'{letter} position [unit]' and exactly one of current, torque or power",
+            )  # fmt: skip
+        axes[letter] = AxisTrace(
+            letter, column((letter, "position")), column((letter, kinds[0])), kinds[0],
+            (wanted[letter, "position"][2], wanted[letter, kinds[0]][2]),
+        )  # fmt: skip
+    notes = (f"columns left out (not named as a trace column): {', '.join(left_out)}",) if (
+        left_out) else ()  # fmt: skip
+    return Trace(time - time[0], axes, source, notes)
+
+
+def _header_columns(
+    header: list[str], names: Mapping[str, str], source: str, *, halscope: bool
+) -> tuple[_Wanted, list[str]]:
+    """The header's trace columns by (axis, quantity), and the cells left out.
+
+    ``names`` maps a header cell to its trace name (``--map``); a halscope file's
+    cells other than the first (its time) are read only through it. A named cell
+    must give an axis X, Y or Z (none for the time), a known quantity and a unit
+    of it, each (axis, quantity) once.
+    """
+    from .units import parse_unit
 
     unknown = sorted(set(names) - set(header))
     if unknown:
         raise BallScrewInputError(f"--map {unknown[0]}", unknown[0],
                                   f"a column of {source}: {', '.join(header)}")  # fmt: skip
-    wanted: dict[tuple[str, str], tuple[int, str, str]] = {}  # (axis, what): (index, unit, cell)
+    wanted: _Wanted = {}
     left_out: list[str] = []
     for i, cell in enumerate(header):
         named = names.get(cell, "" if halscope and i > 0 else cell)
@@ -284,54 +339,31 @@ def _assemble(
                                       f"one {what} column{' for ' + axis if axis else ''} "
                                       f"(also '{wanted[key][2]}')")  # fmt: skip
         wanted[key] = (i, unit, cell)
-    if ("", "time") not in wanted:
-        raise BallScrewInputError(f"{source}: header", ",".join(header),
-                                  "a time column, e.g. 'time [s]'")  # fmt: skip
-    letters = sorted({a for a, _ in wanted if a}, key="XYZ".index)
-    if not letters:
-        raise BallScrewInputError(f"{source}: header", ",".join(header),
-                                  "an axis: 'X position [mm]' and 'X current [A]' (or torque, "
-                                  "power)")  # fmt: skip
-    data = [(start + 2 + n, r) for n, r in enumerate(rows) if r]
-    if len(data) < MIN_SAMPLES:
-        raise BallScrewInputError(source, f"{len(data)} samples", f"at least {MIN_SAMPLES}")
+    return wanted, left_out
 
-    def column(key: tuple[str, str]) -> FloatArray:
-        i, unit, cell = wanted[key]
-        values = np.empty(len(data))
-        for n, (line, r) in enumerate(data):
-            try:
-                values[n] = float(r[i])
-            except (ValueError, IndexError):
-                shown = r[i] if i < len(r) else "(missing)"
-                raise BallScrewInputError(f"{source}: line {line}, column '{cell}'", shown,
-                                          "a number") from None  # fmt: skip
-            if not math.isfinite(values[n]):
-                raise BallScrewInputError(f"{source}: line {line}, column '{cell}'", r[i],
-                                          "a finite number")  # fmt: skip
-        return np.asarray(to_si_array(f"{source}: column '{cell}'", values, unit,
-                                      _QUANTITIES[key[1]]), dtype=float)  # fmt: skip
 
-    time = column(("", "time"))
-    steps = np.diff(time)
-    if not np.all(steps > 0.0):
-        n = int(np.argmax(steps <= 0.0)) + 1
-        raise BallScrewInputError(f"{source}: line {data[n][0]}, column '{wanted['', 'time'][2]}'",
-                                  data[n][1][wanted["", "time"][0]],
-                                  "times increasing")  # fmt: skip
-    axes: dict[str, AxisTrace] = {}
-    for letter in letters:
-        kinds = [k for k in KINDS if (letter, k) in wanted]
-        if (letter, "position") not in wanted or len(kinds) != 1:
-            given = [w for a, w in wanted if a == letter]
-            raise BallScrewInputError(
-                f"{source}: axis {letter}", ", ".join(given),
-                f"'{letter} position [unit]' and exactly one of current, torque or power",
-            )  # fmt: skip
-        axes[letter] = AxisTrace(
-            letter, column((letter, "position")), column((letter, kinds[0])), kinds[0],
-            (wanted[letter, "position"][2], wanted[letter, kinds[0]][2]),
-        )  # fmt: skip
-    notes = (f"columns left out (not named as a trace column): {', '.join(left_out)}",) if (
-        left_out) else ()  # fmt: skip
-    return Trace(time - time[0], axes, source, notes)
+def _column(
+    where: tuple[int, str, str], quantity: str, data: list[tuple[int, list[str]]], source: str
+) -> FloatArray:
+    """One column of the data rows as numbers in SI.
+
+    ``where`` is its (index, unit, header cell), ``quantity`` a unit of its
+    quantity and ``data`` the (file line, cells) of each row; a cell that is not
+    a finite number is refused with its line.
+    """
+    from .units import to_si_array
+
+    i, unit, cell = where
+    values = np.empty(len(data))
+    for n, (line, r) in enumerate(data):
+        try:
+            values[n] = float(r[i])
+        except (ValueError, IndexError):
+            shown = r[i] if i < len(r) else "(missing)"
+            raise BallScrewInputError(f"{source}: line {line}, column '{cell}'", shown,
+                                      "a number") from None  # fmt: skip
+        if not math.isfinite(values[n]):
+            raise BallScrewInputError(f"{source}: line {line}, column '{cell}'", r[i],
+                                      "a finite number")  # fmt: skip
+    return np.asarray(to_si_array(f"{source}: column '{cell}'", values, unit, quantity),
+                      dtype=float)  # fmt: skip

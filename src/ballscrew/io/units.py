@@ -1,5 +1,9 @@
 r"""Units at the boundary: quantities typed by people ("25 mm", "2 kN") to SI floats.
 
+This module is long on purpose: it is the one home of every conversion at the
+boundary, so its strict grammar, unit names, ranges and messages agree, and the
+forms it accepts are stated here in full.
+
 All conversions of the case files, the command line, the web page and the
 headers of measured curves go through this module. Inside the package
 everything is SI (m, N, Pa, Pa·s, m²/s, rad/s, N·m) and temperatures are in °C.

@@ -1,5 +1,9 @@
 r"""Reading a part program (RS274/NGC G-code, or a CAM post's Fanuc-style output) into blocks.
 
+This module is long on purpose: one reader (``_Reader``) holds the modal state
+that every word changes, so the order in which RS274/NGC applies a block's words,
+and the few branches of each dialect (Fanuc, Sinumerik), are checked in one place.
+
 Each line is taken apart into words (a letter and a number) once its comments
 and block number are off; a line that is anything else (``#1=5``, ``[1+2]``,
 ``O100 call``) is refused with its line. Every word is then run, skipped with a
@@ -711,7 +715,45 @@ class _Reader:
 
     def cycle(self, code: int, axes: dict[str, _Word], block: _Block) -> None:
         """A canned drilling cycle's moves (module docstring)."""
-        st, n, p, u = self.state, block.number, block.params, self.unit
+        st, n = self.state, block.number
+        given, repeats = self._cycle_words(code, axes, block)
+        x, y, step, r, bottom, clear, q = self._cycle_geometry(code, axes, n)
+        dwell = self._cycle_dwell(code, given, n)
+
+        def go(kind: int, z: float) -> None:
+            self.emit(kind, n, [x, y, z], tolerance=0.0)
+
+        if st.position[2] < r:  # below R: straight up first, where the tool is
+            self.emit(RAPID, n, [*st.position[:2], r], tolerance=0.0)
+        for _ in range(repeats):
+            x, y = x + step[0], y + step[1]
+            self.emit(RAPID, n, [x, y, st.position[2]], tolerance=0.0)
+            go(RAPID, r)
+            if code in (73, 83):
+                depth = r - q
+                while depth > bottom + 1e-12:  # 1 pm: a depth equal to Z is the last feed
+                    go(FEED, depth)
+                    if code == 83:
+                        go(RAPID, r)
+                    go(RAPID, depth + PECK_BACKOFF)
+                    depth -= q
+            go(FEED, bottom)
+            if code in (82, 89):
+                self.emit(DWELL, n, list(st.position), dwell=dwell)
+            if code == 85:
+                go(FEED, r)
+            go(FEED if code == 89 else RAPID, clear)
+
+    def _cycle_words(
+        self, code: int, axes: dict[str, _Word], block: _Block
+    ) -> tuple[dict[str, _Word], int]:
+        """A cycle block's R, Q, P and L words (Fanuc's K as L), and its repeats.
+
+        The modal Z, R, Q and P are kept in ``state.cycle``; the cycle needs the
+        XY plane, a feed, and Z and R (Q for G73/G83, P for G82/G89) given in
+        this block or an earlier one of the cycle.
+        """
+        st, n, p = self.state, block.number, block.params
         name = f"G{code}"
         if st.plane != 17:
             raise _error(n, name, "a canned cycle in G17 (the XY plane)")
@@ -737,6 +779,19 @@ class _Reader:
             repeats = int(given["L"].value)
             if repeats != given["L"].value or repeats < 1:
                 raise _error(n, given["L"].text, "a number of repeats L >= 1")
+        return given, repeats
+
+    def _cycle_geometry(
+        self, code: int, axes: dict[str, _Word], n: int
+    ) -> tuple[float, float, list[float], float, float, float, float]:
+        """Where a cycle drills, in m, in machine coordinates.
+
+        Returns its first hole (x, y), the step between repeats (G91), the R
+        plane, the hole's bottom, the height it clears to (G98/G99) and the peck
+        depth; the first cycle of a run records the starting height.
+        """
+        st, u = self.state, self.unit
+        name = f"G{code}"
         if st.initial is None:
             st.initial = st.position[2]
             if st.retract is None:
@@ -760,6 +815,11 @@ class _Reader:
         q = st.cycle.get("Q", 0.0) * u
         if code in (73, 83) and not q > 0.0:
             raise _error(n, f"Q{st.cycle['Q']:g}", "a peck depth Q > 0")
+        return x, y, step, r, bottom, clear, q
+
+    def _cycle_dwell(self, code: int, given: dict[str, _Word], n: int) -> float:
+        """The dwell at the hole's bottom [s] of G82/G89 (0 for the others)."""
+        st, name = self.state, f"G{code}"
         dwell = 0.0
         if code in (82, 89):
             word = given.get("P", _Word("P", st.cycle["P"], f"P{st.cycle['P']:g}"))
@@ -769,30 +829,7 @@ class _Reader:
             if dwell > LONG_DWELL:
                 self.note(f"dwell {n}", f"{name} {word.text} (line {n}): a dwell of {dwell:g} s "
                           f"at each hole, {reading}")  # fmt: skip
-
-        def go(kind: int, z: float) -> None:
-            self.emit(kind, n, [x, y, z], tolerance=0.0)
-
-        if st.position[2] < r:  # below R: straight up first, where the tool is
-            self.emit(RAPID, n, [*st.position[:2], r], tolerance=0.0)
-        for _ in range(repeats):
-            x, y = x + step[0], y + step[1]
-            self.emit(RAPID, n, [x, y, st.position[2]], tolerance=0.0)
-            go(RAPID, r)
-            if code in (73, 83):
-                depth = r - q
-                while depth > bottom + 1e-12:  # 1 pm: a depth equal to Z is the last feed
-                    go(FEED, depth)
-                    if code == 83:
-                        go(RAPID, r)
-                    go(RAPID, depth + PECK_BACKOFF)
-                    depth -= q
-            go(FEED, bottom)
-            if code in (82, 89):
-                self.emit(DWELL, n, list(st.position), dwell=dwell)
-            if code == 85:
-                go(FEED, r)
-            go(FEED if code == 89 else RAPID, clear)
+        return dwell
 
     def arc(self, target: list[float], centre: dict[str, float], number: int
             ) -> tuple[list[float], float]:  # fmt: skip

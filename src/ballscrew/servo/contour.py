@@ -563,25 +563,8 @@ def run_contour(
     from ..io.extras import require
 
     require("servo", "ballscrew contour")
-    if not 1 <= len(cases) <= 2:
-        raise BallScrewInputError("--case", len(cases), "one case (both axes) or two (x, y)")
-    bad = [d for d in directions if d not in ("CW", "CCW")]
-    if bad or not directions:
-        raise BallScrewInputError("--direction", bad or list(directions), "CW and/or CCW")
-    if pre_rolling_length is not None and not (
-        math.isfinite(pre_rolling_length) and pre_rolling_length > 0.0
-    ):
-        raise BallScrewInputError("--pre-rolling", f"{pre_rolling_length * 1e6:g} um",
-                                  "a positive length, e.g. '5 um'")  # fmt: skip
-    for flag, value, unit in (("--guide-friction", guide_coulomb, "N"),
-                              ("guide_viscous", guide_viscous, "N*s/m")):  # fmt: skip
-        if value is not None and not (math.isfinite(value) and value >= 0.0):
-            raise BallScrewInputError(flag, f"{value:g} {unit}", "a magnitude of 0 or more: "
-                                      "the friction opposes the motion either way, its sign "
-                                      "is the motion's")  # fmt: skip
-    if gains is None and not (math.isfinite(kv) and kv > 0.0):
-        raise BallScrewInputError("--kv", f"{kv:g} 1/s", "a positive position gain, e.g. "
-                                  "'40 1/s' (machine tools run 15 to 70 1/s)")  # fmt: skip
+    _check_contour_inputs(cases, directions, pre_rolling_length, guide_coulomb, guide_viscous,
+                          kv if gains is None else None)  # fmt: skip
     runs = len(directions) * (2 if compensate else 1)
     kv_low = min(g.kv for g in gains) if gains is not None else kv
     ts_run = gains[0].sampling_time if gains is not None else sampling_time
@@ -619,21 +602,98 @@ def run_contour(
     reversals: list[ReversalRun] = []
     step = on_step or (lambda _: None)
     if verdict(checks) != "NOT OK":
-        for d in directions:
-            circles.append(circular_test(axes, g2, radius, feed, clockwise=d == "CW"))
-            step(f"{d} circle")
-            if compensate:
-                circles.append(circular_test(axes, g2, radius, feed, clockwise=d == "CW",
-                                             tables=t2))  # fmt: skip
-                step(f"{d} circle, compensated")
-        acc = feed**2 / radius if reversal_acceleration is None else reversal_acceleration
-        reversals.append(reversal_test(axes[0], g2[0], feed, acc))
-        step("reversal")
+        circles, reversals = _run_tests(axes, g2, t2, radius, feed, directions, compensate,
+                                        reversal_acceleration, step)  # fmt: skip
+    notes = _contour_notes(axes, g2, pair, circles, one_case=len(cases) == 1, rigid=rigid,
+                           top=top)  # fmt: skip
+    return ContourResult(axes, g2, figures, radius, feed, tuple(circles), tuple(reversals), t2,
+                         model, time.process_time() - start, tuple(notes),
+                         tuple(checks))  # fmt: skip
+
+
+def _check_contour_inputs(
+    cases: Sequence[Case],
+    directions: Sequence[str],
+    pre_rolling_length: float | None,
+    guide_coulomb: float | None,
+    guide_viscous: float,
+    kv: float | None,
+) -> None:
+    """Refuse :func:`run_contour`'s arguments that cannot run, naming the CLI flag.
+
+    ``kv`` None: the gains are given, the position gain is not checked.
+    """
+    if not 1 <= len(cases) <= 2:
+        raise BallScrewInputError("--case", len(cases), "one case (both axes) or two (x, y)")
+    bad = [d for d in directions if d not in ("CW", "CCW")]
+    if bad or not directions:
+        raise BallScrewInputError("--direction", bad or list(directions), "CW and/or CCW")
+    if pre_rolling_length is not None and not (
+        math.isfinite(pre_rolling_length) and pre_rolling_length > 0.0
+    ):
+        raise BallScrewInputError("--pre-rolling", f"{pre_rolling_length * 1e6:g} um",
+                                  "a positive length, e.g. '5 um'")  # fmt: skip
+    for flag, value, unit in (("--guide-friction", guide_coulomb, "N"),
+                              ("guide_viscous", guide_viscous, "N*s/m")):  # fmt: skip
+        if value is not None and not (math.isfinite(value) and value >= 0.0):
+            raise BallScrewInputError(flag, f"{value:g} {unit}", "a magnitude of 0 or more: "
+                                      "the friction opposes the motion either way, its sign "
+                                      "is the motion's")  # fmt: skip
+    if kv is not None and not (math.isfinite(kv) and kv > 0.0):
+        raise BallScrewInputError("--kv", f"{kv:g} 1/s", "a positive position gain, e.g. "
+                                  "'40 1/s' (machine tools run 15 to 70 1/s)")  # fmt: skip
+
+
+def _run_tests(
+    axes: tuple[AxisDynamics, AxisDynamics],
+    gains: tuple[Gains, Gains],
+    tables: tuple[CompensationTable, CompensationTable],
+    radius: float,
+    feed: float,
+    directions: Sequence[str],
+    compensate: bool,
+    reversal_acceleration: float | None,
+    step: Callable[[str], None],
+) -> tuple[list[CircleRun], list[ReversalRun]]:
+    """The circles of each direction and the x axis's reversal, each also compensated.
+
+    The reversal runs at ``reversal_acceleration`` [m/s²], default the circle's
+    :math:`v^2/R`; ``step`` is called after each run.
+    """
+    circles: list[CircleRun] = []
+    reversals: list[ReversalRun] = []
+    for d in directions:
+        circles.append(circular_test(axes, gains, radius, feed, clockwise=d == "CW"))
+        step(f"{d} circle")
         if compensate:
-            reversals.append(reversal_test(axes[0], g2[0], feed, acc, t2[0]))
-            step("reversal, compensated")
+            circles.append(circular_test(axes, gains, radius, feed, clockwise=d == "CW",
+                                         tables=tables))  # fmt: skip
+            step(f"{d} circle, compensated")
+    acc = feed**2 / radius if reversal_acceleration is None else reversal_acceleration
+    reversals.append(reversal_test(axes[0], gains[0], feed, acc))
+    step("reversal")
+    if compensate:
+        reversals.append(reversal_test(axes[0], gains[0], feed, acc, tables[0]))
+        step("reversal, compensated")
+    return circles, reversals
+
+
+def _contour_notes(
+    axes: tuple[AxisDynamics, AxisDynamics],
+    gains: tuple[Gains, Gains],
+    pair: tuple[Case, Case],
+    circles: Sequence[CircleRun],
+    *,
+    one_case: bool,
+    rigid: bool,
+    top: float,
+) -> list[str]:
+    """The notes of a circular test: the axes', the loops', unsettled circles, the method.
+
+    ``top`` [m/s] is the highest speed of the compensation tables.
+    """
     notes = [f"{name}: {n}" for name, a in zip("xy", axes, strict=True) for n in a.notes]
-    notes += [f"{name}: {n}" for name, g in zip("xy", g2, strict=True) for n in g.notes]
+    notes += [f"{name}: {n}" for name, g in zip("xy", gains, strict=True) for n in g.notes]
     for c in circles:
         if not c.settled:
             notes.append(f"the {'CW' if c.clockwise else 'CCW'} circle"
@@ -647,7 +707,7 @@ def run_contour(
             notes.append(f"{name}: no [motor] {' or '.join(missing)} in the case: the feed's "
                          "motor speed, torque and acceleration are not checked against "
                          "it")  # fmt: skip
-    if len(cases) == 1:
+    if one_case:
         notes.append("one case for both axes")
     if rigid:
         notes.append("rigid axes (one mass each): no lost motion between motor and table")
@@ -655,9 +715,7 @@ def run_contour(
                  f"{top:.4g} m/s, looked up at the commanded velocity and applied "
                  f"{COMPENSATION_DELAY} sample later, as a controller does")  # fmt: skip
     notes.append(f"circle: a lead-in arc of {LEAD_IN_TIME_CONSTANTS:g}/k_v "
-                 f"({LEAD_IN_TIME_CONSTANTS / min(g.kv for g in g2):.3g} s) at the feed before "
-                 "the evaluated revolution, so that G, H and the glitches are the settled "
-                 "circle's")  # fmt: skip
-    return ContourResult(axes, g2, figures, radius, feed, tuple(circles), tuple(reversals), t2,
-                         model, time.process_time() - start, tuple(notes),
-                         tuple(checks))  # fmt: skip
+                 f"({LEAD_IN_TIME_CONSTANTS / min(g.kv for g in gains):.3g} s) at the feed "
+                 "before the evaluated revolution, so that G, H and the glitches are the "
+                 "settled circle's")  # fmt: skip
+    return notes

@@ -123,19 +123,59 @@ def simulate_axis(
     if not (xr.shape == vr.shape == ar.shape and xr.ndim == 1 and xr.size >= 2):
         raise BallScrewInputError("reference", list(xr.shape), "three 1-D arrays of one length")
     comp = np.zeros_like(xr) if compensation is None else np.asarray(compensation, dtype=float)
-    ts = gains.sampling_time
-    n = substeps(axis, ts)
-    h = ts / n
     # Per-sample inputs, vectorised: feed-forward force of the reference.
     ff = (gains.acceleration_ff * axis.mass * ar + comp).tolist()
     vff = (gains.velocity_ff * vr).tolist()
+    target = xr if position_offset is None else xr + np.asarray(position_offset, dtype=float)
+    out_motor, out_table, out_force, out_fric, diverged = _integrate(
+        axis, gains, target.tolist(), ff, vff, float(xr[0])
+    )
+    if diverged:
+        raise BallScrewInputError(
+            "gains", f"kv {gains.kv:g} 1/s, kp {gains.kp:.4g} N*s/m", "a stable loop: the "
+            "simulated axis diverged (lower k_v or the velocity loop's crossover)",
+        )  # fmt: skip
+    time = np.asarray(np.arange(xr.size) * gains.sampling_time, dtype=float)
+    return Trace(time, xr, vr, np.asarray(out_motor), np.asarray(out_table),
+                 np.asarray(out_force), np.asarray(out_fric))  # fmt: skip
+
+
+def _guide_constants(axis: AxisDynamics) -> tuple[float, float, float, float]:
+    """The guideway's friction constants, for the bristle model of the sample loop.
+
+    Returns its Coulomb force [N], viscous coefficient [N·s/m], bristle stiffness
+    [N/m] (0 without Coulomb friction) and critical bristle damping [N·s/m].
+    """
+    gc, gv = axis.guide_coulomb, axis.guide_viscous
+    g0 = gc / GUIDE_PRESLIDING if gc > 0.0 else 0.0
+    g1 = 2.0 * math.sqrt(g0 * (axis.mass if axis.rigid else axis.table_mass))
+    return gc, gv, g0, g1
+
+
+def _integrate(
+    axis: AxisDynamics,
+    gains: Gains,
+    xr_l: list[float],
+    ff: list[float],
+    vff: list[float],
+    x0: float,
+) -> tuple[list[float], list[float], list[float], list[float], bool]:
+    """The sample loop of :func:`simulate_axis`, in plain floats (the hot path).
+
+    ``xr_l`` is the position the loop follows [m], ``ff`` the feed-forward force
+    [N] and ``vff`` the speed feed-forward [m/s] of each sample; ``x0`` [m] the
+    motor's position at rest at the start. Returns the motor and table positions
+    [m], the motor force [N] and the screw's friction [N] at each sample, and
+    whether the axis diverged (a non-finite final position).
+    """
+    ts = gains.sampling_time
+    n = substeps(axis, ts)
+    h = ts / n
     xs = axis.speeds.tolist()
     gs = np.abs(axis.friction).tolist()
     screw_friction = bool(np.any(axis.friction))
     s0, s1 = axis.bristle_stiffness, axis.bristle_damping
-    gc, gv = axis.guide_coulomb, axis.guide_viscous
-    g0 = gc / GUIDE_PRESLIDING if gc > 0.0 else 0.0
-    g1 = 2.0 * math.sqrt(g0 * (axis.mass if axis.rigid else axis.table_mass))
+    gc, gv, g0, g1 = _guide_constants(axis)
     m1, m2, k, c = axis.motor_mass, axis.table_mass, axis.stiffness, axis.damping
     rigid, mass = axis.rigid, axis.mass
     on_motor = rigid or axis.drag_side == "motor"
@@ -145,20 +185,18 @@ def simulate_axis(
     motor_fb = gains.feedback == "motor"
     # Initial state: at rest at the first reference point, the spring carrying the
     # external force, the integrator and the motor holding it.
-    x1 = x2 = float(xr[0])
+    x1 = x2 = x0
     if not rigid:
         x2 = x1 + ext / k
     v1 = v2 = 0.0
     z = zg = 0.0
     force = integ = -ext
     motor_prev = x1
-    size = xr.size
+    size = len(xr_l)
     out_motor = [0.0] * size
     out_table = [0.0] * size
     out_force = [0.0] * size
     out_fric = [0.0] * size
-    target = xr if position_offset is None else xr + np.asarray(position_offset, dtype=float)
-    xr_l = target.tolist()
     fric = 0.0
     for i in range(size):
         out_motor[i] = x1
@@ -208,11 +246,4 @@ def simulate_axis(
                 x2 += v2 * h
         out_force[i] = force
         out_fric[i] = fric
-    if not (math.isfinite(x1) and math.isfinite(x2)):
-        raise BallScrewInputError(
-            "gains", f"kv {kv:g} 1/s, kp {kp:.4g} N*s/m", "a stable loop: the simulated axis "
-            "diverged (lower k_v or the velocity loop's crossover)",
-        )  # fmt: skip
-    time = np.asarray(np.arange(size) * ts, dtype=float)
-    return Trace(time, xr, vr, np.asarray(out_motor), np.asarray(out_table),
-                 np.asarray(out_force), np.asarray(out_fric))  # fmt: skip
+    return out_motor, out_table, out_force, out_fric, not (math.isfinite(x1) and math.isfinite(x2))
