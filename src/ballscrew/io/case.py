@@ -498,34 +498,8 @@ def _read_case(text: str, source: str) -> Case:
     check_operating_bounds(speed, temperature, axial, "operation.")
     lub.check_temperature("operation.temperature", temperature)
     st = data.study
-    wiper = 0.0
-    if s.wiper_drag is not None:
-        raw = _unwrap("screw.wiper_drag", s.wiper_drag, notes)
-        wiper = _wiper_drag("screw.wiper_drag", raw, st.model_parameters, screw.pitch_diameter)
-    scatter = None
-    if s.contact_angle_scatter is not None:
-        scatter = si("screw", "contact_angle_scatter", s.contact_angle_scatter, "rad")
-        if not (math.isfinite(scatter) and 0.0 <= scatter < 0.2):
-            raise BallScrewInputError(
-                "screw.contact_angle_scatter", s.contact_angle_scatter,
-                "an angle from 0 to 0.2 rad (11 deg) with its unit, e.g. '0.3 deg'",
-            )  # fmt: skip
-    drag = tuple(si("study", f"drag_torques[{i}]", v, "N*m") for i, v in enumerate(st.drag_torques))
-    band = tuple(
-        si("study", f"measured_range[{i}]", v, "N*m") for i, v in enumerate(st.measured_range)
-    )
-    temps = {
-        name: tuple(si("study", f"lubricant_temperatures.{name}", v, "degC") for v in values)
-        for name, values in st.lubricant_temperatures.items()
-    }
-    for name in temps:
-        if name != lub.name:
-            lubricants.get(name)  # unknown names fail here, listing the bundled ones
-    study_temperature = (
-        float(temperature[0])
-        if st.temperature is None
-        else si("study", "temperature", st.temperature, "degC")
-    )
+    wiper, scatter = _screw_extras(s, st, screw, si, notes)
+    drag, band, temps, study_temperature = _study(st, lub, float(temperature[0]), si)
     axis, thermal = _axis(data, si), _given_si(data, si, _THERMAL_UNITS)
     _axis_plausible(data.axis, screw, ratings.static, axis, thermal)
     motor, check = _motor(data, si), _check(data, si)
@@ -561,6 +535,49 @@ def _read_case(text: str, source: str) -> Case:
         designation=_designation(data.screw),
         given_si={k: v for k, v in given.items() if k in sources and sources[k] != "default"},
     )
+
+
+def _screw_extras(
+    s: ScrewSection, st: Any, screw: BallScrew, si: Callable[..., float],
+    notes: list[Assumption],
+) -> tuple[float, float | None]:  # fmt: skip
+    """``[screw]``'s wiper drag [N·m] (0: none) and contact-angle scatter [rad] (None)."""
+    wiper = 0.0
+    if s.wiper_drag is not None:
+        raw = _unwrap("screw.wiper_drag", s.wiper_drag, notes)
+        wiper = _wiper_drag("screw.wiper_drag", raw, st.model_parameters, screw.pitch_diameter)
+    scatter = None
+    if s.contact_angle_scatter is not None:
+        scatter = si("screw", "contact_angle_scatter", s.contact_angle_scatter, "rad")
+        if not (math.isfinite(scatter) and 0.0 <= scatter < 0.2):
+            raise BallScrewInputError(
+                "screw.contact_angle_scatter", s.contact_angle_scatter,
+                "an angle from 0 to 0.2 rad (11 deg) with its unit, e.g. '0.3 deg'",
+            )  # fmt: skip
+    return wiper, scatter
+
+
+def _study(
+    st: Any, lub: Lubricant, first_temperature: float, si: Callable[..., float]
+) -> tuple[tuple[float, ...], tuple[float, ...], dict[str, tuple[float, ...]], float]:
+    """``[study]`` in SI: drag torques, measured range, lubricant temperatures, temperature."""
+    drag = tuple(si("study", f"drag_torques[{i}]", v, "N*m") for i, v in enumerate(st.drag_torques))
+    band = tuple(
+        si("study", f"measured_range[{i}]", v, "N*m") for i, v in enumerate(st.measured_range)
+    )
+    temps = {
+        name: tuple(si("study", f"lubricant_temperatures.{name}", v, "degC") for v in values)
+        for name, values in st.lubricant_temperatures.items()
+    }
+    for name in temps:
+        if name != lub.name:
+            lubricants.get(name)  # unknown names fail here, listing the bundled ones
+    study_temperature = (
+        first_temperature
+        if st.temperature is None
+        else si("study", "temperature", st.temperature, "degC")
+    )
+    return drag, band, temps, study_temperature
 
 
 def _designation(s: ScrewSection) -> str:

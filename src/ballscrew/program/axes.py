@@ -1,5 +1,9 @@
 r"""A machine through its part program: each feed axis's torques, energies, heat and reversals.
 
+This module is long on purpose: it is the one place where the planned motion meets each
+axis (its cycle, its exact distances, its heat, its reversals, its drive losses and its
+verdicts), and those steps share one time series and one set of notes per axis.
+
 :func:`run_program` reads the program (:mod:`.gcode`), plans its jerk-limited
 motion (:mod:`.planner`) and runs every linear axis of the machine through it
 with the axis wing (:mod:`ballscrew.axis`):

@@ -328,50 +328,86 @@ def _command(
 ) -> None:  # fmt: skip
     """One canonical command into the state and the blocks."""
     if name in ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED", "STRAIGHT_PROBE"):
-        v = _numbers(args, 6)
-        turn = _rotary(state, v, lines, state.rotary_axes)
-        end = state.machine(v[0], v[1], v[2])
-        if end != state.position or turn != state.rotary:
-            kind = RAPID if name == "STRAIGHT_TRAVERSE" else FEED
-            if name == "STRAIGHT_PROBE":
-                notes.setdefault("probe", f"a probing move (G38.2 to G38.5), line {state.line}: "
-                                 "run as a feed move to its target, the probe not tripping "
-                                 "(the longest the move can be; a probe that trips stops "
-                                 "it short)")  # fmt: skip
-            if kind == RAPID:
-                feed = math.nan
-            elif end != state.position:
-                feed = _feed(state, lines, notes)
-            else:  # a rotary axis alone: F in degrees per minute
-                feed = _rotary_feed(state, lines)
-            used.update(k for k, a, b in zip("XYZ", end, state.position, strict=True) if a != b)
-            turned = [k for k, a, b in zip("ABC", turn, state.rotary, strict=True) if a != b]
-            if turned:
-                used.update(turned)
-                notes.setdefault("rotary", f"{', '.join(turned)} (rotary, line {state.line}): "
-                                 "timed with the machine file's limits, left out of the "
-                                 "ball-screw energy")  # fmt: skip
-            _row(state, rows, kind, end, feed, turn=turn)
+        _straight(state, name, _numbers(args, 6), lines, rows, notes, used)
     elif name == "RIGID_TAP":
-        # G33.1: in to the point at the thread's pitch per spindle turn, then out to the
-        # start at the same pitch as the spindle reverses (LinuxCNC's motion controller).
-        v = _numbers(args, 3)
-        bottom, top = state.machine(v[0], v[1], v[2]), state.position
-        if state.synchronised is None:
-            raise _refuse(state, lines, "rigid tapping with its pitch (K)")
-        feed = _feed(state, lines, notes)
-        notes.setdefault("tap", f"rigid tapping (G33.1), line {state.line}: in and out at "
-                         "the pitch times the spindle speed; the spindle's reversal is not "
-                         "timed")  # fmt: skip
-        for b in (bottom, top) if bottom != top else ():
-            _row(state, rows, FEED, b, feed)
-        used.update(k for k, p, q in zip("XYZ", top, bottom, strict=True) if p != q)
+        _rigid_tap(state, _numbers(args, 3), lines, rows, notes, used)
     elif name == "ARC_FEED":
         _arc(state, _numbers(args, 9), lines, rows, notes, used)
     elif name == "DWELL":
         seconds = _numbers(args)[0]
         _row(state, rows, DWELL, state.position, math.nan, dwell=seconds)
-    elif name == "SET_FEED_RATE":
+    elif name == "CHANGE_TOOL" and state.change_time is not None:
+        notes.setdefault("M6", f"tool change (M6), line {state.line}: {state.change_time:g} s "
+                         "with the feed axes still (machine.tool_change_time)")  # fmt: skip
+        _row(state, rows, DWELL, state.position, math.nan, dwell=state.change_time)
+    elif name in ("PROGRAM_END", "FINISH"):
+        state.ended = True
+    elif _setting(state, name, args, lines, notes):
+        pass
+    elif name in _SKIPPED:
+        _skip(state, name, notes)
+    elif name in _REFUSED:
+        raise _refuse(state, lines, f"lines, arcs and dwells ({_REFUSED[name]} is not read)")
+    elif name not in _QUIET:
+        notes.setdefault(name, f"{name} (LinuxCNC canonical command, line {state.line}): "
+                         "skipped, not a motion of the feed axes")  # fmt: skip
+
+
+def _straight(
+    state: _State, name: str, v: list[float], lines: list[str], rows: list[tuple[Any, ...]],
+    notes: dict[str, str], used: set[str],
+) -> None:  # fmt: skip
+    """A straight traverse, feed or probing move (``X, Y, Z, A, B, C``) into a block."""
+    turn = _rotary(state, v, lines, state.rotary_axes)
+    end = state.machine(v[0], v[1], v[2])
+    if end == state.position and turn == state.rotary:
+        return
+    kind = RAPID if name == "STRAIGHT_TRAVERSE" else FEED
+    if name == "STRAIGHT_PROBE":
+        notes.setdefault("probe", f"a probing move (G38.2 to G38.5), line {state.line}: "
+                         "run as a feed move to its target, the probe not tripping "
+                         "(the longest the move can be; a probe that trips stops "
+                         "it short)")  # fmt: skip
+    if kind == RAPID:
+        feed = math.nan
+    elif end != state.position:
+        feed = _feed(state, lines, notes)
+    else:  # a rotary axis alone: F in degrees per minute
+        feed = _rotary_feed(state, lines)
+    used.update(k for k, a, b in zip("XYZ", end, state.position, strict=True) if a != b)
+    turned = [k for k, a, b in zip("ABC", turn, state.rotary, strict=True) if a != b]
+    if turned:
+        used.update(turned)
+        notes.setdefault("rotary", f"{', '.join(turned)} (rotary, line {state.line}): "
+                         "timed with the machine file's limits, left out of the "
+                         "ball-screw energy")  # fmt: skip
+    _row(state, rows, kind, end, feed, turn=turn)
+
+
+def _rigid_tap(
+    state: _State, v: list[float], lines: list[str], rows: list[tuple[Any, ...]],
+    notes: dict[str, str], used: set[str],
+) -> None:  # fmt: skip
+    """G33.1, rigid tapping: in and out at the thread's pitch per spindle turn.
+
+    In to the point, then out to the start at the same pitch as the spindle reverses
+    (LinuxCNC's motion controller).
+    """
+    bottom, top = state.machine(v[0], v[1], v[2]), state.position
+    if state.synchronised is None:
+        raise _refuse(state, lines, "rigid tapping with its pitch (K)")
+    feed = _feed(state, lines, notes)
+    notes.setdefault("tap", f"rigid tapping (G33.1), line {state.line}: in and out at "
+                     "the pitch times the spindle speed; the spindle's reversal is not "
+                     "timed")  # fmt: skip
+    for b in (bottom, top) if bottom != top else ():
+        _row(state, rows, FEED, b, feed)
+    used.update(k for k, p, q in zip("XYZ", top, bottom, strict=True) if p != q)
+
+
+def _setting(state: _State, name: str, args: str, lines: list[str], notes: dict[str, str]) -> bool:
+    """A command that sets the state (feed, units, plane, offsets, rotation); whether it was."""
+    if name == "SET_FEED_RATE":
         state.rate = _numbers(args)[0]
         state.feed = state.rate * state.unit
     elif name == "SET_FEED_MODE":
@@ -395,7 +431,18 @@ def _command(
         state.unit = _UNITS[args.strip()]
     elif name == "SELECT_PLANE":
         state.plane = _PLANES.get(args.strip(), 0)
-    elif name == "SET_G5X_OFFSET":
+    elif name in ("SET_G5X_OFFSET", "SET_G92_OFFSET", "USE_TOOL_LENGTH_OFFSET"):
+        _offset(state, name, args)
+    elif name == "SET_XY_ROTATION":
+        state.rotation = math.radians(_numbers(args)[0])
+    else:
+        return False
+    return True
+
+
+def _offset(state: _State, name: str, args: str) -> None:
+    """A work (G5x), G92 or tool-length offset: linear in the program's unit, rotary as is."""
+    if name == "SET_G5X_OFFSET":
         v = _numbers(args, 4)
         state.g5x = [x * state.unit for x in v[1:4]]
         state.g5x_abc = [*v[4:7], 0.0, 0.0, 0.0][:3]
@@ -403,25 +450,10 @@ def _command(
         v = _numbers(args, 3)
         state.g92 = [x * state.unit for x in v[0:3]]
         state.g92_abc = [*v[3:6], 0.0, 0.0, 0.0][:3]
-    elif name == "USE_TOOL_LENGTH_OFFSET":
+    else:
         v = _numbers(args, 3)
         state.tool = [x * state.unit for x in v[0:3]]
         state.tool_abc = [*v[3:6], 0.0, 0.0, 0.0][:3]
-    elif name == "CHANGE_TOOL" and state.change_time is not None:
-        notes.setdefault("M6", f"tool change (M6), line {state.line}: {state.change_time:g} s "
-                         "with the feed axes still (machine.tool_change_time)")  # fmt: skip
-        _row(state, rows, DWELL, state.position, math.nan, dwell=state.change_time)
-    elif name == "SET_XY_ROTATION":
-        state.rotation = math.radians(_numbers(args)[0])
-    elif name in ("PROGRAM_END", "FINISH"):
-        state.ended = True
-    elif name in _SKIPPED:
-        _skip(state, name, notes)
-    elif name in _REFUSED:
-        raise _refuse(state, lines, f"lines, arcs and dwells ({_REFUSED[name]} is not read)")
-    elif name not in _QUIET:
-        notes.setdefault(name, f"{name} (LinuxCNC canonical command, line {state.line}): "
-                         "skipped, not a motion of the feed axes")  # fmt: skip
 
 
 def _skip(state: _State, name: str, notes: dict[str, str]) -> None:
