@@ -96,3 +96,16 @@ def test_a_program_without_time_stands_at_its_start() -> None:
         motion = plan(read_program(text), lim)
         assert motion.time.tolist() == [0.0] and motion.duration == 0.0
         assert not np.any(motion.position) and not np.any(motion.velocity)
+
+
+def test_a_centre_without_axis_words_is_a_full_circle_as_linuxcnc_reads_it() -> None:
+    # LinuxCNC's 3dtest.ngc writes 'g17 g02 i.5 j.5'; rs274 prints it as
+    # ARC_FEED(1.0000, 0.0000, 1.5000, 0.5000, -1, ...): a whole clockwise turn about
+    # (1.5, 0.5) mm back to (1, 0), and the same for a following 'I0.5 J0.5' in G2's mode.
+    from ballscrew.program.gcode import ARC, read_program
+
+    p = read_program("G21\nG1 X1 F100\ng02 i.5 j.5\nI0.5 J0.5\nM2\n")
+    assert p.kind.tolist()[1:] == [ARC, ARC]
+    np.testing.assert_allclose(p.sweep[1:], [-2 * np.pi] * 2)
+    np.testing.assert_allclose(p.centre[1:, :2], [[1.5e-3, 0.5e-3]] * 2, atol=1e-15)
+    np.testing.assert_allclose(p.end[1:], [[1e-3, 0.0, 0.0]] * 2, atol=1e-15)

@@ -619,7 +619,10 @@ class _Reader:
         if home == 53:
             self.machine_move(axes, block)
             return
-        if not axes:
+        # G2/G3 with a centre and no axis word: a full circle back to where it starts (as
+        # LinuxCNC reads it: 3dtest.ngc's 'g17 g02 i.5 j.5').
+        full_circle = st.motion in (2, 3) and any(k in p for k in "IJK")
+        if not axes and not full_circle:
             if code in _CYCLES:
                 raise _error(n, block.g[1][1], "X, Y or Z with a canned cycle")
             return
