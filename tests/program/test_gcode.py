@@ -109,3 +109,15 @@ def test_a_centre_without_axis_words_is_a_full_circle_as_linuxcnc_reads_it() -> 
     np.testing.assert_allclose(p.sweep[1:], [-2 * np.pi] * 2)
     np.testing.assert_allclose(p.centre[1:, :2], [[1.5e-3, 0.5e-3]] * 2, atol=1e-15)
     np.testing.assert_allclose(p.end[1:], [[1e-3, 0.0, 0.0]] * 2, atol=1e-15)
+
+
+def test_a_form_feed_does_not_shift_the_line_numbers() -> None:
+    # Issue 52: Python's splitlines breaks at a form feed (a post's page break), so every
+    # error after it named the wrong line. Lines are counted at CR LF, LF and CR only.
+    from ballscrew.program.gcode import read_program
+
+    with pytest.raises(BallScrewInputError) as info:
+        read_program("G21\r\nG1 X1 F100\n\fG1 X2\nG1 X3 Q\nM2\n")
+    assert info.value.field == "program line 4"
+    p = read_program("G21\nG1 X1 F100\n\f\x0bG1 X2\rG1 X3\nM2\n")
+    assert p.line.tolist() == [2, 3, 4]

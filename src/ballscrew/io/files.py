@@ -35,6 +35,7 @@ __all__ = [
     "csv_rows",
     "deferred_signals",
     "exclusive_lock",
+    "program_lines",
     "read_input_text",
     "swap_in",
     "sweep_stale_folders",
@@ -464,3 +465,18 @@ class OutputSet:
             _remove_tree(old)
         for path, data in direct:
             atomic_write(path, data)
+
+
+def program_lines(text: str) -> list[str]:
+    r"""A text's lines as a program's line numbers count them: at CR LF, LF or CR only.
+
+    Python's ``splitlines`` also breaks at a form feed, a vertical tab and the Unicode line
+    separators, which a G-code control reads as characters of a line: a form feed that a
+    post writes as a page break would shift every line number after it.
+
+    >>> program_lines("G1 X1\r\n\fG1 X2\nG1 X3")
+    ['G1 X1', '\x0cG1 X2', 'G1 X3']
+    """
+    if not text:
+        return []
+    return re.split(r"\r\n|\r|\n", text.removesuffix("\n").removesuffix("\r"))

@@ -96,6 +96,7 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from ..errors import BallScrewInputError, FloatArray
+from ..io.files import program_lines
 
 __all__ = [
     "ARC", "DWELL", "FEED", "RAPID", "Program", "Skipped", "program_from_rows", "read_program",
@@ -971,7 +972,7 @@ def read_program(text: str, *, arc_tolerance: float = 2e-6, start: Any = (0.0, 0
         for k, note in enumerate(extra):
             reader.note(f"sinumerik {k}", note)
     ended = False
-    for number, raw in enumerate(text.splitlines(), start=1):
+    for number, raw in enumerate(program_lines(text), start=1):
         words = _words(raw, number)
         if not words:
             if raw.strip().startswith("%"):

@@ -85,6 +85,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import BallScrewInputError
+from ..io.files import program_lines
 from .gcode import ARC, DWELL, FEED, RAPID, Program, program_from_rows, read_program
 
 __all__ = [
@@ -233,7 +234,7 @@ def _refuse(state: _State, lines: list[str], allowed: str) -> BallScrewInputErro
 def _marked(text: str) -> str:
     """The program with every line that has words given the N word of its line number."""
     out = []
-    for number, raw in enumerate(text.splitlines(), start=1):
+    for number, raw in enumerate(program_lines(text), start=1):
         stripped = raw.strip()
         if not stripped or stripped.startswith("%"):
             out.append(raw)
@@ -628,7 +629,7 @@ def read_program_rs274(
                                   "reader")  # fmt: skip
     if text.startswith("\ufeff"):
         text = text[1:]
-    lines = text.splitlines()
+    lines = program_lines(text)
     cwd = Path(directory) if directory is not None else Path.cwd()
     with tempfile.TemporaryDirectory(prefix="ballscrew-rs274-") as tmp:
         source = Path(tmp) / "program.ngc"

@@ -71,6 +71,7 @@ import re
 from dataclasses import dataclass, field
 
 from ..errors import BallScrewInputError
+from ..io.files import program_lines
 
 __all__ = ["DrillingCycle", "drilling_cycle", "to_rs274"]
 
@@ -357,7 +358,7 @@ def to_rs274(text: str) -> tuple[str, list[str]]:
     if text.startswith("\ufeff"):
         text = text[1:]
         state.note("BOM", "a byte-order mark at the start: dropped", 1)
-    out = [_line(raw, number, state) for number, raw in enumerate(text.splitlines(), start=1)]
+    out = [_line(raw, number, state) for number, raw in enumerate(program_lines(text), start=1)]
     if not state.units and any(out):
         state.note("units", "no G70, G71, G700 or G710: millimetres and mm/min, the basic "
                    "system taken as metric (the delivery setting)", 1)  # fmt: skip
