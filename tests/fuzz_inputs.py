@@ -117,9 +117,9 @@ ODD_HEADERS = [
 ]
 
 
-def mutate_case(rng: random.Random) -> str:
-    """One randomly mutated case text."""
-    text = BASE_CASE
+def mutate_case(rng: random.Random, base: str = BASE_CASE) -> str:
+    """One randomly mutated case text (or another TOML text, ``base``: a machine file)."""
+    text = base
     for _ in range(rng.randint(1, 3)):
         kind = rng.randrange(6)
         lines = text.splitlines()

@@ -96,3 +96,21 @@ def test_huge_and_tiny_values_are_refused_or_finite() -> None:
             continue
         r = friction_torque(case.screw, case.lubricant, speed=10.0, temperature=20.0)
         assert math.isfinite(float(r.total))
+
+
+def test_the_machine_file_loads_or_is_refused_naming_the_key() -> None:
+    # Issue 52: the machine file joins the fuzzed inputs. Values replaced by odd ones, lines
+    # deleted, doubled or added, the text cut, units swapped: the loader answers with a
+    # machine or an input error, never another exception.
+    from ballscrew.io.machine import example_machine_text, parse_machine
+    from fuzz_inputs import classify
+
+    rng = random.Random(2026)
+    base = example_machine_text()
+    counts: dict[str, int] = {}
+    for _ in range(1000):
+        text = mutate_case(rng, base)
+        outcome = classify(lambda t=text: parse_machine(t, folder=None)).split("\n")[0]
+        assert not outcome.startswith("FAIL"), (outcome, text)
+        counts[outcome] = counts.get(outcome, 0) + 1
+    assert counts.get("ok", 0) > 0 and counts.get("input-error", 0) > 0, counts
