@@ -83,24 +83,31 @@ def test_a_refused_request_closes_its_connection() -> None:
 
 @pytest.mark.slow
 def test_light_requests_are_answered_while_heavy_ones_run() -> None:
-    # Two circular tests of a 58 s revolution (within the page's 60 s) each take the whole
-    # 10 s budget in the heavy pool; the page's torque requests go to the other workers and
-    # are answered meanwhile, each in well under the budget.
+    # Two circular tests of a 58 s revolution (within the page's 60 s) each take seconds to
+    # the whole 10 s budget in the heavy pool; the page's torque requests go to the other
+    # workers and are answered meanwhile, each in well under the budget.
     heavy = {"case": CASE, "radius": "100 mm", "feed": "0.65 m/min"}
     with running_server() as url:
-        results: list[int] = []
-        threads = [threading.Thread(target=lambda: results.append(_post(url, "/api/contour",
-                                                                         heavy)[0]))
-                   for _ in range(2)]  # fmt: skip
+        spans: list[tuple[int, float, float]] = []
+
+        def run_heavy() -> None:
+            start = time.monotonic()
+            status = _post(url, "/api/contour", heavy)[0]
+            spans.append((status, start, time.monotonic()))
+
+        threads = [threading.Thread(target=run_heavy) for _ in range(2)]
         for t in threads:
             t.start()
         time.sleep(1.0)  # the heavy requests are in their worker
         light = []
         for _ in range(5):
-            start = time.perf_counter()
+            start = time.monotonic()
             status, _ = _post(url, "/api/torque", {**CASE, "model": "catalog"}, timeout=20)
-            light.append((status, time.perf_counter() - start))
+            light.append((status, start, time.monotonic()))
         for t in threads:
             t.join(timeout=60)
-        assert all(status == 200 and seconds < 3.0 for status, seconds in light), light
-        assert sorted(results) == [503, 503]  # the heavy ones: past the budget, or kept waiting
+        assert all(status in (200, 503) for status, _, _ in spans), spans
+        busy_until = max(end for _, _, end in spans)
+        during = [(status, end - start) for status, start, end in light if start < busy_until]
+        assert len(during) >= 2, (light, spans)  # light requests sent while heavy ones ran
+        assert all(status == 200 and seconds < 3.0 for status, seconds in during), during
