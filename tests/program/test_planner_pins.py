@@ -15,8 +15,9 @@ import math
 import numpy as np
 import pytest
 
+from ballscrew.errors import BallScrewInputError
 from ballscrew.program.gcode import read_program
-from ballscrew.program.planner import MARGIN, Limits, plan
+from ballscrew.program.planner import MARGIN, Limits, plan, speed_change_distance
 
 LIMITS = Limits(
     feed=np.array([0.5, 0.5, 0.25]),
@@ -57,33 +58,55 @@ def test_a_diagonal_projects_each_axis_limit_onto_the_path() -> None:
     assert np.max(np.abs(m.jerk[:, 1])) == pytest.approx(60.0, rel=1e-9)
 
 
-@pytest.mark.parametrize(
-    ("text", "slow", "normal"),
-    [
-        ("G17 G3 X40 Y0 I20 J0 F30000\n", 1, 2),  # the XY plane's second axis: Y
-        ("G18 G3 X40 Z0 I20 K0 F30000\n", 0, 1),  # ZX: X
-        ("G19 G3 Y40 Z0 J20 K0 F30000\n", 2, 0),  # YZ: Z
-    ],
-)
-def test_an_arc_takes_the_slower_in_plane_axis(text: str, slow: int, normal: int) -> None:
-    # Every axis at 1 m/s, 4 m/s^2, 100 m/s^3 but the plane's second axis at 1 m/s^2: half
-    # of it for the centripetal acceleration, v = sqrt(0.5 x 1 x R) = 0.1 m/s on R = 20 mm
-    # (the jerk's bound (0.5 x 100 x R^2)^(1/3) = 0.27 m/s does not bind), the other half
-    # along the path, 0.5 m/s^2, and half the jerk, 50 m/s^3.
+ARCS = {
+    # plane: (the arc from a start off the origin, its in-plane axes, its normal axis)
+    17: ("G0 X10 Y5\nG4 P0.1\nG17 G3 X50 Y5 I20 J0 F30000\n", (0, 1), 2),
+    18: ("G0 X10 Z5\nG4 P0.1\nG18 G3 X50 Z5 I20 K0 F30000\n", (2, 0), 1),
+    19: ("G0 Y10 Z5\nG4 P0.1\nG19 G3 Y50 Z5 J20 K0 F30000\n", (1, 2), 0),
+}
+
+
+def arc_limits(slow: int) -> Limits:
+    """Every axis at 1 m/s, 4 m/s^2, 100 m/s^3 but ``slow`` at 1 m/s^2."""
     acc = np.full(3, 4.0)
     acc[slow] = 1.0
-    lim = Limits(feed=np.ones(3), acceleration=acc, jerk=np.full(3, 100.0), rapid_feed=1.0,
-                 path_tolerance=2e-5, sample_time=1e-3)  # fmt: skip
-    m = plan(read_program(text), lim)
+    return Limits(feed=np.ones(3), acceleration=acc, jerk=np.full(3, 100.0), rapid_feed=1.0,
+                  path_tolerance=2e-5, sample_time=1e-3)  # fmt: skip
+
+
+@pytest.mark.parametrize(("plane", "which"), [(p, w) for p in ARCS for w in (0, 1)])
+def test_an_arc_takes_the_slower_in_plane_axis(plane: int, which: int) -> None:
+    # A half circle of R = 20 mm from rest (a dwell before it), either in-plane axis slow.
+    # Half of the slow axis's 1 m/s^2 for the centripetal acceleration, v = sqrt(0.5 x 1 x R)
+    # = 0.1 m/s (the jerk's bound (0.5 x 100 x R^2)^(1/3) = 0.27 m/s does not bind), the
+    # other half along the path, 0.5 m/s^2, and half the jerk, 50 m/s^3.
+    text, in_plane, normal = ARCS[plane]
+    m = plan(read_program(text), arc_limits(in_plane[which]))
     r = 0.02
     v = math.sqrt(0.5 * 1.0 * r)
-    assert m.block_limit[0] == pytest.approx(v, rel=1e-12)
-    assert m.duration == pytest.approx(s_curve_time(math.pi * r, v, 0.5, 50.0), rel=1e-9)
+    assert m.block_limit[2] == pytest.approx(v, rel=1e-12)
+    assert m.block_time[2] == pytest.approx(s_curve_time(math.pi * r, v, 0.5, 50.0), rel=1e-9)
     # In the cruise the centripetal acceleration is v^2/R = 0.5 m/s^2 on the circle.
-    cruise = np.isclose(m.path_speed, v, rtol=1e-12)
+    cruise = (m.block == 2) & np.isclose(m.path_speed, v, rtol=1e-12)
     assert cruise.sum() > 10
     centripetal = np.linalg.norm(np.delete(m.acceleration[cruise], normal, axis=1), axis=1)
     np.testing.assert_allclose(centripetal, v * v / r, rtol=1e-9)
+
+
+def test_a_helix_divides_the_in_plane_bounds_by_its_in_plane_share() -> None:
+    # The G17 half circle rising 10 mm in Z: length L = hypot(pi R, h), in-plane share
+    # k = pi R / L. The centripetal bound is on the in-plane speed, v k <= sqrt(0.5 a R);
+    # the in-plane axes carry k of the path's acceleration and jerk, halved.
+    r, h = 0.02, 0.01
+    length = math.hypot(math.pi * r, h)
+    k = math.pi * r / length
+    m = plan(read_program("G0 X10 Y5\nG4 P0.1\nG17 G3 X50 Y5 Z10 I20 J0 F30000\n"),
+             arc_limits(1))  # fmt: skip
+    v = math.sqrt(0.5 * r) / k
+    assert m.block_limit[2] == pytest.approx(v, rel=1e-12)
+    assert m.block_time[2] == pytest.approx(s_curve_time(length, v, 0.5 / k, 50.0 / k),
+                                            rel=1e-9)  # fmt: skip
+    np.testing.assert_allclose(m.position[-1], [0.05, 0.005, 0.01], atol=1e-12)
 
 
 @pytest.mark.parametrize(
@@ -108,6 +131,75 @@ def test_the_look_ahead_brakes_and_accelerates_within_a_short_block(
     forward = plan(read_program(f"G1 X{length_mm:g} F30000\nG1 X300\n"), LIMITS)
     assert forward.exit_speed[0] == pytest.approx(v_stop * MARGIN, rel=1e-12)
     assert forward.entry_speed[1] == forward.exit_speed[0]
+
+
+def _reach(v0: float, length: float, a: float = 2.0, j: float = 50.0) -> float:
+    """The speed reached from ``v0`` over ``length``: the root of the speed change's distance
+    (module docstring of the planner) found by bisection, independent of its closed form."""
+
+    def distance(v1: float) -> float:
+        dv = v1 - v0
+        if dv >= a * a / j:
+            return 0.5 * (v0 + v1) * (dv / a + a / j)
+        return (v0 + v1) * math.sqrt(dv / j)
+
+    low, high = v0, v0 + 10.0
+    for _ in range(200):
+        mid = 0.5 * (low + high)
+        low, high = (mid, high) if distance(mid) < length else (low, mid)
+    return 0.5 * (low + high)
+
+
+@pytest.mark.parametrize("length_mm", [5.0, 1.0])
+def test_the_look_ahead_carries_a_speed_through_two_short_blocks(length_mm: float) -> None:
+    # Two short blocks before a reversal: the second is entered at the speed that stops
+    # within it, the first at the speed that brakes to that one within it (each the
+    # MARGIN below); forward, the same from rest. The speed change starts at a speed: 5 mm
+    # reaches the acceleration, 1 mm does not. Bisection to 1e-15: 1e-12.
+    length = length_mm * 1e-3
+    second = _reach(0.0, length) * MARGIN
+    first = _reach(second, length) * MARGIN
+    text = f"G1 X300 F30000\nG1 X{300 + length_mm:g}\nG1 X{300 + 2 * length_mm:g}\nG1 X0\n"
+    back = plan(read_program(text), LIMITS)
+    assert back.entry_speed[2] == pytest.approx(second, rel=1e-12)
+    assert back.entry_speed[1] == pytest.approx(first, rel=1e-12)
+    forward = plan(read_program(f"G1 X{length_mm:g} F30000\nG1 X{2 * length_mm:g}\nG1 X300\n"),
+                   LIMITS)  # fmt: skip
+    assert forward.exit_speed[0] == pytest.approx(second, rel=1e-12)
+    assert forward.exit_speed[1] == pytest.approx(first, rel=1e-12)
+
+
+def test_a_dwell_is_entered_and_left_at_rest_and_a_program_without_time_is_refused() -> None:
+    m = plan(read_program("G1 X10 F6000\nG4 P0.1\nG1 X0\n"), LIMITS)
+    assert m.entry_speed[1] == 0.0 and m.exit_speed[0] == 0.0 and m.exit_speed[1] == 0.0
+    with pytest.raises(BallScrewInputError, match="takes time"):
+        plan(read_program("G4 P0\n"), LIMITS)
+
+
+def test_an_exact_stop_corner_is_a_stop() -> None:
+    # G61: no tolerance to blend in, the corner is taken at rest.
+    m = plan(read_program("G61 G1 X100 F30000\nG1 Y100\n"), LIMITS)
+    assert m.entry_speed[1] == 0.0
+
+
+def test_a_wide_corner_is_taken_at_the_blends_acceleration_bound() -> None:
+    # With a 5 mm tolerance the blend's radius is 12.07 mm, and the acceleration's bound
+    # sqrt(a r) = 0.185 m/s lies below the jerk's (j r^2)^(1/3) = 0.218 m/s (a = 2 sqrt2,
+    # j = 50 sqrt2 along the blend's direction, as below); the feed and the blocks' reach
+    # are higher. Exact but for rounding: 1e-12.
+    lim = Limits(feed=LIMITS.feed, acceleration=LIMITS.acceleration, jerk=LIMITS.jerk,
+                 rapid_feed=0.5, path_tolerance=5e-3, sample_time=2e-3)  # fmt: skip
+    m = plan(read_program("G1 X100 F30000\nG1 Y100\n"), lim)
+    s = math.sin(math.pi / 4)
+    r = 5e-3 * s / (1 - s)
+    assert m.entry_speed[1] == pytest.approx(math.sqrt(2.0 * math.sqrt(2) * r), rel=1e-12)
+
+
+def test_the_speed_change_distance_from_a_speed_either_way() -> None:
+    # From 0.1 to 0.5 m/s (or back) at 2 m/s^2, 50 m/s^3: 0.5 x 0.6 x (0.2 + 0.04) = 0.072 m;
+    # from 0.1 to 0.15 m/s, below a^2/j = 0.08: 0.25 sqrt(0.05/50) = 7.906 mm.
+    got = speed_change_distance(np.array([0.1, 0.5, 0.1]), np.array([0.5, 0.1, 0.15]), 2.0, 50.0)
+    np.testing.assert_allclose(got, [0.072, 0.072, 0.25 * math.sqrt(0.001)], rtol=1e-12)
 
 
 def test_a_right_angle_corner_is_taken_at_the_blends_jerk_bound() -> None:
