@@ -142,11 +142,20 @@ def test_the_residual_is_the_drift_over_one_revolution() -> None:
     # Following errors drifting at 1 and -2 um/s, and a revolution of 1000.4 samples
     # (period not a whole number of samples): the error one period later differs by the
     # drift times 1.0004 s, linear and so exact under the interpolation (1e-18 m: rounding).
+    # The evaluated revolution starts at sample 7, not the trace's first.
     x, y = revolution(R)
-    n = 2 * N + 2
-    t = np.arange(n) * TS
+    xs, ys = np.concatenate([x[-7:], x, x, x[:2]]), np.concatenate([y[-7:], y, y, y[:2]])
+    t = np.arange(xs.size) * TS
     period = 1000.4
-    run = analyse(x, y, period=period, ex=1e-6 * t, ey=-2e-6 * t)
+    window = slice(7, 7 + N)
+    run = _analyse(trace(xs, 1e-6 * t), trace(ys, -2e-6 * t), R, window, False, False, period)
     assert run.residual == pytest.approx(math.hypot(1e-6, 2e-6) * period * TS, rel=1e-9)
-    steady = analyse(x, y, period=period)
+    # A quadratic drift, e = c t^2: the error one period P later, interpolated linearly
+    # between the samples around it, exceeds c (t + P)^2 by c f (1 - f) TS^2, f = 0.4.
+    c = 1e-3
+    quad = _analyse(trace(xs, c * t**2), trace(ys), R, window, False, False, period)
+    t0, t1 = 7 * TS, (7 + period) * TS
+    assert quad.residual == pytest.approx(c * (t1**2 - t0**2) + c * 0.4 * 0.6 * TS**2,
+                                          rel=1e-9)  # fmt: skip
+    steady = _analyse(trace(xs), trace(ys), R, window, False, False, period)
     assert steady.residual == 0.0
