@@ -214,3 +214,78 @@ def test_a_right_angle_corner_is_taken_at_the_blends_jerk_bound() -> None:
     corner = min(math.sqrt(2.0 * math.sqrt(2) * r), (50.0 * math.sqrt(2) * r * r) ** (1 / 3))
     assert corner == pytest.approx((50.0 * math.sqrt(2) * r * r) ** (1 / 3))
     assert m.entry_speed[1] == pytest.approx(corner, rel=1e-12)
+
+
+def test_an_arc_between_two_quadrants_still_gives_the_whole_share_to_both_axes() -> None:
+    # From 45 to 135 deg the ends' tangents are (-1, +-1)/sqrt2, yet an in-plane axis is
+    # charged the whole in-plane share (module docstring: a long arc reaches it somewhere),
+    # so Y (slow, 2 m/s^2) sets the tangential 0.5 x 2 and the centripetal sqrt(0.5 x 2 R).
+    r = 0.02
+    d = 1e3 * r / math.sqrt(2)
+    text = (f"G0 X{30 + d:.10f} Y{5 + d:.10f}\nG4 P0.1\n"
+            f"G17 G3 X{30 - d:.10f} Y{5 + d:.10f} I{-d:.10f} J{-d:.10f} F30000\n")  # fmt: skip
+    lim = Limits(feed=np.ones(3), acceleration=np.array([4.0, 2.0, 4.0]),
+                 jerk=np.full(3, 100.0), rapid_feed=1.0, path_tolerance=2e-5,
+                 sample_time=1e-3)  # fmt: skip
+    m = plan(read_program(text), lim)
+    v = math.sqrt(0.5 * 2.0 * r)
+    assert m.block_limit[2] == pytest.approx(v, rel=1e-9)
+    assert m.block_time[2] == pytest.approx(s_curve_time(0.5 * math.pi * r, v, 1.0, 50.0),
+                                            rel=1e-9)  # fmt: skip
+
+
+def test_a_helix_whose_jerk_or_normal_feed_binds() -> None:
+    # The G17 half circle of R 20 mm rising 10 mm (in-plane share k, normal share n).
+    r, h = 0.02, 0.01
+    length = math.hypot(math.pi * r, h)
+    k, n = math.pi * r / length, h / length
+    text = "G0 X10 Y5\nG4 P0.1\nG17 G3 X50 Y5 Z10 I20 J0 F30000\n"
+    # Y's jerk 10 m/s^3: the centripetal jerk's bound (0.5 j R^2)^(1/3) / k = 0.126/k m/s
+    # lies below the acceleration's sqrt(0.5 x 4 R)/k = 0.2/k. Along the path j = 0.5 x 10/k
+    # and a = 0.5 x 4/k, which it does not reach (v < a^2/j): L/v + 2 sqrt(v/j).
+    lim = Limits(feed=np.ones(3), acceleration=np.full(3, 4.0),
+                 jerk=np.array([100.0, 10.0, 100.0]), rapid_feed=1.0, path_tolerance=2e-5,
+                 sample_time=1e-3)  # fmt: skip
+    m = plan(read_program(text), lim)
+    v, j = (0.5 * 10.0 * r * r) ** (1 / 3) / k, 5.0 / k
+    assert v < (2.0 / k) ** 2 / j
+    assert m.block_limit[2] == pytest.approx(v, rel=1e-12)
+    assert m.block_time[2] == pytest.approx(length / v + 2.0 * math.sqrt(v / j), rel=1e-9)
+    # Z at 10 mm/s: the path's speed is Z's over its share n, 0.01/n = 0.064 m/s.
+    lim = Limits(feed=np.array([1.0, 1.0, 0.01]), acceleration=np.full(3, 4.0),
+                 jerk=np.full(3, 100.0), rapid_feed=1.0, path_tolerance=2e-5,
+                 sample_time=1e-3)  # fmt: skip
+    m = plan(read_program(text), lim)
+    assert m.block_limit[2] == pytest.approx(0.01 / n, rel=1e-12)
+
+
+@pytest.mark.parametrize("rise_mm", [0.0, 5.0])
+def test_a_line_tangent_to_an_arcs_end_runs_through(rise_mm: float) -> None:
+    # A quarter circle (or helix) from 180 to 270 deg about (30, 5), then a line along its
+    # end tangent: no corner, the junction runs at the arc's own limit 0.1/k m/s (Y slow,
+    # as above). A corner there would be taken at a few mm/s.
+    r = 0.02
+    arc = 0.5 * math.pi * r
+    total = math.hypot(arc, rise_mm * 1e-3)
+    k, n = arc / total, rise_mm * 1e-3 / total
+    end = (30.0, -15.0, rise_mm)
+    tip = (end[0] + 30.0 * k, end[1], end[2] + 30.0 * n)
+    text = (f"G0 X10 Y5\nG4 P0.1\nG17 G3 X30 Y-15 Z{rise_mm:g} I20 J0 F30000\n"
+            f"G1 X{tip[0]:.12f} Z{tip[2]:.12f}\n")  # fmt: skip
+    m = plan(read_program(text), arc_limits(1))
+    assert m.entry_speed[3] == pytest.approx(math.sqrt(0.5 * r) / k, rel=1e-9)
+
+
+def test_a_sharp_corner_takes_grbls_bound() -> None:
+    # X, then back along (-1, 1)/sqrt2: the turn leaves 45 deg between the blocks. Grbl's
+    # blend: r = d sin(22.5)/(1 - sin(22.5)); along the blend's direction
+    # d = (u2 - u1)/|u2 - u1| the axes allow min_i a_i/|d_i| and min_i j_i/|d_i|.
+    m = plan(read_program("G1 X100 F30000\nG1 X0 Y100\n"), LIMITS)
+    u1, u2 = np.array([1.0, 0.0]), np.array([-1.0, 1.0]) / math.sqrt(2)
+    d = (u2 - u1) / np.linalg.norm(u2 - u1)
+    s = math.sin(math.radians(22.5))
+    r = 2e-5 * s / (1 - s)
+    a = min(2.0 / abs(d[0]), 3.0 / abs(d[1]))
+    j = min(50.0 / abs(d[0]), 60.0 / abs(d[1]))
+    assert m.entry_speed[1] == pytest.approx(min(math.sqrt(a * r), (j * r * r) ** (1 / 3)),
+                                             rel=1e-9)  # fmt: skip
