@@ -89,9 +89,12 @@ def test_an_ellipse_has_g_twice_its_half_axes_difference() -> None:
     assert [g.angle % 360.0 for g in run.glitches] == pytest.approx(list(QUADRANTS), abs=1e-9)
 
 
-def tent_circle(clockwise: bool, offset: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
-    """A circle of radius R with a tent h = 2 um high on 89.9 to 100.1 deg, and one 4 um high
-    on 123 to 127 deg; the same points run either way (samples at 0.25 (k + offset) deg)."""
+def tent_circle(
+    clockwise: bool, offset: float = 0.0, size: float = 0.0, last: float = 0.0
+) -> tuple[np.ndarray, np.ndarray]:
+    """A circle of radius R + ``size`` with a tent h = 2 um high on 89.9 to 100.1 deg, one
+    4 um high on 123 to 127 deg and one ``last`` high on 353 to 357 deg; the same points run
+    either way (samples at 0.25 (k + offset) deg)."""
     h = 2e-6
     angle = np.degrees(2.0 * math.pi * (np.arange(N) + offset) / N)
     if clockwise:
@@ -100,14 +103,16 @@ def tent_circle(clockwise: bool, offset: float = 0.0) -> tuple[np.ndarray, np.nd
     bump = np.maximum(h * (1.0 - np.abs(angle - 95.0) / 5.1), 0.0)
     # Twice as high at 123 to 127 deg: outside 90 +- 30 and 180 +- 30.
     bump += np.maximum(2.0 * h * (1.0 - np.abs(angle - 125.0) / 2.0), 0.0)
+    bump += last * np.maximum(1.0 - np.abs(angle - 355.0) / 2.0, 0.0)
     theta = np.radians(angle)
-    return (R + bump) * np.cos(theta), (R + bump) * np.sin(theta)
+    return (R + size + bump) * np.cos(theta), (R + size + bump) * np.sin(theta)
 
 
 @pytest.mark.parametrize("clockwise", [False, True])
 def test_a_bump_at_ninety_degrees_is_that_quadrants_glitch(clockwise: bool) -> None:
     h = 2e-6
-    run = analyse(*tent_circle(clockwise), clockwise=clockwise)
+    # The circle 1 um too large: each glitch is measured from the median radius error.
+    run = analyse(*tent_circle(clockwise, size=1e-6, last=-h), clockwise=clockwise)
     assert run.clockwise is clockwise
     by_quadrant = {g.quadrant: g for g in run.glitches}
     g90 = by_quadrant[90.0]
@@ -117,8 +122,12 @@ def test_a_bump_at_ninety_degrees_is_that_quadrants_glitch(clockwise: bool) -> N
     # Above half its height on the samples from 92.5 to 97.5 deg.
     assert g90.width == pytest.approx(5.0, abs=1e-9)
     assert g90.angle == pytest.approx(95.0, abs=1e-9)
-    for q in (0.0, 180.0, 270.0):
+    for q in (180.0, 270.0):
         assert by_quadrant[q].height == pytest.approx(0.0, abs=1e-15)
+    # A dent h deep at 355 deg is the 0 deg glitch, peaking 5 deg before the quadrant.
+    assert by_quadrant[0.0].height == pytest.approx(-h, abs=1e-15)
+    assert by_quadrant[0.0].angle == pytest.approx(355.0, abs=1e-9)
+    assert by_quadrant[0.0].axis == "x"
     assert run.largest_glitch == pytest.approx(h, abs=1e-15)
 
 
