@@ -85,6 +85,8 @@ def test_an_ellipse_has_g_twice_its_half_axes_difference() -> None:
     axes = {g.quadrant: g.axis for g in run.glitches}
     assert [heights[q] for q in QUADRANTS] == pytest.approx([d, -d, d, -d], rel=1e-3)
     assert axes == {0.0: "x", 90.0: "y", 180.0: "x", 270.0: "y"}
+    # Above half the height nearly over the whole window (not past it).
+    assert all(59.0 < g.width <= 60.0 for g in run.glitches)
     # Each peaks on its quadrant's own sample, where |d cos 2t| is largest.
     assert [g.angle % 360.0 for g in run.glitches] == pytest.approx(list(QUADRANTS), abs=1e-9)
 
@@ -93,7 +95,7 @@ def tent_circle(
     clockwise: bool, offset: float = 0.0, size: float = 0.0, last: float = 0.0
 ) -> tuple[np.ndarray, np.ndarray]:
     """A circle of radius R + ``size`` with a tent h = 2 um high on 89.9 to 100.1 deg, one
-    4 um high on 123 to 127 deg and one ``last`` high on 353 to 357 deg; the same points run
+    4 um high on 123 to 127 deg and one ``last`` high on 328.95 to 333.05 deg; the same points run
     either way (samples at 0.25 (k + offset) deg)."""
     h = 2e-6
     angle = np.degrees(2.0 * math.pi * (np.arange(N) + offset) / N)
@@ -103,7 +105,7 @@ def tent_circle(
     bump = np.maximum(h * (1.0 - np.abs(angle - 95.0) / 5.1), 0.0)
     # Twice as high at 123 to 127 deg: outside 90 +- 30 and 180 +- 30.
     bump += np.maximum(2.0 * h * (1.0 - np.abs(angle - 125.0) / 2.0), 0.0)
-    bump += last * np.maximum(1.0 - np.abs(angle - 355.0) / 2.0, 0.0)
+    bump += last * np.maximum(1.0 - np.abs(angle - 331.0) / 2.05, 0.0)
     theta = np.radians(angle)
     return (R + size + bump) * np.cos(theta), (R + size + bump) * np.sin(theta)
 
@@ -124,9 +126,11 @@ def test_a_bump_at_ninety_degrees_is_that_quadrants_glitch(clockwise: bool) -> N
     assert g90.angle == pytest.approx(95.0, abs=1e-9)
     for q in (180.0, 270.0):
         assert by_quadrant[q].height == pytest.approx(0.0, abs=1e-15)
-    # A dent h deep at 355 deg is the 0 deg glitch, peaking 5 deg before the quadrant.
+    # A dent h deep at 331 deg is the 0 deg glitch, peaking 29 deg before the quadrant;
+    # above half its depth from 330 deg, the window's first sample, to 332 deg.
     assert by_quadrant[0.0].height == pytest.approx(-h, abs=1e-15)
-    assert by_quadrant[0.0].angle == pytest.approx(355.0, abs=1e-9)
+    assert by_quadrant[0.0].angle == pytest.approx(331.0, abs=1e-9)
+    assert by_quadrant[0.0].width == pytest.approx(2.0, abs=1e-9)
     assert by_quadrant[0.0].axis == "x"
     assert run.largest_glitch == pytest.approx(h, abs=1e-15)
 
