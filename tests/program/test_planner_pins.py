@@ -289,3 +289,26 @@ def test_a_sharp_corner_takes_grbls_bound() -> None:
     j = min(50.0 / abs(d[0]), 60.0 / abs(d[1]))
     assert m.entry_speed[1] == pytest.approx(min(math.sqrt(a * r), (j * r * r) ** (1 / 3)),
                                              rel=1e-9)  # fmt: skip
+
+
+def test_a_corner_after_a_helix_takes_the_helixs_unit_tangent() -> None:
+    # The quarter helix above ends along u1 = (k, 0, n) (in-plane share k, rise share n),
+    # then a line along -Y: a right angle, blended by Grbl's rule along (u2 - u1)/|u2 - u1|.
+    r, rise = 0.02, 0.005
+    arc = 0.5 * math.pi * r
+    total = math.hypot(arc, rise)
+    u1 = np.array([arc / total, 0.0, rise / total])
+    u2 = np.array([0.0, -1.0, 0.0])
+    lim = Limits(feed=np.ones(3), acceleration=np.array([4.0, 1.0, 4.0]),
+                 jerk=np.full(3, 100.0), rapid_feed=1.0, path_tolerance=1e-3,
+                 sample_time=1e-3)  # fmt: skip
+    text = "G0 X10 Y5\nG4 P0.1\nG17 G3 X30 Y-15 Z5 I20 J0 F30000\nG1 Y-50\n"
+    m = plan(read_program(text), lim)
+    d = (u2 - u1) / np.linalg.norm(u2 - u1)
+    s = math.sin(math.pi / 4)
+    blend = 1e-3 * s / (1 - s)
+    a = min(lim.acceleration[i] / abs(d[i]) for i in range(3))
+    j = min(lim.jerk[i] / abs(d[i]) for i in range(3))
+    corner = min(math.sqrt(a * blend), (j * blend * blend) ** (1 / 3))
+    assert corner < math.sqrt(0.5 * r) / u1[0]  # below the helix's own limit
+    assert m.entry_speed[3] == pytest.approx(corner, rel=1e-9)
