@@ -291,18 +291,23 @@ def test_a_sharp_corner_takes_grbls_bound() -> None:
                                              rel=1e-9)  # fmt: skip
 
 
-def test_a_corner_after_a_helix_takes_the_helixs_unit_tangent() -> None:
+@pytest.mark.parametrize("half", [False, True])
+def test_a_corner_after_a_helix_takes_the_helixs_unit_tangent(half: bool) -> None:
     # The quarter helix above ends along u1 = (k, 0, n) (in-plane share k, rise share n),
-    # then a line along -Y: a right angle, blended by Grbl's rule along (u2 - u1)/|u2 - u1|.
+    # then a line along -Y; the half helix ends along (0, k, n), then a line along -X: a
+    # right angle, blended by Grbl's rule along (u2 - u1)/|u2 - u1|.
     r, rise = 0.02, 0.005
-    arc = 0.5 * math.pi * r
+    arc = (1.0 if half else 0.5) * math.pi * r
     total = math.hypot(arc, rise)
-    u1 = np.array([arc / total, 0.0, rise / total])
-    u2 = np.array([0.0, -1.0, 0.0])
+    k, n = arc / total, rise / total
+    u1 = np.array([0.0, k, n] if half else [k, 0.0, n])
+    u2 = np.array([-1.0, 0.0, 0.0] if half else [0.0, -1.0, 0.0])
     lim = Limits(feed=np.ones(3), acceleration=np.array([4.0, 1.0, 4.0]),
                  jerk=np.full(3, 100.0), rapid_feed=1.0, path_tolerance=1e-3,
                  sample_time=1e-3)  # fmt: skip
-    text = "G0 X10 Y5\nG4 P0.1\nG17 G3 X30 Y-15 Z5 I20 J0 F30000\nG1 Y-50\n"
+    end = "X50 Y5" if half else "X30 Y-15"
+    line = "X0" if half else "Y-50"
+    text = f"G0 X10 Y5\nG4 P0.1\nG17 G3 {end} Z5 I20 J0 F30000\nG1 {line}\n"
     m = plan(read_program(text), lim)
     d = (u2 - u1) / np.linalg.norm(u2 - u1)
     s = math.sin(math.pi / 4)
@@ -310,5 +315,5 @@ def test_a_corner_after_a_helix_takes_the_helixs_unit_tangent() -> None:
     a = min(lim.acceleration[i] / abs(d[i]) for i in range(3))
     j = min(lim.jerk[i] / abs(d[i]) for i in range(3))
     corner = min(math.sqrt(a * blend), (j * blend * blend) ** (1 / 3))
-    assert corner < math.sqrt(0.5 * r) / u1[0]  # below the helix's own limit
+    assert corner < math.sqrt(0.5 * r) / k  # below the helix's own limit
     assert m.entry_speed[3] == pytest.approx(corner, rel=1e-9)
