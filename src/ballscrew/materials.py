@@ -1,8 +1,8 @@
 r"""Materials of a ball screw: bearing steel's constants, and two pairings of surfaces.
 
 The ground the geometry and the contact layers stand on: the elastic
-constants, density and specific heat of the steel of balls, screw and nut,
-the reduced modulus of two elastic bodies (Hertz and EHL theory) and the
+constants, density, specific heat and thermal expansion of the steel of balls,
+screw and nut, the reduced modulus of two elastic bodies (Hertz and EHL theory) and the
 composite roughness of two surfaces (the film parameter). The functions are
 also importable from :mod:`ballscrew.contact` and :mod:`ballscrew.ehl`.
 """
@@ -17,6 +17,7 @@ from .errors import FloatArray, check_in_range, check_nonnegative, check_positiv
 __all__ = [
     "STANDARD_GRAVITY",
     "STEEL_DENSITY",
+    "STEEL_EXPANSION",
     "STEEL_POISSON_RATIO",
     "STEEL_SPECIFIC_HEAT",
     "STEEL_YOUNGS_MODULUS",
@@ -41,6 +42,9 @@ carbon and low-alloy steels; 52100 bearing steel is 7810 to 7830)."""
 
 STEEL_SPECIFIC_HEAT: float = 460.0
 """Specific heat of steel [J/(kg·K)] (a typical handbook value)."""
+
+STEEL_EXPANSION: float = 11.5e-6
+"""Linear thermal expansion of bearing steel [1/K] (THK and NSK take 11.8e-6 and 12e-6)."""
 
 
 def reduced_modulus(e1: ArrayLike, nu1: ArrayLike, e2: ArrayLike, nu2: ArrayLike) -> FloatArray:

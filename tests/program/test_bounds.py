@@ -14,10 +14,10 @@ import math
 import numpy as np
 import pytest
 
+from ballscrew.axis.thermal import MAX_STEPS, heat_balance
 from ballscrew.errors import BallScrewInputError
 from ballscrew.io.machine import load_machine
 from ballscrew.program import run_program
-from ballscrew.program.axes import MAX_STEPS, heat_balance
 from ballscrew.program.planner import MAX_SAMPLES
 from shared import ROOT
 

@@ -67,6 +67,7 @@ import numpy as np
 import numpy.typing as npt
 
 from ..errors import BallScrewInputError, FloatArray, check_nonnegative, check_positive
+from ..materials import STEEL_EXPANSION  # re-exported: the check and its tests read it here
 from .stiffness import SHAFT_MODULUS
 
 __all__ = [
@@ -138,9 +139,6 @@ r"""End-condition factor :math:`\eta` of Euler's buckling load (THK's :math:`\et
 
 BUCKLING_SAFETY = 0.5
 """Safety factor the catalogues apply to Euler's load (THK A15-30 eq. 5, HSK) [-]."""
-
-STEEL_EXPANSION = 11.5e-6
-"""Linear thermal expansion of bearing steel [1/K] (THK and NSK take 11.8e-6 and 12e-6)."""
 
 TRAVEL_VARIATION_300: dict[str, float] = {
     # ISO 3408-3:2006, positioning (P) and transport (T) grades, v_300p

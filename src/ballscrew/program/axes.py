@@ -15,10 +15,10 @@ with the axis wing (:mod:`ballscrew.axis`):
   friction model over all samples at once (inertia, gravity and process force
   in the axial load), the support bearings, the motor torque;
 - the temperature of screw and nut from the lumped heat balance
-  :math:`C\,\dot T = P_f(t) - G\,(T - T_a)` (:class:`ballscrew.axis.thermal.ThermalNode`,
-  the conductance at the program's RMS screw speed), integrated exactly for
-  a power held constant over steps of at most a hundredth of the time
-  constant;
+  :math:`C\,\dot T = P_f(t) - G\,(T - T_a)`
+  (:func:`ballscrew.axis.thermal.series_temperature`: the node's conductance at
+  the program's RMS screw speed), integrated exactly for a power held constant
+  over steps of at most a hundredth of the time constant;
 - the friction at each instant's temperature: the cycle run again at the
   program's warmest temperature, and each sample's friction torque
   interpolated linearly in temperature between the two runs (the model is
@@ -26,10 +26,17 @@ with the axis wing (:mod:`ballscrew.axis`):
 - every reversal of each axis: its time, position, the axial load on either
   side (its mean over :data:`LOAD_WINDOW` of motion; the sign a controller's
   friction compensation needs), the friction
-  force :math:`F_f = 2\pi T_f/l` of the model at creep speed under that load,
-  and the lost motion :math:`2F_f/k` with the axis stiffness :math:`k` at that
-  nut position (shaft, nut at the makers' printed level, thrust bearings;
-  :mod:`ballscrew.design.stiffness`).
+  force :math:`F_f = 2\pi T_f/l` of the model at the check's creep speed
+  (:data:`ballscrew.axis.check.CREEP_SPEED`) under that load, and the lost
+  motion :math:`2F_f/k` with the axis stiffness :math:`k` at that nut position
+  (shaft, nut at the makers' printed level, thrust bearings;
+  :func:`ballscrew.design.stiffness.reversal_lost_motion`);
+- the thermal lead error over the travel, :math:`\alpha\,\Delta T\,L`
+  (:func:`ballscrew.design.sizing.thermal_elongation`, the steel's
+  :data:`ballscrew.materials.STEEL_EXPANSION`).
+
+:func:`heat_balance` is :func:`ballscrew.axis.thermal.heat_balance`, importable
+here as before.
 
 Energies follow the component view of ISO 14955-1 and -2 for the feed axes:
 the mechanical energy the motor delivers to the axis (positive shaft power),
@@ -51,21 +58,17 @@ from typing import Any
 
 import numpy as np
 
-from ..axis.check import AxisCheck, Criterion, run_check
+from ..axis.check import CREEP_SPEED, AxisCheck, Criterion, run_check
 from ..axis.drive import DriveEnergy, DriveSpec, MotorConstants, drive_energy, drive_totals
 from ..axis.duty import EnergyRun, ModelEnergy
 from ..axis.energy import CycleResult, axis_cycle
 from ..axis.motion import Profile
 from ..axis.setup import AxisSetup, axis_setup
-from ..axis.thermal import ThermalNode, convection_coefficient
+from ..axis.thermal import heat_balance, series_temperature
 from ..chain import friction_torque
 from ..design.limits import root_diameter
-from ..design.stiffness import (
-    design_nut_stiffness,
-    lost_motion,
-    series_stiffness,
-    shaft_axial_stiffness,
-)
+from ..design.sizing import thermal_elongation
+from ..design.stiffness import design_nut_stiffness, reversal_lost_motion
 from ..errors import BallScrewInputError, FloatArray
 from ..io.machine import LINEAR_AXES, Machine
 from ..materials import STANDARD_GRAVITY
@@ -77,10 +80,6 @@ __all__ = ["AxisResult", "ProgramResult", "Reversal", "heat_balance", "run_progr
 ARC_PLANES = {17: (0, 1), 18: (2, 0), 19: (1, 2)}
 """The in-plane axes (indices of X, Y, Z) of each arc plane."""
 
-THERMAL_EXPANSION = 11.5e-6
-"""Linear expansion of screw steel [1/K] (as ``ballscrew check``)."""
-CREEP_SPEED = 0.1
-"""Screw speed of the friction at a reversal [rad/s] (as ``ballscrew check``)."""
 MOVING = 1e-9
 """Axis speed below which an axis stands [m/s]."""
 LOAD_WINDOW = 0.02
@@ -403,52 +402,6 @@ def _distances(motion: Motion, i: int) -> tuple[float, float]:
     return float(np.sum(step)), float(np.sum(step[motion.feeding[:-1]]))
 
 
-MAX_STEPS = 1_000_000
-"""The most steps of :func:`heat_balance` (8 MB an array)."""
-
-
-def heat_balance(
-    time: FloatArray, power: FloatArray, capacity: float, conductance: float,
-    ambient: float, start: float,
-) -> FloatArray:  # fmt: skip
-    r"""Temperature [°C] of a lumped mass heated by ``power`` [W] at each of ``time`` [s].
-
-    :math:`C\dot T = P - G(T - T_a)` from :math:`T(0)` = ``start``; the power is
-    averaged over steps of at most a hundredth of :math:`\tau = C/G` (energy
-    kept exactly: the steps take the trapezoidal energy of the samples; at most
-    :data:`MAX_STEPS` of them, so that a dwell of days stays bounded: each step is
-    still exact for a power constant within it), and
-    each step is integrated exactly, :math:`T_{k+1} - T_\infty = (T_k -
-    T_\infty)e^{-h/\tau}` with :math:`T_\infty = T_a + \bar P/G`, by a linear
-    filter (no Python loop over the steps).
-
-    Examples
-    --------
-    Constant 10 W into 1000 J/K through 1 W/K for one time constant from 20 °C:
-    20 + 10 (1 - 1/e) = 26.32 °C.
-
-    >>> t = np.linspace(0.0, 1000.0, 11)
-    >>> round(float(heat_balance(t, np.full(11, 10.0), 1000.0, 1.0, 20.0, 20.0)[-1]), 2)
-    26.32
-    """
-    from scipy.signal import lfilter
-
-    tau = capacity / conductance
-    duration = float(time[-1] - time[0])
-    steps = min(max(1, math.ceil(duration / (tau / 100.0)), min(time.size, 100_000)), MAX_STEPS)
-    grid = np.linspace(time[0], time[-1], steps + 1)
-    energy = np.concatenate([[0.0], np.cumsum(0.5 * (power[1:] + power[:-1]) * np.diff(time))])
-    mean = np.diff(np.interp(grid, time, energy)) / np.diff(grid)
-    h = float(grid[1] - grid[0])
-    decay = math.exp(-h / tau)
-    # T_{k+1} - T_a = decay (T_k - T_a) + (1 - decay) P_k / G
-    drive = (1.0 - decay) * mean / conductance
-    rise, _ = lfilter([1.0], [1.0, -decay], drive, zi=[decay * (start - ambient)])
-    temp = ambient + np.concatenate([[start - ambient], rise])
-    out: FloatArray = np.interp(time, grid, temp)
-    return out
-
-
 def _profile(motion: Motion, i: int, force: float) -> Profile:
     v = motion.velocity[:, i]
     fp = np.where(motion.feeding & (np.abs(v) > MOVING), force * np.sign(v), 0.0)
@@ -496,18 +449,17 @@ def _reversals(
             screw, case.lubricant, speed=CREEP_SPEED, temperature=temperature,
             axial_load=np.abs(load), model=machine.model, **case.parameters_for(machine.model),
         ).total  # fmt: skip
-    f_f = 2.0 * math.pi * np.broadcast_to(t_f, load.shape) / screw.lead
     span = setup.axis.bearing_span or setup.node.screw_length
     low, high = ax.travel
     # The travel centred between the supports: distance of the nut from the fixed end.
     a = np.clip(0.5 * span + (pos - 0.5 * (low + high)), 1e-3 * span, 0.999 * span)
-    d_r = setup.axis.root_diameter or root_diameter(screw)
-    k_shaft = shaft_axial_stiffness(d_r, span, a, setup.axis.support)
     k_nut = design_nut_stiffness(screw, float(np.max(np.abs(force))) if screw.nut == "single"
                                  else 0.0)  # fmt: skip
-    k = np.broadcast_to(series_stiffness(k_shaft, k_nut, case.check.get("support_stiffness")),
-                        pos.shape)  # fmt: skip
-    play = np.broadcast_to(lost_motion(f_f, k), pos.shape)
+    f_f, k, play = reversal_lost_motion(
+        np.broadcast_to(t_f, load.shape), screw.lead,
+        setup.axis.root_diameter or root_diameter(screw), span, a, setup.axis.support, k_nut,
+        case.check.get("support_stiffness"),
+    )  # fmt: skip
     lines = program.line[motion.block[after]]
     return tuple(
         Reversal(float(time[n]), float(pos[n]), float(mean_before[n]), float(mean_after[n]),
@@ -537,8 +489,8 @@ def _one_axis(
     omega = first.screw_speed
     time = motion.time
     power0 = first.friction_torque * np.abs(omega)
-    temp = _temperatures(time, power0 + first.bearing_torque * np.abs(omega), node,
-                         case.screw.pitch_diameter, omega, machine.ambient, t0, case)  # fmt: skip
+    temp = series_temperature(time, power0 + first.bearing_torque * np.abs(omega), node,
+                              case.screw, omega, t0)  # fmt: skip
     top = float(np.max(temp))
     t_f, t_m = _torques_at(temp, first, lambda: axis_cycle(
         profile, case.screw, case.lubricant, axis, temperature=top, model=machine.model,
@@ -594,7 +546,7 @@ def _one_axis(
         start_temperature=t0,
         final_temperature=float(temp[-1]),
         max_temperature=top,
-        thermal_lead_error=THERMAL_EXPANSION * (top - t0) * travel,
+        thermal_lead_error=float(thermal_elongation(top - t0, travel)),
         travel=travel,
         reversals=reversals,
         energy_per_block=per_block.astype(float),
@@ -670,22 +622,6 @@ def _torques_at(
     t_f = first.friction_torque + share * (warm.friction_torque - first.friction_torque)
     t_m = first.motor_torque + np.sign(first.screw_speed) * (t_f - first.friction_torque) / gear
     return t_f, t_m
-
-
-def _temperatures(
-    time: FloatArray, power: FloatArray, node: ThermalNode, diameter: float, omega: FloatArray,
-    ambient: float, start: float, case: Any,
-) -> FloatArray:  # fmt: skip
-    """Screw and nut temperature over the program from the heat balance."""
-    capacity = node.heat_capacity(case.screw)
-    duration = float(time[-1] - time[0])
-    rms = math.sqrt(_integral(omega**2, time) / duration) if duration > 0 else 0.0
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        h = float(convection_coefficient(diameter, rms, ambient + 1.0, ambient))
-    area = math.pi * diameter * node.screw_length
-    g = h * area + (0.0 if node.machine_resistance is None else 1.0 / node.machine_resistance)
-    return heat_balance(time, power, capacity, g, ambient, start)
 
 
 def run_program(
