@@ -15,7 +15,6 @@ import math
 import numpy as np
 import pytest
 
-from ballscrew.errors import BallScrewInputError
 from ballscrew.program.gcode import read_program
 from ballscrew.program.planner import MARGIN, Limits, plan, speed_change_distance
 
@@ -169,11 +168,12 @@ def test_the_look_ahead_carries_a_speed_through_two_short_blocks(length_mm: floa
     assert forward.exit_speed[1] == pytest.approx(first, rel=1e-12)
 
 
-def test_a_dwell_is_entered_and_left_at_rest_and_a_program_without_time_is_refused() -> None:
+def test_a_dwell_is_entered_and_left_at_rest_and_a_program_without_time_stands() -> None:
     m = plan(read_program("G1 X10 F6000\nG4 P0.1\nG1 X0\n"), LIMITS)
     assert m.entry_speed[1] == 0.0 and m.exit_speed[0] == 0.0 and m.exit_speed[1] == 0.0
-    with pytest.raises(BallScrewInputError, match="takes time"):
-        plan(read_program("G4 P0\n"), LIMITS)
+    # A program that takes no time stands at its start (as LinuxCNC runs it), one sample.
+    still = plan(read_program("G4 P0\n"), LIMITS)
+    assert still.duration == 0.0 and still.time.size == 1
 
 
 def test_an_exact_stop_corner_is_a_stop() -> None:
