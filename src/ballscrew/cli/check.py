@@ -17,8 +17,7 @@ from .common import (
     require_case,
     stdout,
     units_option,
-    write_json,
-    write_report,
+    write_outputs,
 )
 
 if TYPE_CHECKING:
@@ -110,12 +109,13 @@ def check_command(
         out.print(system_note(system))
     for line in result.assumptions:
         out.print(f"assumed: {line}")
-    if json_file:
-        write_json(json_file, result_json(result))
-    if out_dir:
-        from ..report.check import write_check_report
+    from ..report.check import write_check_report
 
-        write_report(out_dir, lambda folder: write_check_report(folder, result))
+    # The JSON and the report are put in place together, or neither.
+    write_outputs(
+        [("--json", json_file, result_json(result).encode("utf-8") if json_file else b"")],
+        (out_dir, lambda folder: write_check_report(folder, result)),
+    )
 
 
 def _number(value: float | None) -> str:

@@ -214,24 +214,23 @@ def write_outputs(
 
     ``files``: (option, path or None, bytes) each; ``report``: (``--out`` folder or None,
     ``write(folder)``). Nothing is in place until all are written: a run stopped on the
-    way leaves every earlier output as it was. An error names the outputs' options.
+    way leaves every earlier output as it was. An output that cannot be written names its
+    option and path, as :func:`writing` does.
     """
     from ..io.files import OutputSet
 
-    given = [(option, path, data) for option, path, data in files if path]
-    out = OutputSet()
-    for _, path, data in given:
-        out.file(path, data)
     count: list[int] = []
-    if report is not None and report[0]:
-        write = report[1]
-        out.folder(report[0], lambda folder: count.append(len(write(folder))))
-    options = [o for o, _, _ in given] + (["--out"] if count or (report and report[0]) else [])
-    with writing("/".join(options) or "--out", ", ".join(p for _, p, _ in given if p)
-                 + (f" {report[0]}" if report and report[0] else "")):  # fmt: skip
-        out.commit()
-    if report is not None and report[0]:
-        click.echo(f"report: {Path(report[0]) / 'report.html'} ({count[0]} files)", err=True)
+    with OutputSet() as out:
+        for option, path, data in files:
+            if path:
+                with writing(option, path):
+                    out.file(path, data)
+        if report is not None and report[0]:
+            write = report[1]
+            with writing("--out", report[0]):
+                out.folder(report[0], lambda folder: count.append(len(write(folder))))
+    if count and report is not None:
+        click.echo(f"report: {Path(str(report[0])) / 'report.html'} ({count[0]} files)", err=True)
 
 
 def motion_options(function: F) -> F:

@@ -20,8 +20,7 @@ from .common import (
     stdout,
     units_option,
     verbose,
-    write_json,
-    write_report,
+    write_outputs,
 )
 
 if TYPE_CHECKING:
@@ -130,12 +129,13 @@ def energy_command(
                                 system))  # fmt: skip
     if system != "si":
         out.print(system_note(system))
-    if out_dir:
-        from ..report.energy import write_energy_report
+    from ..report.energy import write_energy_report
 
-        write_report(out_dir, lambda folder: write_energy_report(folder, run))
-    if json_file:
-        write_json(json_file, result_json(run))
+    # The report and the JSON are put in place together, or neither.
+    write_outputs(
+        [("--json", json_file, result_json(run).encode("utf-8") if json_file else b"")],
+        (out_dir, lambda folder: write_energy_report(folder, run)),
+    )
 
 
 def _results_table(title: str, run: EnergyRun, run_time: str, system: str = "si") -> Table:

@@ -4,7 +4,12 @@ from __future__ import annotations
 
 import click
 
-from .common import folder_option, json_option, stdout, write_json, write_report, writing
+from .common import (
+    folder_option,
+    json_option,
+    stdout,
+    write_outputs,
+)
 
 __all__ = ["identify_command"]
 
@@ -123,15 +128,14 @@ def identify_command(
             table.add_row(*row)
         out.print(table)
     calibrated = calibrated_machine_text(machine, result)
+    from ..report.identify import write_identify_report
+
+    # The calibrated machine file, the report and the JSON are put in place together.
+    write_outputs(
+        [("--calibrated", calibrated_file, calibrated.encode("utf-8")),
+         ("--json", json_file,
+          json_document(result.as_dict()).encode("utf-8") if json_file else b"")],
+        (out_dir, lambda folder: write_identify_report(folder, result, calibrated)),
+    )  # fmt: skip
     if calibrated_file:
-        from ..io.files import atomic_write
-
-        with writing("--calibrated", calibrated_file):
-            atomic_write(calibrated_file, calibrated.encode("utf-8"))
         click.echo(f"calibrated machine file: {calibrated_file}", err=True)
-    if out_dir:
-        from ..report.identify import write_identify_report
-
-        write_report(out_dir, lambda folder: write_identify_report(folder, result, calibrated))
-    if json_file:
-        write_json(json_file, json_document(result.as_dict()))

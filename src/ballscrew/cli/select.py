@@ -16,6 +16,7 @@ from .common import (
     own_case_option,
     require_case,
     stdout,
+    write_outputs,
     write_report,
 )
 
@@ -154,15 +155,14 @@ def select_command(
     result.inputs.update({"command": command, "case_file": case_file})
     out = stdout(json_file)
     _print_summary(out, result, start)
-    if json_file:
-        from ..report.outputs import result_json
-        from .common import write_json
+    from ..report.outputs import result_json
+    from ..report.select import write_select_report
 
-        write_json(json_file, result_json(result))
-    if out_dir:
-        from ..report.select import write_select_report
-
-        write_report(out_dir, lambda folder: write_select_report(folder, result))
+    # The JSON and the report are put in place together, or neither.
+    write_outputs(
+        [("--json", json_file, result_json(result).encode("utf-8") if json_file else b"")],
+        (out_dir, lambda folder: write_select_report(folder, result)),
+    )
 
 
 def _price_tables(

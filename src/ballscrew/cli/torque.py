@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import math
 import sys
-from pathlib import Path
 from typing import Any
 
 import click
@@ -22,8 +21,7 @@ from .common import (
     stdout,
     units_option,
     verbose,
-    write_json,
-    writing,
+    write_outputs,
 )
 
 MAX_POINTS = 2_000_000
@@ -138,7 +136,6 @@ def torque(
     from ..chain import model_named, torque_table
     from ..io.case import WIPER_PARAMETERS, load_case
     from ..io.display import unit_system
-    from ..io.files import atomic_write
     from ..report.outputs import json_text
     from ..report.torque import TorqueRun
 
@@ -181,17 +178,19 @@ def torque(
         click.echo(line, err=True)
     _print_table(run, table_kind, "-" if csv_file == "-" else json_file, system)
     command = ["ballscrew", *sys.argv[1:]]
+    files: list[tuple[str, str | None, bytes]] = []
     if csv_file:
-        with writing("--csv", csv_file):
-            atomic_write(Path(csv_file), run.csv(layout=csv_layout, dialect=csv_dialect).encode())
-            if csv_file.strip() == "-":  # standard output takes one file: no FILE.meta.json
-                click.echo("note: the CSV went to standard output, its provenance nowhere "
-                           "(--json carries it)", err=True)  # fmt: skip
-            else:
-                meta = json_text([], run.provenance(command))
-                atomic_write(Path(csv_file + ".meta.json"), meta.encode("utf-8"))
+        files.append(("--csv", csv_file, run.csv(layout=csv_layout, dialect=csv_dialect).encode()))
+        if csv_file.strip() == "-":  # standard output takes one file: no FILE.meta.json
+            click.echo("note: the CSV went to standard output, its provenance nowhere "
+                       "(--json carries it)", err=True)  # fmt: skip
+        else:
+            meta = json_text([], run.provenance(command))
+            files.append(("--csv", csv_file + ".meta.json", meta.encode("utf-8")))
     if json_file:
-        write_json(json_file, run.json(command))
+        files.append(("--json", json_file, run.json(command).encode("utf-8")))
+    # The CSV, its provenance and the JSON are put in place together, or none of them.
+    write_outputs(files)
 
 
 def _points(

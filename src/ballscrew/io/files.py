@@ -389,73 +389,76 @@ def csv_rows(text: str, source: str, delimiter: str | None = None) -> tuple[list
 class OutputSet:
     """A run's outputs (files and report folders) put in place together, or not at all.
 
-    Each output is staged first: a file's bytes in a temporary file beside it, a folder
-    built in a temporary sibling. Only when all are staged are they renamed into place,
-    one after the other under :func:`deferred_signals` (Ctrl-C and SIGTERM wait), so a run
-    stopped while it computes or stages leaves every earlier output as it was, never a new
-    CSV beside an old report. Standard output (``-``) and what is not a regular file (a
-    pipe, a device) are written at the commit, as they are. Links are followed as
-    :func:`atomic_write` and :func:`atomic_folder` follow them.
+    Used as a context manager: each output added is staged at once (a file's bytes in a
+    temporary file beside it, a folder built in a temporary sibling); when the block ends
+    normally, all are renamed into place one after the other under
+    :func:`deferred_signals` (Ctrl-C and SIGTERM wait), and when it raises, every staged
+    output is removed. So a run stopped while it computes or stages leaves every earlier
+    output as it was, never a new CSV beside an old report. Standard output (``-``) and
+    what is not a regular file (a pipe, a device) are written when the set is put in
+    place, as they are. Links are followed as :func:`atomic_write` and
+    :func:`atomic_folder` follow them.
 
     >>> import tempfile
     >>> where = Path(tempfile.mkdtemp())
-    >>> out = OutputSet()
-    >>> out.file(where / "a.csv", b"x")
-    >>> out.folder(where / "rep", lambda f: [f / "r.md"] if (f / "r.md").write_text("r") else [])
-    >>> out.commit()
+    >>> with OutputSet() as out:
+    ...     out.file(where / "a.csv", b"x")
+    ...     out.folder(where / "rep", lambda f: (f / "r.md").write_text("r"))
     >>> sorted(p.name for p in where.iterdir())
     ['a.csv', 'rep']
     """
 
     def __init__(self) -> None:
-        self._files: list[tuple[Path | str, bytes]] = []
-        self._folders: list[tuple[Path, Callable[[Path], object]]] = []
+        self._staged: list[tuple[Path, Path]] = []  # temporary file -> its place
+        self._built: list[tuple[Path, Path]] = []  # temporary folder -> its place
+        self._direct: list[tuple[Path | str, bytes]] = []
+
+    def __enter__(self) -> OutputSet:
+        return self
+
+    def __exit__(self, kind: object, error: object, trace: object) -> None:
+        if kind is None:
+            self._put()
+        else:
+            self._discard()
 
     def file(self, path: Path | str, data: bytes) -> None:
-        """Add a file (``-``: standard output) with its bytes."""
-        self._files.append((path, data))
+        """Stage a file (``-``: standard output) with its bytes."""
+        if str(path) == "-" or not _is_regular_or_new(Path(path)):
+            self._direct.append((path, data))
+            return
+        place = Path(os.path.realpath(path)) if Path(path).is_symlink() else Path(path)
+        place.parent.mkdir(parents=True, exist_ok=True)
+        tmp = _temporary(place)
+        with open(tmp, "xb") as handle:
+            self._staged.append((tmp, place))
+            handle.write(data)
+            handle.flush()
+            os.fsync(handle.fileno())
 
     def folder(self, path: Path | str, write: Callable[[Path], object]) -> None:
-        """Add a report folder that ``write(folder)`` fills."""
-        self._folders.append((Path(path), write))
+        """Stage a report folder that ``write(folder)`` fills."""
+        folder = Path(path)
+        place = Path(os.path.realpath(folder)) if folder.is_symlink() else folder
+        place.parent.mkdir(parents=True, exist_ok=True)
+        sweep_stale_folders(place)
+        tmp = place.parent / f".{place.name}.{os.getpid()}-{secrets.token_hex(6)}.new"
+        tmp.mkdir()
+        self._built.append((tmp, place))
+        write(tmp)
 
-    def commit(self) -> None:
-        """Stage every output, then put them all in place (class docstring)."""
-        staged: list[tuple[Path, Path]] = []  # temporary file -> its place
-        built: list[tuple[Path, Path]] = []  # temporary folder -> its place
-        direct: list[tuple[Path | str, bytes]] = []
-        try:
-            for path, data in self._files:
-                if str(path) == "-" or not _is_regular_or_new(Path(path)):
-                    direct.append((path, data))
-                    continue
-                place = Path(os.path.realpath(path)) if Path(path).is_symlink() else Path(path)
-                place.parent.mkdir(parents=True, exist_ok=True)
-                tmp = _temporary(place)
-                with open(tmp, "xb") as handle:
-                    staged.append((tmp, place))
-                    handle.write(data)
-                    handle.flush()
-                    os.fsync(handle.fileno())
-            for folder, write in self._folders:
-                place = Path(os.path.realpath(folder)) if folder.is_symlink() else folder
-                place.parent.mkdir(parents=True, exist_ok=True)
-                sweep_stale_folders(place)
-                tmp = place.parent / f".{place.name}.{os.getpid()}-{secrets.token_hex(6)}.new"
-                tmp.mkdir()
-                built.append((tmp, place))
-                write(tmp)
-        except BaseException:
-            for tmp, _ in staged:
-                tmp.unlink(missing_ok=True)
-            for tmp, _ in built:
-                _remove_tree(tmp)
-            raise
+    def _discard(self) -> None:
+        for tmp, _ in self._staged:
+            tmp.unlink(missing_ok=True)
+        for tmp, _ in self._built:
+            _remove_tree(tmp)
+
+    def _put(self) -> None:
         aside: list[Path] = []
         with deferred_signals():
-            for tmp, place in staged:
+            for tmp, place in self._staged:
                 os.replace(tmp, place)
-            for tmp, place in built:
+            for tmp, place in self._built:
                 old = place.parent / f".{place.name}.{os.getpid()}-{secrets.token_hex(6)}.old"
                 if place.exists():
                     place.rename(old)
@@ -463,7 +466,7 @@ class OutputSet:
                 tmp.rename(place)
         for old in aside:
             _remove_tree(old)
-        for path, data in direct:
+        for path, data in self._direct:
             atomic_write(path, data)
 
 
