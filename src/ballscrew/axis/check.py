@@ -148,11 +148,15 @@ class Criterion:
     advice: str = ""
     uncertainty: VerdictUncertainty | None = None
     """P(NOT OK), the utilisation's 95 % interval and the guarded verdict (rows with a limit)."""
+    key: str = ""
+    """The row's stable key (``life``, ``peak_torque``, ...: :data:`~.criteria.KEYS`): readers
+    find a row by it, never by its label, which carries the state and the grade."""
 
     def as_dict(self) -> dict[str, Any]:
         """The row as JSON-ready values (the uncertainty's keys null for a row without a limit)."""
         u = self.uncertainty
         return {
+            "key": self.key,
             "name": self.name,
             "value": self.value,
             "limit": self.limit,
@@ -168,27 +172,29 @@ class Criterion:
 
 
 def _at_most(
-    name: str, value: float, limit: float, unit: str, source: str, advice: str
+    key: str, name: str, value: float, limit: float, unit: str, source: str, advice: str
 ) -> Criterion:
     u = value / limit
     v = verdict(u)
-    return Criterion(name, value, limit, unit, u, v, source, advice if v != "OK" else "")
+    return Criterion(name, value, limit, unit, u, v, source, advice if v != "OK" else "",
+                     key=key)  # fmt: skip
 
 
 def _at_least(
-    name: str, value: float, limit: float, unit: str, source: str, advice: str
+    key: str, name: str, value: float, limit: float, unit: str, source: str, advice: str
 ) -> Criterion:
     u = limit / value if value > 0.0 else math.inf
     v = verdict(u)
-    return Criterion(name, value, limit, unit, u, v, source, advice if v != "OK" else "")
+    return Criterion(name, value, limit, unit, u, v, source, advice if v != "OK" else "",
+                     key=key)  # fmt: skip
 
 
-def _info(name: str, value: float, unit: str, source: str, advice: str = "") -> Criterion:
-    return Criterion(name, value, None, unit, None, "INFO", source, advice)
+def _info(key: str, name: str, value: float, unit: str, source: str, advice: str = "") -> Criterion:
+    return Criterion(name, value, None, unit, None, "INFO", source, advice, key=key)
 
 
-def _missing(name: str, unit: str, source: str, needed: str) -> Criterion:
-    return Criterion(name, None, None, unit, None, "NOT CHECKED", source, needed)
+def _missing(key: str, name: str, unit: str, source: str, needed: str) -> Criterion:
+    return Criterion(name, None, None, unit, None, "NOT CHECKED", source, needed, key=key)
 
 
 @dataclass(frozen=True)
@@ -215,6 +221,13 @@ class AxisCheck:
         order = ("NOT OK", "CHECK", "OK")
         found = {c.verdict for c in self.criteria}
         return next((v for v in order if v in found), "OK")
+
+    def row(self, key: str) -> Criterion | None:
+        """The row of stable key ``key`` (:data:`~.criteria.KEYS`), None when the check has none.
+
+        The one way to find a row: its label carries the state and the grade and may change.
+        """
+        return next((c for c in self.criteria if c.key == key), None)
 
     @property
     def not_checked(self) -> list[str]:
@@ -382,7 +395,9 @@ def _life_rows(
         half_2 = np.where(force >= 0.0, relieved, loaded)
     total_turns = float(np.sum(turns))
     if total_turns <= 0.0:
-        return [_missing("fatigue life", "h", source, "a move: the cycle makes no turn")], {}
+        return [
+            _missing("life", "fatigue life", "h", source, "a move: the cycle makes no turn")
+        ], {}
     fm1 = float(cubic_mean_load(half_1, turns))
     fm2 = float(cubic_mean_load(half_2, turns))
     turns_per_second = total_turns / run.profile.duration
@@ -398,7 +413,7 @@ def _life_rows(
         "static_load_rating_N": case.static_load_rating,
     }
     if ca is None:
-        return [_missing("fatigue life", "h", source,
+        return [_missing("life", "fatigue life", "h", source,
                          "give screw.dynamic_load_rating (C_a from the catalogue) or a "
                          "catalogue designation")], life  # fmt: skip
     req = case.check.get("required_life")
@@ -423,7 +438,7 @@ def _life_rows(
     if f_w_origin == "default":
         advice += (f"; the life is ISO's with f_w = {DEFAULT_LOAD_FACTOR:g}: give "
                    "check.load_factor for the running conditions")  # fmt: skip
-    return [_at_least("fatigue life L10", hours, req / 3600.0, "h", source, advice)], life
+    return [_at_least("life", "fatigue life L10", hours, req / 3600.0, "h", source, advice)], life
 
 
 def _load_rows(run: EnergyRun, force: FloatArray, d_r: float, span: float) -> list[Criterion]:
@@ -437,24 +452,25 @@ def _load_rows(run: EnergyRun, force: FloatArray, d_r: float, span: float) -> li
         "2.5 to 7 with vibration or impact)"
     )
     if case.static_load_rating is None:
-        rows.append(_missing("static safety C0a/F_max", "-", source,
+        rows.append(_missing("static_safety", "static safety C0a/F_max", "-", source,
                              "give screw.static_load_rating (C_0a from the catalogue) or a "
                              "catalogue designation"))  # fmt: skip
     else:
         fs = float(static_safety(case.static_load_rating, half_max))
-        rows.append(_at_least("static safety C0a/F_max", fs, float(case.check["static_safety"]),
-                              "-", source, "a nut with a higher C_0a, or lower peak loads "
+        rows.append(_at_least("static_safety", "static safety C0a/F_max", fs,
+                              float(case.check["static_safety"]), "-", source,
+                              "a nut with a higher C_0a, or lower peak loads "
                               "(gentler accelerations)"))  # fmt: skip
     p_buckle = float(buckling_load(d_r, span, axis.support))
     rows.append(_at_most(
-        "buckling load", f_max / 1e3, p_buckle / 1e3, "kN",
+        "buckling", "buckling load", f_max / 1e3, p_buckle / 1e3, "kN",
         "Euler on the root diameter x 0.5, mounting factor (THK General Catalog, Permissible "
         "Axial Load, A15-30, eq. 5); span taken as the buckling length, load as compressive",
         "a larger diameter, a shorter span, or a fixed-fixed mounting",
     ))  # fmt: skip
     p_yield = YIELD_STRESS * math.pi * d_r**2 / 4.0
     rows.append(_at_most(
-        "axial load, root section", f_max / 1e3, p_yield / 1e3, "kN",
+        "root_section", "axial load, root section", f_max / 1e3, p_yield / 1e3, "kN",
         "147 MPa on the root section (THK, Permissible Axial Load, A15-30, eq. 6)",
         "a larger diameter",
     ))  # fmt: skip
@@ -467,12 +483,12 @@ def _speed_rows(run: EnergyRun, omega: FloatArray, d_r: float, span: float) -> l
     allowed = SAFETY_FACTOR * float(rad_s_to_rpm(critical_speed(d_r, span, axis.support)))
     dn_note = "" if "dn_limit" in run.case.axis_given else " (default: give axis.dn_limit)"
     return [
-        _at_most("speed / critical speed", rpm, allowed, "rpm",
+        _at_most("critical_speed", "speed / critical speed", rpm, allowed, "rpm",
                  f"0.8 x first bending speed, {axis.support} (THK, Permissible Rotational Speed, "
                  "A15-32, eq. 7)",
                  "a longer lead (fewer turns for the feed), a larger diameter, a shorter span "
                  "or a stiffer mounting"),
-        _at_most("d*n", screw.pitch_diameter * 1e3 * rpm, axis.dn_limit, "mm*rpm",
+        _at_most("dn", "d*n", screw.pitch_diameter * 1e3 * rpm, axis.dn_limit, "mm*rpm",
                  f"the nut's catalogue d*n limit{dn_note}",
                  "a longer lead, or a nut with a higher d*n rating"),
     ]  # fmt: skip
@@ -486,7 +502,7 @@ def _lift_off_row(run: EnergyRun, force: FloatArray) -> list[Criterion]:
     f_max = float(np.max(np.abs(force)))
     lift = LIFT_OFF_RATIO * screw.preload
     return [_at_most(
-        "lift-off F_max / (2^1.5 F_pr)", f_max, lift, "N",
+        "lift_off", "lift-off F_max / (2^1.5 F_pr)", f_max, lift, "N",
         f"ISO 3408-5:2006 (the preloaded halves, F2 = 0 at |F| = 2^1.5 F_pr = {lift:.4g} N "
         f"with F_pr = {screw.preload:.4g} N); THK A15-20: a preload holds up to about three "
         "times itself",
@@ -551,9 +567,10 @@ def _stiffness_rows(
     )
     play_text = f" + the axial play {play * 1e6:.3g} um" if screw.nut == "single" else ""
     rows = [
-        _info(f"axis stiffness (least over the stroke{state})", float(np.min(k_axis)) / 1e6,
-              "N/um", source + f"; nut {k_nut / 1e6:.4g} N/um"),
-        _info(f"lost motion at reversal (most{state})", float(np.max(lost)) * 1e6, "um",
+        _info("stiffness", f"axis stiffness (least over the stroke{state})",
+              float(np.min(k_axis)) / 1e6, "N/um", source + f"; nut {k_nut / 1e6:.4g} N/um"),
+        _info("lost_motion", f"lost motion at reversal (most{state})", float(np.max(lost)) * 1e6,
+              "um",
               f"2 F_f / k{play_text}, F_f = 2 pi T_f / l = {f_f:.3g} N (drag at creep speed) "
               "as if the whole axis carried it: an upper bound ('ballscrew contour' puts the "
               "drag on the motor side). The drag torque itself loads no part axially: it twists "
@@ -562,10 +579,11 @@ def _stiffness_rows(
               "guideway's friction would load the whole axis"),
     ]  # fmt: skip
     if freq is None:
-        rows.append(_missing("axial eigenfrequency", "Hz", "sqrt(k/m) / 2 pi",
+        rows.append(_missing("eigenfrequency", "axial eigenfrequency", "Hz", "sqrt(k/m) / 2 pi",
                              "give axis.moving_mass"))  # fmt: skip
     else:
-        rows.append(_info(f"axial eigenfrequency (least{state})", float(np.min(freq)), "Hz",
+        rows.append(_info("eigenfrequency", f"axial eigenfrequency (least{state})",
+                          float(np.min(freq)), "Hz",
                           "sqrt(k/m) / 2 pi with the moving mass"))  # fmt: skip
     return rows, figures
 
@@ -643,8 +661,9 @@ def _thermal_rows(
     source = (f"alpha dT 300 mm, alpha = {STEEL_EXPANSION:g}/K, dT = {rise:.3g} K"
               + (f" less {pre:g} K of pre-tension" if pre else "")
               + " (heat balance after the run time)")  # fmt: skip
-    growth = _info("thermal growth over the stroke", float(thermal_elongation(effective, stroke))
-                   * 1e6, "um", "alpha dT x stroke: the position error at the stroke's far "
+    growth = _info("thermal_growth", "thermal growth over the stroke",
+                   float(thermal_elongation(effective, stroke)) * 1e6, "um",
+                   "alpha dT x stroke: the position error at the stroke's far "
                    "end against its near end")  # fmt: skip
     figures: dict[str, Any] = {"temperature_rise_K": rise, "pretension_K": pre,
                                "error_per_300mm_um": error}  # fmt: skip
@@ -660,10 +679,13 @@ def _thermal_rows(
     if grade is None:
         notes.append("no accuracy grade: the thermal lead error is not set against a tolerance "
                      "(give check.accuracy_grade)")  # fmt: skip
-        return [_info("thermal lead error per 300 mm", error, "um", source), growth], figures
+        return [
+            _info("thermal_error", "thermal lead error per 300 mm", error, "um", source),
+            growth,
+        ], figures
     limit = TRAVEL_VARIATION_300[grade] * 1e6
     row = _at_most(
-        f"thermal lead error per 300 mm ({grade})", error, limit, "um",
+        "thermal_error", f"thermal lead error per 300 mm ({grade})", error, limit, "um",
         source + "; v300p of ISO 3408-3 / JIS B 1192",
         "cool the screw or the nut, pre-tension a fixed-fixed screw, lower the preload or "
         "the duty, or compensate in the control",
@@ -675,7 +697,8 @@ def _motor_rows(run: EnergyRun, cycle: CycleResult) -> tuple[list[Criterion], di
     case, axis, screw = run.case, run.axis, run.case.screw
     motor = case.motor
     if not motor:
-        return [_missing("motor", "-", "[motor]", "give [motor] rated_torque, peak_torque, "
+        return [_missing("motor", "motor", "-", "[motor]",
+                         "give [motor] rated_torque, peak_torque, "
                          "rated_speed and axis.motor_inertia")], {}  # fmt: skip
     if "motor_inertia" not in case.axis_given or axis.motor_inertia <= 0.0:
         raise BallScrewInputError(
@@ -690,7 +713,7 @@ def _motor_rows(run: EnergyRun, cycle: CycleResult) -> tuple[list[Criterion], di
     peak, rms = cycle.peak_motor_torque, cycle.rms_motor_torque
     top = float(rad_s_to_rpm(np.max(np.abs(cycle.motor_speed))))
     rows = [
-        _at_most("inertia ratio J_load/J_motor", ratio, INERTIA_RATIO_LIMIT, "-",
+        _at_most("inertia_ratio", "inertia ratio J_load/J_motor", ratio, INERTIA_RATIO_LIMIT, "-",
                  "J_load = [J_s + J_c + m (l/2 pi)^2] / i^2; limit 10, a servo sizing rule",
                  "a motor with a larger rotor, a gear (i > 1), or a shorter lead"),
     ]  # fmt: skip
@@ -701,18 +724,18 @@ def _motor_rows(run: EnergyRun, cycle: CycleResult) -> tuple[list[Criterion], di
         "rms_torque_Nm": rms,
         "top_speed_rpm": top,
     }
-    for key, label, value, unit, advice in (
-        ("peak_torque", "peak torque", peak, "N*m",
+    for row_key, key, label, value, unit, advice in (
+        ("peak_torque", "peak_torque", "peak torque", peak, "N*m",
          "a larger motor, gentler accelerations, or a gear"),
-        ("rated_torque", "RMS torque / rated torque", rms, "N*m",
+        ("rms_torque", "rated_torque", "RMS torque / rated torque", rms, "N*m",
          "a larger motor, longer dwells, or less friction (lower preload)"),
-        ("rated_speed", "motor speed", top, "rpm", "a longer lead or a lower feed"),
+        ("motor_speed", "rated_speed", "motor speed", top, "rpm", "a longer lead or a lower feed"),
     ):  # fmt: skip
         if key not in motor:
-            rows.append(_missing(label, unit, "[motor]", f"give motor.{key}"))
+            rows.append(_missing(row_key, label, unit, "[motor]", f"give motor.{key}"))
             continue
         limit = float(rad_s_to_rpm(motor[key])) if unit == "rpm" else motor[key]
-        rows.append(_at_most(label, value, limit, unit,
+        rows.append(_at_most(row_key, label, value, limit, unit,
                              "the cycle's torques (energy) against the motor's ratings",
                              advice))  # fmt: skip
     if "peak_torque" in motor:
@@ -722,7 +745,7 @@ def _motor_rows(run: EnergyRun, cycle: CycleResult) -> tuple[list[Criterion], di
         static = float(np.max(np.abs(torque - per_accel * accel)))
         allowed = (motor["peak_torque"] - static) / per_accel
         figures["allowed_acceleration_m_s2"] = allowed
-        rows.append(_info("acceleration the peak torque allows", allowed, "m/s^2",
+        rows.append(_info("acceleration", "acceleration the peak torque allows", allowed, "m/s^2",
                           "(T_peak - T_no inertia) / ((J_m + J_load) 2 pi i / l)"))  # fmt: skip
     return rows, figures
 

@@ -140,7 +140,8 @@ def parse_confidence(text: str | float, field: str = "--confidence") -> float:
     return value
 
 
-_MOTOR_ROWS = ("inertia ratio", "peak torque", "RMS torque", "motor speed")
+_MOTOR_ROWS = ("inertia_ratio", "peak_torque", "rms_torque", "motor_speed")
+"""The keys of the check's motor rows (the motor margin is the room the worst leaves)."""
 
 
 @dataclass(frozen=True)
@@ -316,9 +317,8 @@ def _figures(check: AxisCheck, run: Any, model: str, seconds: float) -> dict[str
     friction = float(energy.cycle.friction_energy) / energy.cycles
     load = abs(float(energy.as_dict()["load_work_J"])) / energy.cycles
     rows = [c for c in check.criteria if c.utilisation is not None]
-    motor = [float(c.utilisation or 0.0) for c in rows if c.name.startswith(_MOTOR_ROWS)]
-    stiff = check.stiffness.get("axis_N_per_um")
-    lost = check.stiffness.get("lost_motion_um")
+    motor = [float(c.utilisation or 0.0) for c in rows if c.key in _MOTOR_ROWS]
+    stiff, lost = check.row("stiffness"), check.row("lost_motion")
     nan = math.nan
     return {
         "energy_J": friction,
@@ -326,13 +326,18 @@ def _figures(check: AxisCheck, run: Any, model: str, seconds: float) -> dict[str
         "temperature_rise_K": float(check.thermal.get("temperature_rise_K", nan)),
         "thermal_error_um": float(check.thermal.get("error_per_300mm_um", nan)),
         "L10_h": float(check.life.get("L10_hours", nan)),
-        "stiffness_N_per_um": float(np.min(stiff)) if stiff is not None else nan,
-        "lost_motion_um": float(np.max(lost)) if lost is not None else nan,
+        "stiffness_N_per_um": _value(stiff),
+        "lost_motion_um": _value(lost),
         "motor_margin": 1.0 - max(motor) if motor else nan,
         "max_utilisation": max((float(c.utilisation or 0.0) for c in rows), default=nan),
         "p_not_ok": nan if check.p_not_ok is None else float(check.p_not_ok),
         "seconds": seconds,
     }
+
+
+def _value(row: Criterion | None) -> float:
+    """A row's value, NaN when the check has no such row or did not compute it."""
+    return math.nan if row is None or row.value is None else float(row.value)
 
 
 def _binding(check: AxisCheck) -> str:
