@@ -58,15 +58,10 @@ from ..design.sizing import (
     STEEL_EXPANSION,
     TRAVEL_VARIATION_300,
     buckling_load,
-    combined_life,
     cubic_mean_load,
     life_distance,
-    life_hours,
-    nominal_life,
-    preloaded_loads,
     reflected_inertia,
     reliability_factor,
-    static_safety,
     thermal_elongation,
 )
 from ..design.stiffness import (
@@ -85,9 +80,10 @@ from ..geometry import nut_length
 from ..io.case import Case
 from ..kinematics import rad_s_to_rpm
 from ..loads import LIFT_OFF_RATIO
+from .criteria import CRITERIA, Inputs, Sample, drawn, life_utilisation, nominal, nut_halves, ones
 from .duty import EnergyRun, ModelEnergy, run_inputs
 from .energy import CycleResult
-from .uncertainty import SAMPLES, SEED, VerdictUncertainty, draws, judge, model_error
+from .uncertainty import SAMPLES, SEED, Draws, VerdictUncertainty, draws, judge, model_error
 
 __all__ = [
     "CHECK_FROM",
@@ -330,16 +326,17 @@ def run_check(
     force = np.asarray(cycle.axial_force, dtype=float)
     omega = np.asarray(cycle.screw_speed, dtype=float)
     turns = np.abs(omega) / (2.0 * math.pi) * _weights(run.profile.time)
-    life_rows, life = _life_rows(run, force, turns, notes)
+    inputs = _criterion_inputs(run, energy, force, turns)
+    life_rows, life = _life_rows(run, inputs, force, turns, notes)
     rows += life_rows
-    rows += _load_rows(run, force, d_r, span)
+    rows += _load_rows(run, inputs, d_r, span)
     rows += _speed_rows(run, omega, d_r, span)
-    rows += _lift_off_row(run, force)
+    rows += _lift_off_row(run, inputs)
     stiff_rows, stiffness = _stiffness_rows(run, name, force, d_r, span, stroke, nut, notes)
     rows += stiff_rows
-    thermal_rows, thermal = _thermal_rows(run, name, energy, stroke, notes)
+    thermal_rows, thermal = _thermal_rows(run, name, inputs, stroke, notes)
     rows += thermal_rows
-    motor_rows, motor = _motor_rows(run, cycle)
+    motor_rows, motor = _motor_rows(run, inputs, cycle)
     rows += motor_rows
     notes.append(
         "axial loads: inertia, gravity and the process force of the move; no guideway "
@@ -349,7 +346,7 @@ def run_check(
     if not draws:
         notes.append("uncertainty: not drawn (the verdicts of the nominal values)")
     elif draws_when_failing or all(r.verdict != "NOT OK" for r in rows):
-        rows, p_any = _with_uncertainty(run, name, energy, force, turns, rows, stiffness, notes)
+        rows, p_any = _with_uncertainty(run, name, energy, inputs, rows, stiffness, notes)
     else:
         notes.append("uncertainty: not drawn (a row fails at its nominal value)")
     marked = [f"{a.field} = {a.value} ({a.reason})" for a in case.assumptions]
@@ -366,8 +363,9 @@ def check_inputs(run: EnergyRun, model: str) -> dict[str, Any]:
 
 
 def _life_rows(
-    run: EnergyRun, force: FloatArray, turns: FloatArray, notes: list[str]
+    run: EnergyRun, inputs: Inputs, force: FloatArray, turns: FloatArray, notes: list[str]
 ) -> tuple[list[Criterion], dict[str, Any]]:
+    """The fatigue life row (ISO 3408-5) and its figures: the halves' mean loads, L10."""
     case, screw = run.case, run.case.screw
     reliability = float(case.check.get("reliability", 0.9))
     f_w = case.check.get("load_factor")
@@ -387,12 +385,7 @@ def _life_rows(
         f"f_w = {f_w:g} ({f_w_origin}; THK A15-40: 1.0-1.2 smooth, 1.2-1.5 normal running), "
         f"a1 = {reliability_factor(reliability):g} ({reliability:.0%}), halves in series (10/9)"
     )
-    if screw.nut == "single":
-        half_1, half_2 = np.maximum(force, 0.0), np.maximum(-force, 0.0)
-    else:
-        loaded, relieved = preloaded_loads(force, screw.preload)
-        half_1 = np.where(force >= 0.0, loaded, relieved)
-        half_2 = np.where(force >= 0.0, relieved, loaded)
+    half_1, half_2 = nut_halves(force, screw.preload, preloaded=inputs.preloaded)
     total_turns = float(np.sum(turns))
     if total_turns <= 0.0:
         return [
@@ -421,9 +414,8 @@ def _life_rows(
         req = DEFAULT_LIFE_HOURS * 3600.0
         notes.append("required life 20000 h (THK's and NSK's figure for machine tools; give "
                      "check.required_life)")  # fmt: skip
-    revs = float(combined_life(nominal_life(ca, fm1, reliability, f_w),
-                               nominal_life(ca, fm2, reliability, f_w)))  # fmt: skip
-    hours = float(life_hours(revs, turns_per_second * 60.0))
+    hours = nominal("life", inputs)
+    revs = hours * 3600.0 * turns_per_second
     km = float(life_distance(revs, screw.lead)) / 1e3
     life |= {"L10_revolutions": revs, "L10_hours": hours, "L10_km": km}
     notes.append(
@@ -441,11 +433,10 @@ def _life_rows(
     return [_at_least("life", "fatigue life L10", hours, req / 3600.0, "h", source, advice)], life
 
 
-def _load_rows(run: EnergyRun, force: FloatArray, d_r: float, span: float) -> list[Criterion]:
-    case, axis, screw = run.case, run.axis, run.case.screw
+def _load_rows(run: EnergyRun, inputs: Inputs, d_r: float, span: float) -> list[Criterion]:
+    """Static safety, buckling and the root section's yield under the peak axial force."""
+    case, axis = run.case, run.axis
     rows: list[Criterion] = []
-    f_max = float(np.max(np.abs(force)))
-    half_max = float(preloaded_loads(f_max, 0.0 if screw.nut == "single" else screw.preload)[0])
     source = (
         "ISO 3408-5:2006 cl. 6: f_s = C0a / F_max (most loaded half, preload included); "
         "least f_s: THK, Static Safety Factor, Table 18, A-703 (machine tools: 1 to 1.5, "
@@ -456,21 +447,22 @@ def _load_rows(run: EnergyRun, force: FloatArray, d_r: float, span: float) -> li
                              "give screw.static_load_rating (C_0a from the catalogue) or a "
                              "catalogue designation"))  # fmt: skip
     else:
-        fs = float(static_safety(case.static_load_rating, half_max))
+        fs = nominal("static_safety", inputs)
         rows.append(_at_least("static_safety", "static safety C0a/F_max", fs,
                               float(case.check["static_safety"]), "-", source,
                               "a nut with a higher C_0a, or lower peak loads "
                               "(gentler accelerations)"))  # fmt: skip
     p_buckle = float(buckling_load(d_r, span, axis.support))
     rows.append(_at_most(
-        "buckling", "buckling load", f_max / 1e3, p_buckle / 1e3, "kN",
+        "buckling", "buckling load", nominal("buckling", inputs), p_buckle / 1e3, "kN",
         "Euler on the root diameter x 0.5, mounting factor (THK General Catalog, Permissible "
         "Axial Load, A15-30, eq. 5); span taken as the buckling length, load as compressive",
         "a larger diameter, a shorter span, or a fixed-fixed mounting",
     ))  # fmt: skip
     p_yield = YIELD_STRESS * math.pi * d_r**2 / 4.0
     rows.append(_at_most(
-        "root_section", "axial load, root section", f_max / 1e3, p_yield / 1e3, "kN",
+        "root_section", "axial load, root section", nominal("root_section", inputs),
+        p_yield / 1e3, "kN",
         "147 MPa on the root section (THK, Permissible Axial Load, A15-30, eq. 6)",
         "a larger diameter",
     ))  # fmt: skip
@@ -478,6 +470,7 @@ def _load_rows(run: EnergyRun, force: FloatArray, d_r: float, span: float) -> li
 
 
 def _speed_rows(run: EnergyRun, omega: FloatArray, d_r: float, span: float) -> list[Criterion]:
+    """The top screw speed against the critical speed, and d·n against the nut's limit."""
     axis, screw = run.axis, run.case.screw
     rpm = float(rad_s_to_rpm(np.max(np.abs(omega))))
     allowed = SAFETY_FACTOR * float(rad_s_to_rpm(critical_speed(d_r, span, axis.support)))
@@ -494,12 +487,12 @@ def _speed_rows(run: EnergyRun, omega: FloatArray, d_r: float, span: float) -> l
     ]  # fmt: skip
 
 
-def _lift_off_row(run: EnergyRun, force: FloatArray) -> list[Criterion]:
+def _lift_off_row(run: EnergyRun, inputs: Inputs) -> list[Criterion]:
     """The relieved half of a preloaded nut against lift-off at 2^1.5 F_pr (ISO 3408-5)."""
     screw = run.case.screw
     if screw.nut == "single" or screw.preload <= 0.0:
         return []
-    f_max = float(np.max(np.abs(force)))
+    f_max = nominal("lift_off", inputs)
     lift = LIFT_OFF_RATIO * screw.preload
     return [_at_most(
         "lift_off", "lift-off F_max / (2^1.5 F_pr)", f_max, lift, "N",
@@ -644,20 +637,18 @@ def _creep_drag(run: EnergyRun, model: str) -> float:
 
 
 def _thermal_rows(
-    run: EnergyRun, model: str, energy: ModelEnergy, stroke: float, notes: list[str]
+    run: EnergyRun, model: str, inputs: Inputs, stroke: float, notes: list[str]
 ) -> tuple[list[Criterion], dict[str, Any]]:
     """The thermal lead error per 300 mm against the grade, the growth over the stroke."""
     case, axis = run.case, run.axis
-    assert energy.final_temperature is not None  # a kept thermal error raised in run_check
-    rise = float(energy.final_temperature) - float(run.node.ambient)
-    pre = float(case.check.get("pretension_temperature", 0.0))
+    rise, pre = inputs.temperature_rise, inputs.pretension
     if pre > 0.0 and axis.support != "fixed-fixed":
         raise BallScrewInputError(
             "check.pretension_temperature", f"{pre:g} K",
             f"0 K for a {axis.support} mounting (a pre-tension needs fixed-fixed)",
         )  # fmt: skip
     effective = max(rise - pre, 0.0)
-    error = float(thermal_elongation(effective, 0.3)) * 1e6
+    error = nominal("thermal_error", inputs)
     source = (f"alpha dT 300 mm, alpha = {STEEL_EXPANSION:g}/K, dT = {rise:.3g} K"
               + (f" less {pre:g} K of pre-tension" if pre else "")
               + " (heat balance after the run time)")  # fmt: skip
@@ -693,7 +684,10 @@ def _thermal_rows(
     return [row, growth], figures
 
 
-def _motor_rows(run: EnergyRun, cycle: CycleResult) -> tuple[list[Criterion], dict[str, Any]]:
+def _motor_rows(
+    run: EnergyRun, inputs: Inputs, cycle: CycleResult
+) -> tuple[list[Criterion], dict[str, Any]]:
+    """The motor: inertia ratio, peak and RMS torque, speed, the acceleration it allows."""
     case, axis, screw = run.case, run.axis, run.case.screw
     motor = case.motor
     if not motor:
@@ -708,9 +702,9 @@ def _motor_rows(run: EnergyRun, cycle: CycleResult) -> tuple[list[Criterion], di
     i = axis.gear_ratio
     j_load = reflected_inertia(axis.moving_mass, screw.lead, axis.screw_inertia,
                                axis.coupling_inertia, i)  # fmt: skip
-    ratio = j_load / axis.motor_inertia
+    ratio = nominal("inertia_ratio", inputs)
     torque = np.asarray(cycle.motor_torque, dtype=float)
-    peak, rms = cycle.peak_motor_torque, cycle.rms_motor_torque
+    peak, rms = nominal("peak_torque", inputs), nominal("rms_torque", inputs)
     top = float(rad_s_to_rpm(np.max(np.abs(cycle.motor_speed))))
     rows = [
         _at_most("inertia_ratio", "inertia ratio J_load/J_motor", ratio, INERTIA_RATIO_LIMIT, "-",
@@ -798,13 +792,14 @@ def _tolerances(run: EnergyRun, notes: list[str]) -> tuple[float, float, float, 
 
 
 def _with_uncertainty(
-    run: EnergyRun, model: str, energy: ModelEnergy, force: FloatArray, turns: FloatArray,
-    rows: list[Criterion], stiffness: dict[str, Any], notes: list[str],
+    run: EnergyRun, model: str, energy: ModelEnergy, inputs: Inputs, rows: list[Criterion],
+    stiffness: dict[str, Any], notes: list[str],
 ) -> tuple[list[Criterion], float]:  # fmt: skip
     """Every row with a limit, with its P(NOT OK) and interval (:mod:`.uncertainty`).
 
     And the probability that one row or more is NOT OK in the same draw (a NaN counts
-    as NOT OK, as in :func:`~.uncertainty.judge`).
+    as NOT OK, as in :func:`~.uncertainty.judge`). A row of :data:`~.criteria.CRITERIA`
+    is its function at the draws; any other row has no uncertain input.
     """
     screw = run.case.screw
     t_mass, t_force, t_pre, t_rating, default_preload = _tolerances(run, notes)
@@ -828,16 +823,14 @@ def _with_uncertainty(
         "beside each verdict, 'OK (95 %)' when P <= 5 %, 'NOT OK (95 %)' when P >= 95 %, "
         "else 'undecided'"
     )
-    process = np.asarray(run.profile.process_force, dtype=float)
-    mass_part = force - process
-    samples = _row_samples(run, energy, mass_part, process, turns, rows, d)
-    life = next((r for r in rows if r.name.startswith("fatigue life")), None)
-    if default_preload and t_pre > 0.0 and life is not None and life.name in samples:
-        _preload_effect(run, force, turns, life, t_pre, notes)
+    samples = _row_samples(inputs, rows, d)
+    life = next((r for r in rows if r.key == "life"), None)
+    if default_preload and t_pre > 0.0 and life is not None and life.key in samples:
+        _preload_effect(inputs, life, t_pre, notes)
     out = []
     fails = np.zeros(SAMPLES, dtype=bool)
     for row in rows:
-        u = samples.get(row.name)
+        u = samples.get(row.key)
         if u is None and row.utilisation is not None:
             u = np.full(SAMPLES, row.utilisation)  # no uncertain input in its formula
         if u is not None:
@@ -846,16 +839,12 @@ def _with_uncertainty(
     return out, float(np.mean(fails))
 
 
-def _preload_effect(
-    run: EnergyRun, force: FloatArray, turns: FloatArray, life: Criterion, t_pre: float,
-    notes: list[str],
-) -> None:  # fmt: skip
+def _preload_effect(inputs: Inputs, life: Criterion, t_pre: float, notes: list[str]) -> None:
     """A note: the fatigue life row's utilisation at the default preload band's two ends."""
-    if run.case.dynamic_load_rating is None or run.case.screw.nut == "single":
+    if not inputs.preloaded:
         return
-    pre = run.case.screw.preload * np.array([1.0 - t_pre, 1.0 + t_pre])
-    f = np.broadcast_to(np.asarray(force, dtype=float), (2, np.size(force)))
-    low, high = _life_samples(run, f, pre, np.ones(2), turns, life)
+    ends = replace(ones(2), preload=np.array([1.0 - t_pre, 1.0 + t_pre]))
+    low, high = drawn("life", Sample(inputs, ends), float(life.limit or 0.0))
     notes.append(
         f"the default preload band alone moves the fatigue life row's utilisation from "
         f"{low:.3g} (preload -{t_pre:.0%}) to {high:.3g} (+{t_pre:.0%}), nominal "
@@ -864,72 +853,62 @@ def _preload_effect(
     )
 
 
-def _row_samples(
-    run: EnergyRun, energy: ModelEnergy, mass_part: FloatArray, process: FloatArray,
-    turns: FloatArray, rows: list[Criterion], d: Any,
-) -> dict[str, FloatArray]:  # fmt: skip
-    """The utilisation of each row with an uncertain input, one per draw."""
-    case, axis, screw = run.case, run.axis, run.case.screw
-    by_name = {r.name: r for r in rows if r.utilisation is not None}
-    cycle = energy.cycle
+def _row_samples(inputs: Inputs, rows: list[Criterion], d: Draws) -> dict[str, FloatArray]:
+    """The utilisation of each row of :data:`~.criteria.CRITERIA` with a limit, one per draw.
+
+    By key; the draws are taken in blocks of about 2 million (draw, sample) pairs per
+    array, whatever the cycle's length, so that a long profile does not hold gigabytes.
+    """
+    drawn_rows = [r for r in rows if r.utilisation is not None and r.key in CRITERIA]
     n = d.mass.size
-    out: dict[str, FloatArray] = {name: np.empty(n) for name in by_name}
-    weights = _weights(run.profile.time)
-    lead, i = screw.lead, axis.gear_ratio
-    omega = np.asarray(cycle.screw_speed, dtype=float)
-    t_motor = np.asarray(cycle.motor_torque, dtype=float)
-    t_fric = np.sign(omega) * np.asarray(cycle.friction_torque, dtype=float) / i
-    # Every formula below takes a sample through its forces (mass part, process force)
-    # and turns, or its torques (and weight), alone: the samples that share them (a
-    # cruise, a dwell, a constant acceleration) are taken once, with their turns or
-    # weights added up. The same sums, in another order: equal to rounding.
-    t_mass, t_process, t_motor, t_fric, weights = _distinct_samples(
-        (mass_part, process, t_motor, t_fric), (weights,)
-    )
-    mass_part, process, turns = _distinct_samples((mass_part, process), (turns,))
-    # Draws at a time: about 2 million (draw, distinct sample) pairs per array, whatever
-    # the cycle's length, so that a long profile does not hold gigabytes.
-    chunk = max(1, min(n, 2_000_000 // max(int(t_mass.size), 1)))
-    preloaded = screw.nut != "single" and screw.preload > 0.0
+    out = {r.key: np.empty(n) for r in drawn_rows}
+    size = max(int(inputs.motor_torque.size), int(inputs.turns.size), 1)
+    chunk = max(1, min(n, 2_000_000 // size))
     for start in range(0, n, chunk):
         sl = slice(start, min(start + chunk, n))
-        km, kf, kp = d.mass[sl, None], d.force[sl, None], d.preload[sl, None]
-        kr, kfr = d.ratings[sl], d.friction[sl]
-        f = km * mass_part + kf * process
-        peak = np.max(np.abs(f), axis=1)
-        pre = screw.preload * kp[:, 0]
-        t: FloatArray | None = None  # the motor torques of the draws, for both torque rows
-        for name, row in by_name.items():
-            u: FloatArray | None = None
-            if name.startswith("fatigue life") and case.dynamic_load_rating is not None:
-                u = _life_samples(run, f, pre, kr, turns, row)
-            elif name.startswith("static safety") and case.static_load_rating is not None:
-                half = preloaded_loads(peak, pre if preloaded else 0.0)[0]
-                u = np.asarray(row.limit, dtype=float) * half / (case.static_load_rating * kr)
-            elif name.startswith("lift-off"):
-                u = peak / (LIFT_OFF_RATIO * pre)
-            elif name.startswith(("buckling load", "axial load, root section")):
-                u = peak / 1e3 / float(row.limit or math.inf)
-            elif name.startswith("thermal lead error") and row.limit:
-                u = _thermal_samples(run, energy, kfr, row)
-            elif name.startswith("inertia ratio"):
-                j = reflected_inertia(1.0, lead) * axis.moving_mass * km[:, 0]
-                j = (j + (axis.screw_inertia + axis.coupling_inertia) / i**2) / axis.motor_inertia
-                u = j / float(row.limit or math.inf)
-            elif name.startswith(("peak torque", "RMS torque")):
-                if t is None:
-                    t = (t_motor + ((km - 1.0) * t_mass + (kf - 1.0) * t_process) * lead
-                         / (2.0 * math.pi * i) + (kfr[:, None] - 1.0) * t_fric)  # fmt: skip
-                if name.startswith("peak"):
-                    value = np.max(np.abs(t), axis=1)
-                else:
-                    value = np.sqrt(np.sum(weights * t**2, axis=1) / run.profile.duration)
-                u = value / float(row.limit or math.inf)
-            if u is not None:
-                out[name][sl] = u
-            else:
-                out[name][sl] = float(row.utilisation)  # type: ignore[arg-type]
+        block = Sample(inputs, d[sl])
+        for row in drawn_rows:
+            out[row.key][sl] = drawn(row.key, block, float(row.limit or math.inf))
     return out
+
+
+def _criterion_inputs(
+    run: EnergyRun, energy: ModelEnergy, force: FloatArray, turns: FloatArray
+) -> Inputs:
+    """What the drawn criteria are computed from (:class:`~.criteria.Inputs`).
+
+    Every formula takes a sample through its forces (mass part, process force) and
+    turns, or its torques (and weight), alone: the samples that share them (a cruise,
+    a dwell, a constant acceleration) are taken once, with their turns or weights
+    added up (:func:`_distinct_samples`).
+    """
+    case, axis, screw = run.case, run.axis, run.case.screw
+    cycle = energy.cycle
+    assert energy.final_temperature is not None  # a kept thermal error raised in run_check
+    process = np.asarray(run.profile.process_force, dtype=float)
+    mass_part = np.asarray(force, dtype=float) - process
+    omega = np.asarray(cycle.screw_speed, dtype=float)
+    t_motor = np.asarray(cycle.motor_torque, dtype=float)
+    t_fric = np.sign(omega) * np.asarray(cycle.friction_torque, dtype=float) / axis.gear_ratio
+    t_mass, t_process, t_motor, t_fric, weights = _distinct_samples(
+        (mass_part, process, t_motor, t_fric), (_weights(run.profile.time),)
+    )
+    f_mass, f_process, f_turns = _distinct_samples((mass_part, process), (turns,))
+    f_w = case.check.get("load_factor")
+    return Inputs(
+        mass_force=f_mass, process_force=f_process, turns=f_turns, motor_torque=t_motor,
+        torque_mass_force=t_mass, torque_process_force=t_process, motor_friction=t_fric,
+        weights=weights, duration=float(run.profile.duration),
+        rms_torque=float(cycle.rms_motor_torque), lead=screw.lead,
+        gear_ratio=axis.gear_ratio, preload=screw.preload, preloaded=screw.nut != "single",
+        dynamic_rating=case.dynamic_load_rating, static_rating=case.static_load_rating,
+        load_factor=DEFAULT_LOAD_FACTOR if f_w is None else float(f_w),
+        reliability=float(case.check.get("reliability", 0.9)),
+        temperature_rise=float(energy.final_temperature) - float(run.node.ambient),
+        pretension=float(case.check.get("pretension_temperature", 0.0)),
+        moving_mass=axis.moving_mass, screw_inertia=axis.screw_inertia,
+        coupling_inertia=axis.coupling_inertia, motor_inertia=axis.motor_inertia,
+    )  # fmt: skip
 
 
 def _distinct_samples(
@@ -956,60 +935,3 @@ def _distinct_samples(
     added = [np.bincount(inverse, weights=np.asarray(w, dtype=float).reshape(-1),
                          minlength=count) for w in sums]  # fmt: skip
     return (*(c[starts] for c in ordered), *added)
-
-
-def _life_samples(
-    run: EnergyRun, f: FloatArray, pre: FloatArray, kr: FloatArray, turns: FloatArray,
-    row: Criterion,
-) -> FloatArray:  # fmt: skip
-    """Required over computed life for each draw of forces, preload and rating."""
-    case, screw = run.case, run.case.screw
-    assert case.dynamic_load_rating is not None
-    rpm = float(np.sum(turns)) / run.profile.duration * 60.0
-    return life_utilisation(
-        f, pre, case.dynamic_load_rating * kr, turns, float(row.limit or 0.0), rpm,
-        preloaded=screw.nut != "single",
-        load_factor=float(run.case.check.get("load_factor") or DEFAULT_LOAD_FACTOR),
-        reliability=float(case.check.get("reliability", 0.9)),
-    )  # fmt: skip
-
-
-def life_utilisation(
-    force: FloatArray, preload: FloatArray, rating: FloatArray, turns: FloatArray,
-    required_hours: float, speed_rpm: float, *, preloaded: bool, load_factor: float,
-    reliability: float = 0.9,
-) -> FloatArray:  # fmt: skip
-    r"""Required over computed L10 life of a cycle, one per draw [-] (ISO 3408-5 cl. 7).
-
-    ``force`` [N] is (draws, samples), the nut's axial force at each sample of
-    the cycle, ``turns`` (samples,) the screw turns made under each, ``preload``
-    [N] and ``rating`` [N] (draws,) the preload and :math:`C_a` of each draw.
-    A preloaded nut's halves carry :func:`~ballscrew.design.sizing.preloaded_loads`
-    (a single nut's flanks each one sign of the force), each half's cubic mean
-    load gives :math:`L = a_1 (C_a/(f_w F_m))^3 10^6` revolutions, the halves
-    in series; hours at ``speed_rpm``, the cycle's mean speed.
-    """
-    f = np.asarray(force, dtype=float)
-    if preloaded:
-        loaded, relieved = preloaded_loads(f, np.asarray(preload, dtype=float)[:, None])
-        h1 = np.where(f >= 0.0, loaded, relieved)
-        h2 = np.where(f >= 0.0, relieved, loaded)
-    else:
-        h1, h2 = np.maximum(f, 0.0), np.maximum(-f, 0.0)
-    revs = combined_life(nominal_life(rating, cubic_mean_load(h1, turns), reliability,
-                                      load_factor),
-                         nominal_life(rating, cubic_mean_load(h2, turns), reliability,
-                                      load_factor))  # fmt: skip
-    hours = np.asarray(revs, dtype=float) / (60.0 * speed_rpm)
-    return np.asarray(required_hours / hours, dtype=float)
-
-
-def _thermal_samples(
-    run: EnergyRun, energy: ModelEnergy, kfr: FloatArray, row: Criterion
-) -> FloatArray:
-    """The lead error's utilisation with the temperature rise scaled by the friction factor."""
-    assert energy.final_temperature is not None
-    rise = float(energy.final_temperature) - float(run.node.ambient)
-    pre = float(run.case.check.get("pretension_temperature", 0.0))
-    error = thermal_elongation(np.maximum(rise * kfr - pre, 0.0), 0.3) * 1e6
-    return np.asarray(error / float(row.limit or math.inf), dtype=float)
