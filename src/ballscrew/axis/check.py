@@ -80,7 +80,7 @@ from ..geometry import nut_length
 from ..io.case import Case
 from ..kinematics import rad_s_to_rpm
 from ..loads import LIFT_OFF_RATIO
-from .criteria import CRITERIA, Inputs, Sample, drawn, life_utilisation, nominal, nut_halves, ones
+from .criteria import CRITERIA, Inputs, Sample, drawn, nominal, nut_halves, ones
 from .duty import EnergyRun, ModelEnergy, run_inputs
 from .energy import CycleResult
 from .uncertainty import SAMPLES, SEED, Draws, VerdictUncertainty, draws, judge, model_error
@@ -90,7 +90,7 @@ __all__ = [
     "AxisCheck",
     "Criterion",
     "check_inputs",
-    "life_utilisation",
+    "criterion_inputs",
     "run_check",
     "verdict",
 ]
@@ -325,7 +325,7 @@ def run_check(
                      "(give axis.root_diameter from the catalogue)")  # fmt: skip
     force = np.asarray(cycle.axial_force, dtype=float)
     omega = np.asarray(cycle.screw_speed, dtype=float)
-    turns = np.abs(omega) / (2.0 * math.pi) * _weights(run.profile.time)
+    turns = _turns(run, omega)
     inputs = _criterion_inputs(run, energy, force, turns)
     life_rows, life = _life_rows(run, inputs, force, turns, notes)
     rows += life_rows
@@ -870,6 +870,26 @@ def _row_samples(inputs: Inputs, rows: list[Criterion], d: Draws) -> dict[str, F
         for row in drawn_rows:
             out[row.key][sl] = drawn(row.key, block, float(row.limit or math.inf))
     return out
+
+
+def _turns(run: EnergyRun, omega: FloatArray) -> FloatArray:
+    """The screw turns made at each sample of the run [-] (trapezoidal weights)."""
+    return np.asarray(np.abs(omega) / (2.0 * math.pi) * _weights(run.profile.time), dtype=float)
+
+
+def criterion_inputs(run: EnergyRun, model: str | None = None) -> Inputs:
+    """The inputs of the drawn criteria over ``run``'s cycle for ``model`` (default the first).
+
+    What :func:`run_check` computes those rows from: each row of
+    :data:`~.criteria.CRITERIA` is its function at a draw of ones
+    (:func:`~.criteria.nominal`), its P(NOT OK) the same function at the draws.
+    """
+    energy = run.results[model or next(iter(run.results))]
+    if energy.thermal_error is not None:
+        raise energy.thermal_error
+    force = np.asarray(energy.cycle.axial_force, dtype=float)
+    turns = _turns(run, np.asarray(energy.cycle.screw_speed, dtype=float))
+    return _criterion_inputs(run, energy, force, turns)
 
 
 def _criterion_inputs(
