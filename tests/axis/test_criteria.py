@@ -25,7 +25,8 @@ from shared import AXIS_CASE
 MOVE = {"stroke": 0.4, "feed": 0.5, "acceleration": 2.0, "force": 2000.0}
 MOTOR = ('[motor]\nrated_torque = "4 N*m"\npeak_torque = "12 N*m"\nrated_speed = "3000 rpm"\n'
          '[check]\naccuracy_grade = "p3"\npretension_temperature = "1 K"\n'
-         'mass_tolerance = "10 %"\nforce_tolerance = "10 %"\nrating_tolerance = "10 %"\n')  # fmt: skip
+         'mass_tolerance = "10 %"\nforce_tolerance = "10 %"\n'
+         'rating_tolerance = "10 %"\n')  # fmt: skip
 AXIS = ('motor_inertia = "2e-4 kg*m**2"\nscrew_inertia = "8e-4 kg*m**2"\n'
         'coupling_inertia = "1e-4 kg*m**2"\ngear_ratio = 2')  # fmt: skip
 
@@ -55,9 +56,7 @@ def _value(inputs: Any, key: str, **given: float) -> float:
 
 
 @pytest.mark.parametrize("case", ["full", "single nut, no motor"])
-def test_a_draw_of_ones_reproduces_every_row(
-    case: str, full: tuple[EnergyRun, AxisCheck]
-) -> None:
+def test_a_draw_of_ones_reproduces_every_row(case: str, full: tuple[EnergyRun, AxisCheck]) -> None:
     # The Monte Carlo's path (blocks of draws, the utilisation from the rule's side of the
     # limit) at draws of ones against the rows run_check printed: 1e-12, the rounding of a
     # ratio taken once as floats and once as arrays.
