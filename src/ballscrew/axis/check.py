@@ -1,5 +1,9 @@
 r"""The whole axis check: life, safety, speed, stiffness, thermal lead error and the motor.
 
+(A long module, about 970 lines: each row's text (label, source, advice and the notes
+that state its defaults) is written beside the figures it is built from, one function
+per group of rows; the drawn formulas themselves are in :mod:`.criteria`.)
+
 What ``ballscrew check`` computes. :func:`run_check` takes an
 :class:`~ballscrew.axis.duty.EnergyRun` (the case, the motion cycle, the torques
 and the temperature the cycle reaches, as ``ballscrew energy`` computes them)
@@ -29,6 +33,10 @@ with the formulas of :mod:`ballscrew.sizing`, :mod:`ballscrew.stiffness` and
   what a pre-tension absorbs), against the accuracy grade's :math:`v_{300p}`;
 * **the motor**: inertia ratio, peak and RMS torque, speed, and the
   acceleration the peak torque allows.
+
+Each row has a stable key (:data:`~.criteria.KEYS`); the criteria with an
+uncertain input are one function each in :mod:`.criteria`, called with a draw
+of ones for the row and with the draws for its P(NOT OK).
 
 Each :class:`Criterion` has a value, a limit, their ratio (the utilisation,
 oriented so that above 1 fails), a verdict, the formula's source and what to
@@ -509,6 +517,12 @@ def _stiffness_rows(
     run: EnergyRun, model: str, force: FloatArray, d_r: float, span: float, stroke: float,
     nut: float, notes: list[str],
 ) -> tuple[list[Criterion], dict[str, Any]]:  # fmt: skip
+    """The axis stiffness, the lost motion at a reversal and the axial eigenfrequency.
+
+    Shaft, nut and thrust bearings in series at 21 nut positions over the stroke
+    (centred in the span), the nut in the state the cycle's peak load leaves it
+    (:func:`_nut_state`); the figures behind the rows for the JSON and the report.
+    """
     case, axis, screw = run.case, run.axis, run.case.screw
     notes.append("the stroke lies in the middle of the span")
     position = np.linspace(0.5 * (span - stroke), 0.5 * (span + stroke), 21)
