@@ -12,7 +12,7 @@ import pytest
 
 from ballscrew.axis import check as check_module
 from ballscrew.axis.check import AxisCheck, criterion_inputs, run_check
-from ballscrew.axis.criteria import CRITERIA, KEYS, Sample, ones
+from ballscrew.axis.criteria import CRITERIA, KEYS, Inputs, Sample, ones
 from ballscrew.axis.duty import EnergyRun, profile_from_move, run_energy
 from ballscrew.design.sizing import STEEL_EXPANSION
 from ballscrew.io.case import parse_case
@@ -100,8 +100,11 @@ def test_the_drawn_functions_scale_as_their_formulas(full: tuple[EnergyRun, Axis
     # Torques: the mass's part of the motor torque is m a l / (2 pi i) (with the screw's
     # and rotor's inertia in the rest); without the process force and the mass, the peak
     # falls by at least the process force's torque, F l / (2 pi i) / efficiency >= F l / 2 pi i.
+    # The rows are the cycle's own torques (ballscrew.axis.energy's, every sample).
+    cycle = run.results["catalog"].cycle
+    assert result.row("peak_torque").value == cycle.peak_motor_torque  # type: ignore[union-attr]
+    assert result.row("rms_torque").value == cycle.rms_motor_torque  # type: ignore[union-attr]
     peak = _value(x, "peak_torque")
-    assert peak == result.motor["peak_torque_Nm"]
     bare = _value(x, "peak_torque", force=0.0)
     assert peak - bare >= 2000.0 * 0.01 / (2.0 * math.pi * 2.0) * (1.0 - 1e-9)
 
@@ -131,3 +134,54 @@ def test_every_reader_finds_rows_by_key(full: tuple[EnergyRun, AxisCheck]) -> No
     assert all(a >= 0 for a in at) and at == sorted(at), line
     web = [_criterion(row, "si") for row in renamed.as_dict()["criteria"]]
     assert [row["key"] for row in web] == keys
+
+
+def _inputs(**given: Any) -> Inputs:
+    """A two-sample cycle by hand: 1 s at each sample, no load, a 10 mm lead, no gear."""
+    zero = np.zeros(2)
+    base: dict[str, Any] = dict(
+        mass_force=zero, process_force=zero, turns=np.ones(2), motor_torque=zero,
+        torque_mass_force=zero, torque_process_force=zero, motor_friction=zero,
+        weights=np.ones(2), duration=2.0, rms_torque=0.0, lead=0.01, gear_ratio=1.0,
+        preload=0.0, preloaded=False, dynamic_rating=None, static_rating=None,
+        load_factor=1.0, reliability=0.9, temperature_rise=0.0, pretension=0.0,
+        moving_mass=0.0, screw_inertia=0.0, coupling_inertia=0.0, motor_inertia=1e-4,
+    )  # fmt: skip
+    return Inputs(**(base | given))
+
+
+def test_the_motor_torques_of_a_cycle_by_hand() -> None:
+    # Motor torques 3 and 1 N*m for 1 s each: RMS sqrt((9 + 1) / 2) = sqrt(5), peak 3.
+    x = _inputs(motor_torque=np.array([3.0, 1.0]), rms_torque=math.sqrt(5.0),
+                torque_mass_force=np.array([100.0, 0.0]),
+                motor_friction=np.array([0.5, 0.5]), gear_ratio=2.0)  # fmt: skip
+    assert _value(x, "rms_torque") == math.sqrt(5.0)
+    assert _value(x, "peak_torque") == 3.0
+    # Twice the mass: its 100 N more at the nut is 100 * 0.01 / (2 pi * 2) N*m more at
+    # the motor; twice the friction, 0.5 N*m more at both samples.
+    more = 100.0 * 0.01 / (4.0 * math.pi)
+    assert _value(x, "peak_torque", mass=2.0) == pytest.approx(3.0 + more, rel=1e-12)
+    rms = math.sqrt(((3.5 + more) ** 2 + 1.5**2) / 2.0)
+    assert _value(x, "rms_torque", mass=2.0, friction=2.0) == pytest.approx(rms, rel=1e-12)
+    # A cycle without motor torque: the draw's torque alone, 100 N of process force.
+    y = _inputs(torque_process_force=np.array([0.0, 100.0]))
+    half = 0.5 * 100.0 * 0.01 / (2.0 * math.pi)  # kf - 1 = 0.5 on one sample of two
+    assert _value(y, "rms_torque", force=1.5) == pytest.approx(half / math.sqrt(2.0), rel=1e-12)
+
+
+def test_the_load_rows_of_a_cycle_by_hand() -> None:
+    # 1 kN and -3 kN on a single nut of C_0a 12 kN: static safety 12 / 3 = 4; a preloaded
+    # nut of 1 kN: the loaded half at 3 kN (past lift-off at 2.83 kN) carries the 3 kN.
+    x = _inputs(mass_force=np.array([1000.0, -3000.0]), static_rating=12_000.0)
+    assert _value(x, "static_safety") == pytest.approx(4.0, rel=1e-12)
+    assert _value(x, "buckling") == pytest.approx(3.0, rel=1e-12)
+    pre = replace(x, preload=1000.0, preloaded=True)
+    assert _value(pre, "static_safety") == pytest.approx(4.0, rel=1e-12)
+    below = replace(pre, mass_force=np.array([1000.0, -2000.0]))
+    loaded = 1000.0 * (1.0 + 2000.0 / (LIFT_OFF_RATIO * 1000.0)) ** 1.5
+    assert _value(below, "static_safety") == pytest.approx(12_000.0 / loaded, rel=1e-12)
+    # Utilisation: at most, value over limit; at least, limit over value, a zero value fails.
+    safety, buckling = CRITERIA["static_safety"], CRITERIA["buckling"]
+    np.testing.assert_allclose(safety.utilisation(np.array([0.5, 4.0]), 2.0), [4.0, 0.5])
+    assert safety.utilisation(np.array([0.0]), 2.0)[0] == math.inf
+    np.testing.assert_allclose(buckling.utilisation(np.array([0.5, 4.0]), 2.0), [0.25, 2.0])

@@ -206,7 +206,7 @@ def nut_halves(
 
 def life_hours(
     force: FloatArray, preload: FloatArray, rating: FloatArray, turns: FloatArray,
-    speed_rpm: float, *, preloaded: bool, load_factor: float, reliability: float = 0.9,
+    speed_rpm: float, *, preloaded: bool, load_factor: float, reliability: float,
 ) -> FloatArray:  # fmt: skip
     r"""L10 life of a cycle repeated, one per draw [h] (ISO 3408-5 cl. 7).
 
@@ -251,8 +251,8 @@ def _static_safety(s: Sample) -> FloatArray:
     """C_0a over the most loaded half's peak load, the rating and the forces scaled."""
     x = s.inputs
     assert x.static_rating is not None  # the row is NOT CHECKED without it
-    pre = s.preload if x.preloaded and x.preload > 0.0 else 0.0
-    half = preloaded_loads(s.peak, pre)[0]
+    # A single nut has no preload; a preloaded nut of preload 0 draws 0 too.
+    half = preloaded_loads(s.peak, s.preload if x.preloaded else 0.0)[0]
     return static_safety(x.static_rating * s.factors.ratings, half)
 
 
@@ -325,9 +325,8 @@ class Rule:
         v = np.asarray(value, dtype=float)
         if not self.at_least:
             return np.asarray(v / limit, dtype=float)
-        with np.errstate(divide="ignore"):
-            return np.asarray(np.where(v > 0.0, limit / np.where(v > 0.0, v, 1.0), np.inf),
-                              dtype=float)  # fmt: skip
+        with np.errstate(divide="ignore"):  # a value of 0 (no life, no safety): infinity
+            return np.asarray(limit / v, dtype=float)
 
     def limits(self, limit: float, factors: Draws) -> FloatArray:
         """The limit of each draw: ``limit`` scaled by :attr:`limit_factor`, else ``limit``."""
