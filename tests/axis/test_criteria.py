@@ -12,7 +12,7 @@ import pytest
 
 from ballscrew.axis import check as check_module
 from ballscrew.axis.check import AxisCheck, criterion_inputs, run_check
-from ballscrew.axis.criteria import CRITERIA, KEYS, Inputs, Sample, ones
+from ballscrew.axis.criteria import CRITERIA, KEYS, Inputs, Sample, life_utilisation, ones
 from ballscrew.axis.duty import EnergyRun, profile_from_move, run_energy
 from ballscrew.design.sizing import STEEL_EXPANSION
 from ballscrew.io.case import parse_case
@@ -185,3 +185,14 @@ def test_the_load_rows_of_a_cycle_by_hand() -> None:
     np.testing.assert_allclose(safety.utilisation(np.array([0.5, 4.0]), 2.0), [4.0, 0.5])
     assert safety.utilisation(np.array([0.0]), 2.0)[0] == math.inf
     np.testing.assert_allclose(buckling.utilisation(np.array([0.5, 4.0]), 2.0), [0.25, 2.0])
+
+
+def test_the_life_of_a_constant_load_by_hand() -> None:
+    # A single nut under 2 kN on one flank, C_a 20 kN, f_w 1: (20/2)^3 1e6 = 1e9 turns
+    # (ISO 3408-5 with a1 = 1 at the default 90 %; the other flank unloaded lasts for
+    # ever), at 600 rpm 1e9 / 36000 h; 20 000 h asked is 0.72 of it.
+    force = np.full((1, 2), 2000.0)
+    hours = 1e9 / (60.0 * 600.0)
+    u = life_utilisation(force, np.zeros(1), np.array([20_000.0]), np.ones(2), 20_000.0,
+                         600.0, preloaded=False, load_factor=1.0)  # fmt: skip
+    assert u[0] == pytest.approx(20_000.0 / hours, rel=1e-12)
