@@ -5,7 +5,8 @@ Motion profiles (:mod:`.motion`), torques, powers and energies over a cycle
 (:mod:`.drive`), the temperature screw and nut reach (:mod:`.thermal`), an axis from
 a case file with what it leaves out filled in and stated (:mod:`.setup`), the axis over
 its duty for every model at once (:mod:`.duty`) and the whole axis check
-(:mod:`.check`).
+(:mod:`.check`), its criteria with an uncertain input one function each
+(:mod:`.criteria`) and their Monte Carlo's draws (:mod:`.uncertainty`).
 
 The entry points of the commands: :func:`run_energy` (``ballscrew energy``) and
 :func:`run_check` (``ballscrew check``), each returning one typed result.

@@ -1,5 +1,9 @@
 r"""The whole axis check: life, safety, speed, stiffness, thermal lead error and the motor.
 
+(A long module, about 970 lines: each row's text (label, source, advice and the notes
+that state its defaults) is written beside the figures it is built from, one function
+per group of rows; the drawn formulas themselves are in :mod:`.criteria`.)
+
 What ``ballscrew check`` computes. :func:`run_check` takes an
 :class:`~ballscrew.axis.duty.EnergyRun` (the case, the motion cycle, the torques
 and the temperature the cycle reaches, as ``ballscrew energy`` computes them)
@@ -30,6 +34,10 @@ with the formulas of :mod:`ballscrew.sizing`, :mod:`ballscrew.stiffness` and
 * **the motor**: inertia ratio, peak and RMS torque, speed, and the
   acceleration the peak torque allows.
 
+Each row has a stable key (:data:`~.criteria.KEYS`); the criteria with an
+uncertain input are one function each in :mod:`.criteria`, called with a draw
+of ones for the row and with the draws for its P(NOT OK).
+
 Each :class:`Criterion` has a value, a limit, their ratio (the utilisation,
 oriented so that above 1 fails), a verdict, the formula's source and what to
 change when it fails. Verdicts: ``OK`` below :data:`CHECK_FROM` of the limit,
@@ -58,15 +66,10 @@ from ..design.sizing import (
     STEEL_EXPANSION,
     TRAVEL_VARIATION_300,
     buckling_load,
-    combined_life,
     cubic_mean_load,
     life_distance,
-    life_hours,
-    nominal_life,
-    preloaded_loads,
     reflected_inertia,
     reliability_factor,
-    static_safety,
     thermal_elongation,
 )
 from ..design.stiffness import (
@@ -85,16 +88,17 @@ from ..geometry import nut_length
 from ..io.case import Case
 from ..kinematics import rad_s_to_rpm
 from ..loads import LIFT_OFF_RATIO
+from .criteria import CRITERIA, Inputs, Sample, drawn, nominal, nut_halves, ones
 from .duty import EnergyRun, ModelEnergy, run_inputs
 from .energy import CycleResult
-from .uncertainty import SAMPLES, SEED, VerdictUncertainty, draws, judge, model_error
+from .uncertainty import SAMPLES, SEED, Draws, VerdictUncertainty, draws, judge, model_error
 
 __all__ = [
     "CHECK_FROM",
     "AxisCheck",
     "Criterion",
     "check_inputs",
-    "life_utilisation",
+    "criterion_inputs",
     "run_check",
     "verdict",
 ]
@@ -148,11 +152,15 @@ class Criterion:
     advice: str = ""
     uncertainty: VerdictUncertainty | None = None
     """P(NOT OK), the utilisation's 95 % interval and the guarded verdict (rows with a limit)."""
+    key: str = ""
+    """The row's stable key (``life``, ``peak_torque``, ...: :data:`~.criteria.KEYS`): readers
+    find a row by it, never by its label, which carries the state and the grade."""
 
     def as_dict(self) -> dict[str, Any]:
         """The row as JSON-ready values (the uncertainty's keys null for a row without a limit)."""
         u = self.uncertainty
         return {
+            "key": self.key,
             "name": self.name,
             "value": self.value,
             "limit": self.limit,
@@ -168,27 +176,29 @@ class Criterion:
 
 
 def _at_most(
-    name: str, value: float, limit: float, unit: str, source: str, advice: str
+    key: str, name: str, value: float, limit: float, unit: str, source: str, advice: str
 ) -> Criterion:
     u = value / limit
     v = verdict(u)
-    return Criterion(name, value, limit, unit, u, v, source, advice if v != "OK" else "")
+    return Criterion(name, value, limit, unit, u, v, source, advice if v != "OK" else "",
+                     key=key)  # fmt: skip
 
 
 def _at_least(
-    name: str, value: float, limit: float, unit: str, source: str, advice: str
+    key: str, name: str, value: float, limit: float, unit: str, source: str, advice: str
 ) -> Criterion:
     u = limit / value if value > 0.0 else math.inf
     v = verdict(u)
-    return Criterion(name, value, limit, unit, u, v, source, advice if v != "OK" else "")
+    return Criterion(name, value, limit, unit, u, v, source, advice if v != "OK" else "",
+                     key=key)  # fmt: skip
 
 
-def _info(name: str, value: float, unit: str, source: str, advice: str = "") -> Criterion:
-    return Criterion(name, value, None, unit, None, "INFO", source, advice)
+def _info(key: str, name: str, value: float, unit: str, source: str, advice: str = "") -> Criterion:
+    return Criterion(name, value, None, unit, None, "INFO", source, advice, key=key)
 
 
-def _missing(name: str, unit: str, source: str, needed: str) -> Criterion:
-    return Criterion(name, None, None, unit, None, "NOT CHECKED", source, needed)
+def _missing(key: str, name: str, unit: str, source: str, needed: str) -> Criterion:
+    return Criterion(name, None, None, unit, None, "NOT CHECKED", source, needed, key=key)
 
 
 @dataclass(frozen=True)
@@ -215,6 +225,13 @@ class AxisCheck:
         order = ("NOT OK", "CHECK", "OK")
         found = {c.verdict for c in self.criteria}
         return next((v for v in order if v in found), "OK")
+
+    def row(self, key: str) -> Criterion | None:
+        """The row of stable key ``key`` (:data:`~.criteria.KEYS`), None when the check has none.
+
+        The one way to find a row: its label carries the state and the grade and may change.
+        """
+        return next((c for c in self.criteria if c.key == key), None)
 
     @property
     def not_checked(self) -> list[str]:
@@ -316,17 +333,18 @@ def run_check(
                      "(give axis.root_diameter from the catalogue)")  # fmt: skip
     force = np.asarray(cycle.axial_force, dtype=float)
     omega = np.asarray(cycle.screw_speed, dtype=float)
-    turns = np.abs(omega) / (2.0 * math.pi) * _weights(run.profile.time)
-    life_rows, life = _life_rows(run, force, turns, notes)
+    turns = _turns(run, omega)
+    inputs = _criterion_inputs(run, energy, force, turns)
+    life_rows, life = _life_rows(run, inputs, force, turns, notes)
     rows += life_rows
-    rows += _load_rows(run, force, d_r, span)
+    rows += _load_rows(run, inputs, d_r, span)
     rows += _speed_rows(run, omega, d_r, span)
-    rows += _lift_off_row(run, force)
+    rows += _lift_off_row(run, inputs)
     stiff_rows, stiffness = _stiffness_rows(run, name, force, d_r, span, stroke, nut, notes)
     rows += stiff_rows
-    thermal_rows, thermal = _thermal_rows(run, name, energy, stroke, notes)
+    thermal_rows, thermal = _thermal_rows(run, name, inputs, stroke, notes)
     rows += thermal_rows
-    motor_rows, motor = _motor_rows(run, cycle)
+    motor_rows, motor = _motor_rows(run, inputs, cycle)
     rows += motor_rows
     notes.append(
         "axial loads: inertia, gravity and the process force of the move; no guideway "
@@ -336,7 +354,7 @@ def run_check(
     if not draws:
         notes.append("uncertainty: not drawn (the verdicts of the nominal values)")
     elif draws_when_failing or all(r.verdict != "NOT OK" for r in rows):
-        rows, p_any = _with_uncertainty(run, name, energy, force, turns, rows, stiffness, notes)
+        rows, p_any = _with_uncertainty(run, name, energy, inputs, rows, stiffness, notes)
     else:
         notes.append("uncertainty: not drawn (a row fails at its nominal value)")
     marked = [f"{a.field} = {a.value} ({a.reason})" for a in case.assumptions]
@@ -353,8 +371,9 @@ def check_inputs(run: EnergyRun, model: str) -> dict[str, Any]:
 
 
 def _life_rows(
-    run: EnergyRun, force: FloatArray, turns: FloatArray, notes: list[str]
+    run: EnergyRun, inputs: Inputs, force: FloatArray, turns: FloatArray, notes: list[str]
 ) -> tuple[list[Criterion], dict[str, Any]]:
+    """The fatigue life row (ISO 3408-5) and its figures: the halves' mean loads, L10."""
     case, screw = run.case, run.case.screw
     reliability = float(case.check.get("reliability", 0.9))
     f_w = case.check.get("load_factor")
@@ -374,15 +393,12 @@ def _life_rows(
         f"f_w = {f_w:g} ({f_w_origin}; THK A15-40: 1.0-1.2 smooth, 1.2-1.5 normal running), "
         f"a1 = {reliability_factor(reliability):g} ({reliability:.0%}), halves in series (10/9)"
     )
-    if screw.nut == "single":
-        half_1, half_2 = np.maximum(force, 0.0), np.maximum(-force, 0.0)
-    else:
-        loaded, relieved = preloaded_loads(force, screw.preload)
-        half_1 = np.where(force >= 0.0, loaded, relieved)
-        half_2 = np.where(force >= 0.0, relieved, loaded)
+    half_1, half_2 = nut_halves(force, screw.preload, preloaded=inputs.preloaded)
     total_turns = float(np.sum(turns))
     if total_turns <= 0.0:
-        return [_missing("fatigue life", "h", source, "a move: the cycle makes no turn")], {}
+        return [
+            _missing("life", "fatigue life", "h", source, "a move: the cycle makes no turn")
+        ], {}
     fm1 = float(cubic_mean_load(half_1, turns))
     fm2 = float(cubic_mean_load(half_2, turns))
     turns_per_second = total_turns / run.profile.duration
@@ -398,7 +414,7 @@ def _life_rows(
         "static_load_rating_N": case.static_load_rating,
     }
     if ca is None:
-        return [_missing("fatigue life", "h", source,
+        return [_missing("life", "fatigue life", "h", source,
                          "give screw.dynamic_load_rating (C_a from the catalogue) or a "
                          "catalogue designation")], life  # fmt: skip
     req = case.check.get("required_life")
@@ -406,9 +422,8 @@ def _life_rows(
         req = DEFAULT_LIFE_HOURS * 3600.0
         notes.append("required life 20000 h (THK's and NSK's figure for machine tools; give "
                      "check.required_life)")  # fmt: skip
-    revs = float(combined_life(nominal_life(ca, fm1, reliability, f_w),
-                               nominal_life(ca, fm2, reliability, f_w)))  # fmt: skip
-    hours = float(life_hours(revs, turns_per_second * 60.0))
+    hours = nominal("life", inputs)
+    revs = hours * 3600.0 * turns_per_second
     km = float(life_distance(revs, screw.lead)) / 1e3
     life |= {"L10_revolutions": revs, "L10_hours": hours, "L10_km": km}
     notes.append(
@@ -423,38 +438,39 @@ def _life_rows(
     if f_w_origin == "default":
         advice += (f"; the life is ISO's with f_w = {DEFAULT_LOAD_FACTOR:g}: give "
                    "check.load_factor for the running conditions")  # fmt: skip
-    return [_at_least("fatigue life L10", hours, req / 3600.0, "h", source, advice)], life
+    return [_at_least("life", "fatigue life L10", hours, req / 3600.0, "h", source, advice)], life
 
 
-def _load_rows(run: EnergyRun, force: FloatArray, d_r: float, span: float) -> list[Criterion]:
-    case, axis, screw = run.case, run.axis, run.case.screw
+def _load_rows(run: EnergyRun, inputs: Inputs, d_r: float, span: float) -> list[Criterion]:
+    """Static safety, buckling and the root section's yield under the peak axial force."""
+    case, axis = run.case, run.axis
     rows: list[Criterion] = []
-    f_max = float(np.max(np.abs(force)))
-    half_max = float(preloaded_loads(f_max, 0.0 if screw.nut == "single" else screw.preload)[0])
     source = (
         "ISO 3408-5:2006 cl. 6: f_s = C0a / F_max (most loaded half, preload included); "
         "least f_s: THK, Static Safety Factor, Table 18, A-703 (machine tools: 1 to 1.5, "
         "2.5 to 7 with vibration or impact)"
     )
     if case.static_load_rating is None:
-        rows.append(_missing("static safety C0a/F_max", "-", source,
+        rows.append(_missing("static_safety", "static safety C0a/F_max", "-", source,
                              "give screw.static_load_rating (C_0a from the catalogue) or a "
                              "catalogue designation"))  # fmt: skip
     else:
-        fs = float(static_safety(case.static_load_rating, half_max))
-        rows.append(_at_least("static safety C0a/F_max", fs, float(case.check["static_safety"]),
-                              "-", source, "a nut with a higher C_0a, or lower peak loads "
+        fs = nominal("static_safety", inputs)
+        rows.append(_at_least("static_safety", "static safety C0a/F_max", fs,
+                              float(case.check["static_safety"]), "-", source,
+                              "a nut with a higher C_0a, or lower peak loads "
                               "(gentler accelerations)"))  # fmt: skip
     p_buckle = float(buckling_load(d_r, span, axis.support))
     rows.append(_at_most(
-        "buckling load", f_max / 1e3, p_buckle / 1e3, "kN",
+        "buckling", "buckling load", nominal("buckling", inputs), p_buckle / 1e3, "kN",
         "Euler on the root diameter x 0.5, mounting factor (THK General Catalog, Permissible "
         "Axial Load, A15-30, eq. 5); span taken as the buckling length, load as compressive",
         "a larger diameter, a shorter span, or a fixed-fixed mounting",
     ))  # fmt: skip
     p_yield = YIELD_STRESS * math.pi * d_r**2 / 4.0
     rows.append(_at_most(
-        "axial load, root section", f_max / 1e3, p_yield / 1e3, "kN",
+        "root_section", "axial load, root section", nominal("root_section", inputs),
+        p_yield / 1e3, "kN",
         "147 MPa on the root section (THK, Permissible Axial Load, A15-30, eq. 6)",
         "a larger diameter",
     ))  # fmt: skip
@@ -462,31 +478,32 @@ def _load_rows(run: EnergyRun, force: FloatArray, d_r: float, span: float) -> li
 
 
 def _speed_rows(run: EnergyRun, omega: FloatArray, d_r: float, span: float) -> list[Criterion]:
+    """The top screw speed against the critical speed, and d·n against the nut's limit."""
     axis, screw = run.axis, run.case.screw
     rpm = float(rad_s_to_rpm(np.max(np.abs(omega))))
     allowed = SAFETY_FACTOR * float(rad_s_to_rpm(critical_speed(d_r, span, axis.support)))
     dn_note = "" if "dn_limit" in run.case.axis_given else " (default: give axis.dn_limit)"
     return [
-        _at_most("speed / critical speed", rpm, allowed, "rpm",
+        _at_most("critical_speed", "speed / critical speed", rpm, allowed, "rpm",
                  f"0.8 x first bending speed, {axis.support} (THK, Permissible Rotational Speed, "
                  "A15-32, eq. 7)",
                  "a longer lead (fewer turns for the feed), a larger diameter, a shorter span "
                  "or a stiffer mounting"),
-        _at_most("d*n", screw.pitch_diameter * 1e3 * rpm, axis.dn_limit, "mm*rpm",
+        _at_most("dn", "d*n", screw.pitch_diameter * 1e3 * rpm, axis.dn_limit, "mm*rpm",
                  f"the nut's catalogue d*n limit{dn_note}",
                  "a longer lead, or a nut with a higher d*n rating"),
     ]  # fmt: skip
 
 
-def _lift_off_row(run: EnergyRun, force: FloatArray) -> list[Criterion]:
+def _lift_off_row(run: EnergyRun, inputs: Inputs) -> list[Criterion]:
     """The relieved half of a preloaded nut against lift-off at 2^1.5 F_pr (ISO 3408-5)."""
     screw = run.case.screw
     if screw.nut == "single" or screw.preload <= 0.0:
         return []
-    f_max = float(np.max(np.abs(force)))
+    f_max = nominal("lift_off", inputs)
     lift = LIFT_OFF_RATIO * screw.preload
     return [_at_most(
-        "lift-off F_max / (2^1.5 F_pr)", f_max, lift, "N",
+        "lift_off", "lift-off F_max / (2^1.5 F_pr)", f_max, lift, "N",
         f"ISO 3408-5:2006 (the preloaded halves, F2 = 0 at |F| = 2^1.5 F_pr = {lift:.4g} N "
         f"with F_pr = {screw.preload:.4g} N); THK A15-20: a preload holds up to about three "
         "times itself",
@@ -500,6 +517,12 @@ def _stiffness_rows(
     run: EnergyRun, model: str, force: FloatArray, d_r: float, span: float, stroke: float,
     nut: float, notes: list[str],
 ) -> tuple[list[Criterion], dict[str, Any]]:  # fmt: skip
+    """The axis stiffness, the lost motion at a reversal and the axial eigenfrequency.
+
+    Shaft, nut and thrust bearings in series at 21 nut positions over the stroke
+    (centred in the span), the nut in the state the cycle's peak load leaves it
+    (:func:`_nut_state`); the figures behind the rows for the JSON and the report.
+    """
     case, axis, screw = run.case, run.axis, run.case.screw
     notes.append("the stroke lies in the middle of the span")
     position = np.linspace(0.5 * (span - stroke), 0.5 * (span + stroke), 21)
@@ -551,9 +574,10 @@ def _stiffness_rows(
     )
     play_text = f" + the axial play {play * 1e6:.3g} um" if screw.nut == "single" else ""
     rows = [
-        _info(f"axis stiffness (least over the stroke{state})", float(np.min(k_axis)) / 1e6,
-              "N/um", source + f"; nut {k_nut / 1e6:.4g} N/um"),
-        _info(f"lost motion at reversal (most{state})", float(np.max(lost)) * 1e6, "um",
+        _info("stiffness", f"axis stiffness (least over the stroke{state})",
+              float(np.min(k_axis)) / 1e6, "N/um", source + f"; nut {k_nut / 1e6:.4g} N/um"),
+        _info("lost_motion", f"lost motion at reversal (most{state})", float(np.max(lost)) * 1e6,
+              "um",
               f"2 F_f / k{play_text}, F_f = 2 pi T_f / l = {f_f:.3g} N (drag at creep speed) "
               "as if the whole axis carried it: an upper bound ('ballscrew contour' puts the "
               "drag on the motor side). The drag torque itself loads no part axially: it twists "
@@ -562,10 +586,11 @@ def _stiffness_rows(
               "guideway's friction would load the whole axis"),
     ]  # fmt: skip
     if freq is None:
-        rows.append(_missing("axial eigenfrequency", "Hz", "sqrt(k/m) / 2 pi",
+        rows.append(_missing("eigenfrequency", "axial eigenfrequency", "Hz", "sqrt(k/m) / 2 pi",
                              "give axis.moving_mass"))  # fmt: skip
     else:
-        rows.append(_info(f"axial eigenfrequency (least{state})", float(np.min(freq)), "Hz",
+        rows.append(_info("eigenfrequency", f"axial eigenfrequency (least{state})",
+                          float(np.min(freq)), "Hz",
                           "sqrt(k/m) / 2 pi with the moving mass"))  # fmt: skip
     return rows, figures
 
@@ -626,25 +651,24 @@ def _creep_drag(run: EnergyRun, model: str) -> float:
 
 
 def _thermal_rows(
-    run: EnergyRun, model: str, energy: ModelEnergy, stroke: float, notes: list[str]
+    run: EnergyRun, model: str, inputs: Inputs, stroke: float, notes: list[str]
 ) -> tuple[list[Criterion], dict[str, Any]]:
     """The thermal lead error per 300 mm against the grade, the growth over the stroke."""
     case, axis = run.case, run.axis
-    assert energy.final_temperature is not None  # a kept thermal error raised in run_check
-    rise = float(energy.final_temperature) - float(run.node.ambient)
-    pre = float(case.check.get("pretension_temperature", 0.0))
+    rise, pre = inputs.temperature_rise, inputs.pretension
     if pre > 0.0 and axis.support != "fixed-fixed":
         raise BallScrewInputError(
             "check.pretension_temperature", f"{pre:g} K",
             f"0 K for a {axis.support} mounting (a pre-tension needs fixed-fixed)",
         )  # fmt: skip
     effective = max(rise - pre, 0.0)
-    error = float(thermal_elongation(effective, 0.3)) * 1e6
+    error = nominal("thermal_error", inputs)
     source = (f"alpha dT 300 mm, alpha = {STEEL_EXPANSION:g}/K, dT = {rise:.3g} K"
               + (f" less {pre:g} K of pre-tension" if pre else "")
               + " (heat balance after the run time)")  # fmt: skip
-    growth = _info("thermal growth over the stroke", float(thermal_elongation(effective, stroke))
-                   * 1e6, "um", "alpha dT x stroke: the position error at the stroke's far "
+    growth = _info("thermal_growth", "thermal growth over the stroke",
+                   float(thermal_elongation(effective, stroke)) * 1e6, "um",
+                   "alpha dT x stroke: the position error at the stroke's far "
                    "end against its near end")  # fmt: skip
     figures: dict[str, Any] = {"temperature_rise_K": rise, "pretension_K": pre,
                                "error_per_300mm_um": error}  # fmt: skip
@@ -660,10 +684,13 @@ def _thermal_rows(
     if grade is None:
         notes.append("no accuracy grade: the thermal lead error is not set against a tolerance "
                      "(give check.accuracy_grade)")  # fmt: skip
-        return [_info("thermal lead error per 300 mm", error, "um", source), growth], figures
+        return [
+            _info("thermal_error", "thermal lead error per 300 mm", error, "um", source),
+            growth,
+        ], figures
     limit = TRAVEL_VARIATION_300[grade] * 1e6
     row = _at_most(
-        f"thermal lead error per 300 mm ({grade})", error, limit, "um",
+        "thermal_error", f"thermal lead error per 300 mm ({grade})", error, limit, "um",
         source + "; v300p of ISO 3408-3 / JIS B 1192",
         "cool the screw or the nut, pre-tension a fixed-fixed screw, lower the preload or "
         "the duty, or compensate in the control",
@@ -671,11 +698,15 @@ def _thermal_rows(
     return [row, growth], figures
 
 
-def _motor_rows(run: EnergyRun, cycle: CycleResult) -> tuple[list[Criterion], dict[str, Any]]:
+def _motor_rows(
+    run: EnergyRun, inputs: Inputs, cycle: CycleResult
+) -> tuple[list[Criterion], dict[str, Any]]:
+    """The motor: inertia ratio, peak and RMS torque, speed, the acceleration it allows."""
     case, axis, screw = run.case, run.axis, run.case.screw
     motor = case.motor
     if not motor:
-        return [_missing("motor", "-", "[motor]", "give [motor] rated_torque, peak_torque, "
+        return [_missing("motor", "motor", "-", "[motor]",
+                         "give [motor] rated_torque, peak_torque, "
                          "rated_speed and axis.motor_inertia")], {}  # fmt: skip
     if "motor_inertia" not in case.axis_given or axis.motor_inertia <= 0.0:
         raise BallScrewInputError(
@@ -685,12 +716,12 @@ def _motor_rows(run: EnergyRun, cycle: CycleResult) -> tuple[list[Criterion], di
     i = axis.gear_ratio
     j_load = reflected_inertia(axis.moving_mass, screw.lead, axis.screw_inertia,
                                axis.coupling_inertia, i)  # fmt: skip
-    ratio = j_load / axis.motor_inertia
+    ratio = nominal("inertia_ratio", inputs)
     torque = np.asarray(cycle.motor_torque, dtype=float)
-    peak, rms = cycle.peak_motor_torque, cycle.rms_motor_torque
+    peak, rms = nominal("peak_torque", inputs), nominal("rms_torque", inputs)
     top = float(rad_s_to_rpm(np.max(np.abs(cycle.motor_speed))))
     rows = [
-        _at_most("inertia ratio J_load/J_motor", ratio, INERTIA_RATIO_LIMIT, "-",
+        _at_most("inertia_ratio", "inertia ratio J_load/J_motor", ratio, INERTIA_RATIO_LIMIT, "-",
                  "J_load = [J_s + J_c + m (l/2 pi)^2] / i^2; limit 10, a servo sizing rule",
                  "a motor with a larger rotor, a gear (i > 1), or a shorter lead"),
     ]  # fmt: skip
@@ -701,18 +732,18 @@ def _motor_rows(run: EnergyRun, cycle: CycleResult) -> tuple[list[Criterion], di
         "rms_torque_Nm": rms,
         "top_speed_rpm": top,
     }
-    for key, label, value, unit, advice in (
-        ("peak_torque", "peak torque", peak, "N*m",
+    for row_key, key, label, value, unit, advice in (
+        ("peak_torque", "peak_torque", "peak torque", peak, "N*m",
          "a larger motor, gentler accelerations, or a gear"),
-        ("rated_torque", "RMS torque / rated torque", rms, "N*m",
+        ("rms_torque", "rated_torque", "RMS torque / rated torque", rms, "N*m",
          "a larger motor, longer dwells, or less friction (lower preload)"),
-        ("rated_speed", "motor speed", top, "rpm", "a longer lead or a lower feed"),
+        ("motor_speed", "rated_speed", "motor speed", top, "rpm", "a longer lead or a lower feed"),
     ):  # fmt: skip
         if key not in motor:
-            rows.append(_missing(label, unit, "[motor]", f"give motor.{key}"))
+            rows.append(_missing(row_key, label, unit, "[motor]", f"give motor.{key}"))
             continue
         limit = float(rad_s_to_rpm(motor[key])) if unit == "rpm" else motor[key]
-        rows.append(_at_most(label, value, limit, unit,
+        rows.append(_at_most(row_key, label, value, limit, unit,
                              "the cycle's torques (energy) against the motor's ratings",
                              advice))  # fmt: skip
     if "peak_torque" in motor:
@@ -722,7 +753,7 @@ def _motor_rows(run: EnergyRun, cycle: CycleResult) -> tuple[list[Criterion], di
         static = float(np.max(np.abs(torque - per_accel * accel)))
         allowed = (motor["peak_torque"] - static) / per_accel
         figures["allowed_acceleration_m_s2"] = allowed
-        rows.append(_info("acceleration the peak torque allows", allowed, "m/s^2",
+        rows.append(_info("acceleration", "acceleration the peak torque allows", allowed, "m/s^2",
                           "(T_peak - T_no inertia) / ((J_m + J_load) 2 pi i / l)"))  # fmt: skip
     return rows, figures
 
@@ -775,13 +806,14 @@ def _tolerances(run: EnergyRun, notes: list[str]) -> tuple[float, float, float, 
 
 
 def _with_uncertainty(
-    run: EnergyRun, model: str, energy: ModelEnergy, force: FloatArray, turns: FloatArray,
-    rows: list[Criterion], stiffness: dict[str, Any], notes: list[str],
+    run: EnergyRun, model: str, energy: ModelEnergy, inputs: Inputs, rows: list[Criterion],
+    stiffness: dict[str, Any], notes: list[str],
 ) -> tuple[list[Criterion], float]:  # fmt: skip
     """Every row with a limit, with its P(NOT OK) and interval (:mod:`.uncertainty`).
 
     And the probability that one row or more is NOT OK in the same draw (a NaN counts
-    as NOT OK, as in :func:`~.uncertainty.judge`).
+    as NOT OK, as in :func:`~.uncertainty.judge`). A row of :data:`~.criteria.CRITERIA`
+    is its function at the draws; any other row has no uncertain input.
     """
     screw = run.case.screw
     t_mass, t_force, t_pre, t_rating, default_preload = _tolerances(run, notes)
@@ -805,16 +837,14 @@ def _with_uncertainty(
         "beside each verdict, 'OK (95 %)' when P <= 5 %, 'NOT OK (95 %)' when P >= 95 %, "
         "else 'undecided'"
     )
-    process = np.asarray(run.profile.process_force, dtype=float)
-    mass_part = force - process
-    samples = _row_samples(run, energy, mass_part, process, turns, rows, d)
-    life = next((r for r in rows if r.name.startswith("fatigue life")), None)
-    if default_preload and t_pre > 0.0 and life is not None and life.name in samples:
-        _preload_effect(run, force, turns, life, t_pre, notes)
+    samples = _row_samples(inputs, rows, d)
+    life = next((r for r in rows if r.key == "life"), None)
+    if default_preload and t_pre > 0.0 and life is not None and life.key in samples:
+        _preload_effect(inputs, life, t_pre, notes)
     out = []
     fails = np.zeros(SAMPLES, dtype=bool)
     for row in rows:
-        u = samples.get(row.name)
+        u = samples.get(row.key)
         if u is None and row.utilisation is not None:
             u = np.full(SAMPLES, row.utilisation)  # no uncertain input in its formula
         if u is not None:
@@ -823,16 +853,12 @@ def _with_uncertainty(
     return out, float(np.mean(fails))
 
 
-def _preload_effect(
-    run: EnergyRun, force: FloatArray, turns: FloatArray, life: Criterion, t_pre: float,
-    notes: list[str],
-) -> None:  # fmt: skip
+def _preload_effect(inputs: Inputs, life: Criterion, t_pre: float, notes: list[str]) -> None:
     """A note: the fatigue life row's utilisation at the default preload band's two ends."""
-    if run.case.dynamic_load_rating is None or run.case.screw.nut == "single":
+    if not inputs.preloaded:
         return
-    pre = run.case.screw.preload * np.array([1.0 - t_pre, 1.0 + t_pre])
-    f = np.broadcast_to(np.asarray(force, dtype=float), (2, np.size(force)))
-    low, high = _life_samples(run, f, pre, np.ones(2), turns, life)
+    ends = replace(ones(2), preload=np.array([1.0 - t_pre, 1.0 + t_pre]))
+    low, high = drawn("life", Sample(inputs, ends), float(life.limit or 0.0))
     notes.append(
         f"the default preload band alone moves the fatigue life row's utilisation from "
         f"{low:.3g} (preload -{t_pre:.0%}) to {high:.3g} (+{t_pre:.0%}), nominal "
@@ -841,72 +867,82 @@ def _preload_effect(
     )
 
 
-def _row_samples(
-    run: EnergyRun, energy: ModelEnergy, mass_part: FloatArray, process: FloatArray,
-    turns: FloatArray, rows: list[Criterion], d: Any,
-) -> dict[str, FloatArray]:  # fmt: skip
-    """The utilisation of each row with an uncertain input, one per draw."""
-    case, axis, screw = run.case, run.axis, run.case.screw
-    by_name = {r.name: r for r in rows if r.utilisation is not None}
-    cycle = energy.cycle
+def _row_samples(inputs: Inputs, rows: list[Criterion], d: Draws) -> dict[str, FloatArray]:
+    """The utilisation of each row of :data:`~.criteria.CRITERIA` with a limit, one per draw.
+
+    By key; the draws are taken in blocks of about 2 million (draw, sample) pairs per
+    array, whatever the cycle's length, so that a long profile does not hold gigabytes.
+    """
+    drawn_rows = [r for r in rows if r.utilisation is not None and r.key in CRITERIA]
     n = d.mass.size
-    out: dict[str, FloatArray] = {name: np.empty(n) for name in by_name}
-    weights = _weights(run.profile.time)
-    lead, i = screw.lead, axis.gear_ratio
-    omega = np.asarray(cycle.screw_speed, dtype=float)
-    t_motor = np.asarray(cycle.motor_torque, dtype=float)
-    t_fric = np.sign(omega) * np.asarray(cycle.friction_torque, dtype=float) / i
-    # Every formula below takes a sample through its forces (mass part, process force)
-    # and turns, or its torques (and weight), alone: the samples that share them (a
-    # cruise, a dwell, a constant acceleration) are taken once, with their turns or
-    # weights added up. The same sums, in another order: equal to rounding.
-    t_mass, t_process, t_motor, t_fric, weights = _distinct_samples(
-        (mass_part, process, t_motor, t_fric), (weights,)
-    )
-    mass_part, process, turns = _distinct_samples((mass_part, process), (turns,))
-    # Draws at a time: about 2 million (draw, distinct sample) pairs per array, whatever
-    # the cycle's length, so that a long profile does not hold gigabytes.
-    chunk = max(1, min(n, 2_000_000 // max(int(t_mass.size), 1)))
-    preloaded = screw.nut != "single" and screw.preload > 0.0
+    out = {r.key: np.empty(n) for r in drawn_rows}
+    size = max(int(inputs.motor_torque.size), int(inputs.turns.size), 1)
+    chunk = max(1, min(n, 2_000_000 // size))
     for start in range(0, n, chunk):
         sl = slice(start, min(start + chunk, n))
-        km, kf, kp = d.mass[sl, None], d.force[sl, None], d.preload[sl, None]
-        kr, kfr = d.ratings[sl], d.friction[sl]
-        f = km * mass_part + kf * process
-        peak = np.max(np.abs(f), axis=1)
-        pre = screw.preload * kp[:, 0]
-        t: FloatArray | None = None  # the motor torques of the draws, for both torque rows
-        for name, row in by_name.items():
-            u: FloatArray | None = None
-            if name.startswith("fatigue life") and case.dynamic_load_rating is not None:
-                u = _life_samples(run, f, pre, kr, turns, row)
-            elif name.startswith("static safety") and case.static_load_rating is not None:
-                half = preloaded_loads(peak, pre if preloaded else 0.0)[0]
-                u = np.asarray(row.limit, dtype=float) * half / (case.static_load_rating * kr)
-            elif name.startswith("lift-off"):
-                u = peak / (LIFT_OFF_RATIO * pre)
-            elif name.startswith(("buckling load", "axial load, root section")):
-                u = peak / 1e3 / float(row.limit or math.inf)
-            elif name.startswith("thermal lead error") and row.limit:
-                u = _thermal_samples(run, energy, kfr, row)
-            elif name.startswith("inertia ratio"):
-                j = reflected_inertia(1.0, lead) * axis.moving_mass * km[:, 0]
-                j = (j + (axis.screw_inertia + axis.coupling_inertia) / i**2) / axis.motor_inertia
-                u = j / float(row.limit or math.inf)
-            elif name.startswith(("peak torque", "RMS torque")):
-                if t is None:
-                    t = (t_motor + ((km - 1.0) * t_mass + (kf - 1.0) * t_process) * lead
-                         / (2.0 * math.pi * i) + (kfr[:, None] - 1.0) * t_fric)  # fmt: skip
-                if name.startswith("peak"):
-                    value = np.max(np.abs(t), axis=1)
-                else:
-                    value = np.sqrt(np.sum(weights * t**2, axis=1) / run.profile.duration)
-                u = value / float(row.limit or math.inf)
-            if u is not None:
-                out[name][sl] = u
-            else:
-                out[name][sl] = float(row.utilisation)  # type: ignore[arg-type]
+        block = Sample(inputs, d[sl])
+        for row in drawn_rows:
+            out[row.key][sl] = drawn(row.key, block, float(row.limit or math.inf))
     return out
+
+
+def _turns(run: EnergyRun, omega: FloatArray) -> FloatArray:
+    """The screw turns made at each sample of the run [-] (trapezoidal weights)."""
+    return np.asarray(np.abs(omega) / (2.0 * math.pi) * _weights(run.profile.time), dtype=float)
+
+
+def criterion_inputs(run: EnergyRun, model: str | None = None) -> Inputs:
+    """The inputs of the drawn criteria over ``run``'s cycle for ``model`` (default the first).
+
+    What :func:`run_check` computes those rows from: each row of
+    :data:`~.criteria.CRITERIA` is its function at a draw of ones
+    (:func:`~.criteria.nominal`), its P(NOT OK) the same function at the draws.
+    """
+    energy = run.results[model or next(iter(run.results))]
+    if energy.thermal_error is not None:
+        raise energy.thermal_error
+    force = np.asarray(energy.cycle.axial_force, dtype=float)
+    turns = _turns(run, np.asarray(energy.cycle.screw_speed, dtype=float))
+    return _criterion_inputs(run, energy, force, turns)
+
+
+def _criterion_inputs(
+    run: EnergyRun, energy: ModelEnergy, force: FloatArray, turns: FloatArray
+) -> Inputs:
+    """What the drawn criteria are computed from (:class:`~.criteria.Inputs`).
+
+    Every formula takes a sample through its forces (mass part, process force) and
+    turns, or its torques (and weight), alone: the samples that share them (a cruise,
+    a dwell, a constant acceleration) are taken once, with their turns or weights
+    added up (:func:`_distinct_samples`).
+    """
+    case, axis, screw = run.case, run.axis, run.case.screw
+    cycle = energy.cycle
+    assert energy.final_temperature is not None  # a kept thermal error raised in run_check
+    process = np.asarray(run.profile.process_force, dtype=float)
+    mass_part = np.asarray(force, dtype=float) - process
+    omega = np.asarray(cycle.screw_speed, dtype=float)
+    t_motor = np.asarray(cycle.motor_torque, dtype=float)
+    t_fric = np.sign(omega) * np.asarray(cycle.friction_torque, dtype=float) / axis.gear_ratio
+    t_mass, t_process, t_motor, t_fric, weights = _distinct_samples(
+        (mass_part, process, t_motor, t_fric), (_weights(run.profile.time),)
+    )
+    f_mass, f_process, f_turns = _distinct_samples((mass_part, process), (turns,))
+    f_w = case.check.get("load_factor")
+    return Inputs(
+        mass_force=f_mass, process_force=f_process, turns=f_turns, motor_torque=t_motor,
+        torque_mass_force=t_mass, torque_process_force=t_process, motor_friction=t_fric,
+        weights=weights, duration=float(run.profile.duration),
+        rms_torque=float(cycle.rms_motor_torque), lead=screw.lead,
+        gear_ratio=axis.gear_ratio, preload=screw.preload, preloaded=screw.nut != "single",
+        dynamic_rating=case.dynamic_load_rating, static_rating=case.static_load_rating,
+        load_factor=DEFAULT_LOAD_FACTOR if f_w is None else float(f_w),
+        reliability=float(case.check.get("reliability", 0.9)),
+        temperature_rise=float(energy.final_temperature) - float(run.node.ambient),
+        pretension=float(case.check.get("pretension_temperature", 0.0)),
+        moving_mass=axis.moving_mass, screw_inertia=axis.screw_inertia,
+        coupling_inertia=axis.coupling_inertia, motor_inertia=axis.motor_inertia,
+    )  # fmt: skip
 
 
 def _distinct_samples(
@@ -933,60 +969,3 @@ def _distinct_samples(
     added = [np.bincount(inverse, weights=np.asarray(w, dtype=float).reshape(-1),
                          minlength=count) for w in sums]  # fmt: skip
     return (*(c[starts] for c in ordered), *added)
-
-
-def _life_samples(
-    run: EnergyRun, f: FloatArray, pre: FloatArray, kr: FloatArray, turns: FloatArray,
-    row: Criterion,
-) -> FloatArray:  # fmt: skip
-    """Required over computed life for each draw of forces, preload and rating."""
-    case, screw = run.case, run.case.screw
-    assert case.dynamic_load_rating is not None
-    rpm = float(np.sum(turns)) / run.profile.duration * 60.0
-    return life_utilisation(
-        f, pre, case.dynamic_load_rating * kr, turns, float(row.limit or 0.0), rpm,
-        preloaded=screw.nut != "single",
-        load_factor=float(run.case.check.get("load_factor") or DEFAULT_LOAD_FACTOR),
-        reliability=float(case.check.get("reliability", 0.9)),
-    )  # fmt: skip
-
-
-def life_utilisation(
-    force: FloatArray, preload: FloatArray, rating: FloatArray, turns: FloatArray,
-    required_hours: float, speed_rpm: float, *, preloaded: bool, load_factor: float,
-    reliability: float = 0.9,
-) -> FloatArray:  # fmt: skip
-    r"""Required over computed L10 life of a cycle, one per draw [-] (ISO 3408-5 cl. 7).
-
-    ``force`` [N] is (draws, samples), the nut's axial force at each sample of
-    the cycle, ``turns`` (samples,) the screw turns made under each, ``preload``
-    [N] and ``rating`` [N] (draws,) the preload and :math:`C_a` of each draw.
-    A preloaded nut's halves carry :func:`~ballscrew.design.sizing.preloaded_loads`
-    (a single nut's flanks each one sign of the force), each half's cubic mean
-    load gives :math:`L = a_1 (C_a/(f_w F_m))^3 10^6` revolutions, the halves
-    in series; hours at ``speed_rpm``, the cycle's mean speed.
-    """
-    f = np.asarray(force, dtype=float)
-    if preloaded:
-        loaded, relieved = preloaded_loads(f, np.asarray(preload, dtype=float)[:, None])
-        h1 = np.where(f >= 0.0, loaded, relieved)
-        h2 = np.where(f >= 0.0, relieved, loaded)
-    else:
-        h1, h2 = np.maximum(f, 0.0), np.maximum(-f, 0.0)
-    revs = combined_life(nominal_life(rating, cubic_mean_load(h1, turns), reliability,
-                                      load_factor),
-                         nominal_life(rating, cubic_mean_load(h2, turns), reliability,
-                                      load_factor))  # fmt: skip
-    hours = np.asarray(revs, dtype=float) / (60.0 * speed_rpm)
-    return np.asarray(required_hours / hours, dtype=float)
-
-
-def _thermal_samples(
-    run: EnergyRun, energy: ModelEnergy, kfr: FloatArray, row: Criterion
-) -> FloatArray:
-    """The lead error's utilisation with the temperature rise scaled by the friction factor."""
-    assert energy.final_temperature is not None
-    rise = float(energy.final_temperature) - float(run.node.ambient)
-    pre = float(run.case.check.get("pretension_temperature", 0.0))
-    error = thermal_elongation(np.maximum(rise * kfr - pre, 0.0), 0.3) * 1e6
-    return np.asarray(error / float(row.limit or math.inf), dtype=float)

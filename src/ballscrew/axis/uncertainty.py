@@ -149,6 +149,11 @@ class Draws:
     ratings: FloatArray
     friction: FloatArray
 
+    def __getitem__(self, index: slice) -> Draws:
+        """The draws ``index`` (a block of them) of every factor."""
+        return Draws(self.mass[index], self.force[index], self.preload[index],
+                     self.ratings[index], self.friction[index])  # fmt: skip
+
 
 def draws(
     mass: float, force: float, preload: float, ratings: float, friction_sigma: float,

@@ -521,7 +521,7 @@ def _one_axis(
     used = Criterion(
         "travel used", travel * 1e3, (high - low) * 1e3, "mm", travel / (high - low), "OK",
         f"the program's lowest to highest position against axes.{letter}.travel (a block "
-        "past it is refused)",
+        "past it is refused)", key="travel",
     )  # fmt: skip
     result = AxisResult(
         letter=letter,

@@ -239,23 +239,23 @@ def drive_rows(r: ProgramResult) -> list[list[str]]:
 
 
 VERDICT_ROWS = (
-    ("lift-off", "lift-off"),
-    ("d*n", "d*n"),
-    ("RMS torque", "RMS torque"),
-    ("peak torque", "peak torque"),
-    ("motor speed", "motor speed"),
-    ("travel used", "travel"),
-    ("thermal lead error per 300 mm", "thermal lead error per 300 mm"),
+    ("lift_off", "lift-off"),
+    ("dn", "d*n"),
+    ("rms_torque", "RMS torque"),
+    ("peak_torque", "peak torque"),
+    ("motor_speed", "motor speed"),
+    ("travel", "travel"),
+    ("thermal_error", "thermal lead error per 300 mm"),
 )
-"""The check's rows each axis's verdict line shows (the start of the row's name, its label),
-whatever their verdict; any other row is shown where it is not OK."""
+"""The check's rows each axis's verdict line shows (the row's key, its label), whatever their
+verdict; any other row is shown where it is not OK."""
 
 
 def _row_text(label: str, c: Criterion) -> str:
     if c.value is None:
         return f"{label} not checked ({c.advice})"
     if c.limit is None:
-        why = " (no accuracy grade)" if c.name.startswith("thermal lead") else ""
+        why = " (no accuracy grade)" if c.key == "thermal_error" else ""
         return f"{label} {num(c.value)} {c.unit}{why}"
     use = "" if c.utilisation is None else f"{c.utilisation:.0%}"
     mark = "" if c.verdict in ("OK", "INFO") else f" {c.verdict}"
@@ -278,14 +278,14 @@ def verdict_lines(r: ProgramResult) -> list[str]:
             lines.append(f"{letter}: NOT CHECKED: {why.removeprefix('not checked ')}")
             continue
         parts, shown = [], set()
-        for start, label in VERDICT_ROWS:
+        for key, label in VERDICT_ROWS:
             for c in a.verdicts:
-                if c.name.startswith(start):
+                if c.key == key:
                     parts.append(_row_text(label, c))
-                    shown.add(c.name)
+                    shown.add(c.key)
         flagged = ("CHECK", "NOT OK", "NOT CHECKED")
         parts += [_row_text(c.name, c) for c in a.verdicts
-                  if c.name not in shown and c.verdict in flagged]  # fmt: skip
+                  if c.key not in shown and c.verdict in flagged]  # fmt: skip
         lines.append(f"{letter}: {a.verdict}: " + "; ".join(parts))
     return lines
 

@@ -1,5 +1,9 @@
 """``ballscrew select``: every candidate through the axis check, the Pareto front, one pick.
 
+(A long module, about 900 lines: the evaluation of a candidate, the front, the
+recommendation's rule and the sentences that explain each pick and each refusal
+stay together; the candidate pool is in :mod:`.pool`.)
+
 Each candidate (:mod:`.pool`) is its own case: the user's axis, motor,
 check limits and duty with the screw replaced. It runs through
 :func:`~ballscrew.axis.duty.run_energy` and :func:`~ballscrew.axis.check.run_check`
@@ -140,7 +144,8 @@ def parse_confidence(text: str | float, field: str = "--confidence") -> float:
     return value
 
 
-_MOTOR_ROWS = ("inertia ratio", "peak torque", "RMS torque", "motor speed")
+_MOTOR_ROWS = ("inertia_ratio", "peak_torque", "rms_torque", "motor_speed")
+"""The keys of the check's motor rows (the motor margin is the room the worst leaves)."""
 
 
 @dataclass(frozen=True)
@@ -316,9 +321,8 @@ def _figures(check: AxisCheck, run: Any, model: str, seconds: float) -> dict[str
     friction = float(energy.cycle.friction_energy) / energy.cycles
     load = abs(float(energy.as_dict()["load_work_J"])) / energy.cycles
     rows = [c for c in check.criteria if c.utilisation is not None]
-    motor = [float(c.utilisation or 0.0) for c in rows if c.name.startswith(_MOTOR_ROWS)]
-    stiff = check.stiffness.get("axis_N_per_um")
-    lost = check.stiffness.get("lost_motion_um")
+    motor = [float(c.utilisation or 0.0) for c in rows if c.key in _MOTOR_ROWS]
+    stiff, lost = check.row("stiffness"), check.row("lost_motion")
     nan = math.nan
     return {
         "energy_J": friction,
@@ -326,13 +330,18 @@ def _figures(check: AxisCheck, run: Any, model: str, seconds: float) -> dict[str
         "temperature_rise_K": float(check.thermal.get("temperature_rise_K", nan)),
         "thermal_error_um": float(check.thermal.get("error_per_300mm_um", nan)),
         "L10_h": float(check.life.get("L10_hours", nan)),
-        "stiffness_N_per_um": float(np.min(stiff)) if stiff is not None else nan,
-        "lost_motion_um": float(np.max(lost)) if lost is not None else nan,
+        "stiffness_N_per_um": _value(stiff),
+        "lost_motion_um": _value(lost),
         "motor_margin": 1.0 - max(motor) if motor else nan,
         "max_utilisation": max((float(c.utilisation or 0.0) for c in rows), default=nan),
         "p_not_ok": nan if check.p_not_ok is None else float(check.p_not_ok),
         "seconds": seconds,
     }
+
+
+def _value(row: Criterion | None) -> float:
+    """A row's value, NaN when the check has no such row or did not compute it."""
+    return math.nan if row is None or row.value is None else float(row.value)
 
 
 def _binding(check: AxisCheck) -> str:
@@ -681,6 +690,50 @@ def run_select(
     """
     chosen = _check_objectives(objectives)
     confidence = parse_confidence(confidence, "confidence")
+    motor_currency = _check_prices(chosen, oils, motors, screw_prices, currency)
+    if pool is not None:
+        found = list(pool)
+        if not found:
+            raise BallScrewInputError("pool", "(empty)", "at least one candidate")
+    else:
+        found = candidates(case.text, diameter=diameter, lead=lead, makers=makers,
+                           preloads=preloads, oils=list(oils) or [None],
+                           default_oil=case.lubricant.name, sources=sources, nuts=nuts,
+                           motors=motors, screw_prices=screw_prices)  # fmt: skip
+    batch = _Batch(found, _prepared(found, profile, model, run_time), profile,
+                   {"model": model, "cycles": cycles, "temperature": temperature,
+                    "run_time": run_time, "move": move, "confidence": confidence})  # fmt: skip
+    evaluated = batch.evaluated
+    inputs = {"case": case.title, "model": model, "cycles": cycles, "temperature": temperature,
+              "run_time_s": run_time, "move": dict(move or {}), "objectives": list(chosen),
+              "diameter_m": list(diameter) if diameter else None,
+              "lead_m": list(lead) if lead else None, "makers": list(makers),
+              "preloads": list(preloads), "oils": list(oils), "sources": list(sources),
+              "nuts": list(nuts), "motors": [m.name for m in motors],
+              "currency": motor_currency or currency or None,
+              "rating_estimates": scatter_text() if any(c.estimated for c in found) else None,
+              "confidence": confidence, "case_text": case.text}  # fmt: skip
+    feasible, undecided = _passing(evaluated)
+    if not feasible:
+        failed = NoneFeasible(case.title, chosen, tuple(evaluated), model, "", inputs)
+        reason = _none_passes(failed.rejected, len(evaluated), _duty(move))
+        failed = dataclasses.replace(failed, reason=reason)
+        raise NoFeasibleCandidateError("candidates", f"{len(evaluated)} candidates",
+                                       reason, failed)  # fmt: skip
+    _check_computed(chosen, evaluated, feasible)
+    front, best, reason, undecided = _front_and_pick(batch, chosen, confidence)
+    return SelectResult(case.title, chosen, tuple(evaluated), front, best, reason, model, inputs,
+                        confidence, undecided)  # fmt: skip
+
+
+def _check_prices(
+    chosen: Sequence[str], oils: Sequence[str], motors: Sequence[MotorRow],
+    screw_prices: Mapping[str, float] | None, currency: str,
+) -> str:  # fmt: skip
+    """Refuse an unknown oil, a price objective without prices, or two currencies.
+
+    Returns the motor table's currency ("" when it has no price).
+    """
     for oil in oils:
         try:
             lubricants.get(oil)
@@ -699,64 +752,63 @@ def run_select(
             "--screw-prices", currency or "(none)",
             f"prices in the motor table's currency, {motor_currency}",
         )  # fmt: skip
-    if pool is not None:
-        found = list(pool)
-        if not found:
-            raise BallScrewInputError("pool", "(empty)", "at least one candidate")
-    else:
-        found = candidates(case.text, diameter=diameter, lead=lead, makers=makers,
-                           preloads=preloads, oils=list(oils) or [None],
-                           default_oil=case.lubricant.name, sources=sources, nuts=nuts,
-                           motors=motors, screw_prices=screw_prices)  # fmt: skip
-    ready = _prepared(found, profile, model, run_time)
-    evaluated = [
-        evaluate(c, profile, model=model, cycles=cycles, temperature=temperature,
-                 run_time=run_time, move=move, parsed=parsed, steady=steady,
-                 confidence=confidence)[0]
-        for c, (parsed, steady) in zip(found, ready, strict=True)
-    ]  # fmt: skip
-    alone = {i for i, (_, steady) in enumerate(ready) if steady is None}
+    return motor_currency
 
-    def again(indices: Sequence[int]) -> None:
+
+class _Batch:
+    """The candidates evaluated with one batched heat balance, and again alone where it matters.
+
+    The batched temperature moves a thermal row's draws by 1e-5 relative at most: a
+    candidate near a bound (:meth:`near`) and the front and the pick are evaluated
+    alone (their heat balance solved on its own), so that their figures are exact.
+    """
+
+    def __init__(
+        self, found: Sequence[Candidate], ready: Sequence[Any], profile: Profile,
+        options: dict[str, Any],
+    ) -> None:  # fmt: skip
+        self.found, self.ready, self.profile, self.options = found, ready, profile, options
+        self.evaluated = [
+            evaluate(c, profile, parsed=parsed, steady=steady, **options)[0]
+            for c, (parsed, steady) in zip(found, ready, strict=True)
+        ]
+        self.alone = {i for i, (_, steady) in enumerate(ready) if steady is None}
+        self.again(self.near())
+
+    def near(self) -> list[int]:
+        """The candidates to evaluate alone: feasibility and the pick as alone.
+
+        A utilisation within NEAR of 1 or of RECOMMEND_BELOW, or a P(NOT OK) within 1 %
+        of the allowed one.
+        """
+        allowed = 1.0 - self.options["confidence"]
+        return [i for i, e in enumerate(self.evaluated) if any(
+            abs(e.figures["max_utilisation"] - bound) <= NEAR * bound
+            for bound in (1.0, RECOMMEND_BELOW))
+            or abs(e.figures["p_not_ok"] - allowed) <= 0.01]  # fmt: skip
+
+    def again(self, indices: Sequence[int]) -> None:
         """Evaluate ``indices`` alone, their heat balance solved on its own (exact figures)."""
         for i in indices:
-            if i not in alone:
-                evaluated[i] = evaluate(found[i], profile, model=model, cycles=cycles,
-                                        temperature=temperature, run_time=run_time, move=move,
-                                        parsed=ready[i][0], confidence=confidence)[0]  # fmt: skip
-                alone.add(i)
+            if i not in self.alone:
+                again = evaluate(self.found[i], self.profile, parsed=self.ready[i][0],
+                                 **self.options)  # fmt: skip
+                self.evaluated[i] = again[0]
+                self.alone.add(i)
 
-    # A utilisation within NEAR of 1 or of RECOMMEND_BELOW, or a P(NOT OK) within 1 % of the
-    # allowed one: feasibility and the pick as alone (the batched temperature moves a thermal
-    # row's draws by 1e-5 relative at most).
-    again([i for i, e in enumerate(evaluated) if any(
-        abs(e.figures["max_utilisation"] - bound) <= NEAR * bound
-        for bound in (1.0, RECOMMEND_BELOW))
-        or abs(e.figures["p_not_ok"] - (1.0 - confidence)) <= 0.01])  # fmt: skip
-    inputs = {"case": case.title, "model": model, "cycles": cycles, "temperature": temperature,
-              "run_time_s": run_time, "move": dict(move or {}), "objectives": list(chosen),
-              "diameter_m": list(diameter) if diameter else None,
-              "lead_m": list(lead) if lead else None, "makers": list(makers),
-              "preloads": list(preloads), "oils": list(oils), "sources": list(sources),
-              "nuts": list(nuts), "motors": [m.name for m in motors],
-              "currency": motor_currency or currency or None,
-              "rating_estimates": scatter_text() if any(c.estimated for c in found) else None,
-              "confidence": confidence, "case_text": case.text}  # fmt: skip
 
-    def passing() -> tuple[list[int], bool]:
-        """The candidates the front is taken over, and whether they are only nominal passes."""
-        sure = [i for i, e in enumerate(evaluated) if e.feasible]
-        if sure:
-            return sure, False
-        return [i for i, e in enumerate(evaluated) if e.nominal], True
+def _passing(evaluated: Sequence[Evaluated]) -> tuple[list[int], bool]:
+    """The candidates the front is taken over, and whether they are only nominal passes."""
+    sure = [i for i, e in enumerate(evaluated) if e.feasible]
+    if sure:
+        return sure, False
+    return [i for i, e in enumerate(evaluated) if e.nominal], True
 
-    feasible, undecided = passing()
-    if not feasible:
-        failed = NoneFeasible(case.title, chosen, tuple(evaluated), model, "", inputs)
-        reason = _none_passes(failed.rejected, len(evaluated), _duty(move))
-        failed = dataclasses.replace(failed, reason=reason)
-        raise NoFeasibleCandidateError("candidates", f"{len(evaluated)} candidates",
-                                       reason, failed)  # fmt: skip
+
+def _check_computed(
+    chosen: Sequence[str], evaluated: Sequence[Evaluated], feasible: Sequence[int]
+) -> None:
+    """Refuse an objective no feasible candidate has a figure for (naming those computed)."""
     for o in chosen:
         key = OBJECTIVES[o][0]
         if all(math.isnan(evaluated[i].figures[key]) for i in feasible):
@@ -768,8 +820,20 @@ def run_select(
                 + ", ".join(k for k, (f, _, _) in OBJECTIVES.items()
                             if any(not math.isnan(evaluated[i].figures[f]) for i in feasible)),
             )  # fmt: skip
+
+
+def _front_and_pick(
+    batch: _Batch, chosen: Sequence[str], confidence: float
+) -> tuple[tuple[int, ...], int, str, bool]:
+    """The front, the pick, why, and whether only nominal passes were left.
+
+    On figures equal to their lone check's: the front's members and the pick not yet
+    evaluated alone are, and the front is taken again, until none is left.
+    """
+    evaluated = batch.evaluated
     columns = [OBJECTIVES[o] for o in chosen]
-    while True:  # the front and the pick on figures equal to their lone check's
+    while True:
+        feasible, undecided = _passing(evaluated)
         f = np.array([[sense * evaluated[i].figures[key] for key, _, sense in columns]
                       for i in feasible])  # fmt: skip
         f = np.where(np.isnan(f), np.inf, f)
@@ -779,13 +843,10 @@ def run_select(
         else:
             best, reason = _recommend(evaluated, front, chosen[0], confidence)
             reason += _passed_over(evaluated, feasible, columns, chosen[0], confidence)
-        todo = [i for i in (*front, best) if i not in alone]
+        todo = [i for i in (*front, best) if i not in batch.alone]
         if not todo:
-            break
-        again(todo)
-        feasible, undecided = passing()
-    return SelectResult(case.title, chosen, tuple(evaluated), front, best, reason, model, inputs,
-                        confidence, undecided)  # fmt: skip
+            return front, best, reason, undecided
+        batch.again(todo)
 
 
 def _passed_over(

@@ -12,7 +12,7 @@ are run on the nominal inputs. Two criteria:
 
 ``life``
     The fatigue life of a preloaded double nut
-    (:func:`ballscrew.axis.check.life_utilisation`) over an out-and-back cycle
+    (:func:`ballscrew.axis.criteria.life_utilisation`) over an out-and-back cycle
     (acceleration, a cruise with a process force, deceleration; back without
     the force). Per case: :math:`C_a` log-uniform 10 to 100 kN; preload 2 to
     10 % of :math:`C_a`, uniform; the inertia force log-uniform 2 to 10 % of
@@ -45,7 +45,7 @@ from functools import partial
 
 import numpy as np
 
-from ..axis.check import life_utilisation
+from ..axis.criteria import life_utilisation
 from ..axis.uncertainty import SAMPLES, draws, judge, model_error
 from ..errors import BallScrewInputError, FloatArray
 

@@ -405,10 +405,11 @@ def display(answer: Mapping[str, Any], system: str) -> dict[str, Any]:
 
 
 def _criterion(row: Mapping[str, Any], system: str) -> dict[str, Any]:
-    """A row of the check as ``ballscrew check --units`` prints it: name, value, limit, unit."""
+    """A row of the check as ``ballscrew check --units`` prints it (with the row's key)."""
     value, unit = shown(_nan(row["value"]), row["unit"], system)
     limit, _ = shown(_nan(row["limit"]), row["unit"], system)
-    return {"name": label_text(row["name"], system), "value": _floats([value])[0],
+    return {"key": row["key"], "name": label_text(row["name"], system),
+            "value": _floats([value])[0],
             "limit": _floats([limit])[0], "unit": unit}  # fmt: skip
 
 

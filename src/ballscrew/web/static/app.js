@@ -415,7 +415,7 @@
       const use = r.utilisation === null ? "-" : pct(r.utilisation);
       const spread = r.utilisation_95 ? `${pct(r.utilisation_95[0])} to ${pct(r.utilisation_95[1])}` : "-";
       const p = r.p_not_ok === null || r.p_not_ok === undefined ? "-" : pct(r.p_not_ok);
-      return `<tr class="verdict" data-verdict="${esc(r.verdict)}"><th title="${esc(r.source)}">${esc(shown.name)}</th><td>${num(shown.value)}</td><td>${num(shown.limit)}</td><td>${esc(shown.unit)}</td><td>${use}</td><td>${spread}</td><td>${esc(r.verdict)}</td><td>${p}</td><td>${esc(r.guarded_verdict ?? "-")}</td><td>${esc(r.advice)}</td></tr>`;
+      return `<tr class="verdict" data-key="${esc(r.key)}" data-verdict="${esc(r.verdict)}"><th title="${esc(r.source)}">${esc(shown.name)}</th><td>${num(shown.value)}</td><td>${num(shown.limit)}</td><td>${esc(shown.unit)}</td><td>${use}</td><td>${spread}</td><td>${esc(r.verdict)}</td><td>${p}</td><td>${esc(r.guarded_verdict ?? "-")}</td><td>${esc(r.advice)}</td></tr>`;
     });
     const assumed = c.assumptions.map((a) => `<tr><td colspan="10" class="assumed">assumed: ${esc(a)}</td></tr>`);
     $("check_table").innerHTML = `${head}<tbody>${rows.join("")}${assumed.join("")}</tbody>`;
