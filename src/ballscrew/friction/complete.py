@@ -1,5 +1,9 @@
 r"""The complete loss budget of a lubricated ball screw: the predictive model.
 
+This module is long on purpose: it is one model, the sum of every loss mechanism of the
+nut, and each mechanism's share of the loaded balls is assembled here from the laws of
+:mod:`ballscrew.rolling_losses` and the state the contacts share.
+
 Every mechanism that dissipates power in the ball contacts of a ball screw,
 each a named component of the result, each from a published law
 (:mod:`ballscrew.rolling_losses`), added up over the loaded balls:

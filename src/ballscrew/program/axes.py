@@ -471,6 +471,12 @@ def _reversals(
 def _one_axis(
     letter: str, machine: Machine, motion: Motion, program: Program,
 ) -> tuple[AxisResult, dict[str, FloatArray]]:  # fmt: skip
+    """One feed axis over the program: its result and its time series.
+
+    The axis's cycle at its start temperature, the heat balance over the program, the
+    cycle again at the warmest temperature reached (:func:`_torques_at`), the energies
+    per block, the reversals, the drive's losses and ``ballscrew check``'s verdicts.
+    """
     ax = machine.axes[letter]
     case = ax.case
     i = LINEAR_AXES.index(letter)
@@ -488,25 +494,14 @@ def _one_axis(
                            model=machine.model, **params)  # fmt: skip
     omega = first.screw_speed
     time = motion.time
-    power0 = first.friction_torque * np.abs(omega)
-    temp = series_temperature(time, power0 + first.bearing_torque * np.abs(omega), node,
-                              case.screw, omega, t0)  # fmt: skip
-    top = float(np.max(temp))
-    t_f, t_m = _torques_at(temp, first, lambda: axis_cycle(
-        profile, case.screw, case.lubricant, axis, temperature=top, model=machine.model,
+    temp, top, t_f, t_m = _heated(time, first, node, case.screw, t0, lambda warm: axis_cycle(
+        profile, case.screw, case.lubricant, axis, temperature=warm, model=machine.model,
         **params), axis.gear_ratio)  # fmt: skip
     power = t_f * np.abs(omega)
     shaft = t_m * first.motor_speed
-    dt = np.diff(time)
-    # The friction's work over each step, torque times the screw's angle: the angle is exact
-    # (the axis moves one way between two samples), the torque its mean at the two ends.
-    turned = np.abs(np.diff(motion.position[:, i])) * 2.0 * math.pi / case.screw.lead
-    friction_steps = 0.5 * (t_f[1:] + t_f[:-1]) * turned
-    per_block = np.bincount(motion.block[:-1], weights=friction_steps, minlength=program.size)
-    positive = np.maximum(shaft, 0.0)
-    supplied_steps = 0.5 * (positive[1:] + positive[:-1]) * dt
-    supplied_block = np.bincount(motion.block[:-1], weights=supplied_steps,
-                                 minlength=program.size)  # fmt: skip
+    turned, friction_steps, per_block, supplied_block = _block_energies(
+        motion, i, program.size, t_f, shaft, case.screw.lead
+    )
     force = first.axial_force
     distance, feed_distance = _distances(motion, i)
     reversals = _reversals(letter, setup, machine, motion, program, force, t0)
@@ -517,12 +512,7 @@ def _one_axis(
     drive = drive_energy(time, t_m, first.motor_speed, MotorConstants.from_case(motor),
                          DriveSpec.from_mapping(machine.drive), name=f"axes.{letter}")  # fmt: skip
     check = _axis_check(letter, machine, setup, profile, first, duration, top, notes)
-    low, high = ax.travel
-    used = Criterion(
-        "travel used", travel * 1e3, (high - low) * 1e3, "mm", travel / (high - low), "OK",
-        f"the program's lowest to highest position against axes.{letter}.travel (a block "
-        "past it is refused)", key="travel",
-    )  # fmt: skip
+    used = _travel_row(letter, ax.travel, travel)
     result = AxisResult(
         letter=letter,
         title=case.title,
@@ -567,6 +557,54 @@ def _one_axis(
         "motor_speed": first.motor_speed,
     }
     return result, series
+
+
+def _heated(
+    time: FloatArray, first: CycleResult, node: Any, screw: Any, start: float,
+    again: Callable[[float], CycleResult], gear_ratio: float,
+) -> tuple[FloatArray, float, FloatArray, FloatArray]:  # fmt: skip
+    """The screw's temperature over the program, its warmest, and the torques it gives.
+
+    The friction and motor torques at each instant's temperature [N·m]: the heat of the
+    first cycle's friction and bearings through the thermal node
+    (:func:`~ballscrew.axis.thermal.series_temperature`), then the cycle again at the
+    warmest temperature (``again(temperature)``) for the torques (:func:`_torques_at`).
+    """
+    omega = first.screw_speed
+    heat = first.friction_torque * np.abs(omega) + first.bearing_torque * np.abs(omega)
+    temp = series_temperature(time, heat, node, screw, omega, start)
+    top = float(np.max(temp))
+    t_f, t_m = _torques_at(temp, first, lambda: again(top), gear_ratio)
+    return temp, top, t_f, t_m
+
+
+def _block_energies(
+    motion: Motion, i: int, blocks: int, t_f: FloatArray, shaft: FloatArray, lead: float
+) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
+    """The screw's angle and friction's work of each step, and per block the work and supply.
+
+    Angles in rad, energies in J: the friction's work and the energy the motor supplies
+    (positive shaft power) summed per block. The friction's work over a step is its mean
+    torque at the two ends times the screw's angle, which is exact: the axis moves one way
+    between two samples.
+    """
+    turned = np.abs(np.diff(motion.position[:, i])) * 2.0 * math.pi / lead
+    friction_steps = 0.5 * (t_f[1:] + t_f[:-1]) * turned
+    per_block = np.bincount(motion.block[:-1], weights=friction_steps, minlength=blocks)
+    positive = np.maximum(shaft, 0.0)
+    supplied_steps = 0.5 * (positive[1:] + positive[:-1]) * np.diff(motion.time)
+    supplied_block = np.bincount(motion.block[:-1], weights=supplied_steps, minlength=blocks)
+    return turned, friction_steps, per_block.astype(float), supplied_block.astype(float)
+
+
+def _travel_row(letter: str, limits: tuple[float, float], travel: float) -> Criterion:
+    """The travel the program uses against the axis's travel (a verdict row, key ``travel``)."""
+    low, high = limits
+    return Criterion(
+        "travel used", travel * 1e3, (high - low) * 1e3, "mm", travel / (high - low), "OK",
+        f"the program's lowest to highest position against axes.{letter}.travel (a block "
+        "past it is refused)", key="travel",
+    )  # fmt: skip
 
 
 def _axis_check(
