@@ -100,10 +100,14 @@ def test_light_requests_are_answered_while_heavy_ones_run() -> None:
             t.start()
         time.sleep(1.0)  # the heavy requests are in their worker
         light = []
+        pages = []
         for _ in range(5):
             start = time.monotonic()
             status, _ = _post(url, "/api/torque", {**CASE, "model": "catalog"}, timeout=20)
             light.append((status, start, time.monotonic()))
+            start = time.monotonic()
+            with urllib.request.urlopen(url + "/", timeout=10) as page:
+                pages.append((page.status, start, time.monotonic()))
         for t in threads:
             t.join(timeout=60)
         assert all(status in (200, 503) for status, _, _ in spans), spans
@@ -111,3 +115,6 @@ def test_light_requests_are_answered_while_heavy_ones_run() -> None:
         during = [(status, end - start) for status, start, end in light if start < busy_until]
         assert len(during) >= 2, (light, spans)  # light requests sent while heavy ones ran
         assert all(status == 200 and seconds < 3.0 for status, seconds in during), during
+        # The page itself is served by the event loop, not a worker: under a second.
+        shown = [(status, end - start) for status, start, end in pages if start < busy_until]
+        assert shown and all(status == 200 and seconds < 1.0 for status, seconds in shown), shown
