@@ -1,6 +1,6 @@
 r"""The axis check's criteria as a table: a stable key each, and one function per drawn one.
 
-Every row of ``ballscrew check`` (:mod:`.check`) carries a key of :data:`KEYS`
+Every row of ``ballscrew check`` (:mod:`ballscrew.axis.check`) carries a key of :data:`KEYS`
 (``life``, ``peak_torque``, ...): ``select``, ``program``'s verdict lines, the
 reports and the web page find a row by it, never by its label, which carries
 the nut's state and the accuracy grade.
@@ -113,7 +113,7 @@ class Inputs:
     duration: float
     """The run's duration [s]."""
     rms_torque: float
-    """The cycle's RMS motor torque [N·m] (:mod:`.energy`'s, over every sample)."""
+    """The cycle's RMS motor torque [N·m] (:mod:`ballscrew.axis.energy`'s, over every sample)."""
     lead: float
     """The screw's lead [m]."""
     gear_ratio: float
@@ -160,7 +160,7 @@ class Sample:
 
     @cached_property
     def peak(self) -> FloatArray:
-        """The largest |axial force| of each draw [N]."""
+        """The largest absolute axial force of each draw [N]."""
         return np.asarray(np.max(np.abs(self.force), axis=1), dtype=float)
 
     @cached_property
