@@ -183,7 +183,10 @@ def test_the_unpacked_sdist_runs_its_own_tests(dist: tuple[Path, Path], tmp_path
     with tarfile.open(sdist) as tar:
         tar.extractall(tmp_path, filter="data")
     (top,) = tmp_path.iterdir()
-    env = {**_env(), "PYTHONPATH": str(top / "src")}
+    # A packager's run is not this project's CI: without CI set, what the unpacked sdist
+    # cannot hold (the built docs site, system packages) is skipped, not failed.
+    env = {k: v for k, v in _env().items() if k != "CI"}
+    env["PYTHONPATH"] = str(top / "src")
     pytest_ = [sys.executable, "-m", "pytest", "-p", "no:cacheprovider", "-q"]
 
     def run(*args: str) -> str:
