@@ -286,3 +286,22 @@ def test_a_case_files_temperature_in_c_is_noted_once_naming_the_key(
         "of charge; write '40 degC'"
     ]
     assert json.loads(out)["rows"][0]["temperature [degC]"] == 40.0
+
+
+def test_a_negative_speed_is_read_as_backwards_with_the_same_drag(
+    capsys: pytest.CaptureFixture[str], tmp_path: Path
+) -> None:
+    # "-5 rpm" is read as typed (backwards), not refused or silently made positive. Every
+    # model is symmetric in the direction of turning, so the drag's magnitude equals the
+    # one at +5 rpm to the printed digits, and a note says the sign was kept.
+    back = tmp_path / "back.json"
+    fwd = tmp_path / "fwd.json"
+    code, _, err = run(["torque", "--speed", "-5 rpm", "--json", str(back)], capsys)
+    assert code == 0 and "negative speed turns the screw backwards" in err, err
+    code, _, err = run(["torque", "--speed", "5 rpm", "--json", str(fwd)], capsys)
+    assert code == 0 and "backwards" not in err
+    b, f = json.loads(back.read_text()), json.loads(fwd.read_text())
+    (rb,), (rf,) = b["rows"], f["rows"]
+    assert rb["speed [rpm]"] == -5.0 and rf["speed [rpm]"] == 5.0  # kept as typed
+    assert rb["torque [N*m]"] == pytest.approx(rf["torque [N*m]"], rel=1e-12)
+    assert rb["power loss [W]"] == pytest.approx(rf["power loss [W]"], rel=1e-12)

@@ -158,6 +158,10 @@ def torque(
                  "--json and --csv")  # fmt: skip
     for reading in read:
         click.echo(f"note: {reading}", err=True)
+    if np.any(np.asarray(w) < 0):
+        click.echo("note: a negative speed turns the screw backwards; the torque and power "
+                   "loss are printed as the drag's magnitudes, which oppose the rotation",
+                   err=True)  # fmt: skip
     console = Console(stderr=True)
     with progress(console) as bar:
         task = bar.add_task("models", total=len(model_names))
