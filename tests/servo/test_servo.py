@@ -345,3 +345,29 @@ def test_the_circle_is_evaluated_after_its_start_up(axis, monkeypatch) -> None: 
     monkeypatch.setattr(contour, "LEAD_IN_TIME_CONSTANTS", 0.0)
     start_up = circular_test((axis, axis), (gains, gains), 0.01, 0.1)
     assert not start_up.settled and start_up.residual > 500e-6
+
+
+def test_feed_forward_changes_the_settled_circle_by_under_two_percent(axis) -> None:  # type: ignore[no-untyped-def]
+    # Issue 47's Done-when: R 10 mm, 6 m/min, k_v 20 1/s, with the lead-in, without and with
+    # velocity and acceleration feed-forward. Feed-forward removes the tracking lag, whose
+    # steady radius loss (1051 um, R(1 - 1/sqrt(1 + (w/k_v)^2))) is a constant offset of the
+    # settled circle: G (the band about the fitted centre) and the glitches (above the
+    # revolution's median) exclude it. What is left is the friction's reversal, which
+    # feed-forward does not remove, so G and each glitch change by under 2 %. They do
+    # change a little (1.6 % and 1.8 %): without feed-forward the settled circle runs 1.05 mm
+    # inside, at 10.5 % less speed and acceleration at the quadrants, a slightly gentler
+    # reversal (the reversal test at those values gives 1.5 % less).
+    without_ff = tune(axis, kv=20.0, velocity_ff=0.0, acceleration_ff=0.0)
+    with_ff = tune(axis, kv=20.0)
+    lagging = circular_test((axis, axis), (without_ff, without_ff), 0.01, 0.1)
+    tracking = circular_test((axis, axis), (with_ff, with_ff), 0.01, 0.1)
+    assert lagging.settled and tracking.settled
+    assert lagging.circular_deviation == pytest.approx(tracking.circular_deviation, rel=0.02)
+    for a, b in zip(lagging.glitches, tracking.glitches, strict=True):
+        assert a.quadrant == b.quadrant
+        assert a.height == pytest.approx(b.height, rel=0.02)
+    # The lag's radius error is what feed-forward removes: the first-order lag's closed form
+    # without (within 1 %: the velocity loop and the sampling add a little), under 1 um with.
+    lag = 0.01 * (1.0 - 1.0 / math.sqrt(1.0 + (0.1 / 0.01 / 20.0) ** 2))
+    assert lagging.mean_radius_error == pytest.approx(-lag, rel=0.01)
+    assert abs(tracking.mean_radius_error) < 1e-6
