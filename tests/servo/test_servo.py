@@ -371,3 +371,29 @@ def test_feed_forward_changes_the_settled_circle_by_under_two_percent(axis) -> N
     lag = 0.01 * (1.0 - 1.0 / math.sqrt(1.0 + (0.1 / 0.01 / 20.0) ** 2))
     assert lagging.mean_radius_error == pytest.approx(-lag, rel=0.01)
     assert abs(tracking.mean_radius_error) < 1e-6
+
+
+def test_the_pre_rolling_range_meets_the_measured_ends_of_a_rolling_guide() -> None:
+    # Futami, Furutani and Yoshida (Nanotechnology 1, 1990, 31-37) measured a rolling ball
+    # guide: a linear spring within about 0.1 um, normal rolling beyond about 100 um. The
+    # bristle as the axis builds it (sigma_0 = creep friction / delta) rises from rest as
+    # F = g (1 - exp(-sigma_0 x / g)) at constant speed. Across PRE_ROLLING_RANGE it stays
+    # within 5 % of its initial spring at 0.1 um and within 1 % of rolling at 100 um; half
+    # the lower end misses the first, one and a half times the upper end the second.
+    from ballscrew.servo.plant import PRE_ROLLING_LENGTH, PRE_ROLLING_RANGE
+
+    case = load_case(EXAMPLE)
+
+    def ends(delta: float) -> tuple[float, float]:
+        axis = axis_dynamics(case, pre_rolling_length=delta)
+        s0, g = axis.bristle_stiffness, axis.coulomb_force()
+        force = [g * -math.expm1(-s0 * x / g) for x in (0.1e-6, 100e-6)]
+        return force[0] / (s0 * 0.1e-6), force[1] / g
+
+    low, high = PRE_ROLLING_RANGE
+    assert low < PRE_ROLLING_LENGTH < high
+    for delta in (low, PRE_ROLLING_LENGTH, high):
+        linear, rolling = ends(delta)
+        assert linear > 0.95 and rolling > 0.99, delta
+    assert ends(low / 2)[0] < 0.95
+    assert ends(1.5 * high)[1] < 0.99
