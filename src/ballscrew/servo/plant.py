@@ -396,7 +396,7 @@ def axis_dynamics(
     on = m1 if drag_side == "motor" else m2
     s1 = 2.0 * math.sqrt(s0 * on)
     source = ("given" if pre_rolling_length is not None or given is not None
-              else "the default, assumed")  # fmt: skip
+              else "the default, from a measured rolling guide: 1 to 20 um")  # fmt: skip
     where = "motor side (a torque)" if drag_side == "motor" else "table (lumped upper bound)"
     notes.append(f"screw drag on the {where}; pre-rolling length {delta * 1e6:.3g} um "
                  f"({source}; its LuGre bristle {s0 / 1e6:.4g} N/um, critically damped on "
