@@ -345,3 +345,55 @@ def test_the_circle_is_evaluated_after_its_start_up(axis, monkeypatch) -> None: 
     monkeypatch.setattr(contour, "LEAD_IN_TIME_CONSTANTS", 0.0)
     start_up = circular_test((axis, axis), (gains, gains), 0.01, 0.1)
     assert not start_up.settled and start_up.residual > 500e-6
+
+
+def test_feed_forward_changes_the_settled_circle_by_under_two_percent(axis) -> None:  # type: ignore[no-untyped-def]
+    # Issue 47's Done-when: R 10 mm, 6 m/min, k_v 20 1/s, with the lead-in, without and with
+    # velocity and acceleration feed-forward. Feed-forward removes the tracking lag, whose
+    # steady radius loss (1051 um, R(1 - 1/sqrt(1 + (w/k_v)^2))) is a constant offset of the
+    # settled circle: G (the band about the fitted centre) and the glitches (above the
+    # revolution's median) exclude it. What is left is the friction's reversal, which
+    # feed-forward does not remove, so G and each glitch change by under 2 %. They do
+    # change a little (1.6 % and 1.8 %): without feed-forward the settled circle runs 1.05 mm
+    # inside, at 10.5 % less speed and acceleration at the quadrants, a slightly gentler
+    # reversal (the reversal test at those values gives 1.5 % less).
+    without_ff = tune(axis, kv=20.0, velocity_ff=0.0, acceleration_ff=0.0)
+    with_ff = tune(axis, kv=20.0)
+    lagging = circular_test((axis, axis), (without_ff, without_ff), 0.01, 0.1)
+    tracking = circular_test((axis, axis), (with_ff, with_ff), 0.01, 0.1)
+    assert lagging.settled and tracking.settled
+    assert lagging.circular_deviation == pytest.approx(tracking.circular_deviation, rel=0.02)
+    for a, b in zip(lagging.glitches, tracking.glitches, strict=True):
+        assert a.quadrant == b.quadrant
+        assert a.height == pytest.approx(b.height, rel=0.02)
+    # The lag's radius error is what feed-forward removes: the first-order lag's closed form
+    # without (within 1 %: the velocity loop and the sampling add a little), under 1 um with.
+    lag = 0.01 * (1.0 - 1.0 / math.sqrt(1.0 + (0.1 / 0.01 / 20.0) ** 2))
+    assert lagging.mean_radius_error == pytest.approx(-lag, rel=0.01)
+    assert abs(tracking.mean_radius_error) < 1e-6
+
+
+def test_the_pre_rolling_range_meets_the_measured_ends_of_a_rolling_guide() -> None:
+    # Futami, Furutani and Yoshida (Nanotechnology 1, 1990, 31-37) measured a rolling ball
+    # guide: a linear spring within about 0.1 um, normal rolling beyond about 100 um. The
+    # bristle as the axis builds it (sigma_0 = creep friction / delta) rises from rest as
+    # F = g (1 - exp(-sigma_0 x / g)) at constant speed. Across PRE_ROLLING_RANGE it stays
+    # within 5 % of its initial spring at 0.1 um and within 1 % of rolling at 100 um; half
+    # the lower end misses the first, one and a half times the upper end the second.
+    from ballscrew.servo.plant import PRE_ROLLING_LENGTH, PRE_ROLLING_RANGE
+
+    case = load_case(EXAMPLE)
+
+    def ends(delta: float) -> tuple[float, float]:
+        axis = axis_dynamics(case, pre_rolling_length=delta)
+        s0, g = axis.bristle_stiffness, axis.coulomb_force()
+        force = [g * -math.expm1(-s0 * x / g) for x in (0.1e-6, 100e-6)]
+        return force[0] / (s0 * 0.1e-6), force[1] / g
+
+    low, high = PRE_ROLLING_RANGE
+    assert low < PRE_ROLLING_LENGTH < high
+    for delta in (low, PRE_ROLLING_LENGTH, high):
+        linear, rolling = ends(delta)
+        assert linear > 0.95 and rolling > 0.99, delta
+    assert ends(low / 2)[0] < 0.95
+    assert ends(1.5 * high)[1] < 0.99

@@ -46,7 +46,8 @@ __all__ = ["contour_command"]
 )
 @click.option("--pre-rolling", "pre_rolling", default=None,
               help="Pre-rolling length of the screws' drag, e.g. '10 um' (default: the "
-              "case's [axis] pre_rolling_length, else 5 um).")  # fmt: skip
+              "case's [axis] pre_rolling_length, else 5 um; 1 to 20 um is what a measured "
+              "rolling guide allows, docs: positioning-accuracy).")  # fmt: skip
 @click.option("--rigid", is_flag=True, help="One-mass axes (no spring between motor and table).")
 @click.option("--max-samples", type=click.IntRange(min=1), default=None, metavar="N",
               help="The most samples simulated (all circles and reversals, both axes), "

@@ -372,8 +372,8 @@ class AxisSection(BaseModel):
         None,
         "length",
         "table travel over which the screw's drag builds from rest to 63 % of its rolling "
-        "value, for ballscrew contour (none: 5 um; 1 to 20 um is the range the docs study; "
-        "the nut's normal compliance alone gives under 1 um)",
+        "value, for ballscrew contour (none: 5 um; 1 to 20 um is what a measured rolling ball "
+        "guide allows, Futami et al. 1990, see positioning-accuracy.md)",
         "5 um",
         si="m",
     )

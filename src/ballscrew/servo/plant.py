@@ -41,7 +41,8 @@ gear ratio :math:`i` (motor turns per screw turn), :math:`x = \theta_s\,l/2\pi
   "Experimental investigation into the tractive prerolling behavior of balls
   in V-grooved tracks", Adv. Tribol. 2008, 561280), longer than the nut's
   normal compliance alone gives (:math:`g/k_{nut}` = 0.66 µm on the
-  example);
+  example). The default and its range are read from a measured rolling ball
+  guide (:data:`PRE_ROLLING_RANGE`);
   ``drag_side="table"`` puts the drag on the table instead, the lumped
   upper bound whose lost motion is :math:`2F/k`;
 * **guideway friction** on the table side, Coulomb plus viscous with its own
@@ -95,13 +96,23 @@ contacts; measured axes lie between about 0.01 and 0.05."""
 
 PRE_ROLLING_LENGTH = 5e-6
 """Default pre-rolling length of the screw's drag [m], table travel: the bristle's
-stiffness is the creep friction over it (module docstring). About the middle, on a log scale, of
-:data:`PRE_ROLLING_RANGE`; the glitch's dependence on it is in the docs."""
+stiffness is the creep friction over it (module docstring). The geometric middle (4.5 µm,
+rounded) of :data:`PRE_ROLLING_RANGE`: linear within 5 % up to 0.5 µm of travel and at 99 %
+of the rolling friction after 23 µm. The glitch's dependence on it is in the docs
+(positioning-accuracy.md, "The pre-rolling length")."""
 
 PRE_ROLLING_RANGE = (1e-6, 20e-6)
-"""The pre-rolling lengths [m] the docs' sensitivity study spans, from about the nut's
-normal compliance (0.66 µm on the example) to twenty times the default: a stated range to
-study, not a measured one (no measured pre-rolling length of a ball screw nut was found)."""
+r"""The pre-rolling lengths [m] a single exponential build-up can take from a measured
+rolling contact. Futami, Furutani and Yoshida, "Nanometer positioning and its
+micro-dynamics", Nanotechnology 1 (1990) 31-37, measured a rolling ball guide: its balls act
+as a linear spring within about 0.1 µm of travel, and normal rolling takes place beyond
+about 100 µm. LuGre's build-up from rest, :math:`F/g = 1 - e^{-x/\delta}`, is linear within
+5 % for :math:`x < 0.1\delta` and within 1 % of rolling for :math:`x > 4.6\delta`: the
+linear end gives :math:`\delta` = 1 µm, the rolling end 22 µm (rounded to 20). One
+exponential cannot meet both ends (they are 1000 apart, its two ends 46), so the range
+brackets the lengths that fit either; the lower end is also about the nut's normal
+compliance (0.66 µm on the example). The measurement is of a guide, not a ball screw's nut:
+no measured pre-rolling length of a ball screw was found."""
 
 DRAG_SIDES = ("motor", "table")
 """Where the screw's drag acts: on the motor side (the torque it is) or on the table (the
@@ -326,7 +337,8 @@ def axis_dynamics(
         [°C] (default: the case's first).
     pre_rolling_length : float, optional
         [m] of the screw's drag (default: the case's ``[axis] pre_rolling_length``, else
-        :data:`PRE_ROLLING_LENGTH`).
+        :data:`PRE_ROLLING_LENGTH`, 5 µm, within :data:`PRE_ROLLING_RANGE`, 1 to 20 µm, read
+        from Futami, Furutani and Yoshida, Nanotechnology 1 (1990) 31-37).
     drag_side : {"motor", "table"}
         Where the screw's drag acts (module docstring).
     """
@@ -384,7 +396,7 @@ def axis_dynamics(
     on = m1 if drag_side == "motor" else m2
     s1 = 2.0 * math.sqrt(s0 * on)
     source = ("given" if pre_rolling_length is not None or given is not None
-              else "the default, assumed")  # fmt: skip
+              else "the default, from a measured rolling guide: 1 to 20 um")  # fmt: skip
     where = "motor side (a torque)" if drag_side == "motor" else "table (lumped upper bound)"
     notes.append(f"screw drag on the {where}; pre-rolling length {delta * 1e6:.3g} um "
                  f"({source}; its LuGre bristle {s0 / 1e6:.4g} N/um, critically damped on "
