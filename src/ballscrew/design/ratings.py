@@ -32,11 +32,12 @@ is the rating that definition gives from the geometry
 designation's catalogue row gives one, and then stated as estimated. The
 definition is the bearings' one: at ISO 76's thrust-bearing grooves (radius
 0.54 of the ball) this function gives 0.972 of ISO 76's tabulated
-:math:`f_0` at every ball-position ratio from 0.05 to 0.20. What it cannot know is the groove: :math:`Q_0` goes as
-:math:`p_1^{-3}`, and from conformity 0.55 to 0.52 the rating doubles. A case
-is estimated at its own conformity (the package's default 0.55 gives about
-0.68 of what the makers print: on the safe side); the sizes no catalogue
-prints are estimated at :data:`RATING_CONFORMITY`, the makers' grooves.
+:math:`f_0` at every ball-position ratio from 0.05 to 0.20. What it cannot
+know is the groove: :math:`Q_0` goes as :math:`p_1^{-3}`, and from conformity
+0.55 to 0.52 the rating grows 1.76 times. A case is estimated at its own
+conformity (the package's default 0.55 gives about 0.68 of what the makers
+print: on the safe side); the sizes no catalogue prints are estimated at
+:data:`RATING_CONFORMITY`, the makers' grooves.
 
 **Dynamic rating.** :math:`C_a` gives a rating life of :math:`10^6`
 revolutions, :math:`L_{10} = (C_a/F)^3\cdot 10^6` (ISO 3408-5, section 7.2):
@@ -155,10 +156,10 @@ reprinted in *Machinery's Handbook*, 31st ed., "Values of f_c for Thrust Ball Be
 at 45, 60 and 75 deg and every ball-position ratio from 0.01 to 0.10, Lundberg and Palmgren's
 capacity (:data:`LP_CONSTANT`, grooves of 0.54 ball diameter) times
 :math:`0.947\,(1 - \sin\alpha/3)` within 0.1 % (``tests/select/test_rating_estimates.py``
-checks it): the reductions the standard applies to the capacity of a thrust row. ISO 281:2007 multiplies the
-table by :math:`b_m = 1.3` for contemporary steel; ISO 3408-5 (2006) is not taken to, since
-with it no single groove gives both the makers' C_a and C_0a (at ISO 76's 0.54: C_a 1.05,
-C_0a 0.78 of the printed values)."""
+checks it): the reductions the standard applies to the capacity of a thrust row.
+ISO 281:2007 multiplies the table by :math:`b_m = 1.3` for contemporary steel; ISO 3408-5
+(2006) is not taken to, since with it no single groove gives both the makers' C_a and C_0a
+(at ISO 76's 0.54: C_a 1.05, C_0a 0.78 of the printed values)."""
 
 RATING_CONFORMITY = 0.526
 """Groove conformity (radius over ball diameter, screw and nut) of the makers' ball screws,
