@@ -106,7 +106,10 @@ def test_the_dynamic_rating_s_trend_with_the_turns_is_small() -> None:
     reason="issue 48 target |slope| < 0.05 not reached: -0.052. The rows of two turns all "
     "have 16 to 40 mm leads; over the 18 single nuts ln(turns) and ln(cos lead angle) "
     "correlate at 0.96, so the rows cannot tell a turn exponent from a lead-angle term "
-    "(both in one regression: turns +0.04). Needs rows of two turns at short leads.",
+    "(both in one regression: turns +0.04). Needs rows of two turns at short leads, or the "
+    "standard's count of a turn's balls: counted on the ball circle (pi d_m / D_w, as a "
+    "bearing row's; the helix holds 1/cos(lead angle) more) both slopes fall under 0.05 "
+    "(C_a -0.016, C_0a +0.014), not adopted without the standard's text.",
 )
 def test_the_dynamic_rating_has_no_trend_with_the_turns() -> None:
     k, dynamic, _ = _ratios()

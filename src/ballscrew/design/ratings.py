@@ -63,7 +63,11 @@ estimated/printed of :math:`C_a` still falls with the number of loaded turns
 turns are all of 16 to 40 mm lead, and over the single nuts ln k and the
 lead angle's ln cos correlate at 0.96, so the catalogue cannot tell a turn
 exponent from a lead-angle term (with both in one regression the turns'
-coefficient is +0.04).
+coefficient is +0.04). Counted on the ball circle, :math:`\pi d_m/D_w` as a
+bearing row's balls are, instead of along the helix
+(:attr:`~ballscrew.geometry.BallScrew.balls_per_circuit`), both ratings would
+lose their trend (slopes -0.016 and +0.014); without the standard's text the
+helix's count is kept.
 
 **Preload.** Ball screw catalogues keep the preload within 10 % of
 :math:`C_a` (THK, *General Catalog*, ball screws, "Preload"; HIWIN,
