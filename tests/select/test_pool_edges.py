@@ -13,7 +13,7 @@ import re
 
 import pytest
 
-from ballscrew.design.ratings import dynamic_rating_estimate
+from ballscrew.design.ratings import RATING_CONFORMITY, dynamic_rating_estimate
 from ballscrew.errors import BallScrewInputError
 from ballscrew.geometry import BallScrew
 from ballscrew.io.designation import catalog_screws
@@ -93,8 +93,8 @@ def test_a_price_table_missing_screws_names_five_and_says_when_there_are_more(
 
 
 def test_the_scatter_is_the_table_the_documentation_prints() -> None:
-    # docs/selection.md: C_a median 0.82, 16 to 84 % 0.78 to 0.98, range 0.77 to 1.15;
-    # C_0a 0.68, 0.65 to 0.72, 0.63 to 1.46 (two decimals).
+    # docs/selection.md: C_a median 0.96, 16 to 84 % 0.94 to 1.00, range 0.93 to 1.33;
+    # C_0a 1.02, 0.98 to 1.08, 0.94 to 2.19 (two decimals).
     doc = (ROOT / "docs" / "selection.md").read_text(encoding="utf-8")
     s = rating_scatter()
     for name, key in (("C_a", "dynamic"), ("C_0a", "static")):
@@ -108,14 +108,15 @@ def test_the_scatter_is_the_table_the_documentation_prints() -> None:
 def test_the_scatter_s_percentiles_are_the_16th_50th_and_84th() -> None:
     # The percentile by its definition (linear between the sorted values, at rank
     # q (n - 1)), over the ratios estimated / printed built here from each row's geometry
-    # with the documented 45 deg and 0.55 conformity.
+    # with the documented 45 deg and the makers' groove (RATING_CONFORMITY).
     ratios = []
     for r in catalog_screws():
         if None in (r.ball_diameter, r.loaded_turns, r.dynamic_load_rating,
                     r.static_load_rating):  # fmt: skip
             continue
         screw = BallScrew(r.pitch_diameter or r.nominal_diameter, r.lead, r.ball_diameter or 0.0,
-                          math.radians(45.0), 0.55, 0.55, r.loaded_turns or 1.0, r.circuits,
+                          math.radians(45.0), RATING_CONFORMITY, RATING_CONFORMITY,
+                          r.loaded_turns or 1.0, r.circuits,
                           "single")  # fmt: skip
         ratios.append(dynamic_rating_estimate(screw) / (r.dynamic_load_rating or 1.0))
     ratios.sort()
