@@ -17,6 +17,7 @@ import sys
 import tarfile
 import zipfile
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -202,3 +203,31 @@ def test_the_unpacked_sdist_runs_its_own_tests(dist: tuple[Path, Path], tmp_path
     imported = subprocess.run([sys.executable, "-c", "import ballscrew; print(ballscrew.__file__)"],
                               capture_output=True, text=True, cwd=top, env=env)  # fmt: skip
     assert Path(imported.stdout.strip()).is_relative_to(top), imported.stdout
+
+
+def test_grayskull_writes_the_recipes_requirements_from_the_sdist(
+    dist: tuple[Path, Path], tmp_path: Path
+) -> None:
+    # conda-forge's own recipe generator, in its strict conda-forge form, run on the sdist
+    # built here: the packaged recipe asks for what it finds (python_min, host, run, the test's
+    # requirements), so the recipe follows the package and not an older copy of it.
+    import yaml
+
+    _, sdist = dist
+    exe = Path(sys.executable).parent / "grayskull"
+    _ok([exe, "pypi", "--strict-conda-forge", "--no-use-v1-format", sdist, "-o", tmp_path],
+        tmp_path)  # fmt: skip
+    import jinja2
+
+    def load(path: Path) -> dict[str, Any]:
+        text = jinja2.Template(path.read_text("utf-8")).render(PYTHON="python")
+        loaded: dict[str, Any] = yaml.safe_load(text)
+        return loaded
+
+    made = load(tmp_path / "ballscrew" / "meta.yaml")
+    ours = load(ROOT / "packaging" / "conda-forge" / "meta.yaml")
+    for section in ("host", "run"):
+        assert sorted(made["requirements"][section]) == sorted(ours["requirements"][section])
+    assert sorted(made["test"]["requires"]) == sorted(ours["test"]["requires"])
+    assert made["build"]["entry_points"] == ours["build"]["entry_points"]
+    assert made["build"]["noarch"] == ours["build"]["noarch"] == "python"

@@ -8,6 +8,7 @@ recipe in packaging/ asks for what pyproject.toml asks for.
 from __future__ import annotations
 
 import json
+import re
 import subprocess
 import sys
 import tomllib
@@ -92,4 +93,51 @@ def test_the_conda_recipe_builds_with_pyprojects_backend() -> None:
     (backend,) = PYPROJECT["build-system"]["requires"]
     req = Requirement(backend)
     assert host[req.name] == str(req.specifier)
-    assert host["python"] == PYPROJECT["project"]["requires-python"]
+    # conda-forge's noarch rule (CFEP-25): built and tested on the oldest Python the package
+    # supports, python_min, and run on it or newer; python_min is pyproject's lower bound.
+    python_min = PYPROJECT["project"]["requires-python"].removeprefix(">=")
+    assert host["python"] == f"{python_min}.*"
+    assert _specs(_recipe()["requirements"]["run"])["python"] == f">={python_min}"
+    assert _specs(_recipe()["test"]["requires"])["python"] == f"{python_min}.*"
+
+
+# conda-forge's linter (conda-smithy) is not installable here (its PyPI name is an empty
+# placeholder), so the lints a meta.yaml can fail offline are checked as its LINTER.md
+# states them, by code; the maintainers' GitHub names are checked by conda-forge's bot.
+TOP_ORDER = ["package", "source", "build", "requirements", "test", "outputs", "about", "extra"]
+
+
+def test_the_conda_recipe_passes_conda_forges_offline_lints() -> None:
+    text = RECIPE.read_text("utf-8")
+    recipe = _recipe()
+    keys = list(recipe)
+    assert set(keys) <= set(TOP_ORDER), keys  # R-000: no unexpected top-level key
+    assert keys == sorted(keys, key=TOP_ORDER.index), keys  # R-001: the sections' order
+    for item in ("home", "license", "summary"):  # R-002
+        assert recipe["about"].get(item), item
+    maintainers = recipe["extra"]["recipe-maintainers"]  # R-003, R-004: a list of names
+    assert (
+        isinstance(maintainers, list)
+        and maintainers
+        and all(isinstance(m, str) for m in maintainers)
+    )
+    assert recipe["test"]["imports"] and recipe["test"]["commands"]  # R-005
+    assert isinstance(recipe["build"]["number"], int)  # R-008
+    sections = list(recipe["requirements"])  # R-009
+    order = ["build", "host", "run", "run_constrained"]
+    assert sections == sorted(sections, key=order.index), sections
+    assert "license" not in recipe["about"]["license"].lower()  # R-010
+    assert text.endswith("\n") and not text.endswith("\n\n")  # R-011, R-012
+    assert recipe["about"]["license_file"]  # R-013
+    assert len(recipe["source"]["sha256"]) == 64  # R-019
+    for section in ("host", "run"):  # R-021, R-022: 'name [version]', no space after '>='
+        for line in recipe["requirements"][section]:
+            assert re.fullmatch(r"[a-z0-9_.\-]+( [^ ]+)?", line), line
+    assert recipe["build"]["noarch"] == "python"  # R-020, and R-026's lower bound below
+    assert _specs(recipe["requirements"]["run"])["python"].startswith(">=")
+    # R0-005: '{% set name = value %}', one space around each part.
+    for line in text.splitlines():
+        if line.startswith("{%"):
+            assert re.fullmatch(r"\{% set \w+ = \S.* %\}", line), line
+    # R-025: '{{ name }}', one space inside the braces.
+    assert not re.search(r"\{\{\S|\S\}\}", text)
