@@ -823,6 +823,32 @@ def fit_axis(
             if "torque_constant" not in chosen else "moving_mass"
             if "moving_mass" not in chosen else "nothing"
             if "offset" in chosen else "offset")  # fmt: skip
+    parameters = _parameters(kind, chosen, pairs, point, reps)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        correlation = np.atleast_2d(
+            np.corrcoef(np.column_stack([reps[k] for k in chosen]), rowvar=False)
+        ).astype(float)
+    kt = point["torque_constant"]
+    to_power = _to_power(kind, point["offset"], kt, reg.motor_speed)
+    score = _scores(y, fitted, to_power, time)
+    baselines, coefficients, predictions = _baselines(reg, kind, y, y_f, sigma, keep, to_power,
+                                                      time)  # fmt: skip
+    notes = _notes(chosen, pairs, parameters, profile.standstill_speed, inputs, held)
+    for one, other, r in auto_held:
+        partner = other if one == "guide_viscous" else one
+        notes.append(f"guide_viscous held at 0: this trace cannot tell it from {partner} "
+                     f"(correlation {r:+.3f}): one speed, or speeds too alike; a trace with "
+                     "more feeds frees it")  # fmt: skip
+    return AxisFit(trace.letter, kind, held, parameters, correlation, chosen, score, baselines,
+                   coefficients, y, fitted, predictions, time, block, profile.standstill_speed,
+                   tuple(notes), tuple(pairs))  # fmt: skip
+
+
+def _parameters(
+    kind: str, chosen: Sequence[str], pairs: Sequence[tuple[str, str, float]],
+    point: Mapping[str, float], reps: Mapping[str, FloatArray],
+) -> dict[str, Parameter]:  # fmt: skip
+    """Each parameter with its 95 % interval (none when confounded; its value when held)."""
     confounded: dict[str, list[str]] = {}
     for one, other, _ in pairs:
         confounded.setdefault(one, []).append(other)
@@ -837,13 +863,14 @@ def fit_axis(
         parameters[name] = Parameter(name, point[name], lo, hi,
                                      _signal_unit(kind) if name == "offset" else unit,
                                      is_free, with_)  # fmt: skip
-    with np.errstate(invalid="ignore", divide="ignore"):
-        correlation = np.atleast_2d(
-            np.corrcoef(np.column_stack([reps[k] for k in chosen]), rowvar=False)
-        ).astype(float)
-    kt = point["torque_constant"]
-    to_power = _to_power(kind, point["offset"], kt, reg.motor_speed)
-    score = _scores(y, fitted, to_power, time)
+    return parameters
+
+
+def _baselines(
+    reg: Regressors, kind: str, y: FloatArray, y_f: FloatArray, sigma: float, keep: FloatArray,
+    to_power: Any, time: FloatArray,
+) -> tuple[dict[str, Score], dict[str, FloatArray], dict[str, FloatArray]]:  # fmt: skip
+    """The baselines fitted to the filtered signal: scores, coefficients, predictions."""
     baselines, coefficients, predictions = {}, {}, {}
     for name in BASELINES:
         xb = _baseline_matrix(reg, kind, name)
@@ -852,15 +879,7 @@ def fit_axis(
         coefficients[name] = cb
         predictions[name] = smooth(xb @ cb, sigma)
         baselines[name] = _scores(y, predictions[name], to_power, time)
-    notes = _notes(chosen, pairs, parameters, profile.standstill_speed, inputs, held)
-    for one, other, r in auto_held:
-        partner = other if one == "guide_viscous" else one
-        notes.append(f"guide_viscous held at 0: this trace cannot tell it from {partner} "
-                     f"(correlation {r:+.3f}): one speed, or speeds too alike; a trace with "
-                     "more feeds frees it")  # fmt: skip
-    return AxisFit(trace.letter, kind, held, parameters, correlation, chosen, score, baselines,
-                   coefficients, y, fitted, predictions, time, block, profile.standstill_speed,
-                   tuple(notes), tuple(pairs))  # fmt: skip
+    return baselines, coefficients, predictions
 
 
 ADVICE = {
