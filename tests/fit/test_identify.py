@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import math
+from dataclasses import replace
 from functools import cache
 from pathlib import Path
 
@@ -13,14 +14,19 @@ import pytest
 from ballscrew.axis.motion import Profile, back_and_forth, chain
 from ballscrew.errors import BallScrewInputError
 from ballscrew.fit.identify import (
+    BASELINE_PARAMETERS,
+    CONFOUNDED,
     AxisInputs,
     TrueAxis,
     axis_inputs,
     axis_torque,
     calibrated_machine_text,
     fit_axis,
+    identifiability,
     identify,
+    parameter_names,
     regressors,
+    score_axis,
     shaft_energy,
     synthetic_trace,
 )
@@ -29,14 +35,19 @@ from ballscrew.io.trace import Trace
 from cli_runner import run
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
-TRUTH = TrueAxis(torque_constant=1.2, offset=0.05, moving_mass=450.0, screw_scale=1.0,
+# K_t as the example machine's motor data (1.8 N*m/A): the default fit holds it.
+TRUTH = TrueAxis(torque_constant=1.8, offset=0.05, moving_mass=450.0, screw_scale=1.0,
                  guide_coulomb=60.0, guide_viscous=200.0)  # fmt: skip
 
 
 @cache
 def _x_axis() -> AxisInputs:
-    """Axis X of the example machine (HIWIN R40-10, 450 kg, complete model)."""
+    """Axis X of the example machine (HIWIN R40-10, 450 kg, K_t 1.8 N*m/A, complete model)."""
     return axis_inputs(load_machine(EXAMPLES / "machine_vmc.toml"), "X", travel=0.4)
+
+
+def _without_torque_constant(inputs: AxisInputs) -> AxisInputs:
+    return replace(inputs, torque_constant=None, torque_constant_source="")
 
 
 def _program(jerk: float, parts: tuple[tuple[float, float, float, float], ...]) -> Profile:
@@ -82,25 +93,117 @@ def _true_energy(profile: Profile, inputs: AxisInputs, params: dict[str, float])
 
 
 def test_a_trace_of_one_program_predicts_another_programs_energy() -> None:
-    # Fit on program A's trace; the calibrated axis runs program B's planned motion. Its
-    # energy is the truth's within the fit's uncertainty: 10 % is the issue's target, the
-    # sampling error of these fits is below 1 %.
+    # The default fit (K_t known from the motor data; offset, moving mass and the guideway's
+    # friction free) of program A's trace, with current noise and an offset, predicts the
+    # energy of program B's trace, which it never saw: the issue's target is 10 %. The
+    # calibrated axis is also compared with the truth's energy over B's planned motion.
     inputs = _x_axis()
     a = synthetic_trace({"X": _program(20.0, PROGRAM_A)}, {"X": inputs}, {"X": TRUTH},
                         sample_time=0.004, signal_noise=0.1, seed=1)  # fmt: skip
+    b_profile = _program(20.0, PROGRAM_B)
+    b = synthetic_trace({"X": b_profile}, {"X": inputs}, {"X": TRUTH}, sample_time=0.004,
+                        signal_noise=0.1, seed=2)  # fmt: skip
     fit = fit_axis(a.axes["X"], a.time, inputs, replicates=200)
-    b = _program(20.0, PROGRAM_B)
+    assert fit.free == ("offset", "moving_mass", "guide_coulomb", "guide_viscous")
+    score, baselines, _ = score_axis(fit, b.axes["X"], b.time, inputs)
+    assert abs(score.energy_error) < 0.10
+    # The sampling error of such a fit is far below the target (0.1 % on this seed): 2 %
+    # leaves room for another seed and says a regression in the model would show.
+    assert abs(score.energy_error) < 0.02
+    assert score.r2 >= baselines["Coulomb + viscous + inertia"].r2
     fitted = {k: p.value for k, p in fit.parameters.items()}
-    predicted = _true_energy(b, inputs, fitted)
-    true = _true_energy(b, inputs, TRUTH.as_parameters())
-    assert predicted == pytest.approx(true, rel=0.10)
+    predicted = _true_energy(b_profile, inputs, fitted)
+    true = _true_energy(b_profile, inputs, TRUTH.as_parameters())
+    assert predicted == pytest.approx(true, rel=0.02)
+
+
+def test_the_default_fit_is_no_larger_than_the_regression_and_explains_as_much() -> None:
+    # The issue's "same number of parameters or fewer": whatever holds the torque scale
+    # (K_t known, K_t fitted with the case's mass, a torque trace), the default set has at
+    # most the Coulomb + viscous + inertia regression's 4 parameters, each identifiable,
+    # and its R² on the fitted trace is at least the regression's.
+    inputs = _x_axis()
+    profile = _program(20.0, PROGRAM_A)
+    cases = (("current", inputs, "torque_constant"),
+             ("current", _without_torque_constant(inputs), "moving_mass"),
+             ("torque", inputs, "signal"))  # fmt: skip
+    for kind, axis, held in cases:
+        truth = replace(TRUTH, kind=kind)
+        trace = synthetic_trace({"X": profile}, {"X": axis}, {"X": truth}, sample_time=0.004,
+                                signal_noise=0.1, seed=7)  # fmt: skip
+        fit = fit_axis(trace.axes["X"], trace.time, axis, replicates=200)
+        assert fit.held == held
+        assert len(fit.free) <= BASELINE_PARAMETERS == 4
+        assert not fit.confounded
+        assert all(fit.parameters[k].identifiable for k in fit.free)
+        assert fit.score.r2 >= fit.baselines["Coulomb + viscous + inertia"].r2, kind
+
+
+def test_estimate_correlation_from_the_information_matches_two_columns_closed_form() -> None:
+    # Two columns of unit length at cosine rho: (X^T X)^-1 is [[1, -rho], [-rho, 1]] over
+    # (1 - rho^2), so the estimates correlate at -rho exactly; 0.99 is reported, 0.9 not.
+    rng = np.random.default_rng(0)
+    u, _ = np.linalg.qr(rng.normal(size=(200, 2)))
+    for rho, reported in ((0.9, False), (0.99, True), (-0.995, True)):
+        x = np.column_stack([u[:, 0], rho * u[:, 0] + math.sqrt(1.0 - rho**2) * u[:, 1]])
+        corr, pairs = identifiability(3.0 * x, ("a", "b"))
+        assert corr[0, 1] == pytest.approx(-rho, abs=1e-9)
+        assert bool(pairs) is reported
+    corr, pairs = identifiability(np.column_stack([u[:, 0], -2.0 * u[:, 0]]), ("a", "b"))
+    assert pairs == [("a", "b", pytest.approx(1.0))]  # exactly dependent: told as such
+
+
+def test_a_pair_the_trace_cannot_separate_is_named_without_intervals() -> None:
+    # On this horizontal axis the screw model's friction is nearly a constant torque: freed
+    # with the guideway's Coulomb force, the two are one term. Both freed: the fit names
+    # the pair and gives no interval for either. K_t and the mass both freed: every torque
+    # scales with both (the rotor's inertia goes with the mass's, the bearings' drag with
+    # the Coulomb force): not identifiable either.
+    inputs = _x_axis()
+    trace = synthetic_trace({"X": _program(20.0, PROGRAM_A)}, {"X": inputs}, {"X": TRUTH},
+                            sample_time=0.004, signal_noise=0.1, seed=1)  # fmt: skip
+    both = fit_axis(trace.axes["X"], trace.time, inputs, replicates=200, free=("screw_scale",))
+    assert [(a, b) for a, b, _ in both.confounded] == [("screw_scale", "guide_coulomb")]
+    assert both.confounded[0][2] < -CONFOUNDED
+    s = both.parameters["screw_scale"]
+    assert s.confounded_with == ("guide_coulomb",) and math.isnan(s.low)
+    assert any("not identifiable" in n and "screw_scale and guide_coulomb" in n
+               for n in both.notes)  # fmt: skip
+    assert both.parameters["moving_mass"].identifiable  # the rest is still told
+    scale = fit_axis(trace.axes["X"], trace.time, inputs, replicates=200,
+                     free=("torque_constant", "moving_mass"))  # fmt: skip
+    assert scale.held == "nothing"
+    assert ("torque_constant", "moving_mass") in [(a, b) for a, b, _ in scale.confounded]
+
+
+def test_gravity_separates_the_torque_constant_from_the_mass_with_the_offset_held() -> None:
+    # A vertical axis: the weight is a constant torque, which the offset would take as
+    # well (the default fit names offset and mass as not identifiable). With the offset
+    # held at 0 (the truth here), the weight gives the mass and the inertia K_t: both are
+    # free, identifiable and within their intervals (truth 1.6 N*m/A, 120 kg).
+    machine = load_machine(EXAMPLES / "machine_vmc.toml")
+    z = axis_inputs(machine, "Z", travel=0.3)
+    truth = TrueAxis(torque_constant=1.6, offset=0.0, moving_mass=120.0)
+    profile = chain(*(back_and_forth(s, f, a, jerk=10.0 * a, dwell_time=d, cycles=2)
+                      for s, f, a, d in ((0.3, 0.15, 2.0, 1.0), (0.1, 0.05, 1.0, 0.5),
+                                         (0.2, 0.15, 3.0, 0.5))))  # fmt: skip
+    trace = synthetic_trace({"Z": profile}, {"Z": z}, {"Z": truth}, sample_time=0.004,
+                            signal_noise=0.05, seed=1)  # fmt: skip
+    default = fit_axis(trace.axes["Z"], trace.time, z, replicates=200)
+    assert ("offset", "moving_mass") in [(a, b) for a, b, _ in default.confounded]
+    fit = fit_axis(trace.axes["Z"], trace.time, z, replicates=300,
+                   free=("torque_constant", "moving_mass"), hold=("offset",))  # fmt: skip
+    assert fit.held == "offset" and not fit.confounded
+    for name, true in (("torque_constant", 1.6), ("moving_mass", 120.0)):
+        p = fit.parameters[name]
+        assert p.low <= true <= p.high, (name, p)
+        assert p.high - p.low < 0.02 * true  # the weight tells them to a per cent
 
 
 def test_a_known_torque_constant_lets_the_mass_be_fitted() -> None:
     # K_t from the data sheet holds the torque scale; the moving mass is then free.
     inputs = _x_axis()
-    held = AxisInputs(inputs.letter, inputs.case, inputs.axis, inputs.model, inputs.temperature,
-                      inputs.parameters, torque_constant=1.2)  # fmt: skip
+    held = replace(inputs, torque_constant=1.2, torque_constant_source="--torque-constant")
     truth = TrueAxis(moving_mass=380.0)  # the case says 450 kg: the fit must not keep it
     trace = synthetic_trace({"X": _program(20.0, PROGRAM_A)}, {"X": held}, {"X": truth},
                             sample_time=0.004, signal_noise=0.1, seed=5)  # fmt: skip
@@ -112,15 +215,22 @@ def test_a_known_torque_constant_lets_the_mass_be_fitted() -> None:
 
 
 def test_a_current_trace_needs_a_mass_or_a_torque_constant() -> None:
-    inputs = _x_axis()
-    massless = AxisInputs(inputs.letter, inputs.case, inputs.axis.__class__(moving_mass=0.0),
-                          inputs.model, inputs.temperature)  # fmt: skip
-    t = np.arange(0.0, 4.0, 0.02)
+    # Neither K_t nor the moving mass known: nothing holds the torque scale.
+    inputs = _without_torque_constant(_x_axis())
+    massless = replace(inputs, axis=inputs.axis.__class__(moving_mass=0.0))
     trace = synthetic_trace({"X": _program(4.0, ((0.1, 0.1, 1.0, 0.5),))}, {"X": inputs},
                             {"X": TRUTH}, sample_time=0.02)  # fmt: skip
     with pytest.raises(BallScrewInputError, match="moving_mass"):
         fit_axis(trace.axes["X"], trace.time, massless)
-    del t
+    with pytest.raises(BallScrewInputError, match="held K_t known"):
+        fit_axis(trace.axes["X"], trace.time, inputs, hold=("torque_constant",))
+    with pytest.raises(BallScrewInputError, match="either freed or held"):
+        fit_axis(trace.axes["X"], trace.time, inputs, free=("screw_scale",),
+                 hold=("screw_scale",))  # fmt: skip
+    with pytest.raises(BallScrewInputError, match=r"--free.*kq"):
+        parameter_names("kt, kq", "--free")
+    assert parameter_names("KT, s;fc", "--free") == ("torque_constant", "screw_scale",
+                                                      "guide_coulomb")  # fmt: skip
 
 
 def test_gaps_in_the_sampling_are_refused_with_the_sample() -> None:
@@ -135,23 +245,34 @@ def test_gaps_in_the_sampling_are_refused_with_the_sample() -> None:
 
 
 @pytest.mark.slow
-def test_parameters_are_recovered_within_their_intervals_in_90_of_100_traces() -> None:
+@pytest.mark.parametrize(
+    ("free", "fitted"),
+    [((), {"offset", "moving_mass", "guide_coulomb", "guide_viscous"}),
+     (("torque_constant",), {"offset", "torque_constant", "guide_coulomb", "guide_viscous"})],
+    ids=["default, K_t known", "--free kt, the mass held"],
+)  # fmt: skip
+def test_parameters_are_recovered_within_their_intervals_in_90_of_100_traces(
+    free: tuple[str, ...], fitted: set[str]
+) -> None:
     # 100 traces of one program, each with its own noise (250 Hz, 1 µm, AR(1) current noise
-    # of 0.1 A, rho 0.5): every fitted parameter inside its 95 % interval in at least 90 of
-    # them. With 95 % intervals the expected count is 95; 90 is 2.3 binomial standard
-    # deviations below it (the block bootstrap is known to run a little narrow).
+    # of 0.1 A, rho 0.5, an offset of 0.05 A; a truth of 420 kg where the case says 450,
+    # so a held mass is visibly not copied): every fitted parameter inside its 95 % interval
+    # in at least 90 of them. With 95 % intervals the expected count is 95; 90 is 2.3
+    # binomial standard deviations below it (the block bootstrap is known to run a little
+    # narrow). Four parameters, the default's count; each identifiable on every trace.
     inputs = _x_axis()
+    truth = TRUTH if free else replace(TRUTH, moving_mass=420.0)
     profile = _program(20.0, PROGRAM_A)
     hits: dict[str, int] = {}
     for seed in range(100):
-        trace = synthetic_trace({"X": profile}, {"X": inputs}, {"X": TRUTH},
+        trace = synthetic_trace({"X": profile}, {"X": inputs}, {"X": truth},
                                 sample_time=0.004, signal_noise=0.1, seed=seed)  # fmt: skip
-        fit = fit_axis(trace.axes["X"], trace.time, inputs, seed=seed)
+        fit = fit_axis(trace.axes["X"], trace.time, inputs, seed=seed, free=free)
+        assert not fit.confounded
         for name, p in fit.parameters.items():
             if p.fitted:
-                hits[name] = hits.get(name, 0) + (p.low <= getattr(TRUTH, name) <= p.high)
-    assert set(hits) == {"torque_constant", "offset", "screw_scale", "guide_coulomb",
-                         "guide_viscous"}  # fmt: skip
+                hits[name] = hits.get(name, 0) + (p.low <= getattr(truth, name) <= p.high)
+    assert set(hits) == fitted and len(fitted) == BASELINE_PARAMETERS
     assert min(hits.values()) >= 90, hits
 
 
@@ -177,18 +298,45 @@ def test_identify_command_fits_validates_and_writes_a_machine_program_reads(
                           "--out", str(tmp_path / "report"), "--json",
                           str(tmp_path / "fit.json")], capsys)  # fmt: skip
     assert code == 0, err
-    assert "current-to-torque scale K_t" in out and "Coulomb + viscous + inertia" in out
+    assert "moving mass m" in out and "Coulomb + viscous + inertia" in out
+    assert "4 parameters free (the regression: 4)" in out
+    assert "K_t held at 1.8 N*m/A (axes.X.case.motor.torque_constant)" in err
     doc = json.loads((tmp_path / "fit.json").read_text())
     x = doc["axes"]["X"]
-    kt = x["parameters"]["torque_constant"]
-    assert kt["low_95"] <= 1.2 <= kt["high_95"]
+    assert x["free_parameters"] == x["baseline_parameters"] == 4
+    assert x["torque_scale_held_by"] == "torque_constant"
+    mass = x["parameters"]["moving_mass"]
+    assert mass["low_95"] <= 450.0 <= mass["high_95"] and mass["identifiable"]
     # Program B's energy from program A's fit: within 10 % (the issue's target).
     assert abs(doc["validation"]["axes"]["X"]["model"]["energy_error"]) < 0.10
     assert (tmp_path / "report" / "report.html").is_file()
     assert (tmp_path / "report" / "figures" / "fit_X.png").is_file()
     machine = parse_machine(calibrated.read_text(), folder=EXAMPLES)
-    assert machine.axes["X"].case.axis["moving_mass"] == pytest.approx(450.0)
-    assert "K_t = 1.2" in calibrated.read_text()
+    assert machine.axes["X"].case.axis["moving_mass"] == pytest.approx(mass["value"], rel=1e-4)
+    assert "guideway Coulomb force F_c = " in calibrated.read_text()
+
+
+def test_identify_command_frees_and_holds_and_names_what_the_trace_cannot_tell(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    trace = synthetic_trace({"X": _program(20.0, PROGRAM_A)}, {"X": _x_axis()}, {"X": TRUTH},
+                            sample_time=0.004, signal_noise=0.1, seed=1)  # fmt: skip
+    _write(trace, tmp_path / "a.csv")
+    base = ["identify", str(tmp_path / "a.csv"), "--machine", str(EXAMPLES / "machine_vmc.toml")]
+    code, out, err = run([*base, "--free", "kt", "--json", str(tmp_path / "kt.json")], capsys)
+    assert code == 0, err
+    x = json.loads((tmp_path / "kt.json").read_text())["axes"]["X"]
+    kt = x["parameters"]["torque_constant"]
+    assert x["torque_scale_held_by"] == "moving_mass" and kt["low_95"] <= 1.8 <= kt["high_95"]
+    code, out, err = run([*base, "--free", "s"], capsys)
+    assert code == 0, err
+    assert "not identifiable with guide_coulomb" in out  # the interval's place in the table
+    assert "screw_scale and guide_coulomb are not identifiable" in err
+    code, out, err = run([*base, "--free", "s", "--hold", "fc"], capsys)
+    assert code == 0, err
+    assert "not identifiable" not in out
+    code, out, err = run([*base, "--free", "kq"], capsys)
+    assert code != 0 and "--free" in err and "Traceback" not in err
 
 
 def test_calibrated_machine_carries_a_fitted_mass(tmp_path: Path) -> None:

@@ -40,8 +40,16 @@ def _constants(text: str | None) -> dict[str, float]:
               help="Name an export's column (repeat), e.g. 'joint.0.motor-pos-fb=X position "
               "[mm]' for a halscope log, 'Time=time [ms]' for a TwinCAT Scope CSV.")  # fmt: skip
 @click.option("--torque-constant", "torque_constants", default=None, metavar="L=K_T,...",
-              help="The motors' K_t, e.g. 'X=1.2 N*m/A': the moving mass is then fitted "
-              "(default: the case's moving mass holds the scale and K_t is fitted).")  # fmt: skip
+              help="The motors' K_t (per A as the drive logs its current), e.g. 'X=1.2 "
+              "N*m/A', over the cases' motor.torque_constant. With a K_t known the moving mass "
+              "is fitted; without, K_t is fitted and the case's mass held.")  # fmt: skip
+@click.option("--free", "free_names", default="", metavar="NAMES",
+              help="Fit these too (kt, mass, s, fc, b, offset), e.g. 'kt': K_t fitted and the "
+              "case's moving mass held. Default: the offset, the guideway's Coulomb and "
+              "viscous friction and the mass (K_t known) or K_t (not known).")  # fmt: skip
+@click.option("--hold", "hold_names", default="", metavar="NAMES",
+              help="Hold these (at 0; the screw's scale at 1), e.g. 'offset' on a vertical "
+              "axis, 'fc' with --free s.")  # fmt: skip
 @click.option("--validate", "validate_file", default=None, type=click.Path(dir_okay=False),
               help="A second trace of the same machine: score the fit's prediction of "
               "it.")  # fmt: skip
@@ -59,11 +67,12 @@ def _constants(text: str | None) -> dict[str, float]:
 @json_option("Write the fit as JSON to FILE ('-' for standard output).")
 def identify_command(
     trace_file: str, machine_file: str, mappings: tuple[str, ...],
-    torque_constants: str | None, validate_file: str | None, standstill_speed: str,
+    torque_constants: str | None, free_names: str, hold_names: str,
+    validate_file: str | None, standstill_speed: str,
     smoothing: str, calibrated_file: str | None, seed: int, out_dir: str | None,
     json_file: str | None,
 ) -> None:  # fmt: skip
-    """Fit each axis of a drive trace: K_t, offset, moving mass, guideway and screw friction.
+    """Fit each axis of a drive trace: offset, K_t or moving mass, guideway friction.
 
     The trace is a CSV of time and, per axis, position and current (or torque
     or power), units in the header: 'time [s],X position [mm],X current [A]'.
@@ -76,7 +85,12 @@ def identify_command(
     from rich.table import Table
 
     from ..errors import BallScrewInputError
-    from ..fit.identify import calibrated_machine_text, identify
+    from ..fit.identify import (
+        BASELINE_PARAMETERS,
+        calibrated_machine_text,
+        identify,
+        parameter_names,
+    )
     from ..io.machine import load_machine
     from ..io.trace import parse_mapping, read_trace
     from ..io.units import to_si
@@ -101,14 +115,17 @@ def identify_command(
         raise BallScrewInputError("--smoothing", smoothing, "a time >= 0")
     result = identify(trace, machine, torque_constants=_constants(torque_constants),
                       validate=second, smoothing=filter_time, standstill_speed=width,
-                      seed=seed)  # fmt: skip
+                      seed=seed, free=parameter_names(free_names, "--free"),
+                      hold=parameter_names(hold_names, "--hold"))  # fmt: skip
     for note in result.notes:
         click.echo(f"note: {note}", err=True)
     out = stdout(json_file)
     for letter, fit in result.fits.items():
         for note in fit.notes:
             click.echo(f"note: {letter}: {note}", err=True)
-        table = Table(title=f"{letter}: fitted to {trace.source} ({fit.kind})")
+        table = Table(title=f"{letter}: fitted to {trace.source} ({fit.kind}), "
+                      f"{len(fit.free)} parameters free (the regression: "
+                      f"{BASELINE_PARAMETERS})")  # fmt: skip
         for column in PARAMETER_HEADER:
             table.add_column(column, justify="right")
         for row in parameter_rows(fit):

@@ -56,19 +56,36 @@ torque constant, :math:`y_0` the current's offset), :math:`y = y_0 + T` for a
 torque and :math:`y = y_0 + T\omega_m` for a power (the shaft's; the drive's and
 motor's losses are not modelled here).
 
-**What is free, and the one thing that must be held.** Per axis: the
-current-to-torque scale :math:`K_t`, the offset :math:`y_0`, the moving mass
-:math:`m`, the screw-friction scale :math:`s`, and :math:`F_c` and :math:`b`.
-Every term of :math:`T` but :math:`T_J` is proportional to something free, and
-:math:`T_J` (like :math:`m`) multiplies the acceleration: scaling :math:`K_t`,
-:math:`m`, :math:`s`, :math:`F_c`, :math:`b` and the rotor's inertia together
-leaves the current unchanged. A current trace therefore fixes the torque scale
-only when one of them is known: either :math:`K_t` (the motor's data sheet,
-``torque_constant``), and :math:`m` is fitted, or the moving mass (the case's
-``moving_mass``), and :math:`K_t` is fitted. A torque or power trace has its
-scale, and :math:`m` is fitted. Five parameters are free in every case, and
-the model is linear in them (in :math:`1/K_t`, :math:`s/K_t`, ... for a
-current with the mass held): one linear least-squares solve.
+**What is free, and what is held.** Every term of :math:`T` is linear in
+what multiplies it, so a current alone fixes no overall scale: multiplying
+:math:`K_t`, :math:`m`, :math:`s`, :math:`F_c`, :math:`b` and the rotating
+inertias together leaves it unchanged. A known torque fixes it only if its
+shape is none of the free terms': the rotor's inertia multiplies the
+acceleration as the mass does, the bearings' drag follows the sign as the
+Coulomb force does, and the weight on an inclined axis is a constant as the
+offset is. One of :math:`K_t` and :math:`m` is therefore held, and by
+default (:func:`free_parameters`) the fit has no more free parameters than
+the Coulomb + viscous + inertia regression (:data:`BASELINE_PARAMETERS`, 4):
+the offset :math:`y_0`, :math:`F_c`, :math:`b`, and :math:`m` when :math:`K_t`
+is known (``--torque-constant``, or the case's ``motor.torque_constant``), else
+:math:`K_t` with the case's ``moving_mass`` held; a torque or power trace has
+its scale and fits :math:`m`. The screw-friction scale :math:`s` is held at 1:
+the screw model's friction hardly changes over an air cut's speeds and loads,
+so :math:`s` and :math:`F_c` are one term there (their estimates correlate at
+-1), and the model of the screw is what the package brings, the guideway's
+Coulomb force what the trace adds. ``free`` and ``hold`` change the set
+(``--free kt`` fits :math:`K_t` and holds the mass; ``--free s --hold fc``
+scales the screw instead). The model is linear in what is free (in
+:math:`1/K_t`, :math:`F_c/K_t`, ... when :math:`K_t` is): one least-squares
+solve.
+
+**Identifiability from the data.** Whatever the set, the trace decides what
+it tells apart: :func:`identifiability` gives the correlation of the estimates
+from the Fisher information :math:`X^TX` of the filtered design, and a pair
+beyond :data:`CONFOUNDED` (0.98) is reported as not identifiable, naming both,
+with no interval for either (a combination of the two is what the trace
+gives). A default viscous term the trace cannot tell from another (one feed)
+is held at 0 and the notes say so.
 
 **Intervals.** Residuals of a trace are correlated over several samples
 (the filter, the drive's own filters), so the ordinary least-squares
@@ -121,6 +138,8 @@ from ..io.trace import AxisTrace, Trace
 from ..materials import STANDARD_GRAVITY
 
 __all__ = [
+    "BASELINE_PARAMETERS",
+    "CONFOUNDED",
     "PARAMETERS",
     "REPLICATES",
     "SMOOTHING",
@@ -134,7 +153,10 @@ __all__ = [
     "axis_inputs",
     "calibrated_machine_text",
     "fit_axis",
+    "free_parameters",
+    "identifiability",
     "identify",
+    "parameter_names",
     "regressors",
     "score_axis",
     "shaft_energy",
@@ -167,8 +189,9 @@ PARAMETERS: dict[str, tuple[str, str]] = {
 class AxisInputs:
     """What the fit takes of one axis of the machine (SI).
 
-    ``torque_constant`` [N·m/A] is the one a current trace's torque scale is
-    held by (None: the case's moving mass holds it).
+    ``torque_constant`` [N·m/A]: the motor's :math:`K_t` a current trace's
+    torque scale is held by (None: none known, the case's moving mass holds
+    it); ``torque_constant_source`` says where it came from.
     """
 
     letter: str
@@ -179,13 +202,18 @@ class AxisInputs:
     parameters: dict[str, Any] = field(default_factory=dict)
     torque_constant: float | None = None
     process_force: float = 0.0
+    torque_constant_source: str = ""
 
 
 def axis_inputs(
     machine: Machine, letter: str, torque_constant: float | None = None,
     travel: float | None = None,
 ) -> AxisInputs:  # fmt: skip
-    """The inputs of axis ``letter`` of ``machine`` (its case, set up as ``program`` does)."""
+    """The inputs of axis ``letter`` of ``machine`` (its case, set up as ``program`` does).
+
+    ``torque_constant`` [N·m/A] (``--torque-constant``) overrides the case's
+    ``motor.torque_constant``; with neither, none is known.
+    """
     if letter not in machine.axes:
         raise BallScrewInputError(
             f"trace axis {letter}", letter,
@@ -201,8 +229,13 @@ def axis_inputs(
         math.isfinite(torque_constant) and torque_constant > 0.0
     ):
         raise BallScrewInputError(f"--torque-constant {letter}", torque_constant, "a value > 0")
+    source = "--torque-constant" if torque_constant is not None else ""
+    if torque_constant is None and case.motor.get("torque_constant") is not None:
+        torque_constant = float(case.motor["torque_constant"])
+        source = f"axes.{letter}.case.motor.torque_constant"
     return AxisInputs(letter, case, setup.axis, machine.model, ax.start_temperature,
-                      case.parameters_for(machine.model), torque_constant)  # fmt: skip
+                      case.parameters_for(machine.model), torque_constant,
+                      torque_constant_source=source)  # fmt: skip
 
 
 @dataclass(frozen=True)
@@ -339,7 +372,11 @@ def measured_profile(
 
 @dataclass(frozen=True)
 class Parameter:
-    """A parameter of an axis: value, 95 % interval, unit; ``fitted`` False when held."""
+    """A parameter of an axis: value, 95 % interval, unit; ``fitted`` False when held.
+
+    ``confounded_with``: the fitted parameters this trace cannot tell it from
+    (:func:`identifiability`); its interval is then not given (NaN).
+    """
 
     name: str
     value: float
@@ -347,11 +384,18 @@ class Parameter:
     high: float
     unit: str
     fitted: bool = True
+    confounded_with: tuple[str, ...] = ()
+
+    @property
+    def identifiable(self) -> bool:
+        """Whether the trace tells this parameter from every other fitted one."""
+        return not self.confounded_with
 
     def as_dict(self) -> dict[str, Any]:
         """JSON-ready."""
         return {"value": self.value, "low_95": self.low, "high_95": self.high,
-                "unit": self.unit, "fitted": self.fitted}  # fmt: skip
+                "unit": self.unit, "fitted": self.fitted, "identifiable": self.identifiable,
+                "confounded_with": list(self.confounded_with)}  # fmt: skip
 
 
 @dataclass(frozen=True)
@@ -405,49 +449,118 @@ def _integral_positive(power: FloatArray, time: FloatArray) -> float:
 
 @dataclass(frozen=True)
 class _Design:
-    """The linear problem y ≈ X θ + base of one mode, its columns named."""
+    """The linear problem y ≈ X θ + base, its columns named by the parameters they give."""
 
     matrix: FloatArray  # n x p
     base: FloatArray  # the part of y with no free parameter
-    mode: str  # "mass-held", "scale-held"
-    names: tuple[str, ...]  # the friction parameters fitted, in the columns after the first two
+    columns: tuple[str, ...]  # the parameter each column gives (its coefficient's meaning)
 
 
-FRICTION = ("screw_scale", "guide_coulomb", "guide_viscous")
-"""The friction parameters, and the value each is held at when a trace cannot tell it."""
-HELD_AT = {"screw_scale": 1.0, "guide_coulomb": 0.0, "guide_viscous": 0.0}
-COND_LIMIT = 1e4
-"""Largest condition number of the design (columns scaled to unit length) fitted as it is."""
+HELD_AT = {"offset": 0.0, "screw_scale": 1.0, "guide_coulomb": 0.0, "guide_viscous": 0.0}
+"""The value a parameter is held at when not fitted (the moving mass: the case's; K_t: known)."""
+TERMS = ("moving_mass", "screw_scale", "guide_coulomb", "guide_viscous")
+"""The parameters that multiply a term of the torque (:class:`Regressors`)."""
+BASELINE_PARAMETERS = 4
+"""The Coulomb + viscous + inertia regression's number of parameters."""
+CONFOUNDED = 0.98
+"""Largest absolute correlation of two estimates still told apart (:func:`identifiability`)."""
+ALIASES = {"kt": "torque_constant", "k_t": "torque_constant", "mass": "moving_mass",
+           "m": "moving_mass", "s": "screw_scale", "screw": "screw_scale",
+           "fc": "guide_coulomb", "f_c": "guide_coulomb", "coulomb": "guide_coulomb",
+           "b": "guide_viscous", "viscous": "guide_viscous", "y0": "offset"}  # fmt: skip
+"""Short names of the parameters for ``--free`` and ``--hold``."""
+
+
+def parameter_names(text: str | Sequence[str], option: str) -> tuple[str, ...]:
+    """``"kt, s"`` (or a list) as names of :data:`PARAMETERS`, each known, or an error."""
+    parts = text.replace(";", ",").split(",") if isinstance(text, str) else list(text)
+    out: list[str] = []
+    for part in parts:
+        key = part.strip().lower()
+        if not key:
+            continue
+        name = ALIASES.get(key, key)
+        if name not in PARAMETERS:
+            raise BallScrewInputError(option, part.strip(),
+                                      f"names of parameters: {', '.join(PARAMETERS)} (or "
+                                      f"{', '.join(ALIASES)})")  # fmt: skip
+        if name not in out:
+            out.append(name)
+    return tuple(out)
+
+
+def free_parameters(
+    kind: str, inputs: AxisInputs, free: Sequence[str] = (), hold: Sequence[str] = ()
+) -> tuple[str, ...]:
+    r"""The parameters fitted by default, with ``free`` added and ``hold`` held (module docstring).
+
+    By default, at most :data:`BASELINE_PARAMETERS`: the offset, the guideway's
+    Coulomb force and viscous coefficient, and the one of :math:`K_t` and the
+    moving mass that is not known: a current trace with a known :math:`K_t`
+    (``--torque-constant`` or the case's ``motor.torque_constant``) fits the
+    mass; without, :math:`K_t` is fitted and the case's mass holds the scale; a
+    torque or power trace fits the mass. The screw-friction scale is held at 1.
+    ``free`` = ``torque_constant`` fits :math:`K_t` and holds the mass instead
+    (unless ``moving_mass`` is freed too). Refused: a current trace with neither
+    :math:`K_t` nor the mass held or known, :math:`K_t` freed on a torque or
+    power trace, a name both freed and held.
+    """
+    both = set(free) & set(hold)
+    if both:
+        raise BallScrewInputError("--free and --hold", ", ".join(sorted(both)),
+                                  "a parameter either freed or held, not both")  # fmt: skip
+    names = {"offset", "guide_coulomb", "guide_viscous"}
+    if kind == "current" and (inputs.torque_constant is None or "torque_constant" in free):
+        names.add("torque_constant")
+    else:
+        names.add("moving_mass")
+    if kind != "current" and "torque_constant" in free:
+        raise BallScrewInputError(f"--free (axis {inputs.letter})", "torque_constant",
+                                  f"parameters of a {kind} trace: it has its torque scale, "
+                                  "no K_t to fit")  # fmt: skip
+    names = (names | set(free)) - set(hold)
+    if kind == "current" and "torque_constant" not in names and inputs.torque_constant is None:
+        raise BallScrewInputError(
+            f"--hold (axis {inputs.letter})", "torque_constant",
+            "a held K_t known: --torque-constant or the case's motor.torque_constant",
+        )  # fmt: skip
+    if "moving_mass" not in names and not float(inputs.axis.moving_mass) > 0.0:
+        raise BallScrewInputError(
+            f"axes.{inputs.letter}.case.axis.moving_mass", float(inputs.axis.moving_mass),
+            "a moving mass > 0, or --torque-constant: a current trace gives the torque scale "
+            "only with one of them known (the other is fitted)",
+        )  # fmt: skip
+    return tuple(k for k in PARAMETERS if k in names and not (
+        k == "torque_constant" and kind != "current"))  # fmt: skip
+
+
+def _held_values(kind: str, inputs: AxisInputs, mass: float) -> dict[str, float]:
+    """Every parameter's value when held (K_t NaN for a torque or power trace)."""
+    kt = inputs.torque_constant if kind == "current" else None
+    return {"torque_constant": math.nan if kt is None else kt, "moving_mass": mass, **HELD_AT}
 
 
 def _design(
-    reg: Regressors, kind: str, inputs: AxisInputs, mass: float,
-    held: frozenset[str] = frozenset(),
-) -> _Design:  # fmt: skip
-    """X and the fixed part for the signal ``kind`` (module docstring); ``held`` at HELD_AT."""
+    reg: Regressors, kind: str, free: Sequence[str], values: Mapping[str, float]
+) -> _Design:
+    """X and the fixed part for the signal ``kind`` (module docstring), the rest at ``values``."""
     ones = np.ones_like(reg.time)
     w = reg.motor_speed if kind == "power" else ones
-    columns = {"screw_scale": reg.screw, "guide_coulomb": reg.coulomb,
-               "guide_viscous": reg.viscous}  # fmt: skip
-    names = tuple(n for n in FRICTION if n not in held)
-    fixed = sum((HELD_AT[n] * columns[n] for n in held), np.zeros_like(ones))
-    if kind == "current" and inputs.torque_constant is None:
-        # y = y0 + c (T_known + m0 phi_m + held) + (c s) phi_s + (c F_c) phi_c + (c b) phi_b
-        x = np.column_stack([ones, reg.known + mass * reg.mass + fixed,
-                             *(columns[n] for n in names)])  # fmt: skip
-        return _Design(x, np.zeros_like(ones), "mass-held", names)
-    scale = 1.0 / inputs.torque_constant if kind == "current" and inputs.torque_constant else 1.0
-    # y = y0 + k w (T_known + held + m phi_m + s phi_s + F_c phi_c + b phi_b), k known
-    x = np.column_stack([ones, scale * w * reg.mass,
-                         *(scale * w * columns[n] for n in names)])  # fmt: skip
-    return _Design(x, scale * w * (reg.known + fixed), "scale-held", names)
-
-
-def _condition(x: FloatArray) -> float:
-    """The condition number of ``x`` with its columns scaled to unit length."""
-    norms = np.linalg.norm(x, axis=0)
-    norms[norms == 0.0] = 1.0
-    return float(np.linalg.cond(x / norms))
+    terms = {"moving_mass": reg.mass, "screw_scale": reg.screw, "guide_coulomb": reg.coulomb,
+             "guide_viscous": reg.viscous}  # fmt: skip
+    fitted = tuple(n for n in TERMS if n in free)
+    held_torque = reg.known + sum((values[n] * terms[n] for n in TERMS if n not in free),
+                                  np.zeros_like(ones))  # fmt: skip
+    lead = ("offset",) if "offset" in free else ()
+    offset = np.zeros_like(ones) if lead else np.full_like(ones, values["offset"])
+    if "torque_constant" in free:
+        # y = y0 + c (T_known + held terms) + sum (c p) phi_p, c = 1/K_t
+        x = np.column_stack([ones, held_torque, *(terms[n] for n in fitted)][1 - len(lead) :])
+        return _Design(x, offset, (*lead, "torque_constant", *fitted))
+    k = 1.0 / values["torque_constant"] if kind == "current" else 1.0
+    # y = y0 + k w (T_known + held terms) + sum p (k w phi_p), k known
+    x = np.column_stack([ones, *(k * w * terms[n] for n in fitted)][1 - len(lead) :])
+    return _Design(x, offset + k * w * held_torque, (*lead, *fitted))
 
 
 def _filtered(design: _Design, sigma: float, keep: FloatArray) -> tuple[FloatArray, FloatArray]:
@@ -473,25 +586,52 @@ def _away_from_starts(profile: Profile, sigma: float) -> FloatArray:
     return keep
 
 
-def _physical(theta: FloatArray, design: _Design, kind: str, inputs: AxisInputs,
-              mass: float) -> dict[str, FloatArray]:  # fmt: skip
-    """The parameters from the linear coefficients (rows: replicates)."""
+def _physical(
+    theta: FloatArray, design: _Design, values: Mapping[str, float]
+) -> dict[str, FloatArray]:
+    """Every parameter from the linear coefficients (rows: replicates), the held at ``values``."""
     t = np.atleast_2d(theta)
     n = t.shape[0]
-    friction = {name: t[:, 2 + k] for k, name in enumerate(design.names)}
-    if design.mode == "mass-held":
-        c = t[:, 1]
-        with np.errstate(divide="ignore", invalid="ignore"):
-            out = {"torque_constant": 1.0 / c, "offset": t[:, 0],
-                   "moving_mass": np.full(n, mass)}  # fmt: skip
-            out |= {name: friction[name] / c if name in friction else np.full(n, HELD_AT[name])
-                    for name in FRICTION}  # fmt: skip
-        return out
-    kt = inputs.torque_constant if kind == "current" else math.nan
-    out = {"torque_constant": np.full(n, kt if kt is not None else math.nan),
-           "offset": t[:, 0], "moving_mass": t[:, 1]}  # fmt: skip
-    out |= {name: friction.get(name, np.full(n, HELD_AT[name])) for name in FRICTION}
+    out = {name: np.full(n, float(values[name])) for name in PARAMETERS}
+    column = {name: t[:, k] for k, name in enumerate(design.columns)}
+    if "offset" in column:
+        out["offset"] = column["offset"]
+    c = column.get("torque_constant")
+    with np.errstate(divide="ignore", invalid="ignore"):
+        if c is not None:
+            out["torque_constant"] = 1.0 / c
+        for name in TERMS:
+            if name in column:
+                out[name] = column[name] if c is None else column[name] / c
     return out
+
+
+def identifiability(
+    x: FloatArray, names: Sequence[str]
+) -> tuple[FloatArray, list[tuple[str, str, float]]]:
+    r"""The estimates' correlation from the Fisher information, and the pairs not told apart.
+
+    For the linear model :math:`y = X\theta + e` with errors of equal variance,
+    the covariance of :math:`\hat\theta` is :math:`\sigma^2 (X^TX)^{-1}`, the
+    inverse of the Fisher information; scaling the errors or their correlation
+    in time changes its size, hardly its shape. With the columns scaled to unit
+    length and :math:`X = U S V^T`, :math:`(X^TX)^{-1} = V S^{-2} V^T` (singular
+    values below :math:`10^{-12}` of the largest taken at that floor, so an exactly
+    rank-deficient design gives correlations of :math:`\pm 1`). Returns the
+    correlation matrix (order of ``names``) and each pair whose correlation
+    exceeds :data:`CONFOUNDED` in size: a combination of the two is known, each
+    alone is not.
+    """
+    norms = np.linalg.norm(x, axis=0)
+    norms[norms == 0.0] = 1.0
+    _, sv, vt = np.linalg.svd(x / norms, full_matrices=False)
+    sv = np.maximum(sv, 1e-12 * sv[0]) if sv.size else sv
+    cov = (vt.T / sv**2) @ vt
+    d = np.sqrt(np.diag(cov))
+    corr: FloatArray = cov / np.outer(d, d)
+    pairs = [(names[a], names[b], float(corr[a, b])) for a in range(len(names))
+             for b in range(a + 1, len(names)) if abs(corr[a, b]) > CONFOUNDED]  # fmt: skip
+    return corr, pairs
 
 
 def _block_length(residual: FloatArray) -> int:
@@ -530,8 +670,10 @@ class AxisFit:
     letter, kind : str
         The axis and its signal ("current", "torque" or "power").
     held : str
-        What holds the torque scale: "moving_mass" (a current trace without
-        K_t), "torque_constant" (K_t given) or "signal" (a torque or power).
+        What holds the torque scale: "torque_constant" (K_t known and held),
+        "moving_mass" (K_t fitted, the case's mass held), "signal" (a torque or
+        power trace), "offset" (both fitted, the offset held) or "nothing" (both
+        fitted: not identifiable).
     parameters : dict
         :class:`Parameter` by name (:data:`PARAMETERS`).
     correlation : numpy.ndarray
@@ -554,6 +696,9 @@ class AxisFit:
         The ramp's width [m/s].
     notes : tuple of str
         What the fit assumed or could not tell apart.
+    confounded : tuple
+        The pairs of fitted parameters the trace cannot tell apart, with the
+        correlation of their estimates (:func:`identifiability`).
     """
 
     letter: str
@@ -572,6 +717,7 @@ class AxisFit:
     block_length: int
     standstill_speed: float
     notes: tuple[str, ...] = ()
+    confounded: tuple[tuple[str, str, float], ...] = ()
 
     def value(self, name: str) -> float:
         """A parameter's value."""
@@ -581,6 +727,9 @@ class AxisFit:
         """JSON-ready (the time series left out)."""
         return {
             "signal": self.kind, "torque_scale_held_by": self.held,
+            "free_parameters": len(self.free), "baseline_parameters": BASELINE_PARAMETERS,
+            "not_identifiable": [{"parameters": [a, b], "correlation": r}
+                                 for a, b, r in self.confounded],
             "parameters": {k: p.as_dict() for k, p in self.parameters.items()},
             "correlation": {"parameters": list(self.free),
                             "matrix": self.correlation.tolist()},
@@ -620,76 +769,108 @@ def _to_power(kind: str, offset: float, torque_constant: float, motor_speed: Flo
 def fit_axis(
     trace: AxisTrace, time: FloatArray, inputs: AxisInputs, *, smoothing: float = SMOOTHING,
     standstill_speed: float | None = None, replicates: int = REPLICATES, seed: int = 0,
-    source: str = "trace",
+    source: str = "trace", free: Sequence[str] = (), hold: Sequence[str] = (),
 ) -> AxisFit:  # fmt: skip
     """Fit one axis of a trace (module docstring).
 
     ``standstill_speed`` [m/s]: the ramp's width (None: 8 times the speed
     noise); ``replicates``: bootstrap resamples; ``seed`` makes them
-    reproducible.
+    reproducible; ``free`` and ``hold``: parameters fitted beyond the default
+    set, or held (:func:`free_parameters`).
     """
     if isinstance(replicates, bool) or not isinstance(replicates, int) or replicates < 100:
         raise BallScrewInputError("replicates", replicates, "a whole number >= 100")
     kind = trace.kind
+    chosen = free_parameters(kind, inputs, free, hold)
     profile, sigma = measured_profile(time, trace.position, smoothing, standstill_speed,
                                       f"{source}: axis {trace.letter}",
                                       inputs.process_force)  # fmt: skip
     case_mass = float(inputs.axis.moving_mass)
-    if kind == "current" and inputs.torque_constant is None and not case_mass > 0.0:
-        raise BallScrewInputError(
-            f"axes.{trace.letter}.case.axis.moving_mass", case_mass,
-            "a moving mass > 0, or --torque-constant: a current trace gives the torque scale "
-            "only with one of them known (the other is fitted)",
-        )  # fmt: skip
     y = trace.signal
     keep = _away_from_starts(profile, sigma)
     y_f = smooth(hat(y), sigma)[keep]
-    mass = case_mass
-    reg = regressors(profile, inputs, mass)
-    held: frozenset[str] = frozenset()
-    for more in ((), ("screw_scale",), ("screw_scale", "guide_viscous")):
-        # A trace that cannot tell the friction terms apart (one speed, no load change)
-        # holds the screw's scale at 1, then the viscous term at 0: said in the notes.
-        held = frozenset(more)
-        design = _design(reg, kind, inputs, mass, held)
+    values = _held_values(kind, inputs, case_mass)
+    reg = regressors(profile, inputs, case_mass)
+    auto_held: list[tuple[str, str, float]] = []
+    while True:
+        design = _design(reg, kind, chosen, values)
         x_f, base_f = _filtered(design, sigma, keep)
-        if _condition(x_f) <= COND_LIMIT:
+        _, pairs = identifiability(x_f, design.columns)
+        # A trace that cannot tell the viscous term from another (one feed) holds it at 0
+        # when it was free by default, and says so; a pair the user freed is reported.
+        viscous = [pair for pair in pairs if "guide_viscous" in pair[:2]]
+        if not viscous or "guide_viscous" in free:
             break
+        chosen = tuple(k for k in chosen if k != "guide_viscous")
+        auto_held.append(viscous[0])
     theta, *_ = np.linalg.lstsq(x_f, y_f - base_f, rcond=None)
-    if design.mode == "scale-held" and abs(theta[1] - mass) > 0.02 * max(mass, 1.0):
+    point = {k: float(v[0]) for k, v in _physical(theta, design, values).items()}
+    mass = point["moving_mass"]
+    if "moving_mass" in chosen and abs(mass - case_mass) > 0.02 * max(case_mass, 1.0):
         # The screw's friction was taken at the case's mass: once again at the fitted one.
-        mass = max(float(theta[1]), 0.0)
-        reg = regressors(profile, inputs, mass)
-        design = _design(reg, kind, inputs, mass, held)
+        reg = regressors(profile, inputs, max(mass, 0.0))
+        design = _design(reg, kind, chosen, values)
         x_f, base_f = _filtered(design, sigma, keep)
+        _, pairs = identifiability(x_f, design.columns)
         theta, *_ = np.linalg.lstsq(x_f, y_f - base_f, rcond=None)
+        point = {k: float(v[0]) for k, v in _physical(theta, design, values).items()}
     fitted = smooth(design.matrix @ theta + design.base, sigma)
     residual = y_f - x_f @ theta - base_f
     block = _block_length(residual)
     draws = theta + _bootstrap(x_f, residual, block, replicates, seed)
-    point = {k: float(v[0]) for k, v in _physical(theta, design, kind, inputs,
-                                                   case_mass).items()}  # fmt: skip
-    reps = _physical(draws, design, kind, inputs, case_mass)
-    scale_by = ("moving_mass" if design.mode == "mass-held"
-                else "torque_constant" if kind == "current" else "signal")  # fmt: skip
-    free = tuple(k for k in PARAMETERS if not (
-        (k == "moving_mass" and scale_by == "moving_mass")
-        or (k == "torque_constant" and scale_by != "moving_mass") or k in held))  # fmt: skip
-    parameters: dict[str, Parameter] = {}
-    for name, (unit, _) in PARAMETERS.items():
-        is_free = name in free
-        lo, hi = ((float(np.nanpercentile(reps[name], 2.5)), float(np.nanpercentile(reps[name],
-                  97.5))) if is_free else (point[name], point[name]))  # fmt: skip
-        parameters[name] = Parameter(name, point[name], lo, hi,
-                                     _signal_unit(kind) if name == "offset" else unit,
-                                     is_free)  # fmt: skip
+    reps = _physical(draws, design, values)
+    held = ("signal" if kind != "current" else "torque_constant"
+            if "torque_constant" not in chosen else "moving_mass"
+            if "moving_mass" not in chosen else "nothing"
+            if "offset" in chosen else "offset")  # fmt: skip
+    parameters = _parameters(kind, chosen, pairs, point, reps)
     with np.errstate(invalid="ignore", divide="ignore"):
         correlation = np.atleast_2d(
-            np.corrcoef(np.column_stack([reps[k] for k in free]), rowvar=False)
+            np.corrcoef(np.column_stack([reps[k] for k in chosen]), rowvar=False)
         ).astype(float)
     kt = point["torque_constant"]
     to_power = _to_power(kind, point["offset"], kt, reg.motor_speed)
     score = _scores(y, fitted, to_power, time)
+    baselines, coefficients, predictions = _baselines(reg, kind, y, y_f, sigma, keep, to_power,
+                                                      time)  # fmt: skip
+    notes = _notes(chosen, pairs, parameters, profile.standstill_speed, inputs, held)
+    for one, other, r in auto_held:
+        partner = other if one == "guide_viscous" else one
+        notes.append(f"guide_viscous held at 0: this trace cannot tell it from {partner} "
+                     f"(correlation {r:+.3f}): one speed, or speeds too alike; a trace with "
+                     "more feeds frees it")  # fmt: skip
+    return AxisFit(trace.letter, kind, held, parameters, correlation, chosen, score, baselines,
+                   coefficients, y, fitted, predictions, time, block, profile.standstill_speed,
+                   tuple(notes), tuple(pairs))  # fmt: skip
+
+
+def _parameters(
+    kind: str, chosen: Sequence[str], pairs: Sequence[tuple[str, str, float]],
+    point: Mapping[str, float], reps: Mapping[str, FloatArray],
+) -> dict[str, Parameter]:  # fmt: skip
+    """Each parameter with its 95 % interval (none when confounded; its value when held)."""
+    confounded: dict[str, list[str]] = {}
+    for one, other, _ in pairs:
+        confounded.setdefault(one, []).append(other)
+        confounded.setdefault(other, []).append(one)
+    parameters: dict[str, Parameter] = {}
+    for name, (unit, _) in PARAMETERS.items():
+        is_free = name in chosen
+        with_ = tuple(confounded.get(name, ()))
+        lo, hi = ((float(np.nanpercentile(reps[name], 2.5)), float(np.nanpercentile(reps[name],
+                  97.5))) if is_free and not with_ else
+                  (math.nan, math.nan) if is_free else (point[name], point[name]))  # fmt: skip
+        parameters[name] = Parameter(name, point[name], lo, hi,
+                                     _signal_unit(kind) if name == "offset" else unit,
+                                     is_free, with_)  # fmt: skip
+    return parameters
+
+
+def _baselines(
+    reg: Regressors, kind: str, y: FloatArray, y_f: FloatArray, sigma: float, keep: FloatArray,
+    to_power: Any, time: FloatArray,
+) -> tuple[dict[str, Score], dict[str, FloatArray], dict[str, FloatArray]]:  # fmt: skip
+    """The baselines fitted to the filtered signal: scores, coefficients, predictions."""
     baselines, coefficients, predictions = {}, {}, {}
     for name in BASELINES:
         xb = _baseline_matrix(reg, kind, name)
@@ -698,18 +879,25 @@ def fit_axis(
         coefficients[name] = cb
         predictions[name] = smooth(xb @ cb, sigma)
         baselines[name] = _scores(y, predictions[name], to_power, time)
-    notes = _notes(free, correlation, parameters, profile.standstill_speed, inputs)
-    notes += [f"{name} held at {HELD_AT[name]:g}: this trace cannot tell it from the other "
-              "friction terms (one speed, or speeds and loads too alike); a trace with more "
-              "feeds frees it" for name in sorted(held)]  # fmt: skip
-    return AxisFit(trace.letter, kind, scale_by, parameters, correlation, free, score, baselines,
-                   coefficients, y, fitted, predictions, time, block, profile.standstill_speed,
-                   tuple(notes))  # fmt: skip
+    return baselines, coefficients, predictions
+
+
+ADVICE = {
+    frozenset(("screw_scale", "guide_coulomb")): "the screw model's friction hardly changes "
+    "with this trace's speeds and loads, so its scale and a guideway Coulomb force are one "
+    "term; a trace with other loads (a process force, another moving mass, up and down a "
+    "vertical axis) can separate them; by default the screw's scale is held at 1",
+    frozenset(("torque_constant", "moving_mass")): "every torque of the model scales with "
+    "both; a known torque of another shape separates them (the gravity of a vertical axis "
+    "with the offset held: --hold offset; a known process force); by default one is held, "
+    "K_t from the motor's data or else the case's moving mass",
+}
+"""Why a pair is not identifiable, and what would separate it."""
 
 
 def _notes(
-    free: Sequence[str], correlation: FloatArray, parameters: Mapping[str, Parameter],
-    width: float, inputs: AxisInputs,
+    free: Sequence[str], pairs: Sequence[tuple[str, str, float]],
+    parameters: Mapping[str, Parameter], width: float, inputs: AxisInputs, held: str,
 ) -> list[str]:  # fmt: skip
     """What the fit assumed, and the parameters the trace could not tell apart."""
     notes = [
@@ -718,17 +906,27 @@ def _notes(
     ]
     if inputs.process_force == 0.0:
         notes.append("no process force (an air cut)")
-    for a in range(len(free)):
-        for b in range(a):
-            r = float(correlation[a, b])
-            if abs(r) > 0.95:
-                notes.append(f"{free[a]} and {free[b]} are hardly told apart by this trace "
-                             f"(correlation {r:+.2f}): a combination of the two is known far "
-                             "better than each; a trace with more speeds and loads separates "
-                             "them")  # fmt: skip
+    if held == "torque_constant":
+        notes.append(f"K_t held at {inputs.torque_constant:.4g} N*m/A "
+                     f"({inputs.torque_constant_source}); --free kt fits it and holds the "
+                     "case's moving mass instead")  # fmt: skip
+        mass, case_mass = parameters["moving_mass"], float(inputs.axis.moving_mass)
+        if case_mass > 0.0 and mass.identifiable and abs(mass.value / case_mass - 1.0) > 0.25:
+            notes.append(f"the fitted moving mass is {mass.value / case_mass:.2f} times the "
+                         f"case's {case_mass:.4g} kg: the case's mass or K_t is off (a drive "
+                         "that logs the peak or q-axis current against a K_t per A rms is "
+                         "off by sqrt(2) = 1.41); the trace alone cannot tell which")  # fmt: skip
+    if len(free) > BASELINE_PARAMETERS:
+        notes.append(f"{len(free)} parameters are free, more than the Coulomb + viscous + "
+                     f"inertia regression's {BASELINE_PARAMETERS}")  # fmt: skip
+    for a, b, r in pairs:
+        why = ADVICE.get(frozenset((a, b)), "their terms have nearly the same shape in this "
+                         "trace")  # fmt: skip
+        notes.append(f"{a} and {b} are not identifiable from this trace (correlation {r:+.3f} "
+                     "of their estimates, from the Fisher information): their intervals are "
+                     f"not given, only a combination of the two is known; {why}")  # fmt: skip
     for name, p in parameters.items():
-        if p.fitted and name in ("moving_mass", "screw_scale", "guide_coulomb",
-                                 "guide_viscous") and p.high < 0.0:  # fmt: skip
+        if p.fitted and p.identifiable and name in TERMS and p.high < 0.0:
             notes.append(f"{name} is negative beyond its interval ({p.value:.3g}): the model "
                          "misses something this trace holds")  # fmt: skip
     return notes
@@ -768,7 +966,7 @@ def predict_signal(
 ) -> tuple[FloatArray, Regressors]:
     """The signal a fitted axis gives over ``profile``, and the model's terms there."""
     p = {k: v.value for k, v in fit.parameters.items()}
-    reg = regressors(profile, inputs, p["moving_mass"])
+    reg = regressors(profile, inputs, max(p["moving_mass"], 0.0))
     torque = axis_torque(reg, p)
     if fit.kind == "power":
         return p["offset"] + torque * reg.motor_speed, reg
@@ -825,8 +1023,14 @@ def identify(
     trace: Trace, machine: Machine, *, torque_constants: Mapping[str, float] | None = None,
     validate: Trace | None = None, smoothing: float = SMOOTHING,
     standstill_speed: float | None = None, replicates: int = REPLICATES, seed: int = 0,
+    free: Sequence[str] = (), hold: Sequence[str] = (),
 ) -> IdentifyResult:  # fmt: skip
-    """Fit every axis of ``trace`` (module docstring); score ``validate`` with the fit."""
+    """Fit every axis of ``trace`` (module docstring); score ``validate`` with the fit.
+
+    ``torque_constants`` [N·m/A] by axis override the cases' ``motor.torque_constant``;
+    ``free`` and ``hold`` (names of :data:`PARAMETERS`) apply to every axis
+    (:func:`free_parameters`).
+    """
     constants = dict(torque_constants or {})
     for letter in constants:
         if letter not in trace.axes:
@@ -841,7 +1045,8 @@ def identify(
         inputs[letter] = axis_inputs(machine, letter, constants.get(letter), travel)
         fits[letter] = fit_axis(ax, trace.time, inputs[letter], smoothing=smoothing,
                                 standstill_speed=standstill_speed, replicates=replicates,
-                                seed=seed, source=trace.source)  # fmt: skip
+                                seed=seed, source=trace.source, free=free,
+                                hold=hold)  # fmt: skip
     result = IdentifyResult(trace.source, fits, notes=trace.notes)
     if validate is None:
         return result
@@ -973,7 +1178,7 @@ def calibrated_machine_text(machine: Machine, result: IdentifyResult) -> str:
         case = tomlkit.parse(machine.axes[letter].case.text)
         entry["case"] = case
         mass = fit.parameters["moving_mass"]
-        if mass.fitted:
+        if mass.fitted and mass.identifiable:
             section = case.setdefault("axis", tomlkit.table())
             item = tomlkit.item(f"{mass.value:.5g} kg")
             item.comment(f"fitted by ballscrew identify: 95 % interval {mass.low:.4g} to "
@@ -983,7 +1188,9 @@ def calibrated_machine_text(machine: Machine, result: IdentifyResult) -> str:
             p = fit.parameters[name]
             if p.fitted:
                 unit = f" {p.unit}" if p.unit else ""
-                header.append(f"{letter}: {PARAMETERS[name][1]} = {p.value:.4g}{unit} (95 %: "
-                              f"{p.low:.4g} to {p.high:.4g}); no key holds it yet "
-                              f"({key}): program leaves it out")  # fmt: skip
+                spread = (f"95 %: {p.low:.4g} to {p.high:.4g}" if p.identifiable else
+                          f"not identifiable with {', '.join(p.confounded_with)}")  # fmt: skip
+                header.append(f"{letter}: {PARAMETERS[name][1]} = {p.value:.4g}{unit} "
+                              f"({spread}); no key holds it yet ({key}): program leaves it "
+                              "out")  # fmt: skip
     return "".join(f"# {line}\n" for line in header) + tomlkit.dumps(doc)

@@ -31,7 +31,9 @@ def parameter_rows(fit: AxisFit) -> list[list[str]]:
     for name, p in fit.parameters.items():
         if not np.isfinite(p.value):
             continue
-        interval = f"{num(p.low)} to {num(p.high)}" if p.fitted else "held"
+        interval = (f"{num(p.low)} to {num(p.high)}" if p.fitted and p.identifiable else
+                    f"not identifiable with {', '.join(p.confounded_with)}" if p.fitted
+                    else "held")  # fmt: skip
         rows.append([PARAMETERS[name][1], num(p.value), interval, p.unit or "-"])
     return rows
 
