@@ -174,7 +174,7 @@ def summary_rows(r: ProgramResult) -> list[list[str]]:
         ("peak motor torque [N*m]", "peak_torque", "{:.3g}"),
         ("RMS motor torque [N*m]", "rms_torque", "{:.3g}"),
         ("start / top temperature [degC]", None, ""),
-        ("thermal lead error [um]", None, ""),
+        ("thermal lead error over the travel [um]", None, ""),
         ("reversals (load +/+ , +/-, -/+, -/-)", None, ""),
     ]
     rows = []

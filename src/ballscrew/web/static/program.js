@@ -16,7 +16,7 @@
     ["peak motor torque [N·m]", (a) => a.peak_motor_torque_Nm, 3],
     ["RMS motor torque [N·m]", (a) => a.rms_motor_torque_Nm, 3],
     ["top temperature [°C]", (a) => a.max_temperature_C, 4],
-    ["thermal lead error [µm]", (a) => a.thermal_lead_error_um, 2],
+    ["thermal lead error over the travel [µm]", (a) => a.thermal_lead_error_um, 2],
     ["reversals", (a) => a.reversals, 0],
     ["load before/after", (a) => Object.entries(a.load_directions).map(([k, n]) => n + " × " + k).join(", ") || "-", 0],
     ["lost motion [µm]", (a) => (a.lost_motion_um ? a.lost_motion_um.map((v) => v.toFixed(1)).join(" to ") : "-"), 0],
