@@ -681,9 +681,9 @@ def run_program(
     max_blocks : int, optional
         Refuse longer programs (the web page's bound).
     max_samples : int, optional
-        Refuse a program of more samples (default :data:`ballscrew.program.planner.
-        MAX_SAMPLES`): by the planner's estimate before planning, else by its count
-        before sampling (:func:`ballscrew.program.planner.plan`).
+        Refuse a program of more samples (default: the planner's
+        :data:`~ballscrew.program.planner.MAX_SAMPLES`), by its bound before planning,
+        else by its count before sampling (:func:`~ballscrew.program.planner.plan`).
     progress : callable, optional
         ``progress(stage, done, total)`` while the blocks are planned.
 
