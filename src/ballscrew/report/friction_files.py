@@ -34,8 +34,8 @@ from .friction_fmu import fmu_build
 from .outputs import csv_text
 
 __all__ = [
-    "FORMATS", "MAP_DIGITS", "c_header", "csv_file", "fmu_file", "mat_file", "modelica_file",
-    "write_map",
+    "FORMATS", "MAP_DIGITS", "c_header", "csv_file", "fmu_file", "map_file", "mat_file",
+    "modelica_file", "write_map",
 ]  # fmt: skip
 
 CONVENTIONS = (
