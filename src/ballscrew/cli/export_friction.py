@@ -87,7 +87,8 @@ __all__ = ["export_friction_command"]
     type=click.Path(dir_okay=False),
     default=None,
     help="CSV: the lookup table (form table) or the model and fitted curves; with load-map "
-    "the suffix chooses .csv, .mat, .mo or .h.",
+    "the suffix chooses .csv, .mat, .mo, .h or .fmu. A .csv gets its inputs in "
+    "FILE.meta.json beside it.",
 )
 @click.option(
     "--json",
