@@ -117,6 +117,26 @@ def test_a_temperature_rise_typed_in_celsius_is_a_rise(text: str) -> None:
     assert parse_case(toml).check["pretension_temperature"] == pytest.approx(5.0)
 
 
+@pytest.mark.parametrize(("text", "absolute"), [("278.15 K", True), ("40 degC", False)])
+def test_a_pretension_rise_past_what_a_shaft_is_set_for_is_refused(
+    text: str, absolute: bool
+) -> None:
+    # Issue 52: "278.15 K" (an absolute temperature typed for a rise) was taken as a rise of
+    # 278 K: the thermal error went to 0 and the verdict to OK. A rise of 30 K already
+    # stresses a steel shaft by 210 GPa x 11.5e-6/K x 30 K = 72 MPa; catalogues set a few K.
+    from ballscrew.io.case import parse_case
+    from shared import reference_case_toml
+
+    toml = reference_case_toml("rise", speed="100 rpm", axial_load="0 N",
+                               more=f'[check]\npretension_temperature = "{text}"\n')  # fmt: skip
+    with pytest.raises(BallScrewInputError) as info:
+        parse_case(toml)
+    said = str(info.value)
+    assert "check.pretension_temperature" in said and f"'{text}'" in said
+    assert "a temperature rise from 0 to 30 K" in said
+    assert ("a temperature in K is absolute" in said) is absolute
+
+
 @pytest.mark.parametrize(
     ("key", "text"),
     [("check.required_life", "20.000 h"), ("axis.moving_mass", "1.200 kg")],

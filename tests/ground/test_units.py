@@ -360,6 +360,8 @@ def test_a_temperature_no_machine_can_have_is_refused_as_typed(text: str, read: 
         to_si("machine.ambient", text, "degC")
     said = str(info.value)
     assert f"machine.ambient = '{text}'" in said and f"read as {read:.6g} degC" in said
+    # Kelvin's hint only where kelvin was typed (issue 52: '900 degC' got it too).
+    assert ("a temperature in K is absolute" in said) is text.endswith(" K")
     with pytest.raises(BallScrewInputError):  # in a list too, and at either end of a range
         parse_range("--temperature", f"20 degC, {text}", "degC")
 

@@ -24,6 +24,9 @@ HEAD = "speed [rpm],torque [N*m]\n100,0.3\n"
     [
         ("200,1e308\n", "line 3, column 'torque [N*m]' = '1e+308 N*m'"),
         ("200," + "1" * 200_000 + "\n", "line 3 = '(field larger than field limit"),
+        # A speed past 1e5 rad/s is named as typed, in the column's unit (it was named in
+        # rad/s: 1.047e+307 for a cell of 1e308 rpm).
+        ("1e308,0.3\n", "column 'speed [rpm]' = '1e+308 rpm (data row 2)'"),
     ],
 )
 def test_a_cell_no_screw_can_show_is_refused_naming_its_line(row: str, said: str) -> None:

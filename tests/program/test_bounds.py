@@ -32,7 +32,9 @@ def test_a_sample_time_that_would_take_billions_of_samples_is_refused_with_its_e
         run_program(machine, "G21 G90\nG1 X100 F3000\nM30\n")
     said = str(info.value)
     assert info.value.field == "program" and "samples" in said and "machine.sample_time" in said
-    estimate = float(said.split("about ")[1].split(" samples")[0])
+    # Refused by the bound before planning ("at least") or by the plan's count ("about").
+    estimate = float(said.split("at least " if "at least" in said else "about ")[1]
+                     .split(" samples")[0])  # fmt: skip
     assert estimate >= 1e8 > MAX_SAMPLES
 
 
@@ -52,3 +54,72 @@ def test_the_millennium_dwell_program_runs() -> None:
     result = run_program(MACHINE, "G21 G90\nG1 X100 F3000\nG4 P100000000000\nG1 X0\nM30\n")
     assert result.motion.duration > 1e11
     assert any("dwell" in n for n in result.notes)  # a dwell over 60 s is told with its reading
+
+
+def test_the_bound_before_planning_is_the_closed_form_of_a_move_from_rest() -> None:
+    # 700 mm from rest to rest on X at a jerk of 1e-9 m/s^3 (acceleration and feed never
+    # reached): the bound takes the peak speed over the whole length, j s^2 with
+    # s = (L/j)^(1/3), so L over it is (L/j)^(1/3) = 887.9 s; the planned move, a pure-jerk
+    # profile, takes (32 L/j)^(1/3) = 2819 s, 32^(1/3) times the bound.
+    from ballscrew.program.axes import _limits
+    from ballscrew.program.gcode import read_program
+    from ballscrew.program.planner import least_samples, plan
+
+    machine = dataclasses.replace(
+        MACHINE, axes={**MACHINE.axes, "X": dataclasses.replace(MACHINE.axes["X"], max_jerk=1e-9)}
+    )
+    program = read_program("G21 G90\nG1 X700 F3000\nM30\n", machine=machine)
+    limits = _limits(machine, program)
+    seconds, samples = least_samples(program, limits)
+    assert seconds == pytest.approx((0.7 / 1e-9) ** (1 / 3), rel=1e-9)
+    assert samples == int(seconds / 5e-3) + 1  # every 5 ms, and the block's end
+    motion = plan(program, limits)
+    assert motion.duration == pytest.approx((32 * 0.7 / 1e-9) ** (1 / 3), rel=1e-6)
+    assert motion.time.size >= samples
+
+
+def test_the_bound_before_planning_never_exceeds_the_plan() -> None:
+    # Seeded random programs (lines, arcs, rapids, dwells, feeds past the caps): the bound
+    # of time and of samples is at most what the plan gives, so a refusal by the bound is
+    # never one the plan would not make.
+    from test_planner_fuzz import _program
+
+    from ballscrew.program.axes import _limits
+    from ballscrew.program.gcode import read_program
+    from ballscrew.program.planner import least_samples, plan
+
+    rng = np.random.default_rng(52)
+    for _ in range(60):
+        text = _program(rng)
+        try:
+            program = read_program(text, arc_tolerance=MACHINE.arc_tolerance, machine=MACHINE)
+        except BallScrewInputError:
+            continue
+        limits = _limits(MACHINE, program)
+        seconds, samples = least_samples(program, limits)
+        motion = plan(program, limits)
+        assert seconds <= motion.duration * (1 + 1e-9) + 1e-12, text
+        assert samples <= motion.time.size, text
+
+
+def test_a_program_far_past_the_bound_is_refused_before_ruckig_runs(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # A jerk of 1e-14 m/s^3 on X: at least (L/j)^(1/3) = 41 212 s of 5 ms samples, 8.24
+    # million, past the command line's 3 million; refused before a block is planned.
+    import ruckig
+
+    machine = dataclasses.replace(
+        MACHINE, axes={**MACHINE.axes, "X": dataclasses.replace(MACHINE.axes["X"], max_jerk=1e-14)}
+    )
+    monkeypatch.setattr(ruckig, "Ruckig", None)  # planning a block would fail
+    from ballscrew.program.axes import _limits
+    from ballscrew.program.gcode import read_program
+    from ballscrew.program.planner import plan
+
+    program = read_program("G21 G90\nG1 X700 F3000\nM30\n", machine=machine)
+    with pytest.raises(BallScrewInputError) as info:
+        plan(program, _limits(machine, program))
+    said = str(info.value)
+    assert "at least 8.24e+06 samples" in said and f"at most {MAX_SAMPLES:.3g} samples" in said
+    assert "estimated before planning" in said

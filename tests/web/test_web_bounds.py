@@ -55,8 +55,8 @@ def test_a_request_past_the_memory_cap_is_refused_and_the_worker_lives() -> None
     program = "G21 G90\nG1 X700 F3000\nM30\n"
     with running_server(Limits(memory_bytes=1024**3)) as url:
         status, answer = _post(url, "/api/program", {"program": program, "machine": machine})
-        # Refused by the program's own sample estimate (3 million at most) before it plans
-        # them, or past the worker's memory cap: either way a 422 within the budget.
+        # Refused by the sample bound before planning (the server runs 120 000 at most)
+        # or past the worker's memory cap: either way a 422 within the budget.
         said = str(answer["error"])
         assert status == 422, answer
         assert "more memory than a computation" in said or "samples" in said, answer

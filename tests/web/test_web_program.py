@@ -111,3 +111,40 @@ def test_the_page_runs_a_program_in_the_browser() -> None:
         page.click("#program_run")
         page.wait_for_selector("#program_status:has-text('program line 2')")
         assert errors == []
+
+
+def test_a_program_past_the_sample_bound_is_refused_before_it_is_planned(
+    client: TestClient, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # Issue 52: X's jerk typed as 1e-9 m/s^3 passed the nominal time (700 mm at 3 m/min is
+    # 14 s) and planned 563 785 samples, 640 MB. The planner's bound before any block is
+    # planned, (L/j)^(1/3) = 888 s at least of 5 ms samples (177 581), passes 120 000: a
+    # 422 naming the limit, with ruckig never called (it is made to fail here).
+    import time
+
+    import ruckig
+
+    from ballscrew.web.program import MAX_SAMPLES
+
+    machine = example_machine_text().replace('max_jerk = "60 m/s^3"', 'max_jerk = "1e-9 m/s^3"', 1)
+    monkeypatch.setattr(ruckig, "Ruckig", None)  # planning a block would be a 500
+    start = time.monotonic()
+    answer = client.post("/api/program", json={"program": "G21 G90\nG1 X700 F3000\nM30\n",
+                                               "machine": machine})  # fmt: skip
+    assert answer.status_code == 422, answer.text
+    said = answer.json()["error"]
+    assert "at least 1.78e+05 samples" in said and f"at most {MAX_SAMPLES:,} samples" in said
+    assert answer.json()["field"] == "program"
+    assert time.monotonic() - start < 5.0  # refused at once, not after seconds of work
+
+
+def test_a_program_past_the_sample_bound_by_its_plan_is_refused_before_it_is_sampled(
+    client: TestClient,
+) -> None:
+    # A jerk of 1e-7 m/s^3: the bound before planning (about 61 000 samples) lets it through,
+    # the plan counts 121 465 (607 s of 5 ms samples), past 120 000: refused before sampling.
+    machine = example_machine_text().replace('max_jerk = "60 m/s^3"', 'max_jerk = "1e-7 m/s^3"', 1)
+    answer = client.post("/api/program", json={"program": "G21 G90\nG1 X700 F3000\nM30\n",
+                                               "machine": machine})  # fmt: skip
+    assert answer.status_code == 422, answer.text
+    assert "about 1.21e+05 samples" in answer.json()["error"]

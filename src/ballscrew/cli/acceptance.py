@@ -7,7 +7,14 @@ import sys
 import click
 
 from ..io.numbers import text as num
-from .common import json_option, own_case_option, require_case, stdout, write_result, writing
+from .common import (
+    json_option,
+    own_case_option,
+    require_case,
+    result_document,
+    stdout,
+    write_outputs,
+)
 
 __all__ = ["acceptance_command"]
 
@@ -107,18 +114,22 @@ def acceptance_command(
     u_text = (f"U = {a.uncertainty:.3g} N*m" if a.uncertainty > 0.0
               else "no measurement uncertainty stated")  # fmt: skip
     console.print(f"decision (ISO 14253-1, {u_text}): {a.decision}")
+    figure = b""
     if plot_file:
-        from ..io.files import atomic_write
         from ..report.acceptance import acceptance_figure
         from ..report.plotting import figure_bytes
 
         kind = Path(plot_file).suffix[1:].lower()
-        with writing("--plot", plot_file):
-            atomic_write(Path(plot_file), figure_bytes(acceptance_figure(a, torque, speed), kind))
+        figure = figure_bytes(acceptance_figure(a, torque, speed), kind)
     for note in a.notes:
         click.echo(f"note: {note}", err=True)
-    if json_file:
-        write_result(json_file, a.as_dict())
+    # The figure and the JSON are put in place together, or neither.
+    write_outputs(
+        [
+            ("--plot", plot_file, figure),
+            ("--json", json_file, result_document(a.as_dict()) if json_file else b""),
+        ]
+    )
     sys.stdout.flush()
 
 

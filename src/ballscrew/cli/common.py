@@ -25,6 +25,7 @@ __all__ = [
     "progress",
     "refuse_shared_outputs",
     "require_case",
+    "result_document",
     "stdout",
     "units_option",
     "write_json",
@@ -82,6 +83,14 @@ def write_json(json_file: str, text: str, option: str = "--json") -> None:
     else:
         with writing(option, json_file):
             atomic_write(Path(json_file), text.encode("utf-8"))
+
+
+def result_document(document: Mapping[str, Any]) -> bytes:
+    """A result's :meth:`as_dict` as the command's JSON bytes, the package version first."""
+    from .._version import __version__
+    from ..report.outputs import json_document
+
+    return json_document({"ballscrew": __version__, **document}).encode("utf-8")
 
 
 def write_result(json_file: str, document: Mapping[str, Any], option: str = "--json") -> None:
@@ -209,13 +218,15 @@ def write_report(out_dir: str, write: Callable[[Path], list[Path]]) -> None:
 def write_outputs(
     files: Sequence[tuple[str, str | None, bytes]] = (),
     report: tuple[str | None, Callable[[Path], list[Path]]] | None = None,
+    said: Callable[[Path, int], str] | None = None,
 ) -> None:
     """A command's outputs put in place together (:class:`ballscrew.io.files.OutputSet`).
 
     ``files``: (option, path or None, bytes) each; ``report``: (``--out`` folder or None,
     ``write(folder)``). Nothing is in place until all are written: a run stopped on the
     way leaves every earlier output as it was. An output that cannot be written names its
-    option and path, as :func:`writing` does.
+    option and path, as :func:`writing` does. The report is then said on stderr,
+    ``said(folder, files)`` when given, else its page and its count of files.
     """
     from ..io.files import OutputSet
 
@@ -230,7 +241,9 @@ def write_outputs(
             with writing("--out", report[0]):
                 out.folder(report[0], lambda folder: count.append(len(write(folder))))
     if count and report is not None:
-        click.echo(f"report: {Path(str(report[0])) / 'report.html'} ({count[0]} files)", err=True)
+        folder = Path(str(report[0]))
+        line = said(folder, count[0]) if said else f"report: {folder / 'report.html'}"
+        click.echo(line if said else f"{line} ({count[0]} files)", err=True)
 
 
 def motion_options(function: F) -> F:
@@ -296,8 +309,10 @@ def refuse_shared_outputs(command: click.Command, values: Mapping[str, Any]) -> 
         value = values.get(param.name or "")
         if flag in OUTPUT_OPTIONS and isinstance(value, str | os.PathLike):
             given.append((flag, os.fspath(value)))
-            if flag == "--csv" and given[-1][1] != "-":  # its provenance beside it
-                given.append(("--csv's provenance", given[-1][1] + ".meta.json"))
+            path = given[-1][1]
+            csv = flag == "--csv" or (flag == "--out" and path.lower().endswith(".csv"))
+            if csv and path != "-":  # its provenance beside it
+                given.append((f"{flag}'s provenance", path + ".meta.json"))
     for k, (flag_a, a) in enumerate(given):
         for flag_b, b in given[k + 1 :]:
             if a == "-" or b == "-":

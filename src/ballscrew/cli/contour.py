@@ -11,7 +11,15 @@ from rich.console import Console
 from rich.table import Table
 
 from ..io.numbers import text as num
-from .common import folder_option, json_option, progress, stdout, write_json, writing
+from .common import (
+    folder_option,
+    json_option,
+    progress,
+    result_document,
+    stdout,
+    write_json,
+    write_outputs,
+)
 
 if TYPE_CHECKING:
     from ..servo.contour import ContourResult
@@ -104,10 +112,8 @@ def contour_command(
     Example:
       ballscrew contour --case examples/xy_table_32x10.toml --radius "50 mm" --feed "2 m/min"
     """  # noqa: D301 - click needs the literal \b to keep the example lines
-    from .._version import __version__
     from ..io.case import load_case
     from ..io.extras import require
-    from ..report.outputs import json_document
     from ..servo import run_contour
 
     require("servo", "ballscrew contour")
@@ -134,13 +140,13 @@ def contour_command(
     _print(console, result)
     for note in _merged(result.notes):
         click.echo(f"note: {note}", err=True)
-    if out_dir:
-        from ..report.contour import write_contour_report
+    from ..report.contour import write_contour_report
 
-        with writing("--out", out_dir):
-            write_contour_report(out_dir, result)
-    if json_file:
-        write_json(json_file, json_document({"ballscrew": __version__, **result.as_dict()}))
+    # The report and the JSON are put in place together, or neither.
+    write_outputs(
+        [("--json", json_file, result_document(result.as_dict()) if json_file else b"")],
+        (out_dir, lambda folder: write_contour_report(folder, result)),
+    )
     sys.stdout.flush()
 
 

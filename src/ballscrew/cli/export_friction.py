@@ -5,7 +5,7 @@ from __future__ import annotations
 import sys
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import click
 from rich.console import Console
@@ -13,9 +13,10 @@ from rich.table import Table
 
 from .._version import __version__
 from ..io.numbers import text as num
-from .common import case_option, require_case, stdout, write_json, write_result, writing
+from .common import case_option, require_case, stdout, write_outputs, writing
 
 if TYPE_CHECKING:
+    from ..io.case import Case
     from ..servo.controller import FrictionForm
     from ..servo.export import FrictionExport
     from ..servo.friction_map import FrictionMap
@@ -86,7 +87,8 @@ __all__ = ["export_friction_command"]
     type=click.Path(dir_okay=False),
     default=None,
     help="CSV: the lookup table (form table) or the model and fitted curves; with load-map "
-    "the suffix chooses .csv, .mat, .mo or .h.",
+    "the suffix chooses .csv, .mat, .mo, .h or .fmu. A .csv gets its inputs in "
+    "FILE.meta.json beside it.",
 )
 @click.option(
     "--json",
@@ -172,15 +174,35 @@ def export_friction_command(
     if isinstance(result, FrictionExport):
         _print_export(result, form, out_file, json_file)
     else:
-        _print_map(result, out_file, json_file)
+        _print_map(result, case, out_file, json_file)
     sys.stdout.flush()
+
+
+def _write(
+    case: Case, out: tuple[str | None, bytes], json_file: str | None, document: dict[str, Any]
+) -> None:
+    """``--out`` (a CSV with its provenance in FILE.meta.json) and ``--json``, put together.
+
+    Written through :func:`~ballscrew.cli.common.write_outputs`: all of them in place, or
+    none (a run stopped on the way leaves the earlier ones as they were).
+    """
+    from ..report.outputs import json_document, json_text, provenance
+
+    out_file, data = out
+    files: list[tuple[str, str | None, bytes]] = [("--out", out_file, data)]
+    if out_file and out_file != "-" and out_file.lower().endswith(".csv"):
+        meta = json_text([], provenance(case, {}, ["ballscrew", *sys.argv[1:]]))
+        files.append(("--out", out_file + ".meta.json", meta.encode("utf-8")))
+    if json_file:
+        text = json_document({"ballscrew": __version__, **document})
+        files.append(("--json", json_file, text.encode("utf-8")))
+    write_outputs(files)
 
 
 def _print_export(
     result: FrictionExport, form: str, out_file: str | None, json_file: str | None
 ) -> None:
     """The fitted forms' tables and notes; the CSV and the JSON."""
-    from ..io.files import atomic_write
     from ..report.outputs import csv_text
 
     console = stdout("-" if "-" in (out_file, json_file) else None)
@@ -191,11 +213,8 @@ def _print_export(
     if form == "table":
         click.echo(f"lookup table: {len(result.rows)} rows over {len(result.temperatures)} "
                    "temperature(s)", err="-" in (out_file, json_file))  # fmt: skip
-    if out_file:
-        with writing("--out", out_file):
-            atomic_write(Path(out_file), csv_text(result.rows).encode("utf-8"))
-    if json_file:
-        write_result(json_file, result.as_dict())
+    data = csv_text(result.rows).encode("utf-8") if out_file else b""
+    _write(result.case, (out_file, data), json_file, result.as_dict())
 
 
 def _print_fit(console: Console, result: FrictionExport, temp: float, fitted: FrictionForm) -> None:
@@ -236,11 +255,11 @@ def _print_fit(console: Console, result: FrictionExport, temp: float, fitted: Fr
         click.echo(f"note: {note}", err=True)
 
 
-def _print_map(m: FrictionMap, out_file: str | None, json_file: str | None) -> None:
+def _print_map(m: FrictionMap, case: Case, out_file: str | None, json_file: str | None) -> None:
     """``export-friction --form load-map``: the compact form's table, the notes and the file."""
     import numpy as np
 
-    from ..report.friction_files import write_map
+    from ..report.friction_files import map_file
 
     console = stdout("-" if "-" in (out_file, json_file) else None)
     fit = m.form.as_drive_dict(m.lead, m.gear_ratio)
@@ -262,13 +281,10 @@ def _print_map(m: FrictionMap, out_file: str | None, json_file: str | None) -> N
                    "(give --axial-load, e.g. '-4..4:9 kN')", err=True)  # fmt: skip
     for note in m.notes:
         click.echo(f"note: {note}", err=True)
-    if out_file:
-        with writing("--out", out_file):
-            notes = write_map(m, Path(out_file), __version__)
-        for note in notes:
-            click.echo(f"note: {note}", err=True)
-    if json_file:
-        write_result(json_file, m.as_dict())
+    data, notes = map_file(m, Path(out_file), __version__) if out_file else (b"", [])
+    for note in notes:
+        click.echo(f"note: {note}", err=True)
+    _write(case, (out_file, data), json_file, m.as_dict())
 
 
 # --- the controllers' tables: --form lincurve | frict-comp | charcurve ----------------------
@@ -294,7 +310,6 @@ def write_controller_table(
     """Compute the table, print it with its error, write the controller's file and the JSON."""
     from .._version import __version__
     from ..io.case import load_case
-    from ..io.files import atomic_write
     from ..io.units import Reading, parse_range, parse_speed_range, to_si
     from ..report.controller_tables import (
         LINCURVE_MARK,
@@ -302,7 +317,6 @@ def write_controller_table(
         FileOptions,
         merge_lincurve,
     )
-    from ..report.outputs import json_document
     from ..servo.tables import DriveUnit, controller_table
 
     if args.append and target != "lincurve":
@@ -358,6 +372,7 @@ def write_controller_table(
     tab = result.table
     console.print(f"interpolation error against the model over +-{num(top * 1e3)} mm/s: RMS "
                   f"{tab.rms_error:.3g} N, largest {tab.max_error:.3g} N")  # fmt: skip
+    text = ""
     if out_file:
         text = TABLE_WRITERS[target](result, __version__, options)
         path = Path(out_file)
@@ -367,8 +382,6 @@ def write_controller_table(
             text = merge_lincurve(old, text, __version__, out_file)
             if f"{LINCURVE_MARK}{options.instance} " in old:
                 click.echo(f"note: {out_file}: the table of {options.instance} replaced", err=True)
-        with writing("--out", out_file):
-            atomic_write(path, text.encode("utf-8"))
-    if json_file:
-        write_json(json_file, json_document({"ballscrew": __version__, **result.as_dict()}))
+    # The controller's file and the JSON are put in place together, or neither.
+    _write(case, (out_file, text.encode("utf-8")), json_file, result.as_dict())
     sys.stdout.flush()

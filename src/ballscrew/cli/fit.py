@@ -2,13 +2,10 @@
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import click
 from rich.table import Table
 
 from .._version import __version__
-from ..io.files import atomic_folder
 from ..io.numbers import text as num
 from .common import (
     folder_option,
@@ -16,8 +13,7 @@ from .common import (
     own_case_option,
     require_case,
     stdout,
-    write_json,
-    writing,
+    write_outputs,
 )
 
 __all__ = ["fit_command"]
@@ -111,14 +107,14 @@ def fit_command(
         click.echo("warning: the fit is absurd (above): its intervals are unreliable", err=True)
     payload = {"ballscrew": __version__, "case": case.title, "measured": measured.source,
                **result.as_dict()}  # fmt: skip
-    if out_dir:
-        from ..report.fit import write_fit_report
+    from ..report.fit import write_fit_report
+    from ..report.outputs import json_document
 
-        with writing("--out", out_dir), atomic_folder(Path(out_dir)) as folder:
-            files = write_fit_report(folder, case, result, payload)
-        click.echo(f"fit: {Path(out_dir) / 'report.html'} and {Path(out_dir) / 'fitted-case.toml'}"
-                   f" ({len(files)} files)", err=True)  # fmt: skip
-    if json_file:
-        from ..report.outputs import json_document
-
-        write_json(json_file, json_document(payload))
+    # The report (with the fitted case) and the JSON are put in place together, or neither.
+    write_outputs(
+        [("--json", json_file, json_document(payload).encode("utf-8") if json_file else b"")],
+        (out_dir, lambda folder: write_fit_report(folder, case, result, payload)),
+        lambda folder, count: (
+            f"fit: {folder / 'report.html'} and {folder / 'fitted-case.toml'} ({count} files)"
+        ),
+    )

@@ -10,7 +10,14 @@ import click
 from rich.table import Table
 
 from ..io.numbers import text as num
-from .common import json_option, own_case_option, require_case, stdout, write_result, writing
+from .common import (
+    json_option,
+    own_case_option,
+    require_case,
+    result_document,
+    stdout,
+    write_outputs,
+)
 
 __all__ = ["monitor_command"]
 
@@ -45,7 +52,6 @@ def monitor_command(
     from ..errors import BallScrewInputError
     from ..fit.monitor import run_monitor
     from ..io.case import load_case
-    from ..io.files import atomic_write
     from ..io.series import read_series
     from ..report.plotting import figure_bytes
 
@@ -78,12 +84,16 @@ def monitor_command(
                       f"{hours(r.crossing_low)} to {hours(r.crossing_high)}")  # fmt: skip
     for note in r.notes:
         click.echo(f"note: {note}", err=True)
+    figure = b""
     if plot_file:
         from ..report.monitor import monitor_figure
 
-        path = Path(plot_file)
-        with writing("--plot", plot_file):
-            atomic_write(path, figure_bytes(monitor_figure(r), path.suffix.lower()[1:]))
-    if json_file:
-        write_result(json_file, r.as_dict())
+        figure = figure_bytes(monitor_figure(r), Path(plot_file).suffix.lower()[1:])
+    # The figure and the JSON are put in place together, or neither.
+    write_outputs(
+        [
+            ("--plot", plot_file, figure),
+            ("--json", json_file, result_document(r.as_dict()) if json_file else b""),
+        ]
+    )
     sys.stdout.flush()

@@ -13,7 +13,7 @@ from rich.table import Table
 
 from ..io.extras import require
 from ..io.numbers import text as num
-from .common import file_option, folder_only, progress, stdout, write_json, writing
+from .common import file_option, folder_only, progress, stdout, write_outputs, writing
 
 __all__ = ["sweep_command"]
 
@@ -87,19 +87,17 @@ def _sobol_table(model: str, s: Any) -> Table:
     return table
 
 
-def _figures(out: Path, report: Any) -> list[Path]:
-    """The sensitivity ranking figure of each model, beside the store."""
-    from ..io.files import atomic_write
+def _figures(out: Path, report: Any) -> list[tuple[Path, bytes]]:
+    """The sensitivity ranking figure of each model, to be written beside the store."""
     from ..report.plotting import figure_bytes, sensitivity_figure
 
-    written = []
+    drawn = []
     for model, s in report.sobol.items():
         fig = sensitivity_figure(s, f"Share of the torque variance: {model}")
         for kind in ("png", "svg"):
             path = out.parent / f"{out.name}.sensitivity-{model}.{kind}"
-            atomic_write(path, figure_bytes(fig, kind))
-            written.append(path)
-    return written
+            drawn.append((path, figure_bytes(fig, kind)))
+    return drawn
 
 
 @click.command(name="sweep")
@@ -190,14 +188,18 @@ def sweep_command(
         console_out.print(_percentile_table(report.percentiles))
     for model, s in report.sobol.items():
         console_out.print(_sobol_table(model, s))
-    with writing("--out", out):
-        figures = _figures(target, report)
+    drawn = _figures(target, report)
+    summary = json.dumps(report.as_dict(), indent=2, ensure_ascii=False) + "\n"
+    # The figures and the JSON are put in place together, or none of them (the store,
+    # which a run can resume, is swapped in by run_sweep when its last chunk is written).
+    write_outputs(
+        [("--out", str(path), data) for path, data in drawn]
+        + [("--json", json_file, summary.encode("utf-8") if json_file else b"")]
+    )
     for line in report.issues:  # "warning: ..." or, for routine ranges, "note: ..."
         click.echo(line, err=True)
-    shown = _store_line(report, figures)
+    shown = _store_line(report, [path for path, _ in drawn])
     click.echo(f"store: {target} {shown}", err=json_file == "-")
-    if json_file is not None:
-        write_json(json_file, json.dumps(report.as_dict(), indent=2, ensure_ascii=False) + "\n")
 
 
 def _store_line(report: Any, figures: list[Path]) -> str:

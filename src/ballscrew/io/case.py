@@ -97,6 +97,10 @@ MAX_TOML_CHARS = 1_000_000
 """The longest TOML text read (a case or sweep file is a few kB)."""
 MAX_TOML_DEPTH = 32
 """The deepest nesting of tables and arrays, and the most parts of a dotted key."""
+MAX_PRETENSION_RISE = 30.0
+"""The largest ``check.pretension_temperature`` [K]: catalogues pre-tension a screw for a
+rise of a few kelvin; 30 K stresses a steel shaft by E alpha dT = 210 GPa x 11.5e-6/K x
+30 K = 72 MPa, and a value of hundreds is an absolute temperature typed for a rise."""
 _STRINGS_AND_COMMENTS = re.compile(
     r""""{3}[\s\S]*?"{3}|'{3}[\s\S]*?'{3}|"(?:[^"\\\n]|\\.)*"|'[^'\n]*'|#[^\n]*"""
 )
@@ -930,10 +934,15 @@ def _check(data: CaseFile, si: Callable[[str, str, Any, str], float]) -> dict[st
             "a factor from 1 to 3 (THK A15-40: 1.0 to 1.2 smooth, 1.2 to 1.5 normal running, "
             "1.5 to 3 with impact or vibration)",
         )  # fmt: skip
-    if not (math.isfinite(out["pretension_temperature"]) and out["pretension_temperature"] >= 0):
+    rise = out["pretension_temperature"]
+    if not (math.isfinite(rise) and 0.0 <= rise <= MAX_PRETENSION_RISE):
         raise BallScrewInputError(
-            "check.pretension_temperature", c.pretension_temperature, "a temperature rise >= 0 K"
-        )
+            "check.pretension_temperature", c.pretension_temperature,
+            f"a temperature rise from 0 to {MAX_PRETENSION_RISE:g} K (pre-tension is set for "
+            "a rise of a few K; 30 K already stresses the shaft by E alpha dT = 72 MPa"
+            + ("; a temperature in K is absolute: a rise of 3 K is '3 K' or '3 degC')"
+               if rise > 200.0 else ")"),
+        )  # fmt: skip
     if c.accuracy_grade is not None:
         grade = c.accuracy_grade.strip().upper()
         if grade not in TRAVEL_VARIATION_300:

@@ -221,9 +221,10 @@ def _screw_speed(
     else:
         speed = np.asarray(to_si_array(field, numbers, speed_unit, "rad/s"))
     if np.any(np.abs(speed) > 1e5):
+        k = int(np.argmax(np.abs(speed)))  # named as typed, in the column's unit
         raise BallScrewInputError(
             f"{source}: column '{header[columns['speed'][0]].strip()}'",
-            float(np.max(np.abs(speed))),
+            f"{numbers[k]:g} {speed_unit} (data row {k + 1})",
             "speeds below 1e5 rad/s (about 1e6 rpm)",
         )
     return speed

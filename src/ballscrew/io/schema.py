@@ -566,7 +566,7 @@ class CheckSection(BaseModel):
         "0 K",
         "temperature difference",
         "temperature rise that the screw's pre-tension absorbs (fixed-fixed mounting; 0: none; "
-        "a rise: '3 degC' is read as 3 K)",
+        "a rise: '3 degC' is read as 3 K; at most 30 K)",
         "3 K",
         si="delta_degC",
     )

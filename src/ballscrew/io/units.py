@@ -857,11 +857,13 @@ def _value_si(
     result = _finite(field, text, float(_convert(field, text, number, unit_text, unit, notes)))
     if unit == "degC" and not TEMPERATURE_RANGE[0] <= result <= TEMPERATURE_RANGE[1]:
         low, high = TEMPERATURE_RANGE
+        kelvin = unit_text.strip().lower() in ("k", "kelvin", "kelvins")
         raise BallScrewInputError(
             field, text,
             f"a temperature from {low:g} to {high:g} degC, where a machine, its screw and its "
-            f"oil can be (read as {result:.6g} degC; a temperature in K is absolute: "
-            "'20 K' is -253 degC, write '20 degC')",
+            f"oil can be (read as {result:.6g} degC"
+            + ("; a temperature in K is absolute: '20 K' is -253 degC, write '20 degC')"
+               if kelvin else ")"),
         )  # fmt: skip
     return result
 

@@ -667,6 +667,7 @@ def run_program(
     program: Program | str,
     *,
     max_blocks: int | None = None,
+    max_samples: int | None = None,
     progress: Callable[[str, int, int], None] | None = None,
 ) -> ProgramResult:
     """Every linear axis of ``machine`` through ``program`` (module docstring).
@@ -679,6 +680,10 @@ def run_program(
         The program, read or as text.
     max_blocks : int, optional
         Refuse longer programs (the web page's bound).
+    max_samples : int, optional
+        Refuse a program of more samples (default: the planner's
+        :data:`~ballscrew.program.planner.MAX_SAMPLES`), by its bound before planning,
+        else by its count before sampling (:func:`~ballscrew.program.planner.plan`).
     progress : callable, optional
         ``progress(stage, done, total)`` while the blocks are planned.
 
@@ -697,6 +702,7 @@ def run_program(
         program,
         _limits(machine, program),
         None if progress is None else lambda d, n: progress("plan", d, n),
+        **({} if max_samples is None else {"max_samples": max_samples}),
     )
     _arc_travel(machine, program, motion)
     axes: dict[str, AxisResult] = {}

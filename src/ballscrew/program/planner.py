@@ -56,7 +56,7 @@ import numpy as np
 from ..errors import BallScrewInputError, FloatArray
 from .gcode import ARC, DWELL, RAPID, Program
 
-__all__ = ["Limits", "Motion", "at_rest", "plan", "speed_change_distance"]
+__all__ = ["Limits", "Motion", "at_rest", "least_samples", "plan", "speed_change_distance"]
 
 ARC_STEP = math.radians(5.0)
 """Largest angle between two samples on an arc [rad]."""
@@ -311,37 +311,28 @@ def _junctions(program: Program, g: dict[str, FloatArray], v: FloatArray, lim: L
     return vj
 
 
-def plan(program: Program, limits: Limits, progress: object = None) -> Motion:
+def plan(
+    program: Program, limits: Limits, progress: object = None, max_samples: int = MAX_SAMPLES
+) -> Motion:
     """Plan the program's motion and sample it (module docstring).
 
     ``progress``, when given, is called as ``progress(done, total)`` while
-    the blocks' profiles are computed.
+    the blocks' profiles are computed. A program of more than ``max_samples``
+    samples is refused: before its blocks are planned when :func:`least_samples`
+    already passes the bound, else once the plan gives the exact count, before
+    a sample is made.
     """
-    from ruckig import InputParameter, Result, Ruckig, RuckigError, Trajectory
-
     n = program.size
     if n == 0:
         return at_rest(program)
     g = _geometry(program)
     length = g["length"]
     v, a, j = _block_limits(program, g, limits)
-    vj = _junctions(program, g, v, limits)
-    entry = vj.copy()
-    exit_ = np.append(vj[1:], 0.0)
+    en, ex = _look_ahead(program, length, a, j, _junctions(program, g, v, limits))
+    _check_least(program, length, v, a, j, (en, ex), limits.sample_time, max_samples)
+    from ruckig import InputParameter, Result, Ruckig, RuckigError, Trajectory
+
     lengths, accs, jerks = length.tolist(), a.tolist(), j.tolist()
-    en, ex = entry.tolist(), exit_.tolist()
-    for k in range(n - 1, -1, -1):  # backward: every block can brake to its exit speed
-        if program.kind[k] == DWELL:
-            en[k] = 0.0
-            continue
-        en[k] = min(en[k], _reach(ex[k], lengths[k], accs[k], jerks[k]) * MARGIN)
-        if k:
-            ex[k - 1] = min(ex[k - 1], en[k])
-    for k in range(n):  # forward: every block can reach its exit speed
-        if program.kind[k] != DWELL:
-            ex[k] = min(ex[k], _reach(en[k], lengths[k], accs[k], jerks[k]) * MARGIN)
-        if k + 1 < n:
-            en[k + 1] = min(en[k + 1], ex[k])
     otg, inp, traj = Ruckig(1), InputParameter(1), Trajectory(1)
     inp.current_acceleration = [0.0]
     inp.target_acceleration = [0.0]
@@ -388,7 +379,8 @@ def plan(program: Program, limits: Limits, progress: object = None) -> Motion:
         progress(n, n)  # type: ignore[operator]
     if not float(phases[:, :, 0].sum()) > 0.0:
         return at_rest(program)
-    return _sample(program, g, phases, limits.sample_time, np.array(en), np.array(ex), v)
+    return _sample(program, g, phases, limits.sample_time, np.array(en), np.array(ex), v,
+                   max_samples)  # fmt: skip
 
 
 def at_rest(program: Program) -> Motion:
@@ -412,7 +404,7 @@ def at_rest(program: Program) -> Motion:
 
 def _sample(
     program: Program, g: dict[str, FloatArray], phases: FloatArray, sample_time: float,
-    entry: FloatArray, exit_: FloatArray, vmax: FloatArray,
+    entry: FloatArray, exit_: FloatArray, vmax: FloatArray, max_samples: int = MAX_SAMPLES,
 ) -> Motion:  # fmt: skip
     """Sample every phase exactly and map the path to the axes.
 
@@ -441,14 +433,10 @@ def _sample(
         count = np.where(arc[:, None] & (dur > 0.0), np.maximum(count, need), count)
     flat = count.ravel()
     total = int(flat.sum())
-    if total > MAX_SAMPLES:
+    if total > max_samples:
         moving = float(dur[program.kind != DWELL].sum())
-        raise BallScrewInputError(
-            "program", f"about {total:.3g} samples ({moving:.4g} s of motion, a sample at "
-            f"most every {sample_time * 1e3:g} ms)",
-            f"at most {MAX_SAMPLES:.3g} samples (about a kilobyte each): a longer "
-            "machine.sample_time, or the program in parts",
-        )  # fmt: skip
+        _too_many(f"about {total:.3g} samples ({moving:.4g} s of motion", sample_time,
+                  max_samples, "counted from the plan")  # fmt: skip
     phase_of = np.repeat(np.arange(flat.size), flat)
     first = np.cumsum(flat) - flat
     k_in = np.arange(total) - np.repeat(first, flat)
@@ -580,3 +568,120 @@ def _axes(
         jerk[m, ib] = r * (cos * w * j1 - 3 * sin * w**2 * v1 * a1 - cos * w**3 * v1**3)
         jerk[m, inn] = hs * j1
     return pos, vel, acc, jerk
+
+
+def _look_ahead(
+    program: Program, length: FloatArray, a: FloatArray, j: FloatArray, vj: FloatArray
+) -> tuple[list[float], list[float]]:
+    """Each block's entry and exit speed after the look-ahead's two passes (module docstring)."""
+    n = program.size
+    lengths, accs, jerks = length.tolist(), a.tolist(), j.tolist()
+    en, ex = vj.tolist(), np.append(vj[1:], 0.0).tolist()
+    for k in range(n - 1, -1, -1):  # backward: every block can brake to its exit speed
+        if program.kind[k] == DWELL:
+            en[k] = 0.0
+            continue
+        en[k] = min(en[k], _reach(ex[k], lengths[k], accs[k], jerks[k]) * MARGIN)
+        if k:
+            ex[k - 1] = min(ex[k - 1], en[k])
+    for k in range(n):  # forward: every block can reach its exit speed
+        if program.kind[k] != DWELL:
+            ex[k] = min(ex[k], _reach(en[k], lengths[k], accs[k], jerks[k]) * MARGIN)
+        if k + 1 < n:
+            en[k + 1] = min(en[k + 1], ex[k])
+    return en, ex
+
+
+def _change_time(dv: float, a: float, j: float) -> float:
+    """Shortest time of a jerk-limited speed change by ``dv`` from rest acceleration to rest [s].
+
+    ``dv/a + a/j`` when the acceleration reaches ``a`` (``dv >= a^2/j``), else ``2 sqrt(dv/j)``.
+    """
+    dv = abs(dv)
+    return dv / a + a / j if dv >= a * a / j else 2.0 * math.sqrt(dv / j)
+
+
+def _least(
+    program: Program, length: FloatArray, v: FloatArray, a: FloatArray, j: FloatArray,
+    speeds: tuple[list[float], list[float]], sample_time: float,
+) -> tuple[float, int]:  # fmt: skip
+    """:func:`least_samples` from the blocks' limits and look-ahead speeds."""
+    en, ex = speeds
+    seconds, busy, ends = 0.0, 0.0, 0
+    kinds = program.kind.tolist()
+    for k, (size, top, acc, jerk) in enumerate(
+        zip(length.tolist(), v.tolist(), a.tolist(), j.tolist(), strict=True)
+    ):
+        if kinds[k] == DWELL:
+            pause = float(program.dwell[k])
+            seconds += pause
+            ends += pause > 0.0
+            continue
+        if not (size > 0.0 and top > 0.0 and acc > 0.0 and jerk > 0.0):
+            continue
+        if not all(map(math.isfinite, (size, acc, jerk))):
+            continue
+        # The speed within the block stays below what it reaches from either end.
+        peak = min(top, _reach(en[k], size, acc, jerk), _reach(ex[k], size, acc, jerk))
+        least = size / peak
+        seconds += least
+        ends += 1
+        if kinds[k] == ARC or peak < top * (1.0 - 1e-9):
+            busy += least  # an arc is sampled throughout; a block short of its top never cruises
+        else:  # the speed changes to the top and back
+            busy += _change_time(top - en[k], acc, jerk) + _change_time(top - ex[k], acc, jerk)
+    return seconds, int(busy / sample_time) + ends
+
+
+def least_samples(program: Program, limits: Limits) -> tuple[float, int]:
+    r"""A lower bound of the program's time [s] and of its samples, before any block is planned.
+
+    From each block's limits and its look-ahead speeds (steps 1 to 3 of the module
+    docstring), without ruckig: a block's speed stays below the least of its top speed
+    and what it can reach over its length from its entry speed and from its exit speed
+    (the look-ahead's speed change, inverted), so the block takes at least its length
+    over that speed. A block that cannot reach its top speed never cruises, and a line's
+    speed change to the top and back takes at least the jerk-limited change's time: at
+    least one sample every ``limits.sample_time`` of those, and one at each block's end.
+    The plan itself (:func:`plan`) counts exactly; this bound lets a program far past
+    :data:`MAX_SAMPLES` be refused at once. It is a bound, not an estimate of the time: a
+    jerk of 1e-9 m/s³ stretches a 700 mm move from rest to rest over
+    :math:`(32 L/j)^{1/3}` = 2819 s, of which it sees 888 s (the peak speed over the
+    whole length, where the move reaches it only at its middle).
+
+    >>> import numpy as np
+    >>> from ballscrew.program.gcode import read_program
+    >>> prog = read_program("G21 G90\nG1 X700 F3000\nM30\n")
+    >>> slow = Limits(np.full(3, 0.5), np.full(3, 3.0), np.array([1e-9, 60.0, 60.0]),
+    ...               rapid_feed=0.5, path_tolerance=2e-5)
+    >>> seconds, samples = least_samples(prog, slow)
+    >>> round(seconds), samples
+    (888, 177581)
+    """
+    n = program.size
+    if n == 0:
+        return 0.0, 1
+    g = _geometry(program)
+    v, a, j = _block_limits(program, g, limits)
+    speeds = _look_ahead(program, g["length"], a, j, _junctions(program, g, v, limits))
+    return _least(program, g["length"], v, a, j, speeds, limits.sample_time)
+
+
+def _check_least(
+    program: Program, length: FloatArray, v: FloatArray, a: FloatArray, j: FloatArray,
+    speeds: tuple[list[float], list[float]], sample_time: float, max_samples: int,
+) -> None:  # fmt: skip
+    """Refuse a program whose :func:`least_samples` already passes ``max_samples``."""
+    seconds, samples = _least(program, length, v, a, j, speeds, sample_time)
+    if samples > max_samples:
+        _too_many(f"at least {samples:.3g} samples (at least {seconds:.4g} s", sample_time,
+                  max_samples, "a lower bound estimated before planning")  # fmt: skip
+
+
+def _too_many(estimate: str, sample_time: float, max_samples: int, how: str) -> None:
+    raise BallScrewInputError(
+        "program", f"{estimate}, a sample at most every {sample_time * 1e3:g} ms)",
+        f"at most {max_samples:.3g} samples (about a kilobyte each; {how}): a longer "
+        "machine.sample_time, lower feeds or the program in parts; raise the axes' "
+        "max_acceleration and max_jerk if they are mistyped",
+    )  # fmt: skip

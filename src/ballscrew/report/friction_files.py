@@ -34,8 +34,8 @@ from .friction_fmu import fmu_build
 from .outputs import csv_text
 
 __all__ = [
-    "FORMATS", "MAP_DIGITS", "c_header", "csv_file", "fmu_file", "mat_file", "modelica_file",
-    "write_map",
+    "FORMATS", "MAP_DIGITS", "c_header", "csv_file", "fmu_file", "map_file", "mat_file",
+    "modelica_file", "write_map",
 ]  # fmt: skip
 
 CONVENTIONS = (
@@ -215,18 +215,26 @@ FORMATS: dict[str, Callable[[FrictionMap, str], bytes]] = {
 """File suffix -> writer."""
 
 
-def write_map(m: FrictionMap, path: Path, version: str) -> list[str]:
-    """Write the map in the format its suffix names (:data:`FORMATS`), atomically.
+def map_file(m: FrictionMap, path: Path, version: str) -> tuple[bytes, list[str]]:
+    """The map's bytes in the format ``path``'s suffix names (:data:`FORMATS`), and notes.
 
-    Returns the notes for the user (for an FMU: whether it carries a binary, built by
-    which compiler).
+    The notes are for the user (for an FMU: whether it carries a binary, built by which
+    compiler).
     """
     writer = FORMATS.get(path.suffix.lower())
     if writer is None:
         raise BallScrewInputError("--out", str(path), "a file ending in " + ", ".join(FORMATS))
     if path.suffix.lower() == ".fmu":
         build = fmu_build(m, version, c_header(m, version))
-        atomic_write(path, build.data)
-        return [f"{path.name}: {build.note}"]
-    atomic_write(path, writer(m, version))
-    return []
+        return build.data, [f"{path.name}: {build.note}"]
+    return writer(m, version), []
+
+
+def write_map(m: FrictionMap, path: Path, version: str) -> list[str]:
+    """Write the map in the format its suffix names (:data:`FORMATS`), atomically.
+
+    Returns the notes of :func:`map_file`.
+    """
+    data, notes = map_file(m, path, version)
+    atomic_write(path, data)
+    return notes

@@ -4,8 +4,12 @@ The request is ``{"program": "G-code text", "machine": "TOML text" (optional)}``
 Without a machine, the bundled example machine runs it
 (:func:`ballscrew.io.machine.example_machine_text`). A machine sent here must
 give every case inline: nothing here opens a file. The program is bounded to
-:data:`MAX_BLOCKS` blocks and :data:`MAX_SECONDS` of motion, so that it stays
-within the server's time budget. The answer is the summary the command line
+:data:`MAX_BLOCKS` blocks, :data:`MAX_SECONDS` of motion at its feeds and
+:data:`MAX_SAMPLES` samples, so that it stays within the server's time budget and a
+worker's memory: the samples are bounded by the planner's estimate before any block
+is planned (:func:`ballscrew.program.planner.least_samples`; an axis's jerk mistyped as
+``1e-9 m/s^3`` stretches a move over hours), then by their count before any is made.
+Each refusal is a 422 naming the bound. The answer is the summary the command line
 prints: per axis the energies, friction share, torques against the motor,
 temperature, and the reversals with their load directions.
 """
@@ -14,18 +18,24 @@ from __future__ import annotations
 
 from typing import Any
 
+from ..errors import BallScrewInputError
 from ..io.extras import MissingExtraError
 from ..io.machine import example_machine_text, parse_machine
 from ..program import read_program, run_program
+from ..program.planner import MAX_SAMPLES as PLAN_MAX_SAMPLES
 from ..report.outputs import finite_or_null
 from .inputs import ApiError, Limits
 
-__all__ = ["MAX_BLOCKS", "MAX_SECONDS", "run"]
+__all__ = ["MAX_BLOCKS", "MAX_SAMPLES", "MAX_SECONDS", "run"]
 
 MAX_BLOCKS = 500
 """The most blocks of motion or dwell a request's program may hold."""
 MAX_SECONDS = 600.0
-"""The longest program a request may run [s] (at 5 ms samples: up to 120 000 samples)."""
+"""The longest program a request may run at its feeds [s]."""
+MAX_SAMPLES = 120_000
+"""The most samples a request's program may take: :data:`MAX_SECONDS` at the example
+machine's 5 ms (about 120 MB and a few seconds of a worker; the command line takes
+:data:`ballscrew.program.planner.MAX_SAMPLES`)."""
 
 
 def _text(payload: dict[str, Any], key: str, required: bool) -> str | None:
@@ -56,9 +66,18 @@ def run(payload: dict[str, Any], limits: Limits) -> dict[str, Any]:
             f"{MAX_SECONDS:.0f} s (the command line has no bound)", "program",
         )  # fmt: skip
     try:
-        r = run_program(machine, program)
+        r = run_program(machine, program, max_samples=MAX_SAMPLES)
     except MissingExtraError as exc:  # the server runs without the program extra
         raise ApiError(501, str(exc)) from None
+    except BallScrewInputError as exc:
+        if exc.field != "program" or "samples" not in str(exc.value):
+            raise
+        raise ApiError(
+            422,
+            f"program: {exc.value}; this server runs at most {MAX_SAMPLES:,} samples "
+            f"(the command line {PLAN_MAX_SAMPLES:,}): {exc.allowed.split('): ', 1)[-1]}",
+            "program",
+        ) from None
     doc = r.as_dict()
     doc.pop("energy_per_block_J")
     for axis in doc["axes"].values():
@@ -68,7 +87,7 @@ def run(payload: dict[str, Any], limits: Limits) -> dict[str, Any]:
         axis["load_directions"] = {k: kinds.count(k) for k in sorted(set(kinds))}
         play = [v["lost_motion_um"] for v in reversals]
         axis["lost_motion_um"] = [min(play), max(play)] if play else None
-    doc["limits"] = {"blocks": MAX_BLOCKS, "seconds": MAX_SECONDS}
+    doc["limits"] = {"blocks": MAX_BLOCKS, "seconds": MAX_SECONDS, "samples": MAX_SAMPLES}
     result: dict[str, Any] = finite_or_null(doc)
     return result
 
