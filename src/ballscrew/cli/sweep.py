@@ -90,13 +90,13 @@ def _sobol_table(model: str, s: Any) -> Table:
 def _figures(out: Path, report: Any) -> list[tuple[Path, bytes]]:
     """The sensitivity ranking figure of each model, to be written beside the store."""
     from ..report.plotting import figure_bytes, sensitivity_figure
+    from ..sweep.store import figure_path
 
     drawn = []
     for model, s in report.sobol.items():
         fig = sensitivity_figure(s, f"Share of the torque variance: {model}")
         for kind in ("png", "svg"):
-            path = out.parent / f"{out.name}.sensitivity-{model}.{kind}"
-            drawn.append((path, figure_bytes(fig, kind)))
+            drawn.append((figure_path(out, model, kind), figure_bytes(fig, kind)))
     return drawn
 
 
@@ -171,6 +171,7 @@ def sweep_command(
                     sweep_file, target, max_points=max_points, workers=workers,
                     scheduler=scheduler, restart=restart, progress=step,
                     notify=lambda text: console.print(text, highlight=False),
+                    companions=[Path(json_file)] if json_file and json_file != "-" else [],
                 )  # fmt: skip
         except (KeyboardInterrupt, Exception) as exc:
             if not isinstance(exc, KeyboardInterrupt) and not signal_received():
@@ -190,8 +191,10 @@ def sweep_command(
         console_out.print(_sobol_table(model, s))
     drawn = _figures(target, report)
     summary = json.dumps(report.as_dict(), indent=2, ensure_ascii=False) + "\n"
-    # The figures and the JSON are put in place together, or none of them (the store,
-    # which a run can resume, is swapped in by run_sweep when its last chunk is written).
+    # The figures and the JSON are put in place together, or none of them. The store, which
+    # a run can resume, is swapped in by run_sweep when its last chunk is written, and the
+    # earlier run's figures and JSON are moved aside with the store they came from: a run
+    # stopped in between leaves the new store alone, never beside the old figures.
     write_outputs(
         [("--out", str(path), data) for path, data in drawn]
         + [("--json", json_file, summary.encode("utf-8") if json_file else b"")]

@@ -136,6 +136,7 @@ def run_sweep(
     restart: bool = False,
     progress: Callable[[int, int], None] | None = None,
     notify: Callable[[str], None] | None = None,
+    companions: Sequence[Path] = (),
 ) -> SweepReport:
     """Run a sweep into the Zarr store ``out`` (see the module docstring).
 
@@ -160,6 +161,9 @@ def run_sweep(
     notify : callable, optional
         Called with a sentence: the sweep's size, and whether a run is resumed or
         restarted.
+    companions : sequence of Path
+        Files an earlier run wrote from the store it replaces (a summary JSON): moved
+        aside with it, so that the new store never stands beside them.
 
     Raises
     ------
@@ -184,7 +188,8 @@ def run_sweep(
     target.parent.mkdir(parents=True, exist_ok=True)
     try:
         with exclusive_lock(target.parent / f".{target.name}.lock"):
-            return _run(spec, target, workers, scheduler, restart, progress, notify)
+            return _run(spec, target, workers, scheduler, restart, progress, notify,
+                        companions)  # fmt: skip
     except OutputInUseError as exc:
         raise BallScrewInputError(
             "--out",
@@ -202,6 +207,7 @@ def _run(
     restart: bool,
     progress: Callable[[int, int], None] | None,
     notify: Callable[[str], None] | None,
+    companions: Sequence[Path] = (),
 ) -> SweepReport:
     """The sweep, with the lock on its output held: spec -> plan -> chunks -> store."""
     plan = plan_sweep(spec)
@@ -233,7 +239,8 @@ def _run(
     issues = worst_issues(reports.values())
     if store.markers(partial, key) is None:  # the lock makes this impossible, but check
         raise BallScrewInputError("--out", str(target), "a store this run alone wrote")
-    store.finalize(partial, target, {"summary": summary, "validity": list(issues)})
+    store.finalize(partial, target, {"summary": summary, "validity": list(issues)},
+                   companions=companions)  # fmt: skip
     peak: dict[int, int] = {}
     for r in reports.values():
         peak[int(r["pid"])] = max(peak.get(int(r["pid"]), 0), int(r["peak_rss"]))

@@ -14,6 +14,7 @@ computed variables and the closing attributes. It never reads the plan.
 from __future__ import annotations
 
 import contextlib
+import glob
 import json
 import secrets
 import shutil
@@ -187,19 +188,41 @@ def add_variables(partial: Path, variables: dict[str, Any]) -> None:
     )
 
 
-def finalize(partial: Path, out: Path, extra_attrs: dict[str, Any]) -> None:
-    """Consolidate the metadata, rename the store to ``out`` and drop the partial folder."""
+def figure_path(out: Path, model: str, kind: str) -> Path:
+    """Where the sensitivity figure of ``model`` drawn from the store ``out`` is written."""
+    return out.parent / f"{out.name}.sensitivity-{model}.{kind}"
+
+
+def finalize(
+    partial: Path, out: Path, extra_attrs: dict[str, Any], companions: Sequence[Path] = ()
+) -> None:
+    """Consolidate the metadata, rename the store to ``out`` and drop the partial folder.
+
+    The figures an earlier run drew from the store it replaces (:func:`figure_path`) are
+    moved aside with it, and so are the ``companions`` (files written from it, such as a
+    summary JSON), so that a run stopped before it writes its own leaves the new store
+    alone, never beside an earlier run's figures or summary.
+    """
     import zarr
 
     path = store_path(partial)
     group = zarr.open_group(path, mode="r+", zarr_format=FORMAT)
     group.attrs.update(json_safe(extra_attrs))
     zarr.consolidate_metadata(str(path), zarr_format=FORMAT)
-    old = out.parent / f".{out.name}.old-{secrets.token_hex(4)}"
-    moved = swap_in(path, out, aside=old)
+    tag = secrets.token_hex(4)
+    old = out.parent / f".{out.name}.old-{tag}"
+    stale = sorted(out.parent.glob(f"{glob.escape(out.name)}.sensitivity-*"))
+    stale += [p for p in map(Path, companions) if p.is_file() and p not in stale]
+    with deferred_signals():
+        aside = [p.parent / f".{p.name}.old-{tag}" for p in stale]
+        for p, q in zip(stale, aside, strict=True):
+            p.rename(q)
+        moved = swap_in(path, out, aside=old)
     shutil.rmtree(partial, ignore_errors=True)
     if moved:
         shutil.rmtree(old, ignore_errors=True)
+    for q in aside:
+        q.unlink(missing_ok=True)
 
 
 def check_target(out: Path) -> None:
