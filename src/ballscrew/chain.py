@@ -9,9 +9,12 @@ manner of pvlib's ``ModelChain``. A new model is one module in
 
 from __future__ import annotations
 
+import contextlib
+import contextvars
 import math
 import warnings
-from collections.abc import Callable, Collection, Mapping, Sequence
+from collections import OrderedDict
+from collections.abc import Callable, Collection, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any
 
@@ -36,6 +39,7 @@ from .validity import ValidityIssue
 __all__ = [
     "FrictionResult",
     "TorqueTable",
+    "friction_memo",
     "friction_torque",
     "friction_torques",
     "model_named",
@@ -122,6 +126,61 @@ def model_named(name: str) -> ModelSpec:
     return get_model(name)
 
 
+MEMO_SIZE = 16
+"""The most results a :func:`friction_memo` block keeps (the least recently used go first)."""
+
+_MEMO: contextvars.ContextVar[OrderedDict[Any, FrictionResult] | None] = contextvars.ContextVar(
+    "friction_memo", default=None
+)
+
+
+@contextlib.contextmanager
+def friction_memo() -> Iterator[None]:
+    """A block in which :func:`friction_torque` answers a call equal to a recent one from memory.
+
+    A call is equal to an earlier one when its screw, lubricant, model, parameters,
+    options and operating points (values, shapes and types) are: the result is the
+    earlier call's own object, so its numbers are those of a new call to the last bit
+    (the model is deterministic), and its validity warnings are given again as a new
+    call would give them. The arrays of a kept result are read-only. ``ballscrew
+    select`` evaluates its candidates inside one: candidates that differ only in their
+    motor (a motor table) run the same friction calls. The :data:`MEMO_SIZE` most
+    recent results are kept; a call whose parameters cannot be hashed is not kept.
+    """
+    token = _MEMO.set(OrderedDict())
+    try:
+        yield
+    finally:
+        _MEMO.reset(token)
+
+
+def _memo_key(
+    screw: BallScrew, lubricant: Lubricant | str, model: str,
+    points: tuple[npt.ArrayLike, npt.ArrayLike, npt.ArrayLike], options: tuple[Any, ...],
+    parameters: dict[str, Any],
+) -> tuple[Any, ...] | None:  # fmt: skip
+    """The memo's key of a :func:`friction_torque` call; None when it cannot be hashed."""
+    arrays = []
+    for x in points:
+        a = np.asarray(x)
+        if a.dtype == object:
+            return None
+        arrays.append((a.dtype.str, a.shape, a.tobytes()))
+    key = (screw, lubricant, model, options, tuple(sorted(parameters.items())), tuple(arrays))
+    try:
+        hash(key)
+    except TypeError:
+        return None
+    return key
+
+
+def _freeze(result: FrictionResult) -> None:
+    """Make the arrays of a result kept by the memo read-only (shared by every caller)."""
+    for a in (result.total, result.power_loss, result.efficiency, *result.components.values()):
+        if isinstance(a, np.ndarray):
+            a.flags.writeable = False
+
+
 def friction_torque(
     screw: BallScrew,
     lubricant: Lubricant | str,
@@ -190,8 +249,35 @@ def friction_torque(
     >>> [round(float(t), 4) for t in r.total]
     [0.5642, 0.5642]
     """
+    memo = _MEMO.get()
+    key = None
+    if memo is not None:
+        key = _memo_key(screw, lubricant, model, (speed, temperature, axial_load),
+                        (chunk_size, components), parameters)  # fmt: skip
+        if key is not None and key in memo:
+            memo.move_to_end(key)
+            kept_result = memo[key]
+            if warn:
+                _warn(list(kept_result.warnings))
+            return kept_result
+    result = _friction_torque(screw, lubricant, model, (speed, temperature, axial_load),
+                              chunk_size, warn, components, parameters)  # fmt: skip
+    if memo is not None and key is not None:
+        _freeze(result)
+        memo[key] = result
+        while len(memo) > MEMO_SIZE:
+            memo.popitem(last=False)
+    return result
+
+
+def _friction_torque(
+    screw: BallScrew, lubricant: Lubricant | str, model: str,
+    points: tuple[npt.ArrayLike, npt.ArrayLike, npt.ArrayLike], chunk_size: int | None,
+    warn: bool, components: bool, parameters: dict[str, Any],
+) -> FrictionResult:  # fmt: skip
+    """:func:`friction_torque` itself (the memo aside)."""
     lubricant, spec, chunk, (w0, t0, fa0), used = _prepared(
-        screw, lubricant, model, parameters, chunk_size, (speed, temperature, axial_load)
+        screw, lubricant, model, parameters, chunk_size, points
     )
     kept, total, state = _evaluate(
         spec, screw, lubricant, (w0, t0, fa0), chunk, used, parameters, components

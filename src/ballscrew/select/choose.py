@@ -52,7 +52,7 @@ import difflib
 import math
 import time
 import warnings
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -65,6 +65,7 @@ from ..axis.motion import MOVE_KEYS, Profile
 from ..axis.setup import axis_setup
 from ..axis.thermal import SteadyState, steady_temperatures, temperature_histories
 from ..axis.uncertainty import CONFIDENCE
+from ..chain import friction_memo
 from ..errors import BallScrewInputError, BallScrewPlausibilityWarning, FloatArray
 from ..io.case import Case, parse_case
 from ..io.motors import MotorRow
@@ -82,9 +83,14 @@ __all__ = [
     "SelectResult",
     "evaluate",
     "non_dominated",
+    "Progress",
     "parse_confidence",
     "run_select",
 ]
+
+Progress = Callable[[str, int, int], None]
+"""``progress(stage, done, total)``: ``"parse"`` (the candidates' cases read), ``"heat"`` (their
+heat balances solved, counted in balances) and ``"check"`` (the candidates evaluated)."""
 
 OBJECTIVES: dict[str, tuple[str, str, int]] = {
     "energy": ("energy_J", "friction energy per cycle [J]", 1),
@@ -436,8 +442,9 @@ BATCH = 2000
 
 
 def _prepared(
-    found: Sequence[Candidate], profile: Profile, model: str, run_time: float
-) -> list[tuple[Case | None, SteadyState | None]]:
+    found: Sequence[Candidate], profile: Profile, model: str, run_time: float,
+    progress: Progress | None = None,
+) -> list[tuple[Case | None, SteadyState | None]]:  # fmt: skip
     """Each candidate's parsed case and its steady temperature, solved many at a time.
 
     The heat balance of the candidates that share an oil and model parameters is
@@ -449,12 +456,16 @@ def _prepared(
     tolerance of the candidate's own). A
     candidate that does not parse, whose move its screw cannot take, or whose
     balance does not close gets None: :func:`evaluate` then runs it alone and
-    rejects it with its error.
+    rejects it with its error. Candidates that differ only in their motor (a motor
+    table) share one balance: it does not read the motor.
     """
     out: list[tuple[Case | None, SteadyState | None]] = [(None, None)] * len(found)
+    tell = progress or (lambda _stage, _done, _total: None)
     travel = float(np.ptp(profile.position))
     groups: dict[tuple[str, str], list[tuple[int, Case, Any]]] = {}
+    twins: dict[tuple[Any, ...], list[int]] = {}
     for i, c in enumerate(found):
+        tell("parse", i, len(found))
         try:
             case = _parse_candidate(c)
             setup = axis_setup(case.screw, case.axis, case.thermal, travel)
@@ -463,10 +474,21 @@ def _prepared(
             continue
         out[i] = (case, None)
         key = (case.lubricant.name, repr(case.parameters_for(model)))
+        # The heat balance reads the screw, the node and the axis' moving mass and incline
+        # (its loads), never the motor: candidates that differ in their motor alone share it.
+        twin = (key, case.screw, setup.node, dataclasses.replace(setup.axis, motor_inertia=0.0))
+        if twin in twins:
+            twins[twin].append(i)
+            continue
+        twins[twin] = [i]
         groups.setdefault(key, []).append((i, case, setup))
+    tell("parse", len(found), len(found))
+    balanced = 0
     for members in groups.values():
         for start in range(0, len(members), BATCH):
+            tell("heat", balanced, len(twins))
             part = members[start : start + BATCH]
+            balanced += len(part)
             first = part[0][1]
             solved = steady_temperatures(
                 profile, [c.screw for _, c, _ in part], first.lubricant,
@@ -482,6 +504,11 @@ def _prepared(
             for (j, st), history in zip(closed, histories, strict=True):
                 i, case, _ = part[j]
                 out[i] = (case, dataclasses.replace(st, history=history))
+    tell("heat", len(twins), len(twins))
+    for members in twins.values():
+        shared = out[members[0]][1]
+        for i in members[1:]:
+            out[i] = (out[i][0], shared)
     return out
 
 
@@ -643,6 +670,7 @@ def run_select(
     screw_prices: Mapping[str, float] | None = None,
     currency: str = "",
     confidence: float = CONFIDENCE,
+    progress: Progress | None = None,
 ) -> SelectResult:
     """Choose the screw for ``case``'s axis over ``profile`` (module docstring).
 
@@ -679,6 +707,9 @@ def run_select(
     confidence : float
         The confidence a feasible candidate passes with: its P(NOT OK) at most
         ``1 - confidence`` (default 0.95, the check's "OK (95 %)").
+    progress : callable, optional
+        ``progress(stage, done, total)`` as the candidates are read, their heat
+        balances solved and the candidates evaluated (:data:`Progress`).
 
     Raises
     ------
@@ -700,9 +731,10 @@ def run_select(
                            preloads=preloads, oils=list(oils) or [None],
                            default_oil=case.lubricant.name, sources=sources, nuts=nuts,
                            motors=motors, screw_prices=screw_prices)  # fmt: skip
-    batch = _Batch(found, _prepared(found, profile, model, run_time), profile,
+    batch = _Batch(found, _prepared(found, profile, model, run_time, progress), profile,
                    {"model": model, "cycles": cycles, "temperature": temperature,
-                    "run_time": run_time, "move": move, "confidence": confidence})  # fmt: skip
+                    "run_time": run_time, "move": move, "confidence": confidence},
+                   progress)  # fmt: skip
     evaluated = batch.evaluated
     inputs = {"case": case.title, "model": model, "cycles": cycles, "temperature": temperature,
               "run_time_s": run_time, "move": dict(move or {}), "objectives": list(chosen),
@@ -765,13 +797,19 @@ class _Batch:
 
     def __init__(
         self, found: Sequence[Candidate], ready: Sequence[Any], profile: Profile,
-        options: dict[str, Any],
+        options: dict[str, Any], progress: Progress | None = None,
     ) -> None:  # fmt: skip
         self.found, self.ready, self.profile, self.options = found, ready, profile, options
-        self.evaluated = [
-            evaluate(c, profile, parsed=parsed, steady=steady, **options)[0]
-            for c, (parsed, steady) in zip(found, ready, strict=True)
-        ]
+        tell = progress or (lambda _stage, _done, _total: None)
+        self.evaluated = []
+        # Candidates that differ only in their motor make the same friction calls (the
+        # cycle's, the creep drag's): the memo answers the repeats with the first's results.
+        with friction_memo():
+            for i, (c, (parsed, steady)) in enumerate(zip(found, ready, strict=True)):
+                tell("check", i, len(found))
+                self.evaluated.append(evaluate(c, profile, parsed=parsed, steady=steady,
+                                               **options)[0])  # fmt: skip
+        tell("check", len(found), len(found))
         self.alone = {i for i, (_, steady) in enumerate(ready) if steady is None}
         self.again(self.near())
 
