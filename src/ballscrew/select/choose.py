@@ -80,10 +80,10 @@ __all__ = [
     "Evaluated",
     "NoFeasibleCandidateError",
     "NoneFeasible",
+    "Progress",
     "SelectResult",
     "evaluate",
     "non_dominated",
-    "Progress",
     "parse_confidence",
     "run_select",
 ]
