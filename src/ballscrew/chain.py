@@ -30,7 +30,7 @@ from .errors import (
 )
 from .friction import MODELS, ModelSpec, get_model
 from .geometry import BallScrew, ScrewArray
-from .helix import JIT_LOAD_POINTS, load_kernel
+from .helix import JIT_LOAD_POINTS, kernel_scope, load_kernel
 from .kinematics import rad_s_to_rpm
 from .lubricant import Lubricant
 from .state import OperatingState, operating_points, operating_state
@@ -39,6 +39,7 @@ from .validity import ValidityIssue
 __all__ = [
     "FrictionResult",
     "TorqueTable",
+    "fill_friction_memo",
     "friction_memo",
     "friction_torque",
     "friction_torques",
@@ -132,10 +133,13 @@ MEMO_SIZE = 16
 _MEMO: contextvars.ContextVar[OrderedDict[Any, FrictionResult] | None] = contextvars.ContextVar(
     "friction_memo", default=None
 )
+_MEMO_SIZE: contextvars.ContextVar[int] = contextvars.ContextVar(
+    "friction_memo_size", default=MEMO_SIZE
+)
 
 
 @contextlib.contextmanager
-def friction_memo() -> Iterator[None]:
+def friction_memo(size: int = MEMO_SIZE) -> Iterator[None]:
     """A block in which :func:`friction_torque` answers a call equal to a recent one from memory.
 
     A call is equal to an earlier one when its screw, lubricant, model, parameters,
@@ -144,14 +148,95 @@ def friction_memo() -> Iterator[None]:
     (the model is deterministic), and its validity warnings are given again as a new
     call would give them. The arrays of a kept result are read-only. ``ballscrew
     select`` evaluates its candidates inside one: candidates that differ only in their
-    motor (a motor table) run the same friction calls. The :data:`MEMO_SIZE` most
-    recent results are kept; a call whose parameters cannot be hashed is not kept.
+    motor (a motor table) run the same friction calls. The ``size`` most recent
+    results are kept; a call whose parameters cannot be hashed is not kept.
+    :func:`fill_friction_memo` puts in the results of many screws' calls ahead, from
+    one :func:`friction_torques` call.
     """
     token = _MEMO.set(OrderedDict())
+    _MEMO_SIZE.set(size)
     try:
         yield
     finally:
         _MEMO.reset(token)
+
+
+def fill_friction_memo(
+    screws: Sequence[BallScrew],
+    lubricant: Lubricant | str,
+    points: Sequence[tuple[npt.ArrayLike, npt.ArrayLike, npt.ArrayLike]],
+    *,
+    model: str = "complete",
+    **parameters: Any,
+) -> int:
+    """Put the results of ``friction_torque(screws[i], lubricant, speed=.., ..)`` in the memo.
+
+    ``points[i]`` is screw ``i``'s (speed, temperature, axial_load), each a number or a
+    1-D array, as its own call would be given them. The screws of one nut arrangement
+    go through the model together (:func:`friction_torques`, their geometry as arrays:
+    equal to the screw's own call within 1e-12 relative, the components the same), and
+    each screw's result is then kept in the active :func:`friction_memo` under its own
+    call's key, built as that call builds it (its broadcast points, parameters, validity
+    issues; ``state`` None): that call, made next, answers from memory. A call already
+    kept, one over more points than the model's chunk, and the screws of a group with a
+    point the model cannot solve are left to their own calls (which then give their own
+    error). Returns how many results were put in; 0 outside a memo block.
+    """
+    memo = _MEMO.get()
+    if memo is None:
+        return 0
+    todo: dict[Any, tuple[BallScrew, Any, tuple[FloatArray, FloatArray, FloatArray]]] = {}
+    for screw, (w, t, fa) in zip(screws, points, strict=True):
+        key = _memo_key(screw, lubricant, model, (w, t, fa), (None, True), parameters)
+        if key is None or key in memo or key in todo:
+            continue
+        prepared = _prepared(screw, lubricant, model, parameters, None, (w, t, fa))
+        oil, _, chunk, own, _ = prepared
+        shape = np.broadcast_shapes(*(x.shape for x in own))
+        if len(shape) > 1 or math.prod(shape) > chunk:
+            continue
+        todo[key] = (screw, prepared, own)
+    filled = 0
+    kinds: dict[tuple[str, str], list[Any]] = {}
+    for key, (screw, _, _) in todo.items():
+        kinds.setdefault((screw.nut, screw.ball_separation), []).append(key)
+    for keys in kinds.values():
+        items = [todo[k] for k in keys]
+        sizes = [math.prod(np.broadcast_shapes(*(x.shape for x in own))) for _, _, own in items]
+        width = max(sizes)
+        rows = np.empty((3, len(items), width))
+        for j, ((_, _, own), n) in enumerate(zip(items, sizes, strict=True)):
+            for x, row in zip(own, rows[:, j], strict=True):
+                row[:n] = np.broadcast_to(x, (n,))
+                row[n:] = row[n - 1]  # padding: repeats of the last point
+        first = items[0][1]
+        try:
+            with warnings.catch_warnings(), kernel_scope():
+                warnings.simplefilter("ignore")
+                many = friction_torques(
+                    [screw for screw, _, _ in items], first[0], speed=rows[0],
+                    temperature=rows[1], axial_load=rows[2], model=model, paired=True,
+                    warn=False, **parameters,
+                )  # fmt: skip
+        except BallScrewInputError:
+            continue
+        for j, (key, (screw, prepared, _), n) in enumerate(zip(keys, items, sizes, strict=True)):
+            oil, spec, _, (w0, t0, fa0), used = prepared
+            shape = np.broadcast_shapes(w0.shape, t0.shape, fa0.shape)
+            kept = {k: np.array(v[j, :n], dtype=float).reshape(shape)
+                    for k, v in many.components.items()}  # fmt: skip
+            total = np.zeros(shape)
+            for value in kept.values():
+                total += value
+            issues = validity.check(screw, oil, w0, t0, fa0, spec.name, used, spec.checks)
+            result = _result(spec, used, kept, total, tuple(np.broadcast_arrays(w0, t0, fa0)),
+                             screw.lead, issues, False)  # fmt: skip
+            _freeze(result)
+            memo[key] = result
+            filled += 1
+    while len(memo) > _MEMO_SIZE.get():
+        memo.popitem(last=False)
+    return filled
 
 
 def _memo_key(
@@ -265,7 +350,7 @@ def friction_torque(
     if memo is not None and key is not None:
         _freeze(result)
         memo[key] = result
-        while len(memo) > MEMO_SIZE:
+        while len(memo) > _MEMO_SIZE.get():
             memo.popitem(last=False)
     return result
 
