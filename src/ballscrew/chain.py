@@ -229,8 +229,8 @@ def fill_friction_memo(
             for value in kept.values():
                 total += value
             issues = validity.check(screw, oil, w0, t0, fa0, spec.name, used, spec.checks)
-            result = _result(spec, used, kept, total, tuple(np.broadcast_arrays(w0, t0, fa0)),
-                             screw.lead, issues, False)  # fmt: skip
+            w, t, fa = np.broadcast_arrays(w0, t0, fa0)
+            result = _result(spec, used, kept, total, (w, t, fa), screw.lead, issues, False)
             _freeze(result)
             memo[key] = result
             filled += 1

@@ -508,9 +508,9 @@ def _prepared(
                 i, case, _ = part[j]
                 out[i] = (case, dataclasses.replace(st, history=history))
     tell("heat", len(twins), len(twins))
-    for members in twins.values():
-        shared = out[members[0]][1]
-        for i in members[1:]:
+    for twin_indices in twins.values():
+        shared = out[twin_indices[0]][1]
+        for i in twin_indices[1:]:
             out[i] = (out[i][0], shared)
     return out
 
