@@ -13,8 +13,6 @@ largest and median CPU time of one candidate.
 candidates; 2 give the 784 of the issue), on the default move (11 137 samples),
 against the target of 67 candidates per CPU-second (2000 in 30 s). ``--one-by-one``
 evaluates every candidate by its own friction calls (``run_select(batched=False)``).
-As ``ballscrew select`` does, the script first has the C allocator keep freed memory
-(``ballscrew.numerics.allocator``; ``--plain-allocator`` leaves it).
 
 ``--grid`` runs the selection of issue 39 instead: at least 2000 candidates on a move
 of about 1000 samples (a 100 mm stroke at 12 m/min, 1137 samples), against the target
@@ -131,16 +129,7 @@ def main() -> None:
     parser.add_argument("--oils", type=int, default=6, help="with --motors: how many oils")
     parser.add_argument("--one-by-one", action="store_true",
                         help="every candidate by its own friction calls")  # fmt: skip
-    parser.add_argument("--plain-allocator", action="store_true",
-                        help="leave the C allocator's thresholds as they are")  # fmt: skip
     args = parser.parse_args()
-    if not args.plain_allocator:
-        try:  # as the command does (earlier sources have no such module)
-            from ballscrew.numerics.allocator import keep_freed_memory
-
-            print(f"allocator keeps freed memory (as 'ballscrew select'): {keep_freed_memory()}")
-        except ImportError:
-            print("allocator: as it is (no ballscrew.numerics.allocator in these sources)")
     case = load_case(ROOT / "examples" / "vertical_32x5.toml")
     if args.motors:
         pool = motor_pool(case, args.oils)

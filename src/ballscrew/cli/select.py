@@ -135,9 +135,6 @@ def select_command(
     )  # fmt: skip
     from rich.console import Console
 
-    from ..numerics.allocator import keep_freed_memory
-
-    keep_freed_memory()  # many array calls of one size: keep what is freed (5-10 % of the CPU)
     try:
         # On a terminal, a transient bar on standard error (nothing in a pipe or a file).
         with progress(Console(stderr=True)) as bar:
