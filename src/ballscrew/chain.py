@@ -1,5 +1,9 @@
 r"""The friction chain: one way in to every friction model.
 
+(A long module, about 950 lines: the calls of one screw and of many screws, and the memo
+that answers a selection's repeated calls, share the checks of the inputs and the
+assembly of the results, which stay here with them.)
+
 :func:`friction_torque` validates and broadcasts the operating points, runs
 the chosen model (in chunks, so memory stays bounded on large grids), adds
 up its torque contributions and derives power loss and efficiency, in the

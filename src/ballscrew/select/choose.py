@@ -1,8 +1,8 @@
 """``ballscrew select``: every candidate through the axis check, the Pareto front, one pick.
 
-(A long module, about 900 lines: the evaluation of a candidate, the front, the
-recommendation's rule and the sentences that explain each pick and each refusal
-stay together; the candidate pool is in :mod:`.pool`.)
+(A long module, about 1000 lines: the evaluation of a candidate, many at a time, the
+front, the recommendation's rule and the sentences that explain each pick and each
+refusal stay together; the candidate pool is in :mod:`.pool`.)
 
 Each candidate (:mod:`.pool`) is its own case: the user's axis, motor,
 check limits and duty with the screw replaced. It runs through
