@@ -134,12 +134,35 @@ def model_named(name: str) -> ModelSpec:
 MEMO_SIZE = 16
 """The most results a :func:`friction_memo` block keeps (the least recently used go first)."""
 
-_MEMO: contextvars.ContextVar[OrderedDict[Any, FrictionResult] | None] = contextvars.ContextVar(
-    "friction_memo", default=None
-)
-_MEMO_SIZE: contextvars.ContextVar[int] = contextvars.ContextVar(
-    "friction_memo_size", default=MEMO_SIZE
-)
+MEMO_BYTES = 128 << 20
+"""The most bytes of arrays a :func:`friction_memo` block keeps [B]: a long cycle's results
+(one array a mechanism over its samples) go first, whatever their number."""
+
+
+class _Memo(OrderedDict[Any, FrictionResult]):
+    """The results a :func:`friction_memo` block keeps, least recently used first."""
+
+    def __init__(self, size: int) -> None:
+        super().__init__()
+        self.size, self.nbytes = size, 0
+        self.sizes: dict[Any, int] = {}
+
+    def keep(self, key: Any, result: FrictionResult) -> None:
+        """Keep ``result`` (made read-only) under ``key``; drop the oldest past the bounds."""
+        nbytes = _nbytes(result)
+        if nbytes > MEMO_BYTES // 4:  # one result that would crowd the others out
+            return
+        _freeze(result)
+        if key in self:
+            self.nbytes -= self.sizes[key]
+        self[key], self.sizes[key] = result, nbytes
+        self.nbytes += nbytes
+        while len(self) > self.size or self.nbytes > MEMO_BYTES:
+            old, _ = self.popitem(last=False)
+            self.nbytes -= self.sizes.pop(old)
+
+
+_MEMO: contextvars.ContextVar[_Memo | None] = contextvars.ContextVar("friction_memo", default=None)
 
 
 @contextlib.contextmanager
@@ -153,12 +176,11 @@ def friction_memo(size: int = MEMO_SIZE) -> Iterator[None]:
     call would give them. The arrays of a kept result are read-only. ``ballscrew
     select`` evaluates its candidates inside one: candidates that differ only in their
     motor (a motor table) run the same friction calls. The ``size`` most recent
-    results are kept; a call whose parameters cannot be hashed is not kept.
-    :func:`fill_friction_memo` puts in the results of many screws' calls ahead, from
-    one :func:`friction_torques` call.
+    results are kept, at most :data:`MEMO_BYTES` of their arrays; a call whose
+    parameters cannot be hashed is not kept. :func:`fill_friction_memo` puts in the
+    results of many screws' calls ahead, from one :func:`friction_torques` call.
     """
-    token = _MEMO.set(OrderedDict())
-    _MEMO_SIZE.set(size)
+    token = _MEMO.set(_Memo(size))
     try:
         yield
     finally:
@@ -235,11 +257,8 @@ def fill_friction_memo(
             issues = validity.check(screw, oil, w0, t0, fa0, spec.name, used, spec.checks)
             w, t, fa = np.broadcast_arrays(w0, t0, fa0)
             result = _result(spec, used, kept, total, (w, t, fa), screw.lead, issues, False)
-            _freeze(result)
-            memo[key] = result
-            filled += 1
-    while len(memo) > _MEMO_SIZE.get():
-        memo.popitem(last=False)
+            memo.keep(key, result)
+            filled += key in memo
     return filled
 
 
@@ -261,6 +280,21 @@ def _memo_key(
     except TypeError:
         return None
     return key
+
+
+def _nbytes(value: Any, depth: int = 4) -> int:
+    """The bytes of the arrays in ``value``, a result and what it holds (its contact state)."""
+    if isinstance(value, np.ndarray):
+        return int(value.nbytes) if value.base is None else 0  # a view holds no memory
+    if depth == 0 or value is None or isinstance(value, (str, bytes, int, float)):
+        return 0
+    if isinstance(value, Mapping):
+        return sum(_nbytes(v, depth - 1) for v in value.values())
+    if isinstance(value, (list, tuple)):
+        return sum(_nbytes(v, depth - 1) for v in value)
+    if hasattr(value, "__dict__"):
+        return sum(_nbytes(v, depth - 1) for v in vars(value).values())
+    return 0
 
 
 def _freeze(result: FrictionResult) -> None:
@@ -352,10 +386,7 @@ def friction_torque(
     result = _friction_torque(screw, lubricant, model, (speed, temperature, axial_load),
                               chunk_size, warn, components, parameters)  # fmt: skip
     if memo is not None and key is not None:
-        _freeze(result)
-        memo[key] = result
-        while len(memo) > _MEMO_SIZE.get():
-            memo.popitem(last=False)
+        memo.keep(key, result)
     return result
 
 
