@@ -13,11 +13,14 @@ ceiling over a time).
 - 1000 new screws x 1000 speeds, complete (``bench_many_screws.py``): goal >= 1e6 points
   per CPU-second;
 - one point of the complete model through ``friction_torque`` (mean of 200 calls): goal
-  < 0.5 ms CPU.
+  < 0.5 ms CPU;
+- ``ballscrew select`` over issue 51's pool (``bench_select.py --motors``: catalogue rows
+  and ISO sizes of 20-63 mm x 5-40 mm, 6 oils x the example table's 4 motors, 2352
+  candidates): goal >= 67 candidates per CPU-second (2000 in 30 s).
 
-The selection has its own (``bench_select.py``), the 10 000-block program
-``bench_program.py --max 1e4`` (< 10 s CPU) and the circle at 1 kHz ``ballscrew contour``
-(< 2 s CPU); ``--quick`` takes 300 screws instead of 1000.
+The 10 000-block program ``bench_program.py --max 1e4`` (< 10 s CPU) and the circle at
+1 kHz ``ballscrew contour`` (< 2 s CPU) have their own; ``--quick`` takes 300 screws
+instead of 1000 and 2 oils (784 candidates) instead of 6.
 """
 
 from __future__ import annotations
@@ -41,6 +44,7 @@ import numpy as np  # noqa: E402
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from bench_many_screws import measure  # noqa: E402
+from bench_select import DEFAULT_MOVE, TARGET_RATE, motor_pool, time_select  # noqa: E402
 
 from ballscrew import friction_torque, lubricants, reference_screw  # noqa: E402
 
@@ -113,6 +117,17 @@ def complete_one_point(calls: int = 200) -> None:
          False)  # fmt: skip
 
 
+def selection(oils: int) -> None:
+    """``run_select`` over issue 51's pool (``bench_select.motor_pool``) with ``oils`` oils."""
+    from ballscrew.io.case import load_case
+
+    case = load_case(Path(__file__).resolve().parents[1] / "examples" / "vertical_32x5.toml")
+    pool = motor_pool(case, oils)
+    r = time_select(case, pool, DEFAULT_MOVE.format(dwell="3 s"))
+    _row(f"select, {len(pool)} candidates [candidates/CPU-s]", r["candidates"] / r["cpu_s"],
+         r["candidates"] / r["wall_s"], TARGET_RATE, True)  # fmt: skip
+
+
 def main() -> None:
     warnings.simplefilter("ignore")
     parser = argparse.ArgumentParser(description=__doc__)
@@ -123,6 +138,7 @@ def main() -> None:
     harris_simplified_scattered()
     many_screws(300 if args.quick else 1000)
     complete_one_point()
+    selection(2 if args.quick else 6)
 
 
 if __name__ == "__main__":

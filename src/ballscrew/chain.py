@@ -1,5 +1,9 @@
 r"""The friction chain: one way in to every friction model.
 
+(A long module, about 950 lines: the calls of one screw and of many screws, and the memo
+that answers a selection's repeated calls, share the checks of the inputs and the
+assembly of the results, which stay here with them.)
+
 :func:`friction_torque` validates and broadcasts the operating points, runs
 the chosen model (in chunks, so memory stays bounded on large grids), adds
 up its torque contributions and derives power loss and efficiency, in the
@@ -9,9 +13,12 @@ manner of pvlib's ``ModelChain``. A new model is one module in
 
 from __future__ import annotations
 
+import contextlib
+import contextvars
 import math
 import warnings
-from collections.abc import Callable, Collection, Mapping, Sequence
+from collections import OrderedDict
+from collections.abc import Callable, Collection, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any
 
@@ -27,7 +34,7 @@ from .errors import (
 )
 from .friction import MODELS, ModelSpec, get_model
 from .geometry import BallScrew, ScrewArray
-from .helix import JIT_LOAD_POINTS, load_kernel
+from .helix import JIT_LOAD_POINTS, kernel_scope, load_kernel
 from .kinematics import rad_s_to_rpm
 from .lubricant import Lubricant
 from .state import OperatingState, operating_points, operating_state
@@ -36,6 +43,8 @@ from .validity import ValidityIssue
 __all__ = [
     "FrictionResult",
     "TorqueTable",
+    "fill_friction_memo",
+    "friction_memo",
     "friction_torque",
     "friction_torques",
     "model_named",
@@ -122,6 +131,179 @@ def model_named(name: str) -> ModelSpec:
     return get_model(name)
 
 
+MEMO_SIZE = 16
+"""The most results a :func:`friction_memo` block keeps (the least recently used go first)."""
+
+MEMO_BYTES = 128 << 20
+"""The most bytes of arrays a :func:`friction_memo` block keeps [B]: a long cycle's results
+(one array a mechanism over its samples) go first, whatever their number."""
+
+
+class _Memo(OrderedDict[Any, FrictionResult]):
+    """The results a :func:`friction_memo` block keeps, least recently used first."""
+
+    def __init__(self, size: int) -> None:
+        super().__init__()
+        self.size, self.nbytes = size, 0
+        self.sizes: dict[Any, int] = {}
+
+    def keep(self, key: Any, result: FrictionResult) -> None:
+        """Keep ``result`` (made read-only) under ``key``; drop the oldest past the bounds."""
+        nbytes = _nbytes(result)
+        if nbytes > MEMO_BYTES // 4:  # one result that would crowd the others out
+            return
+        _freeze(result)
+        if key in self:
+            self.nbytes -= self.sizes[key]
+        self[key], self.sizes[key] = result, nbytes
+        self.nbytes += nbytes
+        while len(self) > self.size or self.nbytes > MEMO_BYTES:
+            old, _ = self.popitem(last=False)
+            self.nbytes -= self.sizes.pop(old)
+
+
+_MEMO: contextvars.ContextVar[_Memo | None] = contextvars.ContextVar("friction_memo", default=None)
+
+
+@contextlib.contextmanager
+def friction_memo(size: int = MEMO_SIZE) -> Iterator[None]:
+    """A block in which :func:`friction_torque` answers a call equal to a recent one from memory.
+
+    A call is equal to an earlier one when its screw, lubricant, model, parameters,
+    options and operating points (values, shapes and types) are: the result is the
+    earlier call's own object, so its numbers are those of a new call to the last bit
+    (the model is deterministic), and its validity warnings are given again as a new
+    call would give them. The arrays of a kept result are read-only. ``ballscrew
+    select`` evaluates its candidates inside one: candidates that differ only in their
+    motor (a motor table) run the same friction calls. The ``size`` most recent
+    results are kept, at most :data:`MEMO_BYTES` of their arrays; a call whose
+    parameters cannot be hashed is not kept. :func:`fill_friction_memo` puts in the
+    results of many screws' calls ahead, from one :func:`friction_torques` call.
+    """
+    token = _MEMO.set(_Memo(size))
+    try:
+        yield
+    finally:
+        _MEMO.reset(token)
+
+
+def fill_friction_memo(
+    screws: Sequence[BallScrew],
+    lubricant: Lubricant | str,
+    points: Sequence[tuple[npt.ArrayLike, npt.ArrayLike, npt.ArrayLike]],
+    *,
+    model: str = "complete",
+    **parameters: Any,
+) -> int:
+    """Put the results of ``friction_torque(screws[i], lubricant, speed=.., ..)`` in the memo.
+
+    ``points[i]`` is screw ``i``'s (speed, temperature, axial_load), each a number or a
+    1-D array, as its own call would be given them. The screws of one nut arrangement
+    go through the model together (:func:`friction_torques`, their geometry as arrays:
+    equal to the screw's own call within 1e-12 relative, the components the same), and
+    each screw's result is then kept in the active :func:`friction_memo` under its own
+    call's key, built as that call builds it (its broadcast points, parameters, validity
+    issues; ``state`` None): that call, made next, answers from memory. A call already
+    kept, one over more points than the model's chunk, and the screws of a group with a
+    point the model cannot solve are left to their own calls (which then give their own
+    error). Returns how many results were put in; 0 outside a memo block.
+    """
+    memo = _MEMO.get()
+    if memo is None:
+        return 0
+    todo: dict[Any, tuple[BallScrew, Any, tuple[FloatArray, FloatArray, FloatArray]]] = {}
+    for screw, (w, t, fa) in zip(screws, points, strict=True):
+        key = _memo_key(screw, lubricant, model, (w, t, fa), (None, True), parameters)
+        if key is None or key in memo or key in todo:
+            continue
+        prepared = _prepared(screw, lubricant, model, parameters, None, (w, t, fa))
+        oil, _, chunk, own, _ = prepared
+        shape = np.broadcast_shapes(*(x.shape for x in own))
+        if len(shape) > 1 or math.prod(shape) > chunk:
+            continue
+        todo[key] = (screw, prepared, own)
+    filled = 0
+    kinds: dict[tuple[str, str], list[Any]] = {}
+    for key, (screw, _, _) in todo.items():
+        kinds.setdefault((screw.nut, screw.ball_separation), []).append(key)
+    for keys in kinds.values():
+        items = [todo[k] for k in keys]
+        sizes = [math.prod(np.broadcast_shapes(*(x.shape for x in own))) for _, _, own in items]
+        width = max(sizes)
+        rows = np.empty((3, len(items), width))
+        for j, ((_, _, own), n) in enumerate(zip(items, sizes, strict=True)):
+            for x, row in zip(own, rows[:, j], strict=True):
+                row[:n] = np.broadcast_to(x, (n,))
+                row[n:] = row[n - 1]  # padding: repeats of the last point
+        first = items[0][1]
+        try:
+            with warnings.catch_warnings(), kernel_scope():
+                warnings.simplefilter("ignore")
+                many = friction_torques(
+                    [screw for screw, _, _ in items], first[0], speed=rows[0],
+                    temperature=rows[1], axial_load=rows[2], model=model, paired=True,
+                    warn=False, **parameters,
+                )  # fmt: skip
+        except BallScrewInputError:
+            continue
+        for j, (key, (screw, prepared, _), n) in enumerate(zip(keys, items, sizes, strict=True)):
+            oil, spec, _, (w0, t0, fa0), used = prepared
+            shape = np.broadcast_shapes(w0.shape, t0.shape, fa0.shape)
+            kept = {k: np.array(v[j, :n], dtype=float).reshape(shape)
+                    for k, v in many.components.items()}  # fmt: skip
+            total = np.zeros(shape)
+            for value in kept.values():
+                total += value
+            issues = validity.check(screw, oil, w0, t0, fa0, spec.name, used, spec.checks)
+            w, t, fa = np.broadcast_arrays(w0, t0, fa0)
+            result = _result(spec, used, kept, total, (w, t, fa), screw.lead, issues, False)
+            memo.keep(key, result)
+            filled += key in memo
+    return filled
+
+
+def _memo_key(
+    screw: BallScrew, lubricant: Lubricant | str, model: str,
+    points: tuple[npt.ArrayLike, npt.ArrayLike, npt.ArrayLike], options: tuple[Any, ...],
+    parameters: dict[str, Any],
+) -> tuple[Any, ...] | None:  # fmt: skip
+    """The memo's key of a :func:`friction_torque` call; None when it cannot be hashed."""
+    arrays = []
+    for x in points:
+        a = np.asarray(x)
+        if a.dtype == object:
+            return None
+        arrays.append((a.dtype.str, a.shape, a.tobytes()))
+    key = (screw, lubricant, model, options, tuple(sorted(parameters.items())), tuple(arrays))
+    try:
+        hash(key)
+    except TypeError:
+        return None
+    return key
+
+
+def _nbytes(value: Any, depth: int = 4) -> int:
+    """The bytes of the arrays in ``value``, a result and what it holds (its contact state)."""
+    if isinstance(value, np.ndarray):
+        return int(value.nbytes) if value.base is None else 0  # a view holds no memory
+    if depth == 0 or value is None or isinstance(value, (str, bytes, int, float)):
+        return 0
+    if isinstance(value, Mapping):
+        return sum(_nbytes(v, depth - 1) for v in value.values())
+    if isinstance(value, (list, tuple)):
+        return sum(_nbytes(v, depth - 1) for v in value)
+    if hasattr(value, "__dict__"):
+        return sum(_nbytes(v, depth - 1) for v in vars(value).values())
+    return 0
+
+
+def _freeze(result: FrictionResult) -> None:
+    """Make the arrays of a result kept by the memo read-only (shared by every caller)."""
+    for a in (result.total, result.power_loss, result.efficiency, *result.components.values()):
+        if isinstance(a, np.ndarray):
+            a.flags.writeable = False
+
+
 def friction_torque(
     screw: BallScrew,
     lubricant: Lubricant | str,
@@ -190,8 +372,32 @@ def friction_torque(
     >>> [round(float(t), 4) for t in r.total]
     [0.5642, 0.5642]
     """
+    memo = _MEMO.get()
+    key = None
+    if memo is not None:
+        key = _memo_key(screw, lubricant, model, (speed, temperature, axial_load),
+                        (chunk_size, components), parameters)  # fmt: skip
+        if key is not None and key in memo:
+            memo.move_to_end(key)
+            kept_result = memo[key]
+            if warn:
+                _warn(list(kept_result.warnings))
+            return kept_result
+    result = _friction_torque(screw, lubricant, model, (speed, temperature, axial_load),
+                              chunk_size, warn, components, parameters)  # fmt: skip
+    if memo is not None and key is not None:
+        memo.keep(key, result)
+    return result
+
+
+def _friction_torque(
+    screw: BallScrew, lubricant: Lubricant | str, model: str,
+    points: tuple[npt.ArrayLike, npt.ArrayLike, npt.ArrayLike], chunk_size: int | None,
+    warn: bool, components: bool, parameters: dict[str, Any],
+) -> FrictionResult:  # fmt: skip
+    """:func:`friction_torque` itself (the memo aside)."""
     lubricant, spec, chunk, (w0, t0, fa0), used = _prepared(
-        screw, lubricant, model, parameters, chunk_size, (speed, temperature, axial_load)
+        screw, lubricant, model, parameters, chunk_size, points
     )
     kept, total, state = _evaluate(
         spec, screw, lubricant, (w0, t0, fa0), chunk, used, parameters, components

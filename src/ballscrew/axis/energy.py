@@ -44,6 +44,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 from ..bearings import (
     PALMGREN_BEARINGS,
@@ -71,6 +72,7 @@ __all__ = [
     "Axis",
     "CycleResult",
     "axis_cycle",
+    "distinct_pairs",
     "friction_energy",
     "friction_sign",
     "reverse_efficiency",
@@ -369,6 +371,21 @@ def _bearing_torque(
     )  # fmt: skip
 
 
+def distinct_pairs(
+    omega: FloatArray, force: FloatArray
+) -> tuple[FloatArray, FloatArray, npt.NDArray[np.intp]]:
+    """The distinct (screw speed, axial force) pairs of the samples, and each sample's pair.
+
+    Returns the pairs' speeds [rad/s] and forces [N] (sorted by speed, then force)
+    and, for each sample, the index of its pair (shaped as ``omega``): the points
+    :func:`axis_cycle` evaluates the friction model at.
+    """
+    keys = np.empty(omega.shape, dtype=complex)
+    keys.real, keys.imag = omega, force
+    pairs, inverse = np.unique(keys, return_inverse=True)
+    return pairs.real.copy(), pairs.imag.copy(), inverse.reshape(omega.shape)
+
+
 def _per_sample(
     screw: BallScrew, lubricant: Lubricant | str, omega: FloatArray, force: FloatArray,
     temperature: float, model: str, parameters: dict[str, Any],
@@ -379,22 +396,19 @@ def _per_sample(
     the first); the result is spread back to the samples, so it is the
     sample-by-sample call's, without the contact state (``state`` None).
     """
-    keys = np.empty(omega.shape, dtype=complex)
-    keys.real, keys.imag = omega, force
-    pairs, inverse = np.unique(keys, return_inverse=True)
-    if pairs.size == omega.size:
+    speeds, forces, index = distinct_pairs(omega, force)
+    if speeds.size == omega.size:
         return friction_torque(
             screw, lubricant, speed=omega, temperature=temperature, axial_load=force,
             model=model, **parameters,
         )  # fmt: skip
     fr = friction_torque(
-        screw, lubricant, speed=pairs.real.copy(), temperature=temperature,
-        axial_load=pairs.imag.copy(), model=model, **parameters,
+        screw, lubricant, speed=speeds, temperature=temperature, axial_load=forces,
+        model=model, **parameters,
     )  # fmt: skip
-    index = inverse.reshape(omega.shape)
 
     def spread(a: FloatArray) -> FloatArray:
-        result: FloatArray = np.broadcast_to(a, pairs.shape)[index]
+        result: FloatArray = np.broadcast_to(a, speeds.shape)[index]
         return result
 
     return dataclasses.replace(

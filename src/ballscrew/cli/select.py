@@ -14,6 +14,7 @@ from .common import (
     motion,
     motion_options,
     own_case_option,
+    progress,
     require_case,
     stdout,
     write_outputs,
@@ -132,18 +133,28 @@ def select_command(
         (("--objective", objectives), ("--maker", makers), ("--preload", preloads),
          ("--oil", oils), ("--source", sources), ("--nut", nuts)),
     )  # fmt: skip
+    from rich.console import Console
+
     try:
-        result = run_select(
-            case, profile, objectives=objectives or ("energy", "life"),
-            diameter=length_range("--diameter", diameter), lead=length_range("--lead", lead),
-            makers=makers,
-            preloads=preloads or DEFAULT_PRELOADS, oils=oils, model=model_name, cycles=cycles,
-            temperature=to_si("--temperature", temperature, "degC") if temperature else None,
-            run_time=to_si("--run-time", run_time, "s"), move=m,
-            motion_field="--move" if move_text is not None else "--profile",
-            sources=sources or ("catalogue",), nuts=nuts, motors=motors, screw_prices=prices,
-            currency=currency, confidence=sure,
-        )  # fmt: skip
+        # On a terminal, a transient bar on standard error (nothing in a pipe or a file).
+        with progress(Console(stderr=True)) as bar:
+            task = bar.add_task("reading the candidates", total=None)
+
+            def tell(stage: str, done: int, total: int) -> None:
+                bar.update(task, description=_STAGES[stage], completed=done, total=total)
+
+            result = run_select(
+                case, profile, objectives=objectives or ("energy", "life"),
+                diameter=length_range("--diameter", diameter),
+                lead=length_range("--lead", lead), makers=makers,
+                preloads=preloads or DEFAULT_PRELOADS, oils=oils, model=model_name,
+                cycles=cycles,
+                temperature=to_si("--temperature", temperature, "degC") if temperature else None,
+                run_time=to_si("--run-time", run_time, "s"), move=m,
+                motion_field="--move" if move_text is not None else "--profile",
+                sources=sources or ("catalogue",), nuts=nuts, motors=motors,
+                screw_prices=prices, currency=currency, confidence=sure, progress=tell,
+            )  # fmt: skip
     except NoFeasibleCandidateError as exc:
         if out_dir:  # the report asked for says why nothing passed; the error still exits 2
             from ..report.select import write_rejection_report
@@ -163,6 +174,15 @@ def select_command(
         [("--json", json_file, result_json(result).encode("utf-8") if json_file else b"")],
         (out_dir, lambda folder: write_select_report(folder, result)),
     )
+
+
+_STAGES = {
+    "parse": "reading the candidates",
+    "heat": "their heat balances",
+    "check": "checking the candidates",
+    "alone": "the front, each alone",
+}
+"""The progress bar's words for run_select's stages."""
 
 
 def _price_tables(

@@ -1,8 +1,8 @@
 """``ballscrew select``: every candidate through the axis check, the Pareto front, one pick.
 
-(A long module, about 900 lines: the evaluation of a candidate, the front, the
-recommendation's rule and the sentences that explain each pick and each refusal
-stay together; the candidate pool is in :mod:`.pool`.)
+(A long module, about 1000 lines: the evaluation of a candidate, many at a time, the
+front, the recommendation's rule and the sentences that explain each pick and each
+refusal stay together; the candidate pool is in :mod:`.pool`.)
 
 Each candidate (:mod:`.pool`) is its own case: the user's axis, motor,
 check limits and duty with the screw replaced. It runs through
@@ -47,24 +47,27 @@ fail is named with its probability (on the front or not), and
 
 from __future__ import annotations
 
+import contextlib
 import dataclasses
 import difflib
 import math
 import time
 import warnings
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 
 from .. import lubricants
-from ..axis.check import AxisCheck, Criterion, run_check
+from ..axis.check import CREEP_SPEED, AxisCheck, Criterion, run_check
 from ..axis.duty import HISTORY_POINTS, motion_plausibility, run_energy
+from ..axis.energy import distinct_pairs, screw_motion
 from ..axis.motion import MOVE_KEYS, Profile
 from ..axis.setup import axis_setup
 from ..axis.thermal import SteadyState, steady_temperatures, temperature_histories
 from ..axis.uncertainty import CONFIDENCE
+from ..chain import MEMO_SIZE, fill_friction_memo, friction_memo
 from ..errors import BallScrewInputError, BallScrewPlausibilityWarning, FloatArray
 from ..io.case import Case, parse_case
 from ..io.motors import MotorRow
@@ -79,12 +82,18 @@ __all__ = [
     "Evaluated",
     "NoFeasibleCandidateError",
     "NoneFeasible",
+    "Progress",
     "SelectResult",
     "evaluate",
     "non_dominated",
     "parse_confidence",
     "run_select",
 ]
+
+Progress = Callable[[str, int, int], None]
+"""``progress(stage, done, total)``: ``"parse"`` (the candidates' cases read), ``"heat"`` (their
+heat balances solved, counted in balances), ``"check"`` (the candidates evaluated) and
+``"alone"`` (the front, the pick and the candidates near a bound evaluated again alone)."""
 
 OBJECTIVES: dict[str, tuple[str, str, int]] = {
     "energy": ("energy_J", "friction energy per cycle [J]", 1),
@@ -436,8 +445,9 @@ BATCH = 2000
 
 
 def _prepared(
-    found: Sequence[Candidate], profile: Profile, model: str, run_time: float
-) -> list[tuple[Case | None, SteadyState | None]]:
+    found: Sequence[Candidate], profile: Profile, model: str, run_time: float,
+    progress: Progress | None = None,
+) -> list[tuple[Case | None, SteadyState | None]]:  # fmt: skip
     """Each candidate's parsed case and its steady temperature, solved many at a time.
 
     The heat balance of the candidates that share an oil and model parameters is
@@ -449,12 +459,16 @@ def _prepared(
     tolerance of the candidate's own). A
     candidate that does not parse, whose move its screw cannot take, or whose
     balance does not close gets None: :func:`evaluate` then runs it alone and
-    rejects it with its error.
+    rejects it with its error. Candidates that differ only in their motor (a motor
+    table) share one balance: it does not read the motor.
     """
     out: list[tuple[Case | None, SteadyState | None]] = [(None, None)] * len(found)
+    tell = progress or (lambda _stage, _done, _total: None)
     travel = float(np.ptp(profile.position))
     groups: dict[tuple[str, str], list[tuple[int, Case, Any]]] = {}
+    twins: dict[tuple[Any, ...], list[int]] = {}
     for i, c in enumerate(found):
+        tell("parse", i, len(found))
         try:
             case = _parse_candidate(c)
             setup = axis_setup(case.screw, case.axis, case.thermal, travel)
@@ -463,10 +477,21 @@ def _prepared(
             continue
         out[i] = (case, None)
         key = (case.lubricant.name, repr(case.parameters_for(model)))
+        # The heat balance reads the screw, the node and the axis' moving mass and incline
+        # (its loads), never the motor: candidates that differ in their motor alone share it.
+        twin = (key, case.screw, setup.node, dataclasses.replace(setup.axis, motor_inertia=0.0))
+        if twin in twins:
+            twins[twin].append(i)
+            continue
+        twins[twin] = [i]
         groups.setdefault(key, []).append((i, case, setup))
+    tell("parse", len(found), len(found))
+    balanced = 0
     for members in groups.values():
         for start in range(0, len(members), BATCH):
+            tell("heat", balanced, len(twins))
             part = members[start : start + BATCH]
+            balanced += len(part)
             first = part[0][1]
             solved = steady_temperatures(
                 profile, [c.screw for _, c, _ in part], first.lubricant,
@@ -482,6 +507,11 @@ def _prepared(
             for (j, st), history in zip(closed, histories, strict=True):
                 i, case, _ = part[j]
                 out[i] = (case, dataclasses.replace(st, history=history))
+    tell("heat", len(twins), len(twins))
+    for twin_indices in twins.values():
+        shared = out[twin_indices[0]][1]
+        for i in twin_indices[1:]:
+            out[i] = (out[i][0], shared)
     return out
 
 
@@ -643,6 +673,8 @@ def run_select(
     screw_prices: Mapping[str, float] | None = None,
     currency: str = "",
     confidence: float = CONFIDENCE,
+    progress: Progress | None = None,
+    batched: bool = True,
 ) -> SelectResult:
     """Choose the screw for ``case``'s axis over ``profile`` (module docstring).
 
@@ -679,6 +711,14 @@ def run_select(
     confidence : float
         The confidence a feasible candidate passes with: its P(NOT OK) at most
         ``1 - confidence`` (default 0.95, the check's "OK (95 %)").
+    progress : callable, optional
+        ``progress(stage, done, total)`` as the candidates are read, their heat
+        balances solved and the candidates evaluated (:data:`Progress`).
+    batched : bool
+        True (default): the candidates' friction calls made many screws at a time
+        and each repeated call answered from memory (module docstring); False: every
+        candidate's calls made by itself, one by one, the path the batched one is
+        tested equal to (slower).
 
     Raises
     ------
@@ -700,9 +740,10 @@ def run_select(
                            preloads=preloads, oils=list(oils) or [None],
                            default_oil=case.lubricant.name, sources=sources, nuts=nuts,
                            motors=motors, screw_prices=screw_prices)  # fmt: skip
-    batch = _Batch(found, _prepared(found, profile, model, run_time), profile,
+    batch = _Batch(found, _prepared(found, profile, model, run_time, progress), profile,
                    {"model": model, "cycles": cycles, "temperature": temperature,
-                    "run_time": run_time, "move": move, "confidence": confidence})  # fmt: skip
+                    "run_time": run_time, "move": move, "confidence": confidence},
+                   progress, batched)  # fmt: skip
     evaluated = batch.evaluated
     inputs = {"case": case.title, "model": model, "cycles": cycles, "temperature": temperature,
               "run_time_s": run_time, "move": dict(move or {}), "objectives": list(chosen),
@@ -755,6 +796,69 @@ def _check_prices(
     return motor_currency
 
 
+PRIME = 64
+"""The candidates whose cycle and creep-drag friction are computed together (:func:`_prime`)."""
+
+
+def _prime(
+    ready: Sequence[tuple[Case | None, SteadyState | None]], profile: Profile,
+    options: dict[str, Any], part: Sequence[int],
+) -> None:  # fmt: skip
+    """The friction calls of the candidates ``part`` will make, made ahead many at a time.
+
+    For each candidate whose heat balance is solved: its cycle's friction at its distinct
+    (speed, force) pairs (:func:`~ballscrew.axis.energy.distinct_pairs`, what
+    :func:`~ballscrew.axis.energy.axis_cycle` evaluates) and its drag at creep speed
+    (the check's lost motion), at the run's temperature. The candidates that share a
+    lubricant and model parameters go through the model together
+    (:func:`~ballscrew.chain.fill_friction_memo`: the screws as arrays, equal to their own
+    calls within 1e-12 relative), and each candidate's own call then answers from the memo.
+    """
+    model = options["model"]
+    travel = float(np.ptp(profile.position))
+    groups: dict[tuple[Any, str], tuple[list[Any], list[Any], list[Any], dict[str, Any]]] = {}
+    for i in part:
+        case, steady = ready[i]
+        if case is None or steady is None:
+            continue
+        try:
+            setup = axis_setup(case.screw, case.axis, case.thermal, travel)
+        except BallScrewInputError:
+            continue
+        # The run's temperature, as run_energy takes it.
+        given = options["temperature"]
+        temp = float(case.temperature.flat[0]) if given is None else float(given)
+        params = case.parameters_for(model)
+        screws, cycles, creeps, _ = groups.setdefault((case.lubricant, repr(params)),
+                                                      ([], [], [], params))  # fmt: skip
+        screws.append(case.screw)
+        omega, _, force = screw_motion(profile, case.screw, setup.axis)
+        speeds, forces, _ = distinct_pairs(omega, force)
+        # Without a repeated sample axis_cycle calls the model on the samples themselves.
+        cycles.append((speeds, temp, forces) if speeds.size < omega.size else None)
+        creeps.append((CREEP_SPEED, temp, 0.0))
+    for (lubricant, _), (screws, cycles, creeps, params) in groups.items():
+        kept = [(s, c) for s, c in zip(screws, cycles, strict=True) if c is not None]
+        if kept:
+            fill_friction_memo([s for s, _ in kept], lubricant, [c for _, c in kept],
+                               model=model, **params)  # fmt: skip
+        fill_friction_memo(screws, lubricant, creeps, model=model, **params)
+
+
+def _by_group(ready: Sequence[tuple[Case | None, SteadyState | None]], model: str) -> list[int]:
+    """The candidates' indices by lubricant, model parameters and nut kind, else in order."""
+
+    def group(i: int) -> tuple[str, str, str, str]:
+        case = ready[i][0]
+        if case is None:
+            return ("", "", "", "")
+        screw = case.screw
+        return (case.lubricant.name, repr(case.parameters_for(model)), screw.nut,
+                screw.ball_separation)  # fmt: skip
+
+    return sorted(range(len(ready)), key=group)
+
+
 class _Batch:
     """The candidates evaluated with one batched heat balance, and again alone where it matters.
 
@@ -765,13 +869,30 @@ class _Batch:
 
     def __init__(
         self, found: Sequence[Candidate], ready: Sequence[Any], profile: Profile,
-        options: dict[str, Any],
+        options: dict[str, Any], progress: Progress | None = None, batched: bool = True,
     ) -> None:  # fmt: skip
         self.found, self.ready, self.profile, self.options = found, ready, profile, options
-        self.evaluated = [
-            evaluate(c, profile, parsed=parsed, steady=steady, **options)[0]
-            for c, (parsed, steady) in zip(found, ready, strict=True)
-        ]
+        tell = progress or (lambda _stage, _done, _total: None)
+        done: dict[int, Evaluated] = {}
+        # The friction calls of each candidate's cycle and creep drag are made ahead, PRIME
+        # candidates' at a time, many screws in one call; the memo answers the candidates'
+        # own calls with them, and the repeats of candidates that differ only in their motor.
+        # The candidates are taken by lubricant and nut kind (as the model takes the screws
+        # together), each evaluated by itself: the order changes no figure.
+        order = _by_group(ready, options["model"]) if batched else list(range(len(found)))
+        with friction_memo(4 * PRIME + MEMO_SIZE) if batched else contextlib.nullcontext():
+            for start in range(0, len(order), PRIME):
+                part = order[start : start + PRIME]
+                if batched:
+                    _prime(ready, profile, options, part)
+                for i in part:
+                    tell("check", len(done), len(found))
+                    parsed, steady = ready[i]
+                    done[i] = evaluate(found[i], profile, parsed=parsed, steady=steady,
+                                       **options)[0]  # fmt: skip
+        tell("check", len(found), len(found))
+        self.evaluated = [done[i] for i in range(len(found))]
+        self.tell = tell
         self.alone = {i for i, (_, steady) in enumerate(ready) if steady is None}
         self.again(self.near())
 
@@ -789,7 +910,8 @@ class _Batch:
 
     def again(self, indices: Sequence[int]) -> None:
         """Evaluate ``indices`` alone, their heat balance solved on its own (exact figures)."""
-        for i in indices:
+        for k, i in enumerate(indices):
+            self.tell("alone", k, len(indices))
             if i not in self.alone:
                 again = evaluate(self.found[i], self.profile, parsed=self.ready[i][0],
                                  **self.options)  # fmt: skip

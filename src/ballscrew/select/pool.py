@@ -408,9 +408,10 @@ def _screws(
 MAX_CANDIDATES = 10_000
 """The most candidates one selection evaluates (each runs the whole axis check and a cycle
 energy); more are refused before any is built, with the estimate."""
-RATE = 35.0
-"""Candidates evaluated per CPU-second on one core (measured on the 0.3.0 benchmark,
-benchmarks/bench_select.py): the estimate of a refused selection's time."""
+RATE = 50.0
+"""Candidates evaluated per CPU-second on one core, the estimate of a refused selection's time:
+``benchmarks/bench_select.py --grid`` (no motor table) on a loaded machine; a motor table's
+candidates, which share their heat balance and friction, go about twice as fast."""
 
 
 def candidates(
