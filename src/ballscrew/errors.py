@@ -129,9 +129,15 @@ def _show(value: Any) -> str:
 _NUMBER_KINDS = frozenset("iuf")  # signed and unsigned integers, floats: what a quantity is
 
 
+_FLOAT64 = np.dtype(np.float64)
+
+
 def _as_float_array(field: str, value: Any) -> FloatArray:
-    if type(value) is float:  # the common single-point case, cheapest first
+    if type(value) is float or type(value) is np.float64:  # one number, cheapest first
         return np.asarray(value)
+    if type(value) is np.ndarray and value.dtype is _FLOAT64:
+        # What the layers pass each other: already a float array (the same object back).
+        return value
     kind = _kind(value)
     if kind == "U":
         raise BallScrewInputError(
@@ -262,6 +268,21 @@ def check_choice(field: str, value: Any, options: tuple[str, ...] | list[str]) -
     if not isinstance(value, str) or value not in options:
         raise BallScrewInputError(field, value, f"one of {list(options)}")
     return value
+
+
+def broadcast_to(value: Any, shape: tuple[int, ...]) -> FloatArray:
+    """``numpy.broadcast_to(value, shape)``, or ``value`` itself where it has that shape.
+
+    The same values without numpy's view machinery (some microseconds a call, which the
+    single-point path pays dozens of times): an array of the shape comes back as it is
+    (writable, not a read-only view: the layers never write into what they broadcast).
+    """
+    if type(value) is np.ndarray and value.shape == shape:
+        return value
+    if not shape and (type(value) is float or type(value) is np.float64):
+        return np.asarray(value)
+    result: FloatArray = np.broadcast_to(value, shape)
+    return result
 
 
 def broadcast_inputs(**arrays: Any) -> list[FloatArray]:

@@ -94,7 +94,13 @@ import numpy.typing as npt
 
 from . import _helix_kernel
 from . import rolling_losses as rl
-from .errors import FloatArray, check_choice, check_nonnegative, check_positive
+from .errors import (
+    FloatArray,
+    broadcast_to,
+    check_choice,
+    check_nonnegative,
+    check_positive,
+)
 from .numerics import Index, newton_bracketed
 
 __all__ = [
@@ -357,8 +363,8 @@ def _contact_arrays(
         for c in contacts
     ]
     shape = np.broadcast_shapes(*(mu.shape for mu, _, _ in arrays))
-    capacity = [np.broadcast_to(mu * q, shape).reshape(-1) for mu, q, _ in arrays]
-    scale = [np.broadcast_to(c.spin * a, shape).reshape(-1) for c, (_, _, a) in zip(
+    capacity = [broadcast_to(mu * q, shape).reshape(-1) for mu, q, _ in arrays]
+    scale = [broadcast_to(c.spin * a, shape).reshape(-1) for c, (_, _, a) in zip(
         contacts, arrays, strict=True)]  # fmt: skip
     return shape, capacity, scale
 

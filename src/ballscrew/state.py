@@ -31,7 +31,7 @@ import numpy.typing as npt
 from . import ehl
 from .contact import HertzContact, hertz
 from .design.limits import check_operating_bounds
-from .errors import FloatArray, broadcast_inputs
+from .errors import FloatArray, broadcast_inputs, broadcast_to
 from .geometry import ScrewGeometry
 from .kinematics import Kinematics, kinematics
 from .loads import BallLoads, ball_loads
@@ -290,7 +290,7 @@ def _contact_state(
         entrainment_speed=kin.entrainment_speed,
         viscosity=eta,
         speed_parameter=u_par,
-        materials_parameter=np.broadcast_to(g, q.shape),
+        materials_parameter=broadcast_to(g, q.shape),
         load_parameter=w_par,
         film_minimum=h_min,
         roughness=sigma,

@@ -9,7 +9,7 @@ from typing import Any, Protocol, TypeVar
 
 import numpy as np
 
-from ..errors import BallScrewInputError, FloatArray
+from ..errors import BallScrewInputError, FloatArray, broadcast_to
 from ..geometry import BallScrew, ScrewGeometry
 from ..lubricant import Lubricant
 from ..validity import ValidityCheck
@@ -135,7 +135,7 @@ class ModelSpec:
         shape = np.broadcast_shapes(
             speed.shape, temperature.shape, axial_load.shape, np.shape(screw.lead)
         )
-        return {k: np.broadcast_to(np.asarray(v, dtype=float), shape) for k, v in out.items()}
+        return {k: broadcast_to(np.asarray(v, dtype=float), shape) for k, v in out.items()}
 
 
 PARAMETER_RANGES: dict[str, tuple[float, float, str]] = {

@@ -163,7 +163,7 @@ from .. import rolling_losses as rl
 from ..ball_train import creep_slope, expected_train, orbital_sensitivity
 from ..contact import hertz
 from ..errors import FloatArray, check_choice, check_nonnegative
-from ..geometry import ScrewArray, ScrewGeometry, cos
+from ..geometry import ScrewArray, ScrewGeometry, cos, screw_derived
 from ..helix import SlipContact, transverse_slip_loss
 from ..kinematics import (
     differential_sliding,
@@ -582,7 +582,7 @@ def _helix_slip(
 ) -> FloatArray:
     """Torque of the transverse slip, summed over the balls of every family [N·m]."""
     screw = state.screw
-    slip = _number(kinematics(screw, 1.0).transverse_slip)
+    slip = _per_speed(screw).slip
     by_name = {c.name: c for c in state.contacts}
     rows = isinstance(screw, ScrewArray)
 
@@ -772,6 +772,9 @@ class _PerSpeed(NamedTuple):
     curvature: dict[str, Number]  # Heathcote's C / omega
     spin: dict[str, Number]  # omega_s / omega, 2-point contact
     spin4: dict[str, Number]  # |omega_s| / |omega|, 4-point contact
+    slip: Number  # the helix's transverse slip / omega [m]
+    sliding: Number  # neighbouring balls' sliding / omega [m]
+    orbital: Number  # the balls' orbital speed / omega [-]
 
 
 def _number(x: Any) -> Number:
@@ -780,7 +783,15 @@ def _number(x: Any) -> Number:
 
 
 def _per_speed(screw: ScrewGeometry) -> _PerSpeed:
-    """The screw's rolling lever, sliding curvature and spins per unit screw speed."""
+    """The screw's rolling lever, sliding curvature, spins and slips per unit screw speed.
+
+    The geometry's alone: computed once per screw object (:func:`screw_derived`).
+    """
+    return screw_derived(screw, "complete.per_speed", lambda: _unit_speed(screw))
+
+
+def _unit_speed(screw: ScrewGeometry) -> _PerSpeed:
+    """What :func:`_per_speed` keeps, computed."""
     unit = kinematics(screw, 1.0)
     c_s, c_n = differential_sliding(screw, 1.0)
     s4, n4 = four_point_spin(screw, 1.0)
@@ -789,6 +800,9 @@ def _per_speed(screw: ScrewGeometry) -> _PerSpeed:
         curvature={"screw": _number(c_s), "nut": _number(c_n)},
         spin={"screw": _number(unit.spin_screw), "nut": _number(unit.spin_nut)},
         spin4={"screw": _number(np.abs(s4)), "nut": _number(np.abs(n4))},
+        slip=_number(unit.transverse_slip),
+        sliding=_number(neighbour_sliding(screw, 1.0)),
+        orbital=_number(unit.orbital_speed),
     )
 
 
@@ -939,10 +953,10 @@ def _ratio_train(
     screw = state.screw
     shape = state.shape
     touching = screw.ball_separation == "none"  # else no surfaces of the train slide
-    unit = kinematics(screw, 1.0)
+    per_speed = _per_speed(screw)
     # Neighbouring balls slide at omega_b * D_w (4-point: / cos alpha); per unit screw speed:
-    sliding = _number(neighbour_sliding(screw, 1.0))
-    centre = _number(unit.orbital_speed) * 0.5 * screw.pitch_diameter / cos(screw.lead_angle)
+    sliding = per_speed.sliding
+    centre = per_speed.orbital * 0.5 * screw.pitch_diameter / cos(screw.lead_angle)
     mass = STEEL_DENSITY * math.pi * screw.ball_diameter**3 / 6.0
     omega2 = state.kinematics.screw_speed**2
     # Push per circuit over omega^2 [N s^2]: mu_bl m v_c^2 Theta / D_w.
