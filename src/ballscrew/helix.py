@@ -421,9 +421,17 @@ def _tables_many(aspects: FloatArray) -> tuple[FloatArray, FloatArray]:
 
     The same cubic interpolation across the aspect nodes, written on whole arrays, term
     for term in the same order (the same bits as :func:`_tables`); an aspect outside
-    [0.02, 1] gets its own tables.
+    [0.02, 1] gets its own tables. The last two sets are kept (the caller must not change
+    them): a double nut's second family has the same contacts' aspects as its first.
     """
-    aspects = np.asarray(aspects, dtype=float).reshape(-1)
+    aspects = np.ascontiguousarray(aspects, dtype=float).reshape(-1)
+    return _tables_many_kept(aspects.tobytes())
+
+
+@functools.lru_cache(maxsize=2)
+def _tables_many_kept(key: bytes) -> tuple[FloatArray, FloatArray]:
+    """:func:`_tables_many` of the aspects whose bytes are ``key``."""
+    aspects = np.frombuffer(key, dtype=float)
     inside = (aspects >= 0.02) & (aspects <= 1.0)
     j = np.zeros((aspects.size, TABLE_NODES))
     g = np.zeros((aspects.size, TABLE_NODES))

@@ -170,6 +170,7 @@ from ..kinematics import (
     four_point_spin,
     kinematics,
     neighbour_sliding,
+    neighbour_sliding_of,
     rad_s_to_rpm,
 )
 from ..lubricant import FLOODED, Lubricant, lubrication_method
@@ -515,7 +516,7 @@ def _ball_ball_film(state: OperatingState, contact: ContactState, force: FloatAr
     screw = state.screw
     radius = 0.25 * screw.ball_diameter
     ep = screw.reduced_modulus
-    surface = 0.5 * np.abs(neighbour_sliding(screw, state.kinematics.screw_speed))
+    surface = 0.5 * np.abs(neighbour_sliding_of(screw, state.kinematics))
     u_par = ehl.dimensionless_speed(contact.viscosity, surface, ep, radius)
     w_par = ehl.dimensionless_load(force, ep, radius)
     h_min: FloatArray = ehl.hamrock_dowson_1977_minimum(
