@@ -355,14 +355,15 @@ def _contact_arrays(
 ) -> tuple[tuple[int, ...], list[FloatArray], list[FloatArray]]:
     """The points' shape, and each contact's capacity mu Q and spin scale |omega_s| a, flat."""
     arrays = [
-        np.broadcast_arrays(
+        (
             np.asarray(c.friction, dtype=float),
             np.asarray(c.load, dtype=float),
             np.asarray(c.semi_axis, dtype=float),
         )
         for c in contacts
     ]
-    shape = np.broadcast_shapes(*(mu.shape for mu, _, _ in arrays))
+    # The products broadcast their factors, element by element as on broadcast copies.
+    shape = np.broadcast_shapes(*(x.shape for values in arrays for x in values))
     capacity = [broadcast_to(mu * q, shape).reshape(-1) for mu, q, _ in arrays]
     scale = [broadcast_to(c.spin * a, shape).reshape(-1) for c, (_, _, a) in zip(
         contacts, arrays, strict=True)]  # fmt: skip
@@ -599,7 +600,7 @@ def transverse_slip_loss(contacts: Sequence[SlipContact], slip: npt.ArrayLike) -
         nut_force, nut_rate = side_force(x, "nut", index)
         return screw_force - nut_force, screw_rate - nut_rate
 
-    n = int(np.prod(shape))
+    n = math.prod(shape)
     if n <= PYTHON_MAX_POINTS or (
         n >= JIT_MIN_POINTS and _helix_kernel.enabled(load=n >= JIT_LOAD_POINTS)
     ):

@@ -31,7 +31,7 @@ import numpy.typing as npt
 from . import ehl
 from .contact import HertzContact, hertz
 from .design.limits import check_operating_bounds
-from .errors import FloatArray, broadcast_inputs, broadcast_to
+from .errors import FloatArray, broadcast_inputs, broadcast_to, check_positive
 from .geometry import ScrewGeometry
 from .kinematics import Kinematics, kinematics
 from .loads import BallLoads, ball_loads
@@ -209,6 +209,7 @@ def operating_state(
         ``speed``, ``temperature`` and ``axial_load`` broadcast against each other.
     """
     w, t, fa = operating_points(speed, temperature, axial_load, broadcast=broadcast)
+    asperity = (check_positive("b", asperity_b), check_positive("c", asperity_c))
     kin = kinematics(screw, w)
     bl = ball_loads(screw, fa)
     eta = lubricant.dynamic_viscosity(t)
@@ -219,7 +220,7 @@ def operating_state(
         for side, curvature in _sides(screw).items():
             contacts.append(
                 _contact_state(side, family, q, balls, curvature, kin, eta, g, ep, hertz_method,
-                               (asperity_b, asperity_c))
+                               asperity)
             )  # fmt: skip
     return OperatingState(
         screw=screw,
@@ -261,23 +262,28 @@ def _contact_state(
     g: FloatArray,
     ep: float,
     hertz_method: str,
-    asperity: tuple[float, float],
+    asperity: tuple[FloatArray, FloatArray],
 ) -> ContactState:
     """One ball contact of a family on one side: Hertz, the film and the asperity share."""
     rx, ry, radius, sigma = curvature
     hz = hertz(q, rx, ry, ep, method=hertz_method)
-    u_par = ehl.dimensionless_speed(eta, kin.entrainment_speed, ep, rx)
-    w_par = ehl.dimensionless_load(q, ep, rx)
+    # The film's inputs follow from checked ones (the operating points, the screw, the
+    # oil at a temperature it takes, Hertz's ellipticity >= 1; the asperity constants
+    # were checked by operating_state): the formulas without their checks.
+    u_par = ehl.dimensionless_speed_unchecked(eta, kin.entrainment_speed, ep, rx)
+    w_par = ehl.dimensionless_load_unchecked(q, ep, rx)
     # An unloaded contact (single-nut family 2, lift-off) has no film:
     # film, film parameter and asperity share are reported as 0 there
     # (the fits would otherwise diverge as W**-0.07 at W -> 0).
     loaded = w_par > 0.0
     w_safe = np.where(loaded, w_par, 1.0)
     h_min = np.where(
-        loaded, ehl.hamrock_dowson_1977_minimum(rx, u_par, g, w_safe, hz.ellipticity), 0.0
+        loaded,
+        ehl.hamrock_dowson_1977_minimum_unchecked(rx, u_par, g, w_safe, hz.ellipticity),
+        0.0,
     )
     lam = ehl.lambda_ratio(h_min, sigma)
-    share = np.where(loaded, ehl.asperity_share(lam, *asperity), 0.0)
+    share = np.where(loaded, ehl.asperity_share_unchecked(lam, *asperity), 0.0)
     return ContactState(
         side=side,  # type: ignore[arg-type]
         family=family,

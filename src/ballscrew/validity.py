@@ -250,11 +250,15 @@ def outside(r: ValidityRange | str, values: Iterable[float] | FloatArray) -> lis
     """
     if isinstance(r, str):
         r = RANGES[r]
-    vals = np.asarray(values if isinstance(values, np.ndarray) else list(values), dtype=float)
-    vals = vals.reshape(-1)
-    vals = vals[np.isfinite(vals)]
     # A relative tolerance on each bound (of either sign; an infinite bound stays infinite).
     low, high = r.low - 1e-12 * abs(r.low), r.high + 1e-12 * abs(r.high)
+    if not isinstance(values, np.ndarray):
+        values = [float(v) for v in values]
+        if all(low <= v <= high or not math.isfinite(v) for v in values):
+            return []  # a few numbers inside (the usual case): no arrays
+    vals = np.asarray(values, dtype=float)
+    vals = vals.reshape(-1)
+    vals = vals[np.isfinite(vals)]
     worst = vals[(vals < low) | (vals > high)]
     if not worst.size:
         return []
@@ -393,7 +397,13 @@ def check(
         # take them too (film_checks).
         run: Any = model_check
         issues += run(screw, lubricant, speed, temperature, axial_load, parameters)
-    return [replace(issue, model=model) for issue in issues]
+    return [_with_model(issue, model) for issue in issues]
+
+
+@functools.lru_cache(maxsize=1024)
+def _with_model(issue: ValidityIssue, model: str) -> ValidityIssue:
+    """``issue`` naming ``model`` (kept: a loop over single points meets the same ones)."""
+    return replace(issue, model=model)
 
 
 def _per_screw(x: FloatArray, count: int, reduce: Any) -> FloatArray:

@@ -517,9 +517,10 @@ def _ball_ball_film(state: OperatingState, contact: ContactState, force: FloatAr
     radius = 0.25 * screw.ball_diameter
     ep = screw.reduced_modulus
     surface = 0.5 * np.abs(neighbour_sliding_of(screw, state.kinematics))
-    u_par = ehl.dimensionless_speed(contact.viscosity, surface, ep, radius)
-    w_par = ehl.dimensionless_load(force, ep, radius)
-    h_min: FloatArray = ehl.hamrock_dowson_1977_minimum(
+    # From checked inputs (the state's viscosity, the screw, a force > 0): without checks.
+    u_par = ehl.dimensionless_speed_unchecked(contact.viscosity, surface, ep, radius)
+    w_par = ehl.dimensionless_load_unchecked(force, ep, radius)
+    h_min: FloatArray = ehl.hamrock_dowson_1977_minimum_unchecked(
         radius, u_par, contact.materials_parameter, w_par, 1.0
     )
     return h_min
