@@ -630,6 +630,8 @@ def _check_solved(
     given out there.
     """
     for name, value in components.items():
+        if value.ndim == 0 and 0.0 <= float(value) < math.inf:  # one point: no arrays
+            continue
         ok = np.isfinite(value) & (value >= 0.0)
         if ok.all():
             continue

@@ -270,6 +270,34 @@ def check_choice(field: str, value: Any, options: tuple[str, ...] | list[str]) -
     return value
 
 
+def _one_float(x: Any) -> bool:
+    """Whether ``x`` is a single double: a float, a numpy float64 or a 0-d float64 array."""
+    kind = type(x)
+    return (
+        kind is float
+        or kind is np.float64
+        or (kind is np.ndarray and x.dtype is _FLOAT64 and x.ndim == 0)
+    )
+
+
+def where(condition: Any, x: Any, y: Any) -> FloatArray:
+    """``numpy.where(condition, x, y)`` of float values, without its cost at a single point.
+
+    One truth value and two single doubles: the chosen one as a new 0-d float array, what
+    numpy gives (in a twentieth of the time: the one-point path takes dozens). Anything
+    else goes to numpy.
+    """
+    kind = type(condition)
+    if (
+        (kind is np.bool_ or kind is bool or (kind is np.ndarray and condition.ndim == 0))
+        and _one_float(x)
+        and _one_float(y)
+    ):
+        return np.array(x if condition else y, dtype=np.float64)
+    result: FloatArray = np.where(condition, x, y)
+    return result
+
+
 def broadcast_to(value: Any, shape: tuple[int, ...]) -> FloatArray:
     """``numpy.broadcast_to(value, shape)``, or ``value`` itself where it has that shape.
 

@@ -34,7 +34,7 @@ import math
 import numpy as np
 import numpy.typing as npt
 
-from .errors import FloatArray
+from .errors import FloatArray, where
 
 __all__ = [
     "ball_churning_power",
@@ -246,8 +246,8 @@ def limiting_traction_coefficient(
     0.044
     """
     p = np.asarray(mean_pressure, dtype=float)
-    safe = np.where(p > 0.0, p, 1.0)
-    result: FloatArray = np.where(p > 0.0, gamma_l + tau0 / safe, 0.0)
+    safe = where(p > 0.0, p, 1.0)
+    result: FloatArray = where(p > 0.0, gamma_l + tau0 / safe, 0.0)
     return result
 
 

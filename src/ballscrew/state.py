@@ -31,7 +31,7 @@ import numpy.typing as npt
 from . import ehl
 from .contact import HertzContact, hertz
 from .design.limits import check_operating_bounds
-from .errors import FloatArray, broadcast_inputs, broadcast_to, check_positive
+from .errors import FloatArray, broadcast_inputs, broadcast_to, check_positive, where
 from .geometry import ScrewGeometry
 from .kinematics import Kinematics, kinematics
 from .loads import BallLoads, ball_loads
@@ -276,14 +276,14 @@ def _contact_state(
     # film, film parameter and asperity share are reported as 0 there
     # (the fits would otherwise diverge as W**-0.07 at W -> 0).
     loaded = w_par > 0.0
-    w_safe = np.where(loaded, w_par, 1.0)
-    h_min = np.where(
+    w_safe = where(loaded, w_par, 1.0)
+    h_min = where(
         loaded,
         ehl.hamrock_dowson_1977_minimum_unchecked(rx, u_par, g, w_safe, hz.ellipticity),
         0.0,
     )
     lam = ehl.lambda_ratio(h_min, sigma)
-    share = np.where(loaded, ehl.asperity_share_unchecked(lam, *asperity), 0.0)
+    share = where(loaded, ehl.asperity_share_unchecked(lam, *asperity), 0.0)
     return ContactState(
         side=side,  # type: ignore[arg-type]
         family=family,

@@ -162,7 +162,7 @@ from .. import ehl
 from .. import rolling_losses as rl
 from ..ball_train import creep_slope, expected_train, orbital_sensitivity
 from ..contact import hertz
-from ..errors import FloatArray, check_choice, check_nonnegative
+from ..errors import FloatArray, check_choice, check_nonnegative, where
 from ..geometry import ScrewArray, ScrewGeometry, cos, screw_derived
 from ..helix import SlipContact, transverse_slip_loss
 from ..kinematics import (
@@ -435,10 +435,10 @@ def _sliding_per_speed(
     """
     a = contact.hertz.a
     b = contact.hertz.b
-    safe_a = np.where(a > 0.0, a, 1.0)
+    safe_a = where(a > 0.0, a, 1.0)
     kappa = np.abs(curvature) * safe_a / np.maximum(np.abs(spin), 1e-300)
     integral = _rows_integral(kappa, b / safe_a) if rows else _unique_integral(kappa, b / safe_a)
-    result: FloatArray = np.where(
+    result: FloatArray = where(
         a > 0.0, mu * 1.5 / math.pi * contact.load * np.abs(spin) * a * integral, 0.0
     )
     return result
@@ -494,7 +494,7 @@ def ball_ball_friction(
     """
     screw = state.screw
     loaded = force > 0.0
-    f_safe = np.where(loaded, force, 1.0)
+    f_safe = where(loaded, force, 1.0)
     h_min = _ball_ball_film(state, contact, f_safe)
     sigma = math.sqrt(2.0) * screw.roughness_ball
     share = ehl.asperity_share(ehl.lambda_ratio(h_min, sigma), asperity_b, asperity_c)
@@ -503,7 +503,7 @@ def ball_ball_friction(
     mu = rl.mixed_friction_coefficient(
         share, boundary, rl.limiting_traction_coefficient(tau0, gamma_l, mean_pressure)
     )
-    result: FloatArray = np.where(loaded, mu, boundary)
+    result: FloatArray = where(loaded, mu, boundary)
     return result
 
 
