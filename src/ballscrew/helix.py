@@ -87,7 +87,7 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Literal
+from typing import Any, Literal
 
 import numpy as np
 import numpy.typing as npt
@@ -402,6 +402,13 @@ def _stacked_tables(
     )
 
 
+@functools.lru_cache(maxsize=64)
+def _listed_tables(sides: tuple[bool, ...], aspects: tuple[float, ...]) -> tuple[Any, Any]:
+    """:func:`_stacked_tables`' G and J tables as nested lists (one set), for plain Python."""
+    _, g_nodes, j_nodes = _stacked_tables(sides, aspects)
+    return g_nodes.tolist(), j_nodes.tolist()
+
+
 def _kernel_inputs(
     contacts: Sequence[SlipContact], slip: float
 ) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray, FloatArray, FloatArray, IntArray]:
@@ -604,9 +611,17 @@ def transverse_slip_loss(contacts: Sequence[SlipContact], slip: npt.ArrayLike) -
     if n <= PYTHON_MAX_POINTS or (
         n >= JIT_MIN_POINTS and _helix_kernel.enabled(load=n >= JIT_LOAD_POINTS)
     ):
+        compiled = n > PYTHON_MAX_POINTS
+        cap, per_share, stacked_scale, sides, g_nodes, j_nodes = _stacked(
+            contacts, capacity, scale, s
+        )
+        if not compiled:  # plain Python: the tables as nested lists, kept
+            g_nodes, j_nodes = _listed_tables(
+                tuple(c.side == "screw" for c in contacts), tuple(float(c.aspect) for c in contacts)
+            )
         x, power, force = _helix_kernel.run(
-            *_stacked(contacts, capacity, scale, s), SHARE_TOLERANCE, MAX_ITERATIONS,
-            compiled=n > PYTHON_MAX_POINTS,
+            cap, per_share, stacked_scale, sides, g_nodes, j_nodes, SHARE_TOLERANCE,
+            MAX_ITERATIONS, compiled=compiled,
         )  # fmt: skip
         return SlipShare(
             power=power.reshape(shape), screw_share=x.reshape(shape), force=force.reshape(shape)
