@@ -24,6 +24,7 @@ from .errors import (
     BallScrewInputError,
     BallScrewValidityWarning,
     FloatArray,
+    broadcast_shape,
 )
 from .friction import MODELS, ModelSpec, get_model
 from .geometry import BallScrew, ScrewArray
@@ -198,7 +199,10 @@ def friction_torque(
     )
     # The checks look at the extremes only: the unbroadcast inputs have the same ones.
     issues = validity.check(screw, lubricant, w0, t0, fa0, spec.name, used, spec.checks)
-    w, t, fa = np.broadcast_arrays(w0, t0, fa0)
+    if w0.shape == t0.shape == fa0.shape:
+        w, t, fa = w0, t0, fa0  # one shape (a single point): no broadcast views needed
+    else:
+        w, t, fa = np.broadcast_arrays(w0, t0, fa0)
     return _result(spec, used, kept, total, (w, t, fa), screw.lead, issues, warn, state)
 
 
@@ -555,7 +559,7 @@ def _evaluate(
         return out
 
     w0, t0, fa0 = points
-    shape = np.broadcast_shapes(w0.shape, t0.shape, fa0.shape)
+    shape = broadcast_shape(w0.shape, t0.shape, fa0.shape)
     n = math.prod(shape)
     if n <= chunk:
         # The unexpanded inputs: a grid given as an outer product is only

@@ -298,6 +298,15 @@ def where(condition: Any, x: Any, y: Any) -> FloatArray:
     return result
 
 
+def broadcast_shape(*shapes: tuple[int, ...]) -> tuple[int, ...]:
+    """``numpy.broadcast_shapes(*shapes)``, at once where every shape is the same one."""
+    first = shapes[0]
+    for shape in shapes[1:]:
+        if shape != first:
+            return np.broadcast_shapes(*shapes)
+    return first
+
+
 def broadcast_to(value: Any, shape: tuple[int, ...]) -> FloatArray:
     """``numpy.broadcast_to(value, shape)``, or ``value`` itself where it has that shape.
 

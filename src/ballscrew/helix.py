@@ -96,6 +96,7 @@ from . import _helix_kernel
 from . import rolling_losses as rl
 from .errors import (
     FloatArray,
+    broadcast_shape,
     broadcast_to,
     check_choice,
     check_nonnegative,
@@ -363,7 +364,7 @@ def _contact_arrays(
         for c in contacts
     ]
     # The products broadcast their factors, element by element as on broadcast copies.
-    shape = np.broadcast_shapes(*(x.shape for values in arrays for x in values))
+    shape = broadcast_shape(*(x.shape for values in arrays for x in values))
     capacity = [broadcast_to(mu * q, shape).reshape(-1) for mu, q, _ in arrays]
     scale = [broadcast_to(c.spin * a, shape).reshape(-1) for c, (_, _, a) in zip(
         contacts, arrays, strict=True)]  # fmt: skip

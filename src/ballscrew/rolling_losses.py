@@ -361,11 +361,15 @@ def _sliding_quadrature(
     curvature: npt.ArrayLike, aspect: npt.ArrayLike, slip: npt.ArrayLike, *, force: bool
 ) -> tuple[FloatArray, FloatArray]:
     """Power and (optionally) transverse-force integrals on the disk rule, in bounded chunks."""
-    kappa, beta, sigma = np.broadcast_arrays(
+    given = (
         np.asarray(curvature, dtype=float),
         np.asarray(aspect, dtype=float),
         np.asarray(slip, dtype=float),
     )
+    if given[0].ndim == given[1].ndim == given[2].ndim == 0:
+        kappa, beta, sigma = given  # one point: nothing to broadcast
+    else:
+        kappa, beta, sigma = np.broadcast_arrays(*given)
     x, y, w = _FULL_RULE if force else _RULE  # with a slip the integrand is not even in X
     flat = [a.reshape(-1) for a in (kappa, beta, sigma)]
     power = np.empty(flat[0].shape)

@@ -31,7 +31,14 @@ import numpy.typing as npt
 from . import ehl
 from .contact import HertzContact, hertz
 from .design.limits import check_operating_bounds
-from .errors import FloatArray, broadcast_inputs, broadcast_to, check_positive, where
+from .errors import (
+    FloatArray,
+    broadcast_inputs,
+    broadcast_shape,
+    broadcast_to,
+    check_positive,
+    where,
+)
 from .geometry import ScrewGeometry
 from .kinematics import Kinematics, kinematics
 from .loads import BallLoads, ball_loads
@@ -229,7 +236,7 @@ def operating_state(
         kinematics=kin,
         loads=bl,
         contacts=tuple(contacts),
-        shape=np.broadcast_shapes(w.shape, t.shape, fa.shape, np.shape(screw.lead)),
+        shape=broadcast_shape(w.shape, t.shape, fa.shape, np.shape(screw.lead)),
     )
 
 

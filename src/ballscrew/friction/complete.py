@@ -285,6 +285,9 @@ def _unique_integral(kappa: FloatArray, aspect: FloatArray) -> FloatArray:
     the interpolation (pointwise, as if it had been evaluated on the distinct
     pairs); otherwise each pair gets the integer key of its two ranks.
     """
+    if np.size(kappa) == 1 and np.size(aspect) == 1:  # one point: the rule broadcasts
+        one: FloatArray = rl.spin_sliding_integral(kappa, aspect)
+        return one
     kappa, aspect = np.broadcast_arrays(kappa, aspect)
     if kappa.size <= DIRECT_INTEGRALS:  # a few points: at each, no counting needed
         few: FloatArray = rl.spin_sliding_integral(kappa, aspect)
@@ -560,7 +563,7 @@ def _flooded(
     churning: FloatArray = np.zeros(shape)
     per_ball_churn = rl.ball_churning_power(eta, rho, centre, screw.ball_diameter)
     for c in trains:
-        if not np.any(c.balls):
+        if not _any(c.balls):
             continue
         churning = churning + c.balls * per_ball_churn
         if screw.ball_separation != "none":  # spacer balls or a cage: no sliding neighbours
@@ -594,7 +597,7 @@ def _helix_slip(
             k = np.asarray(c.hertz.ellipticity)
             aspect: Number = 1.0 / np.max(k.reshape(k.shape[0], -1), axis=1)
         else:
-            aspect = 1.0 / float(np.max(c.hertz.ellipticity))
+            aspect = 1.0 / _largest(c.hertz.ellipticity)
         return SlipContact(c.side, mu[c.name], c.load, c.hertz.a, aspect, spin[c.side])
 
     groups: list[tuple[tuple[str, ...], int | npt.NDArray[np.intp]]]
@@ -604,7 +607,7 @@ def _helix_slip(
         groups = [((f"screw-{f}", f"nut-{f}"), by_name[f"screw-{f}"].balls) for f in (1, 2)]
     total: FloatArray = np.zeros(state.shape)
     for names, balls in groups:
-        if not np.any(balls):
+        if not _any(balls):
             continue
         share = transverse_slip_loss([slip_contact(by_name[n]) for n in names], slip)
         total = total + balls * share.power
@@ -706,7 +709,8 @@ def complete(
     theta = float(check_nonnegative("return_turning_angle", return_turning_angle, "rad"))
     alpha_h = float(check_nonnegative("hysteresis_loss_factor", hysteresis_loss_factor))
     seal = float(check_nonnegative("seal_torque", seal_torque, "N·m"))
-    check_wiper_drag("seal_torque", seal, screw.pitch_diameter, warn_above=False)
+    if seal > 0.0:  # no drag cannot be too much
+        check_wiper_drag("seal_torque", seal, screw.pitch_diameter, warn_above=False)
     tau0, gamma_l = limiting_shear(lubricant, limiting_shear_stress, limiting_shear_coefficient)
     state = model_state(
         screw, lubricant, speed, temperature, axial_load, hertz_method=hertz_method,
@@ -779,6 +783,16 @@ class _PerSpeed(NamedTuple):
     orbital: Number  # the balls' orbital speed / omega [-]
 
 
+def _any(balls: int | npt.NDArray[np.intp]) -> bool:
+    """Whether any screw has loaded balls here (a count, or one per screw of a ScrewArray)."""
+    return balls != 0 if type(balls) is int else bool(np.any(balls))
+
+
+def _largest(x: FloatArray) -> float:
+    """The largest value of ``x`` (a single value as it is) as a float."""
+    return float(x) if np.ndim(x) == 0 else float(np.max(x))
+
+
 def _number(x: Any) -> Number:
     """``x`` as a float (one screw) or an array (one value per screw of a ScrewArray)."""
     return float(x) if np.ndim(x) == 0 else np.asarray(x, dtype=float)
@@ -829,7 +843,7 @@ def _groove_losses(
     mu: dict[str, FloatArray] = {}
     rows = isinstance(screw, ScrewArray)
     for c in state.contacts:
-        if not np.any(c.balls):
+        if not _any(c.balls):
             continue
         z = c.balls
         f_r = rl.rolling_force_houpert(
@@ -937,7 +951,7 @@ def _creep_coefficient(contact: ContactState, mu: FloatArray, spin: float) -> Fl
     (:func:`ballscrew.ball_train.creep_slope`); 0 where the contact carries no load.
     """
     a = np.broadcast_to(contact.hertz.a, np.shape(contact.load))
-    aspect = 1.0 / float(np.max(contact.hertz.ellipticity))
+    aspect = 1.0 / _largest(contact.hertz.ellipticity)
     capacity = mu * contact.load * float(creep_slope(aspect))
     result: FloatArray = np.divide(
         capacity, abs(spin) * a, out=np.zeros(np.broadcast(capacity, a).shape), where=a > 0.0
