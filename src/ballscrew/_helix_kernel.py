@@ -246,14 +246,15 @@ def run(
         # Plain Python (a few points): nested lists of floats index and compute several
         # times faster than numpy's scalars, with the same operations (the same bits).
         # The tables may come as such lists already (kept by the caller).
-        if table is None:
-            g_nodes, j_nodes, table = [g_nodes], [j_nodes], [0] * n
+        g_sets: Any = g_nodes if table is not None else [g_nodes]
+        j_sets: Any = j_nodes if table is not None else [j_nodes]
+        sets = [0] * n if table is None else [int(t) for t in table]
         shares(
             np.asarray(capacity, dtype=float).tolist(),
             np.asarray(per_share, dtype=float).tolist(),
             np.asarray(scale, dtype=float).tolist(), [bool(v) for v in screw_side],
-            _listed(g_nodes), _listed(j_nodes), [int(t) for t in table], float(tolerance),
-            int(max_iter), x, power, force,
+            _listed(g_sets), _listed(j_sets), sets, float(tolerance), int(max_iter),
+            x, power, force,
         )  # fmt: skip
         return x, power, force
     kernel = _compiled()

@@ -58,7 +58,7 @@ from __future__ import annotations
 import functools
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Literal
+from typing import Any, Literal
 
 import numpy as np
 import numpy.typing as npt
@@ -331,14 +331,20 @@ def hertz_exact(
     .. [1] B. J. Hamrock, D. E. Brewe, J. Lubr. Technol. 105 (1983) 171-177.
     .. [2] K. L. Johnson, *Contact Mechanics*, 1985, §4.2.
     """
-    if type(rx) is float and type(ry) is float and type(reduced_modulus) is float:
+    geometry: Any = (rx, ry, reduced_modulus)
+    if _three_floats(*geometry):
         # One geometry (a screw's contacts): its values per unit load, kept (the same bits).
-        a1, b1, d1, k = _exact_per_load(rx, ry, reduced_modulus)
-        return _scale_by_load("exact", check_nonnegative("load", load, "N"), a1, b1, d1, k)
+        unit: Any = _exact_per_load(*geometry)
+        return _scale_by_load("exact", check_nonnegative("load", load, "N"), *unit)
     q, r_small, r_big, r_sum, ep = _prepare(load, rx, ry, reduced_modulus)
     k = ellipticity_exact(r_big / r_small)
     big_f, big_e = complete_integrals(k)
     return _assemble("exact", q, r_sum, ep, k, big_e, big_f)
+
+
+def _three_floats(x: Any, y: Any, z: Any) -> bool:
+    """Whether the three are single numbers (floats), not arrays."""
+    return isinstance(x, float) and isinstance(y, float) and isinstance(z, float)
 
 
 @functools.lru_cache(maxsize=1024)
