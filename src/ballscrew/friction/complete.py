@@ -429,22 +429,58 @@ def _interpolated_integral(kappa: FloatArray, aspect: FloatArray) -> FloatArray:
 
 
 def _sliding_per_speed(
-    contact: ContactState, mu: FloatArray, spin: Number, curvature: Number, rows: bool = False
+    contact: ContactState,
+    mu: FloatArray,
+    spin: Number,
+    curvature: Number,
+    rows: bool = False,
+    integral: FloatArray | None = None,
 ) -> FloatArray:
     """Spin + differential sliding power of one contact per unit screw speed [N·m].
 
     ``rows``: the contact's arrays hold many screws along their first axis
-    (:func:`_rows_integral`).
+    (:func:`_rows_integral`). ``integral``: the sliding integral at the contact's
+    :func:`_sliding_arguments`, if the caller has it (:func:`_one_point_integrals`).
     """
     a = contact.hertz.a
-    b = contact.hertz.b
-    safe_a = where(a > 0.0, a, 1.0)
-    kappa = np.abs(curvature) * safe_a / np.maximum(np.abs(spin), 1e-300)
-    integral = _rows_integral(kappa, b / safe_a) if rows else _unique_integral(kappa, b / safe_a)
+    if integral is None:
+        kappa, aspect = _sliding_arguments(contact, spin, curvature)
+        integral = _rows_integral(kappa, aspect) if rows else _unique_integral(kappa, aspect)
     result: FloatArray = where(
         a > 0.0, mu * 1.5 / math.pi * contact.load * np.abs(spin) * a * integral, 0.0
     )
     return result
+
+
+def _sliding_arguments(
+    contact: ContactState, spin: Number, curvature: Number
+) -> tuple[FloatArray, FloatArray]:
+    r"""The sliding integral's :math:`\kappa` and aspect :math:`b/a` at a contact."""
+    a = contact.hertz.a
+    safe_a = where(a > 0.0, a, 1.0)
+    kappa = np.abs(curvature) * safe_a / np.maximum(np.abs(spin), 1e-300)
+    return kappa, contact.hertz.b / safe_a
+
+
+def _one_point_integrals(
+    wanted: list[tuple[ContactState, Number, Number]],
+) -> list[FloatArray] | None:
+    """The sliding integrals of the (contact, spin, curvature) ``wanted`` at one point, or None.
+
+    At a single operating point the contacts' integrals are taken in one evaluation of
+    the rule (:func:`ballscrew.rolling_losses.spin_sliding_integral`, row by row the
+    same sums); with more points (or many screws) None: each contact takes its own.
+    """
+    arguments = [_sliding_arguments(c, spin, curvature) for c, spin, curvature in wanted]
+    if not all(np.size(k) == 1 and np.size(b) == 1 for k, b in arguments):
+        return None
+    values = rl.spin_sliding_integral(
+        np.array([float(k) for k, _ in arguments]), np.array([float(b) for _, b in arguments])
+    )
+    return [
+        values[i].reshape(np.broadcast_shapes(np.shape(k), np.shape(b)))
+        for i, (k, b) in enumerate(arguments)
+    ]
 
 
 def ball_ball_friction(
@@ -842,9 +878,13 @@ def _groove_losses(
     parts = {k: np.zeros(state.shape) for k in ("rolling", "sliding", "hysteresis", "four_point")}
     mu: dict[str, FloatArray] = {}
     rows = isinstance(screw, ScrewArray)
-    for c in state.contacts:
-        if not _any(c.balls):
-            continue
+    loaded = [c for c in state.contacts if _any(c.balls)]
+    # Each loaded contact's 2-point integral (and its 4-point one), taken together at one point.
+    spins = (spin, spin4) if four else (spin,)
+    together = None if rows else _one_point_integrals(
+        [(c, s[c.side], curvature[c.side]) for c in loaded for s in spins]
+    )  # fmt: skip
+    for i, c in enumerate(loaded):
         z = c.balls
         f_r = rl.rolling_force_houpert(
             screw.reduced_modulus,
@@ -859,11 +899,12 @@ def _groove_losses(
         mu[c.name] = rl.mixed_friction_coefficient(
             c.asperity_share, mu_bl, rl.limiting_traction_coefficient(tau0, gamma_l, mean_pressure)
         )
-        two_point = _sliding_per_speed(c, mu[c.name], spin[c.side], curvature[c.side], rows)
+        own = (None, None) if together is None else together[len(spins) * i :][: len(spins)]
+        two_point = _sliding_per_speed(c, mu[c.name], spin[c.side], curvature[c.side], rows, own[0])
         parts["sliding"] += z * two_point
         if four:
             parts["four_point"] += z * (
-                _sliding_per_speed(c, mu[c.name], spin4[c.side], curvature[c.side], rows)
+                _sliding_per_speed(c, mu[c.name], spin4[c.side], curvature[c.side], rows, own[1])
                 - two_point
             )
         parts["hysteresis"] += (
