@@ -475,7 +475,8 @@ def _one_point_integrals(
     if not all(np.size(k) == 1 and np.size(b) == 1 for k, b in arguments):
         return None
     values = rl.spin_sliding_integral(
-        np.array([float(k) for k, _ in arguments]), np.array([float(b) for _, b in arguments])
+        np.array([np.ravel(k)[0] for k, _ in arguments]),
+        np.array([np.ravel(b)[0] for _, b in arguments]),
     )
     return [
         values[i].reshape(np.broadcast_shapes(np.shape(k), np.shape(b)))
