@@ -240,19 +240,17 @@ def run(
     ``g_nodes`` and ``j_nodes`` are (K, M + 1) tables shared by every point, or
     (T, K, M + 1) sets of them with ``table`` (n,) naming each point's set.
     """
-    n = np.shape(capacity)[1]
+    n = len(capacity[0])
     x, power, force = np.empty(n), np.empty(n), np.empty(n)
     if not compiled:
         # Plain Python (a few points): nested lists of floats index and compute several
         # times faster than numpy's scalars, with the same operations (the same bits).
-        # The tables may come as such lists already (kept by the caller).
+        # The inputs may come as such lists already (the caller's, tables kept).
         g_sets: Any = g_nodes if table is not None else [g_nodes]
         j_sets: Any = j_nodes if table is not None else [j_nodes]
         sets = [0] * n if table is None else [int(t) for t in table]
         shares(
-            np.asarray(capacity, dtype=float).tolist(),
-            np.asarray(per_share, dtype=float).tolist(),
-            np.asarray(scale, dtype=float).tolist(), [bool(v) for v in screw_side],
+            _rows(capacity), _rows(per_share), _rows(scale), [bool(v) for v in screw_side],
             _listed(g_sets), _listed(j_sets), sets, float(tolerance), int(max_iter),
             x, power, force,
         )  # fmt: skip
@@ -270,6 +268,13 @@ def run(
         x, power, force,
     )  # fmt: skip
     return x, power, force
+
+
+def _rows(values: Any) -> Any:
+    """(K, n) values as K lists of floats: the given lists, or an array's."""
+    if isinstance(values, list) and (not values or isinstance(values[0], list)):
+        return values
+    return np.asarray(values, dtype=float).tolist()
 
 
 def _listed(tables: Any) -> Any:

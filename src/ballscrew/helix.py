@@ -612,17 +612,24 @@ def transverse_slip_loss(contacts: Sequence[SlipContact], slip: npt.ArrayLike) -
     if n <= PYTHON_MAX_POINTS or (
         n >= JIT_MIN_POINTS and _helix_kernel.enabled(load=n >= JIT_LOAD_POINTS)
     ):
-        compiled = n > PYTHON_MAX_POINTS
-        cap, per_share, stacked_scale, sides, g_nodes, j_nodes = _stacked(
-            contacts, capacity, scale, s
-        )
-        if not compiled:  # plain Python: the tables as nested lists, kept
-            g_nodes, j_nodes = _listed_tables(
-                tuple(c.side == "screw" for c in contacts), tuple(float(c.aspect) for c in contacts)
+        if n > PYTHON_MAX_POINTS:
+            inputs: tuple[Any, ...] = _stacked(contacts, capacity, scale, s)
+        else:
+            # Plain Python: the inputs of _stacked as nested lists of floats (the slip ratio
+            # per unit share divided alike, 0 at an unloaded contact), the tables kept so.
+            sides = tuple(c.side == "screw" for c in contacts)
+            scale_rows = [row.tolist() for row in scale]
+            inputs = (
+                [row.tolist() for row in capacity],
+                [[s / (w if w > 0.0 else math.inf) for w in row] for row in scale_rows],
+                scale_rows,
+                list(sides),
+                *_listed_tables(sides, tuple(float(c.aspect) for c in contacts)),
             )
+        cap, per_share, stacked_scale, sides_of, g_nodes, j_nodes = inputs
         x, power, force = _helix_kernel.run(
-            cap, per_share, stacked_scale, sides, g_nodes, j_nodes, SHARE_TOLERANCE,
-            MAX_ITERATIONS, compiled=compiled,
+            cap, per_share, stacked_scale, sides_of, g_nodes, j_nodes, SHARE_TOLERANCE,
+            MAX_ITERATIONS, compiled=n > PYTHON_MAX_POINTS,
         )  # fmt: skip
         return SlipShare(
             power=power.reshape(shape), screw_share=x.reshape(shape), force=force.reshape(shape)
