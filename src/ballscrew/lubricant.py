@@ -48,6 +48,7 @@ from .errors import (
     check_in_range,
     check_nonnegative,
     check_positive,
+    minimum,
 )
 from .plausible import LUBRICANT_RANGES, check_lubricant_property
 
@@ -248,7 +249,7 @@ def astm_d341_viscosity(temperature: ArrayLike, a: ArrayLike, b: ArrayLike) -> F
     zm = z - 0.7
     # The correction vanishes above a few mm²/s (exp(-292) at 10): capping its
     # argument keeps an overflowed Z an infinite viscosity instead of inf - inf.
-    zc = np.minimum(zm, 10.0)
+    zc = minimum(zm, 10.0)
     correction = np.exp(-0.7487 - 3.295 * zc + 0.6119 * zc**2 - 0.3193 * zc**3)
     result: FloatArray = (zm - correction) * _CST
     return result

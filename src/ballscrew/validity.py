@@ -383,13 +383,12 @@ def check(
     if isinstance(screw, ScrewArray):
         issues += _common_many(screw, speed, axial_load)
     else:
-        n_max = float(rad_s_to_rpm(np.max(np.abs(speed))))
+        n_max = float(rad_s_to_rpm(_span(np.abs(speed))[1]))
         issues += outside("speed factor d_m*n [mm*rpm]", [screw.pitch_diameter * 1e3 * n_max])
         if screw.nut != "single" and screw.preload > 0.0:
-            issues += outside(
-                "axial load / preload", [float(np.max(np.abs(axial_load))) / screw.preload]
-            )
-    t_extremes = [float(np.min(temperature)), float(np.max(temperature))]
+            load_max = _span(np.abs(axial_load))[1]
+            issues += outside("axial load / preload", [load_max / screw.preload])
+    t_extremes = list(_span(temperature))
     for limit in lubricant_limits(lubricant):
         issues += outside(limit, t_extremes)
     for model_check in checks:
@@ -404,6 +403,14 @@ def check(
 def _with_model(issue: ValidityIssue, model: str) -> ValidityIssue:
     """``issue`` naming ``model`` (kept: a loop over single points meets the same ones)."""
     return replace(issue, model=model)
+
+
+def _span(x: FloatArray) -> tuple[float, float]:
+    """The smallest and largest value of the float array ``x`` (one value: read at once)."""
+    if x.size == 1:
+        value = float(x.reshape(-1)[0])
+        return value, value
+    return float(np.min(x)), float(np.max(x))
 
 
 def _per_screw(x: FloatArray, count: int, reduce: Any) -> FloatArray:
@@ -458,16 +465,18 @@ def film_checks(
         )  # fmt: skip
     w_abs = np.abs(speed)
     moving = w_abs[w_abs > 0.0]
+    slowest, fastest = _span(moving) if moving.size else (0.0, 0.0)
+    t_low, t_high = _span(temperature)
     return list(
         _film_issues(
             screw,
             lubricant,
             parameters.get("hertz_method") == "houpert",
-            float(np.min(temperature)),
-            float(np.max(temperature)),
-            float(np.min(moving)) if moving.size else 0.0,
-            float(np.max(moving)) if moving.size else 0.0,
-            float(np.max(np.abs(axial_load))),
+            t_low,
+            t_high,
+            slowest,
+            fastest,
+            _span(np.abs(axial_load))[1],
         )
     )
 

@@ -162,7 +162,7 @@ from .. import ehl
 from .. import rolling_losses as rl
 from ..ball_train import creep_slope, expected_train, orbital_sensitivity
 from ..contact import hertz
-from ..errors import FloatArray, check_choice, check_nonnegative, where
+from ..errors import FloatArray, check_choice, check_nonnegative, maximum, where
 from ..geometry import ScrewArray, ScrewGeometry, cos, screw_derived
 from ..helix import SlipContact, transverse_slip_loss
 from ..kinematics import (
@@ -458,7 +458,7 @@ def _sliding_arguments(
     r"""The sliding integral's :math:`\kappa` and aspect :math:`b/a` at a contact."""
     a = contact.hertz.a
     safe_a = where(a > 0.0, a, 1.0)
-    kappa = np.abs(curvature) * safe_a / np.maximum(np.abs(spin), 1e-300)
+    kappa = np.abs(curvature) * safe_a / maximum(np.abs(spin), 1e-300)
     return kappa, contact.hertz.b / safe_a
 
 
