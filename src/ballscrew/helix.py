@@ -341,6 +341,11 @@ def kernel_scope() -> contextlib.AbstractContextManager[None]:
     return _helix_kernel.scoped()
 
 
+def _single(x: Any) -> bool:
+    """Whether ``x`` is one number (one screw's), not an array of them."""
+    return type(x) is float or np.ndim(x) == 0
+
+
 def _check_contacts(contacts: Sequence[SlipContact]) -> None:
     sides = {c.side for c in contacts}
     if sides != {"screw", "nut"}:
@@ -577,7 +582,7 @@ def transverse_slip_loss(contacts: Sequence[SlipContact], slip: npt.ArrayLike) -
     >>> round(float(r.screw_share), 6), round(float(r.force), 3)
     (0.5, 2.29)
     """
-    if np.ndim(slip) or any(np.ndim(c.aspect) or np.ndim(c.spin) for c in contacts):
+    if not _single(slip) or not all(_single(c.aspect) and _single(c.spin) for c in contacts):
         return _rows_slip_loss(contacts, slip)
     _check_contacts(contacts)
     s = float(check_nonnegative("slip", slip, "m"))

@@ -48,6 +48,7 @@ from .errors import (
     check_in_range,
     check_nonnegative,
     check_positive,
+    every,
     minimum,
 )
 from .plausible import LUBRICANT_RANGES, check_lubricant_property
@@ -866,7 +867,7 @@ class Lubricant:
                 ok = t + 95.0 > 0.0
             else:
                 ok = np.isfinite(self.kinematic_viscosity(t))
-        if not np.all(ok):
+        if not every(ok):
             cold = float(np.min(np.asarray(t)[~np.asarray(ok)]))
             raise BallScrewInputError(
                 field,

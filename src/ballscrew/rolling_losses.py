@@ -366,8 +366,8 @@ def _sliding_quadrature(
         np.asarray(aspect, dtype=float),
         np.asarray(slip, dtype=float),
     )
-    if given[0].ndim == given[1].ndim == given[2].ndim == 0:
-        kappa, beta, sigma = given  # one point: nothing to broadcast
+    if given[0].shape == given[1].shape == given[2].shape:
+        kappa, beta, sigma = given  # one shape (one point, or a contact each): no broadcast
     else:
         kappa, beta, sigma = np.broadcast_arrays(*given)
     x, y, w = _FULL_RULE if force else _RULE  # with a slip the integrand is not even in X

@@ -162,7 +162,14 @@ from .. import ehl
 from .. import rolling_losses as rl
 from ..ball_train import creep_slope, expected_train, orbital_sensitivity
 from ..contact import hertz
-from ..errors import FloatArray, check_choice, check_nonnegative, maximum, where
+from ..errors import (
+    FloatArray,
+    broadcast_shape,
+    check_choice,
+    check_nonnegative,
+    maximum,
+    where,
+)
 from ..geometry import ScrewArray, ScrewGeometry, cos, screw_derived
 from ..helix import SlipContact, transverse_slip_loss
 from ..kinematics import (
@@ -479,7 +486,7 @@ def _one_point_integrals(
         np.array([np.ravel(b)[0] for _, b in arguments]),
     )
     return [
-        values[i].reshape(np.broadcast_shapes(np.shape(k), np.shape(b)))
+        values[i].reshape(broadcast_shape(np.shape(k), np.shape(b)))
         for i, (k, b) in enumerate(arguments)
     ]
 
