@@ -566,9 +566,15 @@ def _evaluate(
         # expanded where a quantity depends on all three.
         state = state_of(w0, t0, fa0)
         out = run(w0, t0, fa0, state)
-        total = np.zeros(shape)
-        for value in out.values():
-            total += value
+        if shape:
+            total = np.zeros(shape)
+            for value in out.values():
+                total += value
+        else:  # one point: the same additions in the same order, on numbers
+            one = 0.0
+            for value in out.values():
+                one += float(value)
+            total = np.array(one)
         # The model's components come broadcast to the points' shape (ModelSpec.__call__):
         # kept as arrays of their own, only when asked for.
         kept = {k: np.array(v, dtype=float) for k, v in out.items()} if keep else {}
