@@ -31,7 +31,7 @@ from .geometry import BallScrew, ScrewArray
 from .helix import JIT_LOAD_POINTS, load_kernel
 from .kinematics import rad_s_to_rpm
 from .lubricant import Lubricant
-from .state import OperatingState, operating_points, operating_state
+from .state import OperatingState, operating_points, operating_state_unchecked
 from .validity import ValidityIssue
 
 __all__ = [
@@ -390,10 +390,9 @@ def _evaluate_rows(
     try:
         state = None
         if spec.uses_state:
-            state = operating_state(
-                arr, lubricant, speed=w, temperature=t, axial_load=fa,
-                hertz_method=used["hertz_method"], asperity_b=used["asperity_b"],
-                asperity_c=used["asperity_c"], broadcast=False,
+            state = operating_state_unchecked(
+                arr, lubricant, w, t, fa, hertz_method=used["hertz_method"],
+                asperity_b=used["asperity_b"], asperity_c=used["asperity_c"],
             )  # fmt: skip
         out = spec(arr, lubricant, w, t, fa, state, **parameters)
         _check_solved(spec.name, out, w, t, fa)
@@ -544,10 +543,10 @@ def _evaluate(
     def state_of(sw: FloatArray, st: FloatArray, sf: FloatArray) -> OperatingState | None:
         if not spec.uses_state:
             return None
-        return operating_state(
-            screw, lubricant, speed=sw, temperature=st, axial_load=sf,
-            hertz_method=used["hertz_method"], asperity_b=used["asperity_b"],
-            asperity_c=used["asperity_c"], broadcast=False,
+        # The points were checked by _prepared (operating_points): composed without again.
+        return operating_state_unchecked(
+            screw, lubricant, sw, st, sf, hertz_method=used["hertz_method"],
+            asperity_b=used["asperity_b"], asperity_c=used["asperity_c"],
         )  # fmt: skip
 
     def run(sw: FloatArray, st: FloatArray, sf: FloatArray, state: OperatingState | None) -> Any:

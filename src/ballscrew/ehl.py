@@ -229,6 +229,11 @@ def lambda_ratio(film_thickness: ArrayLike, roughness: ArrayLike) -> FloatArray:
     """
     h = check_nonnegative("film_thickness", film_thickness, "m")
     s = check_positive("roughness", roughness, "m")
+    return lambda_ratio_unchecked(h, s)
+
+
+def lambda_ratio_unchecked(h: Any, s: Any) -> FloatArray:
+    """:func:`lambda_ratio` of inputs the caller has checked (the one formula)."""
     result: FloatArray = h / s
     return result
 

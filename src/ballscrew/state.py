@@ -216,6 +216,29 @@ def operating_state(
         ``speed``, ``temperature`` and ``axial_load`` broadcast against each other.
     """
     w, t, fa = operating_points(speed, temperature, axial_load, broadcast=broadcast)
+    return operating_state_unchecked(
+        screw, lubricant, w, t, fa, hertz_method=hertz_method, asperity_b=asperity_b,
+        asperity_c=asperity_c,
+    )  # fmt: skip
+
+
+def operating_state_unchecked(
+    screw: ScrewGeometry,
+    lubricant: Lubricant,
+    w: FloatArray,
+    t: FloatArray,
+    fa: FloatArray,
+    *,
+    hertz_method: str,
+    asperity_b: float,
+    asperity_c: float,
+) -> OperatingState:
+    """:func:`operating_state` at operating points the caller has checked.
+
+    ``w``, ``t``, ``fa``: speed [rad/s], temperature [°C] and axial load [N] as
+    :func:`operating_points` returns them (float arrays within their bounds, of shapes
+    that broadcast); the chain checks them once for the call and composes the state here.
+    """
     asperity = (check_positive("b", asperity_b), check_positive("c", asperity_c))
     kin = kinematics(screw, w)
     bl = ball_loads(screw, fa)
@@ -289,7 +312,7 @@ def _contact_state(
         ehl.hamrock_dowson_1977_minimum_unchecked(rx, u_par, g, w_safe, hz.ellipticity),
         0.0,
     )
-    lam = ehl.lambda_ratio(h_min, sigma)
+    lam = ehl.lambda_ratio_unchecked(h_min, sigma)
     share = where(loaded, ehl.asperity_share_unchecked(lam, *asperity), 0.0)
     return ContactState(
         side=side,  # type: ignore[arg-type]

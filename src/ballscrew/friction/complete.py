@@ -152,6 +152,7 @@ sliding speeds keep the lead angle.
 
 from __future__ import annotations
 
+import functools
 import math
 from typing import Any, NamedTuple
 
@@ -544,7 +545,7 @@ def ball_ball_friction(
     f_safe = where(loaded, force, 1.0)
     h_min = _ball_ball_film(state, contact, f_safe)
     sigma = math.sqrt(2.0) * screw.roughness_ball
-    share = ehl.asperity_share(ehl.lambda_ratio(h_min, sigma), asperity_b, asperity_c)
+    share = ehl.asperity_share(ehl.lambda_ratio_unchecked(h_min, sigma), asperity_b, asperity_c)
     radius = 0.25 * screw.ball_diameter
     mean_pressure = 2.0 / 3.0 * hertz(f_safe, radius, radius, screw.reduced_modulus).p_max
     mu = rl.mixed_friction_coefficient(
@@ -746,13 +747,12 @@ def complete(
         ``"four_point"``, ``"seals"`` torques [N·m].
     """
     method = lubrication_method(lubrication, lubricant)
-    mu_bl = float(check_nonnegative("boundary_friction", boundary_friction))
-    check_choice("ball_train", ball_train, BALL_TRAINS)
-    c_b = float(check_nonnegative("ball_train_constant", ball_train_constant))
-    scatter = float(check_nonnegative("contact_angle_scatter", contact_angle_scatter, "rad"))
-    theta = float(check_nonnegative("return_turning_angle", return_turning_angle, "rad"))
-    alpha_h = float(check_nonnegative("hysteresis_loss_factor", hysteresis_loss_factor))
-    seal = float(check_nonnegative("seal_torque", seal_torque, "N·m"))
+    given = (boundary_friction, ball_train, ball_train_constant, contact_angle_scatter,
+             return_turning_angle, hysteresis_loss_factor, seal_torque)  # fmt: skip
+    try:  # the same values at every call of a loop: checked once (a bad one raises each time)
+        mu_bl, c_b, scatter, theta, alpha_h, seal = _numbers_kept(*given)
+    except TypeError:  # a value that cannot be a key (an array): checked afresh
+        mu_bl, c_b, scatter, theta, alpha_h, seal = _numbers(*given)
     if seal > 0.0:  # no drag cannot be too much
         check_wiper_drag("seal_torque", seal, screw.pitch_diameter, warn_above=False)
     tau0, gamma_l = limiting_shear(lubricant, limiting_shear_stress, limiting_shear_coefficient)
@@ -786,6 +786,25 @@ def complete(
     order = ("rolling", "sliding", "helix_slip", "hysteresis", "ball_ball", "recirculation",
              "meniscus", "churning", "four_point", "seals")  # fmt: skip
     return {name: parts[name] for name in order}
+
+
+def _numbers(
+    boundary_friction: Any, ball_train: Any, ball_train_constant: Any, contact_angle_scatter: Any,
+    return_turning_angle: Any, hysteresis_loss_factor: Any, seal_torque: Any,
+) -> tuple[float, float, float, float, float, float]:  # fmt: skip
+    """:func:`complete`'s numeric parameters checked, as floats (and its ball-train rule)."""
+    mu_bl = float(check_nonnegative("boundary_friction", boundary_friction))
+    check_choice("ball_train", ball_train, BALL_TRAINS)
+    c_b = float(check_nonnegative("ball_train_constant", ball_train_constant))
+    scatter = float(check_nonnegative("contact_angle_scatter", contact_angle_scatter, "rad"))
+    theta = float(check_nonnegative("return_turning_angle", return_turning_angle, "rad"))
+    alpha_h = float(check_nonnegative("hysteresis_loss_factor", hysteresis_loss_factor))
+    seal = float(check_nonnegative("seal_torque", seal_torque, "N·m"))
+    return mu_bl, c_b, scatter, theta, alpha_h, seal
+
+
+_numbers_kept = functools.lru_cache(maxsize=64, typed=True)(_numbers)
+""":func:`_numbers` kept by the values' types and values (True is not taken for 1.0)."""
 
 
 def _thermal_reduction(
