@@ -39,7 +39,7 @@ from .errors import (
     check_positive,
     where,
 )
-from .geometry import ScrewGeometry
+from .geometry import ScrewGeometry, screw_derived
 from .kinematics import Kinematics, kinematics
 from .loads import BallLoads, ball_loads
 from .lubricant import Lubricant
@@ -264,7 +264,12 @@ def operating_state_unchecked(
 
 
 def _sides(screw: ScrewGeometry) -> dict[str, tuple[float, float, float, float]]:
-    """Each side's radii of curvature, contact radius and composite roughness [m]."""
+    """Each side's radii of curvature, contact radius and composite roughness [m] (kept)."""
+    return screw_derived(screw, "state.sides", lambda: _side_geometry(screw))
+
+
+def _side_geometry(screw: ScrewGeometry) -> dict[str, tuple[float, float, float, float]]:
+    """What :func:`_sides` keeps, read from the screw."""
     return {
         "screw": (
             screw.rx_screw,
