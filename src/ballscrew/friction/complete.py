@@ -651,12 +651,48 @@ def _helix_slip(
     else:
         groups = [((f"screw-{f}", f"nut-{f}"), by_name[f"screw-{f}"].balls) for f in (1, 2)]
     total: FloatArray = np.zeros(state.shape)
-    for names, balls in groups:
-        if not _any(balls):
-            continue
-        share = transverse_slip_loss([slip_contact(by_name[n]) for n in names], slip)
-        total = total + balls * share.power
+    groups = [(names, balls) for names, balls in groups if _any(balls)]
+    powers = None if rows or state.shape else _families_at_one_point(
+        [[slip_contact(by_name[n]) for n in names] for names, _ in groups], slip
+    )  # fmt: skip
+    for i, (names, balls) in enumerate(groups):
+        if powers is None:
+            power = transverse_slip_loss([slip_contact(by_name[n]) for n in names], slip).power
+        else:
+            power = powers[i]
+        total = total + balls * power
     return total
+
+
+def _families_at_one_point(
+    families: list[list[SlipContact]], slip: Number
+) -> list[FloatArray] | None:
+    """The slip powers of a double nut's two families at one point, in one solve, or None.
+
+    Both families' balls touch the same sides with the same aspects and spins (their loads
+    differ): their balances are solved as two points of one call of
+    :func:`~ballscrew.helix.transverse_slip_loss`, each point's steps its own (the same
+    numbers as one call a family). None where that does not hold (one family loaded, a
+    4-point nut, contacts that differ): each family is then solved alone.
+    """
+    if len(families) != 2 or len(families[0]) != len(families[1]):
+        return None
+    merged = []
+    for one, two in zip(families[0], families[1], strict=True):
+        if (one.side, one.aspect, one.spin) != (two.side, two.aspect, two.spin):
+            return None
+        merged.append(
+            SlipContact(
+                one.side,
+                np.array([np.ravel(one.friction)[0], np.ravel(two.friction)[0]]),
+                np.array([np.ravel(one.load)[0], np.ravel(two.load)[0]]),
+                np.array([np.ravel(one.semi_axis)[0], np.ravel(two.semi_axis)[0]]),
+                one.aspect,
+                one.spin,
+            )
+        )
+    power = transverse_slip_loss(merged, slip).power
+    return [power[0].reshape(()), power[1].reshape(())]
 
 
 @register(
