@@ -88,7 +88,8 @@ def preload_split(
     """
     fa = np.abs(check_finite("axial_load", axial_load))
     fpr = check_nonnegative("preload", preload, "N")
-    fa, fpr = np.broadcast_arrays(fa, fpr)
+    if np.shape(fa) != np.shape(fpr):
+        fa, fpr = np.broadcast_arrays(fa, fpr)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         # A subnormal preload overflows to inf: that is lift-off, as it should be.
         ratio = where(fpr > 0.0, fa / where(fpr > 0.0, fpr, 1.0), np.inf)

@@ -483,8 +483,8 @@ def _one_point_integrals(
     if not all(np.size(k) == 1 and np.size(b) == 1 for k, b in arguments):
         return None
     values = rl.spin_sliding_integral(
-        np.array([np.ravel(k)[0] for k, _ in arguments]),
-        np.array([np.ravel(b)[0] for _, b in arguments]),
+        np.array([_first(k) for k, _ in arguments]),
+        np.array([_first(b) for _, b in arguments]),
     )
     return [
         values[i].reshape(broadcast_shape(np.shape(k), np.shape(b)))
@@ -684,9 +684,9 @@ def _families_at_one_point(
         merged.append(
             SlipContact(
                 one.side,
-                np.array([np.ravel(one.friction)[0], np.ravel(two.friction)[0]]),
-                np.array([np.ravel(one.load)[0], np.ravel(two.load)[0]]),
-                np.array([np.ravel(one.semi_axis)[0], np.ravel(two.semi_axis)[0]]),
+                np.array([_first(one.friction), _first(two.friction)]),
+                np.array([_first(one.load), _first(two.load)]),
+                np.array([_first(one.semi_axis), _first(two.semi_axis)]),
                 one.aspect,
                 one.spin,
             )
@@ -890,6 +890,11 @@ def _any(balls: int | npt.NDArray[np.intp]) -> bool:
 def _largest(x: FloatArray) -> float:
     """The largest value of ``x`` (a single value as it is) as a float."""
     return float(x) if np.ndim(x) == 0 else float(np.max(x))
+
+
+def _first(x: Any) -> float:
+    """The first (at one point: the only) value of ``x`` as a float."""
+    return x if type(x) is float else float(np.asarray(x).reshape(-1)[0])
 
 
 def _number(x: Any) -> Number:
