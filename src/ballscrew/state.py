@@ -123,7 +123,7 @@ class ContactState:
         result: FloatArray = np.where(loaded, h_c, 0.0)
         return result
 
-    @property
+    @functools.cached_property
     def name(self) -> str:
         """Label such as ``"screw-1"``."""
         return f"{self.side}-{self.family}"

@@ -943,7 +943,12 @@ def _groove_losses(
     """
     rolling_lever = per_speed.rolling_lever
     curvature, spin, spin4 = per_speed.curvature, per_speed.spin, per_speed.spin4
-    parts = {k: np.zeros(state.shape) for k in ("rolling", "sliding", "hysteresis", "four_point")}
+    # One point: the sums as numbers (the same additions), else arrays added in place.
+    one = not state.shape
+    parts: dict[str, Any] = {
+        k: 0.0 if one else np.zeros(state.shape)
+        for k in ("rolling", "sliding", "hysteresis", "four_point")
+    }
     mu: dict[str, FloatArray] = {}
     rows = isinstance(screw, ScrewArray)
     loaded = [c for c in state.contacts if _any(c.balls)]
@@ -978,6 +983,8 @@ def _groove_losses(
         parts["hysteresis"] += (
             z * rl.hysteresis_rolling_force(c.load, c.hertz.b, c.rx, alpha_h) * rolling_lever
         )
+    if one:  # arrays, as at many points
+        parts = {k: np.array(v, dtype=float) for k, v in parts.items()}
     return parts, mu
 
 
