@@ -489,6 +489,10 @@ def _efficiency_and_power(
     """Forward efficiency and power loss of torques ``total`` at speeds ``w`` and loads ``fa``."""
     # useful / (useful + T): 0 where there is no load (and no division by 0 when T = 0
     # too), computed in place: a large call holds no more full-size temporaries than needed.
+    if not total.shape and not np.shape(lead):  # one point: the same operations on numbers
+        useful = abs(float(fa)) * (float(lead) / (2.0 * math.pi))
+        ratio = useful / max(useful + float(total), _TINY)
+        return np.array(ratio), np.array(abs(float(w)) * float(total))
     efficiency = np.abs(fa, out=np.empty(total.shape))
     efficiency *= np.asarray(lead) / (2.0 * math.pi)
     denominator = np.add(efficiency, total, out=np.empty(total.shape))
@@ -498,6 +502,10 @@ def _efficiency_and_power(
     power_loss = np.abs(w, out=np.empty(total.shape))
     power_loss *= total
     return efficiency, power_loss
+
+
+_TINY = float(np.finfo(float).tiny)
+"""The smallest normal double: the floor of the efficiency's denominator."""
 
 
 def _checked(

@@ -167,7 +167,7 @@ def operating_points(
         w, t, fa = broadcast_inputs(**arrays)
         return w, t, fa
     try:
-        np.broadcast_shapes(*(a.shape for a in arrays.values()))
+        broadcast_shape(*(a.shape for a in arrays.values()))
     except ValueError:
         broadcast_inputs(**arrays)  # raises the error naming the shapes
     return arrays["speed"], arrays["temperature"], arrays["axial_load"]
