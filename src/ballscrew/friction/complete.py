@@ -1102,22 +1102,11 @@ def _ratio_train(
         trains = [(screw_side[0], screw_side[0].load)]
     else:  # a double nut's halves push their own trains
         trains = [(c, c.load) for c in screw_side]
-    both = None
-    if touching and len(trains) == 2 and not shape and not isinstance(screw, ScrewArray):
-        # One point: both trains' coefficients in one evaluation (their contacts share the
-        # oil's viscosity and the materials; only the forces differ), element by element.
-        both = ball_ball_friction(
-            state, trains[0][0], c_b * np.array([float(load) for _, load in trains]), mu_bl,
-            tau0, gamma_l, asperity_b=asperity_b, asperity_c=asperity_c,
-        )  # fmt: skip
-    for i, (c, load) in enumerate(trains):
-        if both is not None:
-            mu_bb = both[i]
-        else:
-            mu_bb = ball_ball_friction(
-                state, c, c_b * load, mu_bl, tau0, gamma_l,
-                asperity_b=asperity_b, asperity_c=asperity_c,
-            ) if touching else np.zeros(shape)  # fmt: skip
+    for c, load in trains:
+        mu_bb = ball_ball_friction(
+            state, c, c_b * load, mu_bl, tau0, gamma_l,
+            asperity_b=asperity_b, asperity_c=asperity_c,
+        ) if touching else np.zeros(shape)  # fmt: skip
         ball_ball = ball_ball + c.balls * mu_bb * c_b * load * sliding
         # The grooves drive the train only where its balls carry load (sign 0: a
         # lifted-off half-nut's balls are not pushed round).
