@@ -884,8 +884,13 @@ class Lubricant:
 
     def dynamic_viscosity(self, temperature: ArrayLike) -> FloatArray:
         """Dynamic viscosity at ambient pressure [Pa·s] at ``temperature`` [°C]."""
-        result: FloatArray = self.kinematic_viscosity(temperature) * self.density(temperature)
-        return result
+        return self.viscosities(temperature)[1]
+
+    def viscosities(self, temperature: ArrayLike) -> tuple[FloatArray, FloatArray]:
+        """Kinematic [m²/s] and dynamic [Pa·s] viscosity at ``temperature`` [°C], one fit."""
+        nu = self.kinematic_viscosity(temperature)
+        eta: FloatArray = nu * self.density(temperature)
+        return nu, eta
 
     @functools.cached_property
     def roelands_index(self) -> float:

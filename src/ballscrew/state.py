@@ -135,6 +135,8 @@ class OperatingState:
 
     ``shape`` is the broadcast shape of the operating points; unless the
     state was built with ``broadcast=False``, every array has it.
+    ``kinematic_viscosity`` is the oil's at ``temperature`` [m²/s] (None in a
+    state built without it).
     """
 
     screw: ScrewGeometry
@@ -144,6 +146,7 @@ class OperatingState:
     loads: BallLoads
     contacts: tuple[ContactState, ...]
     shape: tuple[int, ...] = ()
+    kinematic_viscosity: FloatArray | None = None
 
 
 def operating_points(
@@ -242,7 +245,7 @@ def operating_state_unchecked(
     asperity = (check_positive("b", asperity_b), check_positive("c", asperity_c))
     kin = kinematics(screw, w)
     bl = ball_loads(screw, fa)
-    eta = lubricant.dynamic_viscosity(t)
+    nu, eta = lubricant.viscosities(t)  # one evaluation of the oil's fit for both
     ep = screw.reduced_modulus
     g = ehl.dimensionless_materials(lubricant.pressure_viscosity, ep)
     contacts: list[ContactState] = []
@@ -260,6 +263,7 @@ def operating_state_unchecked(
         loads=bl,
         contacts=tuple(contacts),
         shape=broadcast_shape(w.shape, t.shape, fa.shape, np.shape(screw.lead)),
+        kinematic_viscosity=nu,
     )
 
 

@@ -854,7 +854,8 @@ def _thermal_reduction(
     if not thermal_correction:
         return np.ones(state.shape)
     rpm = rad_s_to_rpm(np.abs(state.kinematics.screw_speed))
-    nu = lubricant.kinematic_viscosity(state.temperature) * 1e6  # mm²/s
+    kept = state.kinematic_viscosity if state.lubricant is lubricant else None
+    nu = (lubricant.kinematic_viscosity(state.temperature) if kept is None else kept) * 1e6  # mm²/s
     dm_mm = screw.pitch_diameter * 1e3
     section = 3.4 * screw.ball_diameter * 1e3  # D - d of a 72-series bearing, ~3.4 D_w
     reduction: FloatArray = rl.inlet_shear_heating_factor(rpm, dm_mm, nu)
