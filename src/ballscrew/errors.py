@@ -302,12 +302,13 @@ def where(condition: Any, x: Any, y: Any) -> FloatArray:
 def maximum(x: Any, y: Any) -> FloatArray:
     """``numpy.maximum(x, y)`` of float values; two single doubles compared as such.
 
-    The larger of the two (NaN if ``x`` or ``y`` is NaN, as numpy's) as a numpy float,
-    without a ufunc's dispatch (a microsecond a call on the one-point path).
+    The larger of the two as a numpy float, by numpy's rule (NaN if either is NaN; of two
+    equal values, such as 0.0 and -0.0, the second), without a ufunc's dispatch (a
+    microsecond a call on the one-point path).
     """
     if _one_float(x) and _one_float(y):
         a, b = float(x), float(y)
-        return np.float64(a if a >= b or a != a else b)  # type: ignore[return-value]
+        return np.float64(a if a > b or a != a else b)  # type: ignore[return-value]
     result: FloatArray = np.maximum(x, y)
     return result
 
@@ -316,7 +317,7 @@ def minimum(x: Any, y: Any) -> FloatArray:
     """``numpy.minimum(x, y)`` of float values; two single doubles compared as such."""
     if _one_float(x) and _one_float(y):
         a, b = float(x), float(y)
-        return np.float64(a if a <= b or a != a else b)  # type: ignore[return-value]
+        return np.float64(a if a < b or a != a else b)  # type: ignore[return-value]
     result: FloatArray = np.minimum(x, y)
     return result
 
