@@ -1,7 +1,7 @@
 """The single-value shortcuts of ``ballscrew.errors`` give numpy's values (issue 51).
 
-``where``, ``maximum``, ``minimum``, ``every``, ``broadcast_shape`` and ``broadcast_to``
-take one point's values without numpy's dispatch; numpy's own functions are the
+``where``, ``maximum``, ``minimum``, ``every``, ``as_float``, ``broadcast_shape`` and
+``broadcast_to`` take one point's values without numpy's dispatch; numpy's own functions are the
 reference, on the awkward values too (NaN, signed zeros, infinities), and arrays must
 go to numpy unchanged. Exact comparison: a choice between two values makes no rounding.
 """
@@ -14,7 +14,15 @@ import math
 import numpy as np
 import pytest
 
-from ballscrew.errors import broadcast_shape, broadcast_to, every, maximum, minimum, where
+from ballscrew.errors import (
+    as_float,
+    broadcast_shape,
+    broadcast_to,
+    every,
+    maximum,
+    minimum,
+    where,
+)
 
 AWKWARD = [0.0, -0.0, 1.5, -2.25, math.inf, -math.inf, math.nan, 5e-324, 1.7976931348623157e308]
 KINDS = [float, np.float64, np.asarray]
@@ -63,3 +71,10 @@ def test_broadcasts_are_numpys() -> None:
     assert _same(broadcast_to(a[0], (2, 3)), np.broadcast_to(a[0], (2, 3)))
     assert _same(broadcast_to(2.5, ()), np.broadcast_to(2.5, ()))
     assert _same(broadcast_to(np.float64(-0.0), (2,)), np.broadcast_to(-0.0, (2,)))
+
+
+def test_as_float_is_numpys_asarray() -> None:
+    for value in (2.5, np.float64(-0.0), np.asarray(3.0), [1.0, 2.0], 4, np.int64(7)):
+        assert _same(as_float(value), np.asarray(value, dtype=float)), value
+    single = np.float64(1.25)
+    assert as_float(single) is single  # a single double comes back as it is
