@@ -69,8 +69,9 @@ def shares(
     that the processor overlaps them (1.5 times faster than one point to its end after
     the other, with the same steps and bits).
     """
-    k_count, n = capacity.shape
-    intervals = g_nodes.shape[2] - 1
+    k_count = len(capacity)
+    n = len(capacity[0])
+    intervals = len(g_nodes[0][0]) - 1
     lo = np.empty(BLOCK)
     hi = np.empty(BLOCK)
     share = np.empty(BLOCK)
@@ -86,17 +87,17 @@ def shares(
             f_lo = 0.0
             f_hi = 0.0
             for k in range(k_count):
-                total += capacity[k, p]
-                ratio = per_share[k, p]
+                total += capacity[k][p]
+                ratio = per_share[k][p]
                 t = ratio / (1.0 + ratio) * intervals
                 i = min(int(t), intervals - 1)
-                g_full = g_nodes[tab, k, i] + (t - i) * (
-                    g_nodes[tab, k, i + 1] - g_nodes[tab, k, i]
+                g_full = g_nodes[tab][k][i] + (t - i) * (
+                    g_nodes[tab][k][i + 1] - g_nodes[tab][k][i]
                 )
                 if screw_side[k]:
-                    f_hi += capacity[k, p] * g_full
+                    f_hi += capacity[k][p] * g_full
                 else:
-                    f_lo -= capacity[k, p] * g_full
+                    f_lo -= capacity[k][p] * g_full
             # Unloaded on one side: that side takes all the slip, free. Else start where
             # the straight line between the two ends' residuals crosses zero.
             active[j] = f_lo < 0.0 and f_hi > 0.0
@@ -117,14 +118,14 @@ def shares(
                 for k in range(k_count):
                     own = x_j if screw_side[k] else 1.0 - x_j
                     sign = 1.0 if screw_side[k] else -1.0
-                    ratio = per_share[k, p]
+                    ratio = per_share[k][p]
                     sigma = own * ratio
                     t = sigma / (1.0 + sigma) * intervals
                     i = min(int(t), intervals - 1)
-                    rise = g_nodes[tab, k, i + 1] - g_nodes[tab, k, i]
-                    g = g_nodes[tab, k, i] + (t - i) * rise
-                    f += sign * capacity[k, p] * g
-                    slope += capacity[k, p] * rise * intervals / (1.0 + sigma) ** 2 * ratio
+                    rise = g_nodes[tab][k][i + 1] - g_nodes[tab][k][i]
+                    g = g_nodes[tab][k][i] + (t - i) * rise
+                    f += sign * capacity[k][p] * g
+                    slope += capacity[k][p] * rise * intervals / (1.0 + sigma) ** 2 * ratio
                 if f > 0.0:
                     hi[j] = x_j
                 else:
@@ -156,19 +157,19 @@ def shares(
             side_force = 0.0
             for k in range(k_count):
                 own = x_j if screw_side[k] else 1.0 - x_j
-                sigma = own * per_share[k, p]
+                sigma = own * per_share[k][p]
                 t = sigma / (1.0 + sigma) * intervals
                 i = min(int(t), intervals - 1)
                 frac = t - i
                 j_slip = (
-                    j_nodes[tab, k, i] + frac * (j_nodes[tab, k, i + 1] - j_nodes[tab, k, i])
+                    j_nodes[tab][k][i] + frac * (j_nodes[tab][k][i + 1] - j_nodes[tab][k][i])
                 ) * (1.0 + sigma)
                 extra += (
-                    capacity[k, p] * 1.5 / math.pi * scale[k, p] * (j_slip - j_nodes[tab, k, 0])
+                    capacity[k][p] * 1.5 / math.pi * scale[k][p] * (j_slip - j_nodes[tab][k][0])
                 )
                 if screw_side[k]:
-                    side_force += capacity[k, p] * (
-                        g_nodes[tab, k, i] + frac * (g_nodes[tab, k, i + 1] - g_nodes[tab, k, i])
+                    side_force += capacity[k][p] * (
+                        g_nodes[tab][k][i] + frac * (g_nodes[tab][k][i + 1] - g_nodes[tab][k][i])
                     )
             power[p] = extra
             force[p] = side_force
@@ -239,13 +240,26 @@ def run(
     ``g_nodes`` and ``j_nodes`` are (K, M + 1) tables shared by every point, or
     (T, K, M + 1) sets of them with ``table`` (n,) naming each point's set.
     """
-    kernel = _compiled() if compiled else shares
+    n = len(capacity[0])
+    x, power, force = np.empty(n), np.empty(n), np.empty(n)
+    if not compiled:
+        # Plain Python (a few points): nested lists of floats index and compute several
+        # times faster than numpy's scalars, with the same operations (the same bits).
+        # The inputs may come as such lists already (the caller's, tables kept).
+        g_sets: Any = g_nodes if table is not None else [g_nodes]
+        j_sets: Any = j_nodes if table is not None else [j_nodes]
+        sets = [0] * n if table is None else [int(t) for t in table]
+        shares(
+            _rows(capacity), _rows(per_share), _rows(scale), [bool(v) for v in screw_side],
+            _listed(g_sets), _listed(j_sets), sets, float(tolerance), int(max_iter),
+            x, power, force,
+        )  # fmt: skip
+        return x, power, force
+    kernel = _compiled()
     assert kernel is not None
-    n = capacity.shape[1]
     if table is None:
         g_nodes, j_nodes = g_nodes[None], j_nodes[None]
         table = np.zeros(n, dtype=np.intp)
-    x, power, force = np.empty(n), np.empty(n), np.empty(n)
     kernel(
         np.ascontiguousarray(capacity), np.ascontiguousarray(per_share),
         np.ascontiguousarray(scale), np.asarray(screw_side, dtype=np.bool_),
@@ -254,3 +268,17 @@ def run(
         x, power, force,
     )  # fmt: skip
     return x, power, force
+
+
+def _rows(values: Any) -> Any:
+    """(K, n) values as K lists of floats: the given lists, or an array's."""
+    if isinstance(values, list) and (not values or isinstance(values[0], list)):
+        return values
+    return np.asarray(values, dtype=float).tolist()
+
+
+def _listed(tables: Any) -> Any:
+    """Tables as nested lists of floats: the given lists, or an array's (or arrays')."""
+    if isinstance(tables, list) and (not tables or isinstance(tables[0], list)):
+        return tables
+    return [np.asarray(t, dtype=float).tolist() for t in tables]

@@ -31,13 +31,14 @@ from .errors import (
     BallScrewInputError,
     BallScrewValidityWarning,
     FloatArray,
+    broadcast_shape,
 )
 from .friction import MODELS, ModelSpec, get_model
 from .geometry import BallScrew, ScrewArray
 from .helix import JIT_LOAD_POINTS, kernel_scope, load_kernel
 from .kinematics import rad_s_to_rpm
 from .lubricant import Lubricant
-from .state import OperatingState, operating_points, operating_state
+from .state import OperatingState, operating_points, operating_state_unchecked
 from .validity import ValidityIssue
 
 __all__ = [
@@ -404,7 +405,10 @@ def _friction_torque(
     )
     # The checks look at the extremes only: the unbroadcast inputs have the same ones.
     issues = validity.check(screw, lubricant, w0, t0, fa0, spec.name, used, spec.checks)
-    w, t, fa = np.broadcast_arrays(w0, t0, fa0)
+    if w0.shape == t0.shape == fa0.shape:
+        w, t, fa = w0, t0, fa0  # one shape (a single point): no broadcast views needed
+    else:
+        w, t, fa = np.broadcast_arrays(w0, t0, fa0)
     return _result(spec, used, kept, total, (w, t, fa), screw.lead, issues, warn, state)
 
 
@@ -592,10 +596,9 @@ def _evaluate_rows(
     try:
         state = None
         if spec.uses_state:
-            state = operating_state(
-                arr, lubricant, speed=w, temperature=t, axial_load=fa,
-                hertz_method=used["hertz_method"], asperity_b=used["asperity_b"],
-                asperity_c=used["asperity_c"], broadcast=False,
+            state = operating_state_unchecked(
+                arr, lubricant, w, t, fa, hertz_method=used["hertz_method"],
+                asperity_b=used["asperity_b"], asperity_c=used["asperity_c"],
             )  # fmt: skip
         out = spec(arr, lubricant, w, t, fa, state, **parameters)
         _check_solved(spec.name, out, w, t, fa)
@@ -692,6 +695,10 @@ def _efficiency_and_power(
     """Forward efficiency and power loss of torques ``total`` at speeds ``w`` and loads ``fa``."""
     # useful / (useful + T): 0 where there is no load (and no division by 0 when T = 0
     # too), computed in place: a large call holds no more full-size temporaries than needed.
+    if not total.shape and not np.shape(lead):  # one point: the same operations on numbers
+        useful = abs(float(fa)) * (float(lead) / (2.0 * math.pi))
+        ratio = useful / max(useful + float(total), _TINY)
+        return np.array(ratio), np.array(abs(float(w)) * float(total))
     efficiency = np.abs(fa, out=np.empty(total.shape))
     efficiency *= np.asarray(lead) / (2.0 * math.pi)
     denominator = np.add(efficiency, total, out=np.empty(total.shape))
@@ -701,6 +708,10 @@ def _efficiency_and_power(
     power_loss = np.abs(w, out=np.empty(total.shape))
     power_loss *= total
     return efficiency, power_loss
+
+
+_TINY = float(np.finfo(float).tiny)
+"""The smallest normal double: the floor of the efficiency's denominator."""
 
 
 def _checked(
@@ -746,10 +757,10 @@ def _evaluate(
     def state_of(sw: FloatArray, st: FloatArray, sf: FloatArray) -> OperatingState | None:
         if not spec.uses_state:
             return None
-        return operating_state(
-            screw, lubricant, speed=sw, temperature=st, axial_load=sf,
-            hertz_method=used["hertz_method"], asperity_b=used["asperity_b"],
-            asperity_c=used["asperity_c"], broadcast=False,
+        # The points were checked by _prepared (operating_points): composed without again.
+        return operating_state_unchecked(
+            screw, lubricant, sw, st, sf, hertz_method=used["hertz_method"],
+            asperity_b=used["asperity_b"], asperity_c=used["asperity_c"],
         )  # fmt: skip
 
     def run(sw: FloatArray, st: FloatArray, sf: FloatArray, state: OperatingState | None) -> Any:
@@ -761,16 +772,22 @@ def _evaluate(
         return out
 
     w0, t0, fa0 = points
-    shape = np.broadcast_shapes(w0.shape, t0.shape, fa0.shape)
+    shape = broadcast_shape(w0.shape, t0.shape, fa0.shape)
     n = math.prod(shape)
     if n <= chunk:
         # The unexpanded inputs: a grid given as an outer product is only
         # expanded where a quantity depends on all three.
         state = state_of(w0, t0, fa0)
         out = run(w0, t0, fa0, state)
-        total = np.zeros(shape)
-        for value in out.values():
-            total += value
+        if shape:
+            total = np.zeros(shape)
+            for value in out.values():
+                total += value
+        else:  # one point: the same additions in the same order, on numbers
+            one = 0.0
+            for value in out.values():
+                one += float(value)
+            total = np.array(one)
         # The model's components come broadcast to the points' shape (ModelSpec.__call__):
         # kept as arrays of their own, only when asked for.
         kept = {k: np.array(v, dtype=float) for k, v in out.items()} if keep else {}
@@ -836,6 +853,8 @@ def _check_solved(
     given out there.
     """
     for name, value in components.items():
+        if value.ndim == 0 and 0.0 <= float(value) < math.inf:  # one point: no arrays
+            continue
         ok = np.isfinite(value) & (value >= 0.0)
         if ok.all():
             continue

@@ -58,7 +58,7 @@ from __future__ import annotations
 import functools
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Literal
+from typing import Any, Literal
 
 import numpy as np
 import numpy.typing as npt
@@ -66,6 +66,7 @@ import numpy.typing as npt
 from .errors import (
     BallScrewInputError,
     FloatArray,
+    broadcast_to,
     check_in_range,
     check_nonnegative,
     check_positive,
@@ -281,7 +282,7 @@ def _scale_by_load(
         b=b1 * cube_q,
         p_max=(3.0 / (2.0 * np.pi)) / (a1 * b1) * cube_q,
         approach=d1 * cube_q**2,
-        ellipticity=np.broadcast_to(k, shape),
+        ellipticity=broadcast_to(k, shape),
         method=method,
     )
 
@@ -330,10 +331,35 @@ def hertz_exact(
     .. [1] B. J. Hamrock, D. E. Brewe, J. Lubr. Technol. 105 (1983) 171-177.
     .. [2] K. L. Johnson, *Contact Mechanics*, 1985, §4.2.
     """
+    geometry: Any = (rx, ry, reduced_modulus)
+    if _three_floats(*geometry):
+        # One geometry (a screw's contacts): its values per unit load, kept (the same bits).
+        unit: Any = _exact_per_load(*geometry)
+        return _scale_by_load("exact", check_nonnegative("load", load, "N"), *unit)
     q, r_small, r_big, r_sum, ep = _prepare(load, rx, ry, reduced_modulus)
     k = ellipticity_exact(r_big / r_small)
     big_f, big_e = complete_integrals(k)
     return _assemble("exact", q, r_sum, ep, k, big_e, big_f)
+
+
+def _three_floats(x: Any, y: Any, z: Any) -> bool:
+    """Whether the three are single numbers (floats), not arrays."""
+    return isinstance(x, float) and isinstance(y, float) and isinstance(z, float)
+
+
+@functools.lru_cache(maxsize=1024)
+def _exact_per_load(rx: float, ry: float, modulus: float) -> tuple[float, float, float, float]:
+    """:func:`hertz_exact`'s semi-axes and approach per unit load (^1/3, ^2/3) and ellipticity.
+
+    Computed by :func:`_assemble` itself at unit load (a product by 1 changes no bit), so
+    the values are those of the uncached path to the last bit; the geometry is checked
+    there (a bad value raises and is not kept).
+    """
+    _, r_small, r_big, r_sum, ep = _prepare(1.0, rx, ry, modulus)
+    k = ellipticity_exact(r_big / r_small)
+    big_f, big_e = complete_integrals(k)
+    unit = _assemble("exact", np.asarray(1.0), r_sum, ep, k, big_e, big_f)
+    return float(unit.a), float(unit.b), float(unit.approach), float(k)
 
 
 def hertz_hamrock_brewe_1983(

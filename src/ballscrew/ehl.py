@@ -38,6 +38,8 @@ References
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 import numpy.typing as npt
 
@@ -80,10 +82,15 @@ def dimensionless_speed(
     7.24...e-11
     """
     eta = check_positive("viscosity", viscosity, "Pa·s")
-    u = np.abs(check_finite("entrainment_speed", entrainment_speed))
+    u = check_finite("entrainment_speed", entrainment_speed)
     ep = check_positive("reduced_modulus", reduced_modulus, "Pa")
     r = check_positive("rx", rx, "m")
-    result: FloatArray = eta * u / (ep * r)
+    return dimensionless_speed_unchecked(eta, u, ep, r)
+
+
+def dimensionless_speed_unchecked(eta: Any, u: Any, ep: Any, r: Any) -> FloatArray:
+    """:func:`dimensionless_speed` of inputs the caller has checked (the one formula)."""
+    result: FloatArray = eta * np.abs(u) / (ep * r)
     return result
 
 
@@ -114,6 +121,11 @@ def dimensionless_load(load: ArrayLike, reduced_modulus: ArrayLike, rx: ArrayLik
     q = check_nonnegative("load", load, "N")
     ep = check_positive("reduced_modulus", reduced_modulus, "Pa")
     r = check_positive("rx", rx, "m")
+    return dimensionless_load_unchecked(q, ep, r)
+
+
+def dimensionless_load_unchecked(q: Any, ep: Any, r: Any) -> FloatArray:
+    """:func:`dimensionless_load` of inputs the caller has checked (the one formula)."""
     result: FloatArray = q / (ep * r**2)
     return result
 
@@ -164,7 +176,15 @@ def hamrock_dowson_1977_minimum(
     >>> round(float(h) * 1e6, 3)  # µm
     0.169
     """
-    r, uu, gg, ww, kk = _film_inputs(rx, u, g, w, k)
+    return hamrock_dowson_1977_minimum_unchecked(*_film_inputs(rx, u, g, w, k))
+
+
+def hamrock_dowson_1977_minimum_unchecked(r: Any, uu: Any, gg: Any, ww: Any, kk: Any) -> FloatArray:
+    """:func:`hamrock_dowson_1977_minimum` of inputs the caller has checked (the one formula).
+
+    For the contact state, whose inputs follow from checked ones (a loaded contact's
+    ``W`` > 0, Hertz's ellipticity >= 1).
+    """
     result: FloatArray = 3.63 * r * uu**0.68 * gg**0.49 * ww**-0.073 * (1.0 - np.exp(-0.68 * kk))
     return result
 
@@ -209,6 +229,11 @@ def lambda_ratio(film_thickness: ArrayLike, roughness: ArrayLike) -> FloatArray:
     """
     h = check_nonnegative("film_thickness", film_thickness, "m")
     s = check_positive("roughness", roughness, "m")
+    return lambda_ratio_unchecked(h, s)
+
+
+def lambda_ratio_unchecked(h: Any, s: Any) -> FloatArray:
+    """:func:`lambda_ratio` of inputs the caller has checked (the one formula)."""
     result: FloatArray = h / s
     return result
 
@@ -244,5 +269,10 @@ def asperity_share(
     lam = check_nonnegative("film_parameter", film_parameter)
     bb = check_positive("b", b)
     cc = check_positive("c", c)
+    return asperity_share_unchecked(lam, bb, cc)
+
+
+def asperity_share_unchecked(lam: Any, bb: Any, cc: Any) -> FloatArray:
+    """:func:`asperity_share` of inputs the caller has checked (the one formula)."""
     result: FloatArray = np.exp(-bb * lam**cc)
     return result

@@ -36,9 +36,9 @@ from __future__ import annotations
 
 import functools
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, fields, replace
-from typing import Any, Literal, get_args
+from typing import Any, Literal, TypeVar, get_args
 
 import numpy as np
 import numpy.typing as npt
@@ -536,6 +536,26 @@ class ScrewArray:
 
 ScrewGeometry = BallScrew | ScrewArray
 """One screw, or many of one nut arrangement as broadcast arrays (:class:`ScrewArray`)."""
+
+_T = TypeVar("_T")
+
+
+def screw_derived(screw: ScrewGeometry, key: str, compute: Callable[[], _T]) -> _T:
+    """``compute()``: a quantity of the screw alone, computed once per screw object and kept.
+
+    A :class:`BallScrew` is frozen (validated fields that never change) and a
+    :class:`ScrewArray`'s arrays are its screws' values, so what follows from the geometry
+    alone (the kinematics per unit speed, say) is the same at every call: the layers
+    that need it at every operating point ask for it here, by a ``key`` naming the
+    quantity and its module. The value is kept on the object (not among its fields: not
+    compared, not shown) and must not be changed in place by the caller.
+    """
+    kept: dict[str, Any] = screw.__dict__.setdefault("_derived", {})
+    try:
+        return kept[key]  # type: ignore[no-any-return]
+    except KeyError:
+        value = kept[key] = compute()
+        return value
 
 
 def cos(x: Any) -> Any:

@@ -87,14 +87,21 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Literal
+from typing import Any, Literal
 
 import numpy as np
 import numpy.typing as npt
 
 from . import _helix_kernel
 from . import rolling_losses as rl
-from .errors import FloatArray, check_choice, check_nonnegative, check_positive
+from .errors import (
+    FloatArray,
+    broadcast_shape,
+    broadcast_to,
+    check_choice,
+    check_nonnegative,
+    check_positive,
+)
 from .numerics import Index, newton_bracketed
 
 __all__ = [
@@ -334,6 +341,11 @@ def kernel_scope() -> contextlib.AbstractContextManager[None]:
     return _helix_kernel.scoped()
 
 
+def _single(x: Any) -> bool:
+    """Whether ``x`` is one number (one screw's), not an array of them."""
+    return type(x) is float or np.ndim(x) == 0
+
+
 def _check_contacts(contacts: Sequence[SlipContact]) -> None:
     sides = {c.side for c in contacts}
     if sides != {"screw", "nut"}:
@@ -349,16 +361,17 @@ def _contact_arrays(
 ) -> tuple[tuple[int, ...], list[FloatArray], list[FloatArray]]:
     """The points' shape, and each contact's capacity mu Q and spin scale |omega_s| a, flat."""
     arrays = [
-        np.broadcast_arrays(
+        (
             np.asarray(c.friction, dtype=float),
             np.asarray(c.load, dtype=float),
             np.asarray(c.semi_axis, dtype=float),
         )
         for c in contacts
     ]
-    shape = np.broadcast_shapes(*(mu.shape for mu, _, _ in arrays))
-    capacity = [np.broadcast_to(mu * q, shape).reshape(-1) for mu, q, _ in arrays]
-    scale = [np.broadcast_to(c.spin * a, shape).reshape(-1) for c, (_, _, a) in zip(
+    # The products broadcast their factors, element by element as on broadcast copies.
+    shape = broadcast_shape(*(x.shape for values in arrays for x in values))
+    capacity = [broadcast_to(mu * q, shape).reshape(-1) for mu, q, _ in arrays]
+    scale = [broadcast_to(c.spin * a, shape).reshape(-1) for c, (_, _, a) in zip(
         contacts, arrays, strict=True)]  # fmt: skip
     return shape, capacity, scale
 
@@ -395,6 +408,13 @@ def _stacked_tables(
     )
 
 
+@functools.lru_cache(maxsize=64)
+def _listed_tables(sides: tuple[bool, ...], aspects: tuple[float, ...]) -> tuple[Any, Any]:
+    """:func:`_stacked_tables`' G and J tables as nested lists (one set), for plain Python."""
+    _, g_nodes, j_nodes = _stacked_tables(sides, aspects)
+    return g_nodes.tolist(), j_nodes.tolist()
+
+
 def _kernel_inputs(
     contacts: Sequence[SlipContact], slip: float
 ) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray, FloatArray, FloatArray, IntArray]:
@@ -415,9 +435,17 @@ def _tables_many(aspects: FloatArray) -> tuple[FloatArray, FloatArray]:
 
     The same cubic interpolation across the aspect nodes, written on whole arrays, term
     for term in the same order (the same bits as :func:`_tables`); an aspect outside
-    [0.02, 1] gets its own tables.
+    [0.02, 1] gets its own tables. The last two sets are kept (the caller must not change
+    them): a double nut's second family has the same contacts' aspects as its first.
     """
-    aspects = np.asarray(aspects, dtype=float).reshape(-1)
+    aspects = np.ascontiguousarray(aspects, dtype=float).reshape(-1)
+    return _tables_many_kept(aspects.tobytes())
+
+
+@functools.lru_cache(maxsize=2)
+def _tables_many_kept(key: bytes) -> tuple[FloatArray, FloatArray]:
+    """:func:`_tables_many` of the aspects whose bytes are ``key``."""
+    aspects = np.frombuffer(key, dtype=float)
     inside = (aspects >= 0.02) & (aspects <= 1.0)
     j = np.zeros((aspects.size, TABLE_NODES))
     g = np.zeros((aspects.size, TABLE_NODES))
@@ -554,7 +582,7 @@ def transverse_slip_loss(contacts: Sequence[SlipContact], slip: npt.ArrayLike) -
     >>> round(float(r.screw_share), 6), round(float(r.force), 3)
     (0.5, 2.29)
     """
-    if np.ndim(slip) or any(np.ndim(c.aspect) or np.ndim(c.spin) for c in contacts):
+    if not _single(slip) or not all(_single(c.aspect) and _single(c.spin) for c in contacts):
         return _rows_slip_loss(contacts, slip)
     _check_contacts(contacts)
     s = float(check_nonnegative("slip", slip, "m"))
@@ -585,13 +613,28 @@ def transverse_slip_loss(contacts: Sequence[SlipContact], slip: npt.ArrayLike) -
         nut_force, nut_rate = side_force(x, "nut", index)
         return screw_force - nut_force, screw_rate - nut_rate
 
-    n = int(np.prod(shape))
+    n = math.prod(shape)
     if n <= PYTHON_MAX_POINTS or (
         n >= JIT_MIN_POINTS and _helix_kernel.enabled(load=n >= JIT_LOAD_POINTS)
     ):
+        if n > PYTHON_MAX_POINTS:
+            inputs: tuple[Any, ...] = _stacked(contacts, capacity, scale, s)
+        else:
+            # Plain Python: the inputs of _stacked as nested lists of floats (the slip ratio
+            # per unit share divided alike, 0 at an unloaded contact), the tables kept so.
+            sides = tuple(c.side == "screw" for c in contacts)
+            scale_rows = [row.tolist() for row in scale]
+            inputs = (
+                [row.tolist() for row in capacity],
+                [[s / (w if w > 0.0 else math.inf) for w in row] for row in scale_rows],
+                scale_rows,
+                list(sides),
+                *_listed_tables(sides, tuple(float(c.aspect) for c in contacts)),
+            )
+        cap, per_share, stacked_scale, sides_of, g_nodes, j_nodes = inputs
         x, power, force = _helix_kernel.run(
-            *_stacked(contacts, capacity, scale, s), SHARE_TOLERANCE, MAX_ITERATIONS,
-            compiled=n > PYTHON_MAX_POINTS,
+            cap, per_share, stacked_scale, sides_of, g_nodes, j_nodes, SHARE_TOLERANCE,
+            MAX_ITERATIONS, compiled=n > PYTHON_MAX_POINTS,
         )  # fmt: skip
         return SlipShare(
             power=power.reshape(shape), screw_share=x.reshape(shape), force=force.reshape(shape)

@@ -88,6 +88,7 @@ __all__ = [
     "four_point_spin",
     "kinematics",
     "neighbour_sliding",
+    "neighbour_sliding_of",
     "rad_s_to_rpm",
     "rpm_to_rad_s",
 ]
@@ -349,7 +350,15 @@ def neighbour_sliding(screw: ScrewGeometry, speed: npt.ArrayLike) -> FloatArray:
     >>> round(float(four / two), 4) == round(1 / math.cos(s.contact_angle), 4)
     True
     """
-    kin = kinematics(screw, speed)
+    return neighbour_sliding_of(screw, kinematics(screw, speed))
+
+
+def neighbour_sliding_of(screw: ScrewGeometry, kin: Kinematics) -> FloatArray:
+    """:func:`neighbour_sliding` from the screw's kinematics ``kin`` at the speeds wanted [m/s].
+
+    For a caller that holds them already (the contact state's): the same numbers, without
+    working out every rolling speed again.
+    """
     sliding: FloatArray = kin.ball_speed * screw.ball_diameter
     if screw.nut == "single-4point":
         sliding = sliding / cos(screw.contact_angle)

@@ -43,7 +43,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
-from .errors import FloatArray, check_finite, check_nonnegative
+from .errors import FloatArray, check_finite, check_nonnegative, every, maximum, minimum, where
 from .geometry import ScrewGeometry, cos, sin
 
 __all__ = ["LIFT_OFF_RATIO", "BallLoads", "ball_loads", "preload_split"]
@@ -88,24 +88,28 @@ def preload_split(
     """
     fa = np.abs(check_finite("axial_load", axial_load))
     fpr = check_nonnegative("preload", preload, "N")
-    fa, fpr = np.broadcast_arrays(fa, fpr)
+    if np.shape(fa) != np.shape(fpr):
+        fa, fpr = np.broadcast_arrays(fa, fpr)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         # A subnormal preload overflows to inf: that is lift-off, as it should be.
-        ratio = np.where(fpr > 0.0, fa / np.where(fpr > 0.0, fpr, 1.0), np.inf)
+        ratio = where(fpr > 0.0, fa / where(fpr > 0.0, fpr, 1.0), np.inf)
     lifted = ratio >= LIFT_OFF_RATIO
-    r = np.where(lifted, 0.0, ratio)
+    r = where(lifted, 0.0, ratio)
     s = r / 3.0
+    # The bounds by maximum and minimum, as numpy's clip (whose wrapper costs microseconds a
+    # call, which a single point pays at every step; errors.maximum compares one point's
+    # values as numbers).
     for _ in range(60):
         sp = np.sqrt(1.0 + s)
-        sm = np.sqrt(np.clip(1.0 - s, 0.0, None))
+        sm = np.sqrt(maximum(1.0 - s, 0.0))
         g = sp**3 - sm**3 - r
         step = g / (1.5 * (sp + sm))
-        s = np.clip(s - step, 0.0, 1.0)
-        if np.all(np.abs(step) <= 1e-14):
+        s = minimum(maximum(s - step, 0.0), 1.0)
+        if every(np.abs(step) <= 1e-14):
             break
-    loaded = np.where(lifted, fa, fpr * (1.0 + s) ** 1.5)
+    loaded = where(lifted, fa, fpr * (1.0 + s) ** 1.5)
     # The relieved force follows from the loaded one so that the balance is exact.
-    relieved = np.where(lifted, 0.0, np.maximum(loaded - fa, 0.0))
+    relieved = where(lifted, 0.0, maximum(loaded - fa, 0.0))
     return loaded, relieved
 
 

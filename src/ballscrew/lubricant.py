@@ -48,6 +48,8 @@ from .errors import (
     check_in_range,
     check_nonnegative,
     check_positive,
+    every,
+    minimum,
 )
 from .plausible import LUBRICANT_RANGES, check_lubricant_property
 
@@ -248,7 +250,7 @@ def astm_d341_viscosity(temperature: ArrayLike, a: ArrayLike, b: ArrayLike) -> F
     zm = z - 0.7
     # The correction vanishes above a few mm²/s (exp(-292) at 10): capping its
     # argument keeps an overflowed Z an infinite viscosity instead of inf - inf.
-    zc = np.minimum(zm, 10.0)
+    zc = minimum(zm, 10.0)
     correction = np.exp(-0.7487 - 3.295 * zc + 0.6119 * zc**2 - 0.3193 * zc**3)
     result: FloatArray = (zm - correction) * _CST
     return result
@@ -865,7 +867,7 @@ class Lubricant:
                 ok = t + 95.0 > 0.0
             else:
                 ok = np.isfinite(self.kinematic_viscosity(t))
-        if not np.all(ok):
+        if not every(ok):
             cold = float(np.min(np.asarray(t)[~np.asarray(ok)]))
             raise BallScrewInputError(
                 field,
@@ -882,8 +884,13 @@ class Lubricant:
 
     def dynamic_viscosity(self, temperature: ArrayLike) -> FloatArray:
         """Dynamic viscosity at ambient pressure [Pa·s] at ``temperature`` [°C]."""
-        result: FloatArray = self.kinematic_viscosity(temperature) * self.density(temperature)
-        return result
+        return self.viscosities(temperature)[1]
+
+    def viscosities(self, temperature: ArrayLike) -> tuple[FloatArray, FloatArray]:
+        """Kinematic [m²/s] and dynamic [Pa·s] viscosity at ``temperature`` [°C], one fit."""
+        nu = self.kinematic_viscosity(temperature)
+        eta: FloatArray = nu * self.density(temperature)
+        return nu, eta
 
     @functools.cached_property
     def roelands_index(self) -> float:

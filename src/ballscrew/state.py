@@ -31,8 +31,15 @@ import numpy.typing as npt
 from . import ehl
 from .contact import HertzContact, hertz
 from .design.limits import check_operating_bounds
-from .errors import FloatArray, broadcast_inputs
-from .geometry import ScrewGeometry
+from .errors import (
+    FloatArray,
+    broadcast_inputs,
+    broadcast_shape,
+    broadcast_to,
+    check_positive,
+    where,
+)
+from .geometry import ScrewGeometry, screw_derived
 from .kinematics import Kinematics, kinematics
 from .loads import BallLoads, ball_loads
 from .lubricant import Lubricant
@@ -116,7 +123,7 @@ class ContactState:
         result: FloatArray = np.where(loaded, h_c, 0.0)
         return result
 
-    @property
+    @functools.cached_property
     def name(self) -> str:
         """Label such as ``"screw-1"``."""
         return f"{self.side}-{self.family}"
@@ -128,6 +135,8 @@ class OperatingState:
 
     ``shape`` is the broadcast shape of the operating points; unless the
     state was built with ``broadcast=False``, every array has it.
+    ``kinematic_viscosity`` is the oil's at ``temperature`` [m²/s] (None in a
+    state built without it).
     """
 
     screw: ScrewGeometry
@@ -137,6 +146,7 @@ class OperatingState:
     loads: BallLoads
     contacts: tuple[ContactState, ...]
     shape: tuple[int, ...] = ()
+    kinematic_viscosity: FloatArray | None = None
 
 
 def operating_points(
@@ -160,7 +170,7 @@ def operating_points(
         w, t, fa = broadcast_inputs(**arrays)
         return w, t, fa
     try:
-        np.broadcast_shapes(*(a.shape for a in arrays.values()))
+        broadcast_shape(*(a.shape for a in arrays.values()))
     except ValueError:
         broadcast_inputs(**arrays)  # raises the error naming the shapes
     return arrays["speed"], arrays["temperature"], arrays["axial_load"]
@@ -209,9 +219,33 @@ def operating_state(
         ``speed``, ``temperature`` and ``axial_load`` broadcast against each other.
     """
     w, t, fa = operating_points(speed, temperature, axial_load, broadcast=broadcast)
+    return operating_state_unchecked(
+        screw, lubricant, w, t, fa, hertz_method=hertz_method, asperity_b=asperity_b,
+        asperity_c=asperity_c,
+    )  # fmt: skip
+
+
+def operating_state_unchecked(
+    screw: ScrewGeometry,
+    lubricant: Lubricant,
+    w: FloatArray,
+    t: FloatArray,
+    fa: FloatArray,
+    *,
+    hertz_method: str,
+    asperity_b: float,
+    asperity_c: float,
+) -> OperatingState:
+    """:func:`operating_state` at operating points the caller has checked.
+
+    ``w``, ``t``, ``fa``: speed [rad/s], temperature [°C] and axial load [N] as
+    :func:`operating_points` returns them (float arrays within their bounds, of shapes
+    that broadcast); the chain checks them once for the call and composes the state here.
+    """
+    asperity = (check_positive("b", asperity_b), check_positive("c", asperity_c))
     kin = kinematics(screw, w)
     bl = ball_loads(screw, fa)
-    eta = lubricant.dynamic_viscosity(t)
+    nu, eta = lubricant.viscosities(t)  # one evaluation of the oil's fit for both
     ep = screw.reduced_modulus
     g = ehl.dimensionless_materials(lubricant.pressure_viscosity, ep)
     contacts: list[ContactState] = []
@@ -219,7 +253,7 @@ def operating_state(
         for side, curvature in _sides(screw).items():
             contacts.append(
                 _contact_state(side, family, q, balls, curvature, kin, eta, g, ep, hertz_method,
-                               (asperity_b, asperity_c))
+                               asperity)
             )  # fmt: skip
     return OperatingState(
         screw=screw,
@@ -228,12 +262,18 @@ def operating_state(
         kinematics=kin,
         loads=bl,
         contacts=tuple(contacts),
-        shape=np.broadcast_shapes(w.shape, t.shape, fa.shape, np.shape(screw.lead)),
+        shape=broadcast_shape(w.shape, t.shape, fa.shape, np.shape(screw.lead)),
+        kinematic_viscosity=nu,
     )
 
 
 def _sides(screw: ScrewGeometry) -> dict[str, tuple[float, float, float, float]]:
-    """Each side's radii of curvature, contact radius and composite roughness [m]."""
+    """Each side's radii of curvature, contact radius and composite roughness [m] (kept)."""
+    return screw_derived(screw, "state.sides", lambda: _side_geometry(screw))
+
+
+def _side_geometry(screw: ScrewGeometry) -> dict[str, tuple[float, float, float, float]]:
+    """What :func:`_sides` keeps, read from the screw."""
     return {
         "screw": (
             screw.rx_screw,
@@ -261,23 +301,28 @@ def _contact_state(
     g: FloatArray,
     ep: float,
     hertz_method: str,
-    asperity: tuple[float, float],
+    asperity: tuple[FloatArray, FloatArray],
 ) -> ContactState:
     """One ball contact of a family on one side: Hertz, the film and the asperity share."""
     rx, ry, radius, sigma = curvature
     hz = hertz(q, rx, ry, ep, method=hertz_method)
-    u_par = ehl.dimensionless_speed(eta, kin.entrainment_speed, ep, rx)
-    w_par = ehl.dimensionless_load(q, ep, rx)
+    # The film's inputs follow from checked ones (the operating points, the screw, the
+    # oil at a temperature it takes, Hertz's ellipticity >= 1; the asperity constants
+    # were checked by operating_state): the formulas without their checks.
+    u_par = ehl.dimensionless_speed_unchecked(eta, kin.entrainment_speed, ep, rx)
+    w_par = ehl.dimensionless_load_unchecked(q, ep, rx)
     # An unloaded contact (single-nut family 2, lift-off) has no film:
     # film, film parameter and asperity share are reported as 0 there
     # (the fits would otherwise diverge as W**-0.07 at W -> 0).
     loaded = w_par > 0.0
-    w_safe = np.where(loaded, w_par, 1.0)
-    h_min = np.where(
-        loaded, ehl.hamrock_dowson_1977_minimum(rx, u_par, g, w_safe, hz.ellipticity), 0.0
+    w_safe = where(loaded, w_par, 1.0)
+    h_min = where(
+        loaded,
+        ehl.hamrock_dowson_1977_minimum_unchecked(rx, u_par, g, w_safe, hz.ellipticity),
+        0.0,
     )
-    lam = ehl.lambda_ratio(h_min, sigma)
-    share = np.where(loaded, ehl.asperity_share(lam, *asperity), 0.0)
+    lam = ehl.lambda_ratio_unchecked(h_min, sigma)
+    share = where(loaded, ehl.asperity_share_unchecked(lam, *asperity), 0.0)
     return ContactState(
         side=side,  # type: ignore[arg-type]
         family=family,
@@ -290,7 +335,7 @@ def _contact_state(
         entrainment_speed=kin.entrainment_speed,
         viscosity=eta,
         speed_parameter=u_par,
-        materials_parameter=np.broadcast_to(g, q.shape),
+        materials_parameter=broadcast_to(g, q.shape),
         load_parameter=w_par,
         film_minimum=h_min,
         roughness=sigma,

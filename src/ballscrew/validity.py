@@ -250,11 +250,15 @@ def outside(r: ValidityRange | str, values: Iterable[float] | FloatArray) -> lis
     """
     if isinstance(r, str):
         r = RANGES[r]
-    vals = np.asarray(values if isinstance(values, np.ndarray) else list(values), dtype=float)
-    vals = vals.reshape(-1)
-    vals = vals[np.isfinite(vals)]
     # A relative tolerance on each bound (of either sign; an infinite bound stays infinite).
     low, high = r.low - 1e-12 * abs(r.low), r.high + 1e-12 * abs(r.high)
+    if not isinstance(values, np.ndarray):
+        values = [float(v) for v in values]
+        if all(low <= v <= high or not math.isfinite(v) for v in values):
+            return []  # a few numbers inside (the usual case): no arrays
+    vals = np.asarray(values, dtype=float)
+    vals = vals.reshape(-1)
+    vals = vals[np.isfinite(vals)]
     worst = vals[(vals < low) | (vals > high)]
     if not worst.size:
         return []
@@ -379,13 +383,12 @@ def check(
     if isinstance(screw, ScrewArray):
         issues += _common_many(screw, speed, axial_load)
     else:
-        n_max = float(rad_s_to_rpm(np.max(np.abs(speed))))
+        n_max = float(rad_s_to_rpm(_span(np.abs(speed))[1]))
         issues += outside("speed factor d_m*n [mm*rpm]", [screw.pitch_diameter * 1e3 * n_max])
         if screw.nut != "single" and screw.preload > 0.0:
-            issues += outside(
-                "axial load / preload", [float(np.max(np.abs(axial_load))) / screw.preload]
-            )
-    t_extremes = [float(np.min(temperature)), float(np.max(temperature))]
+            load_max = _span(np.abs(axial_load))[1]
+            issues += outside("axial load / preload", [load_max / screw.preload])
+    t_extremes = list(_span(temperature))
     for limit in lubricant_limits(lubricant):
         issues += outside(limit, t_extremes)
     for model_check in checks:
@@ -393,7 +396,21 @@ def check(
         # take them too (film_checks).
         run: Any = model_check
         issues += run(screw, lubricant, speed, temperature, axial_load, parameters)
-    return [replace(issue, model=model) for issue in issues]
+    return [_with_model(issue, model) for issue in issues]
+
+
+@functools.lru_cache(maxsize=1024)
+def _with_model(issue: ValidityIssue, model: str) -> ValidityIssue:
+    """``issue`` naming ``model`` (kept: a loop over single points meets the same ones)."""
+    return replace(issue, model=model)
+
+
+def _span(x: FloatArray) -> tuple[float, float]:
+    """The smallest and largest value of the float array ``x`` (one value: read at once)."""
+    if x.size == 1:
+        value = float(x.reshape(-1)[0])
+        return value, value
+    return float(np.min(x)), float(np.max(x))
 
 
 def _per_screw(x: FloatArray, count: int, reduce: Any) -> FloatArray:
@@ -448,16 +465,18 @@ def film_checks(
         )  # fmt: skip
     w_abs = np.abs(speed)
     moving = w_abs[w_abs > 0.0]
+    slowest, fastest = _span(moving) if moving.size else (0.0, 0.0)
+    t_low, t_high = _span(temperature)
     return list(
         _film_issues(
             screw,
             lubricant,
             parameters.get("hertz_method") == "houpert",
-            float(np.min(temperature)),
-            float(np.max(temperature)),
-            float(np.min(moving)) if moving.size else 0.0,
-            float(np.max(moving)) if moving.size else 0.0,
-            float(np.max(np.abs(axial_load))),
+            t_low,
+            t_high,
+            slowest,
+            fastest,
+            _span(np.abs(axial_load))[1],
         )
     )
 

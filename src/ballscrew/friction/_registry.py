@@ -9,7 +9,7 @@ from typing import Any, Protocol, TypeVar
 
 import numpy as np
 
-from ..errors import BallScrewInputError, FloatArray
+from ..errors import BallScrewInputError, FloatArray, broadcast_shape, broadcast_to
 from ..geometry import BallScrew, ScrewGeometry
 from ..lubricant import Lubricant
 from ..validity import ValidityCheck
@@ -132,10 +132,10 @@ class ModelSpec:
         function: Any = self.function
         out = function(screw, lubricant, speed, temperature, axial_load, **params)
         # Many screws (a ScrewArray): their geometry's axes count among the points'.
-        shape = np.broadcast_shapes(
+        shape = broadcast_shape(
             speed.shape, temperature.shape, axial_load.shape, np.shape(screw.lead)
         )
-        return {k: np.broadcast_to(np.asarray(v, dtype=float), shape) for k, v in out.items()}
+        return {k: broadcast_to(np.asarray(v, dtype=float), shape) for k, v in out.items()}
 
 
 PARAMETER_RANGES: dict[str, tuple[float, float, str]] = {

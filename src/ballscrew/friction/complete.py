@@ -152,6 +152,7 @@ sliding speeds keep the lead angle.
 
 from __future__ import annotations
 
+import functools
 import math
 from typing import Any, NamedTuple
 
@@ -162,14 +163,22 @@ from .. import ehl
 from .. import rolling_losses as rl
 from ..ball_train import creep_slope, expected_train, orbital_sensitivity
 from ..contact import hertz
-from ..errors import FloatArray, check_choice, check_nonnegative
-from ..geometry import ScrewArray, ScrewGeometry, cos
+from ..errors import (
+    FloatArray,
+    broadcast_shape,
+    check_choice,
+    check_nonnegative,
+    maximum,
+    where,
+)
+from ..geometry import ScrewArray, ScrewGeometry, cos, screw_derived
 from ..helix import SlipContact, transverse_slip_loss
 from ..kinematics import (
     differential_sliding,
     four_point_spin,
     kinematics,
     neighbour_sliding,
+    neighbour_sliding_of,
     rad_s_to_rpm,
 )
 from ..lubricant import FLOODED, Lubricant, lubrication_method
@@ -284,6 +293,9 @@ def _unique_integral(kappa: FloatArray, aspect: FloatArray) -> FloatArray:
     the interpolation (pointwise, as if it had been evaluated on the distinct
     pairs); otherwise each pair gets the integer key of its two ranks.
     """
+    if np.size(kappa) == 1 and np.size(aspect) == 1:  # one point: the rule broadcasts
+        one: FloatArray = rl.spin_sliding_integral(kappa, aspect)
+        return one
     kappa, aspect = np.broadcast_arrays(kappa, aspect)
     if kappa.size <= DIRECT_INTEGRALS:  # a few points: at each, no counting needed
         few: FloatArray = rl.spin_sliding_integral(kappa, aspect)
@@ -425,22 +437,59 @@ def _interpolated_integral(kappa: FloatArray, aspect: FloatArray) -> FloatArray:
 
 
 def _sliding_per_speed(
-    contact: ContactState, mu: FloatArray, spin: Number, curvature: Number, rows: bool = False
+    contact: ContactState,
+    mu: FloatArray,
+    spin: Number,
+    curvature: Number,
+    rows: bool = False,
+    integral: FloatArray | None = None,
 ) -> FloatArray:
     """Spin + differential sliding power of one contact per unit screw speed [N·m].
 
     ``rows``: the contact's arrays hold many screws along their first axis
-    (:func:`_rows_integral`).
+    (:func:`_rows_integral`). ``integral``: the sliding integral at the contact's
+    :func:`_sliding_arguments`, if the caller has it (:func:`_one_point_integrals`).
     """
     a = contact.hertz.a
-    b = contact.hertz.b
-    safe_a = np.where(a > 0.0, a, 1.0)
-    kappa = np.abs(curvature) * safe_a / np.maximum(np.abs(spin), 1e-300)
-    integral = _rows_integral(kappa, b / safe_a) if rows else _unique_integral(kappa, b / safe_a)
-    result: FloatArray = np.where(
+    if integral is None:
+        kappa, aspect = _sliding_arguments(contact, spin, curvature)
+        integral = _rows_integral(kappa, aspect) if rows else _unique_integral(kappa, aspect)
+    result: FloatArray = where(
         a > 0.0, mu * 1.5 / math.pi * contact.load * np.abs(spin) * a * integral, 0.0
     )
     return result
+
+
+def _sliding_arguments(
+    contact: ContactState, spin: Number, curvature: Number
+) -> tuple[FloatArray, FloatArray]:
+    r"""The sliding integral's :math:`\kappa` and aspect :math:`b/a` at a contact."""
+    a = contact.hertz.a
+    safe_a = where(a > 0.0, a, 1.0)
+    kappa = np.abs(curvature) * safe_a / maximum(np.abs(spin), 1e-300)
+    return kappa, contact.hertz.b / safe_a
+
+
+def _one_point_integrals(
+    wanted: list[tuple[ContactState, Number, Number]],
+) -> list[FloatArray] | None:
+    """The sliding integrals of the (contact, spin, curvature) ``wanted`` at one point, or None.
+
+    At a single operating point the contacts' integrals are taken in one evaluation of
+    the rule (:func:`ballscrew.rolling_losses.spin_sliding_integral`, row by row the
+    same sums); with more points (or many screws) None: each contact takes its own.
+    """
+    arguments = [_sliding_arguments(c, spin, curvature) for c, spin, curvature in wanted]
+    if not all(np.size(k) == 1 and np.size(b) == 1 for k, b in arguments):
+        return None
+    values = rl.spin_sliding_integral(
+        np.array([_first(k) for k, _ in arguments]),
+        np.array([_first(b) for _, b in arguments]),
+    )
+    return [
+        values[i].reshape(broadcast_shape(np.shape(k), np.shape(b)))
+        for i, (k, b) in enumerate(arguments)
+    ]
 
 
 def ball_ball_friction(
@@ -493,16 +542,16 @@ def ball_ball_friction(
     """
     screw = state.screw
     loaded = force > 0.0
-    f_safe = np.where(loaded, force, 1.0)
+    f_safe = where(loaded, force, 1.0)
     h_min = _ball_ball_film(state, contact, f_safe)
     sigma = math.sqrt(2.0) * screw.roughness_ball
-    share = ehl.asperity_share(ehl.lambda_ratio(h_min, sigma), asperity_b, asperity_c)
+    share = ehl.asperity_share(ehl.lambda_ratio_unchecked(h_min, sigma), asperity_b, asperity_c)
     radius = 0.25 * screw.ball_diameter
     mean_pressure = 2.0 / 3.0 * hertz(f_safe, radius, radius, screw.reduced_modulus).p_max
     mu = rl.mixed_friction_coefficient(
         share, boundary, rl.limiting_traction_coefficient(tau0, gamma_l, mean_pressure)
     )
-    result: FloatArray = np.where(loaded, mu, boundary)
+    result: FloatArray = where(loaded, mu, boundary)
     return result
 
 
@@ -515,10 +564,11 @@ def _ball_ball_film(state: OperatingState, contact: ContactState, force: FloatAr
     screw = state.screw
     radius = 0.25 * screw.ball_diameter
     ep = screw.reduced_modulus
-    surface = 0.5 * np.abs(neighbour_sliding(screw, state.kinematics.screw_speed))
-    u_par = ehl.dimensionless_speed(contact.viscosity, surface, ep, radius)
-    w_par = ehl.dimensionless_load(force, ep, radius)
-    h_min: FloatArray = ehl.hamrock_dowson_1977_minimum(
+    surface = 0.5 * np.abs(neighbour_sliding_of(screw, state.kinematics))
+    # From checked inputs (the state's viscosity, the screw, a force > 0): without checks.
+    u_par = ehl.dimensionless_speed_unchecked(contact.viscosity, surface, ep, radius)
+    w_par = ehl.dimensionless_load_unchecked(force, ep, radius)
+    h_min: FloatArray = ehl.hamrock_dowson_1977_minimum_unchecked(
         radius, u_par, contact.materials_parameter, w_par, 1.0
     )
     return h_min
@@ -558,7 +608,7 @@ def _flooded(
     churning: FloatArray = np.zeros(shape)
     per_ball_churn = rl.ball_churning_power(eta, rho, centre, screw.ball_diameter)
     for c in trains:
-        if not np.any(c.balls):
+        if not _any(c.balls):
             continue
         churning = churning + c.balls * per_ball_churn
         if screw.ball_separation != "none":  # spacer balls or a cage: no sliding neighbours
@@ -582,7 +632,7 @@ def _helix_slip(
 ) -> FloatArray:
     """Torque of the transverse slip, summed over the balls of every family [N·m]."""
     screw = state.screw
-    slip = _number(kinematics(screw, 1.0).transverse_slip)
+    slip = _per_speed(screw).slip
     by_name = {c.name: c for c in state.contacts}
     rows = isinstance(screw, ScrewArray)
 
@@ -592,7 +642,7 @@ def _helix_slip(
             k = np.asarray(c.hertz.ellipticity)
             aspect: Number = 1.0 / np.max(k.reshape(k.shape[0], -1), axis=1)
         else:
-            aspect = 1.0 / float(np.max(c.hertz.ellipticity))
+            aspect = 1.0 / _largest(c.hertz.ellipticity)
         return SlipContact(c.side, mu[c.name], c.load, c.hertz.a, aspect, spin[c.side])
 
     groups: list[tuple[tuple[str, ...], int | npt.NDArray[np.intp]]]
@@ -601,12 +651,48 @@ def _helix_slip(
     else:
         groups = [((f"screw-{f}", f"nut-{f}"), by_name[f"screw-{f}"].balls) for f in (1, 2)]
     total: FloatArray = np.zeros(state.shape)
-    for names, balls in groups:
-        if not np.any(balls):
-            continue
-        share = transverse_slip_loss([slip_contact(by_name[n]) for n in names], slip)
-        total = total + balls * share.power
+    groups = [(names, balls) for names, balls in groups if _any(balls)]
+    powers = None if rows or state.shape else _families_at_one_point(
+        [[slip_contact(by_name[n]) for n in names] for names, _ in groups], slip
+    )  # fmt: skip
+    for i, (names, balls) in enumerate(groups):
+        if powers is None:
+            power = transverse_slip_loss([slip_contact(by_name[n]) for n in names], slip).power
+        else:
+            power = powers[i]
+        total = total + balls * power
     return total
+
+
+def _families_at_one_point(
+    families: list[list[SlipContact]], slip: Number
+) -> list[FloatArray] | None:
+    """The slip powers of a double nut's two families at one point, in one solve, or None.
+
+    Both families' balls touch the same sides with the same aspects and spins (their loads
+    differ): their balances are solved as two points of one call of
+    :func:`~ballscrew.helix.transverse_slip_loss`, each point's steps its own (the same
+    numbers as one call a family). None where that does not hold (one family loaded, a
+    4-point nut, contacts that differ): each family is then solved alone.
+    """
+    if len(families) != 2 or len(families[0]) != len(families[1]):
+        return None
+    merged = []
+    for one, two in zip(families[0], families[1], strict=True):
+        if (one.side, one.aspect, one.spin) != (two.side, two.aspect, two.spin):
+            return None
+        merged.append(
+            SlipContact(
+                one.side,
+                np.array([_first(one.friction), _first(two.friction)]),
+                np.array([_first(one.load), _first(two.load)]),
+                np.array([_first(one.semi_axis), _first(two.semi_axis)]),
+                one.aspect,
+                one.spin,
+            )
+        )
+    power = transverse_slip_loss(merged, slip).power
+    return [power[0].reshape(()), power[1].reshape(())]
 
 
 @register(
@@ -697,14 +783,14 @@ def complete(
         ``"four_point"``, ``"seals"`` torques [N·m].
     """
     method = lubrication_method(lubrication, lubricant)
-    mu_bl = float(check_nonnegative("boundary_friction", boundary_friction))
-    check_choice("ball_train", ball_train, BALL_TRAINS)
-    c_b = float(check_nonnegative("ball_train_constant", ball_train_constant))
-    scatter = float(check_nonnegative("contact_angle_scatter", contact_angle_scatter, "rad"))
-    theta = float(check_nonnegative("return_turning_angle", return_turning_angle, "rad"))
-    alpha_h = float(check_nonnegative("hysteresis_loss_factor", hysteresis_loss_factor))
-    seal = float(check_nonnegative("seal_torque", seal_torque, "N·m"))
-    check_wiper_drag("seal_torque", seal, screw.pitch_diameter, warn_above=False)
+    given = (boundary_friction, ball_train, ball_train_constant, contact_angle_scatter,
+             return_turning_angle, hysteresis_loss_factor, seal_torque)  # fmt: skip
+    try:  # the same values at every call of a loop: checked once (a bad one raises each time)
+        mu_bl, c_b, scatter, theta, alpha_h, seal = _numbers_kept(*given)
+    except TypeError:  # a value that cannot be a key (an array): checked afresh
+        mu_bl, c_b, scatter, theta, alpha_h, seal = _numbers(*given)
+    if seal > 0.0:  # no drag cannot be too much
+        check_wiper_drag("seal_torque", seal, screw.pitch_diameter, warn_above=False)
     tau0, gamma_l = limiting_shear(lubricant, limiting_shear_stress, limiting_shear_coefficient)
     state = model_state(
         screw, lubricant, speed, temperature, axial_load, hertz_method=hertz_method,
@@ -738,6 +824,25 @@ def complete(
     return {name: parts[name] for name in order}
 
 
+def _numbers(
+    boundary_friction: Any, ball_train: Any, ball_train_constant: Any, contact_angle_scatter: Any,
+    return_turning_angle: Any, hysteresis_loss_factor: Any, seal_torque: Any,
+) -> tuple[float, float, float, float, float, float]:  # fmt: skip
+    """:func:`complete`'s numeric parameters checked, as floats (and its ball-train rule)."""
+    mu_bl = float(check_nonnegative("boundary_friction", boundary_friction))
+    check_choice("ball_train", ball_train, BALL_TRAINS)
+    c_b = float(check_nonnegative("ball_train_constant", ball_train_constant))
+    scatter = float(check_nonnegative("contact_angle_scatter", contact_angle_scatter, "rad"))
+    theta = float(check_nonnegative("return_turning_angle", return_turning_angle, "rad"))
+    alpha_h = float(check_nonnegative("hysteresis_loss_factor", hysteresis_loss_factor))
+    seal = float(check_nonnegative("seal_torque", seal_torque, "N·m"))
+    return mu_bl, c_b, scatter, theta, alpha_h, seal
+
+
+_numbers_kept = functools.lru_cache(maxsize=64, typed=True)(_numbers)
+""":func:`_numbers` kept by the values' types and values (True is not taken for 1.0)."""
+
+
 def _thermal_reduction(
     screw: ScrewGeometry, lubricant: Lubricant, state: OperatingState, lubrication: str,
     thermal_correction: bool,
@@ -749,7 +854,8 @@ def _thermal_reduction(
     if not thermal_correction:
         return np.ones(state.shape)
     rpm = rad_s_to_rpm(np.abs(state.kinematics.screw_speed))
-    nu = lubricant.kinematic_viscosity(state.temperature) * 1e6  # mm²/s
+    kept = state.kinematic_viscosity if state.lubricant is lubricant else None
+    nu = (lubricant.kinematic_viscosity(state.temperature) if kept is None else kept) * 1e6  # mm²/s
     dm_mm = screw.pitch_diameter * 1e3
     section = 3.4 * screw.ball_diameter * 1e3  # D - d of a 72-series bearing, ~3.4 D_w
     reduction: FloatArray = rl.inlet_shear_heating_factor(rpm, dm_mm, nu)
@@ -772,6 +878,24 @@ class _PerSpeed(NamedTuple):
     curvature: dict[str, Number]  # Heathcote's C / omega
     spin: dict[str, Number]  # omega_s / omega, 2-point contact
     spin4: dict[str, Number]  # |omega_s| / |omega|, 4-point contact
+    slip: Number  # the helix's transverse slip / omega [m]
+    sliding: Number  # neighbouring balls' sliding / omega [m]
+    orbital: Number  # the balls' orbital speed / omega [-]
+
+
+def _any(balls: int | npt.NDArray[np.intp]) -> bool:
+    """Whether any screw has loaded balls here (a count, or one per screw of a ScrewArray)."""
+    return balls != 0 if type(balls) is int else bool(np.any(balls))
+
+
+def _largest(x: FloatArray) -> float:
+    """The largest value of ``x`` (a single value as it is) as a float."""
+    return float(x) if np.ndim(x) == 0 else float(np.max(x))
+
+
+def _first(x: Any) -> float:
+    """The first (at one point: the only) value of ``x`` as a float."""
+    return x if type(x) is float else float(np.asarray(x).reshape(-1)[0])
 
 
 def _number(x: Any) -> Number:
@@ -780,7 +904,15 @@ def _number(x: Any) -> Number:
 
 
 def _per_speed(screw: ScrewGeometry) -> _PerSpeed:
-    """The screw's rolling lever, sliding curvature and spins per unit screw speed."""
+    """The screw's rolling lever, sliding curvature, spins and slips per unit screw speed.
+
+    The geometry's alone: computed once per screw object (:func:`screw_derived`).
+    """
+    return screw_derived(screw, "complete.per_speed", lambda: _unit_speed(screw))
+
+
+def _unit_speed(screw: ScrewGeometry) -> _PerSpeed:
+    """What :func:`_per_speed` keeps, computed."""
     unit = kinematics(screw, 1.0)
     c_s, c_n = differential_sliding(screw, 1.0)
     s4, n4 = four_point_spin(screw, 1.0)
@@ -789,6 +921,9 @@ def _per_speed(screw: ScrewGeometry) -> _PerSpeed:
         curvature={"screw": _number(c_s), "nut": _number(c_n)},
         spin={"screw": _number(unit.spin_screw), "nut": _number(unit.spin_nut)},
         spin4={"screw": _number(np.abs(s4)), "nut": _number(np.abs(n4))},
+        slip=_number(unit.transverse_slip),
+        sliding=_number(neighbour_sliding(screw, 1.0)),
+        orbital=_number(unit.orbital_speed),
     )
 
 
@@ -809,12 +944,21 @@ def _groove_losses(
     """
     rolling_lever = per_speed.rolling_lever
     curvature, spin, spin4 = per_speed.curvature, per_speed.spin, per_speed.spin4
-    parts = {k: np.zeros(state.shape) for k in ("rolling", "sliding", "hysteresis", "four_point")}
+    # One point: the sums as numbers (the same additions), else arrays added in place.
+    one = not state.shape
+    parts: dict[str, Any] = {
+        k: 0.0 if one else np.zeros(state.shape)
+        for k in ("rolling", "sliding", "hysteresis", "four_point")
+    }
     mu: dict[str, FloatArray] = {}
     rows = isinstance(screw, ScrewArray)
-    for c in state.contacts:
-        if not np.any(c.balls):
-            continue
+    loaded = [c for c in state.contacts if _any(c.balls)]
+    # Each loaded contact's 2-point integral (and its 4-point one), taken together at one point.
+    spins = (spin, spin4) if four else (spin,)
+    together = None if rows else _one_point_integrals(
+        [(c, s[c.side], curvature[c.side]) for c in loaded for s in spins]
+    )  # fmt: skip
+    for i, c in enumerate(loaded):
         z = c.balls
         f_r = rl.rolling_force_houpert(
             screw.reduced_modulus,
@@ -829,16 +973,19 @@ def _groove_losses(
         mu[c.name] = rl.mixed_friction_coefficient(
             c.asperity_share, mu_bl, rl.limiting_traction_coefficient(tau0, gamma_l, mean_pressure)
         )
-        two_point = _sliding_per_speed(c, mu[c.name], spin[c.side], curvature[c.side], rows)
+        own = (None, None) if together is None else together[len(spins) * i :][: len(spins)]
+        two_point = _sliding_per_speed(c, mu[c.name], spin[c.side], curvature[c.side], rows, own[0])
         parts["sliding"] += z * two_point
         if four:
             parts["four_point"] += z * (
-                _sliding_per_speed(c, mu[c.name], spin4[c.side], curvature[c.side], rows)
+                _sliding_per_speed(c, mu[c.name], spin4[c.side], curvature[c.side], rows, own[1])
                 - two_point
             )
         parts["hysteresis"] += (
             z * rl.hysteresis_rolling_force(c.load, c.hertz.b, c.rx, alpha_h) * rolling_lever
         )
+    if one:  # arrays, as at many points
+        parts = {k: np.array(v, dtype=float) for k, v in parts.items()}
     return parts, mu
 
 
@@ -921,7 +1068,7 @@ def _creep_coefficient(contact: ContactState, mu: FloatArray, spin: float) -> Fl
     (:func:`ballscrew.ball_train.creep_slope`); 0 where the contact carries no load.
     """
     a = np.broadcast_to(contact.hertz.a, np.shape(contact.load))
-    aspect = 1.0 / float(np.max(contact.hertz.ellipticity))
+    aspect = 1.0 / _largest(contact.hertz.ellipticity)
     capacity = mu * contact.load * float(creep_slope(aspect))
     result: FloatArray = np.divide(
         capacity, abs(spin) * a, out=np.zeros(np.broadcast(capacity, a).shape), where=a > 0.0
@@ -939,10 +1086,10 @@ def _ratio_train(
     screw = state.screw
     shape = state.shape
     touching = screw.ball_separation == "none"  # else no surfaces of the train slide
-    unit = kinematics(screw, 1.0)
+    per_speed = _per_speed(screw)
     # Neighbouring balls slide at omega_b * D_w (4-point: / cos alpha); per unit screw speed:
-    sliding = _number(neighbour_sliding(screw, 1.0))
-    centre = _number(unit.orbital_speed) * 0.5 * screw.pitch_diameter / cos(screw.lead_angle)
+    sliding = per_speed.sliding
+    centre = per_speed.orbital * 0.5 * screw.pitch_diameter / cos(screw.lead_angle)
     mass = STEEL_DENSITY * math.pi * screw.ball_diameter**3 / 6.0
     omega2 = state.kinematics.screw_speed**2
     # Push per circuit over omega^2 [N s^2]: mu_bl m v_c^2 Theta / D_w.
