@@ -382,7 +382,7 @@ def friction_torque(
             memo.move_to_end(key)
             kept_result = memo[key]
             if warn:
-                _warn(list(kept_result.warnings))
+                _warn(list(kept_result.warnings), stacklevel=3)
             return kept_result
     result = _friction_torque(screw, lubricant, model, (speed, temperature, axial_load),
                               chunk_size, warn, components, parameters)  # fmt: skip
@@ -409,7 +409,8 @@ def _friction_torque(
         w, t, fa = w0, t0, fa0  # one shape (a single point): no broadcast views needed
     else:
         w, t, fa = np.broadcast_arrays(w0, t0, fa0)
-    return _result(spec, used, kept, total, (w, t, fa), screw.lead, issues, warn, state)
+    # stacklevel 5: past _warn, _result, this function and friction_torque, its caller.
+    return _result(spec, used, kept, total, (w, t, fa), screw.lead, issues, warn, state, 5)
 
 
 def friction_torques(
@@ -646,12 +647,17 @@ def _result(
     issues: list[ValidityIssue],
     warn: bool,
     state: OperatingState | None = None,
+    stacklevel: int = 4,
 ) -> FrictionResult:
-    """The result of the torques ``total`` at the broadcast ``points``, warned of ``issues``."""
+    """The result of the torques ``total`` at the broadcast ``points``, warned of ``issues``.
+
+    ``stacklevel`` is the warnings' (:func:`_warn`): 4 names the caller of a public function
+    that calls this one directly, one more per helper in between.
+    """
     w, t, fa = points
     efficiency, power_loss = _efficiency_and_power(total, w, fa, lead)
     if warn:
-        _warn(issues)
+        _warn(issues, stacklevel)
     return FrictionResult(
         model=spec.name,
         total=total,
@@ -873,8 +879,13 @@ def _check_solved(
         )
 
 
-def _warn(issues: list[ValidityIssue]) -> None:
-    """Warn of each validity issue; a routine one once per quantity and model in a session."""
+def _warn(issues: list[ValidityIssue], stacklevel: int = 4) -> None:
+    """Warn of each validity issue; a routine one once per quantity and model in a session.
+
+    ``stacklevel`` as :func:`warnings.warn` counts it from here: 3 names the caller of the
+    public function that called this one; 4 (the default) the caller of a public function
+    whose helper did.
+    """
     for issue in issues:
         if issue.routine:
             # Left by every ordinary ball screw: told once per quantity and model
@@ -883,8 +894,7 @@ def _warn(issues: list[ValidityIssue]) -> None:
             if told in _NOTED:
                 continue
             _NOTED.add(told)
-        # stacklevel 4: the caller of friction_torque(s), past this helper and _result.
-        warnings.warn(BallScrewValidityWarning(issue), stacklevel=4)
+        warnings.warn(BallScrewValidityWarning(issue), stacklevel=stacklevel)
 
 
 @dataclass(frozen=True)

@@ -99,6 +99,24 @@ def test_the_warning_points_at_the_line_that_called_friction_torque() -> None:
     assert caught and {w.filename for w in caught} == {__file__}
 
 
+def test_the_warning_points_at_the_caller_also_from_the_memo_and_for_many_screws() -> None:
+    # A result given again from a friction_memo block warns again, at its caller's line too;
+    # and friction_torques (many screws) points at its own caller.
+    from ballscrew.chain import friction_memo, friction_torques
+
+    with friction_memo(), warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        for _ in range(2):  # the second call is answered from the memo
+            friction_torque(reference_screw(), OIL, speed=900.0, temperature=40.0,
+                            model="catalog")  # fmt: skip
+    assert len(caught) >= 2 and {w.filename for w in caught} == {__file__}
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        friction_torques([reference_screw()], OIL, speed=900.0, temperature=40.0,
+                         model="catalog")  # fmt: skip
+    assert caught and {w.filename for w in caught} == {__file__}
+
+
 def test_ellipticity_range_of_the_film_formulas() -> None:
     tight = reference_screw().replace(conformity_screw=0.505, conformity_nut=0.505)
     with warnings.catch_warnings(record=True) as caught:
