@@ -7,6 +7,8 @@ already holds must be taken from it rather than asked for again.
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
 from cli_runner import run
@@ -65,3 +67,111 @@ def test_torque_constant_outside_the_controller_tables_is_refused(
                         "--torque-constant", "1.2 N*m/A"], capsys)  # fmt: skip
     assert code == 2
     assert "--torque-constant is an option of the controller tables" in err
+
+
+MACHINE = str(ROOT / "examples" / "machine_vmc.toml")
+
+
+@pytest.mark.parametrize("content", ["", "\n\n", "  \r\n"])
+def test_an_empty_program_is_refused(
+    content: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """An empty file ran as a program of no block: a table of zeros and exit status 0."""
+    pytest.importorskip("ruckig")
+    empty = tmp_path / "part.nc"
+    empty.write_bytes(content.encode())
+    code, out, err = run(["program", str(empty), "--machine", MACHINE], capsys)
+    assert code == 2 and not out
+    assert f"PROGRAM = '{empty}' is not allowed" in err and "this file is empty" in err
+
+
+@pytest.mark.parametrize(
+    ("args", "says"),
+    [(["torque", "--case"], "case = "), (["program", MACHINE, "--machine"], "--machine = ")],
+)  # fmt: skip
+def test_an_empty_case_or_machine_file_says_it_is_empty(
+    args: list[str], says: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """Both were refused as 'screw = (missing)' / 'machine = (missing)'."""
+    if args[0] == "program":
+        pytest.importorskip("ruckig")
+    empty = tmp_path / "empty.toml"
+    empty.write_text("\n", encoding="utf-8")
+    code, _, err = run([*args, str(empty)], capsys)
+    assert code == 2
+    assert f"{says}'{empty}' is not allowed" in err and "this file is empty" in err
+    assert "(missing)" not in err
+
+
+def test_a_toml_list_where_one_text_goes_is_explained(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A list of loads as a TOML array was refused as 'array of shape (2,) ... Input should
+    be a valid string' (pydantic's words)."""
+    case = tmp_path / "list.toml"
+    text = (ROOT / "examples" / "xy_table_32x10.toml").read_text(encoding="utf-8")
+    case.write_text(text.replace("[operation]", '[operation]\naxial_load = ["1 kN", "2 kN"]', 1),
+                    encoding="utf-8")  # fmt: skip
+    code, _, err = run(["torque", "--case", str(case)], capsys)
+    assert code == 2
+    assert """operation.axial_load = '["1 kN", "2 kN"]' is not allowed""" in err
+    assert "not a TOML list" in err and '"0, 2 kN"' in err
+    assert "array of shape" not in err and "valid string" not in err
+
+
+@pytest.mark.parametrize(
+    ("args", "flag"),
+    [(["torque", "--speed", "1e9 rpm"], "--speed"),
+     (["torque", "--speed", "0..2e6 rpm"], "--speed"),
+     (["energy", "--move", "stroke=100 mm, feed=6 m/min, acceleration=1 m/s^2",
+       "--steady-speeds", "1e9 rpm"], "--steady-speeds")],
+)  # fmt: skip
+def test_a_speed_past_any_screw_is_refused_as_typed(
+    args: list[str], flag: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """Refused as 'speed = 104719755.12 is not allowed: ... rad/s': not the flag, not the
+    value typed. The bound is 1e5 rad/s = 954 930 rpm (30/pi x 1e5)."""
+    code, _, err = run([*args, "--case", XY], capsys)
+    assert code == 2
+    assert f"{flag} = '{args[args.index(flag) + 1]}' is not allowed" in err
+    assert "954,930 rpm" in err
+
+
+def test_a_case_speed_past_any_screw_shows_the_text_of_the_file(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    case = tmp_path / "fast.toml"
+    text = (ROOT / "examples" / "xy_table_32x10.toml").read_text(encoding="utf-8")
+    case.write_text(text.replace("[operation]", '[operation]\nspeed = "1e9 rpm"', 1),
+                    encoding="utf-8")  # fmt: skip
+    code, _, err = run(["torque", "--case", str(case)], capsys)
+    assert code == 2
+    assert "operation.speed = '1e9 rpm' is not allowed" in err
+
+
+def _hand_trace(path: Path) -> Path:
+    """Twenty samples typed by hand (Windows line ends): 0.1 s at 1 m/s^2, then 0.1 m/s;
+    the current steps with the acceleration. Too little motion to fix a mass."""
+    rows = ["time [s],X position [mm],X current [A]"]
+    for k in range(20):
+        t = k * 0.01
+        p = 0.5 * t * t if t <= 0.1 else 0.005 + 0.1 * (t - 0.1)
+        i = 0.3 if k == 0 else (1.3 if t <= 0.1 else 0.55)
+        rows.append(f"{t:.2f},{p * 1e3:.4f},{i:.3f}")
+    path.write_bytes(("\r\n".join(rows) + "\r\n").encode())
+    return path
+
+
+def test_identify_writes_no_machine_file_with_a_negative_mass(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """The fitted mass, negative, was written as 'moving_mass = "-806 kg"' to a calibrated
+    file that 'ballscrew program --machine' then refused ('0 or more')."""
+    trace = _hand_trace(tmp_path / "hand.csv")
+    out = tmp_path / "calibrated.toml"
+    code, printed, err = run(["identify", str(trace), "--machine", MACHINE,
+                              "--calibrated", str(out)], capsys)  # fmt: skip
+    assert code == 2 and not out.exists()
+    assert "moving mass m" in printed  # the fit itself is still shown
+    assert "--calibrated (axes.X moving mass fitted) = '-" in err
+    assert "a mass above 0" in err and "--free kt" in err

@@ -17,6 +17,7 @@ if TYPE_CHECKING:
 __all__ = [
     "OUTPUT_OPTIONS",
     "case_option",
+    "check_speeds",
     "echo_readings",
     "file_option",
     "folder_only",
@@ -148,6 +149,26 @@ def echo_readings(case: Any) -> None:
     for a in case.assumptions:
         if a.reason.startswith("read as "):
             click.echo(f"note: {a.field} = {a.value!r} is {a.reason}", err=True)
+
+
+def check_speeds(flag: str, text: str, speeds: Any) -> None:
+    """Refuse screw ``speeds`` [rad/s] read from ``flag``'s ``text`` past the models' bound.
+
+    Named by the flag, with the value as typed (the models' own check names ``speed`` in
+    rad/s, which is not what the user wrote).
+    """
+    import math
+
+    import numpy as np
+
+    from ..design.limits import MAX_SPEED
+    from ..errors import BallScrewInputError
+
+    if np.any(np.abs(np.asarray(speeds, dtype=float)) > MAX_SPEED):
+        raise BallScrewInputError(
+            flag, text, f"screw speeds below {MAX_SPEED * 30.0 / math.pi:,.0f} rpm "
+            f"({MAX_SPEED:g} rad/s) either way, past any ball screw",
+        )  # fmt: skip
 
 
 def require_case(case_file: str | None, command: str, why: str) -> str:

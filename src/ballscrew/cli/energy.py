@@ -12,6 +12,7 @@ from rich.table import Table
 from ..errors import BallScrewInputError
 from ..io.numbers import text as num
 from .common import (
+    check_speeds,
     echo_readings,
     folder_option,
     json_option,
@@ -95,6 +96,8 @@ def energy_command(
                    "), so a measured axis at rest does not chatter", err=True)  # fmt: skip
     speeds = None if steady_speeds is None else parse_range("--steady-speeds", steady_speeds,
                                                               "rad/s")  # fmt: skip
+    if speeds is not None:
+        check_speeds("--steady-speeds", str(steady_speeds), speeds)
     temp = to_si("--temperature", temperature, "degC") if temperature else None
     run = run_energy(case, profile, model_names, cycles=cycles, temperature=temp,
                      run_time=to_si("--run-time", run_time, "s"), steady_speeds=speeds,

@@ -15,6 +15,7 @@ from ..errors import BallScrewInputError
 from ..io.units import Reading
 from .common import (
     case_option,
+    check_speeds,
     echo_readings,
     file_option,
     progress,
@@ -210,6 +211,8 @@ def _points(
 
     w = (np.asarray(parse_speed_range("--speed", speed, case.screw.lead, notes=read))
          if speed else case.speed)  # fmt: skip
+    if speed:
+        check_speeds("--speed", speed, w)
     t = np.asarray(parse_range("--temperature", temperature, "degC")) if temperature else None
     t = case.temperature if t is None else t
     f = np.asarray(parse_range("--axial-load", axial_load, "N")) if axial_load else None

@@ -436,6 +436,12 @@ def _validation_error(exc: ValidationError) -> BallScrewInputError:
         if close:
             allowed = f"no such field; did you mean {'.'.join([*parts[:-1], close[0]])}?"
     value = "(missing)" if kind == "missing" else err.get("input", "")
+    if isinstance(value, list) and kind.endswith("_type"):  # a TOML list where one text goes
+        shown = ", ".join(f'"{v}"' if isinstance(v, str) else str(v) for v in value)
+        value = f"[{shown}]"
+        allowed = "one quoted text with its unit, not a TOML list" + (
+            ": several values go in the one text, e.g. \"0, 2 kN\" or \"10..3000:60 rpm\""
+            if field.startswith("operation.") else "")  # fmt: skip
     return BallScrewInputError(field, value, allowed)
 
 
@@ -498,8 +504,12 @@ def _read_case(text: str, source: str) -> Case:
     lub = _lubricant(data.lubricant, notes)
     lubrication = _lubrication(data, lub, notes)
     speed, temperature, axial = _operation(data, notes, read, screw.lead)
-    # What every run checks before it computes, named as the file names it.
-    check_operating_bounds(speed, temperature, axial, "operation.")
+    # What every run checks before it computes, named as the file names it, its value as typed.
+    try:
+        check_operating_bounds(speed, temperature, axial, "operation.")
+    except BallScrewInputError as out:
+        typed = getattr(data.operation, out.field.removeprefix("operation."), out.value)
+        raise BallScrewInputError(out.field, typed, out.allowed) from None
     lub.check_temperature("operation.temperature", temperature)
     st = data.study
     wiper, scatter = _screw_extras(s, st, screw, si, notes)
@@ -1268,4 +1278,9 @@ def load_case(path: str | Path | None = None) -> Case:
     """Load a case file; the bundled default case when ``path`` is None."""
     file = default_case_path() if path is None else Path(path)
     text = read_input_text("case", file)
+    if not text.strip():  # a failed copy or export: not "screw missing"
+        raise BallScrewInputError(
+            "case", str(file), "a case file with its [screw] and [lubricant] tables (this file "
+            "is empty; 'ballscrew case --template' writes one to fill in)",
+        )  # fmt: skip
     return parse_case(text, source=str(file))

@@ -668,4 +668,9 @@ def load_machine(path: str | Path) -> Machine:
     """Load a machine file; its cases' paths are relative to its folder."""
     file = Path(path)
     text = read_input_text("--machine", file)
+    if not text.strip():  # a failed copy or export: not "machine missing"
+        raise BallScrewInputError(
+            "--machine", str(file), "a machine file with its [machine] and [axes.X] tables "
+            "(this file is empty; examples/machine_vmc.toml is one to start from)",
+        )  # fmt: skip
     return parse_machine(text, source=str(file), folder=file.parent)
