@@ -175,3 +175,13 @@ def test_identify_writes_no_machine_file_with_a_negative_mass(
     assert "moving mass m" in printed  # the fit itself is still shown
     assert "--calibrated (axes.X moving mass fitted) = '-" in err
     assert "a mass above 0" in err and "--free kt" in err
+
+
+@pytest.mark.parametrize("flag", ["--speed", "--temperature", "--axial-load"])
+def test_an_empty_operating_point_option_is_refused(
+    flag: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """'--speed ""' (a shell variable left empty) ran the case's own speeds without a word."""
+    code, out, err = run(["torque", "--case", XY, flag, ""], capsys)
+    assert code == 2 and not out
+    assert f"{flag} = '' is not allowed" in err
