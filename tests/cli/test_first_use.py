@@ -185,3 +185,22 @@ def test_an_empty_operating_point_option_is_refused(
     code, out, err = run(["torque", "--case", XY, flag, ""], capsys)
     assert code == 2 and not out
     assert f"{flag} = '' is not allowed" in err
+
+
+def test_program_summary_prints_large_values_plainly() -> None:
+    """An hour's program supplies more than 10 kJ: '{:.4g}' printed it '1.235e+04' beside
+    the grid rows' plain '12760'; a thermal error above 100 um printed '1.2e+02'."""
+    pytest.importorskip("ruckig")
+    import dataclasses
+
+    from ballscrew.io.machine import load_machine
+    from ballscrew.program import run_program
+    from ballscrew.report.program import summary_rows
+
+    r = run_program(load_machine(MACHINE), "G21 G90\nG1 X10 F3000\nM30\n")
+    r.axes["X"] = dataclasses.replace(r.axes["X"], supplied_energy=12345.6,
+                                      thermal_lead_error=123.4e-6)  # fmt: skip
+    rows = {row[0]: row[1:] for row in summary_rows(r)}
+    assert rows["energy supplied [J]"][0] == "12350"  # 4 significant digits, no exponent
+    assert rows["thermal lead error over the travel [um]"][0] == "120"
+    assert "reversals (load +/+, +/-, -/+, -/-)" in rows
