@@ -204,3 +204,16 @@ def test_program_summary_prints_large_values_plainly() -> None:
     assert rows["energy supplied [J]"][0] == "12350"  # 4 significant digits, no exponent
     assert rows["thermal lead error over the travel [um]"][0] == "120"
     assert "reversals (load +/+, +/-, -/+, -/-)" in rows
+
+
+@pytest.mark.parametrize("command", ["energy", "check"])
+@pytest.mark.parametrize("typed", ["0 s", "-2 min"])
+def test_a_run_time_is_refused_as_typed(
+    command: str, typed: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """'--run-time "0 s"' was refused as '--run-time = '0 h'': not what was typed."""
+    code, _, err = run([command, "--case", XY, "--move",
+                        "stroke=100 mm, feed=6 m/min, acceleration=1 m/s^2",
+                        "--run-time", typed], capsys)  # fmt: skip
+    assert code == 2
+    assert f"--run-time = '{typed}' is not allowed: more than 0 and at most 100,000 h" in err

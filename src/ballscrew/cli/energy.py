@@ -18,6 +18,7 @@ from .common import (
     json_option,
     motion,
     motion_options,
+    run_time_si,
     stdout,
     units_option,
     verbose,
@@ -100,7 +101,7 @@ def energy_command(
         check_speeds("--steady-speeds", str(steady_speeds), speeds)
     temp = to_si("--temperature", temperature, "degC") if temperature else None
     run = run_energy(case, profile, model_names, cycles=cycles, temperature=temp,
-                     run_time=to_si("--run-time", run_time, "s"), steady_speeds=speeds,
+                     run_time=run_time_si(run_time), steady_speeds=speeds,
                      move=m, motion_field="--move" if move_text else "--profile")  # fmt: skip
     for finding in run.findings:
         click.echo(f"warning: {finding}", err=True)
