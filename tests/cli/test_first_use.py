@@ -217,3 +217,36 @@ def test_a_run_time_is_refused_as_typed(
                         "--run-time", typed], capsys)  # fmt: skip
     assert code == 2
     assert f"--run-time = '{typed}' is not allowed: more than 0 and at most 100,000 h" in err
+
+
+def _machine_with(tmp_path: Path, old: str, new: str) -> Path:
+    text = (ROOT / "examples" / "machine_vmc.toml").read_text(encoding="utf-8")
+    assert old in text
+    path = tmp_path / "machine.toml"
+    path.write_text(text.replace(old, new, 1), encoding="utf-8")
+    (tmp_path / "vertical_32x5.toml").write_text(
+        (ROOT / "examples" / "vertical_32x5.toml").read_text(encoding="utf-8"), encoding="utf-8"
+    )
+    return path
+
+
+def test_a_reversed_travel_is_shown_as_written(tmp_path: Path) -> None:
+    """Refused as 'axes.X.travel = array of shape (2,)'."""
+    from ballscrew.errors import BallScrewInputError
+    from ballscrew.io.machine import load_machine
+
+    path = _machine_with(tmp_path, 'travel = ["0 mm", "800 mm"]', 'travel = ["800 mm", "0 mm"]')
+    with pytest.raises(BallScrewInputError) as info:
+        load_machine(path)
+    assert str(info.value).startswith("""axes.X.travel = '["800 mm", "0 mm"]' is not allowed""")
+
+
+def test_a_negative_tool_length_is_refused(tmp_path: Path) -> None:
+    """T1 = "-95 mm" (a Fanuc H register's sign) was taken, moving Z 190 mm off."""
+    from ballscrew.errors import BallScrewInputError
+    from ballscrew.io.machine import load_machine
+
+    path = _machine_with(tmp_path, 'T1 = { value = "95 mm"', 'T1 = { value = "-95 mm"')
+    with pytest.raises(BallScrewInputError, match=r"tools\.T1 = '-95 mm' is not allowed: a "
+                       "tool length of 0 or more"):  # fmt: skip
+        load_machine(path)
