@@ -250,3 +250,21 @@ def test_a_negative_tool_length_is_refused(tmp_path: Path) -> None:
     with pytest.raises(BallScrewInputError, match=r"tools\.T1 = '-95 mm' is not allowed: a "
                        "tool length of 0 or more"):  # fmt: skip
         load_machine(path)
+
+
+@pytest.mark.parametrize(
+    ("flag", "typed", "allowed"),
+    [("--radius", "0 mm", "more than 0"), ("--radius", "-50 mm", "more than 0"),
+     ("--feed", "0 m/min", "more than 0"), ("--sampling-time", "0 ms", "more than 0"),
+     ("--phase-margin", "0 deg", "between 0 and 90 deg"),
+     ("--phase-margin", "120 deg", "between 0 and 90 deg")],
+)  # fmt: skip
+def test_contour_options_refused_as_typed(
+    flag: str, typed: str, allowed: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """Refused as '--radius = -0.05 ... a positive radius [m]', 'phase_margin =
+    119.99999999999999': SI numbers the user never typed."""
+    pytest.importorskip("control")
+    code, _, err = run(["contour", "--case", XY, "--case", XY, flag, typed], capsys)
+    assert code == 2
+    assert f"{flag} = '{typed}' is not allowed: {allowed}" in err
