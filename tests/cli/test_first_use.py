@@ -268,3 +268,48 @@ def test_contour_options_refused_as_typed(
     code, _, err = run(["contour", "--case", XY, "--case", XY, flag, typed], capsys)
     assert code == 2
     assert f"{flag} = '{typed}' is not allowed: {allowed}" in err
+
+
+def test_a_case_file_saved_with_a_byte_order_mark_is_read(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """Notepad's 'UTF-8 with BOM' and CR LF line ends: refused as 'valid TOML (Invalid
+    statement (at line 1, column 1))'. It must give the same torque as the plain file."""
+    plain = ROOT / "examples" / "xy_table_32x10.toml"
+    saved = tmp_path / "notepad.toml"
+    saved.write_bytes(b"\xef\xbb\xbf" + plain.read_bytes().replace(b"\n", b"\r\n"))
+    args = ["torque", "--speed", "1000 rpm", "--json", "-", "--table", "none"]
+    code, windows, err = run([*args, "--case", str(saved)], capsys)
+    assert code == 0, err
+    code, unix, err = run([*args, "--case", str(plain)], capsys)
+    assert code == 0, err
+    import json
+
+    assert json.loads(windows)["rows"] == json.loads(unix)["rows"]
+
+
+def test_identify_calibrates_a_machine_saved_with_a_byte_order_mark(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """The machine read, its text re-read by tomlkit for the calibrated file failed with
+    'internal error: EmptyKeyError: Empty key at line 1 col 0'."""
+    machine = tmp_path / "machine.toml"
+    machine.write_bytes(b"\xef\xbb\xbf" + (ROOT / "examples" / "machine_vmc.toml").read_bytes())
+    (tmp_path / "vertical_32x5.toml").write_bytes(
+        b"\xef\xbb\xbf" + (ROOT / "examples" / "vertical_32x5.toml").read_bytes()
+    )
+    trace = tmp_path / "trace.csv"
+    rows = ["time [s],X position [mm],X current [A],Z position [mm],Z current [A]"]
+    for k in range(400):  # X and Z out and back at 0.1 m/s: enough to fit, quickly
+        t = k * 0.004
+        x = 50.0 * (1.0 - abs(1.0 - t / 0.8)) if t < 1.6 else 0.0
+        rows.append(f"{t:.3f},{x:.4f},{0.4 if k % 200 < 100 else -0.4:.3f},{-x:.4f},0.6")
+    trace.write_text("\n".join(rows) + "\n", encoding="utf-8")
+    out = tmp_path / "calibrated.toml"
+    code, _, err = run(["identify", str(trace), "--machine", str(machine), "--calibrated",
+                        str(out), "--free", "kt"], capsys)  # fmt: skip
+    assert "internal error" not in err
+    assert code == 0, err
+    from ballscrew.io.machine import load_machine
+
+    assert load_machine(out).axes["X"].case.screw.lead == pytest.approx(0.010)

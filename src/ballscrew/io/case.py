@@ -124,8 +124,11 @@ def parse_toml(text: str, source: str) -> dict[str, Any]:
     100 000 ``[`` ran out of stack) and slows with the square of a dotted
     key's parts (one key of 50 000 parts took a minute): the text is refused,
     naming ``source``, when it is over :data:`MAX_TOML_CHARS` characters, has a
-    key of :data:`MAX_TOML_DEPTH` dotted parts or more, or nests deeper.
+    key of :data:`MAX_TOML_DEPTH` dotted parts or more, or nests deeper. A leading
+    byte-order mark (Windows editors save UTF-8 with one) is dropped, as the CSV and
+    program readers drop it; the TOML parser refuses it.
     """
+    text = text.removeprefix("\ufeff")
     if len(text) > MAX_TOML_CHARS:
         raise BallScrewInputError(
             source, f"{len(text):,} characters", f"at most {MAX_TOML_CHARS:,} characters"
@@ -452,6 +455,7 @@ def parse_case(text: str, *, source: str = "case") -> Case:
     (:class:`~ballscrew.errors.BallScrewPlausibilityWarning`) once, and kept in
     :attr:`Case.warned` for the faces that answer with their warnings (the web).
     """
+    text = text.removeprefix("\ufeff")  # kept as Case.text, which tomlkit re-reads
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", BallScrewPlausibilityWarning)
         case = _parse_case(text, source)

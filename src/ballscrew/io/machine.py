@@ -448,6 +448,7 @@ def parse_machine(
     ``folder`` None: every case must be inline (no file is read). See the module
     docstring for the format.
     """
+    text = text.removeprefix("\ufeff")  # kept as Machine.text, which tomlkit re-reads
     raw = parse_toml(text, source)
     try:
         data = MachineFile.model_validate(raw)
