@@ -313,3 +313,23 @@ def test_identify_calibrates_a_machine_saved_with_a_byte_order_mark(
     from ballscrew.io.machine import load_machine
 
     assert load_machine(out).axes["X"].case.screw.lead == pytest.approx(0.010)
+
+
+@pytest.mark.parametrize(
+    "args",
+    [["torque", "--case", XY, "--json", ""],
+     ["energy", "--case", XY, "--move", "stroke=100 mm, feed=6 m/min, acceleration=1 m/s^2",
+      "--temperature", " "],
+     ["export-friction", "--case", XY, "--temperature", ""],
+     ["check", "--case", "", "--move", "stroke=100 mm, feed=6 m/min, acceleration=1 m/s^2"],
+     ["torque", "--case", XY, "--model", "complete", "--model", ""]],
+)  # fmt: skip
+def test_any_option_typed_empty_is_refused(
+    args: list[str], capsys: pytest.CaptureFixture[str]
+) -> None:
+    """'--json ""' wrote nothing, '--temperature ""' took the case's: both without a word
+    (a shell variable left empty)."""
+    code, out, err = run(args, capsys)
+    empty = next(i for i, a in enumerate(args) if not a.strip())
+    assert code == 2 and not out
+    assert f"{args[empty - 1]} = '{args[empty]}' is not allowed: a value" in err
