@@ -226,7 +226,7 @@ def test_a_ball_as_large_as_the_lead_is_refused_in_a_sweep(
 @pytest.mark.parametrize(
     ("option", "value", "field"),
     [
-        ("--speed", "1.7e6 rpm", "speed"),
+        ("--speed", "1.7e6 rpm", "--speed"),  # as typed, naming the option
         # Refused as read, naming the option and the text as typed (no machine is there).
         ("--temperature", "501 degC", "--temperature"),
         ("--temperature", "40 K", "--temperature"),

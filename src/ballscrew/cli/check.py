@@ -15,6 +15,7 @@ from .common import (
     motion,
     motion_options,
     require_case,
+    run_time_si,
     stdout,
     units_option,
     write_outputs,
@@ -88,7 +89,7 @@ def check_command(
     profile, m = motion(move_text, profile_file, cycles)
     temp = to_si("--temperature", temperature, "degC") if temperature else None
     run = run_energy(case, profile, [model_name], cycles=cycles, temperature=temp,
-                     run_time=to_si("--run-time", run_time, "s"), move=m)  # fmt: skip
+                     run_time=run_time_si(run_time), move=m)  # fmt: skip
     result = run_check(run, model_name)
     command = ["ballscrew", "check", "--case", source]
     for flag, value in (("--move", move_text), ("--profile", profile_file),

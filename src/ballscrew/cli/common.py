@@ -17,6 +17,7 @@ if TYPE_CHECKING:
 __all__ = [
     "OUTPUT_OPTIONS",
     "case_option",
+    "check_speeds",
     "echo_readings",
     "file_option",
     "folder_only",
@@ -26,6 +27,7 @@ __all__ = [
     "refuse_shared_outputs",
     "require_case",
     "result_document",
+    "run_time_si",
     "stdout",
     "units_option",
     "write_json",
@@ -148,6 +150,43 @@ def echo_readings(case: Any) -> None:
     for a in case.assumptions:
         if a.reason.startswith("read as "):
             click.echo(f"note: {a.field} = {a.value!r} is {a.reason}", err=True)
+
+
+def check_speeds(flag: str, text: str, speeds: Any) -> None:
+    """Refuse screw ``speeds`` [rad/s] read from ``flag``'s ``text`` past the models' bound.
+
+    Named by the flag, with the value as typed (the models' own check names ``speed`` in
+    rad/s, which is not what the user wrote).
+    """
+    import math
+
+    import numpy as np
+
+    from ..design.limits import MAX_SPEED
+    from ..errors import BallScrewInputError
+
+    if np.any(np.abs(np.asarray(speeds, dtype=float)) > MAX_SPEED):
+        raise BallScrewInputError(
+            flag, text, f"screw speeds below {MAX_SPEED * 30.0 / math.pi:,.0f} rpm "
+            f"({MAX_SPEED:g} rad/s) either way, past any ball screw",
+        )  # fmt: skip
+
+
+def run_time_si(text: str) -> float:
+    """``--run-time`` [s], refused as typed unless more than 0 and at most the longest run.
+
+    (The run's own check names the value in hours: '0 s' was refused as '0 h'.)
+    """
+    from ..axis.duty import MAX_RUN_TIME
+    from ..errors import BallScrewInputError
+    from ..io.units import to_si
+
+    seconds = to_si("--run-time", text, "s")
+    if not 0.0 < seconds <= MAX_RUN_TIME:
+        raise BallScrewInputError(
+            "--run-time", text, f"more than 0 and at most {MAX_RUN_TIME / 3600.0:,.0f} h"
+        )
+    return seconds
 
 
 def require_case(case_file: str | None, command: str, why: str) -> str:

@@ -155,15 +155,33 @@ def _run(run_contour: Any, cases: list[Any], radius: str, feed: str,
          phase_margin: str, feed_forward: bool, feedback: str, guide_friction: str | None,
          rigid: bool, pre_rolling: str | None, max_samples: int | None,
          advance: Any) -> ContourResult:  # fmt: skip
-    """The options in SI, to :func:`ballscrew.servo.run_contour`."""
+    """The options in SI, to :func:`ballscrew.servo.run_contour`.
+
+    The radius, feed, sampling time and phase margin are refused here, as typed (the
+    run's own checks name them in SI: '--radius = 0.0 ... [m]').
+    """
+    import math
+
+    from ..errors import BallScrewInputError
     from ..io.units import to_si
     from ..servo.verdict import MAX_SAMPLES
 
+    def positive(flag: str, text: str, unit: str, example: str) -> float:
+        value = to_si(flag, text, unit)
+        if not value > 0.0:
+            raise BallScrewInputError(flag, text, f"more than 0, e.g. '{example}'")
+        return value
+
+    margin = to_si("--phase-margin", phase_margin, "rad")
+    if not 0.0 < margin < 0.5 * math.pi:
+        raise BallScrewInputError("--phase-margin", phase_margin,
+                                  "between 0 and 90 deg, e.g. '45 deg'")  # fmt: skip
     return run_contour(  # type: ignore[no-any-return]
-        cases, radius=to_si("--radius", radius, "m"), feed=to_si("--feed", feed, "m/s"),
+        cases, radius=positive("--radius", radius, "m", "50 mm"),
+        feed=positive("--feed", feed, "m/s", "2 m/min"),
         model=model_name, directions=directions or ("CCW", "CW"),
-        sampling_time=to_si("--sampling-time", sampling_time, "s"),
-        kv=to_si("--kv", kv, "1/s"), phase_margin=to_si("--phase-margin", phase_margin, "rad"),
+        sampling_time=positive("--sampling-time", sampling_time, "s", "250 us"),
+        kv=to_si("--kv", kv, "1/s"), phase_margin=margin,
         velocity_ff=1.0 if feed_forward else 0.0, acceleration_ff=1.0 if feed_forward else 0.0,
         feedback=feedback,
         guide_coulomb=to_si("--guide-friction", guide_friction, "N") if guide_friction else None,

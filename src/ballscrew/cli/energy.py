@@ -12,11 +12,13 @@ from rich.table import Table
 from ..errors import BallScrewInputError
 from ..io.numbers import text as num
 from .common import (
+    check_speeds,
     echo_readings,
     folder_option,
     json_option,
     motion,
     motion_options,
+    run_time_si,
     stdout,
     units_option,
     verbose,
@@ -95,9 +97,11 @@ def energy_command(
                    "), so a measured axis at rest does not chatter", err=True)  # fmt: skip
     speeds = None if steady_speeds is None else parse_range("--steady-speeds", steady_speeds,
                                                               "rad/s")  # fmt: skip
+    if speeds is not None:
+        check_speeds("--steady-speeds", str(steady_speeds), speeds)
     temp = to_si("--temperature", temperature, "degC") if temperature else None
     run = run_energy(case, profile, model_names, cycles=cycles, temperature=temp,
-                     run_time=to_si("--run-time", run_time, "s"), steady_speeds=speeds,
+                     run_time=run_time_si(run_time), steady_speeds=speeds,
                      move=m, motion_field="--move" if move_text else "--profile")  # fmt: skip
     for finding in run.findings:
         click.echo(f"warning: {finding}", err=True)

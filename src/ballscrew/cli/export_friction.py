@@ -12,6 +12,7 @@ from rich.console import Console
 from rich.table import Table
 
 from .._version import __version__
+from ..errors import BallScrewInputError
 from ..io.numbers import text as num
 from .common import case_option, require_case, stdout, write_outputs, writing
 
@@ -41,7 +42,8 @@ __all__ = ["export_friction_command"]
 @click.option(
     "--torque-constant",
     default=None,
-    help="Motor torque constant K_t, e.g. '1.2 N*m/A', for a frict-comp --drive-unit in current.",
+    help="Motor torque constant K_t, e.g. '1.2 N*m/A', for a frict-comp --drive-unit in current "
+    "(default: the case's [motor] torque_constant).",
 )
 @click.option("--axis", "axis_name", default=None,
               help="Axis of a controller table, e.g. 'X': the lincurve instance x-friction, "
@@ -135,7 +137,8 @@ def export_friction_command(
                                ControllerFileArgs(torque_constant, axis_name, axis_number,
                                                   drive_unit, cnc_build, append))  # fmt: skip
         return
-    for flag, given in (("--axis", axis_name), ("--axis-number", axis_number),
+    for flag, given in (("--torque-constant", torque_constant),
+                        ("--axis", axis_name), ("--axis-number", axis_number),
                         ("--drive-unit", drive_unit), ("--cnc-build", cnc_build),
                         ("--append", append or None)):  # fmt: skip
         if given is not None:
@@ -146,8 +149,11 @@ def export_friction_command(
     from ..io.units import Reading, parse_range, to_si
     from ..servo.export import FrictionExport, log_speeds, run_export_friction
 
-    def si(flag: str, text: str | None, unit: str) -> float | None:
-        return to_si(flag, text, unit) if text else None
+    def si(flag: str, text: str | None, unit: str, positive: bool = False) -> float | None:
+        value = to_si(flag, text, unit) if text else None
+        if positive and value is not None and not value > 0.0:
+            raise BallScrewInputError(flag, text, f"more than 0 (in e.g. '{unit}')")
+        return value
 
     if measured_file is not None:
         require_case(case_file, "export-friction --measured",
@@ -167,9 +173,11 @@ def export_friction_command(
             case, model_name, form, temperatures=temps, speeds=speeds,
             measured=read_measured(measured_file, case.screw) if measured_file else None,
             axial_load=si("--axial-load", axial_load, "N"),
-            inertia=si("--inertia", inertia, "kg*m**2"),
-            bristle_stiffness=si("--bristle-stiffness", bristle_stiffness, "N*m/rad"),
-            bristle_damping=si("--bristle-damping", bristle_damping, "N*m*s/rad"),
+            inertia=si("--inertia", inertia, "kg*m**2", positive=True),
+            bristle_stiffness=si("--bristle-stiffness", bristle_stiffness, "N*m/rad",
+                                 positive=True),
+            bristle_damping=si("--bristle-damping", bristle_damping, "N*m*s/rad",
+                               positive=True),
         )  # fmt: skip
     if isinstance(result, FrictionExport):
         _print_export(result, form, out_file, json_file)
@@ -352,13 +360,23 @@ def write_controller_table(
     if not top > 0.0:
         raise click.UsageError("--speed needs a positive speed for the table's range")
     temps = parse_range("--temperature", temperature, "degC") if temperature else None
+    unit = DriveUnit.parse(args.drive_unit) if args.drive_unit else None
+    k_t = to_si("--torque-constant", torque_constant, "N*m/A") if torque_constant else None
+    if target == "frict-comp" and unit is not None and unit.kind == "current" and k_t is None:
+        k_t = case.motor.get("torque_constant")
+        if k_t is None:
+            raise BallScrewInputError(
+                "--torque-constant", "(not given)",
+                "the motor's torque constant K_t, e.g. '1.2 N*m/A', or the case's [motor] "
+                f"torque_constant (the drive's unit {unit.text!r} is a current)",
+            )  # fmt: skip
+        click.echo(f"note: --torque-constant: the case's motor.torque_constant, {k_t:g} N*m/A",
+                   err=True)  # fmt: skip
     result = controller_table(
         case, model_name, target, speed_range=top,
         temperature=None if temps is None else float(np.ravel(temps)[0]),
         axial_load=to_si("--axial-load", axial_load, "N") if axial_load else None,
-        torque_constant=(to_si("--torque-constant", torque_constant, "N*m/A")
-                         if torque_constant else None),
-        drive_unit=DriveUnit.parse(args.drive_unit) if args.drive_unit else None,
+        torque_constant=k_t, drive_unit=unit,
     )  # fmt: skip
     console = stdout("-" if out_file == "-" else json_file)
     table = Table(title=f"{case.title}: {target} table of {result.model} at "

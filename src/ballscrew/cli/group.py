@@ -103,11 +103,38 @@ def _one_owner(command: click.Command) -> click.Command:
 
     @functools.wraps(callback)
     def guarded(*args: Any, **kwargs: Any) -> Any:
+        _refuse_empty_values(command)
         refuse_shared_outputs(command, kwargs)
         return callback(*args, **kwargs)
 
     command.callback = guarded
     return command
+
+
+KEEPS_EMPTY = frozenset({"host"})
+"""Options whose empty value means something (``serve --host ""``: every interface)."""
+
+
+def _refuse_empty_values(command: click.Command) -> None:
+    """Refuse an option typed with an empty value (``--speed ""``, ``--json ""``).
+
+    A shell variable left empty gives one; the commands took it as the option left out
+    (the case's speeds, no JSON written) without a word.
+    """
+    ctx = click.get_current_context()
+    for param in command.params:
+        if not isinstance(param, click.Option) or param.name in KEEPS_EMPTY or not param.name:
+            continue
+        if ctx.get_parameter_source(param.name) is not click.core.ParameterSource.COMMANDLINE:
+            continue
+        value = ctx.params.get(param.name)
+        values = value if isinstance(value, tuple) else (value,)
+        for v in values:
+            if isinstance(v, str) and not v.strip():
+                raise BallScrewInputError(
+                    param.opts[0], v, "a value: an empty text is none (leave the option out "
+                    "for its default)",
+                )  # fmt: skip
 
 
 VALUE_NAMES: dict[str, str] = {

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 import click
 
 from .common import (
@@ -30,6 +32,25 @@ def _constants(text: str | None) -> dict[str, float]:
                                       "LETTER=VALUE with its unit, e.g. 'X=1.2 N*m/A'")  # fmt: skip
         out[letter] = to_si(f"--torque-constant {letter}", value.strip(), "N*m/A")
     return out
+
+
+def _refuse_unphysical_mass(result: Any, option: str) -> None:
+    """Refuse to write a calibrated machine file whose fitted moving mass is 0 or less.
+
+    ``ballscrew program`` refuses such a file ('axis.moving_mass ... 0 or more'): the fit
+    printed above is kept, the file is not written, and the refusal says what to change.
+    """
+    from ..errors import BallScrewInputError
+
+    for letter, fit in result.fits.items():
+        mass = fit.parameters["moving_mass"]
+        if mass.fitted and mass.identifiable and not mass.value > 0.0:
+            raise BallScrewInputError(
+                f"{option} (axes.{letter} moving mass fitted)", f"{mass.value:.4g} kg",
+                f"a mass above 0, what a machine file holds (95 % interval {mass.low:.4g} to "
+                f"{mass.high:.4g} kg): no physical mass explains this trace (see the notes); "
+                "record one with more accelerations, or hold the case's mass (--free kt)",
+            )  # fmt: skip
 
 
 @click.command("identify")
@@ -144,6 +165,8 @@ def identify_command(
         for row in score_rows(score, base):
             table.add_row(*row)
         out.print(table)
+    if calibrated_file or out_dir:  # both write the calibrated machine file
+        _refuse_unphysical_mass(result, "--calibrated" if calibrated_file else "--out")
     calibrated = calibrated_machine_text(machine, result)
     from ..report.identify import write_identify_report
 

@@ -74,6 +74,12 @@ def program_command(
 
     machine = load_machine(machine_file)
     text = read_input_text("PROGRAM", program_file)
+    if not text.strip():  # a failed copy or post: not a program that moves nothing
+        from ..errors import BallScrewInputError
+
+        raise BallScrewInputError(
+            "PROGRAM", program_file, "a G-code program (this file is empty, or blank lines only)"
+        )
     read = read_part_program(
         text, reader=reader, arc_tolerance=machine.arc_tolerance,
         directory=Path(program_file).parent, tool_table=tool_table, machine=machine,

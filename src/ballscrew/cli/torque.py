@@ -15,6 +15,7 @@ from ..errors import BallScrewInputError
 from ..io.units import Reading
 from .common import (
     case_option,
+    check_speeds,
     echo_readings,
     file_option,
     progress,
@@ -174,7 +175,7 @@ def torque(
             case.screw, case.lubricant, model_names, w, t, f,
             parameters={name: case.parameters_for(name) for name in model_names},
             ratings=case.load_ratings(),
-            load_field="--axial-load" if axial_load else "operation.axial_load",
+            load_field="--axial-load" if axial_load is not None else "operation.axial_load",
             wiper_drag=case.wiper_drag, wiper_models=WIPER_PARAMETERS, on_model=advance,
         )  # fmt: skip
     run = TorqueRun(case, table, tuple(str(r) for r in read))
@@ -209,10 +210,16 @@ def _points(
     from ..io.units import parse_range, parse_speed_range
 
     w = (np.asarray(parse_speed_range("--speed", speed, case.screw.lead, notes=read))
-         if speed else case.speed)  # fmt: skip
-    t = np.asarray(parse_range("--temperature", temperature, "degC")) if temperature else None
+         if speed is not None else case.speed)  # fmt: skip
+    if speed is not None:
+        check_speeds("--speed", speed, w)
+    t = (
+        np.asarray(parse_range("--temperature", temperature, "degC"))
+        if temperature is not None
+        else None
+    )
     t = case.temperature if t is None else t
-    f = np.asarray(parse_range("--axial-load", axial_load, "N")) if axial_load else None
+    f = np.asarray(parse_range("--axial-load", axial_load, "N")) if axial_load is not None else None
     f = case.axial_load if f is None else f
     points = math.prod(np.size(a) for a in (w, t, f)) * models
     if points > max_points:

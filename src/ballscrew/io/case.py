@@ -124,8 +124,11 @@ def parse_toml(text: str, source: str) -> dict[str, Any]:
     100 000 ``[`` ran out of stack) and slows with the square of a dotted
     key's parts (one key of 50 000 parts took a minute): the text is refused,
     naming ``source``, when it is over :data:`MAX_TOML_CHARS` characters, has a
-    key of :data:`MAX_TOML_DEPTH` dotted parts or more, or nests deeper.
+    key of :data:`MAX_TOML_DEPTH` dotted parts or more, or nests deeper. A leading
+    byte-order mark (Windows editors save UTF-8 with one) is dropped, as the CSV and
+    program readers drop it; the TOML parser refuses it.
     """
+    text = text.removeprefix("\ufeff")
     if len(text) > MAX_TOML_CHARS:
         raise BallScrewInputError(
             source, f"{len(text):,} characters", f"at most {MAX_TOML_CHARS:,} characters"
@@ -436,6 +439,12 @@ def _validation_error(exc: ValidationError) -> BallScrewInputError:
         if close:
             allowed = f"no such field; did you mean {'.'.join([*parts[:-1], close[0]])}?"
     value = "(missing)" if kind == "missing" else err.get("input", "")
+    if isinstance(value, list) and kind.endswith("_type"):  # a TOML list where one text goes
+        shown = ", ".join(f'"{v}"' if isinstance(v, str) else str(v) for v in value)
+        value = f"[{shown}]"
+        allowed = "one quoted text with its unit, not a TOML list" + (
+            ": several values go in the one text, e.g. \"0, 2 kN\" or \"10..3000:60 rpm\""
+            if field.startswith("operation.") else "")  # fmt: skip
     return BallScrewInputError(field, value, allowed)
 
 
@@ -446,6 +455,7 @@ def parse_case(text: str, *, source: str = "case") -> Case:
     (:class:`~ballscrew.errors.BallScrewPlausibilityWarning`) once, and kept in
     :attr:`Case.warned` for the faces that answer with their warnings (the web).
     """
+    text = text.removeprefix("\ufeff")  # kept as Case.text, which tomlkit re-reads
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", BallScrewPlausibilityWarning)
         case = _parse_case(text, source)
@@ -498,8 +508,12 @@ def _read_case(text: str, source: str) -> Case:
     lub = _lubricant(data.lubricant, notes)
     lubrication = _lubrication(data, lub, notes)
     speed, temperature, axial = _operation(data, notes, read, screw.lead)
-    # What every run checks before it computes, named as the file names it.
-    check_operating_bounds(speed, temperature, axial, "operation.")
+    # What every run checks before it computes, named as the file names it, its value as typed.
+    try:
+        check_operating_bounds(speed, temperature, axial, "operation.")
+    except BallScrewInputError as out:
+        typed = getattr(data.operation, out.field.removeprefix("operation."), out.value)
+        raise BallScrewInputError(out.field, typed, out.allowed) from None
     lub.check_temperature("operation.temperature", temperature)
     st = data.study
     wiper, scatter = _screw_extras(s, st, screw, si, notes)
@@ -1268,4 +1282,9 @@ def load_case(path: str | Path | None = None) -> Case:
     """Load a case file; the bundled default case when ``path`` is None."""
     file = default_case_path() if path is None else Path(path)
     text = read_input_text("case", file)
+    if not text.strip():  # a failed copy or export: not "screw missing"
+        raise BallScrewInputError(
+            "case", str(file), "a case file with its [screw] and [lubricant] tables (this file "
+            "is empty; 'ballscrew case --template' writes one to fill in)",
+        )  # fmt: skip
     return parse_case(text, source=str(file))

@@ -448,6 +448,7 @@ def parse_machine(
     ``folder`` None: every case must be inline (no file is read). See the module
     docstring for the format.
     """
+    text = text.removeprefix("\ufeff")  # kept as Machine.text, which tomlkit re-reads
     raw = parse_toml(text, source)
     try:
         data = MachineFile.model_validate(raw)
@@ -525,6 +526,12 @@ def _rotary_axes(
     return rotary, notes
 
 
+def _as_typed(values: list[Any]) -> str:
+    """A TOML list of quantities as the file writes it: '["600 mm", "0 mm"]'."""
+    shown = (getattr(v, "value", v) for v in values)
+    return "[" + ", ".join(f'"{v}"' if isinstance(v, str) else str(v) for v in shown) + "]"
+
+
 def _linear_axis(
     letter: str, raw: dict[str, Any], folder: str | Path | None, start: float
 ) -> MachineAxis:
@@ -539,13 +546,14 @@ def _linear_axis(
         entry = AxisEntry.model_validate(raw)
     except ValidationError as exc:
         raise _validation_error(exc, f"{key}.") from None
+    typed = _as_typed(entry.travel)  # the list as the file writes it, not "array of shape"
     if len(entry.travel) != 2:
-        raise BallScrewInputError(f"{key}.travel", entry.travel, "[lowest, highest] with units")
+        raise BallScrewInputError(f"{key}.travel", typed, "[lowest, highest] with units")
     low, high = (_si(f"{key}.travel", v, "m") for v in entry.travel)
     if not (math.isfinite(low) and math.isfinite(high) and low < high):
-        raise BallScrewInputError(f"{key}.travel", entry.travel, "lowest < highest")
+        raise BallScrewInputError(f"{key}.travel", typed, "[lowest, highest]: lowest < highest")
     if not low <= 0.0 <= high:
-        raise BallScrewInputError(f"{key}.travel", entry.travel, "a range that holds 0 mm, "
+        raise BallScrewInputError(f"{key}.travel", typed, "a range that holds 0 mm, "
                                   "where the program starts")  # fmt: skip
     force = _si(f"{key}.process_force", entry.process_force, "N")
     if not (math.isfinite(force) and force >= 0.0):
@@ -616,6 +624,12 @@ def _tables(
         length = _si(f"tools.{key}", raw, "m")
         if not math.isfinite(length):
             raise BallScrewInputError(f"tools.{key}", raw, "a tool length with its unit")
+        if length < 0.0:  # a length, gauge line to tip; not an H register's signed offset
+            raise BallScrewInputError(
+                f"tools.{key}", getattr(raw, "value", raw),
+                "a tool length of 0 or more: the spindle's gauge line to the tip (a "
+                "controller's negative H offset, measured from elsewhere, is not this)",
+            )  # fmt: skip
         tools[int(key[1:])] = length
     offsets: dict[int, dict[str, float]] = {}
     for key, table in data.offsets.items():
@@ -668,4 +682,9 @@ def load_machine(path: str | Path) -> Machine:
     """Load a machine file; its cases' paths are relative to its folder."""
     file = Path(path)
     text = read_input_text("--machine", file)
+    if not text.strip():  # a failed copy or export: not "machine missing"
+        raise BallScrewInputError(
+            "--machine", str(file), "a machine file with its [machine] and [axes.X] tables "
+            "(this file is empty; examples/machine_vmc.toml is one to start from)",
+        )  # fmt: skip
     return parse_machine(text, source=str(file), folder=file.parent)

@@ -165,29 +165,35 @@ def _reversals_csv(r: ProgramResult) -> bytes:
 def summary_rows(r: ProgramResult) -> list[list[str]]:
     """The summary table: one row per quantity, one column per axis."""
     spec = [
-        ("energy supplied [J]", "supplied_energy", "{:.4g}"),
-        ("energy taken back [J]", "regenerated_energy", "{:.4g}"),
-        ("process work [J]", "process_work", "{:.4g}"),
-        ("screw friction [J]", "friction_energy", "{:.4g}"),
-        ("support bearings [J]", "bearing_energy", "{:.4g}"),
-        ("friction share", "friction_share", "{:.1%}"),
-        ("peak motor torque [N*m]", "peak_torque", "{:.3g}"),
-        ("RMS motor torque [N*m]", "rms_torque", "{:.3g}"),
-        ("start / top temperature [degC]", None, ""),
-        ("thermal lead error over the travel [um]", None, ""),
-        ("reversals (load +/+ , +/-, -/+, -/-)", None, ""),
+        ("energy supplied [J]", "supplied_energy", 4),
+        ("energy taken back [J]", "regenerated_energy", 4),
+        ("process work [J]", "process_work", 4),
+        ("screw friction [J]", "friction_energy", 4),
+        ("support bearings [J]", "bearing_energy", 4),
+        ("friction share", "friction_share", 0),
+        ("peak motor torque [N*m]", "peak_torque", 3),
+        ("RMS motor torque [N*m]", "rms_torque", 3),
+        ("start / top temperature [degC]", None, 0),
+        ("thermal lead error over the travel [um]", None, 0),
+        ("reversals (load +/+, +/-, -/+, -/-)", None, 0),
     ]
     rows = []
-    for label, attr, fmt in spec:
+    for label, attr, digits in spec:
         row = [label]
         for a in r.axes.values():
             if attr is not None:
                 value = getattr(a, attr) + 0.0  # + 0.0: no "-0"
-                row.append("-" if np.isnan(value) else fmt.format(value))
+                row.append(
+                    "-"
+                    if np.isnan(value)
+                    else f"{value:.1%}"
+                    if attr == "friction_share"
+                    else num(value, digits)
+                )
             elif label.startswith("start"):
                 row.append(f"{a.start_temperature:.1f} / {a.max_temperature:.2f}")
             elif label.startswith("thermal"):
-                row.append(f"{a.thermal_lead_error * 1e6:.2g}")
+                row.append(num(a.thermal_lead_error * 1e6, 2))
             else:
                 kinds = [rev.load_direction for rev in a.reversals]
                 row.append(f"{len(kinds)} ({kinds.count('+/+')}, {kinds.count('+/-')}, "
