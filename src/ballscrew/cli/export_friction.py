@@ -327,23 +327,8 @@ def write_controller_table(
     )
     from ..servo.tables import DriveUnit, controller_table
 
-    if args.append and target != "lincurve":
-        raise click.UsageError("--append adds an axis to a LinuxCNC HAL file (--form lincurve)")
-    if args.append and not out_file:
-        raise click.UsageError("--append needs --out, the HAL file to add the axis to")
+    _refuse_missing_controller_options(target, out_file, args)
     options = FileOptions(args.axis, args.axis_number, args.cnc_build)
-    if target == "frict-comp" and args.axis_number is None:
-        raise click.UsageError(
-            "--form frict-comp needs --axis-number, the axis' logical axis number for "
-            "kopf.achs_nr (TwinCAT P-COMP-00001; it must equal the start-up list's)"
-        )
-    if target == "frict-comp" and args.drive_unit is None:
-        raise click.UsageError(
-            "--form frict-comp needs --drive-unit, the unit the drive reports its torque in "
-            "(TwinCAT P-COMP-00047: the table's out is in the unit of dig_drv.act_torque), "
-            "e.g. '0.1 % of 3.2 N*m' (per thousand of the rated torque, as CiA 402 drives "
-            "give it), '0.1 % of 4.5 A' or '1 mA' with --torque-constant, or '0.001 N*m'"
-        )
     torque_constant = args.torque_constant
 
     case = load_case(case_file)
@@ -403,3 +388,25 @@ def write_controller_table(
     # The controller's file and the JSON are put in place together, or neither.
     _write(case, (out_file, text.encode("utf-8")), json_file, result.as_dict())
     sys.stdout.flush()
+
+
+def _refuse_missing_controller_options(
+    target: str, out_file: str | None, args: ControllerFileArgs
+) -> None:
+    """Refuse, before any computation, a controller file's options that do not go together."""
+    if args.append and target != "lincurve":
+        raise click.UsageError("--append adds an axis to a LinuxCNC HAL file (--form lincurve)")
+    if args.append and not out_file:
+        raise click.UsageError("--append needs --out, the HAL file to add the axis to")
+    if target == "frict-comp" and args.axis_number is None:
+        raise click.UsageError(
+            "--form frict-comp needs --axis-number, the axis' logical axis number for "
+            "kopf.achs_nr (TwinCAT P-COMP-00001; it must equal the start-up list's)"
+        )
+    if target == "frict-comp" and args.drive_unit is None:
+        raise click.UsageError(
+            "--form frict-comp needs --drive-unit, the unit the drive reports its torque in "
+            "(TwinCAT P-COMP-00047: the table's out is in the unit of dig_drv.act_torque), "
+            "e.g. '0.1 % of 3.2 N*m' (per thousand of the rated torque, as CiA 402 drives "
+            "give it), '0.1 % of 4.5 A' or '1 mA' with --torque-constant, or '0.001 N*m'"
+        )
