@@ -132,7 +132,7 @@ BLOCKS = [
     ),
     (
         "docs/calibration-and-control.md",
-        "ballscrew export-friction --case screw.toml --measured run.csv --form stribeck",
+        "ballscrew export-friction --case screw.toml --measured run.csv --form coulomb-viscous",
     ),
 ]
 

@@ -99,3 +99,33 @@ def test_cli_measured(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> Non
                           str(data), "--form", "stribeck"], capsys)  # fmt: skip
     assert code == 0, err
     assert "measured curve m.csv" in " ".join(out.split()) and "95 % interval" in out
+
+
+def test_a_curve_at_two_temperatures_is_fitted_at_each_and_a_doubled_reading_named() -> None:
+    # Two exact Coulomb + viscous lines, thinner oil (less drag) at 40 degC, with one reading
+    # at 20 degC doubled. Pooled, one line at their mean temperature fits neither; fitted
+    # at each temperature, the 40 degC line is recovered exactly and the 20 degC reading
+    # is named by its data row (kept in the fit, so that line is off).
+    w = np.array([1.0, 3.0, 10.0, 30.0, 100.0, 300.0, 1.0, 3.0, 10.0, 30.0, 100.0, 300.0])
+    temps = np.array([20.0] * 6 + [40.0] * 6)
+    torque = np.where(temps == 20.0, 0.35 + 3e-4 * w, 0.30 + 2e-4 * w)
+    torque[4] *= 2.0  # data row 5
+    out = export_friction(CASE, "complete", "coulomb-viscous", speeds=SPEEDS,
+                          measured=MeasuredCurve(w, torque, "m", temperature=temps))  # fmt: skip
+    assert [t for t, _ in out.fitted] == [20.0, 40.0] and out.temperatures == [20.0, 40.0]
+    fit40 = out.fitted[1][1]
+    assert fit40.parameters["coulomb_torque"] == pytest.approx(0.30, rel=1e-9)
+    assert fit40.parameters["viscous_coefficient"] == pytest.approx(2e-4, rel=1e-9)
+    named = [n for n in out.notes if "data row(s)" in n]
+    assert len(named) == 1 and "at 20 degC, data row(s) 5 " in named[0], out.notes
+    assert any("2 temperatures: one fit at each" in n for n in out.notes)
+
+
+def test_too_few_readings_at_a_temperature_are_said_not_judged() -> None:
+    # 5 parameters of the Stribeck form on 6 readings: no reading is named, a note says why.
+    w = np.array([1.0, 3.0, 10.0, 30.0, 100.0, 300.0])
+    out = export_friction(CASE, "complete", "stribeck", speeds=SPEEDS,
+                          measured=MeasuredCurve(w, stribeck_torque(w, **TRUTH), "m",
+                                                 temperature=np.full(6, 30.0)))  # fmt: skip
+    assert not any("data row(s)" in n for n in out.notes)
+    assert any("6 readings for 5 parameters" in n for n in out.notes), out.notes

@@ -233,6 +233,8 @@ def _print_fit(console: Console, result: FrictionExport, temp: float, fitted: Fr
     lo, hi = rad_s_to_rpm(result.speeds[0]), rad_s_to_rpm(result.speeds[-1])
     source = (f"the measured curve {Path(result.measured).name}" if result.measured
               else f"{result.model} at {temp:g} degC, {num(result.axial_load)} N")  # fmt: skip
+    if result.measured and len(result.fitted) > 1:  # one fit per measured temperature
+        source += f" at {temp:g} degC"
     table = Table(title=f"{result.case.title}: {result.form} fit of {source}")
     columns = ["parameter", "screw side", "unit", "table side", "unit "]
     intervals = fitted.intervals or {}

@@ -207,27 +207,103 @@ def _table_rows(
 def _fit_measured(
     out: FrictionExport, measured: MeasuredCurve, lugre: dict[str, Any]
 ) -> FrictionExport:
-    """Fit ``out.form`` to a measured curve, with intervals; rows of measured and fitted torque."""
+    """Fit ``out.form`` to a measured curve, with intervals; rows of measured and fitted torque.
+
+    A curve measured at several temperatures (the file's temperature column) is fitted at
+    each of them, as the model's curves are: pooled, the oil's change with temperature would
+    be read as a change with speed. A reading whose residual is past
+    :data:`OUTLIER_SCALE` robust standard deviations is named in a note (kept in the fit).
+    """
     if out.form == "table":
         raise BallScrewInputError("--form", "table", "a fitted form with --measured (the "
                                   "measured curve is its own table)")  # fmt: skip
-    w = np.asarray(measured.speed, dtype=float)
-    signed = np.sign(w) * measured.torque
-    fitted = with_intervals(fit_form(out.form, w, signed, **lugre), w, signed)
-    temp = (float(np.mean(measured.temperature)) if measured.temperature is not None
-            else out.temperatures[0])  # fmt: skip
-    out.temperatures, out.speeds, out.measured = [temp], np.unique(np.abs(w)), measured.source
-    out.fitted.append((temp, fitted))
-    curve = form_curve("stribeck" if out.form == "lugre" else out.form, w, fitted.parameters)
-    out.rows += [
-        {"speed [rpm]": float(rad_s_to_rpm(v)), "temperature [degC]": temp,
-         "torque measured [N*m]": float(a), f"torque {out.form} [N*m]": float(b)}
-        for v, a, b in zip(w, signed, curve, strict=True)
-    ]  # fmt: skip
-    if np.all(w > 0.0) or np.all(w < 0.0):
+    w_all = np.asarray(measured.speed, dtype=float)
+    temps = (np.asarray(measured.temperature, dtype=float) if measured.temperature is not None
+             else np.full(w_all.shape, out.temperatures[0]))  # fmt: skip
+    out.temperatures, out.speeds, out.measured = [], np.unique(np.abs(w_all)), measured.source
+    for temp in np.unique(temps):
+        rows = np.flatnonzero(temps == temp)
+        w = w_all[rows]
+        signed = np.sign(w) * np.asarray(measured.torque, dtype=float)[rows]
+        if np.unique(np.abs(w)).size < 4:
+            raise BallScrewInputError(
+                "--measured", measured.source,
+                f"at least 4 speeds at each temperature to fit a {out.form} curve "
+                f"({np.unique(np.abs(w)).size} at {temp:g} degC)",
+            )  # fmt: skip
+        fitted = with_intervals(fit_form(out.form, w, signed, **lugre), w, signed)
+        out.temperatures.append(float(temp))
+        out.fitted.append((float(temp), fitted))
+        curve = form_curve("stribeck" if out.form == "lugre" else out.form, w,
+                           fitted.parameters)  # fmt: skip
+        out.rows += [
+            {"speed [rpm]": float(rad_s_to_rpm(v)), "temperature [degC]": float(temp),
+             "torque measured [N*m]": float(a), f"torque {out.form} [N*m]": float(b)}
+            for v, a, b in zip(w, signed, curve, strict=True)
+        ]  # fmt: skip
+        # With few readings beyond the form's parameters the residuals say little of one
+        # reading: a form fits n <= p + 3 points too closely for a robust scale.
+        enough = rows.size >= len(fitted.parameters) + 4
+        far = ([int(rows[i]) + 1 for i in _doubtful(out.form, w, signed, lugre,
+                                                     len(fitted.parameters))]
+               if enough else [])  # fmt: skip
+        if not enough:
+            out.notes.append(
+                f"at {temp:g} degC, {rows.size} readings for {len(fitted.parameters)} "
+                "parameters: too few to tell a doubtful reading from the curve"
+            )
+        if far:
+            out.notes.append(
+                f"at {temp:g} degC, data row(s) {', '.join(map(str, far))} lie more than "
+                f"{OUTLIER_SCALE:g} robust standard deviations off the fitted curve: check "
+                "them (they are kept in the fit)"
+            )
+    if len(out.temperatures) > 1:
+        out.notes.append(
+            f"the measured curve has {len(out.temperatures)} temperatures: one fit at each"
+        )
+    if np.all(w_all > 0.0) or np.all(w_all < 0.0):
         out.notes.append("the measured curve turns one way: the form is taken as odd in the "
                          "speed (the same friction both ways)")  # fmt: skip
     return out
+
+
+OUTLIER_SCALE = 4.0
+"""Robust standard deviations (1.4826 times the median absolute deviation) past which a
+measured reading is named as doubtful."""
+
+
+def _doubtful(
+    form: str, w: FloatArray, signed: FloatArray, lugre: dict[str, Any], parameters: int
+) -> list[int]:
+    """Indices of the readings far off the curve the others give, most doubtful first.
+
+    The reading farthest off the current fit is fitted without: it is doubtful when its
+    residual from that fit passes :data:`OUTLIER_SCALE` robust standard deviations of the
+    others' residuals (so that one bad reading cannot hide itself by pulling the curve,
+    nor make the good ones look bad). Repeated while at least ``parameters`` + 3 readings
+    remain, for at most a fifth of them.
+    """
+    curve_form = "stribeck" if form == "lugre" else form
+    keep = np.ones(w.size, dtype=bool)
+    floor = 1e-9 * float(np.max(np.abs(signed)))
+    far: list[int] = []
+    while len(far) < max(1, w.size // 5) and keep.sum() - 1 >= parameters + 3:
+        fit = fit_form(form, w[keep], signed[keep], **lugre)
+        resid = np.where(keep, signed - form_curve(curve_form, w, fit.parameters), 0.0)
+        worst = int(np.argmax(np.abs(resid)))
+        rest = keep.copy()
+        rest[worst] = False
+        refit = fit_form(form, w[rest], signed[rest], **lugre)
+        others = signed[rest] - form_curve(curve_form, w[rest], refit.parameters)
+        scale = max(1.4826 * float(np.median(np.abs(others - np.median(others)))), floor)
+        off = abs(float(signed[worst] - form_curve(curve_form, w[worst:worst + 1],
+                                                   refit.parameters)[0]))  # fmt: skip
+        if off <= OUTLIER_SCALE * scale:
+            break
+        far.append(worst)
+        keep = rest
+    return far
 
 
 def run_export_friction(
