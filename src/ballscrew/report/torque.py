@@ -120,6 +120,7 @@ def warning_lines(results: Mapping[str, FrictionResult], *, verbose: bool = Fals
         symbol = quantity.rsplit(" ", 1)[-1] if len(quantity.rsplit(" ", 1)[-1]) <= 3 else quantity
         short.setdefault((worst.applies_to, names), []).append(f"{symbol} {worst.value:.3g}")
     for (formulas, names), values in short.items():
-        lines.append(f"note: {names} extrapolates {formulas} ({', '.join(values)}), as for "
+        verb = "extrapolate" if ", " in names else "extrapolates"  # one model or several
+        lines.append(f"note: {names} {verb} {formulas} ({', '.join(values)}), as for "
                      "most screws (ballscrew --verbose ... says why)")  # fmt: skip
     return lines
