@@ -242,3 +242,11 @@ def test_a_negative_drag_torque_is_refused(capsys: pytest.CaptureFixture[str]) -
     case = ROOT / "src" / "ballscrew" / "data" / "kamalzadeh_stage.toml"
     code, _, err = run(["acceptance", "--case", str(case), "--torque", "-1 N*m"], capsys)
     assert code == 2 and "--torque" in err and "0 N*m or more" in err
+
+
+def test_a_move_without_commas_between_its_keys_says_so() -> None:
+    # 'stroke=400 mm feed=6 m/min ...' read 'mm feed' as a unit before: the message now
+    # names the missing comma.
+    with pytest.raises(BallScrewInputError) as info:
+        parse_move("stroke=400 mm feed=6 m/min acceleration=2 m/s^2")
+    assert "without a comma between them" in str(info.value)

@@ -121,3 +121,12 @@ def test_a_form_feed_does_not_shift_the_line_numbers() -> None:
     assert info.value.field == "program line 4"
     p = read_program("G21\nG1 X1 F100\n\f\x0bG1 X2\rG1 X3\nM2\n")
     assert p.line.tolist() == [2, 3, 4]
+
+
+@pytest.mark.parametrize(("line", "letter"), [("G01X10F", "F"), ("G1 X10 Y", "Y")])
+def test_a_letter_without_its_number_is_named(line: str, letter: str) -> None:
+    # A typo a CAM post or a hand never meant: the letter is named, and what it lacks.
+    with pytest.raises(BallScrewInputError) as info:
+        read_program(f"G21 G90\n{line}\n")
+    message = str(info.value)
+    assert "line 2" in message and f"a number after the letter {letter}" in message, message

@@ -433,6 +433,11 @@ def parse_move(text: str) -> dict[str, float]:
     for part in parts:
         key, sep, value = part.partition("=")
         key = key.strip()
+        if value.count("=") and key in MOVE_KEYS:  # 'stroke=400 mm feed=6 m/min': no comma
+            raise BallScrewInputError(
+                "--move", part, "one key=value between commas, e.g. 'stroke=400 mm, feed=6 "
+                "m/min, acceleration=2 m/s^2' (two keys here without a comma between them)",
+            )  # fmt: skip
         if not sep or key not in MOVE_KEYS:
             raise BallScrewInputError(
                 "--move", part, f"key=value with a unit; keys: {', '.join(MOVE_KEYS)}"

@@ -258,6 +258,9 @@ def _words(text: str, number: int) -> list[_Word]:
         match = _WORDS.match(text, pos)
         if match is None:
             bad = text[pos:].split()[0] if text[pos:].split() else text[pos:]
+            if len(bad) == 1 and bad.isalpha():  # 'G1 X10 Y' or 'G01X10F': a letter alone
+                raise _error(number, bad, f"a number after the letter {bad} (e.g. '{bad}10'); "
+                             "the word has none")  # fmt: skip
             raise _error(number, bad, "words of a letter and a number only (no macros, "
                          "variables, expressions or block delete)")  # fmt: skip
         letter, digits = match.group(1), match.group(2)
