@@ -333,3 +333,13 @@ def test_any_option_typed_empty_is_refused(
     empty = next(i for i, a in enumerate(args) if not a.strip())
     assert code == 2 and not out
     assert f"{args[empty - 1]} = '{args[empty]}' is not allowed: a value" in err
+
+
+def test_identify_says_a_negative_mass_is_not_a_mass(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """Without --calibrated the table showed the fitted mass, negative, with no word."""
+    trace = _hand_trace(tmp_path / "hand.csv")
+    code, printed, err = run(["identify", str(trace), "--machine", MACHINE], capsys)
+    assert code == 0, err
+    assert "is not a mass: the trace does not show enough acceleration" in printed + err

@@ -911,7 +911,12 @@ def _notes(
                      f"({inputs.torque_constant_source}); --free kt fits it and holds the "
                      "case's moving mass instead")  # fmt: skip
         mass, case_mass = parameters["moving_mass"], float(inputs.axis.moving_mass)
-        if case_mass > 0.0 and mass.identifiable and abs(mass.value / case_mass - 1.0) > 0.25:
+        if mass.fitted and mass.value <= 0.0:
+            notes.append(f"the fitted moving mass, {mass.value:.4g} kg, is not a mass: the "
+                         "trace does not show enough acceleration for it (too short, too "
+                         "slow or too coarse); take a trace with several accelerations, or "
+                         "--free kt to hold the case's mass")  # fmt: skip
+        elif case_mass > 0.0 and mass.identifiable and abs(mass.value / case_mass - 1.0) > 0.25:
             notes.append(f"the fitted moving mass is {mass.value / case_mass:.2f} times the "
                          f"case's {case_mass:.4g} kg: the case's mass or K_t is off (a drive "
                          "that logs the peak or q-axis current against a K_t per A rms is "
