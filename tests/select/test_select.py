@@ -186,10 +186,11 @@ def test_select_out_writes_why_nothing_passed_and_still_fails(
     code, _, err = run(["select", "--case", str(CASE), "--move", MOVE, "--diameter", "25 mm",
                         "--lead", "5 mm", "--preload", "light", "--out", str(out)],
                        capsys)  # fmt: skip
-    # the move named in SI: 500 mm, 12 m/min = 0.2 m/s, 1.5 kN
+    # the move named as --move is typed: 500 mm, 12 m/min, 3 m/s^2, 1.5 kN (it was in SI,
+    # feed=0.2 m/s and acceleration=3 m/s**2, which nobody types)
     assert code == 2
-    assert ("error: no candidate passes the check over stroke=0.5 m, feed=0.2 m/s, "
-            "acceleration=3 m/s**2, force=1500 N") in err  # fmt: skip
+    assert ("error: no candidate passes the check over stroke=500 mm, feed=12 m/min, "
+            "acceleration=3 m/s^2, force=1500 N") in err  # fmt: skip
     assert "none of the 2 candidates tried keeps every row within its limit" in err
     assert f"report: {out / 'report.html'}" in err
     doc = json.loads((out / "data" / "select.json").read_text(encoding="utf-8"))

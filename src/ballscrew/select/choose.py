@@ -535,12 +535,21 @@ def _parse_candidate(candidate: Candidate) -> Case:
     return case
 
 
+_SHOWN = {"stroke": ("mm", 1e3), "feed": ("m/min", 60.0), "acceleration": ("m/s^2", 1.0),
+          "jerk": ("m/s^3", 1.0), "dwell": ("s", 1.0), "force": ("N", 1.0),
+          "force_from": ("mm", 1e3), "force_to": ("mm", 1e3)}  # fmt: skip
+"""The units a move is written back in, as ``--move`` is typed (key: unit, factor from SI)."""
+
+
 def _duty(move: Mapping[str, float] | None) -> str:
-    """The move an error names, in SI ("stroke=0.4 m, feed=0.2 m/s, ..."); a profile's file."""
+    """The move an error names ("stroke=400 mm, feed=20 m/min, ..."); a profile's file."""
     if not move:
         return "the profile's duty"
-    return ", ".join(f"{k}={v:g} {MOVE_KEYS[k][0] if k in MOVE_KEYS else ''}".rstrip()
-                     for k, v in move.items())  # fmt: skip
+    return ", ".join(
+        f"{k}={v * _SHOWN[k][1]:.6g} {_SHOWN[k][0]}" if k in _SHOWN
+        else f"{k}={v:g} {MOVE_KEYS[k][0] if k in MOVE_KEYS else ''}".rstrip()
+        for k, v in move.items()
+    )  # fmt: skip
 
 
 def non_dominated(values: FloatArray) -> FloatArray:
