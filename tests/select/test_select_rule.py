@@ -141,7 +141,7 @@ def test_nothing_passing_names_the_closest_rows_and_by_how_much(
         _select(pool)
     text = str(info.value)
     # the three closest, most nearly passing first, each row with its value and limit
-    assert text.startswith("no candidate passes the check over stroke=0.3 m")
+    assert text.startswith("no candidate passes the check over stroke=300 mm")
     assert text.index("b, oil fails " + life) < text.index("a, oil fails " + lift + "; " + life)
     assert "c, oil fails x" in text and "d, oil" not in text
     assert "is not allowed" not in text and "--move" not in text

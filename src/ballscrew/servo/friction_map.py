@@ -209,8 +209,14 @@ def fit_load_form(
         [np.sign(w), np.sign(w) * np.abs(f), np.sign(w) * direction(w, f) * np.abs(f), w], axis=-1
     ).reshape(-1, 4)
     per_t = []
+    reach = np.max(np.abs(columns), axis=0)  # each term's largest factor over the grid
     for k, temp in enumerate(temperatures):
         coef = lsq_linear(columns, torque[k].reshape(-1), bounds=(_LOWER, np.inf)).x
+        # A term that moves no torque of the map by more than its rounding (1e-12 of the
+        # largest) is 0: a model with no driving/back-driving difference gives c2 of
+        # 1e-21 N*m/N, a different rounding on each path through the model.
+        resolution = 1e-12 * float(np.max(np.abs(torque[k])))
+        coef = np.where(np.abs(coef) * reach <= resolution, 0.0, coef)
         per_t.append({"temperature_C": float(temp), "c0_Nm": float(coef[0]),
                       "c1_Nm_per_N": float(coef[1]), "c2_Nm_per_N": float(coef[2]),
                       "b_Nms_per_rad": float(coef[3])})  # fmt: skip
