@@ -128,3 +128,16 @@ def test_a_probability_of_exactly_one_minus_the_confidence_passes(
     candidate: Any = SimpleNamespace(price=None)
     e, _ = choose.evaluate(candidate, None, parsed=object(), confidence=0.9)  # type: ignore[arg-type]
     assert e.feasible is feasible and e.nominal
+
+
+def test_rows_of_no_utilisation_bind_and_doubt_only_when_alone() -> None:
+    # An unloaded row (0 %) is bound only when every row is at 0 %; among rows that never
+    # fail in the draws (P = 0), the doubt goes to the most utilised, not to the 0 % one.
+    from types import SimpleNamespace
+
+    from ballscrew.select import choose
+
+    alone: Any = SimpleNamespace(criteria=[_row("static_safety", 0.0)])
+    assert choose._binding(alone) == "row static_safety (0%)"
+    both: Any = SimpleNamespace(criteria=[_row("static_safety", 0.0), _row("peak_torque", 0.6)])
+    assert choose._doubtful(both) == "row peak_torque (0.0%)"
