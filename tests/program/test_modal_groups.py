@@ -1,0 +1,61 @@
+"""The reader's modal groups against RS274/NGC's table of them (NIST IR 6556, 2000, table 4).
+
+Two codes of one modal group in a block are an error there; the reader refuses them and
+names the group. Each group is taken with two of its codes (or one code twice), so that a
+code moved out of its group, or a group given another's number, is seen.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from ballscrew.errors import BallScrewInputError
+from ballscrew.program.gcode import read_program
+
+G_GROUPS = {
+    "non-modal (G4, G28, G30, G53)": ("G4", "G28", "G30", "G53"),
+    "motion": ("G0", "G1", "G2", "G3", "G73", "G80", "G81", "G82", "G83", "G85", "G89"),
+    "plane": ("G17", "G18", "G19"),
+    "distance mode": ("G90", "G91"),
+    "arc centre mode": ("G90.1", "G91.1"),
+    "feed mode": ("G94",),
+    "units": ("G20", "G21"),
+    "cutter compensation": ("G40",),
+    "tool length offset": ("G43", "G49"),
+    "cycle retract": ("G98", "G99"),
+    "work offset": ("G54", "G55", "G56", "G57", "G58", "G59"),
+    "path mode": ("G61", "G64"),
+    "spindle speed mode": ("G96", "G97"),
+    "rotation": ("G69",),
+    "polar coordinates": ("G15",),
+    "mirror image": ("G50.1",),
+}
+"""The G codes the reader reads, by the group RS274/NGC (and Fanuc for G15, G50.1, G69) puts
+them in."""
+
+M_GROUPS = (("M0", "M1", "M2", "M30"), ("M6",), ("M3", "M4", "M5", "M19"), ("M7", "M8", "M9"))
+"""Stopping, tool change, spindle, coolant (M19, the spindle orient, with the spindle)."""
+
+
+@pytest.mark.parametrize(("name", "codes"), list(G_GROUPS.items()))
+def test_two_g_codes_of_a_group_are_refused_naming_it(name: str, codes: tuple[str, ...]) -> None:
+    for other in codes[1:] or codes:
+        with pytest.raises(BallScrewInputError) as info:
+            read_program(f"{codes[0]} {other}\n")
+        assert info.value.value == f"{codes[0]} {other}"
+        assert info.value.allowed.startswith(f"one code of the {name} group per block")
+
+
+@pytest.mark.parametrize("codes", M_GROUPS)
+def test_two_m_codes_of_a_group_are_refused(codes: tuple[str, ...]) -> None:
+    for other in codes[1:] or codes:
+        if {codes[0], other} == {"M7", "M8"}:
+            continue  # mist and flood together: allowed
+        with pytest.raises(BallScrewInputError) as info:
+            read_program(f"{codes[0]} {other}\n")
+        assert info.value.value == f"{codes[0]} {other}"
+
+
+def test_codes_of_different_groups_share_a_block() -> None:
+    # One code of every group in one block (and mist with flood): read, nothing refused.
+    read_program("G17 G21 G40 G49 G54 G64 G69 G15 G90 G90.1 G94 G97 G98 G0 X1 M3 M7 M8\nM30\n")
