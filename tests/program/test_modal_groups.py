@@ -59,3 +59,19 @@ def test_two_m_codes_of_a_group_are_refused(codes: tuple[str, ...]) -> None:
 def test_codes_of_different_groups_share_a_block() -> None:
     # One code of every group in one block (and mist with flood): read, nothing refused.
     read_program("G17 G21 G40 G49 G54 G64 G69 G15 G90 G90.1 G94 G97 G98 G0 X1 M3 M7 M8\nM30\n")
+
+
+def test_a_peck_cycle_comes_back_down_to_0_010_inch_above_its_last_depth() -> None:
+    # G83 from Z5 to Z-3 by 1 mm pecks, R1: each peck feeds 1 mm deeper, retracts to R, and
+    # comes back down rapidly to 0.010 in = 0.254 mm above the depth reached (LinuxCNC's).
+    p = read_program("G21 G90 G0 X0 Y0 Z5\nG98 G83 X0 Y0 Z-3 R1 Q1 F100\nM30\n")
+    z_mm = [round(z * 1000.0, 9) for z in p.end[:, 2]]
+    assert z_mm == [5.0, 1.0, 0.0, 1.0, 0.254, -1.0, 1.0, -0.746, -2.0, 1.0, -1.746, -3.0, 5.0]
+
+
+def test_a_dwell_over_a_minute_is_noted_with_its_reading() -> None:
+    # 60 s is the limit: 61 s is noted (with Fanuc's milliseconds as the other reading), 60 s
+    # is not.
+    (note,) = read_program("G4 P61\nM30\n").notes
+    assert "a dwell of 61 s" in note and "reads 0.061 s" in note
+    assert read_program("G4 P60\nM30\n").notes == ()
