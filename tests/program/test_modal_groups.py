@@ -1,4 +1,5 @@
-"""The reader's modal groups against RS274/NGC's table of them (NIST IR 6556, 2000, table 4).
+"""The reader's modal groups against RS274/NGC's table of them (NIST IR 6556, 2000, table 4),
+and its canned cycles' moves, the peck's back-off and the long dwell's note.
 
 Two codes of one modal group in a block are an error there; the reader refuses them and
 names the group. Each group is taken with two of its codes (or one code twice), so that a
@@ -48,12 +49,14 @@ def test_two_g_codes_of_a_group_are_refused_naming_it(name: str, codes: tuple[st
 
 @pytest.mark.parametrize("codes", M_GROUPS)
 def test_two_m_codes_of_a_group_are_refused(codes: tuple[str, ...]) -> None:
-    for other in codes[1:] or codes:
-        if {codes[0], other} == {"M7", "M8"}:
+    import itertools
+
+    for one, other in itertools.combinations(codes, 2) if len(codes) > 1 else [codes * 2]:
+        if {one, other} == {"M7", "M8"}:
             continue  # mist and flood together: allowed
         with pytest.raises(BallScrewInputError) as info:
-            read_program(f"{codes[0]} {other}\n")
-        assert info.value.value == f"{codes[0]} {other}"
+            read_program(f"{one} {other}\n")
+        assert info.value.value == f"{one} {other}"
 
 
 def test_codes_of_different_groups_share_a_block() -> None:
@@ -75,3 +78,19 @@ def test_a_dwell_over_a_minute_is_noted_with_its_reading() -> None:
     (note,) = read_program("G4 P61\nM30\n").notes
     assert "a dwell of 61 s" in note and "reads 0.061 s" in note
     assert read_program("G4 P60\nM30\n").notes == ()
+
+
+@pytest.mark.parametrize(
+    ("cycle", "kinds"),
+    [("G81", "RRFR"), ("G82 P1", "RRFDR"), ("G85", "RRFFR"), ("G89 P1", "RRFDF"),
+     ("G73 Q2", "RRFRFR"), ("G83 Q2", "RRFRRFR")],
+)  # fmt: skip
+def test_each_canned_cycle_makes_its_moves(cycle: str, kinds: str) -> None:
+    # From Z5, a hole at X1 to Z-3 with R1 under G98: to the hole (rapid), down to R (rapid),
+    # then each cycle's moves (RS274/NGC, LinuxCNC's G85): G81 feeds to the bottom and
+    # rapids out to Z5; G82 dwells before; G85 feeds back to R, then rapids out; G89 dwells
+    # and feeds out all the way; G73 and G83 peck 2 mm (G73 backs off 0.254 mm, G83
+    # retracts to R first).
+    p = read_program(f"G21 G90 G0 X0 Y0 Z5\nG98 {cycle} X1 Y0 Z-3 R1 F100\nM30\n")
+    letters = "RFAD"  # RAPID, FEED, ARC, DWELL
+    assert "".join(letters[k] for k in p.kind[1:]) == kinds
