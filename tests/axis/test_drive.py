@@ -335,3 +335,87 @@ def test_the_motors_drag_adds_no_current_at_rest() -> None:
     assert e.copper_loss == 0.0
     moving = drive_energy([0.0, 5.0], [0.0, 0.0], [10.0, 10.0], motor, DriveSpec(1.0))
     assert moving.copper_loss == pytest.approx(3.0 * 0.2**2 * 5.0, rel=1e-14)  # 3 R (T_fe/K_t)^2 t
+
+
+# Pins written from the mutation run of 2026-12-05 (docs/mutation.md): each against a hand
+# computation of the module docstring's formulas.
+
+
+def test_the_torque_constant_falls_linearly_up_to_any_positive_rated_speed() -> None:
+    from ballscrew.axis.drive import torque_constant_at
+
+    # K_t0 = 2, K_t,r = 1.8 at 0.5 rad/s: half-way (0.25 rad/s) 1.9, beyond it 1.8.
+    k = torque_constant_at([0.25, -0.5, 3.0], 2.0, 1.8, 0.5)
+    assert k.tolist() == pytest.approx([1.9, 1.8, 1.8], rel=1e-15)
+    with pytest.raises(BallScrewInputError, match="rated speed"):
+        torque_constant_at([1.0], 2.0, 1.8, 0.0)
+
+
+def test_an_inverters_efficiency_loss_below_one_watt_and_at_zero_efficiency() -> None:
+    from ballscrew.axis.drive import inverter_loss_efficiency
+
+    # Motoring at 0.5 W through 80 %: the link gives 0.5/0.8 = 0.625 W, 0.125 W lost;
+    # regenerating 0.5 W: 0.5 * 0.2 = 0.1 W lost.
+    loss = inverter_loss_efficiency([0.5, -0.5], 0.8)
+    assert loss.tolist() == pytest.approx([0.125, 0.1], rel=1e-12)
+    with pytest.raises(BallScrewInputError, match="drive_efficiency"):
+        inverter_loss_efficiency([1.0], 0.0)
+
+
+def test_the_inverter_loss_models_terms_not_given_are_zero() -> None:
+    from ballscrew.axis.drive import inverter_loss
+
+    # 3 A: P0 alone 5 W, k alone 2 V * 3 A = 6 W, r alone 0.5 ohm * 9 A^2 = 4.5 W.
+    assert float(inverter_loss(3.0, standby=5.0)) == 5.0
+    assert float(inverter_loss(3.0, per_ampere=2.0)) == 6.0
+    assert float(inverter_loss(3.0, resistance=0.5)) == 4.5
+    # The same through a drive whose machine file gives one term: 2 s at I = T/K_t = 3 A.
+    motor = MotorConstants(1.0, phase_resistance=0.0)
+    for spec, watts in ((DriveSpec(standby=5.0), 5.0), (DriveSpec(per_ampere=2.0), 6.0),
+                        (DriveSpec(resistance=0.5), 4.5)):  # fmt: skip
+        e = drive_energy([0.0, 2.0], [3.0, 3.0], [0.0, 0.0], motor, spec)
+        assert e.drive_loss == pytest.approx(2.0 * watts, rel=1e-15)
+
+
+def test_an_inverters_efficiency_applies_to_the_shaft_iron_and_copper_powers() -> None:
+    # T = 1 N*m at 100 rad/s, drag 0.1 N*m, K_t = 1 N*m/A, R_ph = 1 ohm: I = 1.1 A,
+    # P_el = 100 + 0.1 * 100 + 3 * 1.21 = 113.63 W; through 90 % for 2 s the drive loses
+    # 2 * 113.63 * (1/0.9 - 1) = 25.2511 J. The powers are constant: the trapezoid is exact.
+    motor = MotorConstants(1.0, phase_resistance=1.0, iron_loss_torque=0.1)
+    e = drive_energy([0.0, 2.0], [1.0, 1.0], [100.0, 100.0], motor,
+                     DriveSpec(efficiency=0.9, dc_link="resistor"))  # fmt: skip
+    assert e.copper_loss == pytest.approx(2.0 * 3.63, rel=1e-12)  # the drag adds to T
+    assert e.drive_loss == pytest.approx(2.0 * 113.63 * (1.0 / 0.9 - 1.0), rel=1e-12)
+    assert e.grid == pytest.approx(2.0 * 113.63 / 0.9, rel=1e-12)
+
+
+def test_a_regenerative_link_nets_what_it_returns() -> None:
+    # 1 kW for 1 s drawn, 600 W for 1 s returned: 400 J net from the grid.
+    f = dc_link_flows([0, 1, 1, 2], [1000, 1000, -600, -600], "regenerative")
+    assert (f.drawn, f.returned, f.grid) == (1000.0, 600.0, 400.0)
+
+
+def test_a_storage_takes_small_steps_and_alternating_runs() -> None:
+    # 1 J into a 10 J storage is kept; 0.8 J into a 0.5 J one fills it and burns 0.3 J.
+    assert dc_link_flows([0, 1], [-1.0, -1.0], "storage", 10.0).stored == 1.0
+    small = dc_link_flows([0, 1], [-0.8, -0.8], "storage", 0.5)
+    assert (small.stored, small.burnt) == pytest.approx((0.5, 0.3), rel=1e-12)
+    # Regenerate 500 J, draw 800 J, regenerate 200 J into 300 J: 200 J burnt at the first
+    # run, 800 - 300 = 500 J drawn at the second, 200 J left stored after the third.
+    t = [0.0, 1.0, 1.0, 2.0, 2.0, 3.0]
+    f = dc_link_flows(t, [-500.0, -500.0, 800.0, 800.0, -200.0, -200.0], "storage", 300.0)
+    assert (f.drawn, f.burnt, f.stored) == (500.0, 200.0, 200.0)
+
+
+def test_the_totals_of_one_axis_are_its_own_figures() -> None:
+    from ballscrew.axis.drive import drive_totals
+
+    t = np.linspace(0.0, 2.0, 201)
+    motor = MotorConstants(1.0, phase_resistance=0.5)
+    for shared in (False, True):
+        spec = DriveSpec(efficiency=1.0, dc_link="resistor", shared=shared)
+        e = drive_energy(t, np.ones_like(t), 100.0 * t, motor, spec)
+        totals = drive_totals([e])
+        # 200 J on the shaft and 3 * 0.5 * 1 * 2 = 3 J of copper, nothing regenerated.
+        assert totals["grid_energy_J"] == pytest.approx(203.0, rel=1e-12)
+        assert totals["copper_loss_J"] == e.copper_loss and totals["dc_link_shared"] is shared

@@ -107,3 +107,48 @@ def test_the_planner_refuses_a_rotary_axis_without_limits() -> None:
     with pytest.raises(BallScrewInputError) as info:
         plan(p, Limits(np.full(3, 0.5), np.full(3, 2.0), np.full(3, 50.0), 0.5, 1e-5))
     assert info.value.field == "program line 2" and info.value.value == "A"
+
+
+def test_a_rotary_move_turns_by_the_difference_of_its_angles() -> None:
+    # A90 then A45: 90 deg, a stop (a junction with a rotary axis), then 45 deg back. Both
+    # reach 90 deg/s (the ramp up and down takes v (v/a + a/j) = 0.35 v = 31.5 deg), so each
+    # takes theta/v + v/a + a/j: 1 + 0.35 and 0.5 + 0.35 s. Ruckig's profile is exact; 1e-6
+    # as above.
+    p = read_program("G0 A90\nG0 A45\nM30\n", machine=_with_a())
+    m = plan(p, limits())
+    assert m.block_time == pytest.approx([1.35, 0.85], rel=1e-6)
+    assert m.duration == pytest.approx(2.2, rel=1e-6)
+
+
+def test_a_rotary_move_of_one_radian_is_a_move() -> None:
+    # 180/pi deg is 1 rad to the last bit. A, B and C turn 1 rad each, alone, all with A's
+    # limits: each axis runs the profile of a 1 rad move at pi/2 rad/s (the ramps take
+    # 0.35 pi/2 = 0.55 rad < 1 rad, so the speed is reached): 1/(pi/2) + 0.25 + 0.1 s.
+    import dataclasses
+    from types import SimpleNamespace
+
+    one = math.degrees(1.0)
+    three = SimpleNamespace(**{**vars(_with_a()), "rotary": dict.fromkeys("ABC")})
+    p = read_program(f"G0 A{one!r} B{one!r} C{one!r}\nM30\n", machine=three)
+    assert p.rotary_end is not None and p.rotary_end.tolist() == [[1.0, 1.0, 1.0]]
+    lim = dataclasses.replace(
+        limits(), rotary_feed=np.full(3, math.pi / 2), rotary_acceleration=np.full(3, 2 * math.pi),
+        rotary_jerk=np.full(3, 20 * math.pi),
+    )  # fmt: skip
+    assert plan(p, lim).duration == pytest.approx(2 / math.pi + 0.35, rel=1e-6)
+
+
+def test_a_rapid_of_no_length_is_capped_by_the_rapid_feed() -> None:
+    # The readers never write a move of no length, but a Program built by hand may: a rapid
+    # that moves no axis, linear or rotary, has only the machine's rapid feed (0.5 m/s) as
+    # its top speed, not the unbounded one a rotary move alone starts from.
+    import dataclasses
+
+    p = read_program("G0 X1\nG0 X2\nG1 X3 F600\nM30\n")
+    end, start = p.end.copy(), p.start.copy()
+    end[1] = start[1]
+    start[2] = end[1]
+    q = dataclasses.replace(p, start=start, end=end)
+    m = plan(q, limits())
+    assert m.block_limit.tolist() == pytest.approx([0.5, 0.5, 0.01], rel=1e-12)
+    assert m.block_time[1] == 0.0

@@ -161,3 +161,110 @@ def test_a_confidence_is_read_as_typed() -> None:
     for bad in ("95", "120 %", "abc", "40 %"):
         with pytest.raises(BallScrewInputError, match=r"from 50 % to 99\.9 %"):
             parse_confidence(bad)
+
+
+# Pins written from the mutation run of 2026-12-05 (docs/mutation.md).
+
+
+def test_a_confidence_of_50_and_of_99_9_percent_are_the_range_s_ends() -> None:
+    # The documented range, "from 50 % to 99.9 %", includes both ends; 100 % is beyond it.
+    assert (parse_confidence("50 %"), parse_confidence("99.9 %")) == (0.5, 0.999)
+    with pytest.raises(BallScrewInputError, match=r"from 50 % to 99\.9 %"):
+        parse_confidence("100 %")
+
+
+def test_the_sentences_name_what_is_allowed_and_where_the_doubt_comes_from(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # At 95 % confidence, 1 - 0.95 = 5 % is allowed. 'b' is picked with 2 %; 'a', the nominal
+    # pick, has 14 % > 5 %; both doubts come from their binding row (the same row here).
+    pool = _set(monkeypatch, [("a", 100.0, 50_000.0, 0.78, 0.14),
+                              ("b", 150.0, 40_000.0, 0.70, 0.02)])  # fmt: skip
+    reason = _select(pool).reason
+    assert "P(NOT OK) = 2.0% (at most 5% allowed), most likely from its binding row" in reason
+    assert "its P(NOT OK) is 14.0%, above the 5% allowed, most likely from its binding row" in (
+        reason
+    )
+    # undecided: the sentence names the 5 % too, and the binding row once
+    pool = _set(monkeypatch, [("a", 100.0, 50_000.0, 0.93, 0.44),
+                              ("b", 150.0, 60_000.0, 0.85, 0.29)])  # fmt: skip
+    reason = _select(pool).reason
+    assert "(P(NOT OK) at most 5%); 2 of 2 pass at their nominal values" in reason
+    assert reason.endswith("P(NOT OK) = 29.0%, most likely from its binding row, "
+                           "thermal lead error per 300 mm (P5) (85%)")  # fmt: skip
+    # A pick that never fails in the draws (P = 0) has no row to blame.
+    pool = _set(monkeypatch, [("a", 100.0, 50_000.0, 0.5, 0.0)])
+    reason = _select(pool).reason
+    assert reason.endswith("P(NOT OK) = 0.0% (at most 5% allowed)")
+
+
+def test_a_doubt_from_another_row_than_the_binding_one_names_both(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    pool = _set(monkeypatch, [("a", 100.0, 50_000.0, 0.93, 0.44),
+                              ("b", 150.0, 60_000.0, 0.85, 0.29)])  # fmt: skip
+    stated = choose.evaluate
+
+    def other_row(candidate: Candidate, *args: Any, **kwargs: Any) -> tuple[Evaluated, None]:
+        e, _ = stated(candidate, *args, **kwargs)
+        return Evaluated(e.candidate, e.figures, e.feasible, "fatigue life L10 (85%)",
+                         e.nominal, e.failing, e.doubtful), None  # fmt: skip
+
+    monkeypatch.setattr(choose, "evaluate", other_row)
+    reason = _select(pool).reason
+    assert reason.endswith("P(NOT OK) = 29.0%, most likely from thermal lead error per 300 mm "
+                           "(P5) (29.0%); its binding row: fatigue life L10 (85%)")  # fmt: skip
+
+
+def test_the_pick_says_how_many_were_below_80_percent_and_ties_only_when_tied(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # Two members at or below 80 % (neither dominates: less energy against longer life).
+    pool = _set(monkeypatch, [("a", 200.0, 90_000.0, 0.50, 0.0),
+                              ("b", 150.0, 50_000.0, 0.70, 0.0)])  # fmt: skip
+    assert "among the 2 candidates of the front whose every utilisation is at most 80%" in (
+        _select(pool).reason
+    )
+    pool = _set(monkeypatch, [("a", 200.0, 90_000.0, 0.50, 0.0)])
+    assert "among the one candidate of the front whose every" in _select(pool).reason
+    # Above 80 %, one member alone at the least utilisation: no tie is told.
+    pool = _set(monkeypatch, [("a", 200.0, 90_000.0, 0.90, 0.0),
+                              ("b", 150.0, 50_000.0, 0.95, 0.0)])  # fmt: skip
+    result = _select(pool)
+    assert _pick(result) == "a" and "tied" not in result.reason
+
+
+def test_the_first_objective_decides_the_undecided_tie_and_the_passed_over_pick(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # Undecided, 'a' and 'b' equally likely to fail (30 %): the first objective breaks the
+    # tie, energy to 'a' (100 J), life to 'b' (60 000 h).
+    pool = _set(monkeypatch, [("a", 100.0, 50_000.0, 0.7, 0.30),
+                              ("b", 150.0, 60_000.0, 0.7, 0.30)])  # fmt: skip
+    assert _pick(_select(pool)) == "a"
+    assert _pick(_select(pool, objectives=["life", "energy"])) == "b"
+    # 'b' alone is sure at 95 %; on nominal verdicts the pick would be the best of the
+    # three on the first objective: 'a' on energy (100 J), 'd' on life (90 000 h).
+    pool = _set(monkeypatch, [("a", 100.0, 40_000.0, 0.78, 0.14),
+                              ("b", 150.0, 45_000.0, 0.70, 0.02),
+                              ("d", 200.0, 90_000.0, 0.70, 0.20)])  # fmt: skip
+    assert "the pick would be HIWIN R32-10K5-FSC single-4point a," in _select(pool).reason
+    result = _select(pool, objectives=["life", "energy"])
+    assert _pick(result) == "b"
+    assert "the pick would be HIWIN R32-10K5-FSC single-4point d," in result.reason
+
+
+def test_an_objective_the_inputs_cannot_give_is_refused_with_what_they_can(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    pool = _set(monkeypatch, [("a", 100.0, 50_000.0, 0.5, 0.0)])
+    with pytest.raises(BallScrewInputError) as info:
+        _select(pool, objectives=["price"])
+    assert info.value.allowed.endswith("or a --screw-prices table; neither was given")
+    # The stated figures are energy and life only: no motor margin, and said which are.
+    with pytest.raises(BallScrewInputError) as info:
+        _select(pool, objectives=["motor_margin"])
+    assert info.value.allowed == (
+        "an objective computed for some feasible candidate (the case has no [motor] and no "
+        "--motors table was given); computed: energy, life"
+    )

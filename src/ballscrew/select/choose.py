@@ -147,6 +147,9 @@ def parse_confidence(text: str | float, field: str = "--confidence") -> float:
         value = float(raw.removesuffix("%").strip()) / (100.0 if raw.endswith("%") else 1.0)
     except ValueError:
         value = math.nan
+    # A percentage's division leaves a last bit (99.9 / 100 = 0.9990000000000001): rounded
+    # to 9 digits, far finer than anyone types one, "99.9 %" is the range's end.
+    value = round(value, 9)
     # 1 - confidence is the P(NOT OK) allowed; the Monte Carlo's 4000 draws resolve 0.1 %.
     if not 0.5 <= value <= 0.999:
         raise BallScrewInputError(field, text, "a confidence from 50 % to 99.9 %, e.g. '95 %'")
