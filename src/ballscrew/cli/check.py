@@ -67,6 +67,12 @@ def check_command(
     source and what to change; every assumption is listed below the table.
 
     \b
+    Exit status:
+      0  the check ran, whatever its verdicts (read the verdict column, or
+         --json's top-level "verdict"; ballscrew program exits 3 on NOT OK)
+      2  input refused (one 'error:' line), 1 internal error
+
+    \b
     Example:
       ballscrew check --case my_axis.toml \\
         --move "stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2, force=2 kN"
