@@ -20,6 +20,7 @@ import signal
 import subprocess
 import sys
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -105,6 +106,18 @@ def mutated(source: str, index: int) -> str:
     return ast.unparse(tree)
 
 
+def _address_space_cap(gib: float) -> Callable[[], None]:
+    """A child's preparation that caps its address space at ``gib`` GiB (RLIMIT_AS)."""
+
+    def cap() -> None:
+        import resource
+
+        limit = int(gib * 2**30)
+        resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+
+    return cap
+
+
 def main() -> None:
     """Run the mutants of each file and report the survivors."""
     parser = argparse.ArgumentParser(description=__doc__)
@@ -115,6 +128,11 @@ def main() -> None:
         "--lines", default="",
         help="only the mutants on these lines, e.g. '12,40,41' (to rerun the survivors of an "
         "earlier run after writing tests)",
+    )  # fmt: skip
+    parser.add_argument(
+        "--memory", type=float, default=4.0,
+        help="GiB of address space per mutant's test run; a run that grows past it (a mutant "
+        "that makes a loop endless and fills a list) fails, and counts as killed",
     )  # fmt: skip
     parser.add_argument(
         "--timeout", type=float, default=300.0,
@@ -147,6 +165,7 @@ def main() -> None:
                         text=True,
                         check=False,
                         timeout=args.timeout,
+                        preexec_fn=_address_space_cap(args.memory),
                     )  # fmt: skip
                     killed = run.returncode != 0
                 except subprocess.TimeoutExpired:
