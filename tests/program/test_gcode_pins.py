@@ -335,3 +335,21 @@ def test_a_rotary_move_alone_reads_f_in_degrees_per_minute() -> None:
     assert list(p.rotary_end[:, 0]) == pytest.approx([math.pi / 2, math.pi, math.pi / 2], abs=1e-15)
     assert list(p.kind) == [FEED, FEED, RAPID]
     assert np.isnan(p.feed[2])
+
+
+def test_a_cycle_s_moves_stop_exactly_and_start_below_r_by_going_up() -> None:
+    # RS274/NGC: a cycle starting below R first goes straight up to R. Its moves are not
+    # blended (path tolerance 0), whatever G64 says; the G0 before it has the machine's
+    # (NaN).
+    p = read_program("G21 G64 G90 G0 X0 Y0 Z-5\nG98 G81 X1 Y0 Z-3 R1 F100\nM30\n")
+    assert ends_mm(p) == [[0.0, 0.0, -5.0], [0.0, 0.0, 1.0], [1.0, 0.0, 1.0],
+                          [1.0, 0.0, -3.0], [1.0, 0.0, 1.0]]  # fmt: skip
+    assert p.tolerance is not None
+    assert np.isnan(p.tolerance[0]) and list(p.tolerance[1:]) == [0.0] * 4
+
+
+def test_a_rotary_feed_move_needs_an_f_word_and_a_rapid_does_not() -> None:
+    m = machine(rotary={"A": None})
+    error = refused("G21 G1 A90\n", machine=m)
+    assert (error.value, error.allowed) == ("G1", "an F word before the first feed move")
+    assert list(read_program("G21 G0 A90\nM30\n", machine=m).kind) == [RAPID]
