@@ -5,6 +5,9 @@ linear least-squares fit of exact data returns its coefficients to rounding), an
 map's guards on grids whose point counts are multiplied out by hand. Where the map's
 model would be slow or its output unknown, the model is replaced by the compact form
 itself, so every coefficient of the map is known.
+
+``servo.controller``: the intervals of a fit against the textbook formulas of a straight line,
+and the Stribeck fit's guards on curves written by hand.
 """
 
 from __future__ import annotations
@@ -156,3 +159,100 @@ def test_a_case_without_gear_or_incline_is_a_direct_level_axis(
     m = friction_map(case, "catalog", speeds=SPEEDS, loads=[0.0], temperatures=[40.0])
     assert m.gear_ratio == 1.0
     assert not any("inclined" in n for n in m.notes)
+
+
+# ``servo.controller``: the intervals by the textbook formulas of a straight line, and the
+# Stribeck fit's guards on curves written by hand.
+
+T975 = {1: 12.706204736, 2: 4.302652730}  # Student t, 97.5 % quantile (any t table)
+
+
+@pytest.mark.parametrize(
+    ("speed", "torque"),
+    [([1.0, 2.0, 3.0], [1.0, 1.2, 1.6]), ([1.0, 2.0, 3.0, 4.0], [1.0, 1.2, 1.6, 1.7])],
+)
+def test_intervals_of_a_straight_line_by_hand(speed: list[float], torque: list[float]) -> None:
+    # At positive speeds T = T_c + b w is a straight line: b = Sxy/Sxx, T_c = mean T - b mean w,
+    # s^2 = SSE/(n - 2), se(b) = s/sqrt(Sxx), se(T_c) = s sqrt(1/n + mean(w)^2/Sxx). The form is
+    # linear, so the central differences are exact to rounding (1e-9 of the half-widths).
+    from ballscrew.servo.controller import coulomb_viscous, with_intervals
+
+    x, y = np.array(speed), np.array(torque)
+    n = x.size
+    sxx = float(np.sum((x - x.mean()) ** 2))
+    b = float(np.sum((x - x.mean()) * (y - y.mean()))) / sxx
+    tc = float(y.mean()) - b * float(x.mean())
+    s = math.sqrt(float(np.sum((y - tc - b * x) ** 2)) / (n - 2))
+    q = T975[n - 2]
+    got = with_intervals(coulomb_viscous(x, y), x, y)
+    assert got.intervals is not None
+    for name, value, se in (("coulomb_torque", tc, s * math.sqrt(1 / n + x.mean() ** 2 / sxx)),
+                            ("viscous_coefficient", b, s / math.sqrt(sxx))):  # fmt: skip
+        lo, hi = got.intervals[name]
+        assert (lo + hi) / 2 == pytest.approx(value, rel=1e-9)
+        assert (hi - lo) / 2 == pytest.approx(q * se, rel=1e-6)  # t to 10 digits
+
+
+def test_two_points_for_two_parameters_give_no_intervals() -> None:
+    from ballscrew.servo.controller import coulomb_viscous, with_intervals
+
+    got = with_intervals(coulomb_viscous([1.0, 2.0], [1.0, 1.2]), [1.0, 2.0], [1.0, 1.2])
+    assert got.intervals == {} and "2 points for 2 parameters: no intervals" in got.notes
+
+
+WS = np.concatenate([-np.geomspace(0.01, 300.0, 40)[::-1], np.geomspace(0.01, 300.0, 40)])
+
+
+def test_a_stribeck_curve_read_through_zero_speed() -> None:
+    # A reading at rest (torque 0 by the form's sgn) does not set the slowest speed: the
+    # exact curve's parameters come back as without it (rounding of the solver, 1e-6).
+    from ballscrew.servo.controller import stribeck, stribeck_torque
+
+    true = {"coulomb_torque": 0.3, "static_torque": 0.5, "stribeck_speed": 2.0,
+            "stribeck_exponent": 1.3, "viscous_coefficient": 1e-3}  # fmt: skip
+    w = np.concatenate([WS, [0.0]])
+    fit = stribeck(w, stribeck_torque(w, **true))
+    for key, value in true.items():
+        assert fit.parameters[key] == pytest.approx(value, rel=1e-6), key
+
+
+@pytest.mark.parametrize(("drop", "noted"), [(0.0105, False), (0.0095, True)])
+def test_the_no_drop_note_at_one_percent(drop: float, noted: bool) -> None:
+    # T_s - T_c of 1.05 % of T_c is a drop; 0.95 % is told as none (the fit returns both to
+    # 1e-6 of T_c, far inside the 0.05 % either side of the 1 % rule).
+    from ballscrew.servo.controller import stribeck, stribeck_torque
+
+    torque = stribeck_torque(WS, 0.3, 0.3 * (1.0 + drop), 2.0, 1.3, 1e-3)
+    fit = stribeck(WS, torque)
+    assert fit.parameters["static_torque"] - fit.parameters["coulomb_torque"] == pytest.approx(
+        0.3 * drop, rel=1e-3
+    )
+    assert any("no Stribeck drop" in n for n in fit.notes) is noted
+
+
+def test_intervals_of_an_exact_line_with_a_reading_at_rest() -> None:
+    # T = 1 + 0.5 w read at 1, 2, 3 rad/s and 0 at rest (the form's sgn 0 = 0): the fit is
+    # exact, every residual 0, so each interval has zero width and sits on its value.
+    from ballscrew.servo.controller import coulomb_viscous, with_intervals
+
+    # At 1, 2, 4 rad/s (1.5, 2, 3 N*m) every number is exact in binary: a covariance of 0,
+    # still an interval (of zero width), not a parameter "at its bound".
+    for w, t in (([0.0, 1.0, 2.0, 3.0], [0.0, 1.5, 2.0, 2.5]), ([1.0, 2.0, 4.0], [1.5, 2.0, 3.0])):
+        got = with_intervals(coulomb_viscous(w, t), w, t)
+        assert got.intervals is not None and not got.notes
+        for name, value in (("coulomb_torque", 1.0), ("viscous_coefficient", 0.5)):
+            lo, hi = got.intervals[name]
+            assert lo == pytest.approx(value, rel=1e-12) and hi == pytest.approx(value, rel=1e-12)
+
+
+def test_a_parameter_at_its_bound_gets_no_interval() -> None:
+    # A torque that falls with speed: b stops at its bound 0 (an unbounded fit would give
+    # b < 0), so b has no interval and says why; T_c has one.
+    from ballscrew.servo.controller import coulomb_viscous, with_intervals
+
+    w = np.array([1.0, 2.0, 3.0, 4.0])
+    t = 0.5 - 1e-3 * w
+    got = with_intervals(coulomb_viscous(w, t), w, t)
+    assert got.parameters["viscous_coefficient"] == 0.0
+    assert got.intervals is not None and set(got.intervals) == {"coulomb_torque"}
+    assert "viscous_coefficient sits at its bound 0: no interval" in got.notes
