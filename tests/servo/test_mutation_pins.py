@@ -256,3 +256,18 @@ def test_a_parameter_at_its_bound_gets_no_interval() -> None:
     assert got.parameters["viscous_coefficient"] == 0.0
     assert got.intervals is not None and set(got.intervals) == {"coulomb_torque"}
     assert "viscous_coefficient sits at its bound 0: no interval" in got.notes
+
+
+def test_every_parameter_through_a_gear_of_2_by_hand() -> None:
+    # Motor turns per screw turn i = 2: a torque halves, a speed doubles, an exponent stays,
+    # a torque per speed or per angle is divided by i^2 = 4 (the gear's losses left out).
+    from ballscrew.servo.controller import FrictionForm
+
+    p = {"coulomb_torque": 0.3, "static_torque": 0.5, "stribeck_speed": 2.0,
+         "stribeck_exponent": 1.3, "viscous_coefficient": 1e-3, "bristle_stiffness": 40.0,
+         "bristle_damping": 0.8}  # fmt: skip
+    motor = FrictionForm("lugre", p, 0.0, 0.0).as_drive_dict(gear_ratio=2.0)["motor_side"]
+    expected = {"coulomb_torque": 0.15, "static_torque": 0.25, "stribeck_speed": 4.0,
+                "stribeck_exponent": 1.3, "viscous_coefficient": 2.5e-4,
+                "bristle_stiffness": 10.0, "bristle_damping": 0.2}  # fmt: skip
+    assert {k: v["value"] for k, v in motor.items()} == pytest.approx(expected, rel=1e-15)
