@@ -211,7 +211,7 @@ def fit_load_form(
     per_t = []
     reach = np.max(np.abs(columns), axis=0)  # each term's largest factor over the grid
     for k, temp in enumerate(temperatures):
-        coef = lsq_linear(columns, torque[k].reshape(-1), bounds=(_LOWER, np.inf)).x
+        coef = lsq_linear(columns, torque[k].reshape(-1), bounds=(_LOWER, np.inf), method="bvls").x
         # A term that moves no torque of the map by more than its rounding (1e-12 of the
         # largest) is 0: a model with no driving/back-driving difference gives c2 of
         # 1e-21 N*m/N, a different rounding on each path through the model.
