@@ -27,17 +27,13 @@ import numpy.typing as npt
 
 from . import validity
 from .design.ratings import Finding, Ratings, plausibility, raise_errors
-from .errors import (
-    BallScrewInputError,
-    BallScrewValidityWarning,
-    FloatArray,
-    broadcast_shape,
-)
+from .errors import BallScrewInputError, BallScrewValidityWarning, FloatArray
 from .friction import MODELS, ModelSpec, get_model
 from .geometry import BallScrew, ScrewArray
 from .helix import JIT_LOAD_POINTS, kernel_scope, load_kernel
 from .kinematics import rad_s_to_rpm
 from .lubricant import Lubricant
+from .numerics.single import broadcast_shape
 from .state import OperatingState, operating_points, operating_state_unchecked
 from .validity import ValidityIssue
 

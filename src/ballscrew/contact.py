@@ -66,13 +66,13 @@ import numpy.typing as npt
 from .errors import (
     BallScrewInputError,
     FloatArray,
-    broadcast_to,
     check_in_range,
     check_nonnegative,
     check_positive,
 )
 from .materials import reduced_modulus
 from .numerics.elliptic import carlson_rd, carlson_rf, complete_integrals
+from .numerics.single import broadcast_to
 
 __all__ = [
     "HERTZ_METHODS",

@@ -94,15 +94,9 @@ import numpy.typing as npt
 
 from . import _helix_kernel
 from . import rolling_losses as rl
-from .errors import (
-    FloatArray,
-    broadcast_shape,
-    broadcast_to,
-    check_choice,
-    check_nonnegative,
-    check_positive,
-)
+from .errors import FloatArray, check_choice, check_nonnegative, check_positive
 from .numerics import Index, newton_bracketed
+from .numerics.single import broadcast_shape, broadcast_to
 
 __all__ = [
     "BallSlip",

@@ -43,8 +43,9 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
-from .errors import FloatArray, check_finite, check_nonnegative, every, maximum, minimum, where
+from .errors import FloatArray, check_finite, check_nonnegative
 from .geometry import ScrewGeometry, cos, sin
+from .numerics.single import every, maximum, minimum, where
 
 __all__ = ["LIFT_OFF_RATIO", "BallLoads", "ball_loads", "preload_split"]
 
@@ -97,7 +98,7 @@ def preload_split(
     r = where(lifted, 0.0, ratio)
     s = r / 3.0
     # The bounds by maximum and minimum, as numpy's clip (whose wrapper costs microseconds a
-    # call, which a single point pays at every step; errors.maximum compares one point's
+    # call, which a single point pays at every step; numerics.single.maximum compares one point's
     # values as numbers).
     for _ in range(60):
         sp = np.sqrt(1.0 + s)

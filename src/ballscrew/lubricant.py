@@ -48,9 +48,8 @@ from .errors import (
     check_in_range,
     check_nonnegative,
     check_positive,
-    every,
-    minimum,
 )
+from .numerics.single import every, minimum
 from .plausible import LUBRICANT_RANGES, check_lubricant_property
 
 __all__ = [

@@ -34,7 +34,8 @@ import math
 import numpy as np
 import numpy.typing as npt
 
-from .errors import FloatArray, as_float, where
+from .errors import FloatArray
+from .numerics.single import as_float, where
 
 __all__ = [
     "ball_churning_power",

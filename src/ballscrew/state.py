@@ -31,18 +31,12 @@ import numpy.typing as npt
 from . import ehl
 from .contact import HertzContact, hertz
 from .design.limits import check_operating_bounds
-from .errors import (
-    FloatArray,
-    broadcast_inputs,
-    broadcast_shape,
-    broadcast_to,
-    check_positive,
-    where,
-)
+from .errors import FloatArray, broadcast_inputs, check_positive
 from .geometry import ScrewGeometry, screw_derived
 from .kinematics import Kinematics, kinematics
 from .loads import BallLoads, ball_loads
 from .lubricant import Lubricant
+from .numerics.single import broadcast_shape, broadcast_to, where
 
 __all__ = ["ContactState", "OperatingState", "operating_points", "operating_state"]
 

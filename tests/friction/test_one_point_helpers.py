@@ -14,7 +14,7 @@ import math
 import numpy as np
 import pytest
 
-from ballscrew.errors import (
+from ballscrew.numerics.single import (
     as_float,
     broadcast_shape,
     broadcast_to,

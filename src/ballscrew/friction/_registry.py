@@ -9,9 +9,10 @@ from typing import Any, Protocol, TypeVar
 
 import numpy as np
 
-from ..errors import BallScrewInputError, FloatArray, broadcast_shape, broadcast_to
+from ..errors import BallScrewInputError, FloatArray
 from ..geometry import BallScrew, ScrewGeometry
 from ..lubricant import Lubricant
+from ..numerics.single import broadcast_shape, broadcast_to
 from ..validity import ValidityCheck
 
 __all__ = [

@@ -163,14 +163,7 @@ from .. import ehl
 from .. import rolling_losses as rl
 from ..ball_train import creep_slope, expected_train, orbital_sensitivity
 from ..contact import hertz
-from ..errors import (
-    FloatArray,
-    broadcast_shape,
-    check_choice,
-    check_nonnegative,
-    maximum,
-    where,
-)
+from ..errors import FloatArray, check_choice, check_nonnegative
 from ..geometry import ScrewArray, ScrewGeometry, cos, screw_derived
 from ..helix import SlipContact, transverse_slip_loss
 from ..kinematics import (
@@ -183,6 +176,7 @@ from ..kinematics import (
 )
 from ..lubricant import FLOODED, Lubricant, lubrication_method
 from ..materials import STEEL_DENSITY
+from ..numerics.single import broadcast_shape, maximum, where
 from ..plausible import check_wiper_drag
 from ..state import ContactState, OperatingState
 from ..validity import film_checks
