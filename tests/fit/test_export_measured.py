@@ -129,3 +129,56 @@ def test_too_few_readings_at_a_temperature_are_said_not_judged() -> None:
                                                  temperature=np.full(6, 30.0)))  # fmt: skip
     assert not any("data row(s)" in n for n in out.notes)
     assert any("6 readings for 5 parameters" in n for n in out.notes), out.notes
+
+
+def _paired(outlier: float) -> MeasuredCurve:
+    # Readings of 0.3 N*m + 2e-4 N*m*s/rad * w in pairs +a and -a at six speeds, a = 3, 2.5,
+    # 2, 1.5, 1 and 0.5 times e: without the extra reading the least-squares line is the
+    # true one and the residuals are +-a, so their median absolute deviation is 1.75 e and
+    # the robust scale 1.4826 x 1.75 e = 2.595 e. The extra reading (data row 13) lies
+    # ``outlier`` times e off the line.
+    e = 0.002
+    a = np.repeat([3.0, 2.5, 2.0, 1.5, 1.0, 0.5], 2) * np.tile([1.0, -1.0], 6) * e
+    w = np.repeat([1.0, 3.0, 10.0, 30.0, 100.0, 300.0], 2)
+    t = 0.3 + 2e-4 * w + a
+    w, t = np.append(w, 10.0), np.append(t, 0.3 + 2e-4 * 10.0 + outlier * e)
+    return MeasuredCurve(w, t, "m", temperature=np.full(w.size, 25.0))
+
+
+@pytest.mark.parametrize(("times_e", "named"), [(10.8, True), (10.0, False)])
+def test_a_reading_is_named_past_four_robust_standard_deviations(
+    times_e: float, named: bool
+) -> None:
+    # The threshold is 4 x 2.595 e = 10.38 e from the line the other readings give: 10.8 e
+    # is past it, 10.0 e is not (both far above the fit's rounding).
+    out = export_friction(CASE, "complete", "coulomb-viscous", speeds=SPEEDS,
+                          measured=_paired(times_e))  # fmt: skip
+    flagged = [n for n in out.notes if "data row(s)" in n]
+    assert flagged == (["at 25 degC, data row(s) 13 lie more than 4 robust standard "
+                        "deviations off the fitted curve: check them (they are kept in the "
+                        "fit)"] if named else [])  # fmt: skip
+    # One temperature: no note of several; a curve turning one way is said so.
+    assert not any("temperatures: one fit at each" in n for n in out.notes)
+    assert any("turns one way" in n for n in out.notes)
+
+
+def test_four_speeds_at_a_temperature_are_enough_and_three_are_refused() -> None:
+    # A form needs readings at 4 speeds at least at each temperature (2 parameters and the
+    # scatter's estimate); the refusal names the count and the temperature.
+    w4 = np.array([0.5, 1.0, 2.0, 4.0])
+    out = export_friction(CASE, "complete", "coulomb-viscous", speeds=SPEEDS,
+                          measured=MeasuredCurve(w4, 0.3 + 2e-4 * w4, "m"))  # fmt: skip
+    assert out.fitted[0][1].parameters["coulomb_torque"] == pytest.approx(0.3, rel=1e-9)
+    # speeds below 1 rad/s and all positive: still one way
+    assert any("turns one way" in n for n in out.notes)
+    with pytest.raises(BallScrewInputError, match=r"\(3 at 20 degC\)"):
+        export_friction(CASE, "complete", "coulomb-viscous", speeds=SPEEDS,
+                        measured=MeasuredCurve(w4[:3], 0.3 + 2e-4 * w4[:3], "m",
+                                               temperature=np.full(3, 20.0)))  # fmt: skip
+
+
+def test_a_curve_measured_both_ways_is_not_called_one_way() -> None:
+    w = np.array([-100.0, -10.0, -1.0, 1.0, 10.0, 100.0, 300.0])
+    out = export_friction(CASE, "complete", "coulomb-viscous", speeds=SPEEDS,
+                          measured=MeasuredCurve(w, 0.3 + 2e-4 * np.abs(w), "m"))  # fmt: skip
+    assert not any("turns one way" in n for n in out.notes)
