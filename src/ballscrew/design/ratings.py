@@ -57,16 +57,33 @@ bundled catalogue rows with a printed ball diameter get 0.956 of their printed
 :math:`C_a` and 1.02 of their printed :math:`C_{0a}` (medians;
 ``ballscrew.select.pool.rating_scatter`` gives the spread). Fitted alone, each
 rating asks nearly the same groove (0.5245 for :math:`C_a`, 0.527 for
-:math:`C_{0a}`): the fitted number is a groove, not a correction. The ratio
-estimated/printed of :math:`C_a` still falls with the number of loaded turns
-(slope -0.052 in ln k; -0.23 with ISO 281's exponent 0.7): the rows of two
-turns are all of 16 to 40 mm lead, and over the single nuts ln k and the
-lead angle's ln cos correlate at 0.96, so the catalogue cannot tell a turn
-exponent from a lead-angle term (with both in one regression the turns'
-coefficient is +0.04). Counted on the ball circle, :math:`\pi d_m/D_w` as a
-bearing row's balls are, instead of along the helix
-(:attr:`~ballscrew.geometry.BallScrew.balls_per_circuit`), both ratings would
-lose their trend (slopes -0.016 and +0.014); without the standard's text the
+:math:`C_{0a}`): the fitted number is a groove, not a correction. Two of
+the 25, HIWIN's internal-recirculation nuts (T4), get about 1.3 of their
+printed :math:`C_a` and 1.5 of their :math:`C_{0a}` (their return takes part
+of each turn, so fewer balls carry than the helix holds); without them the
+median of :math:`C_a` is 0.948.
+
+**Turns and lead angle.** The ratio estimated/printed of :math:`C_a` falls
+with the number of loaded turns (slope -0.052 in ln k; -0.23 with ISO 281's
+exponent 0.7). Across the catalogue the turns and the lead angle go
+together (the rows of two turns are all of 16 to 40 mm lead; over the single
+nuts ln k and ln cos of the lead angle correlate at 0.96), but at one
+geometry they do not: nuts that differ only in their circuits print
+:math:`C_a` in the ratio of the circuits to the power 0.86 within 0.2 %
+(HIWIN's ground FSI nuts, 17 pairs of 3 to 6 circuits, *Ballscrews &
+Accessories* BS-08-2-EN-1704-K, Table 6.6; THK's BIF4010-5 against
+BNFN4010-5, one and two circuits of 2.5 turns), and :math:`C_{0a}` in the
+ratio of the circuits: the turn exponent is the makers' own
+(:data:`TURN_EXPONENT`). The trend is the lead angle's: among HIWIN's
+cassette single nuts of one size and ball, the printed ratings per turn
+(:math:`C_a/k^{0.86}`, :math:`C_{0a}/k`) fall as :math:`\cos^{1.88}\varphi`
+and :math:`\cos^{1.33}\varphi`, the estimates as :math:`\cos^{0.60}` and
+:math:`\cos^{-0.05}` (``tests/select/test_rating_estimates.py``). Counted on
+the ball circle, :math:`\pi d_m/D_w` as a bearing row's balls are, instead of
+along the helix (:attr:`~ballscrew.geometry.BallScrew.balls_per_circuit`),
+the estimates would fall as :math:`\cos^{1.3}` and :math:`\cos^{1}` and both
+ratings would lose their trend with the turns (slopes -0.016 and +0.014);
+without ISO 3408-5's text, which says how a turn's balls are counted, the
 helix's count is kept.
 
 **Preload.** Ball screw catalogues keep the preload within 10 % of
@@ -142,14 +159,18 @@ TURN_EXPONENT = 0.86
 """Exponent of the number of loaded turns in a ball screw's dynamic rating [-], as ISO 3408-5
 (5.2) is cited for it; ISO 281 combines the equal rows of a bearing to the power 0.7. A ball
 screw's turns follow one another along one helix and share the load more evenly than a
-bearing's rows; with 0.7 the ratio estimated/printed fell with the turns (slope -0.23 in ln k
-over the bundled rows), with 0.86 it falls by -0.05 (module docstring). The standard's text
-(paywalled) was not at hand to confirm the number; the catalogue rows agree with it."""
+bearing's rows. The standard's text (paywalled) was not at hand; the makers' printed ratings
+confirm the number where nothing but the turns changes: HIWIN's ground FSI nuts of one size
+and lead with 3 to 6 circuits (BS-08-2-EN-1704-K, Table 6.6, 17 pairs) and THK's BIF4010-5
+and BNFN4010-5 (one and two circuits) print C_a in the ratio of the circuits to the power
+0.86 within 0.2 % (with 0.7 they would miss by 4.7 to 11.7 %)."""
 
 LEAD_ANGLE_EXPONENT = 1.3
 """Exponent of the cosine of the lead angle in the dynamic rating [-], as ISO 3408-5 (5.2) is
 cited for it: the balls' axial share, cos(phi), and the longer rolling path per turn of a steep
-helix. Not confirmed from the standard's text (see :data:`TURN_EXPONENT`)."""
+helix. Not confirmed from the standard's text: at one size and ball the makers' ratings per
+turn fall faster with the lead angle than this and the helix's count of balls give (module
+docstring, "Turns and lead angle")."""
 
 THRUST_ROW_FACTOR = 0.947
 r"""The constant of ISO 281's rating of a thrust ball bearing row over Lundberg and Palmgren's
