@@ -18,6 +18,7 @@ from ballscrew.design.ratings import (
     Ratings,
     max_contact_pressure,
     plausibility,
+    rating_balls_per_circuit,
     static_rating_estimate,
     stroke_findings,
 )
@@ -43,9 +44,24 @@ def test_contact_pressure_against_an_independent_hertz_fit_and_load_share() -> N
 
 
 def test_the_static_rating_estimate_reaches_4200_mpa_by_definition() -> None:
+    # On this screw (32 mm, 10 mm lead) a turn's ball circle and its helix hold the same
+    # 15 balls (15.8 and 15.9 places), so the rating's count and the load share's agree.
     s = _single(0.032, 0.00635, 5)
+    assert rating_balls_per_circuit(s) == s.balls_per_circuit == 15
     c0 = static_rating_estimate(s)
     assert float(max_contact_pressure(s, c0)) == pytest.approx(STATIC_PRESSURE, rel=1e-9)
+
+
+def test_where_the_helix_holds_more_balls_the_estimate_stops_short_of_4200_mpa() -> None:
+    # The rating counts a turn's balls on the ball circle (pi d_m / D_w, 15.8: 15), the load
+    # share along the helix (1/cos(17.7 deg) longer at a 32 mm lead: 16.6, so 16). At the
+    # estimated C_0a each of the 16 balls carries 15/16 of Q_0, so the pressure is
+    # 4200 MPa (15/16)^(1/3) = 4110.6 MPa: the rating refuses a load before the pressure
+    # rule would.
+    s = BallScrew(0.032, 0.032, 0.00635, math.radians(45), 0.55, 0.55, 1.0, 2, "single")
+    assert (rating_balls_per_circuit(s), s.balls_per_circuit) == (15, 16)
+    p = float(max_contact_pressure(s, static_rating_estimate(s)))
+    assert p == pytest.approx(STATIC_PRESSURE * (15 / 16) ** (1 / 3), rel=1e-9)
 
 
 def test_the_static_rating_estimate_against_the_catalogues() -> None:

@@ -30,14 +30,21 @@ with :math:`p_1` the pressure under 1 N, and
 is the rating that definition gives from the geometry
 (:func:`static_rating_estimate`), used when neither the case nor the
 designation's catalogue row gives one, and then stated as estimated. The
-definition is the bearings' one: at ISO 76's thrust-bearing grooves (radius
-0.54 of the ball) this function gives 0.972 of ISO 76's tabulated
-:math:`f_0` at every ball-position ratio from 0.05 to 0.20. What it cannot
-know is the groove: :math:`Q_0` goes as :math:`p_1^{-3}`, and from conformity
-0.55 to 0.52 the rating grows 1.76 times. A case is estimated at its own
-conformity (the package's default 0.55 gives about 0.68 of what the makers
-print: on the safe side); the sizes no catalogue prints are estimated at
-:data:`RATING_CONFORMITY`, the makers' grooves.
+estimate counts :math:`z` as both rating estimates do, on the ball circle
+(:func:`rating_balls_per_circuit`; "Balls of a turn" below), while the
+contact pressure rule shares the load among the balls the helix holds, up to
+:math:`1/\cos\varphi` more: at an estimated :math:`C_{0a}` the pressure is
+4200 MPa times the cube root of the ratio of the two counts (where they
+differ by one ball, 15 and 16 a turn at a lead angle of 17.7 deg: 4111 MPa),
+so the rating's rule refuses first. The definition is the bearings' one: at
+ISO 76's thrust-bearing grooves (radius 0.54 of the ball) this function
+gives 0.972 of ISO 76's tabulated :math:`f_0` at every ball-position ratio
+from 0.05 to 0.20. What it cannot know is the groove: :math:`Q_0` goes as
+:math:`p_1^{-3}`, and from conformity 0.55 to 0.52 the rating grows 1.76
+times. A case is estimated at its own conformity (the package's default 0.55
+gives about 0.66 of what the makers print: on the safe side); the sizes no
+catalogue prints are estimated at :data:`RATING_CONFORMITY`, the makers'
+grooves.
 
 **Dynamic rating.** :math:`C_a` gives a rating life of :math:`10^6`
 revolutions, :math:`L_{10} = (C_a/F)^3\cdot 10^6` (ISO 3408-5, section 7.2):
@@ -51,40 +58,50 @@ angular-contact ball bearing rated as ISO 281 rates it, the loaded turns to
 the power 0.86 and the lead angle's :math:`(\cos\varphi)^{1.3}`), stated as
 estimated.
 
-**One groove for both estimates.** At :data:`RATING_CONFORMITY` (0.526,
+**One groove for both estimates.** At :data:`RATING_CONFORMITY` (0.525,
 fitted once on ten catalogue rows, :data:`RATING_CONFORMITY` says how) the 25
-bundled catalogue rows with a printed ball diameter get 0.956 of their printed
-:math:`C_a` and 1.02 of their printed :math:`C_{0a}` (medians;
+bundled catalogue rows with a printed ball diameter get 0.962 of their printed
+:math:`C_a` and 1.01 of their printed :math:`C_{0a}` (medians;
 ``ballscrew.select.pool.rating_scatter`` gives the spread). Fitted alone, each
-rating asks nearly the same groove (0.5245 for :math:`C_a`, 0.527 for
+rating asks nearly the same groove (0.5234 for :math:`C_a`, 0.5259 for
 :math:`C_{0a}`): the fitted number is a groove, not a correction. Two of
 the 25, HIWIN's internal-recirculation nuts (T4), get about 1.3 of their
-printed :math:`C_a` and 1.5 of their :math:`C_{0a}` (their return takes part
-of each turn, so fewer balls carry than the helix holds); without them the
-median of :math:`C_a` is 0.948.
+printed :math:`C_a` and 1.56 of their :math:`C_{0a}` (their return takes part
+of each turn, so fewer balls carry than a full turn holds); without them the
+median of :math:`C_a` is 0.961.
 
-**Turns and lead angle.** The ratio estimated/printed of :math:`C_a` falls
-with the number of loaded turns (slope -0.052 in ln k; -0.23 with ISO 281's
-exponent 0.7). Across the catalogue the turns and the lead angle go
-together (the rows of two turns are all of 16 to 40 mm lead; over the single
-nuts ln k and ln cos of the lead angle correlate at 0.96), but at one
-geometry they do not: nuts that differ only in their circuits print
-:math:`C_a` in the ratio of the circuits to the power 0.86 within 0.2 %
-(HIWIN's ground FSI nuts, 17 pairs of 3 to 6 circuits, *Ballscrews &
-Accessories* BS-08-2-EN-1704-K, Table 6.6; THK's BIF4010-5 against
-BNFN4010-5, one and two circuits of 2.5 turns), and :math:`C_{0a}` in the
-ratio of the circuits: the turn exponent is the makers' own
-(:data:`TURN_EXPONENT`). The trend is the lead angle's: among HIWIN's
-cassette single nuts of one size and ball, the printed ratings per turn
-(:math:`C_a/k^{0.86}`, :math:`C_{0a}/k`) fall as :math:`\cos^{1.88}\varphi`
-and :math:`\cos^{1.33}\varphi`, the estimates as :math:`\cos^{0.60}` and
-:math:`\cos^{-0.05}` (``tests/select/test_rating_estimates.py``). Counted on
-the ball circle, :math:`\pi d_m/D_w` as a bearing row's balls are, instead of
-along the helix (:attr:`~ballscrew.geometry.BallScrew.balls_per_circuit`),
-the estimates would fall as :math:`\cos^{1.3}` and :math:`\cos^{1}` and both
-ratings would lose their trend with the turns (slopes -0.016 and +0.014);
-without ISO 3408-5's text, which says how a turn's balls are counted, the
-helix's count is kept.
+**Balls of a turn.** Each loaded turn is rated as ISO 281 rates a row of a
+thrust ball bearing, whose :math:`Z` balls lie on its pitch circle (a full
+row holds :math:`\pi d_m/D_w`); the estimates count a turn's balls so,
+:math:`\pi d_m/D_w` (:func:`rating_balls_per_circuit`), although the helix of a turn is
+:math:`1/\cos\varphi` longer and holds that many more (5 % more where the
+lead equals the diameter). The friction and the load share keep the balls
+that really roll (:attr:`~ballscrew.geometry.BallScrew.balls_per_circuit`);
+only the ratings count on the circle. The makers' ratings ask for it: among
+HIWIN's cassette single nuts of one size and ball (9 rows in 4 groups), the
+printed ratings per turn (:math:`C_a/k^{0.86}`, :math:`C_{0a}/k`) fall with
+the lead angle as :math:`\cos^{1.88}\varphi` and :math:`\cos^{1.33}\varphi`;
+the estimates fall as :math:`\cos^{1.3}` and :math:`\cos^{1}` with the
+circle's count, and only as :math:`\cos^{0.60}` and :math:`\cos^{-0.05}`
+with the helix's (``tests/select/test_rating_estimates.py``). The printed
+ratings still fall faster, by :math:`\cos^{0.58}` and :math:`\cos^{0.33}`:
+the count explains about half the makers' fall with the lead angle for
+:math:`C_a` and 3/4 for :math:`C_{0a}`, not all of it. Whether ISO 3408-5
+counts a turn's balls so could not be checked: its text was not at hand.
+
+**Turns and lead angle.** The ratio estimated/printed has no trend with the
+number of loaded turns: slopes in ln k of -0.016 for :math:`C_a` and +0.014
+for :math:`C_{0a}` (with the helix's count -0.052 and -0.041; with ISO 281's
+turn exponent 0.7 the one of :math:`C_a` is -0.18). Across the catalogue the
+turns and the lead angle go together (the rows of two turns are all of 16 to
+40 mm lead; over the single nuts ln k and ln cos of the lead angle correlate
+at 0.96), so a trend with the turns was a trend with the lead angle: at one
+geometry nuts that differ only in their circuits print :math:`C_a` in the
+ratio of the circuits to the power 0.86 within 0.2 % (HIWIN's ground FSI nuts, 17 pairs of 3 to 6
+circuits, *Ballscrews & Accessories* BS-08-2-EN-1704-K, Table 6.6; THK's
+BIF4010-5 against BNFN4010-5, one and two circuits of 2.5 turns), and
+:math:`C_{0a}` in the ratio of the circuits: the turn exponent is the makers'
+own (:data:`TURN_EXPONENT`).
 
 **Preload.** Ball screw catalogues keep the preload within 10 % of
 :math:`C_a` (THK, *General Catalog*, ball screws, "Preload"; HIWIN,
@@ -120,6 +137,7 @@ __all__ = [
     "max_contact_pressure",
     "plausibility",
     "raise_errors",
+    "rating_balls_per_circuit",
     "static_rating_estimate",
     "stroke_findings",
     "thrust_row_reduction",
@@ -169,8 +187,8 @@ LEAD_ANGLE_EXPONENT = 1.3
 """Exponent of the cosine of the lead angle in the dynamic rating [-], as ISO 3408-5 (5.2) is
 cited for it: the balls' axial share, cos(phi), and the longer rolling path per turn of a steep
 helix. Not confirmed from the standard's text: at one size and ball the makers' ratings per
-turn fall faster with the lead angle than this and the helix's count of balls give (module
-docstring, "Turns and lead angle")."""
+turn fall faster with the lead angle (cos^1.88) than this with the ball circle's count of a
+turn's balls gives (cos^1.3; module docstring, "Balls of a turn")."""
 
 THRUST_ROW_FACTOR = 0.947
 r"""The constant of ISO 281's rating of a thrust ball bearing row over Lundberg and Palmgren's
@@ -186,23 +204,26 @@ ISO 281:2007 multiplies the table by :math:`b_m = 1.3` for contemporary steel; I
 (2006) is not taken to, since with it no single groove gives both the makers' C_a and C_0a
 (at ISO 76's 0.54: C_a 1.05, C_0a 0.78 of the printed values)."""
 
-RATING_CONFORMITY = 0.526
+RATING_CONFORMITY = 0.525
 """Groove conformity (radius over ball diameter, screw and nut) of the makers' ball screws,
 fitted [-]: the conformity at which :func:`static_rating_estimate` and
 :func:`dynamic_rating_estimate` reproduce printed ratings. No catalogue prints its grooves, and
 physics does not give them, so the number was fitted once: the conformity minimising the sum
 of squared ln(estimated/printed) of C_a and C_0a over the training rows, HIWIN's ten cassette
-single nuts (FSC) of 14 to 32 mm (BS-08-2-EN-1704-K, Table 6.4), gives 0.5263, kept as 0.526.
-On them C_a is 0.977 (0.93 to 1.04) and C_0a 1.03 (0.94 to 1.08) of the printed values
-(medians, ranges; scatter of ln: 0.036 and 0.045). Held out, HIWIN's eight FSC nuts of 40 to
-63 mm: C_a 0.950 (0.94 to 0.99), C_0a 1.02 (0.95 to 1.07); scatter of ln 0.021 and 0.041.
-Fitted to one rating alone the rows ask 0.5245 (C_a) and 0.527 (C_0a). The value lies between the
-grooves ISO 281 rates radial ball bearings at (0.52 inner, 0.53 outer) and ISO 76's 0.54 for
-thrust bearings, closer than the package's friction default 0.55 (:mod:`ballscrew.geometry`)."""
+single nuts (FSC) of 14 to 32 mm (BS-08-2-EN-1704-K, Table 6.4), gives 0.5251, kept as 0.525
+(fitted with a turn's balls counted on the ball circle, :func:`rating_balls_per_circuit`; with
+the helix's count it was 0.5263). On them C_a is 0.974 (0.94 to 1.02) and C_0a 1.01 (0.96 to
+1.08) of the printed values (medians, ranges; standard deviation of ln: 0.021 and 0.040).
+Held out, HIWIN's eight FSC nuts of 40 to 63 mm: C_a 0.960 (0.95 to 0.99), C_0a 1.01 (0.98 to
+1.10); standard deviation of ln 0.012 and 0.040. Fitted to one rating alone the rows ask
+0.5234 (C_a) and 0.5259 (C_0a). The value lies between the grooves ISO 281 rates radial ball
+bearings at (0.52 inner, 0.53 outer) and ISO 76's 0.54 for thrust bearings, closer than the
+package's friction default 0.55 (:mod:`ballscrew.geometry`)."""
 
 DYNAMIC_RATING_SOURCE = (
     "ISO 3408-5:2006, 5.2: Lundberg & Palmgren's contact capacities (Acta Polytech. Mech. Eng. "
-    "Ser. 1, 1947) per loaded turn, (cos phi)^1.3 for the lead angle, (loaded turns)^0.86"
+    "Ser. 1, 1947) per loaded turn, its balls counted on the ball circle as a bearing row's, "
+    "(cos phi)^1.3 for the lead angle, (loaded turns)^0.86"
 )
 """Where the dynamic rating estimate comes from."""
 
@@ -278,29 +299,73 @@ def max_contact_pressure(screw: BallScrew, axial_load: npt.ArrayLike) -> FloatAr
     return result
 
 
+def rating_balls_per_circuit(screw: BallScrew) -> int:
+    r"""Balls of a circuit's loaded turns as the rating estimates count them, on the ball circle.
+
+    .. math:: Z_i = \left\lfloor \frac{i\,\pi d_m}{D_w} \right\rfloor
+
+    with :math:`i` the loaded turns of a circuit and :math:`d_m` the pitch
+    diameter, rounded down (with spacer balls, every other place: half of
+    that, rounded up). Each loaded turn is rated as ISO 281 rates a row of a
+    thrust ball bearing, whose balls lie on its pitch circle; the helix of a
+    turn is :math:`1/\cos\varphi` longer and holds that many more balls
+    (:attr:`~ballscrew.geometry.BallScrew.balls_per_circuit`, the balls that
+    really roll, which the friction and the load share count). Only the two
+    rating estimates count on the circle: the makers' printed ratings fall
+    with the lead angle faster than the helix's count lets the estimates
+    fall, and the circle's count brings both ratings' trend with the loaded
+    turns under 0.05 in ln k (module docstring, "Balls of a turn"). Whether
+    ISO 3408-5 counts so could not be checked: its text was not at hand.
+
+    Examples
+    --------
+    A 32 mm screw of 32 mm lead (17.7 deg) with 6.35 mm balls: 15 balls on a
+    turn's ball circle, 16 along its helix:
+
+    >>> import math
+    >>> s = BallScrew(0.032, 0.032, 0.00635, math.radians(45), 0.525, 0.525, 1.0, 2, "single")
+    >>> rating_balls_per_circuit(s), s.balls_per_circuit
+    (15, 16)
+    """
+    places = math.floor(screw.loaded_turns * math.pi * screw.pitch_diameter / screw.ball_diameter
+                        + 1e-9)  # fmt: skip
+    balls = (places + 1) // 2 if screw.ball_separation == "spacer-balls" else places
+    if balls < 1:
+        raise BallScrewInputError(
+            "loaded_turns",
+            screw.loaded_turns,
+            f"enough turns to hold one ball on the ball circle (a turn holds "
+            f"{math.pi * screw.pitch_diameter / screw.ball_diameter:.3g}) for a rating estimate",
+        )
+    return balls
+
+
 def static_rating_estimate(screw: BallScrew) -> float:
     r"""The static axial rating :math:`C_{0a}` the standard's definition gives [N]: an estimate.
 
     :math:`C_{0a} = (4200\,\mathrm{MPa}/p_1)^3 z \sin\alpha\cos\varphi`, the
     axial load on one flank whose equal share per ball reaches 4200 MPa at the
     more curved of the screw and nut contacts (module docstring; ISO 3408-5,
-    5.1). An estimate at the screw's own grooves: :math:`Q_0` goes as
+    5.1), with :math:`z` the balls of the nut's loaded turns counted on the
+    ball circle (:func:`rating_balls_per_circuit` times the circuits). An
+    estimate at the screw's own grooves: :math:`Q_0` goes as
     :math:`p_1^{-3}`, so the conformity sets it (module docstring).
 
     Examples
     --------
     HIWIN R40-10K5 (40 mm, 6.35 mm balls, 5 circuits of one turn, 95 balls),
     catalogue 184 kN; at the makers' grooves (:data:`RATING_CONFORMITY`) about
-    180 kN, at the package's default 0.55 about 120 kN:
+    184 kN, at the package's default 0.55 about 120 kN:
 
     >>> import math
-    >>> s = BallScrew(0.04, 0.01, 0.00635, math.radians(45), 0.526, 0.526, 1.0, 5, "single")
+    >>> s = BallScrew(0.04, 0.01, 0.00635, math.radians(45), 0.525, 0.525, 1.0, 5, "single")
     >>> round(static_rating_estimate(s) / 1e3), round(static_rating_estimate(
     ...     s.replace(conformity_screw=0.55, conformity_nut=0.55)) / 1e3)
-    (180, 120)
+    (184, 120)
     """
     q0 = (STATIC_PRESSURE / _unit_pressure(screw)) ** 3
-    return q0 * screw.balls_per_nut * math.sin(screw.contact_angle) * math.cos(screw.lead_angle)
+    z = screw.circuits * rating_balls_per_circuit(screw)
+    return q0 * z * math.sin(screw.contact_angle) * math.cos(screw.lead_angle)
 
 
 def _kn(value: float) -> str:
@@ -449,9 +514,11 @@ def dynamic_rating_estimate(screw: BallScrew) -> float:
     r"""The basic dynamic axial rating :math:`C_a` of one loaded flank [N]: Lundberg-Palmgren.
 
     Each loaded turn is taken as the row of a thrust angular-contact bearing
-    whose :math:`Z` balls (those of one turn) share the axial load equally, as
-    ISO 3408-5 takes it. The basic capacity of the screw (inner, upper signs)
-    and nut (outer, lower signs) contacts, with :math:`D_w` in mm,
+    whose :math:`Z` balls share the axial load equally, as ISO 3408-5 takes
+    it, with :math:`Z` counted as a bearing row's, on the ball circle
+    (:func:`rating_balls_per_circuit` over the turns of a circuit). The basic
+    capacity of the screw (inner, upper signs) and nut (outer, lower signs)
+    contacts, with :math:`D_w` in mm,
 
     .. math::
 
@@ -470,7 +537,7 @@ def dynamic_rating_estimate(screw: BallScrew) -> float:
     :math:`k^{0.7}`). Lundberg & Palmgren (1947); Harris & Kotzalas (2007).
 
     An estimate, at the screw's own grooves: at :data:`RATING_CONFORMITY`,
-    the makers', the bundled catalogue rows get 0.956 of their printed value
+    the makers', the bundled catalogue rows get 0.962 of their printed value
     (median; the module docstring gives the spread).
 
     Examples
@@ -478,14 +545,14 @@ def dynamic_rating_estimate(screw: BallScrew) -> float:
     HIWIN R40-10K5 (40 mm, 6.35 mm balls, 5 circuits of one turn), catalogue 63.4 kN:
 
     >>> import math
-    >>> s = BallScrew(0.04, 0.01, 0.00635, math.radians(45), 0.526, 0.526, 1.0, 5, "single")
+    >>> s = BallScrew(0.04, 0.01, 0.00635, math.radians(45), 0.525, 0.525, 1.0, 5, "single")
     >>> round(dynamic_rating_estimate(s) / 1e3, 1)
-    59.5
+    60.4
     """
     d_w = screw.ball_diameter * 1e3
     alpha = screw.contact_angle
     gamma = screw.gamma
-    z = screw.balls_per_circuit / screw.loaded_turns
+    z = rating_balls_per_circuit(screw) / screw.loaded_turns
     signs = np.array([1.0, -1.0])
     f = np.array([screw.conformity_screw, screw.conformity_nut])
     q_c = (
