@@ -73,21 +73,22 @@ median of :math:`C_a` is 0.961.
 **Balls of a turn.** Each loaded turn is rated as ISO 281 rates a row of a
 thrust ball bearing, whose :math:`Z` balls lie on its pitch circle (a full
 row holds :math:`\pi d_m/D_w`); the estimates count a turn's balls so,
-:math:`\pi d_m/D_w` (:func:`rating_balls_per_circuit`), although the helix of a turn is
-:math:`1/\cos\varphi` longer and holds that many more (5 % more where the
-lead equals the diameter). The friction and the load share keep the balls
-that really roll (:attr:`~ballscrew.geometry.BallScrew.balls_per_circuit`);
-only the ratings count on the circle. The makers' ratings ask for it: among
-HIWIN's cassette single nuts of one size and ball (9 rows in 4 groups), the
-printed ratings per turn (:math:`C_a/k^{0.86}`, :math:`C_{0a}/k`) fall with
-the lead angle as :math:`\cos^{1.88}\varphi` and :math:`\cos^{1.33}\varphi`;
-the estimates fall as :math:`\cos^{1.3}` and :math:`\cos^{1}` with the
-circle's count, and only as :math:`\cos^{0.60}` and :math:`\cos^{-0.05}`
-with the helix's (``tests/select/test_rating_estimates.py``). The printed
-ratings still fall faster, by :math:`\cos^{0.58}` and :math:`\cos^{0.33}`:
-the count explains about half the makers' fall with the lead angle for
-:math:`C_a` and 3/4 for :math:`C_{0a}`, not all of it. Whether ISO 3408-5
-counts a turn's balls so could not be checked: its text was not at hand.
+:math:`\pi d_m/D_w` (:func:`rating_balls_per_circuit`), although the helix
+of a turn is :math:`1/\cos\varphi` longer and holds that many more (5 % more
+where the lead equals the diameter). The friction and the load share keep
+the balls that really roll
+(:attr:`~ballscrew.geometry.BallScrew.balls_per_circuit`); only the ratings
+count on the circle. The makers' ratings ask for it: among HIWIN's cassette
+single nuts of one size and ball (9 rows in 4 groups), the printed ratings
+per turn (:math:`C_a/k^{0.86}`, :math:`C_{0a}/k`) fall with the lead angle
+as :math:`\cos^{1.88}\varphi` and :math:`\cos^{1.33}\varphi`; the estimates
+fall as :math:`\cos^{1.3}` and :math:`\cos^{1}` with the circle's count, and
+only as :math:`\cos^{0.60}` and :math:`\cos^{-0.05}` with the helix's
+(``tests/select/test_rating_estimates.py``). The printed ratings still fall
+faster, by :math:`\cos^{0.58}` and :math:`\cos^{0.33}`: the count explains
+about half the makers' fall with the lead angle for :math:`C_a` and 3/4 for
+:math:`C_{0a}`, not all of it. Whether ISO 3408-5 counts a turn's balls so
+could not be checked: its text was not at hand.
 
 **Turns and lead angle.** The ratio estimated/printed has no trend with the
 number of loaded turns: slopes in ln k of -0.016 for :math:`C_a` and +0.014
@@ -97,11 +98,11 @@ turns and the lead angle go together (the rows of two turns are all of 16 to
 40 mm lead; over the single nuts ln k and ln cos of the lead angle correlate
 at 0.96), so a trend with the turns was a trend with the lead angle: at one
 geometry nuts that differ only in their circuits print :math:`C_a` in the
-ratio of the circuits to the power 0.86 within 0.2 % (HIWIN's ground FSI nuts, 17 pairs of 3 to 6
-circuits, *Ballscrews & Accessories* BS-08-2-EN-1704-K, Table 6.6; THK's
-BIF4010-5 against BNFN4010-5, one and two circuits of 2.5 turns), and
-:math:`C_{0a}` in the ratio of the circuits: the turn exponent is the makers'
-own (:data:`TURN_EXPONENT`).
+ratio of the circuits to the power 0.86 within 0.2 % (HIWIN's ground FSI
+nuts, 17 pairs of 3 to 6 circuits, *Ballscrews & Accessories*
+BS-08-2-EN-1704-K, Table 6.6; THK's BIF4010-5 against BNFN4010-5, one and
+two circuits of 2.5 turns), and :math:`C_{0a}` in the ratio of the circuits:
+the turn exponent is the makers' own (:data:`TURN_EXPONENT`).
 
 **Preload.** Ball screw catalogues keep the preload within 10 % of
 :math:`C_a` (THK, *General Catalog*, ball screws, "Preload"; HIWIN,
