@@ -7,21 +7,30 @@ worked out here (THK's drag-torque rule, the band's table, a ramp's mean speed, 
 
 from __future__ import annotations
 
+import csv
 import math
 import re
 from dataclasses import replace
+from importlib import resources
 from types import SimpleNamespace
 from typing import Any
 
 import numpy as np
 import pytest
+from scipy.stats import norm
 
+from ballscrew import reference_screw
 from ballscrew.axis import check as check_module
+from ballscrew.axis import standstill
 from ballscrew.axis.check import Criterion, run_check
-from ballscrew.axis.criteria import Inputs, Sample, ones
+from ballscrew.axis.criteria import Inputs, Sample, life_hours, nut_halves, ones
 from ballscrew.axis.duty import profile_from_move, run_energy
 from ballscrew.axis.motion import Profile
+from ballscrew.axis.setup import axis_setup
+from ballscrew.axis.standstill import noise_scatter, standstill_speed
+from ballscrew.axis.uncertainty import FOUR_POINT_RANGE, SAMPLES, draws, judge, model_error
 from ballscrew.design.stiffness import design_nut_stiffness
+from ballscrew.errors import BallScrewInputError
 from ballscrew.io.case import parse_case
 from shared import AXIS_CASE
 
@@ -238,3 +247,142 @@ def test_a_single_nuts_play_is_stated_where_it_is_added() -> None:
     assert "its axial play 10 um (given) is added to the lost motion" in "\n".join(
         result.assumptions)  # fmt: skip
     assert "+ the axial play 10 um" in result.row("lost_motion").source
+
+
+# --- axis/criteria.py ----------------------------------------------------------------------
+
+
+def test_the_halves_of_a_nut_under_half_a_newton() -> None:
+    # A preloaded nut of 1 kN under +0.5 N: the first half is the more loaded one,
+    # F_pr (1 + F / (2^1.5 F_pr))^1.5 = 1000.26518 N, the second carries that less the
+    # force, 999.76518 N (ISO 3408-5's halves: their difference is the force), the other way
+    # round at -0.5 N. A single nut's flanks carry one sign of the force each: 0.5 and 0.
+    more = 1000.0 * (1.0 + 0.5 / (2.0**1.5 * 1000.0)) ** 1.5
+    less = more - 0.5
+    h1, h2 = nut_halves(np.array([0.5, -0.5]), 1000.0, preloaded=True)
+    np.testing.assert_allclose(h1, [more, less], rtol=1e-14)
+    np.testing.assert_allclose(h2, [less, more], rtol=1e-14)
+    s1, s2 = nut_halves(np.array([0.5, -0.5]), 0.0, preloaded=False)
+    np.testing.assert_array_equal(s1, [0.5, 0.0])
+    np.testing.assert_array_equal(s2, [0.0, 0.5])
+
+
+def test_a_lightly_loaded_flank_alone_sets_a_single_nuts_life() -> None:
+    # 10 N on one flank of a single nut of C_a 20 kN, f_w 1, a1 1 (90 %): ISO 3408-5's
+    # (20000 / 10)^3 1e6 = 8e15 turns; the other flank carries nothing and lasts for ever,
+    # so the pair lasts what the loaded flank does (1e-12: the power's rounding). At 60 rpm:
+    # 8e15 / 3600 h.
+    force = np.full((1, 3), 10.0)
+    hours = life_hours(force, np.zeros(1), np.array([20_000.0]), np.ones(3), 60.0,
+                       preloaded=False, load_factor=1.0, reliability=0.9)  # fmt: skip
+    assert hours[0] == pytest.approx(8e15 / 3600.0, rel=1e-12)
+
+
+# --- axis/uncertainty.py -------------------------------------------------------------------
+
+
+def test_the_guard_bands_edges() -> None:
+    # 95 of 100 draws past the limit: P = 0.95 exactly, NOT OK with 95 % confidence.
+    r = judge(np.r_[np.full(5, 0.5), np.full(95, 2.0)])
+    assert r.p_not_ok == 0.95 and r.guarded == "NOT OK (95 %)"
+    # A utilisation of exactly 1 passes (above 1 fails).
+    assert judge(np.ones(10)).p_not_ok == 0.0
+    # The central 95 %: the 2.5 % and 97.5 % quantiles of 0, 1/4000, ..., 1 are 0.025 and
+    # 0.975 (sample 100 and 3900 of 4000 steps).
+    r = judge(np.linspace(0.0, 1.0, 4001))
+    assert (r.low, r.high) == pytest.approx((0.025, 0.975), abs=1e-15)
+
+
+def test_draws_without_a_bias_have_the_median_one() -> None:
+    # No tolerance and a friction sigma of 0: every factor is 1 (no bias unless one is
+    # given); 10 % on the mass: 1 +- 0.1, uniform.
+    d = draws(0.1, 0.0, 0.0, 0.0, 0.0)
+    np.testing.assert_array_equal(d.friction, np.ones(SAMPLES))
+    np.testing.assert_array_equal(d.force, np.ones(SAMPLES))
+    assert 0.9 <= d.mass.min() < 0.901 and 1.099 < d.mass.max() <= 1.1
+
+
+def test_the_model_errors_torque_level_and_law_speed_edges() -> None:
+    # The scorecard's levels: below 1 N*m, and 1 N*m and above (scripts/model_scatter.py
+    # puts a reference of exactly 1 N*m in the upper one). Jungnickel's law is shown from
+    # 1000 rpm on (its rows: 1000 to 3000 rpm).
+    assert "1 N*m and above" in model_error("catalog", "double", 1.0).text
+    assert "below 1 N*m" in model_error("catalog", "double", 0.999).text
+    assert "Jungnickel" in model_error("catalog", "double", 0.3, speed=1000.0).text
+    assert "Jungnickel" not in model_error("catalog", "double", 0.3, speed=999.0).text
+    assert model_error("olaru", "double", 0.3).rows == 0  # no rows: none counted
+
+
+def test_the_model_errors_text_gives_the_median_factor() -> None:
+    # The true torque's median is the model's times 10^-b, b the rows' mean log10 ratio,
+    # read here from the shipped data file.
+    text = resources.files("ballscrew").joinpath("data/model_scatter.csv").read_text("utf-8")
+    data = csv.DictReader(line for line in text.splitlines() if not line.startswith("#"))
+    row = next(d for d in data if d["model"] == "complete" and d["reference"] == "printed"
+               and d["nut"] == "double" and d["level"] == "below 1 N*m"
+               and d["role"] == "test")  # fmt: skip
+    factor = 10.0 ** -float(row["mean_log10"])
+    assert f"the model's x {factor:.3g})" in model_error("complete", "double", 0.3).text
+
+
+def test_the_four_point_range_is_skfs_and_jungnickels() -> None:
+    # SKF's constant friction coefficients, four-point over angular contact bearings,
+    # 0.0024 / 0.0020 = 1.2; Jungnickel's law gives up to 1.32 (study.validation).
+    assert FOUR_POINT_RANGE == pytest.approx((0.0024 / 0.0020, 1.32), rel=1e-12)
+
+
+# --- axis/standstill.py --------------------------------------------------------------------
+
+
+def test_the_mad_to_sigma_factor_is_one_over_the_normal_quartile() -> None:
+    assert standstill._MAD_TO_SIGMA == pytest.approx(1.0 / norm.ppf(0.75), rel=1e-15)
+
+
+def test_the_width_of_a_quantised_trace_by_hand() -> None:
+    # At rest on one count of 0.1 um with two flips (tests/axis/test_standstill.py): the
+    # noise is the quantisation's, q / sqrt(12); at 50 Hz through the central difference
+    # (gain 1/sqrt 2) and k = 8: v_s = 8 q / (sqrt(12) sqrt(2) 0.02 s) = 8.165e-6 m/s.
+    x = np.zeros(200)
+    x[50] = x[120] = 1e-7
+    t = np.arange(200) * 0.02
+    width = 8.0 * 1e-7 / math.sqrt(12.0) / math.sqrt(2.0) / 0.02
+    assert standstill_speed(x, t) == pytest.approx(width, rel=1e-12)
+    # Six samples are enough to tell (five are not); times that do not increase are refused.
+    flips = np.array([0.0, 1e-7, 0.0, 0.0, 1e-7, 0.0])
+    assert standstill_speed(flips, t[:6]) >= 8.0 * 1e-7 / math.sqrt(24.0) / 0.02
+    assert standstill_speed(flips[:5], t[:5]) == 0.0
+    with pytest.raises(BallScrewInputError, match="time"):
+        standstill_speed(x[:10], np.zeros(10))
+
+
+def test_the_noise_of_too_few_or_constant_samples() -> None:
+    # Third differences need order + 2 = 5 samples at least; first ones 3; a constant trace
+    # has no noise and no quantum.
+    assert noise_scatter(np.zeros(5)) == 0.0
+    with pytest.raises(BallScrewInputError, match="at least 5"):
+        noise_scatter(np.zeros(4))
+    assert noise_scatter(np.zeros(3), order=1) == 0.0
+    with pytest.raises(BallScrewInputError, match="order"):
+        noise_scatter(np.zeros(10), order=0)
+
+
+def test_a_quantum_is_whole_multiples_to_one_percent_in_99_steps_of_100() -> None:
+    # Steps of 1 and 99 of 2.0095 quanta: every ratio within 1 % of a whole number; 2.0105:
+    # not. 99 of 100 steps whole is enough: one step of 1.5 quanta among them still reads.
+    q = 1e-7
+    assert standstill._quantum(np.cumsum(np.r_[0.0, 1.0, np.full(99, 2.0095)]) * q) == q
+    assert standstill._quantum(np.cumsum(np.r_[0.0, 1.0, np.full(99, 2.0105)]) * q) == 0.0
+    steps = np.r_[0.0, 1.0, np.full(98, 2.0), 1.5]  # 99 whole of 100
+    assert standstill._quantum(np.cumsum(steps) * q) == q
+    steps = np.r_[0.0, 1.0, np.full(97, 2.0), 1.5, 1.5]  # 98 of 100
+    assert standstill._quantum(np.cumsum(steps) * q) == 0.0
+
+
+# --- axis/setup.py -------------------------------------------------------------------------
+
+
+def test_the_estimated_length_names_the_travel() -> None:
+    derived = axis_setup(reference_screw(), {"moving_mass": 1.0}, {}, 0.3).derived
+    assert derived["axis.screw_length"][1] == (
+        "from the travel 300 mm, the nut and 4 pitch diameters"
+    )
