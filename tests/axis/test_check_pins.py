@@ -21,10 +21,10 @@ from scipy.stats import norm
 
 from ballscrew import reference_screw
 from ballscrew.axis import check as check_module
-from ballscrew.axis import standstill
+from ballscrew.axis import duty, standstill
 from ballscrew.axis.check import Criterion, run_check
 from ballscrew.axis.criteria import Inputs, Sample, life_hours, nut_halves, ones
-from ballscrew.axis.duty import profile_from_move, run_energy
+from ballscrew.axis.duty import EnergyRun, profile_from_move, run_energy
 from ballscrew.axis.motion import Profile
 from ballscrew.axis.setup import axis_setup
 from ballscrew.axis.standstill import noise_scatter, standstill_speed
@@ -32,6 +32,7 @@ from ballscrew.axis.uncertainty import FOUR_POINT_RANGE, SAMPLES, draws, judge, 
 from ballscrew.design.stiffness import design_nut_stiffness
 from ballscrew.errors import BallScrewInputError
 from ballscrew.io.case import parse_case
+from ballscrew.io.units import to_si
 from shared import AXIS_CASE
 
 MOVE = {"stroke": 0.4, "feed": 0.5, "acceleration": 2.0}
@@ -386,3 +387,78 @@ def test_the_estimated_length_names_the_travel() -> None:
     assert derived["axis.screw_length"][1] == (
         "from the travel 300 mm, the nut and 4 pitch diameters"
     )
+
+
+# --- axis/duty.py --------------------------------------------------------------------------
+
+DUTY = AXIS_CASE.format(nut="double", preload="1 kN", support="fixed-fixed",
+                        axis_extra='max_feed = "30 m/min"\ndn_limit = "120000 mm*rpm"',
+                        sections="")  # fmt: skip
+
+
+def test_the_run_times_range_and_default() -> None:
+    # More than 0 and at most 100 000 h; the default is the commands' --run-time "1 h".
+    case, profile = parse_case(DUTY), profile_from_move(MOVE, 1)
+    assert run_energy(case, profile, ["catalog"]).run_time == to_si("--run-time", "1 h", "s")
+    assert EnergyRun.__dataclass_fields__["run_time"].default == 3600.0
+    for hours in (0.5 / 3600.0, 100_000.0):
+        assert run_energy(case, profile, ["catalog"], run_time=hours * 3600.0).run_time > 0.0
+    for seconds, shown in ((0.0, "'0 h'"), (100_001 * 3600.0, "'100001 h'")):
+        with pytest.raises(BallScrewInputError, match=f"--run-time = {shown}"):
+            run_energy(case, profile, ["catalog"], run_time=seconds)
+
+
+def test_at_most_a_thousand_steady_speeds(monkeypatch: pytest.MonkeyPatch) -> None:
+    # 1000 speeds are solved (the solver stubbed here: only the count is checked), 1001 not.
+    seen: list[int] = []
+
+    def solver(screw: Any, lubricant: Any, node: Any, speeds: Any, **kw: Any) -> None:
+        seen.append(int(np.size(speeds)))
+
+    monkeypatch.setattr(duty, "steady_at_speeds", solver)
+    case, profile = parse_case(DUTY), profile_from_move(MOVE, 1)
+    run_energy(case, profile, ["catalog"], steady_speeds=np.linspace(1.0, 300.0, 1000))
+    assert seen == [1000]
+    with pytest.raises(BallScrewInputError, match="at most 1000 speeds"):
+        run_energy(case, profile, ["catalog"], steady_speeds=np.linspace(1.0, 300.0, 1001))
+
+
+def test_a_feed_at_the_axis_limit_passes_and_one_above_is_shown_in_m_per_min() -> None:
+    # max_feed 30 m/min = 0.5 m/s exactly: a move at 0.5 m/s passes; at 20 m/min it is
+    # refused, both feeds in m/min as machine tools give them.
+    run_energy(parse_case(DUTY), profile_from_move(MOVE, 1), ["catalog"])
+    slower = parse_case(DUTY.replace('"30 m/min"', '"20 m/min"'))
+    with pytest.raises(BallScrewInputError, match=r"0\.5 m/s \(30 m/min\).*\(20 m/min\)"):
+        run_energy(slower, profile_from_move(MOVE, 1), ["catalog"])
+
+
+def test_a_force_window_given_by_its_end_starts_at_the_start() -> None:
+    p = profile_from_move({**MOVE, "force": 100.0, "force_to": 0.1}, 1)
+    loaded = p.position[p.process_force != 0.0]
+    assert loaded.min() == 0.0 and loaded.max() == pytest.approx(0.1, abs=1e-12)
+
+
+def test_steady_running_without_a_move_force_takes_no_load() -> None:
+    # The catalogue model at no load is THK's preload drag: K F_pr l / 2 pi = 0.252313 N*m.
+    run = run_energy(parse_case(DUTY), profile_from_move(MOVE, 1), ["catalog"],
+                     steady_speeds=[100.0], move=dict(MOVE))  # fmt: skip
+    at = run.results["catalog"].steady_at_speed
+    expected = K_DRAG * 1000.0 * 0.01 / (2.0 * math.pi)
+    np.testing.assert_allclose(at.torque, [expected], rtol=1e-6)
+
+
+def test_the_energy_at_the_final_temperature_is_the_warm_oils() -> None:
+    # The complete model's drag is partly viscous: the screw warmed to about 29.6 degC over
+    # the hour makes less friction than at the 20 degC the cycle was computed at.
+    run = run_energy(parse_case(DUTY), profile_from_move(MOVE, 1), ["complete"])
+    r = run.results["complete"]
+    assert r.final_temperature > run.temperature + 5.0
+    assert r.friction_energy_at_final_temperature < 0.99 * r.cycle.friction_energy
+
+
+def test_the_energy_per_cycle_is_one_cycles() -> None:
+    case = parse_case(DUTY)
+    one = run_energy(case, profile_from_move(MOVE, 1), ["catalog"]).as_dict()
+    three = run_energy(case, profile_from_move(MOVE, 3), ["catalog"], cycles=3).as_dict()
+    assert three["friction_energy_per_cycle_J"] == pytest.approx(
+        one["friction_energy_J"], rel=1e-9)  # fmt: skip
