@@ -965,7 +965,5 @@ def _distinct_samples(
     group = np.cumsum(starts) - 1
     inverse = np.empty(order.size, dtype=np.intp)
     inverse[order] = group
-    count = int(group[-1]) + 1 if group.size else 0
-    added = [np.bincount(inverse, weights=np.asarray(w, dtype=float).reshape(-1),
-                         minlength=count) for w in sums]  # fmt: skip
+    added = [np.bincount(inverse, weights=np.asarray(w, dtype=float).reshape(-1)) for w in sums]
     return (*(c[starts] for c in ordered), *added)
