@@ -1,0 +1,221 @@
+"""Pins from the mutation of ``axis/energy.py``, ``axis/motion.py`` and ``axis/thermal.py``.
+
+Each test checks a number against a value worked out by hand here (a closed form of
+the catalogue rule, a motion's polynomial, the heat balance's exponential), not
+against the code's own output (issue 49).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from ballscrew import friction_torque, reference_screw
+from ballscrew.axis.energy import (
+    Axis,
+    axis_cycle,
+    friction_energy,
+    self_locking,
+    weight_back_driving,
+)
+from ballscrew.axis.motion import Profile
+from ballscrew.materials import STANDARD_GRAVITY
+from shared import PAO
+
+OIL = PAO
+
+
+def _catalog_terms(mu: float) -> tuple[float, float]:
+    """The reference screw's catalogue K = 0.05/sqrt(tan beta) and eta = tan b/tan(b + atan mu)."""
+    beta = math.atan(0.01 / (math.pi * 0.04))  # lead 10 mm on a 40 mm pitch diameter
+    return 0.05 / math.sqrt(math.tan(beta)), math.tan(beta) / math.tan(beta + math.atan(mu))
+
+
+# --- axis/energy.py -------------------------------------------------------------------------
+
+
+def test_a_weight_on_an_inclined_axis_is_its_component_along_the_axis() -> None:
+    # 100 kg on an axis inclined by 30 degrees, the catalogue rule (mu = 0.01) on the 2 kN
+    # preloaded reference screw: F = m g sin 30 = m g / 2, T = K F_pr l/2pi + F l/2pi
+    # (1/eta - 1), so eta' = 1 - 2 pi T/(F l) = 2 - 1/eta - K F_pr/F. Closed form, rounding.
+    k, eta = _catalog_terms(0.01)
+    force = 100.0 * STANDARD_GRAVITY / 2.0
+    expected = 2.0 - 1.0 / eta - k * 2000.0 / force
+    axis = Axis(moving_mass=100.0, incline=math.pi / 6)
+    got = weight_back_driving(reference_screw(), OIL, axis, model="catalog",
+                              friction_coefficient=0.01)  # fmt: skip
+    assert got == pytest.approx(expected, rel=1e-12)
+    # At 0 kg there is nothing to back-drive: NaN, not a number of a load of 0.
+    assert math.isnan(weight_back_driving(reference_screw(), OIL, Axis(moving_mass=0.0,
+                                          incline=math.pi / 6), model="catalog"))  # fmt: skip
+
+
+def test_weight_back_driving_creeps_at_0_1_rad_s_in_oil_at_40_degc_unless_told() -> None:
+    # The documented defaults (0.1 rad/s, 40 degC): the complete model's friction depends on
+    # both (the film), so another default would change the figure far beyond 1e-9.
+    s = reference_screw()
+    axis = Axis(moving_mass=300.0, incline=math.pi / 2)
+    weight = 300.0 * STANDARD_GRAVITY
+    torque = float(friction_torque(s, OIL, speed=0.1, temperature=40.0, axial_load=weight).total)
+    expected = 1.0 - 2.0 * math.pi * torque / (weight * s.lead)
+    assert weight_back_driving(s, OIL, axis) == pytest.approx(expected, rel=1e-9)
+
+
+@pytest.mark.parametrize(("mu", "locked"), [(0.003, False), (0.2, True)])
+def test_a_screw_without_preload_is_self_locking_by_its_friction_angle(
+    mu: float, locked: bool
+) -> None:
+    # A single nut without preload (the catalogue rule, lead angle 4.55 deg = atan 0.0796):
+    # self-locking when atan(mu) reaches the lead angle, at loads from 1 kN up.
+    s = reference_screw().replace(nut="single", preload=0.0)
+    assert (math.atan(mu) >= s.lead_angle) == locked  # the verdict, worked out first
+    assert self_locking(s, OIL, model="catalog", friction_coefficient=mu) is locked
+
+
+def _creep(speed: float, width: float) -> Profile:
+    """1 s at a constant table speed [m/s] on a trajectory whose standstill ramp is ``width``."""
+    t = np.linspace(0.0, 1.0, 11)
+    v = np.full_like(t, speed)
+    zero = np.zeros_like(t)
+    return Profile(t, v * t, v, zero, zero, standstill_speed=width)
+
+
+def test_inside_the_standstill_ramp_the_friction_works_by_its_ramped_sign() -> None:
+    # A measured trajectory's ramp of 10 mm/s; at 7.5 mm/s the sign is 2 |v|/v_s - 1 = 0.5,
+    # so the drag (the catalogue's preload torque T_p = K F_pr l/2pi, no axial load) works
+    # 0.5 T_p omega t; at 20 mm/s (past the ramp) the whole T_p omega t.
+    s = reference_screw()
+    k, _ = _catalog_terms(0.003)
+    t_p = k * 2000.0 * 0.01 / (2.0 * math.pi)
+    axis = Axis(moving_mass=0.0)
+    for speed, share in ((0.0075, 0.5), (0.02, 1.0)):
+        omega = 2.0 * math.pi * speed / 0.01
+        r = axis_cycle(_creep(speed, 0.01), s, OIL, axis, model="catalog")
+        assert r.friction_energy == pytest.approx(share * t_p * omega * 1.0, rel=1e-12)
+        assert r.constant_efficiency_energy == pytest.approx(share * t_p * omega, rel=1e-12)
+        energy = friction_energy(_creep(speed, 0.01), s, OIL, axis, model="catalog")
+        assert energy == pytest.approx(share * t_p * omega, rel=1e-12)
+
+
+def test_friction_energy_alone_is_the_cycles_at_the_same_default_temperature() -> None:
+    # friction_energy is axis_cycle's figure without the rest; both default to 40 degC. The
+    # complete model's friction changes with the oil's temperature (by percent over 4 K).
+    from ballscrew.axis.motion import move
+
+    s, axis = reference_screw(), Axis(moving_mass=100.0)
+    p = move(0.1, 0.2, 2.0, sample_time=5e-3)
+    cycle = axis_cycle(p, s, OIL, axis)
+    assert friction_energy(p, s, OIL, axis) == pytest.approx(cycle.friction_energy, rel=1e-12)
+    warmer = friction_energy(p, s, OIL, axis, temperature=44.0)
+    assert abs(warmer / cycle.friction_energy - 1.0) > 1e-6  # the pin above can see 4 K
+
+
+def test_the_working_point_back_drives_when_its_reverse_efficiency_is_positive() -> None:
+    # 0.2 m/s against 2 kN (the working point): the catalogue rule (mu = 0.01) on a nut
+    # without preload has eta' = 2 - 1/eta, about 0.85 > 0: the load back-drives the screw.
+    # With the 2 kN preload's drag at 20 N, eta' = 2 - 1/eta - K F_pr/F is far below 0.
+    _, eta = _catalog_terms(0.01)
+    t = np.linspace(0.0, 1.0, 11)
+    v = np.full_like(t, 0.2)
+    zero = np.zeros_like(t)
+    free = reference_screw().replace(nut="single", preload=0.0)
+    r = axis_cycle(Profile(t, v * t, v, zero, zero + 2000.0), free, OIL, Axis(moving_mass=0.0),
+                   model="catalog", friction_coefficient=0.01)  # fmt: skip
+    assert r.reverse_efficiency == pytest.approx(2.0 - 1.0 / eta, rel=1e-12)
+    assert 0.0 < r.reverse_efficiency < 1.0
+    assert r.as_dict()["back_drives_at_working_point"] is True
+    light = Profile(t, v * t, v, zero, zero + 20.0)
+    held = axis_cycle(light, reference_screw(), OIL, Axis(moving_mass=0.0), model="catalog",
+                      friction_coefficient=0.01)  # fmt: skip
+    k, _ = _catalog_terms(0.01)
+    assert held.reverse_efficiency == pytest.approx(2.0 - 1.0 / eta - k * 2000.0 / 20.0,
+                                                    rel=1e-12)  # fmt: skip
+    assert held.as_dict()["back_drives_at_working_point"] is False
+
+
+# --- axis/thermal.py: the heat balance of a time series -----------------------------------
+
+
+def _step(theta: float, power: float, conductance: float, dt: float, tau: float) -> float:
+    """Temperature rise after ``dt`` of constant ``power``: the exponential towards P/G."""
+    return power / conductance + (theta - power / conductance) * math.exp(-dt / tau)
+
+
+def test_heat_balance_of_a_constant_power_from_a_warm_start_is_the_exponential() -> None:
+    # C dT/dt = P - G (T - T_a) from T(t0) = 35 degC with T_a = 20 degC, P = 12 W, G = 4 W/K,
+    # C = 2000 J/K (tau = 500 s): T = T_a + P/G + (T0 - T_a - P/G) e^-(t - t0)/tau, on times
+    # that start at 100 s and are unevenly spaced. The steps of tau/100 = 5 s are exact for
+    # a constant power, so the grid's points agree to rounding (1e-12 K); between them
+    # (401 s) the linear interpolation errs by at most h^2/8 |T''| = 25/8 * 12/500^2 K.
+    from ballscrew.axis.thermal import heat_balance
+
+    t = np.array([100.0, 130.0, 400.0, 401.0, 900.0, 2600.0])
+    temp = heat_balance(t, np.full(t.size, 12.0), 2000.0, 4.0, 20.0, 35.0)
+    exact = 20.0 + 3.0 + (35.0 - 20.0 - 3.0) * np.exp(-(t - 100.0) / 500.0)
+    on_grid = np.array([True, True, True, False, True, True])
+    np.testing.assert_allclose(temp[on_grid], exact[on_grid], rtol=0.0, atol=1e-12)
+    assert abs(temp[3] - exact[3]) < 25.0 / 8.0 * 12.0 / 500.0**2
+
+
+def test_heat_balance_keeps_the_trapezoidal_energy_of_each_interval() -> None:
+    # Power samples 10, 10, 30, 30 W at 0, 1000, 2000, 2500 s: the intervals' trapezoidal
+    # means are 10, 20 and 30 W, each held over its interval (the energy of the samples kept).
+    # From 20 degC at T_a = 15 degC, G = 2 W/K, C = 1000 J/K (tau = 500 s), the rise is
+    # the exponential towards P/G over each interval in turn: exact at the samples, which
+    # lie on the 5 s grid (to rounding, 1e-11 K).
+    from ballscrew.axis.thermal import heat_balance
+
+    t = np.array([0.0, 1000.0, 2000.0, 2500.0])
+    temp = heat_balance(t, np.array([10.0, 10.0, 30.0, 30.0]), 1000.0, 2.0, 15.0, 20.0)
+    rise = [5.0]
+    for dt, mean in ((1000.0, 10.0), (1000.0, 20.0), (500.0, 30.0)):
+        rise.append(_step(rise[-1], mean, 2.0, dt, 500.0))
+    np.testing.assert_allclose(temp, 15.0 + np.array(rise), rtol=0.0, atol=1e-11)
+
+
+def test_heat_balance_of_a_short_series_steps_by_a_hundredth_of_tau() -> None:
+    # A power that is 0 W and rises linearly to 40 W over 100 s, on 2 samples only, into
+    # C = 400 J/K through G = 1 W/K (tau = 400 s): the step's mean, 20 W, drives the node.
+    # One step of 100 s is exact for the constant mean power; steps of 4 s as well (the mean
+    # is the same on all of them): T = 20 + 20 (1 - e^-1/4) degC either way, to rounding.
+    from ballscrew.axis.thermal import heat_balance
+
+    temp = heat_balance(np.array([0.0, 100.0]), np.array([0.0, 40.0]), 400.0, 1.0, 20.0, 20.0)
+    assert temp[0] == 20.0
+    assert temp[1] == pytest.approx(20.0 + 20.0 * (1.0 - math.exp(-0.25)), rel=1e-13)
+
+
+def _air_h(diameter: float, omega: float, rise: float, ambient: float) -> float:
+    """h [W/(m^2 K)]: the larger of Kreith's rotating cylinder and Churchill-Chu's still one.
+
+    Air at 300 K: k = 0.0263 W/(m K), nu = 1.589e-5 m^2/s, Pr = 0.707 (Incropera A.4).
+    """
+    k, nu, pr = 0.0263, 1.589e-5, 0.707
+    forced = 0.133 * (omega * diameter**2 / nu) ** (2 / 3) * pr ** (1 / 3) * k / diameter
+    film = ambient + rise / 2 + 273.15
+    ra = 9.80665 / film * rise * diameter**3 / (nu * nu / pr)
+    nu_d = (0.60 + 0.387 * ra ** (1 / 6) / (1 + (0.559 / pr) ** (9 / 16)) ** (8 / 27)) ** 2
+    return max(forced, nu_d * k / diameter)
+
+
+@pytest.mark.parametrize("omega", [0.0, 200.0])
+def test_series_temperature_of_a_steady_power_is_the_node_balance_by_hand(omega: float) -> None:
+    # The 40 mm reference screw, 0.8 m in the air at 22 degC, 2 K/W into the machine, from
+    # 30 degC under 6 W. C = rho c pi d^2/4 L (steel: 7850 kg/m^3, 460 J/(kg K)) and
+    # G = h pi d L + 1/R_m, with h at the series' RMS speed (the trapezoidal mean of the
+    # squares of 0 and omega over its one interval: omega/sqrt 2) and a surface 1 K above
+    # the air. Constant power over one time constant: T_a + P/G + (T0 - T_a - P/G)/e,
+    # exact at the series' end (a point of the grid), to rounding.
+    from ballscrew.axis.thermal import ThermalNode, series_temperature
+
+    node = ThermalNode(screw_length=0.8, ambient=22.0, machine_resistance=2.0)
+    d, length = 0.04, 0.8
+    capacity = 7850.0 * math.pi * d**2 / 4.0 * length * 460.0
+    g = _air_h(d, omega / math.sqrt(2.0), 1.0, 22.0) * math.pi * d * length + 0.5
+    t = np.array([0.0, capacity / g])
+    temp = series_temperature(t, np.full(2, 6.0), node, reference_screw(),
+                              np.array([0.0, omega]), 30.0)  # fmt: skip
+    assert temp[0] == 30.0
+    assert temp[1] == pytest.approx(22.0 + 6.0 / g + (8.0 - 6.0 / g) / math.e, rel=1e-12)
