@@ -227,3 +227,82 @@ def test_series_temperature_of_a_steady_power_is_the_node_balance_by_hand(omega:
                               np.array([0.0, omega]), 30.0)  # fmt: skip
     assert temp[0] == 30.0
     assert temp[1] == pytest.approx(22.0 + 6.0 / g + (8.0 - 6.0 / g) / math.e, rel=1e-12)
+
+
+# --- axis/motion.py --------------------------------------------------------------------------
+
+
+def test_moves_and_dwells_are_sampled_every_millisecond_unless_told() -> None:
+    # 300 mm at 0.5 m/s and 2 m/s^2: phases of 0.25, 0.35 and 0.25 s, whole milliseconds,
+    # so 850 steps of exactly 1 ms (to rounding); a dwell of 1 s, 1000; a planned move has
+    # the exact sign of its speed (no standstill ramp).
+    from ballscrew.axis.motion import back_and_forth, dwell, move
+
+    p = move(0.3, 0.5, 2.0)
+    assert p.time.size == 851 and p.standstill_speed == 0.0
+    np.testing.assert_allclose(np.diff(p.time), 1e-3, rtol=1e-9)
+    assert dwell(1.0).time.size == 1001
+    c = back_and_forth(0.3, 0.5, 2.0, dwell_time=0.1)
+    np.testing.assert_allclose(np.diff(c.time), 1e-3, rtol=1e-9)
+    assert c.time.size == 2 * 850 + 2 * 100 + 1
+
+
+def test_a_force_window_may_start_at_the_start_and_end_at_the_end_of_the_stroke() -> None:
+    # The window [0, s] is the whole move (the default); [0, 100 mm] the first 100 mm.
+    from ballscrew.axis.motion import check_force_window, move
+
+    assert check_force_window((0.0, 0.3), 0.3) == (0.0, 0.3)
+    p = move(0.3, 0.5, 2.0, process_force=50.0, force_window=(0.0, 0.1))
+    np.testing.assert_array_equal(p.process_force > 0.0, np.abs(p.position) <= 0.1)
+    # 1e-9 of the stroke past its end is rounding (a unit's conversion), 1e-6 is not.
+    assert check_force_window((0.1, 0.3 * (1.0 + 5e-10)), 0.3)[1] > 0.3
+    with pytest.raises(Exception, match="inside the stroke, 300 mm"):
+        check_force_window((0.1, 0.3 * (1.0 + 1e-6)), 0.3)
+
+
+def test_a_position_may_step_by_rounding_only_at_a_time_given_twice() -> None:
+    # STEP_POSITION = 1e-9 m: a step of 0.9 nm at a repeated time is rounding, 1.05 nm is not.
+    from ballscrew.errors import BallScrewInputError
+
+    t = np.array([0.0, 0.5, 0.5, 1.0])
+    zero = np.zeros(4)
+    for step, ok in ((0.9e-9, True), (1.05e-9, False)):
+        x = np.array([0.0, 0.1, 0.1 + step, 0.2])
+        if ok:
+            assert Profile(t, x, zero, zero, zero).duration == 1.0
+        else:
+            with pytest.raises(BallScrewInputError, match="position"):
+                Profile(t, x, zero, zero, zero)
+
+
+def test_a_dwell_of_zero_seconds_is_a_move_without_dwell() -> None:
+    from ballscrew.axis.motion import parse_move
+
+    m = parse_move("stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2, dwell=0 s")
+    assert m == {"stroke": pytest.approx(0.3), "feed": pytest.approx(0.5),
+                 "acceleration": pytest.approx(2.0), "dwell": 0.0}  # fmt: skip
+
+
+def test_back_and_forth_refuses_more_than_five_million_samples_before_making_any() -> None:
+    # 3 m at 1.5 m/s and 0.5 m/s^2 (s/v = 2 s, v/a = 3 s) with dwells of 0.25 s: a cycle is
+    # at least 2 (2 + 3 + 0.25) = 10.5 s; 500 000 of them at 1 s per sample would be
+    # 5.25 million samples. The stroke of 1e30 m below shows that the refusal comes before
+    # any array is made.
+    from ballscrew.axis.motion import back_and_forth
+    from ballscrew.errors import BallScrewInputError
+
+    with pytest.raises(BallScrewInputError) as info:
+        back_and_forth(-3.0, 1.5, 0.5, dwell_time=0.25, cycles=500_000, sample_time=1.0)
+    assert "500000 cycle(s) of 10.5 s" in str(info.value)
+    assert "at most 5,000,000 samples of 1 s in all (5e+06 s of motion)" in str(info.value)
+    # A negative dwell is no dwell: 10 s a cycle, 5.1 million samples.
+    with pytest.raises(BallScrewInputError, match="510000 cycle\\(s\\) of 10 s"):
+        back_and_forth(3.0, 1.5, 0.5, dwell_time=-1.0, cycles=510_000, sample_time=1.0)
+    with pytest.raises(BallScrewInputError, match="move"):
+        back_and_forth(1e30, 0.5, 0.5)
+    # Bad limits are named as the move names them (no division by zero first).
+    for kwargs, name in (({"feed": 0.0}, "feed"), ({"acceleration": 0.0}, "acceleration"),
+                         ({"sample_time": 0.0}, "sample_time")):  # fmt: skip
+        args: dict[str, float] = {"feed": 0.5, "acceleration": 2.0, "sample_time": 1e-3}
+        with pytest.raises(BallScrewInputError, match=name):
+            back_and_forth(0.3, **(args | kwargs))  # type: ignore[arg-type]
