@@ -306,3 +306,21 @@ def test_back_and_forth_refuses_more_than_five_million_samples_before_making_any
         args: dict[str, float] = {"feed": 0.5, "acceleration": 2.0, "sample_time": 1e-3}
         with pytest.raises(BallScrewInputError, match=name):
             back_and_forth(0.3, **(args | kwargs))  # type: ignore[arg-type]
+
+
+def test_a_stroke_of_0_is_refused_and_one_of_a_metre_is_not() -> None:
+    from ballscrew.axis.motion import parse_move
+    from ballscrew.errors import BallScrewInputError
+
+    with pytest.raises(BallScrewInputError, match="a stroke, not 0"):
+        parse_move("stroke=0 mm, feed=30 m/min, acceleration=2 m/s^2")
+    assert parse_move("stroke=1 m, feed=30 m/min, acceleration=2 m/s^2")["stroke"] == 1.0
+
+
+def test_a_profile_standing_at_one_time_is_refused_as_such() -> None:
+    # Two samples at the same time and place: no duration, whatever the position says.
+    from ballscrew.errors import BallScrewInputError
+
+    t, zero = np.array([1.0, 1.0]), np.zeros(2)
+    with pytest.raises(BallScrewInputError, match="1 s throughout"):
+        Profile(t, zero, zero, zero, zero)
