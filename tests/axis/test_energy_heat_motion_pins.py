@@ -21,6 +21,7 @@ from ballscrew.axis.energy import (
     weight_back_driving,
 )
 from ballscrew.axis.motion import Profile
+from ballscrew.axis.thermal import ThermalNode
 from ballscrew.materials import STANDARD_GRAVITY
 from shared import PAO
 
@@ -324,3 +325,58 @@ def test_a_profile_standing_at_one_time_is_refused_as_such() -> None:
     t, zero = np.array([1.0, 1.0]), np.zeros(2)
     with pytest.raises(BallScrewInputError, match="1 s throughout"):
         Profile(t, zero, zero, zero, zero)
+
+
+# --- axis/thermal.py: the cycle's mean power and its steady state ----------------------------
+
+
+def _preload_drag() -> float:
+    """The catalogue's drag of the 2 kN reference screw, T_p = K F_pr l/2pi [N m]."""
+    k, _ = _catalog_terms(0.003)
+    return k * 2000.0 * 0.01 / (2.0 * math.pi)
+
+
+def test_the_cycles_mean_power_is_the_drag_times_the_trapezoidal_mean_screw_speed() -> None:
+    # 1 s at +0.1 m/s, then a step to -0.3 m/s held 2 s (a time given twice): the table
+    # travels 0.1 + 0.6 m in 3 s. Under the catalogue's drag alone (no load) the mean power
+    # is T_p 2 pi (0.7 m / l) / 3 s at every temperature.
+    from ballscrew.axis.thermal import mean_powers
+
+    t = np.array([0.0, 1.0, 1.0, 3.0])
+    v = np.array([0.1, 0.1, -0.3, -0.3])
+    x = np.array([0.0, 0.1, 0.1, -0.5])
+    zero = np.zeros(4)
+    p = Profile(t, x, v, zero, zero)
+    got = mean_powers(p, reference_screw(), OIL, Axis(moving_mass=0.0), [20.0, 60.0], "catalog")
+    expected = _preload_drag() * 2.0 * math.pi * 0.7 / 0.01 / 3.0
+    np.testing.assert_allclose(got, expected, rtol=1e-12)
+
+
+def test_the_steady_temperature_and_time_constant_of_a_drag_shed_by_forced_convection() -> None:
+    # 0.25 m/s held (1500 rpm, omega = 157.08 rad/s) under the catalogue's drag alone:
+    # P = T_p omega = 88.6 W, whatever the temperature. The rotating screw's forced
+    # convection (Kreith) beats natural convection at the ~12 K rise, so G does not depend
+    # on the temperature either: G = h pi d L + 1/R_m, T = T_a + P/G (the Illinois root, to
+    # 1e-11 K), and the history is T_a + P/G (1 - e^-t/tau), tau = C/G, C = rho c pi d^2/4 L.
+    from ballscrew.axis.thermal import steady_temperature, temperature_history
+
+    t = np.linspace(0.0, 2.0, 5)
+    v = np.full(5, 0.25)
+    zero = np.zeros(5)
+    p = Profile(t, v * t, v, zero, zero)
+    omega = 2.0 * math.pi * 0.25 / 0.01
+    power = _preload_drag() * omega
+    node = ThermalNode(screw_length=1.0, ambient=18.0, machine_resistance=1.0)
+    g = _air_h(0.04, omega, 12.0, 18.0) * math.pi * 0.04 * 1.0 + 1.0
+    s, axis = reference_screw(), Axis(moving_mass=0.0)
+    st = steady_temperature(p, s, OIL, axis, node, model="catalog")
+    assert st.temperature == pytest.approx(18.0 + power / g, abs=1e-9)
+    assert st.friction_power == pytest.approx(power, rel=1e-12)
+    assert st.conductance == pytest.approx(g, rel=1e-12)
+    assert st.heat_out == pytest.approx(power, rel=1e-9)
+    tau = 7850.0 * math.pi * 0.04**2 / 4.0 * 460.0 / g
+    times, temp = temperature_history(p, s, OIL, axis, node, 3.0 * tau, model="catalog",
+                                      points=7)  # fmt: skip
+    np.testing.assert_allclose(times, np.linspace(0.0, 3.0 * tau, 7), rtol=1e-12)
+    # solve_ivp at rtol = atol = 1e-8: the exponential to 1e-6 K.
+    np.testing.assert_allclose(temp, 18.0 + power / g * (1.0 - np.exp(-times / tau)), atol=1e-6)
