@@ -286,19 +286,19 @@ def test_a_dwell_of_zero_seconds_is_a_move_without_dwell() -> None:
 
 def test_back_and_forth_refuses_more_than_five_million_samples_before_making_any() -> None:
     # 3 m at 1.5 m/s and 0.5 m/s^2 (s/v = 2 s, v/a = 3 s) with dwells of 0.25 s: a cycle is
-    # at least 2 (2 + 3 + 0.25) = 10.5 s; 500 000 of them at 1 s per sample would be
-    # 5.25 million samples. The stroke of 1e30 m below shows that the refusal comes before
+    # at least 2 (2 + 3 + 0.25) = 10.5 s; 300 000 of them at 0.5 s per sample would be
+    # 6.3 million samples. The stroke of 1e30 m below shows that the refusal comes before
     # any array is made.
     from ballscrew.axis.motion import back_and_forth
     from ballscrew.errors import BallScrewInputError
 
     with pytest.raises(BallScrewInputError) as info:
-        back_and_forth(-3.0, 1.5, 0.5, dwell_time=0.25, cycles=500_000, sample_time=1.0)
-    assert "500000 cycle(s) of 10.5 s" in str(info.value)
-    assert "at most 5,000,000 samples of 1 s in all (5e+06 s of motion)" in str(info.value)
-    # A negative dwell is no dwell: 10 s a cycle, 5.1 million samples.
-    with pytest.raises(BallScrewInputError, match="510000 cycle\\(s\\) of 10 s"):
-        back_and_forth(3.0, 1.5, 0.5, dwell_time=-1.0, cycles=510_000, sample_time=1.0)
+        back_and_forth(-3.0, 1.5, 0.5, dwell_time=0.25, cycles=300_000, sample_time=0.5)
+    assert "300000 cycle(s) of 10.5 s" in str(info.value)
+    assert "at most 5,000,000 samples of 0.5 s in all (2.5e+06 s of motion)" in str(info.value)
+    # A negative dwell is no dwell: 10 s a cycle, 5.2 million samples.
+    with pytest.raises(BallScrewInputError, match="260000 cycle\\(s\\) of 10 s"):
+        back_and_forth(3.0, 1.5, 0.5, dwell_time=-1.0, cycles=260_000, sample_time=0.5)
     with pytest.raises(BallScrewInputError, match="move"):
         back_and_forth(1e30, 0.5, 0.5)
     # Bad limits are named as the move names them (no division by zero first).
@@ -380,3 +380,55 @@ def test_the_steady_temperature_and_time_constant_of_a_drag_shed_by_forced_conve
     np.testing.assert_allclose(times, np.linspace(0.0, 3.0 * tau, 7), rtol=1e-12)
     # solve_ivp at rtol = atol = 1e-8: the exponential to 1e-6 K.
     np.testing.assert_allclose(temp, 18.0 + power / g * (1.0 - np.exp(-times / tau)), atol=1e-6)
+
+
+def test_an_s_curve_keeps_a_constant_acceleration_phase_of_half_a_microsecond() -> None:
+    # 0.5 m/s, 2 m/s^2 and a jerk of 8.000016 m/s^3: the jerk phases last a/j = 0.249999 s
+    # and the constant acceleration between them v/a - a/j = 0.5 us. Left out, the move
+    # would end about a t_a t = 2.5e-7 m short; kept, it is s/v + v/a + a/j long and ends
+    # at the stroke (to rounding, 1e-12).
+    from ballscrew.axis.motion import move
+
+    j = 8.000016
+    p = move(0.3, 0.5, 2.0, jerk=j, sample_time=1e-3)
+    assert float(p.position[-1]) == pytest.approx(0.3, rel=1e-12)
+    assert p.duration == pytest.approx(0.3 / 0.5 + 0.5 / 2.0 + 2.0 / j, rel=1e-12)
+
+
+def test_refusals_name_the_window_the_line_and_the_sample() -> None:
+    from ballscrew.axis.motion import check_force_window, parse_move, read_trajectory
+    from ballscrew.errors import BallScrewInputError
+
+    with pytest.raises(BallScrewInputError, match="250 mm to 50 mm"):
+        check_force_window((0.25, 0.05), 0.3)
+    # Line 1 is the header: the value 'nan' is on line 4; a time repeated on line 4 too.
+    with pytest.raises(BallScrewInputError, match="line 4, column position") as info:
+        read_trajectory("time [s],position [mm]\n0,0\n1,1\n2,nan\n3,3\n")
+    assert "nan" in str(info.value)
+    with pytest.raises(BallScrewInputError, match="line 4"):
+        read_trajectory("time [s],position [mm]\n0,0\n1,1\n1,2\n2,3\n")
+    with pytest.raises(BallScrewInputError, match="--move force") as info:
+        parse_move("stroke=300 mm, feed=30 m/min, acceleration=2 m/s^2, force=1,2 kN")
+    assert "1,2 kN" in str(info.value)
+    with pytest.raises(BallScrewInputError, match="more than 0"):
+        parse_move("stroke=300 mm, feed=0 m/min, acceleration=2 m/s^2")
+    # The sample whose time goes back, after a time given twice: the 4th (0.4 s after 0.5 s).
+    t = np.array([0.0, 0.5, 0.5, 0.4])
+    zero = np.zeros(4)
+    with pytest.raises(BallScrewInputError, match=r"0\.4 s at sample 4, after 0\.5 s"):
+        Profile(t, zero, zero, zero, zero)
+
+
+def test_a_speed_trace_ramps_its_sign_over_8_times_its_noise_from_6_samples() -> None:
+    # Speeds given (not positions): the standstill ramp is 8 times their noise (of second
+    # differences); with fewer than 6 samples there is no estimate and the sign is exact.
+    from ballscrew.axis.motion import read_trajectory
+    from ballscrew.axis.standstill import noise_scatter
+
+    v = [0.0, 0.011, -0.009, 0.012, -0.008, 0.010]
+    text = "time [s],speed [m/s]\n" + "\n".join(f"{k},{x}" for k, x in enumerate(v))
+    width = 8.0 * noise_scatter(np.array(v), order=2)
+    assert width > 0.0
+    assert read_trajectory(text).standstill_speed == pytest.approx(width, rel=1e-12)
+    short = "time [s],speed [m/s]\n" + "\n".join(f"{k},{x}" for k, x in enumerate(v[:5]))
+    assert read_trajectory(short).standstill_speed == 0.0
