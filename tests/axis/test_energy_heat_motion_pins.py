@@ -432,3 +432,12 @@ def test_a_speed_trace_ramps_its_sign_over_8_times_its_noise_from_6_samples() ->
     assert read_trajectory(text).standstill_speed == pytest.approx(width, rel=1e-12)
     short = "time [s],speed [m/s]\n" + "\n".join(f"{k},{x}" for k, x in enumerate(v[:5]))
     assert read_trajectory(short).standstill_speed == 0.0
+
+
+def test_a_position_jumping_at_a_time_given_twice_is_named_with_both_places() -> None:
+    from ballscrew.errors import BallScrewInputError
+
+    t, zero = np.array([0.0, 0.5, 0.5, 1.0]), np.zeros(4)
+    x = np.array([0.0, 0.1, 0.2, 0.3])
+    with pytest.raises(BallScrewInputError, match=r"0\.1 m then 0\.2 m at 0\.5 s"):
+        Profile(t, x, zero, zero, zero)
