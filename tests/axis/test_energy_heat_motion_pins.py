@@ -352,12 +352,19 @@ def test_the_cycles_mean_power_is_the_drag_times_the_trapezoidal_mean_screw_spee
     np.testing.assert_allclose(got, expected, rtol=1e-12)
 
 
-def test_the_steady_temperature_and_time_constant_of_a_drag_shed_by_forced_convection() -> None:
+@pytest.mark.parametrize(
+    ("length", "resistance", "preload"), [(1.0, 1.0, 2000.0), (0.02, 20.0, 200.0)]
+)
+def test_the_steady_temperature_and_time_constant_of_a_drag_shed_by_forced_convection(
+    length: float, resistance: float, preload: float
+) -> None:
     # 0.25 m/s held (1500 rpm, omega = 157.08 rad/s) under the catalogue's drag alone:
-    # P = T_p omega = 88.6 W, whatever the temperature. The rotating screw's forced
-    # convection (Kreith) beats natural convection at the ~12 K rise, so G does not depend
-    # on the temperature either: G = h pi d L + 1/R_m, T = T_a + P/G (the Illinois root, to
-    # 1e-11 K), and the history is T_a + P/G (1 - e^-t/tau), tau = C/G, C = rho c pi d^2/4 L.
+    # P = T_p omega (88.6 W at 2 kN of preload, 8.86 W at 200 N), whatever the temperature.
+    # The rotating screw's forced convection (Kreith) beats natural convection at the rise
+    # (12 K, 51 K), so G does not depend on the temperature either: G = h pi d L + 1/R_m,
+    # T = T_a + P/G (the Illinois root, to 1e-11 K), and the history is
+    # T_a + P/G (1 - e^-t/tau), tau = C/G, C = rho c pi d^2/4 L. The second node conducts
+    # less than 1 W/K (0.17 W/K): its time constant is 525 s.
     from ballscrew.axis.thermal import steady_temperature, temperature_history
 
     t = np.linspace(0.0, 2.0, 5)
@@ -365,16 +372,16 @@ def test_the_steady_temperature_and_time_constant_of_a_drag_shed_by_forced_conve
     zero = np.zeros(5)
     p = Profile(t, v * t, v, zero, zero)
     omega = 2.0 * math.pi * 0.25 / 0.01
-    power = _preload_drag() * omega
-    node = ThermalNode(screw_length=1.0, ambient=18.0, machine_resistance=1.0)
-    g = _air_h(0.04, omega, 12.0, 18.0) * math.pi * 0.04 * 1.0 + 1.0
-    s, axis = reference_screw(), Axis(moving_mass=0.0)
+    power = _preload_drag() * preload / 2000.0 * omega
+    node = ThermalNode(screw_length=length, ambient=18.0, machine_resistance=resistance)
+    g = _air_h(0.04, omega, 12.0, 18.0) * math.pi * 0.04 * length + 1.0 / resistance
+    s, axis = reference_screw().replace(preload=preload), Axis(moving_mass=0.0)
     st = steady_temperature(p, s, OIL, axis, node, model="catalog")
     assert st.temperature == pytest.approx(18.0 + power / g, abs=1e-9)
     assert st.friction_power == pytest.approx(power, rel=1e-12)
     assert st.conductance == pytest.approx(g, rel=1e-12)
     assert st.heat_out == pytest.approx(power, rel=1e-9)
-    tau = 7850.0 * math.pi * 0.04**2 / 4.0 * 460.0 / g
+    tau = 7850.0 * math.pi * 0.04**2 / 4.0 * length * 460.0 / g
     times, temp = temperature_history(p, s, OIL, axis, node, 3.0 * tau, model="catalog",
                                       points=7)  # fmt: skip
     np.testing.assert_allclose(times, np.linspace(0.0, 3.0 * tau, 7), rtol=1e-12)
