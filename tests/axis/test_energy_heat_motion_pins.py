@@ -353,10 +353,11 @@ def test_the_cycles_mean_power_is_the_drag_times_the_trapezoidal_mean_screw_spee
 
 
 @pytest.mark.parametrize(
-    ("length", "resistance", "preload"), [(1.0, 1.0, 2000.0), (0.02, 20.0, 200.0)]
+    ("length", "resistance", "preload"),
+    [(1.0, 1.0, 2000.0), (0.02, 20.0, 200.0), (1.0, None, 2000.0), (1.0, 1.0, 20.0)],
 )
 def test_the_steady_temperature_and_time_constant_of_a_drag_shed_by_forced_convection(
-    length: float, resistance: float, preload: float
+    length: float, resistance: float | None, preload: float
 ) -> None:
     # 0.25 m/s held (1500 rpm, omega = 157.08 rad/s) under the catalogue's drag alone:
     # P = T_p omega (88.6 W at 2 kN of preload, 8.86 W at 200 N), whatever the temperature.
@@ -364,7 +365,8 @@ def test_the_steady_temperature_and_time_constant_of_a_drag_shed_by_forced_conve
     # (12 K, 51 K), so G does not depend on the temperature either: G = h pi d L + 1/R_m,
     # T = T_a + P/G (the Illinois root, to 1e-11 K), and the history is
     # T_a + P/G (1 - e^-t/tau), tau = C/G, C = rho c pi d^2/4 L. The second node conducts
-    # less than 1 W/K (0.17 W/K): its time constant is 525 s.
+    # less than 1 W/K (0.17 W/K): its time constant is 525 s. The third has no path into
+    # the machine (convection alone, 14 K); the fourth warms by 0.12 K only.
     from ballscrew.axis.thermal import steady_temperature, temperature_history
 
     t = np.linspace(0.0, 2.0, 5)
@@ -374,7 +376,8 @@ def test_the_steady_temperature_and_time_constant_of_a_drag_shed_by_forced_conve
     omega = 2.0 * math.pi * 0.25 / 0.01
     power = _preload_drag() * preload / 2000.0 * omega
     node = ThermalNode(screw_length=length, ambient=18.0, machine_resistance=resistance)
-    g = _air_h(0.04, omega, 12.0, 18.0) * math.pi * 0.04 * length + 1.0 / resistance
+    machine = 0.0 if resistance is None else 1.0 / resistance
+    g = _air_h(0.04, omega, 12.0, 18.0) * math.pi * 0.04 * length + machine
     s, axis = reference_screw().replace(preload=preload), Axis(moving_mass=0.0)
     st = steady_temperature(p, s, OIL, axis, node, model="catalog")
     assert st.temperature == pytest.approx(18.0 + power / g, abs=1e-9)
@@ -448,3 +451,77 @@ def test_a_position_jumping_at_a_time_given_twice_is_named_with_both_places() ->
     x = np.array([0.0, 0.1, 0.2, 0.3])
     with pytest.raises(BallScrewInputError, match=r"0\.1 m then 0\.2 m at 0\.5 s"):
         Profile(t, x, zero, zero, zero)
+
+
+def test_a_series_of_no_duration_stays_at_its_start() -> None:
+    # No time passes: no heat flows (it was 0/0, NaN, before the mutation run found it).
+    from ballscrew.axis.thermal import heat_balance, series_temperature
+
+    node = ThermalNode(screw_length=0.8, ambient=22.0, machine_resistance=2.0)
+    one = series_temperature(np.array([5.0]), np.array([3.0]), node, reference_screw(),
+                             np.array([0.0]), 30.0)  # fmt: skip
+    np.testing.assert_array_equal(one, [30.0])
+    same = heat_balance(np.array([5.0, 5.0]), np.array([3.0, 3.0]), 100.0, 1.0, 22.0, 30.0)
+    np.testing.assert_array_equal(same, [30.0, 30.0])
+
+
+def test_a_series_starting_later_than_0_s_takes_its_own_duration() -> None:
+    # The same one time constant as above from t = 100 s: the RMS speed over the series'
+    # own duration (omega/sqrt 2), the result one time constant after its start.
+    from ballscrew.axis.thermal import series_temperature
+
+    node = ThermalNode(screw_length=0.8, ambient=22.0, machine_resistance=2.0)
+    capacity = 7850.0 * math.pi * 0.04**2 / 4.0 * 0.8 * 460.0
+    g = _air_h(0.04, 200.0 / math.sqrt(2.0), 1.0, 22.0) * math.pi * 0.04 * 0.8 + 0.5
+    t = np.array([100.0, 100.0 + capacity / g])
+    temp = series_temperature(t, np.full(2, 6.0), node, reference_screw(),
+                              np.array([0.0, 200.0]), 30.0)  # fmt: skip
+    assert temp[1] == pytest.approx(22.0 + 6.0 / g + (8.0 - 6.0 / g) / math.e, rel=1e-12)
+
+
+def test_a_drag_the_node_sheds_only_above_200_k_is_refused() -> None:
+    # The catalogue's drag at 0.25 m/s set so that P = 200 K x G + 0.5 W (G by hand as
+    # above, 1 m of screw and 1 K/W): the balance closes 0.07 K beyond the range searched.
+    from ballscrew.axis.thermal import steady_temperature
+    from ballscrew.errors import BallScrewInputError
+
+    omega = 2.0 * math.pi * 0.25 / 0.01
+    g = _air_h(0.04, omega, 200.0, 18.0) * math.pi * 0.04 + 1.0
+    preload = 2000.0 * (200.0 * g + 0.5) / (_preload_drag() * omega)
+    t = np.linspace(0.0, 2.0, 5)
+    v, zero = np.full(5, 0.25), np.zeros(5)
+    node = ThermalNode(screw_length=1.0, ambient=18.0, machine_resistance=1.0)
+    with pytest.raises(BallScrewInputError, match="below 218 °C"):
+        steady_temperature(Profile(t, v * t, v, zero, zero), reference_screw().replace(
+            preload=preload), OIL, Axis(moving_mass=0.0), node, model="catalog")  # fmt: skip
+
+
+def test_an_ambient_of_500_degc_or_more_is_refused() -> None:
+    from ballscrew.errors import BallScrewInputError
+
+    assert ThermalNode(screw_length=1.0, ambient=499.0).ambient == 499.0
+    with pytest.raises(BallScrewInputError, match="ambient"):
+        ThermalNode(screw_length=1.0, ambient=520.0)
+
+
+def test_the_history_of_a_warming_oil_ends_at_the_steady_temperature() -> None:
+    # The complete model: the cycle's power falls as the oil warms. Its table every 2 K or
+    # less (h), interpolated linearly, errs by at most h^2/8 |P''|, which shifts the
+    # history's end by that over G - P' (both by hand from the cycle's mean power at the
+    # steady temperature and 2 K either side). 25 time constants on, the history is there
+    # within twice that bound (P'' is not constant over the table).
+    from ballscrew.axis.motion import back_and_forth
+    from ballscrew.axis.thermal import mean_powers, steady_temperature, temperature_history
+
+    node = ThermalNode(screw_length=0.8, ambient=22.0, machine_resistance=2.0)
+    cycle, s, axis = back_and_forth(0.3, 0.5, 2.0), reference_screw(), Axis(moving_mass=200.0)
+    st = steady_temperature(cycle, s, OIL, axis, node)
+    temp = st.temperature
+    p = mean_powers(cycle, s, OIL, axis, [temp - 2.0, temp, temp + 2.0])
+    second, first = (p[0] - 2.0 * p[1] + p[2]) / 4.0, (p[2] - p[0]) / 4.0
+    bound = 2.0 * (2.0**2 / 8.0 * abs(second)) / (st.conductance - first)
+    tau = node.heat_capacity(s) / st.conductance
+    _, history = temperature_history(cycle, s, OIL, axis, node, 25.0 * tau, points=6,
+                                     steady=st)  # fmt: skip
+    assert abs(history[-1] - temp) < bound
+    assert bound < 0.01  # a bound that says something
