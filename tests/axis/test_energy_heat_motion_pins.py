@@ -479,6 +479,22 @@ def test_a_series_starting_later_than_0_s_takes_its_own_duration() -> None:
     assert temp[1] == pytest.approx(22.0 + 6.0 / g + (8.0 - 6.0 / g) / math.e, rel=1e-12)
 
 
+def test_a_balance_closing_just_past_a_node_of_the_table_is_found_there() -> None:
+    # As above, the drag set so that P/G = 10.05 K: the imbalance at the table's node of
+    # +10 K is only G x 0.05 K = 0.36 W, still positive; the root is T_a + 10.05 K.
+    from ballscrew.axis.thermal import steady_temperature
+
+    omega = 2.0 * math.pi * 0.25 / 0.01
+    g = _air_h(0.04, omega, 10.0, 18.0) * math.pi * 0.04 + 1.0
+    preload = 2000.0 * (10.05 * g) / (_preload_drag() * omega)
+    t = np.linspace(0.0, 2.0, 5)
+    v, zero = np.full(5, 0.25), np.zeros(5)
+    node = ThermalNode(screw_length=1.0, ambient=18.0, machine_resistance=1.0)
+    st = steady_temperature(Profile(t, v * t, v, zero, zero), reference_screw().replace(
+        preload=preload), OIL, Axis(moving_mass=0.0), node, model="catalog")  # fmt: skip
+    assert st.temperature == pytest.approx(28.05, abs=1e-9)
+
+
 def test_a_drag_the_node_sheds_only_above_200_k_is_refused() -> None:
     # The catalogue's drag at 0.25 m/s set so that P = 200 K x G + 0.5 W (G by hand as
     # above, 1 m of screw and 1 K/W): the balance closes 0.07 K beyond the range searched.
@@ -496,12 +512,14 @@ def test_a_drag_the_node_sheds_only_above_200_k_is_refused() -> None:
             preload=preload), OIL, Axis(moving_mass=0.0), node, model="catalog")  # fmt: skip
 
 
-def test_an_ambient_of_500_degc_or_more_is_refused() -> None:
+def test_an_ambient_of_500_degc_or_more_or_below_absolute_zero_is_refused() -> None:
     from ballscrew.errors import BallScrewInputError
 
     assert ThermalNode(screw_length=1.0, ambient=499.0).ambient == 499.0
     with pytest.raises(BallScrewInputError, match="ambient"):
         ThermalNode(screw_length=1.0, ambient=520.0)
+    with pytest.raises(BallScrewInputError, match="ambient"):  # below absolute zero
+        ThermalNode(screw_length=1.0, ambient=-280.0)
 
 
 def test_the_history_of_a_warming_oil_ends_at_the_steady_temperature() -> None:
