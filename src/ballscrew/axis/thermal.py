@@ -715,7 +715,8 @@ def heat_balance(
     still exact for a power constant within it), and
     each step is integrated exactly, :math:`T_{k+1} - T_\infty = (T_k -
     T_\infty)e^{-h/\tau}` with :math:`T_\infty = T_a + \bar P/G`, by a linear
-    filter (no Python loop over the steps).
+    filter (no Python loop over the steps). A series of no duration (one sample,
+    or one time throughout) stays at ``start``.
 
     Examples
     --------
@@ -730,6 +731,8 @@ def heat_balance(
 
     tau = capacity / conductance
     duration = float(time[-1] - time[0])
+    if not duration > 0.0:  # no time passes: the start (the steps below would be 0/0)
+        return np.full(np.shape(time), float(start))
     steps = min(max(1, math.ceil(duration / (tau / 100.0)), min(time.size, 100_000)), MAX_STEPS)
     grid = np.linspace(time[0], time[-1], steps + 1)
     energy = np.concatenate([[0.0], np.cumsum(0.5 * (power[1:] + power[:-1]) * np.diff(time))])
