@@ -1,0 +1,331 @@
+"""Pins of ``program/axes.py``, ``program/sinumerik.py`` and ``program/rs274.py`` (issue 49).
+
+Written from the survivors of their mutation runs (docs/mutation.md). Every expected number
+is worked out here by hand from the inputs: the S-curve of a single move (its phases from
+the feed, acceleration and jerk), the process force times the distance fed, the weight's
+share along an incline, the mean of a linear acceleration over a window, the shaft's EA/a in
+series with the nut, a SINUMERIK block written out as RS274/NGC, and the canonical commands
+LinuxCNC's ``rs274`` prints, written as it prints them.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import warnings
+from pathlib import Path
+from types import SimpleNamespace
+from typing import Any
+
+import numpy as np
+import pytest
+
+from ballscrew.axis.check import CREEP_SPEED
+from ballscrew.axis.thermal import estimated_screw_length
+from ballscrew.chain import friction_torque
+from ballscrew.design.limits import root_diameter
+from ballscrew.design.stiffness import design_nut_stiffness
+from ballscrew.errors import BallScrewInputError
+from ballscrew.io.machine import Machine, load_machine
+from ballscrew.materials import STANDARD_GRAVITY
+from ballscrew.program import run_program
+from ballscrew.program.axes import ProgramResult, Reversal, _torques_at
+
+MASS = 300.0  # kg
+JERK = 50.0  # m/s^3
+FORCE = 500.0  # N, the process force
+MODULUS = 206e9  # Pa, the screw shaft's Young's modulus as the makers' catalogues take it
+
+CASE = """
+title = "X for the pins"
+[screw]
+designation = "HIWIN R40-10K5-FDC"
+{nut}
+contact_angle = "45 deg"
+[lubricant]
+name = "PAO ISO VG 68"
+[operation]
+temperature = "40 degC"
+[axis]
+moving_mass = "300 kg"
+incline = "{incline}"
+{span}
+{length}
+screw_inertia = "2.4e-3 kg*m**2"
+motor_inertia = "1.8e-3 kg*m**2"
+bearing_bore = "30 mm"
+dn_limit = "130000 mm*rpm"
+[motor]
+rated_torque = "20 N*m"
+peak_torque = "60 N*m"
+rated_speed = "2000 rpm"
+"""
+
+MACHINE = """
+[machine]
+rapid_feed = "30 m/min"
+ambient = "40 degC"
+start_temperature = "40 degC"
+sample_time = "1 ms"
+[axes.X]
+case = "x.toml"
+max_feed = "30 m/min"
+max_acceleration = "2 m/s^2"
+max_jerk = "50 m/s^3"
+travel = [{travel}]
+process_force = "{force}"
+"""
+
+
+def _machine(
+    folder: Path, *, travel: str = '"-100 mm", "700 mm"', force: str = "500 N",
+    incline: str = "0 deg", span: str | None = "1100 mm", length: bool = True,
+    nut: str = 'preload_share = "6 %"',
+) -> Machine:  # fmt: skip
+    folder.mkdir(parents=True, exist_ok=True)
+    (folder / "x.toml").write_text(
+        CASE.format(nut=nut, incline=incline,
+                    span="" if span is None else f'bearing_span = "{span}"',
+                    length='screw_length = "1200 mm"' if length else ""),
+        encoding="utf-8",
+    )  # fmt: skip
+    (folder / "m.toml").write_text(MACHINE.format(travel=travel, force=force), encoding="utf-8")
+    return load_machine(folder / "m.toml")
+
+
+@pytest.fixture(scope="module")
+def out_and_back(tmp_path_factory: pytest.TempPathFactory) -> tuple[Machine, ProgramResult]:
+    """A rapid 300 mm out and a feed back, both at 30 m/min (0.5 m/s), 2 m/s^2, 50 m/s^3."""
+    machine = _machine(tmp_path_factory.mktemp("out_and_back"))
+    return machine, run_program(machine, "G0 X300\nG1 X0 F30000\nM30\n")
+
+
+# The S-curve of 300 mm at v = 0.5 m/s, a = 2 m/s^2, j = 50 m/s^3: each of its two ramps
+# takes v/a + a/j = 0.29 s over v (v/a + a/j) / 2 = 72.5 mm, the 155 mm between at 0.5 m/s
+# take 0.31 s: 0.89 s a move.
+MOVE_TIME = 2 * 0.29 + 0.31
+
+
+def test_a_single_moves_process_work_distances_and_speed_by_hand(
+    out_and_back: tuple[Machine, ProgramResult],
+) -> None:
+    _, r = out_and_back
+    x = r.axes["X"]
+    assert r.motion.duration == pytest.approx(2 * MOVE_TIME, abs=1e-9)
+    # The process force acts in the feed block only: 500 N x 0.3 m (1e-12: rounding).
+    assert x.process_work == pytest.approx(FORCE * 0.3, rel=1e-12)
+    doc = x.as_dict()
+    assert doc["process_work_J"] == pytest.approx(150.0, rel=1e-12)
+    assert doc["distance_mm"] == pytest.approx(600.0, rel=1e-12)
+    assert doc["feed_distance_mm"] == pytest.approx(300.0, rel=1e-12)
+    assert doc["travel_mm"] == pytest.approx(300.0, rel=1e-12)
+    # 0.5 m/s on a 10 mm lead: 50 rev/s, 3000 rpm; the motor's rated 2000 rpm as typed.
+    assert doc["peak_motor_speed_rpm"] == pytest.approx(3000.0, rel=1e-9)
+    assert doc["motor_rated_speed_rpm"] == pytest.approx(2000.0, rel=1e-12)
+    assert x.potential_energy == 0.0  # horizontal
+    # The travel row: 300 mm used of the 800 mm from -100 to 700 mm.
+    row = next(c for c in x.verdicts if c.key == "travel")
+    assert (row.value, row.limit) == pytest.approx((300.0, 800.0), rel=1e-12)
+    assert row.utilisation == pytest.approx(0.375, rel=1e-12)
+
+
+def test_the_axial_force_is_inertia_plus_the_process_force_against_feed_motion(
+    out_and_back: tuple[Machine, ProgramResult],
+) -> None:
+    _, r = out_and_back
+    ds = r.data
+    a = ds["acceleration"].sel(axis="X").values
+    v = ds["velocity"].sel(axis="X").values
+    feeding = ds["feeding"].values.astype(bool)
+    force = ds["axial_force"].sel(axis="X").values
+    # m a, and in the feed block, while the axis moves, 500 N against the motion; in the
+    # rapid and at rest nothing else (1e-9 N: the sum's rounding).
+    expected = MASS * a + np.where(feeding & (v != 0.0), FORCE * np.sign(v), 0.0)
+    np.testing.assert_allclose(force, expected, rtol=0, atol=1e-9)
+
+
+def test_the_reversal_by_hand(out_and_back: tuple[Machine, ProgramResult]) -> None:
+    machine, r = out_and_back
+    (rev,) = r.axes["X"].reversals
+    t = r.motion.time
+    # At the end of the first block, where the axis stops: time and place exact.
+    assert rev.time == pytest.approx(MOVE_TIME, abs=1e-12)
+    assert rev.position == pytest.approx(0.3, abs=1e-12)
+    assert rev.line == 2  # the block it reverses into
+    # The samples on either side of the stop: the last one moving before it, the first after.
+    t_b = float(t[t < MOVE_TIME - 1e-12].max())
+    t_a = float(t[t > MOVE_TIME + 1e-12].min())
+    # The acceleration ramps linearly to 0 at the stop and from 0 after it, at the jerk:
+    # a = -j (t_stop - t) before, -j (t - t_stop) after. Its mean over 20 ms of motion on
+    # either side, times the mass; the rapid has no process force, the feed back 500 N
+    # against its motion (-X): the load on the nut is -500 N more.
+    before = MASS * -JERK * ((MOVE_TIME - t_b) + 0.01)
+    after = MASS * -JERK * ((t_a - MOVE_TIME) + 0.01) - FORCE
+    assert rev.load_before == pytest.approx(before, rel=1e-9)
+    assert rev.load_after == pytest.approx(after, rel=1e-9)
+    assert rev.load_direction == "-/-"
+    # The friction at the creep speed under the mean of the two samples' loads, as a force.
+    load = 0.5 * (MASS * -JERK * (MOVE_TIME - t_b) + MASS * -JERK * (t_a - MOVE_TIME) - FORCE)
+    case = machine.axes["X"].case
+    screw = case.screw
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        t_f = float(friction_torque(screw, case.lubricant, speed=CREEP_SPEED, temperature=40.0,
+                                    axial_load=abs(load), model=machine.model).total)  # fmt: skip
+    f_f = 2.0 * math.pi * t_f / screw.lead
+    assert rev.friction_force == pytest.approx(f_f, rel=1e-9)
+    # At 300 mm, the middle of the travel (-100 to 700 mm), which is centred in the 1100 mm
+    # span: 550 mm from the thrust bearing. Shaft EA/a in series with the (preloaded,
+    # double) nut.
+    ea = MODULUS * math.pi * root_diameter(screw) ** 2 / 4.0
+    k = 1.0 / (0.55 / ea + 1.0 / design_nut_stiffness(screw, 0.0))
+    assert rev.stiffness == pytest.approx(k, rel=1e-12)
+    assert rev.lost_motion == pytest.approx(2.0 * f_f / k, rel=1e-9)
+    doc = rev.as_dict()
+    assert doc["position_mm"] == pytest.approx(300.0, rel=1e-12)
+    assert doc["stiffness_N_per_um"] == pytest.approx(k / 1e6, rel=1e-12)
+    assert doc["lost_motion_um"] == pytest.approx(2e6 * f_f / k, rel=1e-9)
+
+
+def test_the_weight_along_an_incline_is_potential_energy(tmp_path: Path) -> None:
+    machine = _machine(tmp_path, incline="30 deg", force="0 N")
+    x = run_program(machine, "G1 X100 F6000\nM30\n").axes["X"]
+    # m g sin(30 deg) x 0.1 m = 147.1 J (1e-12: rounding).
+    assert x.potential_energy == pytest.approx(MASS * STANDARD_GRAVITY * 0.5 * 0.1, rel=1e-12)
+
+
+def _shaft_k(screw: Any, a: float) -> float:
+    return MODULUS * math.pi * root_diameter(screw) ** 2 / 4.0 / a
+
+
+def test_a_single_nut_takes_the_programs_peak_load(tmp_path: Path) -> None:
+    # Travel 0 to 650 mm centred between supports 800 mm apart: the nut is 75 mm + its
+    # position from the thrust bearing.
+    machine = _machine(tmp_path, travel='"0 mm", "650 mm"', force="0 N", span="800 mm",
+                       nut='nut = "single"\npreload_share = "0 %"')  # fmt: skip
+    r = run_program(machine, "G1 X100 F6000\nG1 X0\nG1 X50\nM30\n")
+    screw = machine.axes["X"].case.screw
+    # A single nut without preload at the program's largest axial load: 300 kg x 2 m/s^2.
+    k_nut = design_nut_stiffness(screw, MASS * 2.0)
+    revs = r.axes["X"].reversals
+    assert [round(v.position, 9) for v in revs] == [0.1, 0.0]
+    for rev, a in zip(revs, [0.175, 0.075], strict=True):
+        k = 1.0 / (1.0 / _shaft_k(screw, a) + 1.0 / k_nut)
+        assert rev.stiffness == pytest.approx(k, rel=1e-12), a
+
+
+def test_the_screw_length_estimated_from_the_machines_travel(tmp_path: Path) -> None:
+    # No screw length or bearing span in the case: estimated from the travel of the machine
+    # file (800 mm from -100 to 700 mm), also for an axis standing through a program of no
+    # motion.
+    machine = _machine(tmp_path, force="0 N", length=False, span=None)
+    moved = run_program(machine, "G1 X100 F6000\nM30\n").axes["X"]
+    standing = run_program(machine, "M3 S100\nM5\n").axes["X"]
+    length = estimated_screw_length(machine.axes["X"].case.screw, 0.8)
+    for x in (moved, standing):
+        assert any(f"screw_length = {length * 1e3:.0f} mm (estimated" in n for n in x.notes)
+
+
+def test_an_axis_standing_through_a_program_of_no_motion(tmp_path: Path) -> None:
+    machine = _machine(tmp_path, force="0 N")
+    x = run_program(machine, "M3 S100\nM5\n").axes["X"]
+    assert (x.peak_speed, x.travel, x.thermal_lead_error, x.distance) == (0.0, 0.0, 0.0, 0.0)
+    assert x.start_temperature == x.final_temperature == x.max_temperature == 40.0
+    assert x.peak_torque == x.rms_torque == 0.0  # horizontal, at rest: no torque
+
+
+class _Cycle(SimpleNamespace):
+    pass
+
+
+def test_the_torques_interpolate_in_temperature_above_a_twentieth_of_a_kelvin() -> None:
+    first = _Cycle(friction_torque=np.array([1.0, 1.0, 1.0]),
+                   motor_torque=np.array([2.0, 2.0, -2.0]),
+                   screw_speed=np.array([1.0, 1.0, -1.0]))  # fmt: skip
+    warm = _Cycle(friction_torque=np.array([0.8, 0.8, 0.8]))
+
+    def refuse() -> Any:
+        raise AssertionError("the warm cycle is not needed")
+
+    # 0.04 K of warming: the start's torques, the warm cycle not even run.
+    t_f, t_m = _torques_at(np.array([40.0, 40.02, 40.04]), first, refuse, 2.0)  # type: ignore[arg-type]
+    assert t_f is first.friction_torque and t_m is first.motor_torque
+    # 0.052 K: the friction in proportion to each sample's warming, 1 to 0.8 N*m; the motor
+    # torque follows through the gear of 2, with the sign of the motion.
+    temp = np.array([40.0, 40.026, 40.052])
+    t_f, t_m = _torques_at(temp, first, lambda: warm, 2.0)  # type: ignore[arg-type]
+    share = np.array([0.0, 0.5, 1.0])
+    np.testing.assert_allclose(t_f, 1.0 - 0.2 * share, rtol=1e-9)
+    np.testing.assert_allclose(t_m, [2.0, 2.0 - 0.05, -2.0 + 0.1], rtol=1e-9)
+
+
+def test_the_friction_share_by_hand(out_and_back: tuple[Machine, ProgramResult]) -> None:
+    _, r = out_and_back
+    x = r.axes["X"]
+    # Losses 10 + 2 J over what is turned over: the losses, 5 J of process work, 3 J taken
+    # back; a weight lowered (-4 J) adds nothing: 12 / 20.
+    hand = dataclasses.replace(x, friction_energy=10.0, bearing_energy=2.0, process_work=5.0,
+                               regenerated_energy=3.0, potential_energy=-4.0)  # fmt: skip
+    assert hand.friction_share == pytest.approx(0.6, rel=1e-12)
+    # Negative process work counts as nothing, a weight lifted (4 J) counts.
+    lifted = dataclasses.replace(hand, process_work=-5.0, potential_energy=4.0)
+    assert lifted.friction_share == pytest.approx(12.0 / 19.0, rel=1e-12)
+    # Below 1 J turned over: still a share.
+    tiny = dataclasses.replace(hand, friction_energy=0.2, bearing_energy=0.1, process_work=0.0,
+                               regenerated_energy=0.0, potential_energy=0.0)  # fmt: skip
+    assert tiny.friction_share == pytest.approx(1.0, rel=1e-12)
+    # The machine's totals: two axes, 12 of 20 and 0.3 of 0.3.
+    both = dataclasses.replace(r, axes={"X": hand, "Y": tiny})
+    totals = both.as_dict()["machine_totals"]
+    assert totals["friction_share"] == pytest.approx(12.3 / 20.3, rel=1e-12)
+    lone = dataclasses.replace(r, axes={"X": tiny})
+    assert lone.as_dict()["machine_totals"]["friction_share"] == pytest.approx(1.0, rel=1e-12)
+    lifted_totals = dataclasses.replace(r, axes={"X": lifted}).as_dict()["machine_totals"]
+    assert lifted_totals["friction_share"] == pytest.approx(12.0 / 19.0, rel=1e-12)
+
+
+def test_a_reversals_json_units() -> None:
+    rev = Reversal(time=1.0, position=0.25, load_before=10.0, load_after=-10.0,
+                   friction_force=50.0, stiffness=2e8, lost_motion=5e-7, line=3)  # fmt: skip
+    doc = rev.as_dict()
+    assert (doc["position_mm"], doc["stiffness_N_per_um"], doc["lost_motion_um"]) == \
+        pytest.approx((250.0, 200.0, 0.5), rel=1e-12)  # fmt: skip
+    assert doc["load_direction"] == "+/-"
+    assert dataclasses.replace(rev, load_before=0.0, load_after=-0.0).load_direction == "0/0"
+    assert dataclasses.replace(rev, load_before=-1e-9, load_after=1e-9).load_direction == "-/+"
+
+
+@pytest.mark.parametrize(
+    ("text", "line", "word"),
+    [
+        ("G1 X10 F1000\nG1 X-150\n", "program line 2", "X-150 mm"),
+        ("G1 X10 F1000\nG1 X750\n", "program line 2", "X750 mm"),
+    ],
+)
+def test_a_block_past_the_travel_is_named_in_millimetres(
+    out_and_back: tuple[Machine, ProgramResult], text: str, line: str, word: str
+) -> None:
+    machine, _ = out_and_back
+    with pytest.raises(BallScrewInputError) as info:
+        run_program(machine, text)
+    assert (info.value.field, info.value.value) == (line, word)
+    assert "-100 to 700 mm" in info.value.allowed
+
+
+@pytest.mark.parametrize(
+    ("text", "line"),
+    [
+        # An arc in a plane with an axis the machine lacks names its line, even when that
+        # axis ends where it started (the arc moves it on the way).
+        ("G1 X10 F1000\nG18 G2 X10 Z0 I5 K0\n", "program line 2"),
+        ("G1 X10 F1000\nG19 G2 Y0 Z0 J5 K0\n", "program line 2"),
+        ("G1 X10 F1000\nG17 G2 X10 Y0 I5 J0\n", "program line 2"),
+    ],
+)
+def test_an_arc_in_a_plane_of_a_missing_axis_names_its_line(
+    out_and_back: tuple[Machine, ProgramResult], text: str, line: str
+) -> None:
+    machine, _ = out_and_back
+    with pytest.raises(BallScrewInputError) as info:
+        run_program(machine, text)
+    assert info.value.field == line
