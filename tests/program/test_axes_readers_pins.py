@@ -30,6 +30,7 @@ from ballscrew.io.machine import Machine, load_machine
 from ballscrew.materials import STANDARD_GRAVITY
 from ballscrew.program import run_program
 from ballscrew.program.axes import ProgramResult, Reversal, _torques_at
+from ballscrew.program.sinumerik import drilling_cycle, to_rs274
 
 MASS = 300.0  # kg
 JERK = 50.0  # m/s^3
@@ -329,3 +330,59 @@ def test_an_arc_in_a_plane_of_a_missing_axis_names_its_line(
     with pytest.raises(BallScrewInputError) as info:
         run_program(machine, text)
     assert info.value.field == line
+
+
+# SINUMERIK 840D blocks written out by hand as RS274/NGC (the module's references: Siemens'
+# Fundamentals and Cycles manuals).
+
+
+def test_the_g_and_m_codes_both_languages_write_alike_pass_through() -> None:
+    text = "G18\nG19\nG17\nM0\nM1\nM4\nM7\nM2\n"
+    assert to_rs274(text)[0].splitlines() == ["G18", "G19", "G17", "M0", "M1", "M4", "M7", "M2"]
+    with pytest.raises(BallScrewInputError, match="not G19"):
+        to_rs274("G0 Z10\nG19\nCYCLE81(10,0,2,-5)\n")  # the plane is tracked through G19
+
+
+def test_gear_stages_m40_to_m45_are_dropped_and_m46_refused() -> None:
+    out, notes = to_rs274("M40\nM45\n")
+    assert out.splitlines() == ["", ""]
+    assert any("M40 (gear stage)" in n for n in notes)
+    with pytest.raises(BallScrewInputError) as info:
+        to_rs274("M46\n")
+    assert info.value.value == "M46"
+
+
+def test_a_tool_change_forgets_the_tool_axis_position() -> None:
+    # After M6 the new tool's length may move the tip: a cycle needs Z programmed again.
+    with pytest.raises(BallScrewInputError, match="not known"):
+        to_rs274("G0 Z10\nM6\nCYCLE81(10,0,2,-15)\n")
+
+
+def test_t0_has_no_length_to_apply() -> None:
+    # D1 after T0 (no tool): dropped, not G43 H0.
+    out, notes = to_rs274("T0\nD1\n")
+    assert out.splitlines() == ["T0", ""]
+    assert any("named or unknown tool" in n for n in notes)
+
+
+def test_a_dwell_of_zero_seconds() -> None:
+    assert to_rs274("G4 F0\n")[0] == "G4 P0\n"
+
+
+def test_a_depth_at_the_approach_plane_is_refused() -> None:
+    # CYCLE81(10, 0, 2, 2): RFP + SDIS = 2 and DP = 2, no drilling at all.
+    with pytest.raises(BallScrewInputError, match=r"a final depth \(2\) below"):
+        drilling_cycle("CYCLE81", "10,0,2,2")
+    with pytest.raises(BallScrewInputError) as info:
+        drilling_cycle("CYCLE81", "10,0,2,5")
+    assert info.value.field == "program line 0"  # called without a line
+
+
+def test_inch_cycles_track_the_tool_axis_in_inches() -> None:
+    # G70: Z1 is 25.4 mm; CYCLE81(1, 0, 0.1, -0.5) starts at RTP = 1 in: G98, back to the
+    # start height; the second cycle starts from there again (RTP, in inches).
+    out, _ = to_rs274("G70\nG0 Z1\nCYCLE81(1,0,0.1,-0.5)\nCYCLE81(1,0,0.1,-0.25)\n")
+    assert out.splitlines() == ["G20", "G0 Z1", "G98 G81 Z-0.5 R0.1", "G98 G81 Z-0.25 R0.1"]
+    # Incremental Z in inches adds to the position: 0.5 + 0.5 in = RTP 1 in.
+    out, _ = to_rs274("G70\nG0 Z0.5\nG91 G0 Z0.5\nG90\nCYCLE81(1,0,0.1,-0.5)\n")
+    assert out.splitlines()[-1] == "G98 G81 Z-0.5 R0.1"
