@@ -386,3 +386,74 @@ def test_inch_cycles_track_the_tool_axis_in_inches() -> None:
     # Incremental Z in inches adds to the position: 0.5 + 0.5 in = RTP 1 in.
     out, _ = to_rs274("G70\nG0 Z0.5\nG91 G0 Z0.5\nG90\nCYCLE81(1,0,0.1,-0.5)\n")
     assert out.splitlines()[-1] == "G98 G81 Z-0.5 R0.1"
+
+
+def test_text_in_quotes_keeps_its_case_and_the_rest_is_read_in_capitals() -> None:
+    out, notes = to_rs274('T="Drill_a" m6\n')
+    assert out == "T1 M6\n"
+    assert any('T="Drill_a"' in n for n in notes)
+
+
+def test_notes_name_their_first_line_and_count_the_others() -> None:
+    _, notes = to_rs274("\ufeffG0 X1\n")
+    assert "a byte-order mark at the start: dropped: line 1" in notes
+    assert any(n.startswith("no G70, G71, G700 or G710") and n.endswith(": line 1")
+               for n in notes)  # fmt: skip
+    assert not any("(and" in n for n in notes)  # each kind once: no count
+    _, notes = to_rs274("G90 G710\n")
+    assert "G710 (metric, feeds in mm/min): read as G21: line 1" in notes
+
+
+def test_two_cycle_calls_in_a_block_name_the_second() -> None:
+    with pytest.raises(BallScrewInputError) as info:
+        to_rs274("G0 Z10\nCYCLE81(10,0,2,-5) CYCLE82(10,0,2,-5)\n")
+    assert info.value.value == "CYCLE82"
+
+
+def test_an_inch_cycle_away_from_rtp_says_where_the_tool_is_in_inches() -> None:
+    with pytest.raises(BallScrewInputError, match="it is at 2 here"):
+        to_rs274("G70\nG0 Z2\nCYCLE81(1,0,0.1,-0.5)\n")
+
+
+def test_a_modal_cycle_from_its_approach_plane_needs_no_lift() -> None:
+    # RTP = RFP + SDIS = 2 (G99) and the tool at Z2: not below R, so the X move comes first
+    # in both languages.
+    out, _ = to_rs274("G0 Z2\nMCALL CYCLE81(2,0,2,-5)\nX1 F250\n")
+    assert out.splitlines()[2] == "G99 G81 X1 Z-5 R2 F250"
+
+
+def test_work_offsets_and_their_notes() -> None:
+    out, notes = to_rs274("G55\nG56\nG57\nG505\nG53 G0 Z0\n")
+    assert out.splitlines() == ["G55", "G56", "G57", "G58", "G53 G0 Z0"]
+    assert "G505 (settable work offset 5): read as G58, RS274/NGC's 5th: line 4" in notes
+    assert not any("G57 (" in n for n in notes)
+
+
+def test_path_modes_exact_stop_ends_and_rounding() -> None:
+    out, notes = to_rs274("G64\nG641\nG643\nG644\nG645\nG602\nG603\n")
+    assert out.splitlines() == ["G64"] * 5 + ["", ""]
+    told = "\n".join(notes)
+    for code in ("G641", "G643", "G644", "G645", "G602", "G603"):
+        assert f"{code} (" in told
+    assert "G64 (" not in told
+
+
+def test_the_motion_mode_plane_and_distance_mode_are_tracked() -> None:
+    # G3 is a motion mode: the line after a single cycle restores it.
+    out, _ = to_rs274("G0 Z10\nG3 X0 Y0 I1 J0 F100\nCYCLE81(10,0,2,-5)\n\n")
+    assert out.splitlines()[3] == "G3"
+    # G90 after G91, and G17 after G18, allow a cycle.
+    assert to_rs274("G91\nG90\nG0 Z10\nCYCLE81(10,0,2,-5)\n")[0].splitlines()[3] == \
+        "G98 G81 Z-5 R2"  # fmt: skip
+    assert to_rs274("G18\nG17\nG0 Z10\nCYCLE81(10,0,2,-5)\n")[0].splitlines()[3] == \
+        "G98 G81 Z-5 R2"  # fmt: skip
+
+
+def test_d1_after_t1_is_its_length() -> None:
+    assert to_rs274("T1\nD1\n")[0].splitlines() == ["T1", "G43 H1"]
+
+
+def test_g4_s_without_a_spindle_speed_names_the_word_as_typed() -> None:
+    with pytest.raises(BallScrewInputError) as info:
+        to_rs274("G4 S10\n")
+    assert info.value.value == "G4 S10"
