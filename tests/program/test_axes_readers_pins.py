@@ -67,7 +67,7 @@ MACHINE = """
 rapid_feed = "30 m/min"
 ambient = "40 degC"
 start_temperature = "40 degC"
-sample_time = "1 ms"
+sample_time = "10 ms"
 [axes.X]
 case = "x.toml"
 max_feed = "30 m/min"
