@@ -30,6 +30,8 @@ from ballscrew.io.machine import Machine, load_machine
 from ballscrew.materials import STANDARD_GRAVITY
 from ballscrew.program import run_program
 from ballscrew.program.axes import ProgramResult, Reversal, _torques_at
+from ballscrew.program.gcode import FEED, Program, program_from_rows
+from ballscrew.program.rs274 import LINE_MARK, _blocks, _marked, _refusal
 from ballscrew.program.sinumerik import drilling_cycle, to_rs274
 
 MASS = 300.0  # kg
@@ -457,3 +459,163 @@ def test_g4_s_without_a_spindle_speed_names_the_word_as_typed() -> None:
     with pytest.raises(BallScrewInputError) as info:
         to_rs274("G4 S10\n")
     assert info.value.value == "G4 S10"
+
+
+# LinuxCNC's canonical commands, written as ``rs274 -g`` prints them (its 2.9 output format:
+# the sequence number, the block's N word or dots, the command).
+
+
+def _canon(*commands: str, line: int = 1) -> list[str]:
+    return [f"{k + 1:5d} N{LINE_MARK + line} {c}" for k, c in enumerate(commands)]
+
+
+def _rows(*commands: str, rotary: str = "", max_blocks: int | None = None) -> Program:
+    rows, notes, used, _ = _blocks(_canon(*commands), ["line one"], max_blocks, rotary=rotary)
+    return program_from_rows(rows, notes, used, "")
+
+
+def _refused(*commands: str, rotary: str = "") -> BallScrewInputError:
+    with pytest.raises(BallScrewInputError) as info:
+        _rows(*commands, rotary=rotary)
+    return info.value
+
+
+def test_centimetres_and_the_first_move_from_the_origin() -> None:
+    p = _rows("USE_LENGTH_UNITS(CANON_UNITS_CM)",
+              "STRAIGHT_TRAVERSE(1.0000, 2.0000, 3.0000, 0.0000, 0.0000, 0.0000)")  # fmt: skip
+    np.testing.assert_allclose(p.start[0], [0.0, 0.0, 0.0], atol=0)
+    np.testing.assert_allclose(p.end[0], [0.01, 0.02, 0.03], rtol=1e-15)
+    # Millimetres before any USE_LENGTH_UNITS, the XY plane, no rotary motion.
+    p = _rows("SET_FEED_RATE(600.0000)",
+              "STRAIGHT_FEED(1.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)")  # fmt: skip
+    np.testing.assert_allclose(p.end[0], [0.001, 0.0, 0.0], rtol=1e-15)
+    assert p.feed[0] == pytest.approx(0.01, rel=1e-15)  # 600 mm/min
+    assert p.plane[0] == 17
+    assert p.rotary_start is None or not np.any(p.rotary_start)
+
+
+def test_an_arc_in_the_yz_plane() -> None:
+    # G19 G3 from Y0 Z0 to Y2 Z0 about Y1 Z0 (ARC_FEED's first coordinate is Y, its second
+    # Z, then the centre's, the turn, X at the end): half a turn counter-clockwise.
+    p = _rows(
+        "SET_FEED_RATE(100.0000)",
+        "SELECT_PLANE(CANON_PLANE_YZ)",
+        "ARC_FEED(2.0000, 0.0000, 1.0000, 0.0000, 1, 3.0000, 0.0000, 0.0000, 0.0000)",
+    )
+    assert p.plane[0] == 19
+    np.testing.assert_allclose(p.end[0], [0.003, 0.002, 0.0], atol=1e-15)
+    np.testing.assert_allclose(p.centre[0], [0.0, 0.001, 0.0], atol=1e-15)
+    assert p.sweep[0] == pytest.approx(math.pi, rel=1e-12)
+
+
+def test_turn_counts_of_clockwise_arcs() -> None:
+    # G2 P2 around (1, 0) from the origin back to it: two full turns clockwise, -4 pi; a
+    # half circle with P2: -pi - 2 pi.
+    p = _rows(
+        "SET_FEED_RATE(100.0000)",
+        "ARC_FEED(0.0000, 0.0000, 1.0000, 0.0000, -2, 0.0000, 0.0000, 0.0000, 0.0000)",
+        "ARC_FEED(2.0000, 0.0000, 1.0000, 0.0000, -2, 0.0000, 0.0000, 0.0000, 0.0000)",
+        "ARC_FEED(0.0000, 0.0000, 1.0000, 0.0000, -1, 0.0000, 0.0000, 0.0000, 0.0000)",
+    )
+    np.testing.assert_allclose(p.sweep, [-4 * math.pi, -3 * math.pi, -math.pi], rtol=1e-12)
+
+
+def test_an_arc_of_one_metre_radius_and_one_of_none() -> None:
+    # A quarter circle of radius 1000 mm, counter-clockwise.
+    p = _rows(
+        "SET_FEED_RATE(100.0000)",
+        "ARC_FEED(-1000.0000, 1000.0000, -1000.0000, 0.0000, 1, 0.0000, 0.0, 0.0, 0.0)",
+    )
+    assert p.sweep[0] == pytest.approx(math.pi / 2, rel=1e-12)
+    # Radius 0 (the centre on the start): LinuxCNC's straight feed along the normal axis.
+    p = _rows("SET_FEED_RATE(100.0000)",
+              "ARC_FEED(0.0000, 0.0000, 0.0000, 0.0000, 1, -2.0000, 0.0, 0.0, 0.0)")  # fmt: skip
+    assert p.kind.tolist() == [FEED]
+    np.testing.assert_allclose(p.end[0], [0.0, 0.0, -0.002], atol=1e-15)
+
+
+def test_a_rotation_turns_xy_arcs_and_points_by_hand() -> None:
+    # SET_XY_ROTATION(30): (10, 5) is (10 cos 30 - 5 sin 30, 10 sin 30 + 5 cos 30).
+    c, s = math.cos(math.radians(30)), math.sin(math.radians(30))
+    p = _rows("SET_XY_ROTATION(30.0000)", "SET_FEED_RATE(100.0000)",
+              "STRAIGHT_TRAVERSE(10.0000, 5.0000, 0.0000, 0.0000, 0.0000, 0.0000)",
+              "ARC_FEED(10.0000, 5.0000, 10.0000, 6.0000, 1, 0.0000, 0.0, 0.0, 0.0)")  # fmt: skip
+    np.testing.assert_allclose(p.end[0], [(10 * c - 5 * s) * 1e-3, (10 * s + 5 * c) * 1e-3, 0],
+                               rtol=1e-12)  # fmt: skip
+    np.testing.assert_allclose(p.centre[1][:2], [(10 * c - 6 * s) * 1e-3,
+                                                 (10 * s + 6 * c) * 1e-3], rtol=1e-12)  # fmt: skip
+    assert p.sweep[1] == pytest.approx(2 * math.pi, rel=1e-12)
+    # Out of the XY plane a rotated arc is refused.
+    error = _refused(
+        "SET_XY_ROTATION(30.0000)",
+        "SET_FEED_RATE(100.0000)",
+        "SELECT_PLANE(CANON_PLANE_XZ)",
+        "ARC_FEED(0.0000, 2.0000, 0.0000, 1.0000, 1, 0.0000, 0.0, 0.0, 0.0)",
+    )
+    assert "XY rotation" in error.allowed
+
+
+def test_offsets_given_without_rotary_values_turn_nothing() -> None:
+    p = _rows("SET_G5X_OFFSET(1, 1.0000, 0.0000, 0.0000)",
+              "SET_G92_OFFSET(0.0000, 1.0000, 0.0000)",
+              "USE_TOOL_LENGTH_OFFSET(0.0000, 0.0000, 1.0000)",
+              "STRAIGHT_TRAVERSE(0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)")  # fmt: skip
+    np.testing.assert_allclose(p.end[0], [0.001, 0.001, 0.001], rtol=1e-15)
+
+
+def test_feeds_per_revolution_and_rotary_feeds_need_positive_values() -> None:
+    for commands in [
+        ("SET_FEED_MODE(0, 1)", "SET_FEED_RATE(0.2000)"),  # no spindle speed
+        ("SET_SPINDLE_SPEED(0, 600.0000)", "SET_FEED_MODE(0, 1)", "SET_FEED_RATE(0.0000)"),
+        ("SET_FEED_RATE(0.0000)",),
+        ("SET_SPINDLE_SPEED(0, 600.0000)", "SET_SPINDLE_MODE(0 2000.0000)",
+         "SET_FEED_MODE(0, 1)", "SET_FEED_RATE(0.2000)"),  # G96: the speed varies
+    ]:  # fmt: skip
+        _refused(*commands, "STRAIGHT_FEED(0.0000, 0.0000, -5.0000, 0.0000, 0.0000, 0.0000)")
+    error = _refused("SET_FEED_RATE(0.0000)",
+                     "STRAIGHT_FEED(0.0000, 0.0000, 0.0000, 90.0000, 0.0000, 0.0000)",
+                     rotary="A")  # fmt: skip
+    assert "feed > 0" in error.allowed
+    # G96 switched off again (SET_SPINDLE_MODE(0 0)) and G94: a feed per minute.
+    p = _rows("SET_SPINDLE_SPEED(0, 600.0000)", "SET_SPINDLE_MODE(0 2000.0000)",
+              "SET_SPINDLE_MODE(0 0.0000)", "SET_FEED_MODE(0, 1)", "SET_FEED_RATE(0.2000)",
+              "STRAIGHT_FEED(0.0000, 0.0000, -5.0000, 0.0000, 0.0000, 0.0000)")  # fmt: skip
+    assert p.feed[0] == pytest.approx(0.2e-3 * 10.0, rel=1e-12)  # 0.2 mm x 10 rev/s
+    error = _refused("SET_FEED_MODE()", "STRAIGHT_FEED(0.0000, 0.0000, -5.0, 0.0, 0.0, 0.0)")
+    assert "finite numbers" in error.allowed
+
+
+def test_a_block_number_of_the_file_carries_the_line_before_it() -> None:
+    # A line too long for the mark keeps its own N word (here N5): its commands carry the
+    # line of the block before.
+    output = [*_canon("SET_FEED_RATE(100.0000)", line=3),
+              "    2 N5 STRAIGHT_FEED(1.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)"]  # fmt: skip
+    rows, _, _, _ = _blocks(output, ["a", "b", "c", "d"], None)
+    assert [r[1] for r in rows] == [3]
+
+
+def test_the_block_bound_is_inclusive() -> None:
+    moves = [f"STRAIGHT_TRAVERSE({k}.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)"
+             for k in (1, 2)]  # fmt: skip
+    assert _rows(*moves, max_blocks=2).size == 2
+    with pytest.raises(BallScrewInputError, match="at most 1 blocks"):
+        _rows(*moves, max_blocks=1)
+
+
+def test_the_interpreters_complaint_and_its_line() -> None:
+    lines = ["G21", "G1 X1", "G2 X3"]
+    error = _refusal(f"executing\nbad arc\nN{LINE_MARK + 3} G2 X3\n", lines, 1)
+    assert (error.field, error.value) == ("program line 3", "G2 X3")
+    assert error.allowed.endswith("rs274 says: bad arc")
+    # No line named: the last one read.
+    assert _refusal("bad arc\n", lines, 2).field == "program line 2"
+
+
+def test_line_lengths_at_rs274s_limit_of_252_characters() -> None:
+    mark = f"N{LINE_MARK + 1} "
+    fits = "G1 X1 (" + "a" * (252 - len(mark) - 8) + ")"
+    assert _marked(fits).splitlines() == [mark + fits]  # 252 characters marked
+    longest = "G1 X1 (" + "a" * (252 - 8) + ")"  # 252 characters: kept
+    assert _marked(longest).splitlines() == [longest]
+    past = longest + " "  # 253: rs274 refuses it either way; marked, the refusal names it
+    assert _marked(past).splitlines() == [mark + past]
