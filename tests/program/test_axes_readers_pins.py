@@ -619,3 +619,16 @@ def test_line_lengths_at_rs274s_limit_of_252_characters() -> None:
     assert _marked(longest).splitlines() == [longest]
     past = longest + " "  # 253: rs274 refuses it either way; marked, the refusal names it
     assert _marked(past).splitlines() == [mark + past]
+
+
+def test_a_reversal_at_a_corner_is_at_the_corners_instant() -> None:
+    # X turns back where two lines meet (100, 100 mm): its speed jumps there from +v to -v
+    # between two samples of one instant; the reversal is that instant, at 100 mm.
+    vmc = load_machine(Path(__file__).resolve().parents[2] / "examples" / "machine_vmc.toml")
+    r = run_program(vmc, "G64 P0.5\nG1 X100 Y100 F3000\nG1 X0 Y200\nM30\n")
+    (rev,) = r.axes["X"].reversals
+    t, x = r.motion.time, r.motion.position[:, 0]
+    corner = float(t[np.flatnonzero(x >= 0.1 - 1e-15)[0]])
+    assert rev.position == pytest.approx(0.1, abs=1e-12)
+    assert rev.time == pytest.approx(corner, abs=1e-12)
+    assert rev.line == 3
