@@ -652,3 +652,13 @@ def test_a_reversal_at_a_corner_is_at_the_corners_instant() -> None:
     assert rev.position == pytest.approx(0.1, abs=1e-12)
     assert rev.time == pytest.approx(corner, abs=1e-12)
     assert rev.line == 3
+
+
+def test_a_reversal_near_the_far_support(out_and_back: tuple[Machine, ProgramResult]) -> None:
+    # At 690 mm the nut is 550 + 390 = 940 mm from the thrust bearing of the 1100 mm span.
+    machine, _ = out_and_back
+    (rev,) = run_program(machine, "G1 X690 F6000\nG1 X600\nM30\n").axes["X"].reversals
+    screw = machine.axes["X"].case.screw
+    k = 1.0 / (1.0 / _shaft_k(screw, 0.94) + 1.0 / design_nut_stiffness(screw, 0.0))
+    assert rev.position == pytest.approx(0.69, abs=1e-12)
+    assert rev.stiffness == pytest.approx(k, rel=1e-12)
