@@ -662,3 +662,23 @@ def test_a_reversal_near_the_far_support(out_and_back: tuple[Machine, ProgramRes
     k = 1.0 / (1.0 / _shaft_k(screw, 0.94) + 1.0 / design_nut_stiffness(screw, 0.0))
     assert rev.position == pytest.approx(0.69, abs=1e-12)
     assert rev.stiffness == pytest.approx(k, rel=1e-12)
+
+
+def test_the_load_of_a_reversal_right_after_the_start(
+    out_and_back: tuple[Machine, ProgramResult],
+) -> None:
+    # 1 um out and back at rapid: the reversal comes 8.6 ms after the start, within the
+    # 20 ms window. Before the start the axis stood unloaded, so the window's mean force is
+    # the momentum gained over the window: m (v_b - 0) / 20 ms, with v_b the speed at the
+    # last moving sample; after the stop likewise m (0 - v_a) / 20 ms. Exact (1e-9): the
+    # acceleration is linear between samples, its trapezoidal integral the speed.
+    machine, _ = out_and_back
+    r = run_program(machine, "G0 X0.001\nG0 X0\nM30\n")
+    (rev,) = r.axes["X"].reversals
+    t, v = r.motion.time, r.motion.velocity[:, 0]
+    moving = np.flatnonzero(np.abs(v) > 0.0)
+    v_b = v[moving[moving < np.searchsorted(t, rev.time)][-1]]
+    v_a = v[moving[moving >= np.searchsorted(t, rev.time, side="right")][0]]
+    assert rev.time < 0.02
+    assert rev.load_before == pytest.approx(MASS * v_b / 0.02, rel=1e-9)
+    assert rev.load_after == pytest.approx(MASS * -v_a / 0.02, rel=1e-9)
