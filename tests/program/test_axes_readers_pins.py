@@ -30,8 +30,9 @@ from ballscrew.errors import BallScrewInputError
 from ballscrew.io.machine import Machine, load_machine
 from ballscrew.materials import STANDARD_GRAVITY
 from ballscrew.program import run_program
-from ballscrew.program.axes import ProgramResult, Reversal, _torques_at
-from ballscrew.program.gcode import FEED, Program, program_from_rows
+from ballscrew.program.axes import ProgramResult, Reversal, _limits, _torques_at
+from ballscrew.program.gcode import FEED, Program, program_from_rows, read_program
+from ballscrew.program.planner import plan
 from ballscrew.program.rs274 import LINE_MARK, _blocks, _marked, _refusal
 from ballscrew.program.sinumerik import drilling_cycle, to_rs274
 
@@ -84,7 +85,7 @@ process_force = "{force}"
 def _machine(
     folder: Path, *, travel: str = '"-100 mm", "700 mm"', force: str = "500 N",
     incline: str = "0 deg", span: str | None = "1100 mm", length: bool = True,
-    nut: str = 'preload_share = "6 %"',
+    nut: str = 'preload_share = "6 %"', y_axis: bool = False,
 ) -> Machine:  # fmt: skip
     folder.mkdir(parents=True, exist_ok=True)
     (folder / "x.toml").write_text(
@@ -93,7 +94,10 @@ def _machine(
                     length='screw_length = "1200 mm"' if length else ""),
         encoding="utf-8",
     )  # fmt: skip
-    (folder / "m.toml").write_text(MACHINE.format(travel=travel, force=force), encoding="utf-8")
+    text = MACHINE.format(travel=travel, force=force)
+    if y_axis:
+        text += text[text.index("[axes.X]") :].replace("[axes.X]", "[axes.Y]")
+    (folder / "m.toml").write_text(text, encoding="utf-8")
     return load_machine(folder / "m.toml")
 
 
@@ -211,8 +215,9 @@ def test_the_screw_warms_by_its_friction_heat_over_its_heat_capacity(
 
 def test_the_weight_along_an_incline_is_potential_energy(tmp_path: Path) -> None:
     machine = _machine(tmp_path, incline="30 deg", force="0 N")
-    x = run_program(machine, "G1 X100 F6000\nM30\n").axes["X"]
-    # m g sin(30 deg) x 0.1 m = 147.1 J (1e-12: rounding).
+    # From 100 to 200 mm: m g sin(30 deg) x 0.1 m = 147.1 J (1e-12: rounding).
+    program = read_program("G1 X200 F6000\nM30\n", start=(0.1, 0.0, 0.0))
+    x = run_program(machine, program).axes["X"]
     assert x.potential_energy == pytest.approx(MASS * STANDARD_GRAVITY * 0.5 * 0.1, rel=1e-12)
 
 
@@ -682,3 +687,20 @@ def test_the_load_of_a_reversal_right_after_the_start(
     assert rev.time < 0.02
     assert rev.load_before == pytest.approx(MASS * v_b / 0.02, rel=1e-9)
     assert rev.load_after == pytest.approx(MASS * -v_a / 0.02, rel=1e-9)
+
+
+def test_an_arc_bulging_past_the_travel_names_its_first_sample_in_millimetres(
+    tmp_path: Path,
+) -> None:
+    # G3 from (-90, 300) about (-90, 285) mm to (-90, 270): its left side reaches X -105 mm,
+    # past the travel's -100 mm, though both its ends are inside.
+    machine = _machine(tmp_path, force="0 N", y_axis=True)
+    text = "G1 X-90 Y300 F1000\nG3 X-90 Y270 I0 J-15\nM30\n"
+    motion = plan(read_program(text), _limits(machine, read_program(text)))
+    x = motion.position[:, 0]
+    first = float(x[np.flatnonzero(x < -0.1 - 1e-9)[0]])
+    assert -0.105 <= first < -0.1
+    with pytest.raises(BallScrewInputError) as info:
+        run_program(machine, text)
+    assert (info.value.field, info.value.value) == ("program line 2", f"X{first * 1e3:.4g} mm")
+    assert info.value.allowed == "within axes.X.travel, -100 to 700 mm"
