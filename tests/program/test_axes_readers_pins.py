@@ -85,7 +85,7 @@ process_force = "{force}"
 def _machine(
     folder: Path, *, travel: str = '"-100 mm", "700 mm"', force: str = "500 N",
     incline: str = "0 deg", span: str | None = "1100 mm", length: bool = True,
-    nut: str = 'preload_share = "6 %"', y_axis: bool = False,
+    nut: str = 'preload_share = "6 %"', letters: str = "X",
 ) -> Machine:  # fmt: skip
     folder.mkdir(parents=True, exist_ok=True)
     (folder / "x.toml").write_text(
@@ -95,8 +95,10 @@ def _machine(
         encoding="utf-8",
     )  # fmt: skip
     text = MACHINE.format(travel=travel, force=force)
-    if y_axis:
-        text += text[text.index("[axes.X]") :].replace("[axes.X]", "[axes.Y]")
+    axis = text[text.index("[axes.X]") :]
+    text = text[: text.index("[axes.X]")] + "".join(
+        axis.replace("[axes.X]", f"[axes.{k}]") for k in letters
+    )
     (folder / "m.toml").write_text(text, encoding="utf-8")
     return load_machine(folder / "m.toml")
 
@@ -694,7 +696,7 @@ def test_an_arc_bulging_past_the_travel_names_its_first_sample_in_millimetres(
 ) -> None:
     # G3 from (-90, 300) about (-90, 285) mm to (-90, 270): its left side reaches X -105 mm,
     # past the travel's -100 mm, though both its ends are inside.
-    machine = _machine(tmp_path, force="0 N", y_axis=True)
+    machine = _machine(tmp_path, force="0 N", letters="XY")
     text = "G1 X-90 Y300 F1000\nG3 X-90 Y270 I0 J-15\nM30\n"
     motion = plan(read_program(text), _limits(machine, read_program(text)))
     x = motion.position[:, 0]
@@ -704,3 +706,20 @@ def test_an_arc_bulging_past_the_travel_names_its_first_sample_in_millimetres(
         run_program(machine, text)
     assert (info.value.field, info.value.value) == ("program line 2", f"X{first * 1e3:.4g} mm")
     assert info.value.allowed == "within axes.X.travel, -100 to 700 mm"
+
+
+@pytest.mark.parametrize(
+    ("letters", "text"),
+    [
+        ("Y", "G1 Y10 F1000\nG2 X0 Y10 I5 J0\n"),  # X missing, in the XY plane
+        ("Z", "G1 Z10 F1000\nG18 G2 X0 Z10 I5 K0\n"),  # X missing, in the ZX plane
+    ],
+)
+def test_a_full_circle_through_a_missing_x_names_its_line(
+    tmp_path: Path, letters: str, text: str
+) -> None:
+    # X ends where it started, yet the circle moves it: the circle's line is named.
+    machine = _machine(tmp_path, force="0 N", letters=letters)
+    with pytest.raises(BallScrewInputError) as info:
+        run_program(machine, text)
+    assert (info.value.field, info.value.value) == ("program line 2", "X")
