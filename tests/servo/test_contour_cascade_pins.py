@@ -16,7 +16,9 @@ expected number is a hand count, a closed form or a computation of another kind:
 from __future__ import annotations
 
 import math
+import time
 from dataclasses import replace
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -365,6 +367,12 @@ def test_a_pre_rolling_length_is_named_in_micrometres() -> None:
 def test_no_guide_friction_is_allowed() -> None:
     # 0 N and 0 N*s/m are magnitudes of no friction, not refused (read from the estimate).
     assert _estimate(guide_coulomb=0.0, guide_viscous=0.0) == 402392
+    # Nor are a positive pre-rolling length and a small positive k_v (0.5 1/s: a lead-in of
+    # 30 s, 120000 samples more per axis and circle).
+    assert _estimate(pre_rolling_length=5e-6) == 402392
+    assert _estimate(kv=0.5) == 402392 + 4 * 2 * (120000 - 1500)
+    with pytest.raises(BallScrewInputError, match="--case"):
+        run_contour([])
 
 
 def _quick_table(speeds: np.ndarray, friction: np.ndarray, points: int, top: float):  # type: ignore[no-untyped-def]
@@ -384,7 +392,10 @@ def unstable():  # type: ignore[no-untyped-def]
     cases = [load_case(EXAMPLE), load_case(VERTICAL)]
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(contour, "fit_table", _quick_table)
-        return cases, run_contour(cases, radius=0.004, feed=0.02, kv=2000.0)
+        start = time.process_time()
+        result = run_contour(cases, radius=0.004, feed=0.02, kv=2000.0)
+        assert 0.0 < result.cpu_seconds <= time.process_time() - start
+        return cases, result
 
 
 def test_the_notes_of_a_run_say_its_table_and_lead_in(unstable, monkeypatch) -> None:  # type: ignore[no-untyped-def]
@@ -418,6 +429,7 @@ def test_each_axis_is_its_own_case(unstable) -> None:  # type: ignore[no-untyped
     assert result.axes[0].mass == pytest.approx(ax.mass) and result.axes[1].mass == ay.mass
     assert result.axes[1].external_force == pytest.approx(ay.external_force)
     assert ax.mass != ay.mass
+    assert [a.guide_viscous for a in result.axes] == [0.0, 0.0]  # none unless given
     for a, g, f, t in zip(result.axes, result.gains, result.figures, result.tables, strict=True):
         assert g == tune(a, kv=2000.0)
         assert f == loop_figures(a, g)
@@ -434,6 +446,59 @@ def test_each_axis_is_its_own_case(unstable) -> None:  # type: ignore[no-untyped
     acc = [c.value for c in result.checks if c.name.startswith("peak acceleration")]
     assert acc == [float(np.max(np.abs(ref[4]))), float(np.max(np.abs(ref[5])))]
     assert acc[0] != acc[1] and max(acc) <= math.hypot(math.pi / 3, 0.1)
+
+
+def test_the_runs_of_a_contour_and_their_reversal(axis: AxisDynamics) -> None:
+    # Each direction plain and compensated, then x's reversal at v^2/R (0.2 m/s^2 for
+    # 20 mm/s on 2 mm) plain and with x's table. x has no friction and a table of zero: its
+    # compensated reversal is the plain one; y's table (1000 N per m/s) would change it.
+    from ballscrew.servo.contour import _run_tests, reversal_test
+
+    plain = frictionless(axis).as_rigid()
+    rough = axis.as_rigid()
+    gains = (_stiff(plain.mass, 40.0, 2e-4), _stiff(rough.mass, 20.0, 2e-4))
+    zero = CompensationTable(np.array([-1.0, 1.0]), np.zeros(2), 0.0, 0.0, 1.0)
+    steps: list[str] = []
+    circles, reversals = _run_tests((plain, rough), gains, (zero, _linear_table()), 0.002,
+                                    0.02, ("CW",), True, None, steps.append)  # fmt: skip
+    assert steps == ["CW circle", "CW circle, compensated", "reversal", "reversal, compensated"]
+    assert [(c.clockwise, c.compensated) for c in circles] == [(True, False), (True, True)]
+    assert [r.acceleration for r in reversals] == pytest.approx([0.2, 0.2], rel=1e-12)
+    assert [r.compensated for r in reversals] == [False, True]
+    assert not np.any(reversals[0].trace.friction)  # x's axis
+    np.testing.assert_array_equal(reversals[1].trace.table, reversals[0].trace.table)
+    own = reversal_test(plain, gains[0], 0.02, 0.2)
+    np.testing.assert_array_equal(reversals[0].trace.table, own.trace.table)
+    # A given acceleration is used; without compensation, one circle and one reversal.
+    circles, reversals = _run_tests((plain, rough), gains, (zero, zero), 0.002, 0.02, ("CCW",),
+                                    False, 0.5, steps.append)  # fmt: skip
+    assert len(circles) == 1 and [r.acceleration for r in reversals] == [0.5]
+
+
+def test_the_notes_of_unsettled_circles_and_missing_motors() -> None:
+    from ballscrew.servo.contour import _contour_notes
+
+    a = replace(_axis(), notes=("an axis note",))
+    g = Gains(1e-4, 40.0, 1.0, 1.0, 1e4, 1e5, 1e-4, notes=("a gains note",))
+    g20 = replace(g, kv=20.0)
+    motor = SimpleNamespace(motor={"rated_speed": 300.0, "peak_torque": 10.0})
+    bare = SimpleNamespace(motor={"peak_torque": 10.0})
+    settled = _run([0.0], [0.0], 1e-5, residual=1e-7)
+    moving = _run([0.0], [0.0], 1e-5, residual=2e-6)
+    moving_comp = _run([0.0], [0.0], 1e-5, compensated=True, residual=3e-6)
+    notes = _contour_notes((a, a), (g, g20), (motor, bare), [settled, moving, moving_comp],  # type: ignore[arg-type]
+                           one_case=False, rigid=True, top=0.05)  # fmt: skip
+    text = " | ".join(notes)
+    assert notes[:4] == ["x: an axis note", "y: an axis note", "x: a gains note",
+                         "y: a gains note"]  # fmt: skip
+    assert text.count("had not settled") == 2
+    assert "the CCW circle had not settled: its following error changed by 2 um" in text
+    assert "the CCW circle with compensation had not settled" in text
+    assert "changed by 3 um" in text
+    assert "y: no [motor] rated_speed in the case" in text and "x: no [motor]" not in text
+    assert "rigid axes (one mass each)" in text and "one case for both axes" not in text
+    # The lead-in of the slower loop: 15/20 s.
+    assert "a lead-in arc of 15/k_v (0.75 s)" in text
 
 
 # --- the verdict's checks ----------------------------------------------------------------
