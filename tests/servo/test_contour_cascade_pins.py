@@ -105,6 +105,19 @@ def test_the_circles_kinematics_by_hand(clockwise: bool) -> None:
     np.testing.assert_allclose((vy[2:] - vy[:-2]) / (2 * ts), ay[1:-1], rtol=0, atol=1e-3)
 
 
+def test_the_ramp_follows_the_acceleration_asked_and_its_floor() -> None:
+    # 2 m/s^2: t_r = 1.5 v/a = 75 ms, so the ramp is half way (v/2) 37.5 ms in and at the
+    # feed from 75 ms; 100 m/s^2 would take 1.5 ms: the floor of 20 samples (10 ms) holds,
+    # half way at 5 ms. The path at the feed is at the feed's speed throughout.
+    for acceleration, t_r in ((2.0, 0.075), (100.0, 0.01)):
+        *_, vx, vy, ax, ay, window = circle_reference(0.01, 0.1, 5e-4, acceleration=acceleration)
+        speed = np.hypot(vx, vy)
+        assert speed[100 + round(t_r / 2 / 5e-4)] == pytest.approx(0.05, rel=1e-9)
+        np.testing.assert_allclose(speed[100 + round(t_r / 5e-4) : window.stop], 0.1, rtol=1e-12)
+        peak = float(np.max(np.abs(vx * ax + vy * ay) / np.maximum(speed, 1e-30)))
+        assert peak == pytest.approx(0.1 * math.pi / (2 * t_r), rel=1e-3)
+
+
 @pytest.mark.parametrize(
     ("radius", "feed", "lead_in", "flag"),
     [(0.0, 0.1, 0.0, "--radius"), (0.01, 0.0, 0.0, "--feed"), (0.01, 0.1, -0.1, "lead_in")],
@@ -246,24 +259,24 @@ def _stiff(mass: float, kv: float, ts: float = 1e-4) -> Gains:
 
 
 def test_each_axis_lags_by_its_own_first_order_loop(axis: AxisDynamics) -> None:
-    # x without friction at k_v 10 1/s, y with the screw's friction at 20 1/s, both rigid, no
+    # x without friction at k_v 20 1/s, y with the screw's friction at 10 1/s, both rigid, no
     # feed-forward: each coordinate follows k_v/(s + k_v), so its error on the settled circle
-    # (w = v/R = 10 rad/s) swings with the amplitude R w/sqrt(w^2 + k_v^2): 7.07 mm and
-    # 4.47 mm. 1 %: the 300 Hz velocity loop adds a phase of about w/(2 pi 300), and the
+    # (w = v/R = 10 rad/s) swings with the amplitude R w/sqrt(w^2 + k_v^2): 4.47 mm and
+    # 7.07 mm. 1 %: the 300 Hz velocity loop adds a phase of about w/(2 pi 300), and the
     # friction's glitches are micrometres.
     plain = frictionless(axis).as_rigid()
     rough = axis.as_rigid()
-    gains = (_stiff(plain.mass, 10.0), _stiff(rough.mass, 20.0))
+    gains = (_stiff(plain.mass, 20.0), _stiff(rough.mass, 10.0))
     r, v = 0.01, 0.1
     run = circular_test((plain, rough), gains, r, v)
     w = v / r
-    # The lead-in is 15 time constants of the slower loop (1.5 s): 500 + 1500 + 15000 + 6283
-    # + 1500 + 500 samples.
+    # The lead-in is 15 time constants of the slower loop, y's (1.5 s): 500 + 1500 + 15000
+    # + 6283 + 1500 + 500 samples.
     assert run.x.time.size == 25283 and run.y.time.size == 25283
     window = slice(500 + 1500 + 15000, 500 + 1500 + 15000 + 6283)
     ex, ey = run.x.error[window], run.y.error[window]
-    assert float(np.max(np.abs(ex))) == pytest.approx(r * w / math.hypot(w, 10.0), rel=0.01)
-    assert float(np.max(np.abs(ey))) == pytest.approx(r * w / math.hypot(w, 20.0), rel=0.01)
+    assert float(np.max(np.abs(ex))) == pytest.approx(r * w / math.hypot(w, 20.0), rel=0.01)
+    assert float(np.max(np.abs(ey))) == pytest.approx(r * w / math.hypot(w, 10.0), rel=0.01)
     assert not np.any(run.x.friction) and np.any(run.y.friction)
     # Settled: the error repeats one revolution later (to the interpolation's nanometre).
     assert run.settled and run.residual < 1e-8 and not run.compensated
@@ -271,17 +284,44 @@ def test_each_axis_lags_by_its_own_first_order_loop(axis: AxisDynamics) -> None:
 
 def test_each_axis_gets_its_own_table(axis: AxisDynamics) -> None:
     # A table of zero on x leaves x's run as it was; 1000 N per m/s on y (no friction to
-    # cancel: a disturbance) changes y's. Different axes and gains, so that a swap shows.
+    # cancel: a disturbance of 100 N at the feed, micrometres against the lag) changes y's.
+    # Different axes and gains, so that a swap shows; here x is the slower loop (10 1/s):
+    # a lead-in of 1.5 s, 250 + 750 + 7500 + 3142 + 750 + 250 samples of 0.2 ms.
     plain = frictionless(axis).as_rigid()
     rough = axis.as_rigid()
     gains = (_stiff(plain.mass, 10.0, 2e-4), _stiff(rough.mass, 20.0, 2e-4))
     zero = CompensationTable(np.array([-1.0, 1.0]), np.zeros(2), 0.0, 0.0, 1.0)
     bare = circular_test((plain, rough), gains, 0.01, 0.1)
     comp = circular_test((plain, rough), gains, 0.01, 0.1, tables=(zero, _linear_table()))
-    assert comp.compensated
+    assert comp.compensated and comp.x.time.size == 12642
     np.testing.assert_array_equal(comp.x.table, bare.x.table)
-    assert not np.any(comp.x.friction)
+    assert not np.any(comp.x.friction) and np.any(comp.y.friction)
     assert float(np.max(np.abs(comp.y.table - bare.y.table))) > 1e-7
+    window = slice(250 + 750 + 7500, 250 + 750 + 7500 + 3142)
+    ey = float(np.max(np.abs(comp.y.error[window])))
+    assert ey == pytest.approx(0.01 * 10.0 / math.hypot(10.0, 20.0), rel=0.01)
+
+
+def test_a_bump_just_outside_the_glitch_window_is_no_glitch() -> None:
+    # A circle with a 2 um bump on one sample at 119.5 deg (29.5 deg past the 90 deg
+    # quadrant: inside its +-30 deg window) or at 121.5 deg (31.5 deg past: outside).
+    from ballscrew.servo.contour import _analyse
+
+    n, r = 1440, 0.01
+    theta = 2.0 * math.pi * np.arange(n) / n
+
+    def glitch_90(at: float) -> float:
+        radius = r + 2e-6 * np.isclose(np.degrees(theta), at)
+        x, y = radius * np.cos(theta), radius * np.sin(theta)
+        xs, ys = np.concatenate([x, x[:2]]), np.concatenate([y, y[:2]])
+        zero = np.zeros(xs.size)
+        tx = Trace(zero, xs, zero, xs, xs, zero, zero)
+        ty = Trace(zero, ys, zero, ys, ys, zero, zero)
+        run = _analyse(tx, ty, r, slice(0, n), False, False, float(n))
+        return next(g.height for g in run.glitches if g.quadrant == 90.0)
+
+    assert glitch_90(119.5) == pytest.approx(2e-6, abs=1e-15)
+    assert glitch_90(121.5) == pytest.approx(0.0, abs=1e-15)
 
 
 def test_axes_sampled_at_different_times_are_refused(axis: AxisDynamics) -> None:
@@ -317,6 +357,45 @@ def test_the_reversal_on_a_binary_sampling_time() -> None:
     assert reversal_reference(v, 1e6, ts)[3] == 360
     # Any positive acceleration runs, however gentle.
     assert reversal_reference(v, 0.5, ts)[3] == 51 + 256 + 307 + 256
+
+
+def test_the_reversal_glitch_is_read_from_the_sample_before_the_crossing(monkeypatch) -> None:  # type: ignore[no-untyped-def]
+    # The two runs replaced by traces written here: the clean run lags by 1 mm throughout;
+    # the run with friction by 2 um more up to the crossing's sample k - 1, then 2.5 um, a
+    # peak of 9 um at k + 10 (7 um above the 2 um before) and a trough of -5.5 um at k + 30
+    # (7.5 um below): the glitch is -7.5 um, 30 samples (30 ms) after the crossing.
+    import ballscrew.servo.contour as contour
+    from ballscrew.servo.contour import reversal_test
+
+    ts = 1e-3
+    _, _, _, k = reversal_reference(0.02, 1.0, ts)
+
+    def fake(axis, gains, x, v, a, comp=None):  # type: ignore[no-untyped-def]
+        error = np.full(x.size, 1e-3)
+        if np.any(axis.friction):
+            extra = np.full(x.size, 2e-6)
+            extra[k], extra[k + 10], extra[k + 30] = 2.5e-6, 9e-6, -5.5e-6
+            error = error + extra
+        zero = np.zeros(x.size)
+        return Trace(np.arange(x.size) * ts, x, v, x - error, x - error, zero, zero)
+
+    monkeypatch.setattr(contour, "simulate_axis", fake)
+    axis = _axis()
+    axis = replace(axis, friction=np.array([-100.0, 100.0]))
+    run = reversal_test(axis, Gains(ts, 40.0, 1.0, 1.0, 1e4, 1e5, 1e-4), 0.02, 1.0)
+    assert run.glitch == pytest.approx(-7.5e-6, abs=1e-12)
+    assert run.time_to_peak == pytest.approx(0.030, abs=1e-12)
+
+
+def test_the_json_of_a_contour_in_millimetres_and_metres_per_minute(unstable) -> None:  # type: ignore[no-untyped-def]
+    # R 4 mm at 20 mm/s (1.2 m/min); H of two 1-degree bins 3 um and 1 um: 2 um.
+    _, result = unstable
+    cw = replace(_run([10.5], [3e-6]), clockwise=True)
+    ccw = _run([10.5], [1e-6])
+    doc = replace(result, circles=(cw, ccw)).as_dict()
+    assert doc["radius_mm"] == pytest.approx(4.0) and doc["feed_m_per_min"] == pytest.approx(1.2)
+    assert doc["circular_hysteresis_H_um"] == pytest.approx(2.0)
+    assert result.as_dict()["circular_hysteresis_H_um"] is None
 
 
 # --- run_contour: the estimate, the notes, the pairing of axes ---------------------------
