@@ -11,12 +11,18 @@ on is the one the module's docstring states: 801 speeds each way, from 1/801 of 
 from __future__ import annotations
 
 import math
+import warnings
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
 
+from ballscrew.axis.setup import axis_setup
+from ballscrew.chain import friction_torque
 from ballscrew.errors import BallScrewInputError
-from ballscrew.io.case import load_case
+from ballscrew.io.case import Case, load_case, parse_case
+from ballscrew.io.measured import MeasuredCurve
+from ballscrew.servo.export import axis_inertia, export_friction, log_speeds, run_export_friction
 from ballscrew.servo.tables import (
     CompensationTable,
     ControllerTable,
@@ -237,8 +243,6 @@ def test_a_vertical_axis_table_against_the_model_at_its_weight() -> None:
     # -120 kg * g. The table at the range's end equals the model's friction there (the
     # screw's torque at that speed and load, 2 pi / lead per N*m), within the table's own
     # largest error (the model is evaluated here directly, not through the map).
-    from ballscrew.chain import friction_torque
-
     case = load_case(ROOT / "examples" / "vertical_32x5.toml")
     vmax = 3 / 60
     t = controller_table(case, "complete", "lincurve", speed_range=vmax)
@@ -258,3 +262,180 @@ def test_a_vertical_axis_table_against_the_model_at_its_weight() -> None:
     with pytest.raises(BallScrewInputError, match="--torque-constant"):
         controller_table(case, "complete", "frict-comp", speed_range=vmax,
                          drive_unit=DriveUnit.parse("1 mA"), torque_constant=-1.0)  # fmt: skip
+
+
+# --------------------------------------------------------------------------- servo.export
+
+
+def _axis_case(axis: str) -> Case:
+    """The reference double nut (lead 10 mm) in mineral VG 68 with the given ``[axis]``."""
+    return parse_case('title = "axis"\n[screw]\ndesignation = "40x10 double 2.5x2 6.35"\n'
+                      'preload = "2 kN"\n[lubricant]\nname = "mineral ISO VG 68"\n'
+                      f"[axis]\n{axis}\n")  # fmt: skip
+
+
+CASE_BUNDLED = load_case(None)
+SPEEDS8 = np.geomspace(1.0, 300.0, 8)  # rad/s
+GEARED = 'moving_mass = "100 kg"\nmotor_inertia = "1e-3 kg*m**2"\n' \
+         'coupling_inertia = "2e-4 kg*m**2"\ngear_ratio = 3'  # fmt: skip
+
+
+def test_log_speeds_as_typed() -> None:
+    rpm = 2 * math.pi / 60
+    # A range of 3 is spaced logarithmically: 1, 10, 100 rpm (not 1, 50.5, 100).
+    assert log_speeds("1..100:3 rpm") == pytest.approx(np.array([1.0, 10.0, 100.0]) * rpm,
+                                                       rel=1e-12)  # fmt: skip
+    # A list is sorted; feeds with a lead: 0.6 m/min at 10 mm is 60 rpm.
+    assert log_speeds("3, 1, 2 rpm") == pytest.approx(np.array([1.0, 2.0, 3.0]) * rpm)
+    with pytest.warns(Warning, match="lead 10 mm"):
+        got = log_speeds("0.6..60 m/min:3", 0.01)
+    assert got == pytest.approx(np.array([60.0, 600.0, 6000.0]) * rpm, rel=1e-12)
+    with pytest.raises(BallScrewInputError, match=r"\(1 of the 3 given is 0 or below\)"):
+        log_speeds("0..10:3 rpm")
+    with pytest.raises(BallScrewInputError, match=r"\(2 of the 3 given are 0 or below\)"):
+        log_speeds("-1, 0, 1 rpm")
+    with pytest.raises(BallScrewInputError, match=r"3 or more speeds .*\(2 given\)"):
+        log_speeds("1..10:2 rpm")
+
+
+def test_axis_inertia_by_hand() -> None:
+    # J_s + J_c + J_m i^2 + m (l / 2 pi)^2 = 5e-4 + 2e-4 + 1e-3 * 9 + 100 (0.01 / 2 pi)^2.
+    axis = SimpleNamespace(screw_inertia=5e-4, coupling_inertia=2e-4, motor_inertia=1e-3,
+                           gear_ratio=3.0, moving_mass=100.0)  # fmt: skip
+    expected = 5e-4 + 2e-4 + 9e-3 + 100.0 * (0.01 / (2 * math.pi)) ** 2
+    assert axis_inertia(axis, 0.01) == pytest.approx(expected, rel=1e-12)  # type: ignore[arg-type]
+
+
+def _model(case: Case, w: np.ndarray, temperature: float, load: float) -> np.ndarray:
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return np.asarray(friction_torque(case.screw, case.lubricant, speed=w,
+                                          temperature=temperature, axial_load=load,
+                                          model="complete").total)  # fmt: skip
+
+
+def test_the_lookup_table_rows_by_hand() -> None:
+    # Three speeds mirrored, at 40 degC and 500 N: each row's torque is the model's, signed
+    # like the speed; table side through the 10 mm lead (v = w l / 2 pi, F = 2 pi T / l).
+    case = _axis_case('moving_mass = "100 kg"')
+    speeds = np.array([1.0, 10.0, 100.0])
+    out = export_friction(case, "complete", "table", speeds=speeds, temperatures=[40.0],
+                          axial_load=500.0)  # fmt: skip
+    w = np.array([-100.0, -10.0, -1.0, 1.0, 10.0, 100.0])
+    torque = np.sign(w) * _model(case, np.abs(w), 40.0, 500.0)
+    assert [r["speed [rad/s]"] for r in out.rows] == w.tolist()
+    assert [r["torque [N*m]"] for r in out.rows] == pytest.approx(torque, rel=1e-12)
+    assert [r["speed [rpm]"] for r in out.rows] == pytest.approx(w * 60 / (2 * math.pi))
+    assert [r["table speed [m/s]"] for r in out.rows] == pytest.approx(w * 0.01 / (2 * math.pi))
+    assert [r["force [N]"] for r in out.rows] == pytest.approx(torque * 2 * math.pi / 0.01)
+    assert out.axial_load == 500.0 and not out.notes
+    doc = out.as_dict()
+    assert doc["table"] == out.rows and "fits" not in doc and doc["lead_m"] == 0.01
+
+
+def test_fitted_rows_at_two_temperatures_and_the_document() -> None:
+    # The case's load (0 N) by default; at each temperature the fitted line's rows are
+    # T_c sgn w + b w with the fitted T_c and b, and the model's torque beside them.
+    case = _axis_case('moving_mass = "100 kg"')
+    speeds = np.geomspace(1.0, 300.0, 8)
+    out = export_friction(case, "complete", "coulomb-viscous", speeds=speeds,
+                          temperatures=[20.0, 40.0])  # fmt: skip
+    w = np.concatenate([-speeds[::-1], speeds])
+    assert [t for t, _ in out.fitted] == [20.0, 40.0] and len(out.rows) == 2 * w.size
+    for k, (temp, fit) in enumerate(out.fitted):
+        rows = out.rows[k * w.size : (k + 1) * w.size]
+        p = fit.parameters
+        line = p["coulomb_torque"] * np.sign(w) + p["viscous_coefficient"] * w
+        assert [r["torque coulomb-viscous [N*m]"] for r in rows] == pytest.approx(line)
+        model = np.sign(w) * _model(case, np.abs(w), temp, 0.0)
+        assert [r["torque complete [N*m]"] for r in rows] == pytest.approx(model, rel=1e-12)
+        assert [r["temperature [degC]"] for r in rows] == [temp] * w.size
+    doc = out.as_dict()
+    assert [f["temperature_C"] for f in doc["fits"]] == [20.0, 40.0]
+    assert doc["fits"][1]["axial_load_N"] == 0.0
+    assert doc["parameters"] == doc["fits"][0]["parameters"]
+    assert doc["rms_error_Nm"] == doc["fits"][0]["rms_error_Nm"]
+
+
+def test_lugre_takes_the_axis_inertia_by_hand() -> None:
+    # Critically damped bristle: sigma_1 = 2 sqrt(sigma_0 J), J = J_s + J_c + J_m i^2 +
+    # m (l / 2 pi)^2 (J_s as the axis set-up reads it from the screw); a given inertia
+    # replaces J.
+    case = _axis_case(GEARED)
+    axis = axis_setup(case.screw, case.axis, case.thermal, 0.0).axis
+    j = axis.screw_inertia + 2e-4 + 1e-3 * 9.0 + 100.0 * (0.01 / (2 * math.pi)) ** 2
+    speeds = np.geomspace(1.0, 300.0, 8)
+    out = export_friction(case, "complete", "lugre", speeds=speeds, bristle_stiffness=50.0)
+    p = out.fitted[0][1].parameters
+    assert p["bristle_damping"] == pytest.approx(2 * math.sqrt(50.0 * j), rel=1e-12)
+    # The curve beside the model's is the steady state, the Stribeck form of its parameters.
+    row = out.rows[-1]
+    w = 300.0
+    stribeck = (p["coulomb_torque"] + (p["static_torque"] - p["coulomb_torque"])
+                * math.exp(-((w / p["stribeck_speed"]) ** p["stribeck_exponent"]))
+                + p["viscous_coefficient"] * w)  # fmt: skip
+    assert row["torque lugre [N*m]"] == pytest.approx(stribeck, rel=1e-9)
+    given = export_friction(case, "complete", "lugre", speeds=speeds, bristle_stiffness=50.0,
+                            inertia=2e-3)  # fmt: skip
+    assert given.fitted[0][1].parameters["bristle_damping"] == pytest.approx(
+        2 * math.sqrt(50.0 * 2e-3), rel=1e-12
+    )
+
+
+def test_a_measured_curve_of_an_inclined_axis_keeps_its_load() -> None:
+    # The weight joins the model's load only: a measured curve already carries it.
+    case = _axis_case('moving_mass = "120 kg"\nincline = "90 deg"')
+    w = np.array([1.0, 3.0, 10.0, 30.0])
+    out = export_friction(case, "complete", "coulomb-viscous", speeds=w, axial_load=100.0,
+                          measured=MeasuredCurve(w, 0.3 + 2e-4 * w, "m"))  # fmt: skip
+    assert out.axial_load == 100.0 and not any("inclined" in n for n in out.notes)
+
+
+def _line_with(outliers: dict[int, float], n: int) -> MeasuredCurve:
+    """``n`` readings of 0.3 N*m + 2e-4 N*m*s/rad w, the given ones off by the given N*m."""
+    w = np.geomspace(1.0, 300.0, n)
+    t = 0.3 + 2e-4 * w
+    for i, off in outliers.items():
+        t[i] += off
+    return MeasuredCurve(w, t, "m", temperature=np.full(n, 25.0))
+
+
+def test_doubtful_readings_at_most_a_fifth_and_down_to_six_readings() -> None:
+    # The other readings lie exactly on a line, so their robust scale is the floor (1e-9 of
+    # the largest torque) and every reading 0.1 N*m off is far past 4 of it. 15 readings:
+    # at most 15 // 5 = 3 named, the most doubtful first; 6 readings for 2 parameters: the
+    # least that is judged (5 left, 2 + 3), and its one bad reading is named.
+    out = export_friction(CASE_BUNDLED, "complete", "coulomb-viscous", speeds=SPEEDS8,
+                          measured=_line_with({2: 0.4, 7: 0.3, 11: -0.2, 13: 0.1}, 15))  # fmt: skip
+    (named,) = [n for n in out.notes if "data row(s)" in n]
+    assert "data row(s) 3, 8, 12 lie" in named
+    out = export_friction(CASE_BUNDLED, "complete", "coulomb-viscous", speeds=SPEEDS8,
+                          measured=_line_with({4: 0.1}, 6))  # fmt: skip
+    (named,) = [n for n in out.notes if "data row(s)" in n]
+    assert "data row(s) 5 lie" in named
+    assert not any("too few" in n for n in out.notes)
+    out = export_friction(CASE_BUNDLED, "complete", "coulomb-viscous", speeds=SPEEDS8,
+                          measured=_line_with({4: 0.1}, 5))  # fmt: skip
+    assert any("5 readings for 2 parameters" in n for n in out.notes)
+    # Exact readings: none is named (each off by rounding only, below 4 floors).
+    out = export_friction(CASE_BUNDLED, "complete", "coulomb-viscous", speeds=SPEEDS8,
+                          measured=_line_with({}, 15))  # fmt: skip
+    assert not any("data row(s)" in n for n in out.notes)
+
+
+def test_the_load_map_defaults_to_the_cases_loads_mirrored() -> None:
+    # The XY example carries no process load: the map's loads are 0 N only; given loads are
+    # taken as they are; the temperature is the case's first (25 degC).
+    case = load_case(ROOT / "examples" / "xy_table_32x10.toml")
+    speeds = np.array([1.0, 10.0, 100.0])
+    m = run_export_friction(case, "complete", "load-map", speeds=speeds)
+    assert m.loads.tolist() == [0.0] and m.temperatures.tolist() == [25.0]  # type: ignore[union-attr]
+    loaded = _axis_case('moving_mass = "100 kg"\n[operation]\naxial_load = "1.5 kN"')
+    m = run_export_friction(loaded, "complete", "load-map", speeds=speeds)
+    assert m.loads.tolist() == [-1500.0, 0.0, 1500.0]  # type: ignore[union-attr]
+    m = run_export_friction(loaded, "complete", "load-map", speeds=speeds, loads=[-200.0, 300.0],
+                            temperatures=[30.0, 50.0])  # fmt: skip
+    assert m.loads.tolist() == [-200.0, 300.0]  # type: ignore[union-attr]
+    assert m.temperatures.tolist() == [30.0, 50.0]  # type: ignore[union-attr]
+    form = run_export_friction(loaded, "complete", "table", speeds=speeds, temperatures=[30.0])
+    assert form.temperatures == [30.0]  # type: ignore[union-attr]
