@@ -10,6 +10,7 @@ on is the one the module's docstring states: 801 speeds each way, from 1/801 of 
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import warnings
 from types import SimpleNamespace
@@ -19,10 +20,17 @@ import pytest
 
 from ballscrew.axis.setup import axis_setup
 from ballscrew.chain import friction_torque
+from ballscrew.design.limits import root_diameter
+from ballscrew.design.stiffness import (
+    design_nut_stiffness,
+    shaft_axial_stiffness,
+    torsional_axial_stiffness,
+)
 from ballscrew.errors import BallScrewInputError
 from ballscrew.io.case import Case, load_case, parse_case
 from ballscrew.io.measured import MeasuredCurve
 from ballscrew.servo.export import axis_inertia, export_friction, log_speeds, run_export_friction
+from ballscrew.servo.plant import AxisDynamics, axis_dynamics, frictionless
 from ballscrew.servo.tables import (
     CompensationTable,
     ControllerTable,
@@ -439,3 +447,130 @@ def test_the_load_map_defaults_to_the_cases_loads_mirrored() -> None:
     assert m.temperatures.tolist() == [30.0, 50.0]  # type: ignore[union-attr]
     form = run_export_friction(loaded, "complete", "table", speeds=speeds, temperatures=[30.0])
     assert form.temperatures == [30.0]  # type: ignore[union-attr]
+
+
+# --------------------------------------------------------------------------- servo.plant
+
+SPRUNG = GEARED + '\nbearing_span = "800 mm"\n[check]\nsupport_stiffness = "500 N/um"'
+
+
+def test_the_two_mass_plant_of_a_geared_axis_by_hand() -> None:
+    # m1 = (J_m i^2 + J_c + J_s)(2 pi / l)^2, m2 the moving mass; the spring is the shaft in
+    # tension and in torsion at mid-span, the nut and the bearings in series (each from
+    # its own function, summed here as compliances); damping 2 * 0.02 sqrt(k m1 m2 / M).
+    case = _axis_case(SPRUNG)
+    a = axis_dynamics(case, max_speed=0.2)
+    js = axis_setup(case.screw, case.axis, case.thermal, 0.0).axis.screw_inertia
+    m1 = (1e-3 * 9.0 + 2e-4 + js) * (2 * math.pi / 0.01) ** 2
+    assert a.motor_mass == pytest.approx(m1, rel=1e-12) and a.table_mass == 100.0
+    d_r = root_diameter(case.screw)
+    springs = [shaft_axial_stiffness(d_r, 0.8, 0.4, "fixed-supported"),
+               torsional_axial_stiffness(d_r, 0.4, 0.01), design_nut_stiffness(case.screw),
+               500e6]  # fmt: skip
+    k = 1.0 / sum(1.0 / float(s) for s in springs)
+    assert a.stiffness == pytest.approx(k, rel=1e-12)
+    assert a.damping == pytest.approx(0.04 * math.sqrt(k * m1 * 100.0 / (m1 + 100.0)), rel=1e-12)
+    assert (a.lead, a.gear_ratio, a.external_force) == (0.01, 3.0, 0.0)
+    assert any("nut at mid-span (400 mm" in n for n in a.notes)
+    assert not any("rigid" in n for n in a.notes)
+    # The modes: the eigenvalues of M^-1 K are 0 and w^2; the table on the spring with
+    # the motor held rings at sqrt(k / m2).
+    stiff = np.array([[k, -k], [-k, k]])
+    w2 = np.linalg.eigvals(np.diag([1 / m1, 1 / 100.0]) @ stiff).real.max()
+    assert a.eigenfrequency == pytest.approx(math.sqrt(w2) / (2 * math.pi), rel=1e-9)
+    assert a.antiresonance == pytest.approx(math.sqrt(k / 100.0) / (2 * math.pi), rel=1e-12)
+    # The friction map: 48 table speeds each way up to max_speed, the model's force at the
+    # nut's load (0 N) through the lead.
+    assert a.speeds.size == 96 and a.speeds[-1] == pytest.approx(0.2, rel=1e-12)
+    assert a.speeds[48] == pytest.approx(1e-5, rel=1e-12)
+    assert a.speeds[:48] == pytest.approx(-a.speeds[48:][::-1], rel=1e-12)
+    for v in (0.2, -0.2, 1e-5):
+        w = np.array([abs(v) * 2 * math.pi / 0.01])
+        force = float(_model(case, w, 20.0, 0.0)[0]) * 2 * math.pi / 0.01
+        assert float(np.interp(v, a.speeds, a.friction)) == pytest.approx(
+            math.copysign(force, v), rel=1e-9
+        )
+    # The bristle: creep friction (the mean of both slowest speeds') over 5 um, critically
+    # damped on the motor side; a length given replaces it.
+    creep = 0.5 * (abs(a.friction[47]) + abs(a.friction[48]))
+    assert a.coulomb_force() == pytest.approx(creep, rel=1e-12)
+    assert a.bristle_stiffness == pytest.approx(creep / 5e-6, rel=1e-12)
+    assert a.bristle_damping == pytest.approx(2 * math.sqrt(creep / 5e-6 * m1), rel=1e-12)
+    assert a.pre_rolling_length == pytest.approx(5e-6, rel=1e-12)
+    t = axis_dynamics(case, max_speed=0.2, drag_side="table", pre_rolling_length=2e-6)
+    assert t.bristle_stiffness == pytest.approx(creep / 2e-6, rel=1e-12)
+    assert t.bristle_damping == pytest.approx(2 * math.sqrt(creep / 2e-6 * 100.0), rel=1e-12)
+    assert t.drag_mass == 100.0 and a.drag_mass == pytest.approx(m1, rel=1e-12)
+    assert any("(given;" in n for n in t.notes) and any("(the default" in n for n in a.notes)
+
+
+def test_a_vertical_axis_carries_its_weight_on_the_table() -> None:
+    # 120 kg vertical: -120 g on the table, and the nut's friction at that load.
+    case = load_case(ROOT / "examples" / "vertical_32x5.toml")
+    a = axis_dynamics(case, max_speed=0.05, guide_coulomb=40.0, guide_viscous=3.0)
+    weight = -120.0 * 9.80665
+    assert a.external_force == pytest.approx(weight, rel=1e-12)
+    force = float(_model(case, np.array([0.05 * 2 * math.pi / 0.005]), 20.0, weight)[0])
+    assert a.friction[-1] == pytest.approx(force * 2 * math.pi / 0.005, rel=1e-9)
+    assert (a.guide_coulomb, a.guide_viscous) == (40.0, 3.0)
+    assert any("the weight along the axis" in n for n in a.notes)
+    assert not any("guideway friction left out" in n for n in a.notes)
+
+
+def _hand_axis(**changes: object) -> AxisDynamics:
+    """A two-mass axis by hand: 40 kg motor side, 60 kg table, 2e8 N/m, drag 50 N / 30 N."""
+    base = AxisDynamics("hand", 40.0, 60.0, 2e8, 1000.0, np.array([-1.0, -1e-3, 1e-3, 1.0]),
+                        np.array([-80.0, -30.0, 50.0, 90.0]), 8e6, 2e4, lead=0.01,
+                        gear_ratio=2.0)  # fmt: skip
+    return dataclasses.replace(base, **changes)  # type: ignore[arg-type]
+
+
+def test_the_plant_figures_by_hand() -> None:
+    a = _hand_axis()
+    assert a.mass == 100.0 and not a.rigid and a.drag_mass == 40.0
+    assert a.coulomb_force() == 40.0  # (30 + 50) / 2
+    assert a.pre_rolling_length == pytest.approx(40.0 / 8e6, rel=1e-12)
+    # sqrt(2e8 (1/40 + 1/60)) / 2 pi = 457.7 / 2 pi Hz; sqrt(2e8 / 60) / 2 pi.
+    assert a.eigenfrequency == pytest.approx(math.sqrt(2e8 / 24.0) / (2 * math.pi), rel=1e-12)
+    assert a.antiresonance == pytest.approx(math.sqrt(2e8 / 60.0) / (2 * math.pi), rel=1e-12)
+    # 100 N through 10 mm and a gear of 2: 100 * 0.01 / (2 pi 2) N*m.
+    assert float(a.motor_torque(100.0)) == pytest.approx(1.0 / (4 * math.pi), rel=1e-12)
+    d = a.as_dict()
+    assert d["stiffness_N_per_um"] == 200.0 and d["bristle_stiffness_N_per_um"] == 8.0
+    assert d["pre_rolling_length_um"] == pytest.approx(5.0, rel=1e-12)
+    assert d["eigenfrequency_Hz"] == a.eigenfrequency and d["friction_at_creep_N"] == 40.0
+    r = a.as_rigid()
+    assert r.rigid and r.damping == 0.0 and r.drag_mass == 100.0
+    assert r.bristle_damping == pytest.approx(2 * math.sqrt(8e6 * 100.0), rel=1e-12)
+    assert r.eigenfrequency == math.inf and r.antiresonance == math.inf
+    assert r.as_dict()["stiffness_N_per_um"] is None and r.as_dict()["antiresonance_Hz"] is None
+    table = _hand_axis(drag_side="table")
+    assert table.drag_mass == 60.0
+    bare = frictionless(_hand_axis(guide_coulomb=20.0, guide_viscous=5.0))
+    assert not np.any(bare.friction) and (bare.guide_coulomb, bare.guide_viscous) == (0.0, 0.0)
+    with pytest.raises(BallScrewInputError, match="drag_side"):
+        _hand_axis(drag_side="nut")
+
+
+def test_the_plants_inputs_are_checked() -> None:
+    with pytest.raises(BallScrewInputError, match="moving_mass"):
+        axis_dynamics(_axis_case("gear_ratio = 2"))
+    case = _axis_case(SPRUNG)
+    for bad in (0.0, -0.1):
+        with pytest.raises(BallScrewInputError, match="max_speed"):
+            axis_dynamics(case, max_speed=bad)
+    for bad in (0.0, -1e-6, math.inf):
+        with pytest.raises(BallScrewInputError, match="pre_rolling_length"):
+            axis_dynamics(case, pre_rolling_length=bad)
+    with pytest.raises(BallScrewInputError, match="drag_side"):
+        axis_dynamics(case, drag_side="nut")
+    # A single nut has a stiffness only under load; no span: a rigid shaft, said.
+    single = parse_case('title = "s"\n[screw]\ndesignation = "32x10 single 3x1 6.35"\n'
+                        '[lubricant]\nname = "mineral ISO VG 68"\n[axis]\n'
+                        'moving_mass = "50 kg"\n')  # fmt: skip
+    with pytest.raises(BallScrewInputError, match="single"):
+        axis_dynamics(single)
+    a = axis_dynamics(single, axial_load=1000.0)
+    k_nut = design_nut_stiffness(single.screw, 1000.0)
+    assert a.stiffness == pytest.approx(k_nut, rel=1e-12)
+    assert any("no span" in n for n in a.notes) and any("bearings rigid" in n for n in a.notes)
