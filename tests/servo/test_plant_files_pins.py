@@ -29,8 +29,10 @@ from ballscrew.design.stiffness import (
 from ballscrew.errors import BallScrewInputError
 from ballscrew.io.case import Case, load_case, parse_case
 from ballscrew.io.measured import MeasuredCurve
+from ballscrew.servo.cascade import Gains
 from ballscrew.servo.export import axis_inertia, export_friction, log_speeds, run_export_friction
 from ballscrew.servo.plant import AxisDynamics, axis_dynamics, frictionless
+from ballscrew.servo.simulate import _interp, simulate_axis, substeps
 from ballscrew.servo.tables import (
     CompensationTable,
     ControllerTable,
@@ -574,3 +576,186 @@ def test_the_plants_inputs_are_checked() -> None:
     k_nut = design_nut_stiffness(single.screw, 1000.0)
     assert a.stiffness == pytest.approx(k_nut, rel=1e-12)
     assert any("no span" in n for n in a.notes) and any("bearings rigid" in n for n in a.notes)
+
+
+# --------------------------------------------------------------------------- servo.simulate
+
+FLAT = np.array([-1.0, -1e-3, 1e-3, 1.0])  # m/s: a map whose friction is 50 N at every speed
+
+
+def _rigid(**changes: object) -> AxisDynamics:
+    """A rigid 100 kg axis (40 + 60 kg), 50 N of screw drag, a 1 um bristle (stiff)."""
+    s0 = 50.0 / 1e-6
+    base = AxisDynamics("rigid", 40.0, 60.0, math.inf, 0.0, FLAT, 50.0 * np.sign(FLAT), s0,
+                        2.0 * math.sqrt(s0 * 100.0))  # fmt: skip
+    return dataclasses.replace(base, **changes)  # type: ignore[arg-type]
+
+
+def _open_loop(ts: float, tau: float = 1e-12, **changes: float) -> Gains:
+    """No feedback (gains of 1e-300): the force is the feed-forward and the compensation."""
+    return dataclasses.replace(Gains(ts, 1e-300, 0.0, 0.0, 1e-300, 0.0, tau), **changes)  # type: ignore[arg-type]
+
+
+def _second_difference(x: np.ndarray, i: int, di: int, ts: float) -> float:
+    """The acceleration of a parabola through x[i - di], x[i], x[i + di] [m/s^2]."""
+    return float(x[i + di] - 2 * x[i] + x[i - di]) / (di * ts) ** 2
+
+
+def test_substeps_by_hand() -> None:
+    # The fastest of sqrt(s0 / m_drag) = 447 1/s, s1 / m_drag = 500 1/s, the mode
+    # sqrt(2e8 / 24 kg) = 2887 1/s and the guide's 2 sqrt(20 N / 1 um / 60 kg) = 1155 1/s,
+    # with w h <= 0.1: ceil(1e-3 * 2887 / 0.1) = 29 per millisecond.
+    a = _hand_axis(guide_coulomb=20.0)
+    assert substeps(a, 1e-3) == 29
+    assert substeps(_hand_axis(), 1e-3) == 29
+    assert substeps(a, 1e-6) == 1
+    # Rigid: sqrt(8e6 / 100) = 283, 2 sqrt(8e6 100) / 100 = 566, guide 2 sqrt(2e7 / 100) = 894.
+    assert substeps(a.as_rigid(), 1e-3) == 9
+    # The table's bristle drag alone: 2e4 / 60 kg = 333 1/s and sqrt(8e6 / 60) = 365 1/s,
+    # below the mode: 29 still; with a soft spring (2e5 N/m: 91 1/s) the bristle sets it.
+    soft = _hand_axis(stiffness=2e5, drag_side="table")
+    assert substeps(soft, 1e-3) == math.ceil(1e-3 * math.sqrt(8e6 / 60.0) / 0.1)
+
+
+def test_interpolation_by_hand() -> None:
+    xs, ys = [0.0, 1.0, 3.0], [0.0, 2.0, 6.0]
+    got = [_interp(xs, ys, x) for x in (-1.0, 0.0, 0.5, 1.0, 2.0, 3.0, 4.0)]
+    assert got == [0.0, 0.0, 1.0, 2.0, 4.0, 6.0, 6.0]
+
+
+def test_a_force_step_on_two_masses_against_the_closed_form() -> None:
+    # No friction, no damping, no feedback: F = 300 N on the motor side from t = 0, a
+    # constant -500 N on the table that the spring carries from the start. The centre of
+    # mass accelerates at F / M; the spring's stretch u = x1 - x2 - ext / k rings at
+    # w = sqrt(k (1/m1 + 1/m2)) around F / (m1 w^2):
+    # x1 = F t^2 / 2M + (m2 / M) u, x2 - ext / k = F t^2 / 2M - (m1 / M) u,
+    # u = F / (m1 w^2) (1 - cos w t). Semi-implicit Euler with w h <= 0.1 over 4 periods
+    # keeps the phase within (w h)^2 / 24 per radian: 2 % of u's swing, 1e-3 of x.
+    a = frictionless(_hand_axis(damping=0.0, external_force=-500.0))
+    ts, n = 1e-4, 400
+    t = np.arange(n) * ts
+    force = np.full(n, 300.0)
+    trace = simulate_axis(a, _open_loop(ts), np.zeros(n), np.zeros(n), np.zeros(n),
+                          compensation=force)  # fmt: skip
+    w = math.sqrt(2e8 * (1 / 40.0 + 1 / 60.0))
+    assert w * t[-1] > 2 * math.pi * 4
+    u = 300.0 / (40.0 * w * w) * (1 - np.cos(w * t))
+    centre = 300.0 * t**2 / 200.0
+    swing = 2 * 300.0 / (40.0 * w * w)
+    assert trace.motor == pytest.approx(centre + 0.6 * u, abs=0.02 * swing + 1e-3 * centre[-1])
+    tolerance = 0.02 * swing + 1e-3 * centre[-1]
+    assert trace.table + 500.0 / 2e8 == pytest.approx(centre - 0.4 * u, abs=tolerance)
+    assert (
+        trace.time == pytest.approx(t, rel=1e-12) and trace.force[-1] == 800.0
+    )  # 300 N + the 500 N held
+    assert trace.error == pytest.approx(-trace.table, rel=1e-12)
+
+
+def test_the_current_lag_and_the_acceleration_feed_forward_against_the_closed_form() -> None:
+    # A rigid frictionless 100 kg: F = 0.5 * 100 kg * 2 m/s^2 + 50 N through a lag of 5 ms,
+    # F(t) = 150 N (1 - e^(-t/tau)); x = (F / M)(t^2 / 2 - tau t + tau^2 (1 - e^(-t/tau))).
+    # A stiff bristle (5e11 N/m) makes the step h 1.4 us: first order, h / t = 1e-3 of x
+    # from 5 ms on.
+    a = frictionless(_rigid(bristle_stiffness=5e11))
+    ts, n, tau = 1e-3, 51, 5e-3
+    trace = simulate_axis(a, _open_loop(ts, tau, acceleration_ff=0.5), np.zeros(n),
+                          np.zeros(n), np.full(n, 2.0), compensation=np.full(n, 50.0))  # fmt: skip
+    t = trace.time
+    x = 1.5 * (t**2 / 2 - tau * t + tau**2 * (1 - np.exp(-t / tau)))
+    assert trace.table[5:] == pytest.approx(x[5:], rel=1e-3)
+    assert trace.motor == pytest.approx(trace.table, rel=1e-12)
+    # The force is recorded at the end of its sample.
+    assert trace.force[-1] == pytest.approx(150.0 * (1 - math.exp(-(t[-1] + ts) / tau)), rel=1e-6)
+
+
+@pytest.mark.parametrize("sign", [1.0, -1.0])
+def test_screw_and_guide_friction_take_their_share_of_a_constant_force(sign: float) -> None:
+    # 300 N on the rigid 100 kg against the screw's 50 N and the guide's 30 N: once the
+    # bristles have built up (micrometres of travel), a = 220 / 100 = 2.2 m/s^2 and the
+    # friction reported is the map's 50 N (the bristle at its steady deflection g / s0).
+    # The acceleration from a second difference of positions 20 ms apart: the bristles'
+    # start-up only shifts the parabola. 1e-3: the integration's first-order error.
+    a = _rigid(guide_coulomb=30.0)
+    ts, n = 1e-3, 101
+    trace = simulate_axis(a, _open_loop(ts), np.zeros(n), np.zeros(n), np.zeros(n),
+                          compensation=np.full(n, 300.0 * sign))  # fmt: skip
+    assert _second_difference(trace.table, 70, 20, ts) == pytest.approx(2.2 * sign, rel=1e-3)
+    assert trace.friction[-1] == pytest.approx(50.0 * sign, rel=1e-6)
+    # The same on two masses, the drag on either side.
+    for side in ("motor", "table"):
+        b = _hand_axis(guide_coulomb=30.0, drag_side=side, friction=50.0 * np.sign(FLAT),
+                       speeds=FLAT)  # fmt: skip
+        trace = simulate_axis(b, _open_loop(ts), np.zeros(n), np.zeros(n), np.zeros(n),
+                              compensation=np.full(n, 300.0 * sign))  # fmt: skip
+        for x in (trace.motor, trace.table):
+            assert _second_difference(x, 70, 20, ts) == pytest.approx(2.2 * sign, rel=2e-3)
+        assert trace.friction[-1] == pytest.approx(50.0 * sign, rel=1e-3)
+
+
+def test_viscous_guide_friction_against_the_closed_form() -> None:
+    # 100 N on a rigid frictionless 100 kg with 100 N*s/m on its guides: v = 1 - e^(-t),
+    # x = t - (1 - e^(-t)) [m, s]; on two masses the same (the spring is stiff), the
+    # table's viscous drag on the table.
+    ts, n = 1e-3, 501
+    t = np.arange(n) * ts
+    x = t - (1 - np.exp(-t))
+    for a in (frictionless(_rigid()), frictionless(_hand_axis())):
+        a = dataclasses.replace(a, guide_viscous=100.0)
+        trace = simulate_axis(a, _open_loop(ts), np.zeros(n), np.zeros(n), np.zeros(n),
+                              compensation=np.full(n, 100.0))  # fmt: skip
+        assert trace.table[100:] == pytest.approx(x[100:], rel=2e-3)
+
+
+def _loop(ts: float, mass: float, **changes: float) -> Gains:
+    """A P position loop (k_v 50 1/s) over a PI velocity loop crossing at 300 Hz."""
+    wc = 2 * math.pi * 300.0
+    base = Gains(ts, 50.0, 0.0, 0.0, mass * wc, mass * wc * wc / 10.0, 5e-5)
+    return dataclasses.replace(base, **changes)  # type: ignore[arg-type]
+
+
+def test_the_loop_holds_the_encoders_position_and_the_offset() -> None:
+    # A vertical-like load of -1000 N through a 2e8 N/m spring: at rest the table sits
+    # 5 um below the motor. With the motor's encoder the motor stays at 0; with a linear
+    # scale the integrator moves the motor until the table is at 0 (motor at +5 um); an
+    # offset of 20 um is followed as a reference of 20 um, the trace keeping x_ref = 0.
+    # After 0.4 s (20 time constants of k_v) the error left is below 1e-9 m.
+    a = frictionless(_hand_axis(external_force=-1000.0))
+    ts, n = 1e-4, 4001
+    zero = np.zeros(n)
+    motor = simulate_axis(a, _loop(ts, a.mass), zero, zero, zero)
+    assert motor.motor[-1] == pytest.approx(0.0, abs=1e-9)
+    assert motor.table[-1] == pytest.approx(-5e-6, abs=1e-9)
+    scale = simulate_axis(a, _loop(ts, a.mass, feedback="table"), zero, zero, zero)  # type: ignore[arg-type]
+    assert scale.table[-1] == pytest.approx(0.0, abs=1e-9)
+    assert scale.motor[-1] == pytest.approx(5e-6, abs=1e-9)
+    offset = simulate_axis(a, _loop(ts, a.mass), zero, zero, zero,
+                           position_offset=np.full(n, 2e-5))  # fmt: skip
+    assert offset.motor[-1] == pytest.approx(2e-5, abs=1e-9)
+    assert offset.x_ref.tolist() == zero.tolist()
+    assert offset.error[-1] == pytest.approx(-(2e-5 - 5e-6), abs=1e-9)
+
+
+def test_the_speed_feed_forward_alone_sets_the_speed() -> None:
+    # Without the position loop (k_v = 0) and the integrator, the velocity loop drives
+    # the speed from the encoder to 0.5 v_ref: 0.1 m/s for v_ref = 0.2, with the time
+    # constant M / k_p = 10 ms; after 0.3 s it is there to e^-30.
+    a = frictionless(_rigid())
+    ts, n = 1e-4, 3001
+    gains = Gains(ts, 1e-300, 0.5, 0.0, 1e4, 0.0, 5e-5)
+    trace = simulate_axis(a, gains, np.zeros(n), np.full(n, 0.2), np.zeros(n))
+    assert (trace.motor[-1] - trace.motor[-2]) / ts == pytest.approx(0.1, rel=1e-6)
+
+
+def test_a_diverging_loop_and_bad_references_are_refused() -> None:
+    a = frictionless(_rigid())
+    n = 200
+    zero = np.zeros(n)
+    with pytest.raises(BallScrewInputError, match="gains"):
+        # k_p T_s / M = 1e4: each sample multiplies the speed's error by about 1e4.
+        simulate_axis(a, _loop(1e-3, a.mass, kp=1e9), np.r_[0.0, zero[1:] + 1e-3], zero, zero)
+    with pytest.raises(BallScrewInputError, match="reference"):
+        simulate_axis(a, _loop(1e-3, a.mass), zero, zero[:-1], zero)
+    with pytest.raises(BallScrewInputError, match="reference"):
+        simulate_axis(a, _loop(1e-3, a.mass), [0.0], [0.0], [0.0])
+    two = simulate_axis(a, _loop(1e-3, a.mass), [0.0, 0.0], [0.0, 0.0], [0.0, 0.0])
+    assert two.time.tolist() == [0.0, 1e-3]
