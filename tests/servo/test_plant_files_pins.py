@@ -81,6 +81,10 @@ def test_target_curve_by_hand() -> None:
     got = target_curve(np.array([-2.0, -1.0, 1.0, 2.0]), np.array([-4.0, -3.0, 1.0, 2.0]),
                        np.array([-3.0, -1.5, -0.5, 0.0, 0.5, 1.5, 3.0]))  # fmt: skip
     assert got.tolist() == [-4.0, -3.5, -3.0, 0.0, 1.0, 1.5, 2.0]
+    # A point at rest belongs to neither direction: each is still held at its slowest speed.
+    got = target_curve(np.array([-2.0, -1.0, 0.0, 1.0, 2.0]),
+                       np.array([-4.0, -3.0, 0.0, 1.0, 2.0]), np.array([-0.5, 0.5]))  # fmt: skip
+    assert got.tolist() == [-3.0, 1.0]
 
 
 @pytest.mark.parametrize(("points", "kind"), [(16, "two-sided"), (20, "one-sided"),
