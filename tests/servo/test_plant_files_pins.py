@@ -184,6 +184,43 @@ def test_one_free_breakpoint_is_placed_where_a_scan_finds_the_least_error(
     assert rms(float(positive[1])) <= best * (1 + 1e-9)
 
 
+def _kinked(kinks: list[float], slopes: list[float]):  # type: ignore[no-untyped-def]
+    """A friction of 50 N at the grid's slowest speed, linear between ``kinks`` [m/s]."""
+
+    def magnitude(v: np.ndarray) -> np.ndarray:
+        out = 50.0 + slopes[0] * (v - GRID[0])
+        for k, a, b in zip(kinks, slopes[:-1], slopes[1:], strict=True):
+            out = out + (b - a) * np.clip(v - k, 0.0, None)
+        return out
+
+    return lambda v: np.sign(v) * magnitude(np.abs(v))
+
+
+@pytest.mark.parametrize(
+    ("kinks", "slopes", "points", "one"),
+    [
+        ([GRID[0] + 2 * STEP], [-1e4, 300.0], 4, True),
+        ([GRID[0] + 2 * STEP], [-1e4, 300.0], 6, False),
+        ([0.003, 0.01, 0.04], [-2000.0, -500.0, 300.0, 100.0], 10, False),
+    ],
+)
+def test_a_friction_with_as_many_kinks_as_free_breakpoints_is_fitted_exactly(
+    kinks: list[float], slopes: list[float], points: int, one: bool
+) -> None:
+    # A piecewise-linear friction whose kinks can all be breakpoints is fitted with no
+    # error there, and only there: the optimiser must find them. The first kink lies two
+    # grid steps from the slowest speed (breakpoints may be one step apart); the others
+    # need three breakpoints placed together. 1e-6 N of kinks worth tens of N (the
+    # optimiser stops within 1e-4 of each spacing's logarithm: 1e-9 N is reached).
+    f = _kinked(kinks, slopes)
+    speeds = np.unique(np.concatenate([S, kinks]))
+    speeds = np.concatenate([-speeds[::-1], speeds])
+    t = fit_table(speeds, f(speeds), points, VMAX, one_sided=one)
+    assert t.rms_error < 1e-6
+    positive = t.speed[t.speed > 0]
+    assert positive[1 : 1 + len(kinks)] == pytest.approx(kinks, rel=1e-5)
+
+
 def test_table_sizes_and_range_are_checked() -> None:
     f = _linear(MAP_V)
     for bad in (0.0, -0.1, math.nan):
@@ -194,6 +231,9 @@ def test_table_sizes_and_range_are_checked() -> None:
                        (2, {"one_sided": True})):  # fmt: skip
         with pytest.raises(BallScrewInputError, match="points"):
             fit_table(MAP_V, f, points, VMAX, **kw)  # type: ignore[arg-type]
+    # An even count with a zero point was fitted with one point fewer than asked.
+    with pytest.raises(BallScrewInputError, match="an odd count with one"):
+        fit_table(MAP_V, f, 10, VMAX, zero_point=True)
     assert fit_table(MAP_V, f, 4, VMAX).speed.size == 4
     assert fit_table(MAP_V, f, 5, VMAX, zero_point=True).speed.size == 5
     assert fit_table(MAP_V, f, 3, VMAX, one_sided=True).speed.size == 3
@@ -276,6 +316,13 @@ def test_a_vertical_axis_table_against_the_model_at_its_weight() -> None:
     with pytest.raises(BallScrewInputError, match="--torque-constant"):
         controller_table(case, "complete", "frict-comp", speed_range=vmax,
                          drive_unit=DriveUnit.parse("1 mA"), torque_constant=-1.0)  # fmt: skip
+
+
+def test_an_inclined_axis_without_a_moving_mass_adds_no_weight() -> None:
+    # The load given is the nut's: no mass, no weight along the screw.
+    case = _axis_case('incline = "90 deg"')
+    t = controller_table(case, "complete", "charcurve", speed_range=0.05, axial_load=300.0)
+    assert t.axial_load == 300.0 and t.table.speed.size == 11
 
 
 # --------------------------------------------------------------------------- servo.export
