@@ -131,7 +131,7 @@ def fit_table(
     if not vmax > 0.0:
         raise BallScrewInputError("speed range", vmax, "a positive speed [m/s]")
     side = points - 1 if one_sided else (points - 1 if zero_point else points) // 2
-    if side < 2 or (not one_sided and not zero_point and points % 2):
+    if side < 2 or (not one_sided and (points % 2 == 1) != zero_point):
         raise BallScrewInputError("points", points, "at least 4 (an even count without a "
                                   "zero point, an odd count with one)")  # fmt: skip
     grid = np.linspace(vmax / GRID, vmax, GRID)
