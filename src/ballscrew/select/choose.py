@@ -63,7 +63,7 @@ from .. import lubricants
 from ..axis.check import CREEP_SPEED, AxisCheck, Criterion, run_check
 from ..axis.duty import HISTORY_POINTS, motion_plausibility, run_energy
 from ..axis.energy import distinct_pairs, screw_motion
-from ..axis.motion import MOVE_KEYS, Profile
+from ..axis.motion import Profile
 from ..axis.setup import axis_setup
 from ..axis.thermal import SteadyState, steady_temperatures, temperature_histories
 from ..axis.uncertainty import CONFIDENCE
@@ -550,7 +550,7 @@ def _duty(move: Mapping[str, float] | None) -> str:
         return "the profile's duty"
     return ", ".join(
         f"{k}={v * _SHOWN[k][1]:.6g} {_SHOWN[k][0]}" if k in _SHOWN
-        else f"{k}={v:g} {MOVE_KEYS[k][0] if k in MOVE_KEYS else ''}".rstrip()
+        else f"{k}={v:g}"  # a key no move has (a library caller's own): no unit known
         for k, v in move.items()
     )  # fmt: skip
 
