@@ -353,6 +353,9 @@ def plan(
         for lower in RETRY_LOWER:
             # An exit speed at the feed cap to the last digit can be one ruckig refuses (it
             # raises): the exit is lowered a little, and the next block enters at it.
+            ex[k] *= 1.0 - lower
+            if k + 1 < n:
+                en[k + 1] = min(en[k + 1], ex[k])
             inp.target_velocity = [ex[k]]
             inp.max_velocity = [max(feeds[k], en[k], ex[k])]
             try:
@@ -362,9 +365,6 @@ def plan(
             prof = traj.profiles[0][0]
             if result == Result.Working and prof.brake.duration <= 0.0 >= prof.accel.duration:
                 break
-            ex[k] *= 1.0 - lower
-            if k + 1 < n:
-                en[k + 1] = min(en[k + 1], ex[k])
         else:
             raise BallScrewInputError(
                 f"program line {int(program.line[k])}", f"{result}",

@@ -1,0 +1,338 @@
+"""The planner's samples, its arcs' axes, its bound before planning and its retries, by hand.
+
+Each pin checks the motion against a closed form written out here: the jerk-limited S-curve
+from rest to rest (module docstring of the planner) reaching its top speed :math:`v` and
+acceleration :math:`a` has two jerk phases of :math:`a/j`, a phase of constant acceleration
+of :math:`v/a - a/j` and, over :math:`L`, a cruise of :math:`L/v - v/a - a/j`; a move too short
+for the acceleration is four jerk phases of :math:`T = (L/2j)^{1/3}`. Ruckig plans those
+phases to about 1e-12 s, so sample counts are pinned exactly where no phase's duration is
+within 1e-9 of a multiple of the sample time (each ratio is written out).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from ballscrew.errors import BallScrewInputError
+from ballscrew.program.gcode import read_program
+from ballscrew.program.planner import Limits, at_rest, least_samples, plan
+
+LIMITS = Limits(
+    feed=np.array([0.5, 0.5, 0.25]),
+    acceleration=np.array([2.0, 3.0, 2.0]),
+    jerk=np.array([50.0, 60.0, 40.0]),
+    rapid_feed=0.5,
+    path_tolerance=2e-5,
+    sample_time=4.5e-3,
+)
+
+
+def with_sample_time(dt: float) -> Limits:
+    return Limits(feed=LIMITS.feed, acceleration=LIMITS.acceleration, jerk=LIMITS.jerk,
+                  rapid_feed=0.5, path_tolerance=2e-5, sample_time=dt)  # fmt: skip
+
+
+# --- samples of lines -------------------------------------------------------------------
+
+
+def test_a_line_is_sampled_every_sample_time_in_its_speed_changes_and_not_in_its_cruise() -> None:
+    # 300 mm on X at 0.5 m/s, 2 m/s^2, 50 m/s^3: jerk phases of a/j = 0.04 s (8.9 samples
+    # of 4.5 ms: 9), the constant acceleration v/a - a/j = 0.21 s (46.7: 47), the cruise
+    # L/v - v/a - a/j = 0.31 s one sample; twice the speed change, and the block's end.
+    m = plan(read_program("G1 X300 F30000\n"), LIMITS)
+    assert m.time.size == 2 * (9 + 47 + 9) + 1 + 1
+    assert m.time[0] == 0.0 and m.duration == pytest.approx(0.6 + 0.25 + 0.04, rel=1e-9)
+    gaps = np.diff(m.time)
+    # The cruise is one gap of 0.31 s, from its start to the first sample of the braking.
+    assert np.max(gaps) == pytest.approx(0.31, rel=1e-9)
+    assert np.sort(gaps)[-2] <= 4.5e-3 * (1 + 1e-9)
+    # The first sample starts the jerk phase at X's 50 m/s^3; the last is at rest at the end.
+    np.testing.assert_allclose(m.jerk[0], [50.0, 0.0, 0.0], rtol=1e-12)
+    assert np.all(m.jerk[-1] == 0.0) and np.all(m.acceleration[-1] == 0.0)
+    assert np.all(m.velocity[-1] == 0.0) and np.all(m.position[-1] == [0.3, 0.0, 0.0])
+
+
+def test_a_short_line_has_four_jerk_phases_and_no_sample_in_its_empty_phases() -> None:
+    # 1 mm on X: no acceleration nor cruise phase, four jerk phases of T = (L/2j)^(1/3) =
+    # 21.5 ms (4.8 samples of 4.5 ms: 5 each) and the end: 21 samples, no two at one time.
+    t_j = (1e-3 / (2 * 50.0)) ** (1 / 3)
+    m = plan(read_program("G1 X1 F30000\n"), LIMITS)
+    assert m.duration == pytest.approx(4 * t_j, rel=1e-9)
+    assert m.time.size == 4 * 5 + 1
+    assert np.all(np.diff(m.time) > 0.0)
+    # The path speed peaks at j T^2 in the middle, which is a sample (a phase's start).
+    assert np.max(m.path_speed) == pytest.approx(50.0 * t_j**2, rel=1e-9)
+
+
+def test_the_default_sample_time_is_five_milliseconds() -> None:
+    # X at 2.2 m/s^2: jerk phases of 2.2/50 = 44 ms (8.8 samples of 5 ms: 9), the constant
+    # acceleration 0.5/2.2 - 0.044 = 183.3 ms (36.7: 37); at 5.5 ms it would be 8 and 34.
+    lim = Limits(feed=np.full(3, 0.5), acceleration=np.full(3, 2.2), jerk=np.full(3, 50.0),
+                 rapid_feed=0.5, path_tolerance=2e-5)  # fmt: skip
+    m = plan(read_program("G1 X300 F30000\n"), lim)
+    assert m.time.size == 2 * (9 + 37 + 9) + 1 + 1
+
+
+def test_a_junction_is_sampled_twice_and_its_speed_carried_over() -> None:
+    # Two collinear halves at the feed: the first block ends at 0.5 m/s, the second starts
+    # there; both samples at one time, with the path speed 0.5 and no acceleration at the end.
+    m = plan(read_program("G1 X150 F30000\nG1 X300\n"), LIMITS)
+    junction = np.flatnonzero(np.diff(m.block) != 0)
+    assert junction.size == 1
+    k = int(junction[0])
+    assert m.time[k] == m.time[k + 1]
+    np.testing.assert_allclose(m.position[k], [0.15, 0.0, 0.0], atol=1e-15)
+    assert m.path_speed[k] == pytest.approx(0.5, rel=1e-6)
+    assert m.path_speed[k + 1] == pytest.approx(0.5, rel=1e-6)
+    assert np.all(m.acceleration[k] == 0.0)
+
+
+def test_the_nominal_time_and_the_feed_flags() -> None:
+    # A rapid of 300 mm at 0.5 m/s (0.6 s), a feed back at 0.5 m/s (0.6 s), a dwell of 0.5 s
+    # and a half circle of R 10 mm at 0.5 m/s (pi x 0.01 / 0.5 s); only G1 and G3 feed.
+    text = "G0 X300\nG1 X0 F30000\nG4 P0.5\nG3 X-20 I-10 J0\n"
+    m = plan(read_program(text), LIMITS)
+    assert m.nominal_time == pytest.approx(0.6 + 0.6 + 0.5 + math.pi * 0.01 / 0.5, rel=1e-12)
+    for block, feeding in ((0, False), (1, True), (2, False), (3, True)):
+        assert np.all(m.feeding[m.block == block] == feeding)
+    # The dwell's samples stand at X0 for its 0.5 s.
+    dwell = m.block == 2
+    assert np.ptp(m.time[dwell]) == pytest.approx(0.5, rel=1e-12)
+    assert np.all(m.position[dwell] == 0.0) and np.all(m.velocity[dwell] == 0.0)
+
+
+def test_a_program_without_time_stands_at_its_start() -> None:
+    # No block, or only a dwell of 0 s: one sample at rest, at time 0, at the start given.
+    for text, blocks in (("M30\n", 0), ("G4 P0\nG4 P0\n", 2)):
+        program = read_program(text, start=(0.1, 0.2, 0.3))
+        for m in (plan(program, LIMITS), at_rest(program)):
+            assert m.time.tolist() == [0.0] and m.path_speed.tolist() == [0.0]
+            expected = [[0.1, 0.2, 0.3]] if blocks else [[0.0, 0.0, 0.0]]
+            np.testing.assert_array_equal(m.position, expected)
+            for rows in (m.velocity, m.acceleration, m.jerk):
+                np.testing.assert_array_equal(rows, np.zeros((1, 3)))
+            assert m.block.tolist() == [0] and m.feeding.tolist() == [False]
+            for per_block in (m.entry_speed, m.exit_speed, m.block_limit, m.block_time):
+                np.testing.assert_array_equal(per_block, np.zeros(blocks))
+            assert m.nominal_time == 0.0 and m.duration == 0.0
+        # The bound before planning: no time; the program without blocks has its one sample
+        # (two dwells of 0 s end nowhere: a bound of 0 samples, below the plan's 1).
+        assert least_samples(program, LIMITS) == (0.0, 0 if blocks else 1)
+
+
+# --- arcs: samples every 5 degrees, the axes' turns, the axes' derivatives --------------
+
+SLOW = Limits(feed=np.ones(3), acceleration=np.full(3, 0.02), jerk=np.full(3, 0.1),
+              rapid_feed=1.0, path_tolerance=2e-5, sample_time=10.0)  # fmt: skip
+"""Slow axes for arcs of R 10 mm at F600 (0.01 m/s): the centripetal bound sqrt(0.5 a R) =
+0.01 m/s, the tangential half 0.01 m/s^2 and 0.05 m/s^3 (a/j = 0.2 s, v/a = 1 s), so every
+phase sweeps degrees; a sample time of 10 s leaves the angle to set the samples."""
+
+
+def s_curve(t: np.ndarray, length: float, v: float, a: float, j: float) -> tuple[np.ndarray, ...]:
+    """Path position, speed, acceleration and jerk at ``t`` of the rest-to-rest S-curve
+    reaching ``v`` and ``a`` over ``length`` (module docstring), phase by phase."""
+    t1, t2 = a / j, v / a - a / j
+    total = length / v + v / a + a / j
+    assert t2 >= 0.0 and total >= 2 * (2 * t1 + t2)
+
+    def rise(t: np.ndarray) -> tuple[np.ndarray, ...]:
+        v1, s1 = j * t1**2 / 2, j * t1**3 / 6
+        v2, s2 = v1 + a * t2, s1 + v1 * t2 + a * t2**2 / 2
+        u, w = t - t1, t - t1 - t2
+        phase = np.where(t < t1, 0, np.where(t < t1 + t2, 1, np.where(t < 2 * t1 + t2, 2, 3)))
+        s = np.choose(
+            phase,
+            [
+                j * t**3 / 6,
+                s1 + v1 * u + a * u**2 / 2,
+                s2 + v2 * w + a * w**2 / 2 - j * w**3 / 6,
+                s2 + v2 * t1 + a * t1**2 / 2 - j * t1**3 / 6 + v * (w - t1),
+            ],
+        )
+        sd = np.choose(phase, [j * t**2 / 2, v1 + a * u, v2 + a * w - j * w**2 / 2,
+                               np.full_like(t, v)])  # fmt: skip
+        sdd = np.choose(phase, [j * t, np.full_like(t, a), a - j * w, np.zeros_like(t)])
+        sddd = np.choose(phase, [np.full_like(t, j), np.zeros_like(t), np.full_like(t, -j),
+                                 np.zeros_like(t)])  # fmt: skip
+        return s, sd, sdd, sddd
+
+    up = t <= total / 2
+    s_u, sd_u, sdd_u, sddd_u = rise(np.where(up, t, total - t))
+    return (np.where(up, s_u, length - s_u), sd_u, np.where(up, sdd_u, -sdd_u),
+            sddd_u)  # fmt: skip
+
+
+def test_an_arc_is_sampled_every_five_degrees_of_each_phase() -> None:
+    # A half circle of R 10 mm from 180 deg, counter-clockwise, at 0.01 m/s: the speed
+    # change's phases sweep s1 = j t1^3/6 (0.38 deg: 1 sample), the constant acceleration
+    # v1 t2 + a t2^2/2 (22.9 deg: 5), the last jerk phase v2 t1 + a t1^2/2 - j t1^3/6
+    # (11.1 deg: 3), and the cruise 180 deg less twice 34.4 deg (111.2 deg: 23); at least one
+    # sample every 5 deg of each phase, the turn of Y at 270 deg and the end.
+    r, v, a, j = 0.01, 0.01, 0.01, 0.05
+    t1, t2 = a / j, v / a - a / j
+    v1, v2 = j * t1**2 / 2, j * t1**2 / 2 + a * t2
+    rise = [j * t1**3 / 6, v1 * t2 + a * t2**2 / 2, v2 * t1 + a * t1**2 / 2 - j * t1**3 / 6]
+    cruise = math.pi * r - 2 * sum(rise)
+    degrees = [math.degrees(s / r) for s in [*rise, cruise, *rise[::-1]]]
+    expected = sum(math.ceil(d / 5.0) for d in degrees) + 1 + 1
+    assert expected == 2 * (1 + 5 + 3) + 23 + 2
+    m = plan(read_program("G3 X20 Y0 I10 J0 F600\n"), SLOW)
+    assert m.duration == pytest.approx(math.pi * r / v + v / a + a / j, rel=1e-9)
+    assert m.time.size == expected
+    # The samples of a phase are evenly spaced in time: in the cruise, 111.2/23 = 4.83 deg
+    # (the turn's sample left out).
+    angle = np.unwrap(np.arctan2(m.position[:, 1], m.position[:, 0] - r))
+    angle = angle[np.abs(angle - 1.5 * math.pi) > 1e-9]
+    cruise_gaps = np.diff(angle)[9 : 9 + 23]
+    np.testing.assert_allclose(cruise_gaps, math.radians(degrees[3] / 23), rtol=1e-9)
+
+
+def test_an_arc_is_sampled_where_an_axis_turns() -> None:
+    # A full circle of R 10 mm from 30 deg: X turns at 180 and 360 deg, Y at 90 and 270 deg;
+    # each is a sample, on the circle's extreme point (to rounding: 1e-12 m), with that
+    # axis at rest. Its start and end (30 deg) are no turn.
+    r = 0.01
+    c = np.array([-r * math.cos(math.radians(30)), -r * math.sin(math.radians(30))])
+    text = f"G3 X0 Y0 I{c[0] * 1e3:.12f} J{c[1] * 1e3:.12f} F600\n"
+    m = plan(read_program(text), SLOW)
+    for deg, axis in ((90, 1), (180, 0), (270, 1), (360, 0)):
+        point = c + r * np.array([math.cos(math.radians(deg)), math.sin(math.radians(deg))])
+        hit = np.flatnonzero(np.all(np.abs(m.position[:, :2] - point) < 1e-12, axis=1))
+        assert hit.size == 1, deg
+        assert abs(m.velocity[hit[0], axis]) < 1e-15
+    # Every sample is one of the angle's (5 deg within each phase), those four, or the end.
+    r_, v, a, j = r, 0.01, 0.01, 0.05
+    t1, t2 = a / j, v / a - a / j
+    v1, v2 = j * t1**2 / 2, j * t1**2 / 2 + a * t2
+    rise = [j * t1**3 / 6, v1 * t2 + a * t2**2 / 2, v2 * t1 + a * t1**2 / 2 - j * t1**3 / 6]
+    cruise = 2 * math.pi * r_ - 2 * sum(rise)
+    degrees = [math.degrees(s / r_) for s in [*rise, cruise, *rise[::-1]]]
+    assert m.time.size == sum(math.ceil(d / 5.0) for d in degrees) + 4 + 1
+
+
+def test_a_quarter_circle_from_an_axis_to_an_axis_has_no_turn_inside() -> None:
+    # From 0 to 90 deg: X turns at 90 deg, the arc's end, which is its own sample; no sample
+    # is added at either end, so no two samples share a time.
+    m = plan(read_program("G3 X-10 Y10 I-10 J0 F600\n"), SLOW)
+    assert np.all(np.diff(m.time) > 0.0)
+    np.testing.assert_allclose(m.position[-1], [-0.01, 0.01, 0.0], atol=1e-15)
+    assert m.velocity[-1, 0] == 0.0
+
+
+@pytest.mark.parametrize(
+    ("text", "plane", "centre", "rise", "sign"),
+    [
+        ("G17 G3 X20 Y0 I10 J0 F600\n", (0, 1, 2), (0.01, 0.0), 0.0, 1.0),
+        ("G18 G2 X0 Z20 K10 I0 F600\n", (2, 0, 1), (0.01, 0.0), 0.0, -1.0),
+        ("G19 G3 Y20 Z0 J10 K0 F600\n", (1, 2, 0), (0.01, 0.0), 0.0, 1.0),
+        ("G18 G3 X0 Z20 Y5 K10 I0 F600\n", (2, 0, 1), (0.01, 0.0), 0.005, 1.0),
+    ],
+    ids=["G17", "G18-clockwise", "G19", "G18-helix"],
+)
+def test_an_arcs_axes_follow_the_circle_and_its_derivatives(
+    text: str, plane: tuple[int, int, int], centre: tuple[float, float], rise: float,
+    sign: float,
+) -> None:  # fmt: skip
+    # On the circle p = c + R e^(i theta), theta = theta0 + sign k s/R (k: the in-plane share
+    # of a helix), p' = i R theta' e^(i theta), p'' = R (i theta'' - theta'^2) e^(i theta),
+    # p''' = R (i theta''' - 3 theta' theta'' - i theta'^3) e^(i theta); the normal axis
+    # moves n s. The path's s(t) is the S-curve's closed form at 0.01 m/s, and a = 0.01/k,
+    # j = 0.05/k along the path (the in-plane halves over the share). Ruckig's phases are
+    # exact to about 1e-12 s; 1e-8 of each quantity's scale.
+    r = 0.01
+    ia, ib, inn = plane
+    length = math.hypot(math.pi * r, rise)
+    k, n = math.pi * r / length, rise / length
+    v, a, j = 0.01, 0.01 / k, 0.05 / k
+    lim = Limits(feed=SLOW.feed, acceleration=SLOW.acceleration, jerk=SLOW.jerk, rapid_feed=1.0,
+                 path_tolerance=2e-5, sample_time=0.05)  # fmt: skip
+    m = plan(read_program(text), lim)
+    assert m.duration == pytest.approx(length / v + v / a + a / j, rel=1e-9)
+    s, sd, sdd, sddd = s_curve(m.time, length, v, a, j)
+    # The phases' ends are samples where the jerk steps: compare inside the phases.
+    ends = np.cumsum([0, a / j, v / a - a / j, a / j, length / v - v / a - a / j, a / j,
+                      v / a - a / j, a / j])  # fmt: skip
+    inside = np.min(np.abs(m.time[:, None] - ends[None, :]), axis=1) > 1e-6
+    assert inside.sum() > 40
+    np.testing.assert_allclose(m.path_speed, sd, rtol=0, atol=1e-10)
+    w = sign * k / r
+    theta = math.pi + w * s
+    d1, d2, d3 = w * sd, w * sdd, w * sddd
+    e = np.exp(1j * theta)
+    expected = [
+        centre[0] + centre[1] * 1j + r * e,
+        1j * r * d1 * e,
+        r * (1j * d2 - d1**2) * e,
+        r * (1j * d3 - 3 * d1 * d2 - 1j * d1**3) * e,
+    ]
+    normal = [n * s, n * sd, n * sdd, n * sddd]
+    for got, want, lin, scale in zip((m.position, m.velocity, m.acceleration, m.jerk),
+                                     expected, normal, (r, v, a, j), strict=True):  # fmt: skip
+        sel = inside if scale in (a, j) else np.ones(m.time.size, bool)
+        np.testing.assert_allclose(got[sel, ia], want.real[sel], rtol=0, atol=1e-8 * scale)
+        np.testing.assert_allclose(got[sel, ib], want.imag[sel], rtol=0, atol=1e-8 * scale)
+        np.testing.assert_allclose(got[sel, inn], lin[sel], rtol=0, atol=1e-8 * scale)
+
+
+# --- a block ruckig refuses: its exit lowered by 0, 1e-7, 1e-6, 1e-5, 1e-4 in turn --------
+
+
+def _refusing(monkeypatch: pytest.MonkeyPatch, above: float, how: str) -> list[float]:
+    """Ruckig refusing every exit speed above ``above`` (raising, or an error result); the
+    exit speeds it was asked for, in order."""
+    import ruckig
+
+    real, asked = ruckig.Ruckig, []
+
+    class Refusing:
+        def __init__(self, dofs: int) -> None:
+            self.otg = real(dofs)
+
+        def calculate(self, inp: object, traj: object) -> object:
+            target = float(inp.target_velocity[0])  # type: ignore[attr-defined]
+            asked.append(target)
+            if target > above:
+                if how == "raise":
+                    raise ruckig.RuckigError("refused")
+                return ruckig.Result.ErrorInvalidInput
+            return self.otg.calculate(inp, traj)
+
+    monkeypatch.setattr(ruckig, "Ruckig", Refusing)
+    return asked
+
+
+@pytest.mark.parametrize("how", ["raise", "result"])
+def test_a_refused_exit_is_lowered_by_each_share_in_turn(
+    monkeypatch: pytest.MonkeyPatch, how: str
+) -> None:
+    # Two collinear halves: the first block exits at the feed, 0.5 m/s. Refused above
+    # 0.5 (1 - 5e-5), it is asked at 0.5, then lowered by 1e-7, 1e-6, 1e-5 (1.11e-5 in all:
+    # still refused) and 1e-4 (1.111e-4: planned); the second block enters at that speed.
+    asked = _refusing(monkeypatch, 0.5 * (1 - 5e-5), how)
+    m = plan(read_program("G1 X150 F30000\nG1 X300\n"), LIMITS)
+    shares = [0.0, 1e-7, 1e-6, 1e-5, 1e-4]
+    tried = [0.5 * math.prod(1 - x for x in shares[: i + 1]) for i in range(5)]
+    np.testing.assert_allclose(asked, [*tried, 0.0], rtol=1e-15)
+    assert m.exit_speed[0] == pytest.approx(tried[-1], rel=1e-15)
+    assert m.entry_speed[1] == m.exit_speed[0]
+    # The path speed is continuous at the junction: the second block starts from it.
+    k = int(np.flatnonzero(np.diff(m.block) != 0)[0])
+    assert m.path_speed[k] == m.path_speed[k + 1] == m.exit_speed[0]
+    # Not far from the plan without refusals: 1.1e-4 of the speed over the junction.
+    assert m.duration == pytest.approx(0.3 / 0.5 + 0.5 / 2.0 + 2.0 / 50.0, rel=1e-5)
+
+
+def test_a_block_refused_at_every_share_is_refused_by_its_line(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # Refused above 0.5 (1 - 2e-4): the five tries lower the exit by 1.111e-4 at most.
+    asked = _refusing(monkeypatch, 0.5 * (1 - 2e-4), "raise")
+    with pytest.raises(BallScrewInputError) as info:
+        plan(read_program("G1 X150 F30000\nG1 X300\n"), LIMITS)
+    assert info.value.field == "program line 1" and "ruckig" in str(info.value)
+    lowest = 0.5 * (1 - 1e-7) * (1 - 1e-6) * (1 - 1e-5) * (1 - 1e-4)
+    assert len(asked) == 5 and asked[-1] == pytest.approx(lowest, rel=1e-15)
