@@ -336,3 +336,87 @@ def test_a_block_refused_at_every_share_is_refused_by_its_line(
     assert info.value.field == "program line 1" and "ruckig" in str(info.value)
     lowest = 0.5 * (1 - 1e-7) * (1 - 1e-6) * (1 - 1e-5) * (1 - 1e-4)
     assert len(asked) == 5 and asked[-1] == pytest.approx(lowest, rel=1e-15)
+
+
+# --- the bound before planning, and the refusals past it ----------------------------------
+
+
+@pytest.mark.parametrize(
+    ("text", "seconds", "busy", "ends"),
+    [
+        # At the feed: L/v = 0.6 s; the speed change to 0.5 m/s and back, v/a + a/j each.
+        ("G1 X300 F30000\n", 0.6, 2 * (0.5 / 2.0 + 2.0 / 50.0), 1),
+        # At 0.01 m/s, below a^2/j = 0.08: 2 sqrt(dv/j) each way.
+        ("G1 X300 F600\n", 30.0, 2 * 2 * math.sqrt(0.01 / 50.0), 1),
+        # 1 mm from rest to rest reaches j s^2 with j s^3 = L: L over it, (L/j)^(1/3), all busy.
+        ("G1 X1 F30000\n", (1e-3 / 50.0) ** (1 / 3), (1e-3 / 50.0) ** (1 / 3), 1),
+        # A half circle of R 10 mm at sqrt(0.5 x 2 R) = 0.1 m/s: an arc is sampled throughout.
+        ("G3 X20 Y0 I10 J0 F30000\n", math.pi * 0.01 / 0.1, math.pi * 0.01 / 0.1, 1),
+        # Dwells: their time, one end each but for a dwell of 0 s.
+        ("G4 P0.5\nG4 P0\n", 0.5, 0.0, 1),
+    ],
+    ids=["cruise", "slow", "short", "arc", "dwells"],
+)
+def test_the_bound_before_planning_by_hand(text: str, seconds: float, busy: float, ends: int
+                                           ) -> None:  # fmt: skip
+    # At least one sample every 4.5 ms of the speed changes, and one at each block's end.
+    program = read_program(text)
+    got_seconds, got_samples = least_samples(program, LIMITS)
+    assert got_seconds == pytest.approx(seconds, rel=1e-12)
+    assert got_samples == int(busy / 4.5e-3) + ends
+    m = plan(program, LIMITS)
+    assert got_seconds <= m.duration and got_samples <= m.time.size
+
+
+def test_a_program_past_the_samples_is_refused_by_the_bound_or_by_the_plans_count() -> None:
+    # The 300 mm line at 4.5 ms: the bound is 129 samples (above), the plan makes 132.
+    program = read_program("G1 X300 F30000\n")
+    assert plan(program, LIMITS, max_samples=132).time.size == 132
+    with pytest.raises(BallScrewInputError) as info:
+        plan(program, LIMITS, max_samples=131)
+    said = str(info.value)
+    assert "about 132 samples (0.89 s of motion, a sample at most every 4.5 ms)" in said
+    assert "at most 131 samples" in said and "counted from the plan" in said
+    # At the bound itself, the plan counts.
+    with pytest.raises(BallScrewInputError, match="about 132 samples"):
+        plan(program, LIMITS, max_samples=129)
+    with pytest.raises(BallScrewInputError) as info:
+        plan(program, LIMITS, max_samples=128)
+    said = str(info.value)
+    assert "at least 129 samples (at least 0.6 s, a sample at most every 4.5 ms)" in said
+    assert "a lower bound estimated before planning" in said
+    # The count holds an arc's turns: the half circle at 0.01 m/s has 43 samples (above).
+    arc = read_program("G3 X20 Y0 I10 J0 F600\n")
+    assert plan(arc, SLOW, max_samples=43).time.size == 43
+    with pytest.raises(BallScrewInputError, match="about 43 samples"):
+        plan(arc, SLOW, max_samples=42)
+
+
+def test_the_default_bound_is_three_million_samples() -> None:
+    # The 300 mm line's 0.58 s of speed change at a sample every 0.187 us: at least 3.1
+    # million samples, past the 3 million allowed; refused before a block is planned.
+    with pytest.raises(BallScrewInputError) as info:
+        plan(read_program("G1 X300 F30000\n"), with_sample_time(0.58 / 3.1e6))
+    said = str(info.value)
+    assert "at least 3.1e+06 samples" in said and "at most 3e+06 samples" in said
+
+
+# --- the look-ahead's margin, the progress -------------------------------------------------
+
+
+def test_the_look_ahead_keeps_one_ten_millionth_below_the_stopping_speed() -> None:
+    # 5 mm before a reversal: X (2 m/s^2, 50 m/s^3) stops within it from the root of
+    # 0.25 v^2 + 0.02 v = 0.005 m; the block before enters it 1e-7 below that speed.
+    v_stop = (-0.02 + math.sqrt(0.02**2 + 4 * 0.25 * 0.005)) / (2 * 0.25)
+    m = plan(read_program("G1 X300 F30000\nG1 X305\nG1 X0\n"), LIMITS)
+    assert m.entry_speed[1] == pytest.approx(v_stop * (1 - 1e-7), rel=1e-13)
+
+
+@pytest.mark.parametrize(("blocks", "step"), [(50, 1), (250, 2)])
+def test_the_progress_is_told_every_hundredth_of_the_blocks_and_at_the_end(
+    blocks: int, step: int
+) -> None:
+    told: list[tuple[int, int]] = []
+    text = "G1 F30000\n" + "".join(f"G1 X{k + 1}\n" for k in range(blocks))
+    plan(read_program(text), LIMITS, progress=lambda done, total: told.append((done, total)))
+    assert told == [(k, blocks) for k in range(0, blocks, step)] + [(blocks, blocks)]

@@ -433,20 +433,20 @@ def _sample(
         count = np.where(arc[:, None] & (dur > 0.0), np.maximum(count, need), count)
     flat = count.ravel()
     total = int(flat.sum())
-    if total > max_samples:
-        moving = float(dur[program.kind != DWELL].sum())
-        _too_many(f"about {total:.3g} samples ({moving:.4g} s of motion", sample_time,
-                  max_samples, "counted from the plan")  # fmt: skip
-    phase_of = np.repeat(np.arange(flat.size), flat)
-    first = np.cumsum(flat) - flat
-    k_in = np.arange(total) - np.repeat(first, flat)
-    tau = dur.ravel()[phase_of] * k_in / flat[phase_of]
     # Each block's end: the end of its last phase that takes time.
     timed = dur > 0.0
     ends = np.flatnonzero(timed.any(axis=1))
     last_phase = 6 - np.argmax(timed[ends, ::-1], axis=1)
     end_phase = ends * 7 + last_phase
     turn_phase, turn_tau = _arc_turns(program, g, phases)
+    if total + end_phase.size + turn_phase.size > max_samples:
+        moving = float(dur[program.kind != DWELL].sum())
+        _too_many(f"about {total + end_phase.size + turn_phase.size:.3g} samples ({moving:.4g}"
+                  " s of motion", sample_time, max_samples, "counted from the plan")  # fmt: skip
+    phase_of = np.repeat(np.arange(flat.size), flat)
+    first = np.cumsum(flat) - flat
+    k_in = np.arange(total) - np.repeat(first, flat)
+    tau = dur.ravel()[phase_of] * k_in / flat[phase_of]
     phase_of = np.concatenate([phase_of, end_phase, turn_phase])
     tau = np.concatenate([tau, dur.ravel()[end_phase], turn_tau])
     is_end = np.concatenate([np.zeros(total, bool), np.ones(end_phase.size, bool),
