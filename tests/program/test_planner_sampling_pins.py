@@ -309,20 +309,21 @@ def _refusing(monkeypatch: pytest.MonkeyPatch, above: float, how: str) -> list[f
 def test_a_refused_exit_is_lowered_by_each_share_in_turn(
     monkeypatch: pytest.MonkeyPatch, how: str
 ) -> None:
-    # Two collinear halves: the first block exits at the feed, 0.5 m/s. Refused above
-    # 0.5 (1 - 5e-5), it is asked at 0.5, then lowered by 1e-7, 1e-6, 1e-5 (1.11e-5 in all:
-    # still refused) and 1e-4 (1.111e-4: planned); the second block enters at that speed.
+    # Three collinear thirds: the first two blocks exit at the feed, 0.5 m/s. Refused above
+    # 0.5 (1 - 5e-5), each is asked at 0.5, then lowered by 1e-7, 1e-6, 1e-5 (1.11e-5 in all:
+    # still refused) and 1e-4 (1.111e-4: planned); the next block enters at that speed.
     asked = _refusing(monkeypatch, 0.5 * (1 - 5e-5), how)
-    m = plan(read_program("G1 X150 F30000\nG1 X300\n"), LIMITS)
+    m = plan(read_program("G1 X100 F30000\nG1 X200\nG1 X300\n"), LIMITS)
     shares = [0.0, 1e-7, 1e-6, 1e-5, 1e-4]
     tried = [0.5 * math.prod(1 - x for x in shares[: i + 1]) for i in range(5)]
-    np.testing.assert_allclose(asked, [*tried, 0.0], rtol=1e-15)
-    assert m.exit_speed[0] == pytest.approx(tried[-1], rel=1e-15)
-    assert m.entry_speed[1] == m.exit_speed[0]
-    # The path speed is continuous at the junction: the second block starts from it.
-    k = int(np.flatnonzero(np.diff(m.block) != 0)[0])
-    assert m.path_speed[k] == m.path_speed[k + 1] == m.exit_speed[0]
-    # Not far from the plan without refusals: 1.1e-4 of the speed over the junction.
+    # The second block enters at the first's lowered exit and is asked for 0.5 again.
+    np.testing.assert_allclose(asked, [*tried, *tried, 0.0], rtol=1e-15)
+    np.testing.assert_allclose(m.exit_speed, [tried[-1], tried[-1], 0.0], rtol=1e-15)
+    np.testing.assert_array_equal(m.entry_speed, [0.0, *m.exit_speed[:2]])
+    # The path speed is continuous at the junctions: the next block starts from it.
+    for k in np.flatnonzero(np.diff(m.block) != 0):
+        assert m.path_speed[k] == m.path_speed[k + 1] == m.exit_speed[m.block[k]]
+    # Not far from the plan without refusals: 1.1e-4 of the speed over the junctions.
     assert m.duration == pytest.approx(0.3 / 0.5 + 0.5 / 2.0 + 2.0 / 50.0, rel=1e-5)
 
 
