@@ -183,6 +183,9 @@ def test_an_arc_is_sampled_every_five_degrees_of_each_phase() -> None:
     m = plan(read_program("G3 X20 Y0 I10 J0 F600\n"), SLOW)
     assert m.duration == pytest.approx(math.pi * r / v + v / a + a / j, rel=1e-9)
     assert m.time.size == expected
+    # The bound before planning: the arc's length at its speed, sampled throughout (10 s).
+    seconds, samples = least_samples(read_program("G3 X20 Y0 I10 J0 F600\n"), SLOW)
+    assert seconds == pytest.approx(math.pi * r / v, rel=1e-12) and samples == 0 + 1
     # The samples of a phase are evenly spaced in time: in the cruise, 111.2/23 = 4.83 deg
     # (the turn's sample left out).
     angle = np.unwrap(np.arctan2(m.position[:, 1], m.position[:, 0] - r))
@@ -212,6 +215,38 @@ def test_an_arc_is_sampled_where_an_axis_turns() -> None:
     cruise = 2 * math.pi * r_ - 2 * sum(rise)
     degrees = [math.degrees(s / r_) for s in [*rise, cruise, *rise[::-1]]]
     assert m.time.size == sum(math.ceil(d / 5.0) for d in degrees) + 4 + 1
+
+
+@pytest.mark.parametrize(
+    ("start", "sweep", "turns"),
+    [
+        # From 62 deg over 300 deg: 90 deg in the last jerk phase of the speed change up
+        # (28 deg in), 180 and 270 in the cruise, 360 in the constant braking (32.4 deg
+        # before the end).
+        (62.0, 300.0, (90, 180, 270, 360)),
+        # From 75 to 100 deg: 0.44 rad, no cruise; the turn at 90 deg.
+        (75.0, 25.0, (90,)),
+        # Clockwise from 100 to 75 deg.
+        (100.0, -25.0, (90,)),
+    ],
+)
+def test_every_turn_is_sampled_on_the_circle(start: float, sweep: float, turns: tuple[int, ...]
+                                             ) -> None:  # fmt: skip
+    # R 10 mm about (0, 0) from the start given; each turn a sample on the circle's extreme
+    # point, to rounding (1e-12 m).
+    r = 0.01
+    p0 = r * np.array([math.cos(math.radians(start)), math.sin(math.radians(start))])
+    p1 = r * np.array([math.cos(math.radians(start + sweep)),
+                       math.sin(math.radians(start + sweep))])  # fmt: skip
+    code = "G3" if sweep > 0 else "G2"
+    text = (f"{code} X{p1[0] * 1e3:.12f} Y{p1[1] * 1e3:.12f} I{-p0[0] * 1e3:.12f} "
+            f"J{-p0[1] * 1e3:.12f} F600\n")  # fmt: skip
+    m = plan(read_program(text, start=(float(p0[0]), float(p0[1]), 0.0)), SLOW)
+    for deg in turns:
+        point = r * np.array([math.cos(math.radians(deg)), math.sin(math.radians(deg))])
+        hit = np.flatnonzero(np.all(np.abs(m.position[:, :2] - point) < 1e-12, axis=1))
+        assert hit.size == 1, deg
+    assert np.all(np.diff(m.time) > 0.0)
 
 
 def test_a_quarter_circle_from_an_axis_to_an_axis_has_no_turn_inside() -> None:
@@ -259,6 +294,8 @@ def test_an_arcs_axes_follow_the_circle_and_its_derivatives(
     inside = np.min(np.abs(m.time[:, None] - ends[None, :]), axis=1) > 1e-6
     assert inside.sum() > 40
     np.testing.assert_allclose(m.path_speed, sd, rtol=0, atol=1e-10)
+    # The second in-plane axis turns half-way (270 deg, or 90 deg clockwise): a sample.
+    assert np.sum(np.abs(np.abs(m.position[:, ib] - centre[1]) - r) < 1e-12) == 1
     w = sign * k / r
     theta = math.pi + w * s
     d1, d2, d3 = w * sd, w * sdd, w * sddd
@@ -353,10 +390,13 @@ def test_a_block_refused_at_every_share_is_refused_by_its_line(
         ("G1 X1 F30000\n", (1e-3 / 50.0) ** (1 / 3), (1e-3 / 50.0) ** (1 / 3), 1),
         # A half circle of R 10 mm at sqrt(0.5 x 2 R) = 0.1 m/s: an arc is sampled throughout.
         ("G3 X20 Y0 I10 J0 F30000\n", math.pi * 0.01 / 0.1, math.pi * 0.01 / 0.1, 1),
+        # Two halves at the feed: the speed changes up in the first and down in the second,
+        # none at the junction (entered and left at the top).
+        ("G1 X150 F30000\nG1 X300\n", 0.6, 2 * (0.5 / 2.0 + 2.0 / 50.0), 2),
         # Dwells: their time, one end each but for a dwell of 0 s.
         ("G4 P0.5\nG4 P0\n", 0.5, 0.0, 1),
     ],
-    ids=["cruise", "slow", "short", "arc", "dwells"],
+    ids=["cruise", "slow", "short", "arc", "halves", "dwells"],
 )
 def test_the_bound_before_planning_by_hand(text: str, seconds: float, busy: float, ends: int
                                            ) -> None:  # fmt: skip
@@ -367,6 +407,17 @@ def test_the_bound_before_planning_by_hand(text: str, seconds: float, busy: floa
     assert got_samples == int(busy / 4.5e-3) + ends
     m = plan(program, LIMITS)
     assert got_seconds <= m.duration and got_samples <= m.time.size
+
+
+def test_the_bound_before_planning_just_below_the_speed_changes_full_acceleration() -> None:
+    # At 4000 mm/min (0.0667 m/s, between a^2/j = 0.08 and half of it) the speed change
+    # does not reach a: 2 sqrt(dv/j) = 73.03 ms each way (dv/a + a/j would be 73.33 ms).
+    v = 4.0 / 60.0
+    busy = 2 * 2 * math.sqrt(v / 50.0)
+    seconds, samples = least_samples(read_program("G1 X300 F4000\n"), with_sample_time(1e-5))
+    assert seconds == pytest.approx(0.3 / v, rel=1e-12)
+    assert busy / 1e-5 % 1 > 0.1  # 14605.9: no rounding at the integer part
+    assert samples == int(busy / 1e-5) + 1
 
 
 def test_a_program_past_the_samples_is_refused_by_the_bound_or_by_the_plans_count() -> None:
