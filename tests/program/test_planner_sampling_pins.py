@@ -104,6 +104,15 @@ def test_the_nominal_time_and_the_feed_flags() -> None:
     assert np.all(m.position[dwell] == 0.0) and np.all(m.velocity[dwell] == 0.0)
 
 
+def test_a_program_that_starts_with_a_dwell_enters_every_block_at_rest() -> None:
+    # A dwell, then a line from rest: every block's entry is 0, and the line takes its
+    # rest-to-rest time (10 mm at 0.1 m/s, 2 m/s^2, 50 m/s^3: L/v + v/a + a/j) after 0.5 s.
+    m = plan(read_program("G4 P0.5\nG1 X10 F6000\n"), LIMITS)
+    np.testing.assert_array_equal(m.entry_speed, [0.0, 0.0])
+    np.testing.assert_array_equal(m.exit_speed, [0.0, 0.0])
+    assert m.duration == pytest.approx(0.5 + 0.01 / 0.1 + 0.1 / 2.0 + 2.0 / 50.0, rel=1e-9)
+
+
 def test_a_program_without_time_stands_at_its_start() -> None:
     # No block, or only a dwell of 0 s: one sample at rest, at time 0, at the start given.
     for text, blocks in (("M30\n", 0), ("G4 P0\nG4 P0\n", 2)):
