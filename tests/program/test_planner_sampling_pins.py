@@ -55,6 +55,21 @@ def test_a_line_is_sampled_every_sample_time_in_its_speed_changes_and_not_in_its
     assert np.all(m.velocity[-1] == 0.0) and np.all(m.position[-1] == [0.3, 0.0, 0.0])
 
 
+def test_a_lines_axes_follow_the_s_curve_from_the_lines_start() -> None:
+    # 300 mm along X from (100, 50, 0) mm: X = 0.1 + s(t), its speed, acceleration and jerk
+    # those of the S-curve's closed form (below), Y and Z standing. Ruckig's phases are exact
+    # to about 1e-12 s: 1e-9 of each quantity's scale.
+    m = plan(read_program("G1 X400 Y50 F30000\n", start=(0.1, 0.05, 0.0)), LIMITS)
+    s, sd, sdd, sddd = s_curve(m.time, 0.3, 0.5, 2.0, 50.0)
+    ends = np.cumsum([0, 0.04, 0.21, 0.04, 0.31, 0.04, 0.21, 0.04])
+    inside = np.min(np.abs(m.time[:, None] - ends[None, :]), axis=1) > 1e-6
+    np.testing.assert_allclose(m.position[:, 0], 0.1 + s, rtol=0, atol=1e-12)
+    np.testing.assert_allclose(m.velocity[:, 0], sd, rtol=0, atol=1e-9 * 0.5)
+    np.testing.assert_allclose(m.acceleration[inside, 0], sdd[inside], rtol=0, atol=1e-9 * 2)
+    np.testing.assert_allclose(m.jerk[inside, 0], sddd[inside], rtol=0, atol=1e-9 * 50)
+    assert np.all(m.position[:, 1] == 0.05) and np.all(m.position[:, 2] == 0.0)
+
+
 def test_a_short_line_has_four_jerk_phases_and_no_sample_in_its_empty_phases() -> None:
     # 1 mm on X: no acceleration nor cruise phase, four jerk phases of T = (L/2j)^(1/3) =
     # 21.5 ms (4.8 samples of 4.5 ms: 5 each) and the end: 21 samples, no two at one time.
@@ -84,6 +99,8 @@ def test_a_junction_is_sampled_twice_and_its_speed_carried_over() -> None:
     assert junction.size == 1
     k = int(junction[0])
     assert m.time[k] == m.time[k + 1]
+    # Each half: the speed change's 9 + 47 + 9 samples (4.5 ms), its cruise's one, its end.
+    assert m.time.size == 2 * (9 + 47 + 9 + 1 + 1)
     np.testing.assert_allclose(m.position[k], [0.15, 0.0, 0.0], atol=1e-15)
     assert m.path_speed[k] == pytest.approx(0.5, rel=1e-6)
     assert m.path_speed[k + 1] == pytest.approx(0.5, rel=1e-6)
@@ -203,6 +220,27 @@ def test_an_arc_is_sampled_every_five_degrees_of_each_phase() -> None:
     np.testing.assert_allclose(cruise_gaps, math.radians(degrees[3] / 23), rtol=1e-9)
 
 
+@pytest.mark.parametrize("r_mm", [0.7, 3.0])
+def test_a_small_arcs_samples_follow_each_phases_angle(r_mm: float) -> None:
+    # A half circle of R 0.7 or 3 mm at its centripetal bound sqrt(0.5 x 0.02 R) (2.6 and
+    # 5.5 mm/s, the jerk's bound (0.5 x 0.1 R^2)^(1/3) is higher): the phases' angles
+    # (R 0.7 mm: 5.5, 7.0, 37.9 deg up, 79.4 cruising, the same down) set the samples.
+    r = r_mm * 1e-3
+    v, a, j = math.sqrt(0.5 * 0.02 * r), 0.01, 0.05
+    assert v < (0.5 * 0.1 * r * r) ** (1 / 3) and v > a * a / j
+    t1, t2 = a / j, v / a - a / j
+    v1, v2 = j * t1**2 / 2, j * t1**2 / 2 + a * t2
+    rise = [j * t1**3 / 6, v1 * t2 + a * t2**2 / 2, v2 * t1 + a * t1**2 / 2 - j * t1**3 / 6]
+    cruise = math.pi * r - 2 * sum(rise)
+    degrees = [math.degrees(s / r) for s in [*rise, cruise, *rise[::-1]]]
+    assert min(abs(d / 5.0 - round(d / 5.0)) for d in degrees) > 0.05  # no ceil on an edge
+    text = f"G3 X{2 * r_mm:g} Y0 I{r_mm:g} J0 F600\n"
+    m = plan(read_program(text), SLOW)
+    assert m.duration == pytest.approx(math.pi * r / v + v / a + a / j, rel=1e-9)
+    # One sample every 5 deg of each phase, the turn at 270 deg, the end.
+    assert m.time.size == sum(math.ceil(d / 5.0) for d in degrees) + 1 + 1
+
+
 def test_an_arc_is_sampled_where_an_axis_turns() -> None:
     # A full circle of R 10 mm from 30 deg: X turns at 180 and 360 deg, Y at 90 and 270 deg;
     # each is a sample, on the circle's extreme point (to rounding: 1e-12 m), with that
@@ -226,36 +264,75 @@ def test_an_arc_is_sampled_where_an_axis_turns() -> None:
     assert m.time.size == sum(math.ceil(d / 5.0) for d in degrees) + 4 + 1
 
 
+PLANES = {
+    17: ("X", "Y", "I", "J", 0, 1),
+    18: ("Z", "X", "K", "I", 2, 0),
+    19: ("Y", "Z", "J", "K", 1, 2),
+}
+"""Each plane's in-plane axes, their centre words and their indices (the angle from the first)."""
+
+
+def _arc_text(plane: int, start: float, sweep: float, turns: int = 1) -> tuple[str, list[float]]:
+    """``turns`` arcs of R 10 mm about the origin from ``start`` over ``sweep`` degrees at F600,
+    one after the other (each from where the last ended), and the program's start."""
+    a, b, ca, cb, ia, ib = PLANES[plane]
+    r = 10.0
+    lines = [f"G{plane}"]
+    for k in range(turns):
+        th0, th1 = math.radians(start + k * sweep), math.radians(start + (k + 1) * sweep)
+        lines.append(f"{'G3' if sweep > 0 else 'G2'} {a}{r * math.cos(th1):.12f} "
+                     f"{b}{r * math.sin(th1):.12f} {ca}{-r * math.cos(th0):.12f} "
+                     f"{cb}{-r * math.sin(th0):.12f} F600")  # fmt: skip
+    origin = [0.0, 0.0, 0.0]
+    origin[ia] = 0.01 * math.cos(math.radians(start))
+    origin[ib] = 0.01 * math.sin(math.radians(start))
+    return "\n".join([*lines, ""]), origin
+
+
 @pytest.mark.parametrize(
-    ("start", "sweep", "turns"),
+    ("plane", "start", "sweep", "turns"),
     [
         # From 62 deg over 300 deg: 90 deg in the last jerk phase of the speed change up
         # (28 deg in), 180 and 270 in the cruise, 360 in the constant braking (32.4 deg
-        # before the end).
-        (62.0, 300.0, (90, 180, 270, 360)),
+        # before the end). In each plane.
+        (17, 62.0, 300.0, (90, 180, 270, 360)),
+        (18, 62.0, 300.0, (90, 180, 270, 360)),
+        (19, 62.0, 300.0, (90, 180, 270, 360)),
+        # Clockwise from 200 deg over 150: 180 and 90 deg.
+        (18, 200.0, -150.0, (180, 90)),
         # From 75 to 100 deg: 0.44 rad, no cruise; the turn at 90 deg.
-        (75.0, 25.0, (90,)),
+        (17, 75.0, 25.0, (90,)),
         # Clockwise from 100 to 75 deg.
-        (100.0, -25.0, (90,)),
+        (17, 100.0, -25.0, (90,)),
+        # From 89.8 deg: the turn in the first jerk phase (0.38 deg long).
+        (17, 89.8, 30.0, (90,)),
     ],
 )
-def test_every_turn_is_sampled_on_the_circle(start: float, sweep: float, turns: tuple[int, ...]
-                                             ) -> None:  # fmt: skip
-    # R 10 mm about (0, 0) from the start given; each turn a sample on the circle's extreme
-    # point, to rounding (1e-12 m).
-    r = 0.01
-    p0 = r * np.array([math.cos(math.radians(start)), math.sin(math.radians(start))])
-    p1 = r * np.array([math.cos(math.radians(start + sweep)),
-                       math.sin(math.radians(start + sweep))])  # fmt: skip
-    code = "G3" if sweep > 0 else "G2"
-    text = (f"{code} X{p1[0] * 1e3:.12f} Y{p1[1] * 1e3:.12f} I{-p0[0] * 1e3:.12f} "
-            f"J{-p0[1] * 1e3:.12f} F600\n")  # fmt: skip
-    m = plan(read_program(text, start=(float(p0[0]), float(p0[1]), 0.0)), SLOW)
+def test_every_turn_is_sampled_on_the_circle(plane: int, start: float, sweep: float,
+                                             turns: tuple[int, ...]) -> None:  # fmt: skip
+    # R 10 mm about the origin; each turn a sample on the circle's extreme point, to
+    # rounding (1e-12 m), where that axis is at rest; no two samples at one time.
+    _, _, _, _, ia, ib = PLANES[plane]
+    text, origin = _arc_text(plane, start, sweep)
+    m = plan(read_program(text, start=origin), SLOW)
     for deg in turns:
-        point = r * np.array([math.cos(math.radians(deg)), math.sin(math.radians(deg))])
-        hit = np.flatnonzero(np.all(np.abs(m.position[:, :2] - point) < 1e-12, axis=1))
+        point = 0.01 * np.array([math.cos(math.radians(deg)), math.sin(math.radians(deg))])
+        near = np.abs(m.position[:, [ia, ib]] - point) < 1e-12
+        hit = np.flatnonzero(np.all(near, axis=1))
         assert hit.size == 1, deg
+        assert abs(m.velocity[hit[0], ia if deg % 180 == 0 else ib]) < 1e-15
     assert np.all(np.diff(m.time) > 0.0)
+
+
+def test_two_full_circles_each_turn_four_times() -> None:
+    # Two full circles from 30 deg, one after the other: each has its four turns.
+    text, origin = _arc_text(17, 30.0, 360.0, turns=2)
+    m = plan(read_program(text, start=origin), SLOW)
+    for block in (0, 1):
+        for deg in (90, 180, 270, 360):
+            point = 0.01 * np.array([math.cos(math.radians(deg)), math.sin(math.radians(deg))])
+            near = np.all(np.abs(m.position[:, :2] - point) < 1e-12, axis=1)
+            assert np.sum(near & (m.block == block)) == 1, (block, deg)
 
 
 def test_a_quarter_circle_from_an_axis_to_an_axis_has_no_turn_inside() -> None:
@@ -263,6 +340,9 @@ def test_a_quarter_circle_from_an_axis_to_an_axis_has_no_turn_inside() -> None:
     # is added at either end, so no two samples share a time.
     m = plan(read_program("G3 X-10 Y10 I-10 J0 F600\n"), SLOW)
     assert np.all(np.diff(m.time) > 0.0)
+    # Its samples: 5 deg of each phase (0.38, 22.9, 11.1 deg up, 21.2 cruising, the same
+    # down: 1, 5, 3, 5, 3, 5, 1) and the end, nothing more.
+    assert m.time.size == 2 * (1 + 5 + 3) + 5 + 1
     np.testing.assert_allclose(m.position[-1], [-0.01, 0.01, 0.0], atol=1e-15)
     assert m.velocity[-1, 0] == 0.0
 
@@ -273,7 +353,7 @@ def test_a_quarter_circle_from_an_axis_to_an_axis_has_no_turn_inside() -> None:
         ("G17 G3 X20 Y0 I10 J0 F600\n", (0, 1, 2), (0.01, 0.0), 0.0, 1.0),
         ("G18 G2 X0 Z20 K10 I0 F600\n", (2, 0, 1), (0.01, 0.0), 0.0, -1.0),
         ("G19 G3 Y20 Z0 J10 K0 F600\n", (1, 2, 0), (0.01, 0.0), 0.0, 1.0),
-        ("G18 G3 X0 Z20 Y5 K10 I0 F600\n", (2, 0, 1), (0.01, 0.0), 0.005, 1.0),
+        ("G18 G3 X0 Z20 Y7 K10 I0 F600\n", (2, 0, 1), (0.01, 0.0), 0.005, 1.0),
     ],
     ids=["G17", "G18-clockwise", "G19", "G18-helix"],
 )
@@ -294,7 +374,10 @@ def test_an_arcs_axes_follow_the_circle_and_its_derivatives(
     v, a, j = 0.01, 0.01 / k, 0.05 / k
     lim = Limits(feed=SLOW.feed, acceleration=SLOW.acceleration, jerk=SLOW.jerk, rapid_feed=1.0,
                  path_tolerance=2e-5, sample_time=0.05)  # fmt: skip
-    m = plan(read_program(text), lim)
+    # The normal axis starts 2 mm off zero (a helix rises from there).
+    start = [0.0, 0.0, 0.0]
+    start[inn] = 0.002
+    m = plan(read_program(text, start=start), lim)
     assert m.duration == pytest.approx(length / v + v / a + a / j, rel=1e-9)
     s, sd, sdd, sddd = s_curve(m.time, length, v, a, j)
     # The phases' ends are samples where the jerk steps: compare inside the phases.
@@ -316,7 +399,7 @@ def test_an_arcs_axes_follow_the_circle_and_its_derivatives(
         r * (1j * d2 - d1**2) * e,
         r * (1j * d3 - 3 * d1 * d2 - 1j * d1**3) * e,
     ]
-    normal = [n * s, n * sd, n * sdd, n * sddd]
+    normal = [0.002 + n * s, n * sd, n * sdd, n * sddd]
     for got, want, lin, scale in zip((m.position, m.velocity, m.acceleration, m.jerk),
                                      expected, normal, (r, v, a, j), strict=True):  # fmt: skip
         sel = inside if scale in (a, j) else np.ones(m.time.size, bool)

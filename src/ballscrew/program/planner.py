@@ -497,7 +497,7 @@ def _arc_turns(program: Program, g: dict[str, FloatArray], phases: FloatArray
     quarter = 0.5 * math.pi
     c, s0, sw = program.centre[arc], program.start[arc], program.sweep[arc]
     theta0 = np.zeros(arc.size)
-    for plane, (ia, ib, _) in ((17, (0, 1, 2)), (18, (2, 0, 1)), (19, (1, 2, 0))):
+    for plane, (ia, ib) in ((17, (0, 1)), (18, (2, 0)), (19, (1, 2))):
         m = program.plane[arc] == plane
         theta0[m] = np.arctan2(s0[m, ib] - c[m, ib], s0[m, ia] - c[m, ia])
     lo = np.minimum(theta0, theta0 + sw) / quarter
