@@ -353,6 +353,9 @@ def plan(
         for lower in RETRY_LOWER:
             # An exit speed at the feed cap to the last digit can be one ruckig refuses (it
             # raises): the exit is lowered a little, and the next block enters at it.
+            ex[k] *= 1.0 - lower
+            if k + 1 < n:
+                en[k + 1] = min(en[k + 1], ex[k])
             inp.target_velocity = [ex[k]]
             inp.max_velocity = [max(feeds[k], en[k], ex[k])]
             try:
@@ -362,9 +365,6 @@ def plan(
             prof = traj.profiles[0][0]
             if result == Result.Working and prof.brake.duration <= 0.0 >= prof.accel.duration:
                 break
-            ex[k] *= 1.0 - lower
-            if k + 1 < n:
-                en[k + 1] = min(en[k + 1], ex[k])
         else:
             raise BallScrewInputError(
                 f"program line {int(program.line[k])}", f"{result}",
@@ -433,20 +433,20 @@ def _sample(
         count = np.where(arc[:, None] & (dur > 0.0), np.maximum(count, need), count)
     flat = count.ravel()
     total = int(flat.sum())
-    if total > max_samples:
-        moving = float(dur[program.kind != DWELL].sum())
-        _too_many(f"about {total:.3g} samples ({moving:.4g} s of motion", sample_time,
-                  max_samples, "counted from the plan")  # fmt: skip
-    phase_of = np.repeat(np.arange(flat.size), flat)
-    first = np.cumsum(flat) - flat
-    k_in = np.arange(total) - np.repeat(first, flat)
-    tau = dur.ravel()[phase_of] * k_in / flat[phase_of]
     # Each block's end: the end of its last phase that takes time.
     timed = dur > 0.0
     ends = np.flatnonzero(timed.any(axis=1))
     last_phase = 6 - np.argmax(timed[ends, ::-1], axis=1)
     end_phase = ends * 7 + last_phase
     turn_phase, turn_tau = _arc_turns(program, g, phases)
+    if total + end_phase.size + turn_phase.size > max_samples:
+        moving = float(dur[program.kind != DWELL].sum())
+        _too_many(f"about {total + end_phase.size + turn_phase.size:.3g} samples ({moving:.4g}"
+                  " s of motion", sample_time, max_samples, "counted from the plan")  # fmt: skip
+    phase_of = np.repeat(np.arange(flat.size), flat)
+    first = np.cumsum(flat) - flat
+    k_in = np.arange(total) - np.repeat(first, flat)
+    tau = dur.ravel()[phase_of] * k_in / flat[phase_of]
     phase_of = np.concatenate([phase_of, end_phase, turn_phase])
     tau = np.concatenate([tau, dur.ravel()[end_phase], turn_tau])
     is_end = np.concatenate([np.zeros(total, bool), np.ones(end_phase.size, bool),
@@ -497,7 +497,7 @@ def _arc_turns(program: Program, g: dict[str, FloatArray], phases: FloatArray
     quarter = 0.5 * math.pi
     c, s0, sw = program.centre[arc], program.start[arc], program.sweep[arc]
     theta0 = np.zeros(arc.size)
-    for plane, (ia, ib, _) in ((17, (0, 1, 2)), (18, (2, 0, 1)), (19, (1, 2, 0))):
+    for plane, (ia, ib) in ((17, (0, 1)), (18, (2, 0)), (19, (1, 2))):
         m = program.plane[arc] == plane
         theta0[m] = np.arctan2(s0[m, ib] - c[m, ib], s0[m, ia] - c[m, ia])
     lo = np.minimum(theta0, theta0 + sw) / quarter
