@@ -130,6 +130,16 @@ def test_a_program_that_starts_with_a_dwell_enters_every_block_at_rest() -> None
     assert m.duration == pytest.approx(0.5 + 0.01 / 0.1 + 0.1 / 2.0 + 2.0 / 50.0, rel=1e-9)
 
 
+def test_a_dwell_of_no_time_between_two_moves_has_no_sample() -> None:
+    # Two 10 mm moves at 0.1 m/s, 2 m/s^2, 50 m/s^3 with a dwell of 0 s between: each move
+    # from rest to rest, jerk phases of 0.04 s (8.9 samples of 4.5 ms: 9), the constant
+    # acceleration 0.01 s (2.2: 3), the cruise one sample, the end; the dwell none.
+    m = plan(read_program("G1 X10 F6000\nG4 P0\nG1 X0\n"), LIMITS)
+    assert m.time.size == 2 * (2 * (9 + 3 + 9) + 1 + 1)
+    assert sorted(set(m.block.tolist())) == [0, 2]
+    assert m.duration == pytest.approx(2 * (0.01 / 0.1 + 0.1 / 2.0 + 2.0 / 50.0), rel=1e-9)
+
+
 def test_a_program_without_time_stands_at_its_start() -> None:
     # No block, or only a dwell of 0 s: one sample at rest, at time 0, at the start given.
     for text, blocks in (("M30\n", 0), ("G4 P0\nG4 P0\n", 2)):
