@@ -142,7 +142,7 @@ def test_a_program_past_the_sample_bound_by_its_plan_is_refused_before_it_is_sam
     client: TestClient,
 ) -> None:
     # A jerk of 1e-7 m/s^3: the bound before planning (about 61 000 samples) lets it through,
-    # the plan counts 121 465 (607 s of 5 ms samples), past 120 000: refused before sampling.
+    # the plan counts 121 466 (607 s of 5 ms samples), past 120 000: refused before sampling.
     machine = example_machine_text().replace('max_jerk = "60 m/s^3"', 'max_jerk = "1e-7 m/s^3"', 1)
     answer = client.post("/api/program", json={"program": "G21 G90\nG1 X700 F3000\nM30\n",
                                                "machine": machine})  # fmt: skip
