@@ -423,6 +423,9 @@ def test_the_estimate_run_contour_refuses_by_hand() -> None:
     both = (replace(g, kv=20.0), g)
     assert _estimate(gains=both, compensate=False) == 2 * 2 * (39999 + 1500) + 2 * 20600
     assert _estimate(gains=both[::-1], compensate=False) == 2 * 2 * (39999 + 1500) + 2 * 20600
+    # Gains of two sampling times are refused before anything is estimated or built.
+    with pytest.raises(BallScrewInputError, match=r"T_s 0\.0005 s on y.*\(0\.00025 s\)"):
+        run_contour([case], gains=(g, replace(g, sampling_time=5e-4)))
     check_size(MAX_SAMPLES)  # the limit itself runs
     with pytest.raises(BallScrewInputError, match="4,000,001"):
         check_size(MAX_SAMPLES + 1)
