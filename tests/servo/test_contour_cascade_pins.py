@@ -361,9 +361,9 @@ def test_the_reversal_on_a_binary_sampling_time() -> None:
 
 def test_the_reversal_glitch_is_read_from_the_sample_before_the_crossing(monkeypatch) -> None:  # type: ignore[no-untyped-def]
     # The two runs replaced by traces written here: the clean run lags by 1 mm throughout;
-    # the run with friction by 2 um more up to the crossing's sample k - 1, then 2.5 um, a
-    # peak of 9 um at k + 10 (7 um above the 2 um before) and a trough of -5.5 um at k + 30
-    # (7.5 um below): the glitch is -7.5 um, 30 samples (30 ms) after the crossing.
+    # the run with friction by 2 um more up to the crossing's sample k - 1, then 2.5 um, 2.2 um
+    # on, a peak of 9 um at k + 10 (7 um above the 2 um before) and a trough of -5.5 um at
+    # k + 30 (7.5 um below): the glitch is -7.5 um, 30 samples (30 ms) after the crossing.
     import ballscrew.servo.contour as contour
     from ballscrew.servo.contour import reversal_test
 
@@ -373,7 +373,7 @@ def test_the_reversal_glitch_is_read_from_the_sample_before_the_crossing(monkeyp
     def fake(axis, gains, x, v, a, comp=None):  # type: ignore[no-untyped-def]
         error = np.full(x.size, 1e-3)
         if np.any(axis.friction):
-            extra = np.full(x.size, 2e-6)
+            extra = np.where(np.arange(x.size) < k, 2e-6, 2.2e-6)
             extra[k], extra[k + 10], extra[k + 30] = 2.5e-6, 9e-6, -5.5e-6
             error = error + extra
         zero = np.zeros(x.size)
@@ -423,6 +423,9 @@ def test_the_estimate_run_contour_refuses_by_hand() -> None:
     both = (replace(g, kv=20.0), g)
     assert _estimate(gains=both, compensate=False) == 2 * 2 * (39999 + 1500) + 2 * 20600
     assert _estimate(gains=both[::-1], compensate=False) == 2 * 2 * (39999 + 1500) + 2 * 20600
+    # Gains of two sampling times are refused before anything is estimated or built.
+    with pytest.raises(BallScrewInputError, match=r"T_s 0\.0005 s on y.*\(0\.00025 s\)"):
+        run_contour([case], gains=(g, replace(g, sampling_time=5e-4)))
     check_size(MAX_SAMPLES)  # the limit itself runs
     with pytest.raises(BallScrewInputError, match="4,000,001"):
         check_size(MAX_SAMPLES + 1)

@@ -537,7 +537,7 @@ def run_contour(
         Also run with the 16-point friction table fed forward.
     gains : tuple of Gains, optional
         The loops' gains of x and y, instead of the tuning rule (the arguments
-        ``sampling_time`` to ``feedback`` are then not used).
+        ``sampling_time`` to ``feedback`` are then not used); both of one sampling time.
     reversal_acceleration : float, optional
         [m/s²] of the reversal test; default the circle's at the quadrant,
         :math:`v^2/R`; ``math.inf`` reverses the speed in one sample.
@@ -565,6 +565,10 @@ def run_contour(
     require("servo", "ballscrew contour")
     _check_contour_inputs(cases, directions, pre_rolling_length, guide_coulomb, guide_viscous,
                           kv if gains is None else None)  # fmt: skip
+    if gains is not None and gains[1].sampling_time != gains[0].sampling_time:
+        raise BallScrewInputError("gains", f"T_s {gains[1].sampling_time:g} s on y",
+                                  "the same sampling time for both axes as x's "
+                                  f"({gains[0].sampling_time:g} s)")  # fmt: skip
     runs = len(directions) * (2 if compensate else 1)
     kv_low = min(g.kv for g in gains) if gains is not None else kv
     ts_run = gains[0].sampling_time if gains is not None else sampling_time
