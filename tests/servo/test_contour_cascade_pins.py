@@ -613,6 +613,12 @@ def test_the_loop_checks_limits_written_out() -> None:
     assert gone["sampling frequency over the velocity-loop bandwidth"].status == "NOT OK"
     nyq = {c.name: c for c in loop_checks("x", _figures(45.0, 10.0, 500.0), g)}
     assert nyq["sampling frequency over the velocity-loop bandwidth"].status == "CHECK"
+    # A margin of exactly 0 is a loop at the edge of stability (it rings for ever): NOT OK,
+    # as the module's docstring says; the sampling ratio's hard limit (Nyquist, 2) is not
+    # strict (exactly 2 is CHECK, above).
+    edge = {c.name: c for c in loop_checks("x", _figures(0.0, 0.0, 100.0), g)}
+    assert edge["velocity-loop phase margin"].status == "NOT OK"
+    assert edge["velocity-loop gain margin"].status == "NOT OK"
     # A margin just above 0 is stable, if barely: CHECK.
     low = {c.name: c for c in loop_checks("x", _figures(0.1, 0.1, 100.0), g)}
     assert low["velocity-loop phase margin"].status == "CHECK"

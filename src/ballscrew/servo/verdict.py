@@ -103,6 +103,9 @@ class Check:
     advice: str
     hard: float | None = None
     """Where CHECK ends and NOT OK begins (None: at the limit itself)."""
+    hard_included: bool = True
+    """Whether a value exactly at ``hard`` is still CHECK (False: a margin of exactly 0,
+    a loop at the edge of stability, is NOT OK)."""
 
     def _within(self, limit: float) -> bool:
         if math.isnan(self.value):
@@ -119,7 +122,9 @@ class Check:
         """OK; CHECK (past the stated limit, short of the hard one); NOT OK."""
         if self.ok:
             return "OK"
-        return "CHECK" if self.hard is not None and self._within(self.hard) else "NOT OK"
+        if self.hard is None or not self._within(self.hard):
+            return "NOT OK"
+        return "CHECK" if self.hard_included or self.value != self.hard else "NOT OK"
 
     @property
     def margin(self) -> float:
@@ -159,9 +164,9 @@ def loop_checks(name: str, figures: LoopFigures, gains: Gains) -> list[Check]:
     ):  # fmt: skip
         # An infinite margin (no crossover) sets no limit; NaN (no figure) fails.
         out.append(Check(name, f"{loop}-loop phase margin", float(pm), MIN_PHASE_MARGIN,
-                         "deg", True, advice, 0.0))  # fmt: skip
+                         "deg", True, advice, 0.0, False))  # fmt: skip
         out.append(Check(name, f"{loop}-loop gain margin", float(gm), MIN_GAIN_MARGIN,
-                         "dB", True, advice, 0.0))  # fmt: skip
+                         "dB", True, advice, 0.0, False))  # fmt: skip
         known = bw > 0 and math.isfinite(bw)
         fix = (f"shorten --sampling-time below {num(1.0 / (SAMPLES_PER_BANDWIDTH * bw))} s"
                if known else "the loop has no bandwidth: lower --kv or shorten "
