@@ -709,17 +709,18 @@ def test_an_arc_bulging_past_the_travel_names_its_first_sample_in_millimetres(
 
 
 @pytest.mark.parametrize(
-    ("letters", "text"),
+    ("letters", "text", "missing"),
     [
-        ("Y", "G1 Y10 F1000\nG2 X0 Y10 I5 J0\n"),  # X missing, in the XY plane
-        ("Z", "G1 Z10 F1000\nG18 G2 X0 Z10 I5 K0\n"),  # X missing, in the ZX plane
+        ("Y", "G1 Y10 F1000\nG2 X0 Y10 I5 J0\n", "X"),  # in the XY plane
+        ("Z", "G1 Z10 F1000\nG18 G2 X0 Z10 I5 K0\n", "X"),  # in the ZX plane
+        ("XY", "G1 Y10 F1000\nG19 G2 Y10 Z0 J5 K0\n", "Z"),  # in the YZ plane
     ],
 )
-def test_a_full_circle_through_a_missing_x_names_its_line(
-    tmp_path: Path, letters: str, text: str
+def test_a_full_circle_through_a_missing_axis_names_its_line(
+    tmp_path: Path, letters: str, text: str, missing: str
 ) -> None:
-    # X ends where it started, yet the circle moves it: the circle's line is named.
+    # The missing axis ends where it started, yet the circle moves it: its line is named.
     machine = _machine(tmp_path, force="0 N", letters=letters)
     with pytest.raises(BallScrewInputError) as info:
         run_program(machine, text)
-    assert (info.value.field, info.value.value) == ("program line 2", "X")
+    assert (info.value.field, info.value.value) == ("program line 2", missing)
