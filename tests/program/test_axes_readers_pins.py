@@ -724,3 +724,10 @@ def test_a_full_circle_through_a_missing_axis_names_its_line(
     with pytest.raises(BallScrewInputError) as info:
         run_program(machine, text)
     assert (info.value.field, info.value.value) == ("program line 2", missing)
+
+
+def test_an_inch_modal_cycle_below_its_approach_plane_is_refused() -> None:
+    # Z0.05 in is below RFP + SDIS = 0.1 in: RS274/NGC's G99 cycle would lift first.
+    with pytest.raises(BallScrewInputError) as info:
+        to_rs274("G70\nG0 Z0.05\nMCALL CYCLE81(0.1,0,0.1,-0.5)\nX1\n")
+    assert (info.value.field, info.value.value) == ("program line 4", "X/Y")
