@@ -456,6 +456,8 @@ def test_work_offsets_and_their_notes() -> None:
     assert out.splitlines() == ["G55", "G56", "G57", "G58", "G53 G0 Z0"]
     assert "G505 (settable work offset 5): read as G58, RS274/NGC's 5th: line 4" in notes
     assert not any("G57 (" in n for n in notes)
+    _, notes = to_rs274("G90 G506\n")  # the note names the offset's own word
+    assert "G506 (settable work offset 6): read as G59, RS274/NGC's 6th: line 1" in notes
 
 
 def test_path_modes_exact_stop_ends_and_rounding() -> None:
