@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import shutil
 import warnings
 from pathlib import Path
 from types import SimpleNamespace
@@ -33,7 +34,14 @@ from ballscrew.program import run_program
 from ballscrew.program.axes import ProgramResult, Reversal, _limits, _torques_at
 from ballscrew.program.gcode import FEED, Program, program_from_rows, read_program
 from ballscrew.program.planner import plan
-from ballscrew.program.rs274 import LINE_MARK, _blocks, _marked, _refusal
+from ballscrew.program.rs274 import (
+    LINE_MARK,
+    _blocks,
+    _marked,
+    _refusal,
+    read_part_program,
+    read_program_rs274,
+)
 from ballscrew.program.sinumerik import drilling_cycle, to_rs274
 
 MASS = 300.0  # kg
@@ -556,11 +564,19 @@ def test_an_arc_of_one_metre_radius_and_one_of_none() -> None:
         "ARC_FEED(-1000.0000, 1000.0000, -1000.0000, 0.0000, 1, 0.0000, 0.0, 0.0, 0.0)",
     )
     assert p.sweep[0] == pytest.approx(math.pi / 2, rel=1e-12)
-    # Radius 0 (the centre on the start): LinuxCNC's straight feed along the normal axis.
+    # Radius 0 (the centre on the start, here at X1 Y1): LinuxCNC's straight feed along
+    # the normal axis.
     p = _rows("SET_FEED_RATE(100.0000)",
-              "ARC_FEED(0.0000, 0.0000, 0.0000, 0.0000, 1, -2.0000, 0.0, 0.0, 0.0)")  # fmt: skip
-    assert p.kind.tolist() == [FEED]
-    np.testing.assert_allclose(p.end[0], [0.0, 0.0, -0.002], atol=1e-15)
+              "STRAIGHT_FEED(1.0000, 1.0000, 0.0000, 0.0000, 0.0000, 0.0000)",
+              "ARC_FEED(1.0000, 1.0000, 1.0000, 1.0000, 1, -2.0000, 0.0, 0.0, 0.0)")  # fmt: skip
+    assert p.kind.tolist() == [FEED, FEED]
+    np.testing.assert_allclose(p.end[1], [0.001, 0.001, -0.002], atol=1e-15)
+    # A turn count of 0 is no arc.
+    error = _refused(
+        "SET_FEED_RATE(100.0000)",
+        "ARC_FEED(2.0000, 0.0000, 1.0000, 0.0000, 0, 0.0000, 0.0, 0.0, 0.0)",
+    )
+    assert "at least one turn" in error.allowed
 
 
 def test_a_rotation_turns_xy_arcs_and_points_by_hand() -> None:
@@ -733,3 +749,33 @@ def test_an_inch_modal_cycle_below_its_approach_plane_is_refused() -> None:
     with pytest.raises(BallScrewInputError) as info:
         to_rs274("G70\nG0 Z0.05\nMCALL CYCLE81(0.1,0,0.1,-0.5)\nX1\n")
     assert (info.value.field, info.value.value) == ("program line 4", "X/Y")
+
+
+def test_a_rotary_axis_alone_at_half_a_degree_a_minute() -> None:
+    p = _rows(
+        "SET_FEED_RATE(0.5000)",
+        "STRAIGHT_FEED(0.0000, 0.0000, 0.0000, 1.0000, 0.0000, 0.0000)",
+        rotary="A",
+    )
+    assert p.feed[0] == pytest.approx(math.radians(0.5) / 60.0, rel=1e-12)
+
+
+def test_a_command_of_a_called_file_before_any_program_line() -> None:
+    # rs274 prints a command outside the program's marked lines with dots for its N word.
+    with pytest.raises(BallScrewInputError) as info:
+        _blocks(["    1 N..... NURBS_FEED(1.0000, 2.0000)"], ["G5"], None)
+    assert info.value.field == "a subroutine file called after program line 1"
+
+
+def test_the_readers_default_arc_tolerance_is_2_um() -> None:
+    # G2 about (1, 0) mm from the origin to X2.0021: its end is 2.1 um off the 1 mm circle,
+    # past the 2 um allowed (0.1 % of the radius is 1 um).
+    with pytest.raises(BallScrewInputError):
+        read_part_program("G21 G17 G2 X2.0021 Y0 I1 J0 F100\n", reader="builtin")
+    assert read_part_program("G21 G17 G2 X2.0019 Y0 I1 J0 F100\n", reader="builtin").program
+
+
+@pytest.mark.skipif(shutil.which("rs274") is None, reason="no LinuxCNC rs274 on this machine")
+def test_rs274_reads_past_a_byte_order_mark() -> None:
+    p = read_program_rs274("\ufeffG21 G1 X1 F100\nM2\n")
+    np.testing.assert_allclose(p.end[0], [0.001, 0.0, 0.0], atol=1e-12)
