@@ -779,3 +779,23 @@ def test_the_readers_default_arc_tolerance_is_2_um() -> None:
 def test_rs274_reads_past_a_byte_order_mark() -> None:
     p = read_program_rs274("\ufeffG21 G1 X1 F100\nM2\n")
     np.testing.assert_allclose(p.end[0], [0.001, 0.0, 0.0], atol=1e-12)
+
+
+def test_the_tool_offsets_angle_adds_to_a_rotary_axis() -> None:
+    # A tool offset of A 10 deg with G5x A 5 and G92 A 1: A0 in the program is 16 deg.
+    p = _rows(
+        "SET_G5X_OFFSET(1, 0.0000, 0.0000, 0.0000, 5.0000, 0.0000, 0.0000)",
+        "SET_G92_OFFSET(0.0000, 0.0000, 0.0000, 1.0000, 0.0000, 0.0000)",
+        "USE_TOOL_LENGTH_OFFSET(0.0000, 0.0000, 0.0000, 10.0000, 0.0000, 0.0000)",
+        "STRAIGHT_TRAVERSE(0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)",
+        rotary="A",
+    )
+    assert p.rotary_end is not None
+    assert math.degrees(p.rotary_end[0, 0]) == pytest.approx(16.0, rel=1e-12)
+
+
+def test_a_feed_per_revolution_at_30_rpm() -> None:
+    # 0.5 rev/s x 0.2 mm: 0.1 mm/s.
+    p = _rows("SET_SPINDLE_SPEED(0, 30.0000)", "SET_FEED_MODE(0, 1)", "SET_FEED_RATE(0.2000)",
+              "STRAIGHT_FEED(0.0000, 0.0000, -5.0000, 0.0000, 0.0000, 0.0000)")  # fmt: skip
+    assert p.feed[0] == pytest.approx(1e-4, rel=1e-12)
