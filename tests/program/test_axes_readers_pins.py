@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import shutil
 import warnings
 from pathlib import Path
 from types import SimpleNamespace
@@ -33,7 +34,14 @@ from ballscrew.program import run_program
 from ballscrew.program.axes import ProgramResult, Reversal, _limits, _torques_at
 from ballscrew.program.gcode import FEED, Program, program_from_rows, read_program
 from ballscrew.program.planner import plan
-from ballscrew.program.rs274 import LINE_MARK, _blocks, _marked, _refusal
+from ballscrew.program.rs274 import (
+    LINE_MARK,
+    _blocks,
+    _marked,
+    _refusal,
+    read_part_program,
+    read_program_rs274,
+)
 from ballscrew.program.sinumerik import drilling_cycle, to_rs274
 
 MASS = 300.0  # kg
@@ -456,6 +464,8 @@ def test_work_offsets_and_their_notes() -> None:
     assert out.splitlines() == ["G55", "G56", "G57", "G58", "G53 G0 Z0"]
     assert "G505 (settable work offset 5): read as G58, RS274/NGC's 5th: line 4" in notes
     assert not any("G57 (" in n for n in notes)
+    _, notes = to_rs274("G90 G506\n")  # the note names the offset's own word
+    assert "G506 (settable work offset 6): read as G59, RS274/NGC's 6th: line 1" in notes
 
 
 def test_path_modes_exact_stop_ends_and_rounding() -> None:
@@ -554,11 +564,19 @@ def test_an_arc_of_one_metre_radius_and_one_of_none() -> None:
         "ARC_FEED(-1000.0000, 1000.0000, -1000.0000, 0.0000, 1, 0.0000, 0.0, 0.0, 0.0)",
     )
     assert p.sweep[0] == pytest.approx(math.pi / 2, rel=1e-12)
-    # Radius 0 (the centre on the start): LinuxCNC's straight feed along the normal axis.
+    # Radius 0 (the centre on the start, here at X1 Y1): LinuxCNC's straight feed along
+    # the normal axis.
     p = _rows("SET_FEED_RATE(100.0000)",
-              "ARC_FEED(0.0000, 0.0000, 0.0000, 0.0000, 1, -2.0000, 0.0, 0.0, 0.0)")  # fmt: skip
-    assert p.kind.tolist() == [FEED]
-    np.testing.assert_allclose(p.end[0], [0.0, 0.0, -0.002], atol=1e-15)
+              "STRAIGHT_FEED(1.0000, 1.0000, 0.0000, 0.0000, 0.0000, 0.0000)",
+              "ARC_FEED(1.0000, 1.0000, 1.0000, 1.0000, 1, -2.0000, 0.0, 0.0, 0.0)")  # fmt: skip
+    assert p.kind.tolist() == [FEED, FEED]
+    np.testing.assert_allclose(p.end[1], [0.001, 0.001, -0.002], atol=1e-15)
+    # A turn count of 0 is no arc.
+    error = _refused(
+        "SET_FEED_RATE(100.0000)",
+        "ARC_FEED(2.0000, 0.0000, 1.0000, 0.0000, 0, 0.0000, 0.0, 0.0, 0.0)",
+    )
+    assert "at least one turn" in error.allowed
 
 
 def test_a_rotation_turns_xy_arcs_and_points_by_hand() -> None:
@@ -709,17 +727,75 @@ def test_an_arc_bulging_past_the_travel_names_its_first_sample_in_millimetres(
 
 
 @pytest.mark.parametrize(
-    ("letters", "text"),
+    ("letters", "text", "missing"),
     [
-        ("Y", "G1 Y10 F1000\nG2 X0 Y10 I5 J0\n"),  # X missing, in the XY plane
-        ("Z", "G1 Z10 F1000\nG18 G2 X0 Z10 I5 K0\n"),  # X missing, in the ZX plane
+        ("Y", "G1 Y10 F1000\nG2 X0 Y10 I5 J0\n", "X"),  # in the XY plane
+        ("Z", "G1 Z10 F1000\nG18 G2 X0 Z10 I5 K0\n", "X"),  # in the ZX plane
+        ("XY", "G1 Y10 F1000\nG19 G2 Y10 Z0 J5 K0\n", "Z"),  # in the YZ plane
     ],
 )
-def test_a_full_circle_through_a_missing_x_names_its_line(
-    tmp_path: Path, letters: str, text: str
+def test_a_full_circle_through_a_missing_axis_names_its_line(
+    tmp_path: Path, letters: str, text: str, missing: str
 ) -> None:
-    # X ends where it started, yet the circle moves it: the circle's line is named.
+    # The missing axis ends where it started, yet the circle moves it: its line is named.
     machine = _machine(tmp_path, force="0 N", letters=letters)
     with pytest.raises(BallScrewInputError) as info:
         run_program(machine, text)
-    assert (info.value.field, info.value.value) == ("program line 2", "X")
+    assert (info.value.field, info.value.value) == ("program line 2", missing)
+
+
+def test_an_inch_modal_cycle_below_its_approach_plane_is_refused() -> None:
+    # Z0.05 in is below RFP + SDIS = 0.1 in: RS274/NGC's G99 cycle would lift first.
+    with pytest.raises(BallScrewInputError) as info:
+        to_rs274("G70\nG0 Z0.05\nMCALL CYCLE81(0.1,0,0.1,-0.5)\nX1\n")
+    assert (info.value.field, info.value.value) == ("program line 4", "X/Y")
+
+
+def test_a_rotary_axis_alone_at_half_a_degree_a_minute() -> None:
+    p = _rows(
+        "SET_FEED_RATE(0.5000)",
+        "STRAIGHT_FEED(0.0000, 0.0000, 0.0000, 1.0000, 0.0000, 0.0000)",
+        rotary="A",
+    )
+    assert p.feed[0] == pytest.approx(math.radians(0.5) / 60.0, rel=1e-12)
+
+
+def test_a_command_of_a_called_file_before_any_program_line() -> None:
+    # rs274 prints a command outside the program's marked lines with dots for its N word.
+    with pytest.raises(BallScrewInputError) as info:
+        _blocks(["    1 N..... NURBS_FEED(1.0000, 2.0000)"], ["G5"], None)
+    assert info.value.field == "a subroutine file called after program line 1"
+
+
+def test_the_readers_default_arc_tolerance_is_2_um() -> None:
+    # G2 about (1, 0) mm from the origin to X2.0021: its end is 2.1 um off the 1 mm circle,
+    # past the 2 um allowed (0.1 % of the radius is 1 um).
+    with pytest.raises(BallScrewInputError):
+        read_part_program("G21 G17 G2 X2.0021 Y0 I1 J0 F100\n", reader="builtin")
+    assert read_part_program("G21 G17 G2 X2.0019 Y0 I1 J0 F100\n", reader="builtin").program
+
+
+@pytest.mark.skipif(shutil.which("rs274") is None, reason="no LinuxCNC rs274 on this machine")
+def test_rs274_reads_past_a_byte_order_mark() -> None:
+    p = read_program_rs274("\ufeffG21 G1 X1 F100\nM2\n")
+    np.testing.assert_allclose(p.end[0], [0.001, 0.0, 0.0], atol=1e-12)
+
+
+def test_the_tool_offsets_angle_adds_to_a_rotary_axis() -> None:
+    # A tool offset of A 10 deg with G5x A 5 and G92 A 1: A0 in the program is 16 deg.
+    p = _rows(
+        "SET_G5X_OFFSET(1, 0.0000, 0.0000, 0.0000, 5.0000, 0.0000, 0.0000)",
+        "SET_G92_OFFSET(0.0000, 0.0000, 0.0000, 1.0000, 0.0000, 0.0000)",
+        "USE_TOOL_LENGTH_OFFSET(0.0000, 0.0000, 0.0000, 10.0000, 0.0000, 0.0000)",
+        "STRAIGHT_TRAVERSE(0.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)",
+        rotary="A",
+    )
+    assert p.rotary_end is not None
+    assert math.degrees(p.rotary_end[0, 0]) == pytest.approx(16.0, rel=1e-12)
+
+
+def test_a_feed_per_revolution_at_30_rpm() -> None:
+    # 0.5 rev/s x 0.2 mm: 0.1 mm/s.
+    p = _rows("SET_SPINDLE_SPEED(0, 30.0000)", "SET_FEED_MODE(0, 1)", "SET_FEED_RATE(0.2000)",
+              "STRAIGHT_FEED(0.0000, 0.0000, -5.0000, 0.0000, 0.0000, 0.0000)")  # fmt: skip
+    assert p.feed[0] == pytest.approx(1e-4, rel=1e-12)
