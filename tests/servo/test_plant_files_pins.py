@@ -14,6 +14,7 @@ import dataclasses
 import math
 import warnings
 from types import SimpleNamespace
+from typing import Any
 
 import numpy as np
 import pytest
@@ -500,6 +501,75 @@ def test_the_load_map_defaults_to_the_cases_loads_mirrored() -> None:
     assert m.temperatures.tolist() == [30.0, 50.0]  # type: ignore[union-attr]
     form = run_export_friction(loaded, "complete", "table", speeds=speeds, temperatures=[30.0])
     assert form.temperatures == [30.0]  # type: ignore[union-attr]
+
+
+def _named(out: Any) -> list[str]:
+    return [n for n in out.notes if "data row(s)" in n]
+
+
+@pytest.mark.parametrize(("share", "named"), [(4.2, True), (3.8, False)])
+def test_exact_readings_name_one_past_four_floors(share: float, named: bool) -> None:
+    # 15 readings exactly on a line but one, off by share x 1e-9 of the largest torque: the
+    # others' residuals are rounding, so the robust scale is its floor, 1e-9 of the largest
+    # torque, and the reading is named past 4 floors (rounding is 1e-16 N*m here).
+    w = np.geomspace(1.0, 300.0, 15)
+    t = 0.3 + 2e-4 * w
+    t[6] += share * 1e-9 * float(np.max(t))
+    out = export_friction(CASE_BUNDLED, "complete", "coulomb-viscous", speeds=SPEEDS8,
+                          measured=MeasuredCurve(w, t, "m"))  # fmt: skip
+    assert _named(out) == (["at 20 degC, data row(s) 7 lie more than 4 robust standard "
+                            "deviations off the fitted curve: check them (they are kept in "
+                            "the fit)"] if named else [])  # fmt: skip
+
+
+@pytest.mark.parametrize(("times", "named"), [(1.1, True), (0.9, False)])
+def test_the_robust_scale_is_taken_about_the_median(times: float, named: bool) -> None:
+    # Twelve readings scattered unevenly about a line (seven above by 0.5 to 1.5 e, five
+    # below by 1.4 e), so that their residuals' median is not 0; one more reading at 10
+    # rad/s. The rule, computed here with numpy's own line fit: the others' residuals r,
+    # scale 1.4826 median|r - median r|, threshold 4 scales from the others' line.
+    e = 0.002
+    offsets = np.array([0.5, 1.5, -1.4, 0.67, 1.33, -1.4, 0.83, 1.17, -1.4, 1.0, -1.4, -1.4])
+    w = np.geomspace(1.0, 300.0, 12)
+    t = 0.3 + 2e-4 * w + offsets * e
+    slope, intercept = np.polyfit(w, t, 1)
+    r = t - (intercept + slope * w)
+    scale = 1.4826 * float(np.median(np.abs(r - np.median(r))))
+    # The median matters: 0.17 scales here (about -median the scale would be 1.42 times).
+    assert abs(float(np.median(r))) > 0.1 * scale
+    extra = intercept + slope * 10.0 + times * 4.0 * scale
+    out = export_friction(CASE_BUNDLED, "complete", "coulomb-viscous", speeds=SPEEDS8,
+                          measured=MeasuredCurve(np.append(w, 10.0), np.append(t, extra),
+                                                 "m"))  # fmt: skip
+    assert [n.split(" lie")[0] for n in _named(out)] == (
+        ["at 20 degC, data row(s) 13"] if named else []
+    )
+
+
+def test_lugre_is_judged_while_its_parameters_and_three_readings_remain() -> None:
+    # LuGre has 7 parameters: 11 readings are the least that are judged (11 >= 7 + 4). Two
+    # readings far off: the first is named (10 remain, 7 + 3); judging the second would
+    # leave 9, fewer than 7 + 3, so it is not, though a fifth of 11 would allow 2.
+    w = np.geomspace(0.3, 300.0, 11)
+    t = 0.29 + 0.16 * np.exp(-((w / 0.6) ** 0.8)) + 3e-4 * w
+    t[3] += 0.2
+    t[8] += 0.1
+    out = export_friction(CASE_BUNDLED, "complete", "lugre", speeds=SPEEDS8,
+                          bristle_stiffness=50.0,
+                          measured=MeasuredCurve(w, t, "m"))  # fmt: skip
+    assert [n.split(" lie")[0] for n in _named(out)] == ["at 20 degC, data row(s) 4"]
+
+
+def test_a_reading_at_rest_does_not_make_a_curve_two_way() -> None:
+    # Readings at 0 and forward only: the curve still turns one way, and is said so.
+    w = np.array([0.0, 1.0, 3.0, 10.0, 30.0])
+    out = export_friction(CASE_BUNDLED, "complete", "coulomb-viscous", speeds=SPEEDS8,
+                          measured=MeasuredCurve(w, 0.3 + 2e-4 * w, "m"))  # fmt: skip
+    assert any("turns one way" in n for n in out.notes)
+    w = np.array([-0.5, -0.2, 0.2, 0.5, 0.8, 0.9])
+    out = export_friction(CASE_BUNDLED, "complete", "coulomb-viscous", speeds=SPEEDS8,
+                          measured=MeasuredCurve(w, 0.3 + 2e-4 * np.abs(w), "m"))  # fmt: skip
+    assert not any("turns one way" in n for n in out.notes)
 
 
 # --------------------------------------------------------------------------- servo.plant
