@@ -880,3 +880,16 @@ def test_a_diverging_loop_and_bad_references_are_refused() -> None:
         simulate_axis(a, _loop(1e-3, a.mass), [0.0], [0.0], [0.0])
     two = simulate_axis(a, _loop(1e-3, a.mass), [0.0, 0.0], [0.0, 0.0], [0.0, 0.0])
     assert two.time.tolist() == [0.0, 1e-3]
+
+
+def test_the_guides_yield_their_pre_sliding_length_under_half_their_friction() -> None:
+    # Half the guides' Coulomb force held on the table: the bristle stops at z = F / g0,
+    # half of GUIDE_PRESLIDING (1 um), after x = -1 um ln(1 - 1/2) = 0.693 um of travel
+    # (LuGre forwards, dz = dx (1 - z / delta)). 3 %: the critically damped bristle's
+    # overshoot while it settles (1.3 %).
+    a = dataclasses.replace(frictionless(_rigid()), guide_coulomb=30.0)
+    n, ts = 400, 1e-4
+    trace = simulate_axis(a, _open_loop(ts), np.zeros(n), np.zeros(n), np.zeros(n),
+                          compensation=np.full(n, 15.0))  # fmt: skip
+    assert trace.table[-1] == pytest.approx(1e-6 * math.log(2.0), rel=0.03)
+    assert trace.table[-1] == pytest.approx(trace.table[-50], rel=1e-4)  # at rest
