@@ -566,6 +566,9 @@ def test_a_reading_at_rest_does_not_make_a_curve_two_way() -> None:
     out = export_friction(CASE_BUNDLED, "complete", "coulomb-viscous", speeds=SPEEDS8,
                           measured=MeasuredCurve(w, 0.3 + 2e-4 * w, "m"))  # fmt: skip
     assert any("turns one way" in n for n in out.notes)
+    out = export_friction(CASE_BUNDLED, "complete", "coulomb-viscous", speeds=SPEEDS8,
+                          measured=MeasuredCurve(-w, 0.3 + 2e-4 * w, "m"))  # fmt: skip
+    assert any("turns one way" in n for n in out.notes)
     w = np.array([-0.5, -0.2, 0.2, 0.5, 0.8, 0.9])
     out = export_friction(CASE_BUNDLED, "complete", "coulomb-viscous", speeds=SPEEDS8,
                           measured=MeasuredCurve(w, 0.3 + 2e-4 * np.abs(w), "m"))  # fmt: skip
