@@ -32,7 +32,7 @@ from ballscrew.io.case import Case, load_case, parse_case
 from ballscrew.io.measured import MeasuredCurve
 from ballscrew.servo.cascade import Gains
 from ballscrew.servo.export import axis_inertia, export_friction, log_speeds, run_export_friction
-from ballscrew.servo.plant import AxisDynamics, axis_dynamics, frictionless
+from ballscrew.servo.plant import PRE_ROLLING_RANGE, AxisDynamics, axis_dynamics, frictionless
 from ballscrew.servo.simulate import _interp, simulate_axis, substeps
 from ballscrew.servo.tables import (
     CompensationTable,
@@ -628,6 +628,19 @@ def test_the_two_mass_plant_of_a_geared_axis_by_hand() -> None:
     assert t.bristle_damping == pytest.approx(2 * math.sqrt(creep / 2e-6 * 100.0), rel=1e-12)
     assert t.drag_mass == 100.0 and a.drag_mass == pytest.approx(m1, rel=1e-12)
     assert any("(given;" in n for n in t.notes) and any("(the default" in n for n in a.notes)
+    # Guides not given: none (and said); the note gives the bristle in um and N/um.
+    assert (a.guide_coulomb, a.guide_viscous) == (0.0, 0.0)
+    assert any("guideway friction left out" in n for n in a.notes)
+    (note,) = [n for n in a.notes if "pre-rolling length" in n]
+    assert "pre-rolling length 5 um" in note and f"{creep / 5e-6 / 1e6:.4g} N/um" in note
+    assert f"critically damped on {m1:.4g} kg" in note
+    # Without a span the screw's length (and inertia) is the set-up's for no travel.
+    bare_case = _axis_case(GEARED)
+    js0 = axis_setup(bare_case.screw, bare_case.axis, bare_case.thermal, 0.0).axis.screw_inertia
+    bare = axis_dynamics(bare_case)
+    m1_bare = (9e-3 + 2e-4 + js0) * (2 * math.pi / 0.01) ** 2
+    assert bare.motor_mass == pytest.approx(m1_bare, rel=1e-12)
+    assert axis_dynamics(case).speeds[-1] == pytest.approx(0.5, rel=1e-12)  # the default
 
 
 def test_a_vertical_axis_carries_its_weight_on_the_table() -> None:
@@ -679,7 +692,7 @@ def test_the_plant_figures_by_hand() -> None:
 
 
 def test_the_plants_inputs_are_checked() -> None:
-    with pytest.raises(BallScrewInputError, match="moving_mass"):
+    with pytest.raises(BallScrewInputError, match=r"moving_mass = 0\.0 is not allowed"):
         axis_dynamics(_axis_case("gear_ratio = 2"))
     case = _axis_case(SPRUNG)
     for bad in (0.0, -0.1):
@@ -700,6 +713,51 @@ def test_the_plants_inputs_are_checked() -> None:
     k_nut = design_nut_stiffness(single.screw, 1000.0)
     assert a.stiffness == pytest.approx(k_nut, rel=1e-12)
     assert any("no span" in n for n in a.notes) and any("bearings rigid" in n for n in a.notes)
+    assert axis_dynamics(single, axial_load=1.0).stiffness == pytest.approx(
+        design_nut_stiffness(single.screw, 1.0), rel=1e-12
+    )
+    # Inclined, the weight joins the process load on the nut: 1000 N - 50 kg g.
+    tilted = parse_case('title = "s"\n[screw]\ndesignation = "32x10 single 3x1 6.35"\n'
+                        '[lubricant]\nname = "mineral ISO VG 68"\n[axis]\n'
+                        'moving_mass = "50 kg"\nincline = "90 deg"\n')  # fmt: skip
+    a = axis_dynamics(tilted, axial_load=1000.0, max_speed=0.1)
+    nut = 1000.0 - 50.0 * 9.80665
+    assert a.stiffness == pytest.approx(design_nut_stiffness(tilted.screw, nut), rel=1e-12)
+    force = float(_model(tilted, np.array([0.1 * 2 * math.pi / 0.01]), 20.0, nut)[0])
+    assert a.friction[-1] == pytest.approx(force * 2 * math.pi / 0.01, rel=1e-9)
+    assert any(f"complete at {nut:.4g} N" in n for n in a.notes)
+
+
+def test_a_creep_friction_below_one_newton_sets_the_bristle_too() -> None:
+    # A 12 x 4 single nut under 5 N: 0.39 N of creep friction, over the default 5 um.
+    case = parse_case('title = "s"\n[screw]\ndesignation = "12x4 single 3x1 2.5"\n'
+                      '[lubricant]\nname = "mineral ISO VG 68"\n[axis]\n'
+                      'moving_mass = "5 kg"\n')  # fmt: skip
+    a = axis_dynamics(case, axial_load=5.0)
+    assert 0.0 < a.coulomb_force() < 1.0
+    assert a.bristle_stiffness == pytest.approx(a.coulomb_force() / 5e-6, rel=1e-12)
+
+
+def test_the_pre_rolling_ranges_lower_end_is_the_linear_limit() -> None:
+    # The lower end is where the build-up F = g (1 - e^(-x / delta)) stays linear within
+    # 5 % at 0.1 um of travel, rounded: (1 - e^(-0.1)) / 0.1 = 0.952 at 1 um, 0.949 at
+    # 0.95 um (the limit is 0.967 um).
+    low = PRE_ROLLING_RANGE[0]
+
+    def linear(delta: float) -> float:
+        return -math.expm1(-0.1e-6 / delta) / (0.1e-6 / delta)
+
+    assert linear(low) > 0.95 > linear(0.95 * low)
+
+
+def test_a_map_with_a_point_at_rest_creeps_at_its_slowest_moving_speeds() -> None:
+    a = _hand_axis(speeds=np.array([-1.0, -1e-3, 0.0, 1e-3, 1.0]),
+                   friction=np.array([-80.0, -30.0, 0.0, 50.0, 90.0]))  # fmt: skip
+    assert a.coulomb_force() == 40.0
+    # A hand-built axis without guides, weight or gear has none of them and is direct.
+    d = _rigid().as_dict()
+    assert (d["guide_coulomb_N"], d["guide_viscous_N_s_per_m"]) == (0.0, 0.0)
+    assert d["external_force_N"] == 0.0 and d["gear_ratio"] == 1.0
 
 
 # --------------------------------------------------------------------------- servo.simulate
