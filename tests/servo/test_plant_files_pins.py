@@ -954,3 +954,62 @@ def test_the_guides_yield_their_pre_sliding_length_under_half_their_friction() -
                           compensation=np.full(n, 15.0))  # fmt: skip
     assert trace.table[-1] == pytest.approx(1e-6 * math.log(2.0), rel=0.03)
     assert trace.table[-1] == pytest.approx(trace.table[-50], rel=1e-4)  # at rest
+
+
+def test_substeps_of_a_light_guide_and_of_no_bristle() -> None:
+    # A soft screw bristle (sqrt(1e3 / 100) = 3.2 1/s) and 0.5 N on the guides:
+    # 2 sqrt(0.5 N / 1 um / 100 kg) = 141 1/s sets ceil(1e-2 * 141 / 0.1) = 15 sub-steps.
+    a = _rigid(bristle_stiffness=1e3, bristle_damping=10.0, guide_coulomb=0.5)
+    assert substeps(a, 1e-2) == math.ceil(1e-2 * 2 * math.sqrt(0.5e6 / 100.0) / 0.1)
+    # No bristle and no guide: nothing to resolve, one step a sample.
+    assert substeps(frictionless(_rigid(bristle_stiffness=0.0, bristle_damping=0.0)), 1e-3) == 1
+
+
+@pytest.mark.parametrize("scale", [1.0, 0.01])
+def test_small_frictions_act_too(scale: float) -> None:
+    # 50 N and 30 N, or 0.5 N and 0.3 N (below 1 N, still friction), against 300 N or 3 N
+    # on 100 kg: a = (300 - 50 - 30) N x scale / 100 kg = 2.2 m/s^2 x scale.
+    s0 = 50.0 * scale / 1e-6
+    a = _rigid(friction=50.0 * scale * np.sign(FLAT), bristle_stiffness=s0,
+               bristle_damping=2 * math.sqrt(s0 * 100.0), guide_coulomb=30.0 * scale)  # fmt: skip
+    ts, n = 1e-3, 101
+    trace = simulate_axis(a, _open_loop(ts), np.zeros(n), np.zeros(n), np.zeros(n),
+                          compensation=np.full(n, 300.0 * scale))  # fmt: skip
+    assert _second_difference(trace.table, 70, 20, ts) == pytest.approx(2.2 * scale, rel=2e-3)
+    assert trace.friction[-1] == pytest.approx(50.0 * scale, rel=1e-6)
+
+
+def test_the_start_is_at_the_first_reference_and_a_held_weight_stays() -> None:
+    # Open loop, the integrator holding the weight (-500 N) from the start: the axis stays
+    # where the reference starts (1 mm), rigid or sprung, drag on either side.
+    n, ts = 100, 1e-3
+    x = np.linspace(1e-3, 2e-3, n)
+    for a in (frictionless(_rigid(external_force=-500.0)),
+              frictionless(_hand_axis(external_force=-500.0, drag_side="table"))):  # fmt: skip
+        trace = simulate_axis(a, _open_loop(ts), x, np.zeros(n), np.zeros(n))
+        assert trace.motor[0] == 1e-3
+        assert trace.motor[-1] == pytest.approx(1e-3, abs=1e-12)
+
+
+@pytest.mark.parametrize("side", ["motor", "table"])
+def test_the_spring_carries_the_tables_inertia_and_its_friction(side: str) -> None:
+    # At a steady 2.2 m/s^2 the spring's stretch x1 - x2 is what it pushes the table with:
+    # m2 a + the guide's 30 N (+ the screw's 50 N when the drag is on the table), over k;
+    # averaged over 30 ms (the mode rings at 2.2 ms, damped by 0.7 %). 3 %: the ringing left.
+    a = _hand_axis(guide_coulomb=30.0, drag_side=side, friction=50.0 * np.sign(FLAT),
+                   speeds=FLAT)  # fmt: skip
+    ts, n = 1e-3, 101
+    trace = simulate_axis(a, _open_loop(ts), np.zeros(n), np.zeros(n), np.zeros(n),
+                          compensation=np.full(n, 300.0))  # fmt: skip
+    stretch = float(np.mean((trace.motor - trace.table)[-30:]))
+    carried = 60.0 * 2.2 + 30.0 + (50.0 if side == "table" else 0.0)
+    assert stretch == pytest.approx(carried / 2e8, rel=0.03)
+
+
+def test_viscous_guides_with_the_drag_on_the_table() -> None:
+    ts, n = 1e-3, 501
+    t = np.arange(n) * ts
+    a = dataclasses.replace(frictionless(_hand_axis(drag_side="table")), guide_viscous=100.0)
+    trace = simulate_axis(a, _open_loop(ts), np.zeros(n), np.zeros(n), np.zeros(n),
+                          compensation=np.full(n, 100.0))  # fmt: skip
+    assert trace.table[100:] == pytest.approx((t - (1 - np.exp(-t)))[100:], rel=2e-3)
