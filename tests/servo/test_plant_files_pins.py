@@ -1027,7 +1027,7 @@ def test_the_guides_bristle_is_critically_damped() -> None:
     g1 = 2.0 * math.sqrt(g0 * mass)
 
     def rhs(_t: float, s: np.ndarray) -> list[float]:
-        x, v, z = s
+        _x, v, z = s
         dz = v - g0 * abs(v) * z / gc
         return [v, (force - g0 * z - g1 * dz) / mass, dz]
 
