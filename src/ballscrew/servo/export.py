@@ -262,7 +262,7 @@ def _fit_measured(
         out.notes.append(
             f"the measured curve has {len(out.temperatures)} temperatures: one fit at each"
         )
-    if np.all(w_all > 0.0) or np.all(w_all < 0.0):
+    if not (np.any(w_all > 0.0) and np.any(w_all < 0.0)):  # a reading at rest turns neither way
         out.notes.append("the measured curve turns one way: the form is taken as odd in the "
                          "speed (the same friction both ways)")  # fmt: skip
     return out
