@@ -222,21 +222,25 @@ def test_doubling_the_friction_behind_a_gear_adds_the_drag_at_the_motor() -> Non
     assert peak == pytest.approx(1.459475 + 0.135855, rel=2e-6)
 
 
+_BARE: dict[str, Any] = dict(
+    mass_force=np.zeros(1), process_force=np.zeros(1), turns=np.ones(1),
+    motor_torque=np.zeros(1), torque_mass_force=np.zeros(1), torque_process_force=np.zeros(1),
+    motor_friction=np.zeros(1), weights=np.ones(1), duration=1.0, rms_torque=0.0, lead=0.01,
+    gear_ratio=1.0, preload=0.0, preloaded=False, dynamic_rating=None, static_rating=None,
+    load_factor=1.0, reliability=0.9, temperature_rise=0.0, pretension=0.0, moving_mass=0.0,
+    screw_inertia=0.0, coupling_inertia=0.0, motor_inertia=1e-4,
+)  # fmt: skip
+"""One sample at rest, a 10 mm lead, no gear: the drawn criteria's inputs set by hand."""
+
+
 def test_a_cycle_of_more_samples_than_a_block_is_drawn_one_draw_at_a_time() -> None:
     # 2 000 001 distinct force samples, more than a block of 2 million (draw, sample)
     # pairs holds: one draw per block. The peak force 2000 N is 2 kN against a 4 kN
     # buckling limit, 0.5 in every draw.
     n = 2_000_001
     force = np.linspace(0.0, 2000.0, n)
-    zero = np.zeros(1)
-    inputs = Inputs(
-        mass_force=force, process_force=np.zeros(n), turns=np.ones(n), motor_torque=zero,
-        torque_mass_force=zero, torque_process_force=zero, motor_friction=zero,
-        weights=np.ones(1), duration=1.0, rms_torque=0.0, lead=0.01, gear_ratio=1.0,
-        preload=0.0, preloaded=False, dynamic_rating=None, static_rating=None,
-        load_factor=1.0, reliability=0.9, temperature_rise=0.0, pretension=0.0,
-        moving_mass=0.0, screw_inertia=0.0, coupling_inertia=0.0, motor_inertia=1e-4,
-    )  # fmt: skip
+    inputs = Inputs(**(_BARE | {"mass_force": force, "process_force": np.zeros(n),
+                                "turns": np.ones(n)}))  # fmt: skip
     row = Criterion("buckling load", 2.0, 4.0, "kN", 0.5, "OK", "", key="buckling")
     out = check_module._row_samples(inputs, [row], ones(3))
     np.testing.assert_array_equal(out["buckling"], [0.5, 0.5, 0.5])
@@ -277,6 +281,17 @@ def test_a_lightly_loaded_flank_alone_sets_a_single_nuts_life() -> None:
     hours = life_hours(force, np.zeros(1), np.array([20_000.0]), np.ones(3), 60.0,
                        preloaded=False, load_factor=1.0, reliability=0.9)  # fmt: skip
     assert hours[0] == pytest.approx(8e15 / 3600.0, rel=1e-12)
+
+
+def test_the_inertia_ratio_behind_a_gear_of_three() -> None:
+    # J_load = (J_s + J_c + m (l / 2 pi)^2) / i^2 (THK A15-47's reflected inertia): 8e-4,
+    # 1e-4 and 200 kg on a 10 mm lead, 1:3: (9e-4 + 5.066059e-4) / 9 = 1.562895e-4 kg m^2,
+    # 0.781448 times a rotor of 2e-4 kg m^2 (a gear of 2 would not tell i^2 from 2 i).
+    x = Inputs(**(_BARE | {"gear_ratio": 3.0, "screw_inertia": 8e-4, "coupling_inertia": 1e-4,
+                           "moving_mass": 200.0, "motor_inertia": 2e-4}))  # fmt: skip
+    j = (9e-4 + 200.0 * (0.01 / (2.0 * math.pi)) ** 2) / 9.0
+    value = float(check_module.CRITERIA["inertia_ratio"].value(Sample(x, ones()))[0])
+    assert value == pytest.approx(j / 2e-4, rel=1e-12)
 
 
 # --- axis/uncertainty.py -------------------------------------------------------------------
