@@ -382,6 +382,16 @@ def test_the_noise_of_too_few_or_constant_samples() -> None:
         noise_scatter(np.zeros(10), order=0)
 
 
+def test_the_noise_on_a_constant_jerk_is_the_noises() -> None:
+    # A constant jerk j has the constant third difference j dt^3 (8e-5 m here, 80 times the
+    # noise): the median takes it, and the scatter about it is the 1 um noise's. 4000
+    # samples: the MAD's sampling error is about 1.65 / sqrt(4000) = 2.6 %; 8 % is three.
+    rng = np.random.default_rng(5)
+    t = np.arange(4000) * 0.02
+    x = 10.0 * t**3 / 6.0 + rng.normal(0.0, 1e-6, t.size)
+    assert noise_scatter(x) == pytest.approx(1e-6, rel=0.08)
+
+
 def test_a_quantum_is_whole_multiples_to_one_percent_in_99_steps_of_100() -> None:
     # Steps of 1 and 99 of 2.0095 quanta: every ratio within 1 % of a whole number; 2.0105:
     # not. 99 of 100 steps whole is enough: one step of 1.5 quanta among them still reads.
