@@ -375,7 +375,7 @@ def test_the_noise_of_too_few_or_constant_samples() -> None:
     # Third differences need order + 2 = 5 samples at least; first ones 3; a constant trace
     # has no noise and no quantum.
     assert noise_scatter(np.zeros(5)) == 0.0
-    with pytest.raises(BallScrewInputError, match="at least 5"):
+    with pytest.raises(BallScrewInputError, match=r"'. samples' is not allowed: at least 5$"):
         noise_scatter(np.zeros(4))
     assert noise_scatter(np.zeros(3), order=1) == 0.0
     with pytest.raises(BallScrewInputError, match="order"):
