@@ -338,7 +338,13 @@ def test_the_model_errors_text_gives_the_median_factor() -> None:
                and d["nut"] == "double" and d["level"] == "below 1 N*m"
                and d["role"] == "test")  # fmt: skip
     factor = 10.0 ** -float(row["mean_log10"])
-    assert f"the model's x {factor:.3g})" in model_error("complete", "double", 0.3).text
+    error = model_error("complete", "double", 0.3)
+    assert f"the model's x {factor:.3g})" in error.text
+    # And its sigma(ln T): sqrt(s^2 (1 + 1/n) + u_ref^2) ln 10 of the row's printed figures.
+    n, sd, ref = int(row["rows"]), float(row["sd_log10"]), float(row["reference_sd_log10"])
+    sigma = math.sqrt(sd * sd * (1.0 + 1.0 / n) + ref * ref) * math.log(10.0)
+    assert error.sigma == pytest.approx(sigma, rel=1e-12)
+    assert error.bias == pytest.approx(float(row["mean_log10"]) * math.log(10.0), rel=1e-12)
 
 
 def test_the_four_point_range_is_skfs_and_jungnickels() -> None:
