@@ -329,18 +329,25 @@ def test_the_model_errors_torque_level_and_law_speed_edges() -> None:
     assert model_error("olaru", "double", 0.3).rows == 0  # no rows: none counted
 
 
-def test_the_model_errors_text_gives_the_median_factor() -> None:
-    # The true torque's median is the model's times 10^-b, b the rows' mean log10 ratio,
-    # read here from the shipped data file.
+def _printed_row(model: str, nut: str) -> dict[str, str]:
     text = resources.files("ballscrew").joinpath("data/model_scatter.csv").read_text("utf-8")
     data = csv.DictReader(line for line in text.splitlines() if not line.startswith("#"))
-    row = next(d for d in data if d["model"] == "complete" and d["reference"] == "printed"
-               and d["nut"] == "double" and d["level"] == "below 1 N*m"
-               and d["role"] == "test")  # fmt: skip
+    return next(d for d in data if d["model"] == model and d["reference"] == "printed"
+                and d["nut"] == nut and d["level"] == "below 1 N*m"
+                and d["role"] == "test")  # fmt: skip
+
+
+def test_the_model_errors_text_gives_the_median_factor() -> None:
+    # The true torque's median is the model's times 10^-b, b the rows' mean log10 ratio,
+    # read here from the shipped data file: the catalogue rule against a 4-point nut's
+    # reference (1.25 times the rule), b = -0.0969, x 1.25.
+    row = _printed_row("catalog", "single-4point")
     factor = 10.0 ** -float(row["mean_log10"])
+    assert f"{factor:.3g}" == "1.25"
+    assert f"the model's x {factor:.3g})" in model_error("catalog", "single-4point", 0.3).text
+    # The complete model's sigma(ln T): sqrt(s^2 (1 + 1/n) + u_ref^2) ln 10 of its row.
+    row = _printed_row("complete", "double")
     error = model_error("complete", "double", 0.3)
-    assert f"the model's x {factor:.3g})" in error.text
-    # And its sigma(ln T): sqrt(s^2 (1 + 1/n) + u_ref^2) ln 10 of the row's printed figures.
     n, sd, ref = int(row["rows"]), float(row["sd_log10"]), float(row["reference_sd_log10"])
     sigma = math.sqrt(sd * sd * (1.0 + 1.0 / n) + ref * ref) * math.log(10.0)
     assert error.sigma == pytest.approx(sigma, rel=1e-12)
