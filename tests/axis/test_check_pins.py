@@ -500,3 +500,17 @@ def test_the_energy_per_cycle_is_one_cycles() -> None:
     three = run_energy(case, profile_from_move(MOVE, 3), ["catalog"], cycles=3).as_dict()
     assert three["friction_energy_per_cycle_J"] == pytest.approx(
         one["friction_energy_J"], rel=1e-9)  # fmt: skip
+
+
+def test_a_trajectory_file_repeated(tmp_path: Any) -> None:
+    # 1 s of a trajectory, at rest then 10 mm, repeated 3 times: 3 s and 30 mm, each
+    # repetition starting where the last ended.
+    t = np.linspace(0.0, 1.0, 101)
+    x = np.where(t < 0.5, 0.0, 10.0 * (t - 0.5) / 0.5)
+    path = tmp_path / "move.csv"
+    path.write_text("time [s],position [mm]\n"
+                    + "\n".join(f"{a:.2f},{b:.3f}" for a, b in zip(t, x, strict=True)))  # fmt: skip
+    one = duty.profile_from_file(str(path), 1, standstill_speed=0.0)
+    three = duty.profile_from_file(str(path), 3, standstill_speed=0.0)
+    assert three.duration == pytest.approx(3.0 * one.duration, rel=1e-12)
+    assert np.ptp(three.position) == pytest.approx(3.0 * np.ptp(one.position), rel=1e-12)
