@@ -222,21 +222,25 @@ def test_doubling_the_friction_behind_a_gear_adds_the_drag_at_the_motor() -> Non
     assert peak == pytest.approx(1.459475 + 0.135855, rel=2e-6)
 
 
+_BARE: dict[str, Any] = dict(
+    mass_force=np.zeros(1), process_force=np.zeros(1), turns=np.ones(1),
+    motor_torque=np.zeros(1), torque_mass_force=np.zeros(1), torque_process_force=np.zeros(1),
+    motor_friction=np.zeros(1), weights=np.ones(1), duration=1.0, rms_torque=0.0, lead=0.01,
+    gear_ratio=1.0, preload=0.0, preloaded=False, dynamic_rating=None, static_rating=None,
+    load_factor=1.0, reliability=0.9, temperature_rise=0.0, pretension=0.0, moving_mass=0.0,
+    screw_inertia=0.0, coupling_inertia=0.0, motor_inertia=1e-4,
+)  # fmt: skip
+"""One sample at rest, a 10 mm lead, no gear: the drawn criteria's inputs set by hand."""
+
+
 def test_a_cycle_of_more_samples_than_a_block_is_drawn_one_draw_at_a_time() -> None:
     # 2 000 001 distinct force samples, more than a block of 2 million (draw, sample)
     # pairs holds: one draw per block. The peak force 2000 N is 2 kN against a 4 kN
     # buckling limit, 0.5 in every draw.
     n = 2_000_001
     force = np.linspace(0.0, 2000.0, n)
-    zero = np.zeros(1)
-    inputs = Inputs(
-        mass_force=force, process_force=np.zeros(n), turns=np.ones(n), motor_torque=zero,
-        torque_mass_force=zero, torque_process_force=zero, motor_friction=zero,
-        weights=np.ones(1), duration=1.0, rms_torque=0.0, lead=0.01, gear_ratio=1.0,
-        preload=0.0, preloaded=False, dynamic_rating=None, static_rating=None,
-        load_factor=1.0, reliability=0.9, temperature_rise=0.0, pretension=0.0,
-        moving_mass=0.0, screw_inertia=0.0, coupling_inertia=0.0, motor_inertia=1e-4,
-    )  # fmt: skip
+    inputs = Inputs(**(_BARE | {"mass_force": force, "process_force": np.zeros(n),
+                                "turns": np.ones(n)}))  # fmt: skip
     row = Criterion("buckling load", 2.0, 4.0, "kN", 0.5, "OK", "", key="buckling")
     out = check_module._row_samples(inputs, [row], ones(3))
     np.testing.assert_array_equal(out["buckling"], [0.5, 0.5, 0.5])
@@ -279,6 +283,17 @@ def test_a_lightly_loaded_flank_alone_sets_a_single_nuts_life() -> None:
     assert hours[0] == pytest.approx(8e15 / 3600.0, rel=1e-12)
 
 
+def test_the_inertia_ratio_behind_a_gear_of_three() -> None:
+    # J_load = (J_s + J_c + m (l / 2 pi)^2) / i^2 (THK A15-47's reflected inertia): 8e-4,
+    # 1e-4 and 200 kg on a 10 mm lead, 1:3: (9e-4 + 5.066059e-4) / 9 = 1.562895e-4 kg m^2,
+    # 0.781448 times a rotor of 2e-4 kg m^2 (a gear of 2 would not tell i^2 from 2 i).
+    x = Inputs(**(_BARE | {"gear_ratio": 3.0, "screw_inertia": 8e-4, "coupling_inertia": 1e-4,
+                           "moving_mass": 200.0, "motor_inertia": 2e-4}))  # fmt: skip
+    j = (9e-4 + 200.0 * (0.01 / (2.0 * math.pi)) ** 2) / 9.0
+    value = float(check_module.CRITERIA["inertia_ratio"].value(Sample(x, ones()))[0])
+    assert value == pytest.approx(j / 2e-4, rel=1e-12)
+
+
 # --- axis/uncertainty.py -------------------------------------------------------------------
 
 
@@ -314,16 +329,29 @@ def test_the_model_errors_torque_level_and_law_speed_edges() -> None:
     assert model_error("olaru", "double", 0.3).rows == 0  # no rows: none counted
 
 
-def test_the_model_errors_text_gives_the_median_factor() -> None:
-    # The true torque's median is the model's times 10^-b, b the rows' mean log10 ratio,
-    # read here from the shipped data file.
+def _printed_row(model: str, nut: str) -> dict[str, str]:
     text = resources.files("ballscrew").joinpath("data/model_scatter.csv").read_text("utf-8")
     data = csv.DictReader(line for line in text.splitlines() if not line.startswith("#"))
-    row = next(d for d in data if d["model"] == "complete" and d["reference"] == "printed"
-               and d["nut"] == "double" and d["level"] == "below 1 N*m"
-               and d["role"] == "test")  # fmt: skip
+    return next(d for d in data if d["model"] == model and d["reference"] == "printed"
+                and d["nut"] == nut and d["level"] == "below 1 N*m"
+                and d["role"] == "test")  # fmt: skip
+
+
+def test_the_model_errors_text_gives_the_median_factor() -> None:
+    # The true torque's median is the model's times 10^-b, b the rows' mean log10 ratio,
+    # read here from the shipped data file: the catalogue rule against a 4-point nut's
+    # reference (1.25 times the rule), b = -0.0969, x 1.25.
+    row = _printed_row("catalog", "single-4point")
     factor = 10.0 ** -float(row["mean_log10"])
-    assert f"the model's x {factor:.3g})" in model_error("complete", "double", 0.3).text
+    assert f"{factor:.3g}" == "1.25"
+    assert f"the model's x {factor:.3g})" in model_error("catalog", "single-4point", 0.3).text
+    # The complete model's sigma(ln T): sqrt(s^2 (1 + 1/n) + u_ref^2) ln 10 of its row.
+    row = _printed_row("complete", "double")
+    error = model_error("complete", "double", 0.3)
+    n, sd, ref = int(row["rows"]), float(row["sd_log10"]), float(row["reference_sd_log10"])
+    sigma = math.sqrt(sd * sd * (1.0 + 1.0 / n) + ref * ref) * math.log(10.0)
+    assert error.sigma == pytest.approx(sigma, rel=1e-12)
+    assert error.bias == pytest.approx(float(row["mean_log10"]) * math.log(10.0), rel=1e-12)
 
 
 def test_the_four_point_range_is_skfs_and_jungnickels() -> None:
@@ -360,11 +388,21 @@ def test_the_noise_of_too_few_or_constant_samples() -> None:
     # Third differences need order + 2 = 5 samples at least; first ones 3; a constant trace
     # has no noise and no quantum.
     assert noise_scatter(np.zeros(5)) == 0.0
-    with pytest.raises(BallScrewInputError, match="at least 5"):
+    with pytest.raises(BallScrewInputError, match=r"'. samples' is not allowed: at least 5$"):
         noise_scatter(np.zeros(4))
     assert noise_scatter(np.zeros(3), order=1) == 0.0
     with pytest.raises(BallScrewInputError, match="order"):
         noise_scatter(np.zeros(10), order=0)
+
+
+def test_the_noise_on_a_constant_jerk_is_the_noises() -> None:
+    # A constant jerk j has the constant third difference j dt^3 (8e-5 m here, 80 times the
+    # noise): the median takes it, and the scatter about it is the 1 um noise's. 4000
+    # samples: the MAD's sampling error is about 1.65 / sqrt(4000) = 2.6 %; 8 % is three.
+    rng = np.random.default_rng(5)
+    t = np.arange(4000) * 0.02
+    x = 10.0 * t**3 / 6.0 + rng.normal(0.0, 1e-6, t.size)
+    assert noise_scatter(x) == pytest.approx(1e-6, rel=0.08)
 
 
 def test_a_quantum_is_whole_multiples_to_one_percent_in_99_steps_of_100() -> None:
@@ -462,3 +500,17 @@ def test_the_energy_per_cycle_is_one_cycles() -> None:
     three = run_energy(case, profile_from_move(MOVE, 3), ["catalog"], cycles=3).as_dict()
     assert three["friction_energy_per_cycle_J"] == pytest.approx(
         one["friction_energy_J"], rel=1e-9)  # fmt: skip
+
+
+def test_a_trajectory_file_repeated(tmp_path: Any) -> None:
+    # 1 s of a trajectory, at rest then 10 mm, repeated 3 times: 3 s and 30 mm, each
+    # repetition starting where the last ended.
+    t = np.linspace(0.0, 1.0, 101)
+    x = np.where(t < 0.5, 0.0, 10.0 * (t - 0.5) / 0.5)
+    path = tmp_path / "move.csv"
+    path.write_text("time [s],position [mm]\n"
+                    + "\n".join(f"{a:.2f},{b:.3f}" for a, b in zip(t, x, strict=True)))  # fmt: skip
+    one = duty.profile_from_file(str(path), 1, standstill_speed=0.0)
+    three = duty.profile_from_file(str(path), 3, standstill_speed=0.0)
+    assert three.duration == pytest.approx(3.0 * one.duration, rel=1e-12)
+    assert np.ptp(three.position) == pytest.approx(3.0 * np.ptp(one.position), rel=1e-12)
