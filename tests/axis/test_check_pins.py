@@ -514,3 +514,33 @@ def test_a_trajectory_file_repeated(tmp_path: Any) -> None:
     three = duty.profile_from_file(str(path), 3, standstill_speed=0.0)
     assert three.duration == pytest.approx(3.0 * one.duration, rel=1e-12)
     assert np.ptp(three.position) == pytest.approx(3.0 * np.ptp(one.position), rel=1e-12)
+
+
+def _with_third_differences(d: list[float]) -> np.ndarray:
+    """A trace whose third differences are exactly ``d`` (integers: every sum is exact)."""
+    y = np.concatenate([[0.0, 0.0, 0.0], np.asarray(d, dtype=float)])
+    return np.cumsum(np.cumsum(np.cumsum(y)))
+
+
+def test_noise_scatter_cuts_at_four_spreads_about_the_median() -> None:
+    # Third differences 100 + k for k = -50..50, and two readings at 100 +/- 160. The median
+    # is 100; the deviations are 0, then 1..50 twice, then 160 twice: their median (the 52nd
+    # of 103) is 26, a spread of 1.4826 * 26 = 38.55 and a cut at 4 spreads of 154.2, which
+    # drops the two at 160 (4.4 spreads, 169.6, would keep them). Without them the median
+    # deviation is the 51st of 101, 25: sigma = 1.4826 * 25 / sqrt(20) = 8.288 (the 1.4826
+    # to 4 digits: 1e-4 relative). Kept, they would give 26 instead of 25 (+4 %); a cut
+    # measured from -100 instead of 100 would keep 6 readings, and a quite other number.
+    d = [100.0 + k for k in range(-50, 51)] + [-60.0, 260.0]
+    sigma = noise_scatter(_with_third_differences(d))
+    assert sigma == pytest.approx(1.4826 * 25 / math.sqrt(20.0), rel=1e-4)
+
+
+def test_noise_scatter_keeps_a_cut_of_exactly_five_differences() -> None:
+    # Nine third differences: -2..2 and +/-100, +/-200. Median 0; deviations 0,1,1,2,2,100,
+    # 100,200,200, median 2, a cut at 4 * 1.4826 * 2 = 11.9 that keeps exactly five (the
+    # least allowed): the next pass's median deviation is 1, sigma = 1.4826 / sqrt(20) =
+    # 0.3315. Stopping at five (a floor of 6) would leave the first pass's 0.663. The trace
+    # is read in whole steps, whose quantisation floor 1/sqrt(12) = 0.289 lies below.
+    d = [-2.0, -1.0, 0.0, 1.0, 2.0, 100.0, 200.0, -100.0, -200.0]
+    sigma = noise_scatter(_with_third_differences(d))
+    assert sigma == pytest.approx(1.4826 / math.sqrt(20.0), rel=1e-4)
