@@ -543,3 +543,11 @@ def test_the_history_of_a_warming_oil_ends_at_the_steady_temperature() -> None:
                                      steady=st)  # fmt: skip
     assert abs(history[-1] - temp) < bound
     assert bound < 0.01  # a bound that says something
+
+
+def test_a_half_second_series_warms_by_its_exponential() -> None:
+    # 10 W into 1 J/K through 1 W/K (tau = 1 s) for 0.5 s from the ambient: 10 (1 - e^-0.5) K.
+    from ballscrew.axis.thermal import heat_balance
+
+    temp = heat_balance(np.array([0.0, 0.5]), np.full(2, 10.0), 1.0, 1.0, 20.0, 20.0)
+    assert temp[1] == pytest.approx(20.0 + 10.0 * (1.0 - math.exp(-0.5)), rel=1e-13)
