@@ -166,6 +166,11 @@ def test_heat_balance_of_a_constant_power_from_a_warm_start_is_the_exponential()
     on_grid = np.array([True, True, True, False, True, True])
     np.testing.assert_allclose(temp[on_grid], exact[on_grid], rtol=0.0, atol=1e-12)
     assert abs(temp[3] - exact[3]) < 25.0 / 8.0 * 12.0 / 500.0**2
+    # The same through 2 J/K (tau = 0.5 s) over 10 s sampled at 0, 0.3 and 10 s: steps of
+    # 5 ms (a hundredth of tau), so 0.3 s is a point of the grid, exact to rounding.
+    t = np.array([0.0, 0.3, 10.0])
+    temp = heat_balance(t, np.full(3, 12.0), 2.0, 4.0, 20.0, 35.0)
+    np.testing.assert_allclose(temp, 23.0 + 12.0 * np.exp(-t / 0.5), rtol=0.0, atol=1e-12)
 
 
 def test_heat_balance_keeps_the_trapezoidal_energy_of_each_interval() -> None:
@@ -477,6 +482,18 @@ def test_a_series_starting_later_than_0_s_takes_its_own_duration() -> None:
     temp = series_temperature(t, np.full(2, 6.0), node, reference_screw(),
                               np.array([0.0, 200.0]), 30.0)  # fmt: skip
     assert temp[1] == pytest.approx(22.0 + 6.0 / g + (8.0 - 6.0 / g) / math.e, rel=1e-12)
+    # Speeds of 100 and 200 rad/s: the RMS is sqrt((100^2 + 200^2)/2) = 158.1 rad/s.
+    g = _air_h(0.04, math.sqrt(25_000.0), 1.0, 22.0) * math.pi * 0.04 * 0.8 + 0.5
+    t = np.array([100.0, 100.0 + capacity / g])
+    temp = series_temperature(t, np.full(2, 6.0), node, reference_screw(),
+                              np.array([100.0, 200.0]), 30.0)  # fmt: skip
+    assert temp[1] == pytest.approx(22.0 + 6.0 / g + (8.0 - 6.0 / g) / math.e, rel=1e-12)
+    # A series of 0.8 s at 100 and 200 rad/s is cooled at that RMS speed as well.
+    temp = series_temperature(np.array([0.0, 0.8]), np.full(2, 6.0), node, reference_screw(),
+                              np.array([100.0, 200.0]), 30.0)  # fmt: skip
+    tau = capacity / g
+    exact = 22.0 + 6.0 / g + (8.0 - 6.0 / g) * math.exp(-0.8 / tau)
+    assert temp[1] == pytest.approx(exact, rel=1e-12)
 
 
 def test_a_balance_closing_just_past_a_node_of_the_table_is_found_there() -> None:
