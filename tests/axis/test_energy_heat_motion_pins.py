@@ -123,7 +123,7 @@ def test_friction_energy_alone_is_the_cycles_at_the_same_default_temperature() -
 
 def test_the_working_point_back_drives_when_its_reverse_efficiency_is_positive() -> None:
     # 0.2 m/s against 2 kN (the working point): the catalogue rule (mu = 0.01) on a nut
-    # without preload has eta' = 2 - 1/eta, about 0.85 > 0: the load back-drives the screw.
+    # without preload has eta' = 2 - 1/eta, about 0.87 > 0: the load back-drives the screw.
     # With the 2 kN preload's drag at 20 N, eta' = 2 - 1/eta - K F_pr/F is far below 0.
     _, eta = _catalog_terms(0.01)
     t = np.linspace(0.0, 1.0, 11)
