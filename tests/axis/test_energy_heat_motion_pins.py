@@ -22,6 +22,7 @@ from ballscrew.axis.energy import (
 )
 from ballscrew.axis.motion import Profile
 from ballscrew.axis.thermal import ThermalNode
+from ballscrew.geometry import BallScrew
 from ballscrew.materials import STANDARD_GRAVITY
 from shared import PAO
 
@@ -211,7 +212,7 @@ def _air_h(diameter: float, omega: float, rise: float, ambient: float) -> float:
     film = ambient + rise / 2 + 273.15
     ra = 9.80665 / film * rise * diameter**3 / (nu * nu / pr)
     nu_d = (0.60 + 0.387 * ra ** (1 / 6) / (1 + (0.559 / pr) ** (9 / 16)) ** (8 / 27)) ** 2
-    return max(forced, nu_d * k / diameter)
+    return float(max(forced, nu_d * k / diameter))
 
 
 @pytest.mark.parametrize("omega", [0.0, 200.0])
@@ -568,3 +569,56 @@ def test_a_half_second_series_warms_by_its_exponential() -> None:
 
     temp = heat_balance(np.array([0.0, 0.5]), np.full(2, 10.0), 1.0, 1.0, 20.0, 20.0)
     assert temp[1] == pytest.approx(20.0 + 10.0 * (1.0 - math.exp(-0.5)), rel=1e-13)
+
+
+# --- axis/thermal.py: the batch functions ------------------------------------------------------
+
+
+def _held(preload: float) -> tuple[Profile, BallScrew, Axis, ThermalNode, float, float]:
+    """0.25 m/s held under the catalogue's drag at ``preload``; its power [W] and G [W/K]."""
+    t = np.linspace(0.0, 2.0, 5)
+    v, zero = np.full(5, 0.25), np.zeros(5)
+    omega = 2.0 * math.pi * 0.25 / 0.01
+    g = _air_h(0.04, omega, 12.0, 18.0) * math.pi * 0.04 + 1.0
+    power = _preload_drag() * preload / 2000.0 * omega
+    node = ThermalNode(screw_length=1.0, ambient=18.0, machine_resistance=1.0)
+    s = reference_screw().replace(preload=preload)
+    return Profile(t, v * t, v, zero, zero), s, Axis(moving_mass=0.0), node, power, g
+
+
+def test_one_screw_balanced_and_integrated_in_a_batch_is_the_closed_form() -> None:
+    # As test_the_steady_temperature_and_time_constant_...: T_a + P/G and the exponential
+    # with tau = C/G, through the batch functions with one screw; 200 points by default.
+    from ballscrew.axis.thermal import steady_temperatures, temperature_histories
+
+    p, s, axis, node, power, g = _held(2000.0)
+    (st,) = steady_temperatures(p, [s], OIL, [axis], [node], model="catalog")
+    assert st is not None and st.temperature == pytest.approx(18.0 + power / g, abs=1e-9)
+    tau = 7850.0 * math.pi * 0.04**2 / 4.0 * 460.0 / g
+    ((times, temp),) = temperature_histories(p, [s], [node], 3.0 * tau, [st])
+    assert times.size == 200
+    np.testing.assert_allclose(temp, 18.0 + power / g * (1.0 - np.exp(-times / tau)), atol=1e-6)
+
+
+def test_a_batch_gives_none_where_the_node_sheds_the_drag_only_above_200_k() -> None:
+    # P = 200 K x G + 0.5 W: 0.07 K beyond the range (as alone, where it is refused).
+    from ballscrew.axis.thermal import steady_temperatures
+
+    p, s, axis, node, _, g = _held(2000.0)
+    omega = 2.0 * math.pi * 0.25 / 0.01
+    g = _air_h(0.04, omega, 200.0, 18.0) * math.pi * 0.04 + 1.0
+    hot = s.replace(preload=2000.0 * (200.0 * g + 0.5) / (_preload_drag() * omega))
+    first, second = steady_temperatures(p, [hot, s], OIL, [axis, axis], [node, node],
+                                        model="catalog")  # fmt: skip
+    assert first is None and second is not None
+
+
+def test_a_batch_whose_friction_cannot_be_computed_gives_none_for_every_screw() -> None:
+    # A friction angle beyond 90 degrees less the lead angle: the catalogue rule refuses it,
+    # and the batch answers None for each screw (steady_temperature alone raises the error).
+    from ballscrew.axis.thermal import steady_temperatures
+
+    p, s, axis, node, _, _ = _held(2000.0)
+    got = steady_temperatures(p, [s, s], OIL, [axis, axis], [node, node], model="catalog",
+                              friction_coefficient=20.0)  # fmt: skip
+    assert got == [None, None]
