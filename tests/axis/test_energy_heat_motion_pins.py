@@ -622,3 +622,39 @@ def test_a_batch_whose_friction_cannot_be_computed_gives_none_for_every_screw() 
     got = steady_temperatures(p, [s, s], OIL, [axis, axis], [node, node], model="catalog",
                               friction_coefficient=20.0)  # fmt: skip
     assert got == [None, None]
+
+
+def test_batch_roots_next_to_the_table_nodes_are_the_closed_form() -> None:
+    # Drags set for rises of 0.12 K (before the first node past the ambient), 10.05 K and
+    # 20.05 K (0.05 K past the nodes of +10 and +20 K, the latter the first stage's last,
+    # where the imbalance is only G x 0.05 K = 0.36 W): T_a + P/G each, to 1e-9 K.
+    from ballscrew.axis.thermal import steady_temperatures
+
+    p, s, axis, node, _, _ = _held(2000.0)
+    omega = 2.0 * math.pi * 0.25 / 0.01
+    rises = (0.12, 10.05, 20.05)
+    screws = []
+    for rise in rises:
+        g = _air_h(0.04, omega, rise, 18.0) * math.pi * 0.04 + 1.0
+        screws.append(s.replace(preload=2000.0 * rise * g / (_preload_drag() * omega)))
+    got = steady_temperatures(p, screws, OIL, [axis] * 3, [node] * 3, model="catalog")
+    for st, rise in zip(got, rises, strict=True):
+        assert st is not None and st.temperature == pytest.approx(18.0 + rise, abs=1e-9)
+
+
+def test_a_batch_of_axes_with_unlike_samples_is_each_axis_balance_alone() -> None:
+    # A moving mass adds forces to the samples (more distinct samples than without): the
+    # batch pads the shorter list with weightless samples, and each temperature is the one
+    # steady_temperature finds for that axis alone (to 1e-9 K: both solve to 1e-11 K).
+    from ballscrew.axis.motion import back_and_forth
+    from ballscrew.axis.thermal import steady_temperature, steady_temperatures
+
+    cycle, s = back_and_forth(0.3, 0.5, 2.0), reference_screw()
+    axes = [Axis(moving_mass=0.0), Axis(moving_mass=400.0)]
+    node = ThermalNode(screw_length=0.8, ambient=22.0, machine_resistance=2.0)
+    got = steady_temperatures(cycle, [s, s], OIL, axes, [node, node], model="catalog")
+    for st, axis in zip(got, axes, strict=True):
+        alone = steady_temperature(cycle, s, OIL, axis, node, model="catalog")
+        assert st is not None and st.temperature == pytest.approx(alone.temperature, abs=1e-9)
+    assert got[0] is not None and got[1] is not None
+    assert got[1].temperature > got[0].temperature + 0.1  # the masses' forces add friction
