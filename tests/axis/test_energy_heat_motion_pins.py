@@ -22,6 +22,7 @@ from ballscrew.axis.energy import (
 )
 from ballscrew.axis.motion import Profile
 from ballscrew.axis.thermal import ThermalNode
+from ballscrew.geometry import BallScrew
 from ballscrew.materials import STANDARD_GRAVITY
 from shared import PAO
 
@@ -123,7 +124,7 @@ def test_friction_energy_alone_is_the_cycles_at_the_same_default_temperature() -
 
 def test_the_working_point_back_drives_when_its_reverse_efficiency_is_positive() -> None:
     # 0.2 m/s against 2 kN (the working point): the catalogue rule (mu = 0.01) on a nut
-    # without preload has eta' = 2 - 1/eta, about 0.85 > 0: the load back-drives the screw.
+    # without preload has eta' = 2 - 1/eta, about 0.87 > 0: the load back-drives the screw.
     # With the 2 kN preload's drag at 20 N, eta' = 2 - 1/eta - K F_pr/F is far below 0.
     _, eta = _catalog_terms(0.01)
     t = np.linspace(0.0, 1.0, 11)
@@ -166,6 +167,11 @@ def test_heat_balance_of_a_constant_power_from_a_warm_start_is_the_exponential()
     on_grid = np.array([True, True, True, False, True, True])
     np.testing.assert_allclose(temp[on_grid], exact[on_grid], rtol=0.0, atol=1e-12)
     assert abs(temp[3] - exact[3]) < 25.0 / 8.0 * 12.0 / 500.0**2
+    # The same through 2 J/K (tau = 0.5 s) over 10 s sampled at 0, 0.3 and 10 s: steps of
+    # 5 ms (a hundredth of tau), so 0.3 s is a point of the grid, exact to rounding.
+    t = np.array([0.0, 0.3, 10.0])
+    temp = heat_balance(t, np.full(3, 12.0), 2.0, 4.0, 20.0, 35.0)
+    np.testing.assert_allclose(temp, 23.0 + 12.0 * np.exp(-t / 0.5), rtol=0.0, atol=1e-12)
 
 
 def test_heat_balance_keeps_the_trapezoidal_energy_of_each_interval() -> None:
@@ -206,7 +212,7 @@ def _air_h(diameter: float, omega: float, rise: float, ambient: float) -> float:
     film = ambient + rise / 2 + 273.15
     ra = 9.80665 / film * rise * diameter**3 / (nu * nu / pr)
     nu_d = (0.60 + 0.387 * ra ** (1 / 6) / (1 + (0.559 / pr) ** (9 / 16)) ** (8 / 27)) ** 2
-    return max(forced, nu_d * k / diameter)
+    return float(max(forced, nu_d * k / diameter))
 
 
 @pytest.mark.parametrize("omega", [0.0, 200.0])
@@ -477,6 +483,18 @@ def test_a_series_starting_later_than_0_s_takes_its_own_duration() -> None:
     temp = series_temperature(t, np.full(2, 6.0), node, reference_screw(),
                               np.array([0.0, 200.0]), 30.0)  # fmt: skip
     assert temp[1] == pytest.approx(22.0 + 6.0 / g + (8.0 - 6.0 / g) / math.e, rel=1e-12)
+    # Speeds of 100 and 200 rad/s: the RMS is sqrt((100^2 + 200^2)/2) = 158.1 rad/s.
+    g = _air_h(0.04, math.sqrt(25_000.0), 1.0, 22.0) * math.pi * 0.04 * 0.8 + 0.5
+    t = np.array([100.0, 100.0 + capacity / g])
+    temp = series_temperature(t, np.full(2, 6.0), node, reference_screw(),
+                              np.array([100.0, 200.0]), 30.0)  # fmt: skip
+    assert temp[1] == pytest.approx(22.0 + 6.0 / g + (8.0 - 6.0 / g) / math.e, rel=1e-12)
+    # A series of 0.8 s at 100 and 200 rad/s is cooled at that RMS speed as well.
+    temp = series_temperature(np.array([0.0, 0.8]), np.full(2, 6.0), node, reference_screw(),
+                              np.array([100.0, 200.0]), 30.0)  # fmt: skip
+    tau = capacity / g
+    exact = 22.0 + 6.0 / g + (8.0 - 6.0 / g) * math.exp(-0.8 / tau)
+    assert temp[1] == pytest.approx(exact, rel=1e-12)
 
 
 def test_a_balance_closing_just_past_a_node_of_the_table_is_found_there() -> None:
@@ -543,3 +561,100 @@ def test_the_history_of_a_warming_oil_ends_at_the_steady_temperature() -> None:
                                      steady=st)  # fmt: skip
     assert abs(history[-1] - temp) < bound
     assert bound < 0.01  # a bound that says something
+
+
+def test_a_half_second_series_warms_by_its_exponential() -> None:
+    # 10 W into 1 J/K through 1 W/K (tau = 1 s) for 0.5 s from the ambient: 10 (1 - e^-0.5) K.
+    from ballscrew.axis.thermal import heat_balance
+
+    temp = heat_balance(np.array([0.0, 0.5]), np.full(2, 10.0), 1.0, 1.0, 20.0, 20.0)
+    assert temp[1] == pytest.approx(20.0 + 10.0 * (1.0 - math.exp(-0.5)), rel=1e-13)
+
+
+# --- axis/thermal.py: the batch functions ------------------------------------------------------
+
+
+def _held(preload: float) -> tuple[Profile, BallScrew, Axis, ThermalNode, float, float]:
+    """0.25 m/s held under the catalogue's drag at ``preload``; its power [W] and G [W/K]."""
+    t = np.linspace(0.0, 2.0, 5)
+    v, zero = np.full(5, 0.25), np.zeros(5)
+    omega = 2.0 * math.pi * 0.25 / 0.01
+    g = _air_h(0.04, omega, 12.0, 18.0) * math.pi * 0.04 + 1.0
+    power = _preload_drag() * preload / 2000.0 * omega
+    node = ThermalNode(screw_length=1.0, ambient=18.0, machine_resistance=1.0)
+    s = reference_screw().replace(preload=preload)
+    return Profile(t, v * t, v, zero, zero), s, Axis(moving_mass=0.0), node, power, g
+
+
+def test_one_screw_balanced_and_integrated_in_a_batch_is_the_closed_form() -> None:
+    # As test_the_steady_temperature_and_time_constant_...: T_a + P/G and the exponential
+    # with tau = C/G, through the batch functions with one screw; 200 points by default.
+    from ballscrew.axis.thermal import steady_temperatures, temperature_histories
+
+    p, s, axis, node, power, g = _held(2000.0)
+    (st,) = steady_temperatures(p, [s], OIL, [axis], [node], model="catalog")
+    assert st is not None and st.temperature == pytest.approx(18.0 + power / g, abs=1e-9)
+    tau = 7850.0 * math.pi * 0.04**2 / 4.0 * 460.0 / g
+    ((times, temp),) = temperature_histories(p, [s], [node], 3.0 * tau, [st])
+    assert times.size == 200
+    np.testing.assert_allclose(temp, 18.0 + power / g * (1.0 - np.exp(-times / tau)), atol=1e-6)
+
+
+def test_a_batch_gives_none_where_the_node_sheds_the_drag_only_above_200_k() -> None:
+    # P = 200 K x G + 0.5 W: 0.07 K beyond the range (as alone, where it is refused).
+    from ballscrew.axis.thermal import steady_temperatures
+
+    p, s, axis, node, _, g = _held(2000.0)
+    omega = 2.0 * math.pi * 0.25 / 0.01
+    g = _air_h(0.04, omega, 200.0, 18.0) * math.pi * 0.04 + 1.0
+    hot = s.replace(preload=2000.0 * (200.0 * g + 0.5) / (_preload_drag() * omega))
+    first, second = steady_temperatures(p, [hot, s], OIL, [axis, axis], [node, node],
+                                        model="catalog")  # fmt: skip
+    assert first is None and second is not None
+
+
+def test_a_batch_whose_friction_cannot_be_computed_gives_none_for_every_screw() -> None:
+    # A friction angle beyond 90 degrees less the lead angle: the catalogue rule refuses it,
+    # and the batch answers None for each screw (steady_temperature alone raises the error).
+    from ballscrew.axis.thermal import steady_temperatures
+
+    p, s, axis, node, _, _ = _held(2000.0)
+    got = steady_temperatures(p, [s, s], OIL, [axis, axis], [node, node], model="catalog",
+                              friction_coefficient=20.0)  # fmt: skip
+    assert got == [None, None]
+
+
+def test_batch_roots_next_to_the_table_nodes_are_the_closed_form() -> None:
+    # Drags set for rises of 0.12 K (before the first node past the ambient), 10.05 K and
+    # 20.05 K (0.05 K past the nodes of +10 and +20 K, the latter the first stage's last,
+    # where the imbalance is only G x 0.05 K = 0.36 W): T_a + P/G each, to 1e-9 K.
+    from ballscrew.axis.thermal import steady_temperatures
+
+    p, s, axis, node, _, _ = _held(2000.0)
+    omega = 2.0 * math.pi * 0.25 / 0.01
+    rises = (0.12, 10.05, 20.05)
+    screws = []
+    for rise in rises:
+        g = _air_h(0.04, omega, rise, 18.0) * math.pi * 0.04 + 1.0
+        screws.append(s.replace(preload=2000.0 * rise * g / (_preload_drag() * omega)))
+    got = steady_temperatures(p, screws, OIL, [axis] * 3, [node] * 3, model="catalog")
+    for st, rise in zip(got, rises, strict=True):
+        assert st is not None and st.temperature == pytest.approx(18.0 + rise, abs=1e-9)
+
+
+def test_a_batch_of_axes_with_unlike_samples_is_each_axis_balance_alone() -> None:
+    # A moving mass adds forces to the samples (more distinct samples than without): the
+    # batch pads the shorter list with weightless samples, and each temperature is the one
+    # steady_temperature finds for that axis alone (to 1e-9 K: both solve to 1e-11 K).
+    from ballscrew.axis.motion import back_and_forth
+    from ballscrew.axis.thermal import steady_temperature, steady_temperatures
+
+    cycle, s = back_and_forth(0.3, 0.5, 2.0), reference_screw()
+    axes = [Axis(moving_mass=0.0), Axis(moving_mass=400.0)]
+    node = ThermalNode(screw_length=0.8, ambient=22.0, machine_resistance=2.0)
+    got = steady_temperatures(cycle, [s, s], OIL, axes, [node, node], model="catalog")
+    for st, axis in zip(got, axes, strict=True):
+        alone = steady_temperature(cycle, s, OIL, axis, node, model="catalog")
+        assert st is not None and st.temperature == pytest.approx(alone.temperature, abs=1e-9)
+    assert got[0] is not None and got[1] is not None
+    assert got[1].temperature > got[0].temperature + 0.1  # the masses' forces add friction
