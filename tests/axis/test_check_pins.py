@@ -97,6 +97,15 @@ def test_a_double_nut_without_preload_has_no_lift_off_and_no_preload_band() -> N
     assert result.row("lift_off") is None and result.stiffness["lifted_off"] is False
     assert not any("preload" in a and "band" in a for a in result.assumptions)
     assert "preload +-0%" in _note(result, "uncertainty: Monte Carlo")
+    # With no preload one half carries the load: the nut is as stiff as a single nut of the
+    # same geometry at the cycle's peak load (400 N, m a), not the near-zero tangent of an
+    # unloaded contact (0.86 N/um, as it was), and it has a single nut's axial play.
+    single = _check(_text())
+    assert result.stiffness["nut_N_per_um"] == pytest.approx(
+        single.stiffness["nut_N_per_um"], rel=1e-9
+    )
+    assert result.stiffness["nut_N_per_um"] > 100.0
+    assert _note(result, "double nut without preload: stiffness at the cycle's peak load 400 N")
 
 
 def test_half_a_newton_of_preload_lifts_off_and_takes_the_lowest_band() -> None:

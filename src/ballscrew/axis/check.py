@@ -603,18 +603,21 @@ def _nut_state(case: Case, peak: float, notes: list[str]) -> tuple[float, float 
     """
     screw = case.screw
     play, k_nut_preloaded = 0.0, None
-    if screw.nut == "single":
+    if screw.nut == "single" or not screw.preload > 0.0:
+        # No preload (a single nut, or a double or 4-point nut set to 0 N): the contacts have
+        # no stiffness at rest; one side carries the load, at its tangent stiffness.
         if peak <= 0.0:
             raise BallScrewInputError(
-                "screw.nut", "single", "a load on the nut: a single nut without preload and "
+                "screw.nut", screw.nut, "a load on the nut: a nut without preload and "
                 "without load has no stiffness (give a move with a force or a preloaded nut)",
             )  # fmt: skip
         k_nut = design_nut_stiffness(screw, peak)
         given = case.check.get("axial_play")
         play = DEFAULT_AXIAL_PLAY if given is None else float(given)
         origin = "default" if given is None else "given"
+        kind = "single nut" if screw.nut == "single" else f"{screw.nut} nut without preload"
         notes.append(
-            f"single nut: stiffness at the cycle's peak load {peak:.4g} N; its axial play "
+            f"{kind}: stiffness at the cycle's peak load {peak:.4g} N; its axial play "
             f"{play * 1e6:.3g} um ({origin}) is added to the lost motion"
         )
         if given is None:

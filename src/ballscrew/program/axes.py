@@ -453,8 +453,8 @@ def _reversals(
     low, high = ax.travel
     # The travel centred between the supports: distance of the nut from the fixed end.
     a = np.clip(0.5 * span + (pos - 0.5 * (low + high)), 1e-3 * span, 0.999 * span)
-    k_nut = design_nut_stiffness(screw, float(np.max(np.abs(force))) if screw.nut == "single"
-                                 else 0.0)  # fmt: skip
+    unpreloaded = screw.nut == "single" or not screw.preload > 0.0  # stiff only under load
+    k_nut = design_nut_stiffness(screw, float(np.max(np.abs(force))) if unpreloaded else 0.0)
     f_f, k, play = reversal_lost_motion(
         np.broadcast_to(t_f, load.shape), screw.lead,
         setup.axis.root_diameter or root_diameter(screw), span, a, setup.axis.support, k_nut,
