@@ -106,6 +106,8 @@ def test_a_double_nut_without_preload_has_no_lift_off_and_no_preload_band() -> N
     )
     assert result.stiffness["nut_N_per_um"] > 100.0
     assert _note(result, "double nut without preload: stiffness at the cycle's peak load 400 N")
+    assert "Hertz at the cycle's peak load (no preload)" in result.row("stiffness").source
+    assert "+ the axial play 20 um" in result.row("lost_motion").source
 
 
 def test_half_a_newton_of_preload_lifts_off_and_takes_the_lowest_band() -> None:

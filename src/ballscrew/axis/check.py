@@ -19,7 +19,8 @@ with the formulas of :mod:`ballscrew.sizing`, :mod:`ballscrew.stiffness` and
 * **static safety** :math:`C_{0a}/F_{max}` on the most loaded half;
 * **buckling**, the **yield** of the root section, the **critical speed** and
   **d·n**;
-* **stiffness**: shaft, nut (Hertz at the preload, brought to the makers' printed
+* **stiffness**: shaft, nut (Hertz at the preload, or at the cycle's peak load
+  without one, brought to the makers' printed
   rigidity and derated to 80 %) and thrust bearings in
   series over the stroke, the **axial eigenfrequency** with the moving mass
   and the **lost motion** at a reversal, :math:`2F_f/k`, with :math:`F_f` the
@@ -567,12 +568,14 @@ def _stiffness_rows(
     if k_nut_preloaded is not None:
         figures["nut_preloaded_N_per_um"] = k_nut_preloaded / 1e6
     state = ", lifted off" if lifted else ""
+    at = "the preload" if screw.nut != "single" and screw.preload > 0.0 else (
+        "the cycle's peak load (no preload)")  # fmt: skip
     source = (
         "ISO 3408-4; shaft EA/a or EAL/(a(L-a)) (THK, Axial Rigidity of the Feed Screw "
-        "System, A15-43); nut: Hertz at the preload, at the makers' printed level, x 0.8 "
+        f"System, A15-43); nut: Hertz at {at}, at the makers' printed level, x 0.8 "
         "(THK A-709)" + ("; past lift-off one half at the peak load" if lifted else "")
     )
-    play_text = f" + the axial play {play * 1e6:.3g} um" if screw.nut == "single" else ""
+    play_text = f" + the axial play {play * 1e6:.3g} um" if play > 0.0 else ""
     rows = [
         _info("stiffness", f"axis stiffness (least over the stroke{state})",
               float(np.min(k_axis)) / 1e6, "N/um", source + f"; nut {k_nut / 1e6:.4g} N/um"),
