@@ -89,6 +89,9 @@ def test_nut_stiffness_follows_hertz() -> None:
     assert nut_axial_stiffness(double) == pytest.approx(2 * k2, rel=1e-3)
     with pytest.raises(BallScrewInputError, match="single nut"):
         nut_axial_stiffness(single, 0.0)
+    # A double nut set to 0 N has no preloaded contacts either: no stiffness at rest.
+    with pytest.raises(BallScrewInputError, match="any nut without preload"):
+        nut_axial_stiffness(reference_screw().replace(preload=0.0), 0.0)
 
 
 def test_lugre_rules_and_table_side_units() -> None:

@@ -185,7 +185,9 @@ def nut_axial_stiffness(screw: BallScrew, axial_load: float = 0.0) -> float:
     x = approach(bl.normal_load_1) / sa
     if (screw.nut == "single" or not screw.preload > 0.0) and axial_load == 0.0:
         raise BallScrewInputError(
-            "axial_load", axial_load, "a load on a nut without preload (no stiffness at 0)"
+            "axial_load",
+            axial_load,
+            "a load on a single nut, or on any nut without preload (no stiffness at 0)",
         )
     return float((loads[1] - loads[0]) / (x[1] - x[0]))
 
