@@ -108,6 +108,10 @@ def test_a_double_nut_without_preload_has_no_lift_off_and_no_preload_band() -> N
     assert _note(result, "double nut without preload: stiffness at the cycle's peak load 400 N")
     assert "Hertz at the cycle's peak load (no preload)" in result.row("stiffness").source
     assert "+ the axial play 20 um" in result.row("lost_motion").source
+    # A preloaded double nut has no play, and its Hertz stiffness is the preload's.
+    preloaded = _check(_text(nut="double", preload="2 kN"))
+    assert "axial play" not in preloaded.row("lost_motion").source
+    assert "Hertz at the preload," in preloaded.row("stiffness").source
 
 
 def test_half_a_newton_of_preload_lifts_off_and_takes_the_lowest_band() -> None:

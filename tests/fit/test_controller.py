@@ -92,6 +92,10 @@ def test_nut_stiffness_follows_hertz() -> None:
     # A double nut set to 0 N has no preloaded contacts either: no stiffness at rest.
     with pytest.raises(BallScrewInputError, match="any nut without preload"):
         nut_axial_stiffness(reference_screw().replace(preload=0.0), 0.0)
+    # Any preload, however small, is preloaded contacts, stiff at rest: 0.5 N, K = 2 K_half
+    # with each half at 0.5 N, K_half ~ F^(1/3) from the single nut's 1000 N above.
+    tiny = nut_axial_stiffness(reference_screw().replace(preload=0.5), 0.0)
+    assert tiny == pytest.approx(2 * k1 * (0.5 / 1000.0) ** (1 / 3), rel=1e-3)
 
 
 def test_lugre_rules_and_table_side_units() -> None:

@@ -251,6 +251,26 @@ def test_a_single_nut_takes_the_programs_peak_load(tmp_path: Path) -> None:
         assert rev.stiffness == pytest.approx(k, rel=1e-12), a
 
 
+@pytest.mark.parametrize(("preload", "loaded"), [("0 N", True), ("0.5 N", False)])
+def test_a_double_nut_without_preload_takes_the_programs_peak_load(
+    tmp_path: Path, preload: str, loaded: bool
+) -> None:
+    # A double nut set to 0 N has no preloaded contacts: like a single nut, one half at the
+    # program's largest axial load (300 kg x 2 m/s^2). Any preload, however small (0.5 N),
+    # is a preloaded nut taken at rest.
+    # Travel 0 to 500 mm centred between supports 800 mm apart (a double nut is 200 mm
+    # long): the reversal at X100 is 150 + 100 mm from the thrust bearing.
+    machine = _machine(tmp_path, travel='"0 mm", "500 mm"', force="0 N", span="800 mm",
+                       nut=f'preload = "{preload}"')  # fmt: skip
+    r = run_program(machine, "G1 X100 F6000\nG1 X0\nM30\n")
+    screw = machine.axes["X"].case.screw
+    k_nut = design_nut_stiffness(screw, MASS * 2.0 if loaded else 0.0)
+    rev = r.axes["X"].reversals[0]
+    assert round(rev.position, 9) == 0.1
+    k = 1.0 / (1.0 / _shaft_k(screw, 0.25) + 1.0 / k_nut)
+    assert rev.stiffness == pytest.approx(k, rel=1e-12)
+
+
 def test_the_screw_length_estimated_from_the_machines_travel(tmp_path: Path) -> None:
     # No screw length or bearing span in the case: estimated from the travel of the machine
     # file (800 mm from -100 to 700 mm), also for an axis standing through a program of no
